@@ -1,0 +1,244 @@
+/* tinysubd — subdivision surfaces and curves for devices without a heap.
+ *
+ * Everything the library needs comes from a caller-owned arena (a byte buffer, usually a
+ * static array). Every operation has a planning call that returns the exact number of arena
+ * bytes it will use, so the buffer can be sized before any work is done. Every call either
+ * succeeds or returns a negative status with the arena and all inputs exactly as they were.
+ *
+ * Arena contents are 32-bit indices, subd_reals and tag bytes only: the bytes an operation
+ * needs are the same on a 64-bit PC and a 32-bit device, and for float32 and Q16.16.
+ */
+#ifndef SUBD_H
+#define SUBD_H
+
+#include <stdint.h>
+#include "subd_config.h"
+#include "subd_real.h"
+
+#define SUBD_VERSION "0.1.0"
+
+/* ------------------------------------------------------------------------------------ */
+/* Status codes. 0 is success; every error is negative and specific.                     */
+
+typedef enum subd_status {
+    SUBD_OK = 0,
+    SUBD_ERR_NOMEM = -1,          /* arena too small: diag.bytes_needed says how much     */
+    SUBD_ERR_PARAM = -2,          /* invalid argument (NULL pointer, bad option value)    */
+    SUBD_ERR_PARSE = -3,          /* text is not in the format (diag.line)                */
+    SUBD_ERR_NAN = -4,            /* a coordinate is NaN or infinite                      */
+    SUBD_ERR_RANGE = -5,          /* a value does not fit subd_real (or overflowed)       */
+    SUBD_ERR_INDEX = -6,          /* a vertex index is out of range (or 0 in OBJ)         */
+    SUBD_ERR_FACE_SIZE = -7,      /* a face has < 3 or > SUBD_MAX_FACE_SIZE corners       */
+    SUBD_ERR_DEGENERATE = -8,     /* a face uses the same vertex twice                    */
+    SUBD_ERR_NONMANIFOLD_EDGE = -9,   /* an edge is shared by more than two faces         */
+    SUBD_ERR_ORIENTATION = -10,   /* two faces traverse a shared edge in the same direction */
+    SUBD_ERR_NONMANIFOLD_VERTEX = -11, /* a vertex's faces form more than one fan (bow-tie) */
+    SUBD_ERR_TOO_BIG = -12,       /* counts whose sizes do not fit 32-bit arithmetic       */
+    SUBD_ERR_EMPTY = -13          /* the input has no vertices or no faces where needed   */
+} subd_status;
+
+/* A short, constant English description of a status ("non-manifold edge"). */
+const char *subd_status_str(int status);
+
+/* Diagnostics filled by every call that can fail. Fields that do not apply are 0 or
+ * SUBD_NONE. line is 1-based and set by the text readers; face/vertex name the offending
+ * element (0-based) for validation errors; bytes_needed is set on SUBD_ERR_NOMEM. */
+typedef struct subd_diag {
+    int32_t status;
+    uint32_t line;
+    uint32_t face;
+    uint32_t vertex;
+    uint32_t polyline;
+    uint32_t bytes_needed;
+} subd_diag;
+
+/* Sets every field to "not applicable" (status SUBD_OK, elements SUBD_NONE, line 0). */
+void subd_diag_clear(subd_diag *d);
+
+#define SUBD_NONE 0xffffffffu
+
+/* ------------------------------------------------------------------------------------ */
+/* Arena: a bump allocator over a caller buffer.                                          */
+
+typedef struct subd_arena {
+    uint8_t *base;
+    uint32_t size;
+    uint32_t used;
+    uint32_t peak;
+} subd_arena;
+
+/* Uses buf[0..size) as the arena. If buf is not aligned to SUBD_ARENA_ALIGN the first bytes
+ * are skipped (declare the buffer with that alignment to use all of it). */
+void subd_arena_init(subd_arena *a, void *buf, uint32_t size);
+/* Returns `bytes` bytes (rounded up to SUBD_ARENA_ALIGN) aligned to SUBD_ARENA_ALIGN, or
+ * NULL when the arena is too small; a failed call changes nothing. */
+void *subd_arena_alloc(subd_arena *a, uint32_t bytes);
+/* Current position; rewinding to a mark frees everything allocated after it. */
+uint32_t subd_arena_mark(const subd_arena *a);
+void subd_arena_rewind(subd_arena *a, uint32_t mark);
+/* Bytes still free. */
+uint32_t subd_arena_free_bytes(const subd_arena *a);
+
+/* Size arithmetic that cannot wrap: a * b + c rounded up to SUBD_ARENA_ALIGN, accumulated into
+ * *total. Any overflow of 32 bits sets *total to UINT32_MAX and stays there (sticky). */
+void subd_size_add(uint32_t *total, uint32_t count, uint32_t elem_bytes);
+
+/* ------------------------------------------------------------------------------------ */
+/* Mesh: index-based, arrays in the arena, descriptor owned by the caller.                */
+/*                                                                                        */
+/* Faces are polygons of 3..SUBD_MAX_FACE_SIZE corners. Corner c of face f is one of        */
+/* face_start[f] .. face_start[f+1]-1 and also names the half-edge from corner_vert[c] to  */
+/* the vertex of the next corner of the same face. twin[c] is the opposite half-edge in   */
+/* the neighbouring face or SUBD_NONE on a boundary. vert_out[v] is an outgoing half-edge */
+/* of v: for a boundary vertex the one whose twin is SUBD_NONE, so a one-ring walk that   */
+/* starts there sees every face in order; SUBD_NONE for a vertex no face uses.             */
+
+/* Per-vertex tag bits. */
+#define SUBD_VTAG_BOUNDARY 0x01u /* on a boundary loop (set by the builder)               */
+#define SUBD_VTAG_ISOLATED 0x02u /* used by no face (set by the builder)                  */
+#define SUBD_VTAG_CORNER   0x04u /* caller: keep fixed (Hoppe et al. corner)              */
+#define SUBD_VTAG_FIXED    0x08u /* caller: do not move (schemes that honour tags)        */
+/* Per-half-edge tag bits (edge tags are kept equal on both half-edges of an edge). */
+#define SUBD_ETAG_BOUNDARY 0x01u /* no twin (set by the builder)                          */
+#define SUBD_ETAG_CREASE   0x02u /* caller: sharp feature edge                            */
+
+typedef struct subd_mesh {
+    uint32_t num_verts;
+    uint32_t num_faces;
+    uint32_t num_corners;   /* sum of face sizes = number of half-edges                   */
+    subd_real *pos;         /* 3 * num_verts: x, y, z                                     */
+    uint32_t *face_start;   /* num_faces + 1                                              */
+    uint32_t *corner_vert;  /* num_corners                                                */
+    uint32_t *corner_face;  /* num_corners                                                */
+    uint32_t *twin;         /* num_corners                                                */
+    uint32_t *vert_out;     /* num_verts                                                  */
+    uint8_t *vert_tag;      /* num_verts                                                  */
+    uint8_t *edge_tag;      /* num_corners (per half-edge)                                */
+    /* polylines (OBJ `l` records); not part of the surface topology                      */
+    uint32_t num_lines;
+    uint32_t num_line_verts;
+    uint32_t *line_start;   /* num_lines + 1                                              */
+    uint32_t *line_vert;    /* num_line_verts                                             */
+    /* summary filled by the builder                                                      */
+    uint32_t num_edges;
+    uint32_t num_boundary_edges;
+    uint32_t num_boundary_loops;
+    uint32_t num_isolated;  /* vertices used by no face (accepted, tagged ISOLATED)       */
+} subd_mesh;
+
+/* A plain face list: the input of the mesh builder. face_size may be NULL (all triangles).
+ * Indices are 0-based. Lines are optional (num_lines = 0, pointers NULL). */
+typedef struct subd_face_list {
+    uint32_t num_verts;
+    const subd_real *pos;        /* 3 * num_verts */
+    uint32_t num_faces;
+    const uint32_t *face_size;   /* num_faces, or NULL for triangles */
+    const uint32_t *index;       /* sum of face sizes */
+    uint32_t num_lines;
+    const uint32_t *line_size;   /* num_lines */
+    const uint32_t *line_index;  /* sum of line sizes */
+} subd_face_list;
+
+/* Exact arena bytes subd_mesh_build needs for this face list (arrays plus temporary
+ * working memory). Returns SUBD_OK, SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE (a size outside
+ * 3..SUBD_MAX_FACE_SIZE, so the corner count is unknown) or SUBD_ERR_TOO_BIG. */
+int subd_mesh_plan(const subd_face_list *fl, uint32_t *bytes);
+
+/* Closed-form plan for compile-time buffer sizing: bytes for a mesh with at most V vertices,
+ * F faces, C corners (C = 3F for triangles), L lines and LV line vertices. Always >= the
+ * exact plan. */
+#define SUBD_ALIGN_UP(x) (((x) + (SUBD_ARENA_ALIGN - 1u)) & ~(SUBD_ARENA_ALIGN - 1u))
+#define SUBD_MESH_BYTES(V, F, C, L, LV)                                                       \
+    (SUBD_ALIGN_UP(3u * (V) * (uint32_t)sizeof(subd_real)) /* pos */                          \
+     + SUBD_ALIGN_UP(((F) + 1u) * 4u)                      /* face_start */                   \
+     + 3u * SUBD_ALIGN_UP((C) * 4u)                        /* corner_vert, corner_face, twin */ \
+     + SUBD_ALIGN_UP((V) * 4u) + SUBD_ALIGN_UP(V)          /* vert_out, vert_tag */           \
+     + SUBD_ALIGN_UP(C)                                    /* edge_tag */                     \
+     + SUBD_ALIGN_UP(((L) + 1u) * 4u) + SUBD_ALIGN_UP((LV) * 4u) /* polylines */              \
+     + SUBD_ALIGN_UP(((V) + 1u) * 4u) + SUBD_ALIGN_UP((C) * 4u)) /* build scratch */
+
+/* Builds and validates a mesh. Copies positions and indices into the arena, builds adjacency
+ * by counting and prefix sums, tags boundary vertices and edges, counts boundary loops and
+ * isolated vertices. Work is O(C + sum over vertices of valence^2); no recursion; stack use
+ * is a few dozen bytes.
+ * Checks, in this order, and returns the first failure found:
+ *   SUBD_ERR_PARAM (NULL pointers), SUBD_ERR_EMPTY (no vertices), SUBD_ERR_FACE_SIZE
+ *   (diag.face), SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
+ *   then per face in order SUBD_ERR_INDEX and SUBD_ERR_DEGENERATE (diag.face), per polyline
+ *   SUBD_ERR_INDEX (diag.polyline), per vertex SUBD_ERR_NAN (diag.vertex; float build),
+ *   then SUBD_ERR_NONMANIFOLD_EDGE and SUBD_ERR_ORIENTATION (diag.face: the latest face
+ *   using the edge) and SUBD_ERR_NONMANIFOLD_VERTEX (diag.vertex).
+ * Vertices used by no face are accepted (a scanned mesh often has them, and rejecting them
+ * would force every user to clean files first): they are counted in num_isolated, tagged
+ * SUBD_VTAG_ISOLATED, have vert_out = SUBD_NONE, and schemes leave them where they are.
+ * A mesh with vertices but no faces (points or polylines only) is valid.
+ * On failure the arena is rewound to where it was and *out is not touched. */
+int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out, subd_diag *diag);
+
+/* Half-edge navigation (all O(1) except prev, which is O(1) as well via face_start). */
+static inline uint32_t subd_he_next(const subd_mesh *m, uint32_t h)
+{
+    uint32_t f = m->corner_face[h];
+    return (h + 1u == m->face_start[f + 1u]) ? m->face_start[f] : h + 1u;
+}
+static inline uint32_t subd_he_prev(const subd_mesh *m, uint32_t h)
+{
+    uint32_t f = m->corner_face[h];
+    return (h == m->face_start[f]) ? m->face_start[f + 1u] - 1u : h - 1u;
+}
+static inline uint32_t subd_he_origin(const subd_mesh *m, uint32_t h) { return m->corner_vert[h]; }
+static inline uint32_t subd_he_dest(const subd_mesh *m, uint32_t h) { return m->corner_vert[subd_he_next(m, h)]; }
+static inline uint32_t subd_face_size(const subd_mesh *m, uint32_t f)
+{
+    return m->face_start[f + 1u] - m->face_start[f];
+}
+
+/* Ordered one-ring traversal. subd_ring_first gives vert_out[v]; subd_ring_next gives the
+ * next outgoing half-edge of the same vertex (rotating towards the previous corner of the
+ * face, i.e. clockwise for counter-clockwise faces) or SUBD_NONE after the last one. On an
+ * interior vertex the walk stops before returning to the first half-edge. */
+static inline uint32_t subd_ring_first(const subd_mesh *m, uint32_t v) { return m->vert_out[v]; }
+static inline uint32_t subd_ring_next(const subd_mesh *m, uint32_t first, uint32_t h)
+{
+    uint32_t t = m->twin[subd_he_prev(m, h)];
+    return (t == first) ? SUBD_NONE : t;
+}
+
+/* Writes the one-ring neighbours of v in order into nbr[0..max) and returns their number
+ * (the valence). For a boundary vertex the first and last are its boundary neighbours and
+ * the count is faces + 1. Returns 0 for an isolated vertex. If the valence exceeds max only
+ * max are written, but the full valence is returned. */
+uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max);
+
+/* Valence (number of edges at v). */
+uint32_t subd_vertex_valence(const subd_mesh *m, uint32_t v);
+
+/* Sets or clears tag bits on an edge (both half-edges). */
+void subd_edge_tag_set(subd_mesh *m, uint32_t h, uint8_t bits);
+void subd_edge_tag_clear(subd_mesh *m, uint32_t h, uint8_t bits);
+
+/* Euler characteristic V - E + F (isolated vertices included). */
+int32_t subd_mesh_euler(const subd_mesh *m);
+
+/* ------------------------------------------------------------------------------------ */
+/* OBJ and OFF on memory buffers.                                                         */
+/*                                                                                        */
+/* Readers take the whole file in memory (any line endings), parse numbers with           */
+/* subd_real_parse (same bits on every target) and build the mesh with subd_mesh_build,   */
+/* so every validation error applies; diag.line names the offending line (for validation  */
+/* errors: the face's `f` line or the vertex's `v` line).                                  */
+
+/* Exact arena bytes subd_obj_read needs for this buffer. Returns SUBD_OK or a parse error
+ * (with diag) found while counting. */
+int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
+int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
+int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
+int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
+
+/* Writers: write the mesh as text into buf[0..cap). *len receives the number of bytes
+ * written. With buf == NULL (or cap too small) nothing is written, *len receives the exact
+ * size needed and SUBD_ERR_NOMEM is returned (SUBD_OK when buf == NULL). */
+int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
+int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
+
+#endif

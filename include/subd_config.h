@@ -1,0 +1,45 @@
+/* tinysubd build-time configuration.
+ *
+ * Every option has a default here. A firmware build overrides options by defining
+ * SUBD_CONFIG_FILE as the name of its own header (e.g. -DSUBD_CONFIG_FILE='"my_subd.h"'),
+ * which is included first, or by -D flags. Impossible combinations stop the build.
+ */
+#ifndef SUBD_CONFIG_H
+#define SUBD_CONFIG_H
+
+#ifdef SUBD_CONFIG_FILE
+#include SUBD_CONFIG_FILE
+#endif
+
+/* SUBD_FIXED: 0 = subd_real is IEEE float32 (default), 1 = signed Q16.16 fixed point. */
+#ifndef SUBD_FIXED
+#define SUBD_FIXED 0
+#endif
+#if SUBD_FIXED != 0 && SUBD_FIXED != 1
+#error "SUBD_FIXED must be 0 (float32) or 1 (Q16.16)"
+#endif
+
+/* Largest polygon accepted by the mesh builder and the readers. Bounds the per-face
+ * stack work of validation (repeated-vertex check is O(k^2) on k <= SUBD_MAX_FACE_SIZE). */
+#ifndef SUBD_MAX_FACE_SIZE
+#define SUBD_MAX_FACE_SIZE 32
+#endif
+#if SUBD_MAX_FACE_SIZE < 3 || SUBD_MAX_FACE_SIZE > 255
+#error "SUBD_MAX_FACE_SIZE must be in 3..255"
+#endif
+
+/* Largest number of subdivision levels a scheme call accepts. */
+#ifndef SUBD_MAX_LEVELS
+#define SUBD_MAX_LEVELS 8
+#endif
+#if SUBD_MAX_LEVELS < 1 || SUBD_MAX_LEVELS > 16
+#error "SUBD_MAX_LEVELS must be in 1..16"
+#endif
+
+/* Arena allocations are rounded up to this many bytes, relative to the arena start, so
+ * that plans do not depend on the buffer address. Must be a power of two >= 4. */
+#ifndef SUBD_ARENA_ALIGN
+#define SUBD_ARENA_ALIGN 8u
+#endif
+
+#endif

@@ -1,0 +1,23 @@
+/* Status codes as text, for messages. */
+#include "subd.h"
+
+const char *subd_status_str(int status)
+{
+    switch (status) {
+    case SUBD_OK: return "ok";
+    case SUBD_ERR_NOMEM: return "arena too small";
+    case SUBD_ERR_PARAM: return "invalid parameter";
+    case SUBD_ERR_PARSE: return "syntax error";
+    case SUBD_ERR_NAN: return "coordinate is NaN or infinite";
+    case SUBD_ERR_RANGE: return "value out of range";
+    case SUBD_ERR_INDEX: return "vertex index out of range";
+    case SUBD_ERR_FACE_SIZE: return "face has too few or too many vertices";
+    case SUBD_ERR_DEGENERATE: return "face repeats a vertex";
+    case SUBD_ERR_NONMANIFOLD_EDGE: return "non-manifold edge (more than two faces)";
+    case SUBD_ERR_ORIENTATION: return "inconsistent face orientation";
+    case SUBD_ERR_NONMANIFOLD_VERTEX: return "non-manifold vertex (faces form several fans)";
+    case SUBD_ERR_TOO_BIG: return "counts too large";
+    case SUBD_ERR_EMPTY: return "empty input";
+    default: return "unknown status";
+    }
+}

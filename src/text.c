@@ -1,0 +1,118 @@
+/* Text cursor, token helpers and output sink shared by the OBJ and OFF readers/writers. */
+#include "text.h"
+
+void text_init(text_cursor *t, const char *buf, uint32_t len)
+{
+    t->p = buf;
+    t->end = buf + len;
+    t->line = t->line_end = buf;
+    t->lineno = 0;
+}
+
+int text_next_line(text_cursor *t)
+{
+    const char *s = t->p;
+    if (s >= t->end) return 0;
+    t->line = s;
+    while (s < t->end && *s != '\n' && *s != '\r') s++;
+    t->line_end = s;
+    if (s < t->end && *s == '\r') s++;
+    if (s < t->end && *s == '\n' && (s == t->line_end || s[-1] == '\r')) s++;
+    t->p = s;
+    t->lineno++;
+    return 1;
+}
+
+const char *text_skip_ws(const char *s, const char *end)
+{
+    while (s < end && (*s == ' ' || *s == '\t' || *s == '\r')) s++;
+    return s;
+}
+
+const char *text_token_end(const char *s, const char *end)
+{
+    while (s < end && *s != ' ' && *s != '\t' && *s != '\r') s++;
+    return s;
+}
+
+int text_token_is(const char *s, const char *e, const char *w)
+{
+    while (s < e && *w && *s == *w) { s++; w++; }
+    return s == e && *w == 0;
+}
+
+int text_parse_int(const char *s, const char *e, int32_t *out)
+{
+    int neg = 0;
+    uint32_t v = 0;
+    if (s < e && (*s == '-' || *s == '+')) { neg = (*s == '-'); s++; }
+    if (s >= e) return SUBD_ERR_PARSE;
+    for (; s < e; s++) {
+        if (*s < '0' || *s > '9') return SUBD_ERR_PARSE;
+        if (v > 214748364u) return SUBD_ERR_INDEX;
+        v = v * 10u + (uint32_t)(*s - '0');
+        if (v > 2147483647u) return SUBD_ERR_INDEX;
+    }
+    *out = neg ? -(int32_t)v : (int32_t)v;
+    return SUBD_OK;
+}
+
+int text_line_is_text(const char *s, const char *e)
+{
+    for (; s < e; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c < 0x20u && c != '\t') return 0;
+        if (c == 0x7fu) return 0;
+    }
+    return 1;
+}
+
+int text_parse_real(const char **s, const char *e, subd_real *out)
+{
+    const char *p = text_skip_ws(*s, e);
+    int st;
+    if (p >= e) return SUBD_ERR_PARSE;
+    st = subd_real_parse(&p, e, out);
+    if (st != SUBD_OK) return st;
+    if (p < e && *p != ' ' && *p != '\t' && *p != '\r') return SUBD_ERR_PARSE;
+    *s = p;
+    return SUBD_OK;
+}
+
+void sink_chars(text_sink *k, const char *s, uint32_t n)
+{
+    uint32_t i;
+    if (k->overflow || n > UINT32_MAX - k->len) { k->overflow = 1; return; }
+    if (k->buf && k->len + n <= k->cap)
+        for (i = 0; i < n; i++) k->buf[k->len + i] = s[i];
+    k->len += n;
+}
+
+void sink_str(text_sink *k, const char *s)
+{
+    uint32_t n = 0;
+    while (s[n]) n++;
+    sink_chars(k, s, n);
+}
+
+void sink_u32(text_sink *k, uint32_t v)
+{
+    char b[10];
+    uint32_t n = 0;
+    do { b[9u - n] = (char)('0' + (int)(v % 10u)); v /= 10u; n++; } while (v);
+    sink_chars(k, b + 10u - n, n);
+}
+
+void sink_real(text_sink *k, subd_real x)
+{
+    char b[32];
+    sink_chars(k, b, subd_real_format(x, b));
+}
+
+int sink_finish(const text_sink *k, uint32_t *len)
+{
+    if (k->overflow) return SUBD_ERR_TOO_BIG;
+    *len = k->len;
+    if (k->buf && k->len > k->cap) return SUBD_ERR_NOMEM;
+    return SUBD_OK;
+}

@@ -1,0 +1,174 @@
+/* Test harness implementation: counting, printing, hashing, guard bytes, PRNG. */
+#include "harness.h"
+
+static uint32_t g_checks_failed_in_test;
+static uint32_t g_tests_passed, g_tests_failed;
+
+uint8_t h_arena_buf[H_ARENA_BYTES] __attribute__((aligned(8)));
+
+void h_str(const char *s)
+{
+    uint32_t n = 0;
+    while (s[n]) n++;
+    port_write(s, n);
+}
+
+void h_u32(uint32_t v)
+{
+    char b[10];
+    uint32_t n = 0;
+    do { b[9 - n] = (char)('0' + v % 10u); v /= 10u; n++; } while (v);
+    port_write(b + 10 - n, n);
+}
+
+void h_i32(int32_t v)
+{
+    if (v < 0) { h_str("-"); h_u32(0u - (uint32_t)v); } else h_u32((uint32_t)v);
+}
+
+void h_hex32(uint32_t v)
+{
+    static const char d[] = "0123456789abcdef";
+    char b[10];
+    int i;
+    b[0] = '0'; b[1] = 'x';
+    for (i = 0; i < 8; i++) b[2 + i] = d[(v >> (28 - 4 * i)) & 15u];
+    port_write(b, 10);
+}
+
+void h_nl(void) { port_write("\n", 1); }
+
+int h_check(int cond, const char *file, int line, const char *expr)
+{
+    if (!cond) {
+        g_checks_failed_in_test++;
+        h_str("  FAIL ");
+        h_str(file);
+        h_str(":");
+        h_u32((uint32_t)line);
+        h_str(": ");
+        h_str(expr);
+        h_nl();
+    }
+    return cond;
+}
+
+int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const char *expr)
+{
+    if (got != want) {
+        h_check(0, file, line, expr);
+        h_str("    got ");
+        h_i32((int32_t)got);
+        h_str(" want ");
+        h_i32((int32_t)want);
+        h_nl();
+        return 0;
+    }
+    return 1;
+}
+
+uint32_t h_fnv(uint32_t h, const void *data, uint32_t n)
+{
+    const uint8_t *p = (const uint8_t *)data;
+    uint32_t i;
+    for (i = 0; i < n; i++) { h ^= p[i]; h *= 16777619u; }
+    return h;
+}
+
+static uint32_t fnv_u32(uint32_t h, uint32_t v)
+{
+    uint8_t b[4];
+    b[0] = (uint8_t)v; b[1] = (uint8_t)(v >> 8); b[2] = (uint8_t)(v >> 16); b[3] = (uint8_t)(v >> 24);
+    return h_fnv(h, b, 4);
+}
+
+uint32_t h_mesh_hash(const subd_mesh *m)
+{
+    uint32_t h = 2166136261u, i;
+    h = fnv_u32(h, m->num_verts);
+    h = fnv_u32(h, m->num_faces);
+    for (i = 0; i < 3u * m->num_verts; i++) h = fnv_u32(h, subd_real_bits(m->pos[i]));
+    for (i = 0; i <= m->num_faces; i++) h = fnv_u32(h, m->face_start[i]);
+    for (i = 0; i < m->num_corners; i++) {
+        h = fnv_u32(h, m->corner_vert[i]);
+        h = fnv_u32(h, m->twin[i]);
+        h = fnv_u32(h, m->edge_tag[i]);
+    }
+    for (i = 0; i < m->num_verts; i++) {
+        h = fnv_u32(h, m->vert_out[i]);
+        h = fnv_u32(h, m->vert_tag[i]);
+    }
+    for (i = 0; i < m->num_line_verts; i++) h = fnv_u32(h, m->line_vert[i]);
+    return h;
+}
+
+void h_hash(const char *name, uint32_t value)
+{
+    h_str("HASH ");
+    h_str(name);
+    h_str(" ");
+    h_hex32(value);
+    h_nl();
+}
+
+uint32_t h_rand(uint32_t *s)
+{
+    uint32_t x = *s ? *s : 2463534242u;
+    x ^= x << 13; x ^= x >> 17; x ^= x << 5;
+    *s = x;
+    return x;
+}
+
+void h_guard_fill(uint8_t *p, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) p[i] = (uint8_t)(0xA5u ^ i);
+}
+
+int h_guard_ok(const uint8_t *p, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) if (p[i] != (uint8_t)(0xA5u ^ i)) return 0;
+    return 1;
+}
+
+static void run_suite(const test_case *t)
+{
+    for (; t->name; t++) {
+        g_checks_failed_in_test = 0;
+        t->fn();
+        if (g_checks_failed_in_test) {
+            g_tests_failed++;
+            h_str("FAIL ");
+        } else {
+            g_tests_passed++;
+            h_str("ok   ");
+        }
+        h_str(t->name);
+        h_nl();
+    }
+}
+
+int main(void)
+{
+    /* Print the effective configuration so a misspelt option cannot pass silently. */
+    h_str("tinysubd " SUBD_VERSION " tests: arithmetic=");
+    h_str(SUBD_FIXED ? "q16.16" : "float32");
+    h_str(" platform=");
+    h_str(H_HOST ? "host" : "cortex-m");
+    h_str(" max_face_size=");
+    h_u32(SUBD_MAX_FACE_SIZE);
+    h_str(" max_levels=");
+    h_u32(SUBD_MAX_LEVELS);
+    h_nl();
+#define SUITE(name) run_suite(name);
+#include "suites.h"
+#undef SUITE
+    h_u32(g_tests_passed);
+    h_str(" passed, ");
+    h_u32(g_tests_failed);
+    h_str(" failed");
+    h_nl();
+    port_exit(g_tests_failed ? 1 : 0);
+    return g_tests_failed ? 1 : 0;
+}

@@ -1,0 +1,62 @@
+/* Test harness shared by the host and QEMU builds: explicit test tables, CHECK macros that
+ * report file:line and keep going, and output through one port write function with an own
+ * integer formatter so host and target print the same bytes. */
+#ifndef HARNESS_H
+#define HARNESS_H
+
+#include <stdint.h>
+#include "subd.h"
+
+/* Provided by the port (port/host/port_host.c, port/cortex-m/port_cm.c). */
+void port_write(const char *s, uint32_t n);
+void port_exit(int code);
+
+typedef void (*test_fn)(void);
+typedef struct test_case {
+    const char *name;
+    test_fn fn;
+} test_case;
+
+/* Every suite is a table ending with {0, 0}; test/suites.h lists them. */
+#define SUITE(name) extern const test_case name[];
+#include "suites.h"
+#undef SUITE
+
+void h_str(const char *s);
+void h_u32(uint32_t v);
+void h_i32(int32_t v);
+void h_hex32(uint32_t v);
+void h_nl(void);
+
+/* Records one check; prints the failing location and expression. Returns cond. */
+int h_check(int cond, const char *file, int line, const char *expr);
+int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const char *expr);
+
+#define CHECK(c) h_check((c) ? 1 : 0, __FILE__, __LINE__, #c)
+#define CHECK_EQ(got, want) h_check_eq_i((int64_t)(got), (int64_t)(want), __FILE__, __LINE__, #got " == " #want)
+
+/* Output hashes: FNV-1a 32-bit. Every test that builds output prints `HASH name value`
+ * lines; the Makefile compares those lines between host and QEMU for each arithmetic. */
+uint32_t h_fnv(uint32_t h, const void *data, uint32_t n);
+uint32_t h_mesh_hash(const subd_mesh *m);
+void h_hash(const char *name, uint32_t value);
+
+/* Deterministic PRNG (xorshift32) for property tests: no rand(), no clocks. */
+uint32_t h_rand(uint32_t *state);
+
+/* Guard bytes: fill / verify a pattern around arena buffers (out-of-bounds detection that
+ * works on the target, where there is no AddressSanitizer). */
+void h_guard_fill(uint8_t *p, uint32_t n);
+int h_guard_ok(const uint8_t *p, uint32_t n);
+
+/* A shared scratch arena buffer for tests (static, 8-aligned). */
+#define H_ARENA_BYTES (256u * 1024u)
+extern uint8_t h_arena_buf[];
+
+#if defined(SUBD_HOST)
+#define H_HOST 1
+#else
+#define H_HOST 0
+#endif
+
+#endif

@@ -1,0 +1,11 @@
+/* The list of test suites, in run order. Each is defined in test/test_<name>.c. */
+SUITE(suite_harness)
+SUITE(suite_arena)
+SUITE(suite_real)
+SUITE(suite_trig)
+SUITE(suite_mesh)
+SUITE(suite_obj)
+SUITE(suite_off)
+SUITE(suite_bad)
+SUITE(suite_embed)
+SUITE(suite_png)

@@ -1,0 +1,95 @@
+/* OFF reader/writer: syntax against hand-written expectations, OBJ -> OFF -> mesh equality,
+ * exact plan. */
+#include "harness.h"
+#include "corpus.h"
+
+static uint32_t slen(const char *s)
+{
+    uint32_t n = 0;
+    while (s[n]) n++;
+    return n;
+}
+
+static void off_syntax(void)
+{
+    static const char text[] =
+        "OFF # header comment\n"
+        "# counts follow\n"
+        "\n"
+        "5 2 0\n"
+        "0 0 0\n"
+        "1 0 0 255 0 0\n" /* colour ignored */
+        "1 1 0\r\n"
+        "0 1 0\n"
+        "0.5 0.5 7\n"
+        "4 0 1 2 3 0.5 0.5 0.5 1\n"
+        "3 1 0 4\n";
+    subd_arena a;
+    subd_mesh m;
+    subd_diag d;
+    uint32_t ovf = 0;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!CHECK_EQ(subd_off_read(&a, text, slen(text), &m, &d), SUBD_OK)) {
+        h_str("    line "); h_u32(d.line); h_nl();
+        return;
+    }
+    CHECK_EQ(m.num_verts, 5);
+    CHECK_EQ(m.num_faces, 2);
+    CHECK_EQ(subd_face_size(&m, 0), 4);
+    CHECK_EQ(m.corner_vert[4], 1);
+    CHECK_EQ(m.corner_vert[6], 4);
+    CHECK(m.pos[14] == subd_from_int(7, &ovf));
+    CHECK_EQ(m.num_edges, 6);
+    /* counts on the keyword line */
+    {
+        static const char t2[] = "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+        CHECK_EQ(subd_off_read(&a, t2, slen(t2), &m, &d), SUBD_OK);
+        CHECK_EQ(m.num_faces, 1);
+    }
+}
+
+static void off_from_obj(void)
+{
+    static char buf[32768];
+    const corpus_file *f = corpus_find("test/data/cube_quad.obj");
+    subd_arena a;
+    subd_mesh m, n;
+    subd_diag d;
+    uint32_t len, i, plan, s;
+    static uint8_t abuf[2048 + 64] __attribute__((aligned(8)));
+    if (!CHECK(f != 0)) return;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!CHECK_EQ(subd_obj_read(&a, f->data, f->len, &m, &d), SUBD_OK)) return;
+    CHECK_EQ(subd_off_write(&m, buf, sizeof buf, &len), SUBD_OK);
+    CHECK_EQ(subd_off_write(&m, buf, len - 1u, &i), SUBD_ERR_NOMEM);
+    if (!CHECK_EQ(subd_off_read(&a, buf, len, &n, &d), SUBD_OK)) return;
+    CHECK_EQ(n.num_verts, 8);
+    CHECK_EQ(n.num_faces, 6);
+    for (i = 0; i < 3u * m.num_verts; i++) CHECK(subd_real_bits(m.pos[i]) == subd_real_bits(n.pos[i]));
+    for (i = 0; i < m.num_corners; i++) CHECK_EQ(m.corner_vert[i], n.corner_vert[i]);
+    CHECK_EQ(h_mesh_hash(&m), h_mesh_hash(&n));
+    h_hash("off_cube", h_mesh_hash(&n));
+    /* exact plan */
+    CHECK_EQ(subd_off_plan(buf, len, &plan, &d), SUBD_OK);
+    if (!CHECK(plan <= 2048u)) return;
+    for (s = 0; s <= plan; s++) {
+        subd_arena b;
+        int st;
+        subd_arena_init(&b, abuf, s);
+        h_guard_fill(abuf + s, 64);
+        st = subd_off_read(&b, buf, len, &n, &d);
+        if (s < plan) {
+            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&b), 0)) return;
+        } else {
+            CHECK_EQ(st, SUBD_OK);
+            CHECK_EQ(b.peak, plan);
+        }
+        if (!CHECK(h_guard_ok(abuf + s, 64))) return;
+    }
+}
+
+const test_case suite_off[] = {
+    {"off_syntax", off_syntax},
+    {"off_from_obj", off_from_obj},
+    {0, 0}
+};

@@ -1,72 +1,201 @@
 # tinysubd — every entry point. See README.md.
-#   make test    everything a change must pass (host float/fixed with ASan+UBSan, QEMU
-#                Cortex-M4F float and Cortex-M3 fixed, host = QEMU hashes, link-time proofs)
+#   make test    everything a change must pass: host float/fixed tests with ASan+UBSan, the
+#                same tests under QEMU on Cortex-M4F (float) and Cortex-M3 (Q16.16), host =
+#                QEMU output hashes, link-time proofs, harness self-tests, the subd tool test.
+#                Installs the ARM toolchain and QEMU from Debian packages when missing.
 #   make demo    firmware demo in QEMU + host tool on bundled meshes -> build/demo/
 #   make bench   performance report (never part of make test)
+#   make tool    build/bin/subd (float32) and build/bin/subd-fixed (Q16.16)
 
 .SUFFIXES:
 .DELETE_ON_ERROR:
 B := build
+SHARED ?= ../shared
 
 SRC      := $(sort $(wildcard src/*.c))
+SRC_H    := $(wildcard include/*.h src/*.h)
 TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c
+TEST_H   := $(wildcard test/*.h)
+GEN      := $(B)/gen/corpus.h $(B)/gen/readme_example.c
 
 WARN := -std=c99 -Wall -Wextra -Werror -pedantic -Wshadow -Wvla -Wdouble-promotion \
         -Wstrict-prototypes -Wmissing-prototypes -ffp-contract=off
 SRC_WARN := -Wconversion -Wsign-conversion
-INC := -Iinclude -Itest -I$(B)/gen
+INC := -Iinclude -Itest -Iport -I$(B)/gen
 
-# ---------------------------------------------------------------- host variants
-HOST_CC  ?= gcc
-SAN      := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-HOST_OPT := -O1 -g
-host_flags = $(WARN) $(INC) -DSUBD_HOST=1 -DSUBD_FIXED=$(1)
+# ------------------------------------------------------------------ host variants
+HOST_CC ?= gcc
+SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+HOST_FLAGS_host-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O1 -g $(SAN)
+HOST_FLAGS_host-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O1 -g $(SAN)
+HOST_FLAGS_tool-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 -g
+HOST_FLAGS_tool-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O2 -g
+HOST_TEST_PORT := port/host/test_port.c port/print.c port/host/png.c port/host/render.c
+TOOL_PORT      := port/host/subd_main.c port/host/fileio.c port/host/png.c port/host/render.c
 
-$(B)/host-float/src/%.o: src/%.c $(wildcard include/*.h) | dirs
-	$(HOST_CC) $(call host_flags,0) $(SRC_WARN) $(HOST_OPT) $(SAN) -c $< -o $@
-$(B)/host-fixed/src/%.o: src/%.c $(wildcard include/*.h) | dirs
-	$(HOST_CC) $(call host_flags,1) $(SRC_WARN) $(HOST_OPT) $(SAN) -c $< -o $@
-$(B)/host-float/test/%.o: test/%.c $(wildcard include/*.h test/*.h) $(B)/gen/corpus.h $(B)/gen/readme_example.c | dirs
-	$(HOST_CC) $(call host_flags,0) $(HOST_OPT) $(SAN) -c $< -o $@
-$(B)/host-fixed/test/%.o: test/%.c $(wildcard include/*.h test/*.h) $(B)/gen/corpus.h $(B)/gen/readme_example.c | dirs
-	$(HOST_CC) $(call host_flags,1) $(HOST_OPT) $(SAN) -c $< -o $@
-$(B)/host-float/port/%.o: port/%.c $(wildcard include/*.h test/*.h port/host/*.h) | dirs
-	$(HOST_CC) $(call host_flags,0) $(HOST_OPT) $(SAN) -c $< -o $@
-$(B)/host-fixed/port/%.o: port/%.c $(wildcard include/*.h test/*.h port/host/*.h) | dirs
-	$(HOST_CC) $(call host_flags,1) $(HOST_OPT) $(SAN) -c $< -o $@
+define host_variant
+$(B)/$(1)/src/%.o: src/%.c $(SRC_H) | dirs
+	$(HOST_CC) $(WARN) $(SRC_WARN) $(INC) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/test/%.o: test/%.c $(SRC_H) $(TEST_H) $(GEN) | dirs
+	$(HOST_CC) $(WARN) $(INC) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/port/%.o: port/%.c $(SRC_H) $(TEST_H) $(wildcard port/*.h port/host/*.h) | dirs
+	$(HOST_CC) $(WARN) $(INC) -Iport/host $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/gen/%.o: $(B)/gen/%.c $(GEN) | dirs
+	$(HOST_CC) $(WARN) $(INC) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/test-fail.o: test/test_harness.c $(SRC_H) $(TEST_H) | dirs
+	$(HOST_CC) $(WARN) $(INC) $(HOST_FLAGS_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
+endef
+$(foreach v,host-float host-fixed tool-float tool-fixed,$(eval $(call host_variant,$(v))))
 
-HOST_TEST_PORT := port/host/test_port.c port/host/png.c port/host/render.c
-host_test_objs = $(SRC:%.c=$(B)/$(1)/%.o) $(TEST_SRC:%.c=$(B)/$(1)/%.o) $(B)/$(1)/gen/corpus.o $(HOST_TEST_PORT:%.c=$(B)/$(1)/%.o)
-
+host_test_objs = $(SRC:%.c=$(B)/$(1)/%.o) $(TEST_SRC:%.c=$(B)/$(1)/%.o) \
+                 $(HOST_TEST_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/gen/corpus.o
 $(B)/host-float/test.elf: $(call host_test_objs,host-float)
 	$(HOST_CC) $(SAN) $^ -lm -o $@
 $(B)/host-fixed/test.elf: $(call host_test_objs,host-fixed)
 	$(HOST_CC) $(SAN) $^ -lm -o $@
+$(B)/bin/subd: $(SRC:%.c=$(B)/tool-float/%.o) $(TOOL_PORT:%.c=$(B)/tool-float/%.o)
+	$(HOST_CC) $^ -lm -o $@
+$(B)/bin/subd-fixed: $(SRC:%.c=$(B)/tool-fixed/%.o) $(TOOL_PORT:%.c=$(B)/tool-fixed/%.o)
+	$(HOST_CC) $^ -lm -o $@
+tool: $(B)/bin/subd $(B)/bin/subd-fixed
 
-# ---------------------------------------------------------------- generated test corpus
-# Test inputs (test/data, test/bad) are embedded as C arrays so the same files reach QEMU.
+# ------------------------------------------------------------------ Cortex-M variants
+CM_CC   := arm-none-eabi-gcc
+CM_AR   := arm-none-eabi-ar
+CM_NM   := arm-none-eabi-nm
+CM_SIZE := arm-none-eabi-size
+# Stack use per function is bounded at compile time (-Wstack-usage) on the device.
+CM_FLAGS := $(WARN) -O2 -g -ffunction-sections -fdata-sections -fstack-usage -Wstack-usage=1024
+ARCH_m4f-float  := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+ARCH_m3-fixed   := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+FIXED_m4f-float := 0
+FIXED_m3-fixed  := 1
+LDS_m4f-float   := linker/mps2_an386.ld
+LDS_m3-fixed    := linker/mps2_an385.ld
+MACHINE_m4f-float := mps2-an386
+MACHINE_m3-fixed  := mps2-an385
+CM_PORT := port/cortex-m/startup.c port/cortex-m/port_cm.c port/print.c
+
+define cm_variant
+CMF_$(1) := $(ARCH_$(1)) $(CM_FLAGS) -DSUBD_FIXED=$(FIXED_$(1)) $(INC) -Iport/cortex-m
+$(B)/$(1)/src/%.o: src/%.c $(SRC_H) | dirs
+	$(CM_CC) $$(CMF_$(1)) $(SRC_WARN) -c $$< -o $$@
+$(B)/$(1)/test/%.o: test/%.c $(SRC_H) $(TEST_H) $(GEN) | dirs
+	$(CM_CC) $$(CMF_$(1)) -c $$< -o $$@
+$(B)/$(1)/port/%.o: port/%.c $(TEST_H) $(wildcard port/*.h port/cortex-m/*.h) | dirs
+	$(CM_CC) $$(CMF_$(1)) -c $$< -o $$@
+$(B)/$(1)/gen/%.o: $(B)/gen/%.c $(GEN) | dirs
+	$(CM_CC) $$(CMF_$(1)) -c $$< -o $$@
+$(B)/$(1)/test-fail.o: test/test_harness.c $(SRC_H) $(TEST_H) | dirs
+	$(CM_CC) $$(CMF_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
+$(B)/$(1)/selftest%.o: test/selftest.c $(wildcard port/cortex-m/*.h) | dirs
+	$(CM_CC) $$(CMF_$(1)) -DSELFTEST_MODE=$$* -c $$< -o $$@
+$(B)/$(1)/libsubd.a: $(SRC:%.c=$(B)/$(1)/%.o)
+	rm -f $$@ && $(CM_AR) rcs $$@ $$^
+CM_LINK_$(1) = $(CM_CC) $(ARCH_$(1)) -nostartfiles --specs=nano.specs -Wl,--gc-sections \
+               -Wl,--fatal-warnings -T $(LDS_$(1)) -Wl,-Map=$$@.map
+$(B)/$(1)/test.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(TEST_SRC:%.c=$(B)/$(1)/%.o) $(B)/$(1)/gen/corpus.o $(B)/$(1)/libsubd.a
+	$$(CM_LINK_$(1)) $$^ -o $$@
+$(B)/$(1)/test-fail.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/test-fail.o \
+        $(filter-out $(B)/$(1)/test/test_harness.o,$(TEST_SRC:%.c=$(B)/$(1)/%.o)) $(B)/$(1)/gen/corpus.o $(B)/$(1)/libsubd.a
+	$$(CM_LINK_$(1)) $$^ -o $$@
+$(B)/$(1)/selftest%.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/selftest%.o
+	$$(CM_LINK_$(1)) $$^ -o $$@
+$(B)/$(1)/demo.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/port/cortex-m/demo.o $(B)/$(1)/libsubd.a
+	$$(CM_LINK_$(1)) $$^ -o $$@
+$(1)-images: $(B)/$(1)/test.elf $(B)/$(1)/test-fail.elf $(foreach n,0 1 2 3,$(B)/$(1)/selftest$(n).elf)
+endef
+$(foreach v,m4f-float m3-fixed,$(eval $(call cm_variant,$(v))))
+
+$(B)/host-float/test-fail.elf: $(filter-out $(B)/host-float/test/test_harness.o,$(call host_test_objs,host-float)) $(B)/host-float/test-fail.o
+	$(HOST_CC) $(SAN) $^ -lm -o $@
+
+# ------------------------------------------------------------------ generated sources
+# Test inputs (test/data, test/bad) are embedded as C arrays so the same bytes reach QEMU.
+CORPUS := $(sort $(wildcard test/data/*) $(wildcard test/bad/*))
 $(B)/gen/embed: test/tools/embed.c | dirs
 	$(HOST_CC) -std=c99 -O1 -Wall -Werror $< -o $@
-CORPUS := $(sort $(wildcard test/data/*) $(wildcard test/bad/*))
 $(B)/gen/corpus.c $(B)/gen/corpus.h &: $(B)/gen/embed $(CORPUS)
 	$(B)/gen/embed $(B)/gen/corpus.c $(B)/gen/corpus.h $(CORPUS)
-$(B)/host-float/gen/corpus.o: $(B)/gen/corpus.c | dirs
-	$(HOST_CC) $(call host_flags,0) $(HOST_OPT) $(SAN) -c $< -o $@
-$(B)/host-fixed/gen/corpus.o: $(B)/gen/corpus.c | dirs
-	$(HOST_CC) $(call host_flags,1) $(HOST_OPT) $(SAN) -c $< -o $@
-
-# The README's embedding example is compiled by the tests (test/test_embed.c).
+# The README's embedding example is compiled and run by the tests (test/test_embed.c).
 $(B)/gen/readme_example.c: README.md | dirs
 	awk '/^<!-- embed-example/{f=1;next} f&&/^```c/{g=1;next} g&&/^```/{exit} g{print}' $< > $@
 	@test -s $@ || { echo "README.md: embed-example block not found" >&2; exit 1; }
 
+VARIANTS := host-float host-fixed tool-float tool-fixed m4f-float m3-fixed
 dirs:
-	@mkdir -p $(B)/gen $(foreach v,host-float host-fixed m4f-float m3-fixed,$(B)/$(v)/src $(B)/$(v)/test $(B)/$(v)/port/host $(B)/$(v)/port/cortex-m $(B)/$(v)/gen)
+	@mkdir -p $(B)/gen $(B)/bin $(B)/logs $(foreach v,$(VARIANTS),$(B)/$(v)/src $(B)/$(v)/test \
+	    $(B)/$(v)/port/host $(B)/$(v)/port/cortex-m $(B)/$(v)/gen)
 
-host-test: $(B)/host-float/test.elf $(B)/host-fixed/test.elf
-	$(B)/host-float/test.elf
-	$(B)/host-fixed/test.elf
+# ------------------------------------------------------------------ toolchain
+# A fresh Debian machine may have only gcc and make: install what is missing.
+CM_OK = command -v $(CM_CC) >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1 && \
+        test -f /usr/lib/arm-none-eabi/lib/libc_nano.a
+deps:
+	@if ! ( $(CM_OK) ); then \
+	    echo "installing gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"; \
+	    SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	    $$SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -q \
+	        --no-install-recommends gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm \
+	        || { echo "could not install the ARM toolchain / QEMU" >&2; exit 1; }; \
+	fi
 
-.PHONY: dirs host-test test demo bench clean
+# ------------------------------------------------------------------ make test
+L := $(B)/logs
+test: deps
+	@$(MAKE) --no-print-directory test-build
+	@$(MAKE) --no-print-directory test-run
+
+test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/test-fail.elf \
+            m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool
+
+test-run:
+	@rm -rf $(L) && mkdir -p $(L)
+	@test/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf
+	@test/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
+	@test/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf 600
+	@test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf 600
+	@test/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
+	@test/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
+	@test/run_suite.sh "link proofs m4f-float" $(L)/link-m4f.log test/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
+	@test/run_suite.sh "link proofs m3-fixed" $(L)/link-m3.log test/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
+	@test/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/harness_selftest.sh mps2-an386 $(B)/m4f-float
+	@test/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/harness_selftest.sh mps2-an385 $(B)/m3-fixed
+	@test/run_suite.sh "subd tool" $(L)/tool.log test/tool_test.sh $(B)/bin
+	@test/summary.sh $(L)/*.log
+
+# ------------------------------------------------------------------ make demo / bench
+demo: deps
+	@$(MAKE) --no-print-directory demo-run
+
+demo-run: $(B)/m4f-float/demo.elf $(B)/m3-fixed/demo.elf tool
+	@mkdir -p $(B)/demo
+	@echo "== firmware demo, Cortex-M4F float32 (QEMU mps2-an386)"
+	@qemu/run.sh mps2-an386 $(B)/m4f-float/demo.elf 120
+	@echo "== firmware demo, Cortex-M3 Q16.16 (QEMU mps2-an385)"
+	@qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 120
+	@echo "== host tool"
+	@for m in icosahedron torus_tri spot_control_mesh hexfan; do \
+	    $(B)/bin/subd render test/data/$$m.obj -o $(B)/demo/$$m.png || exit 1; \
+	    echo "wrote $(B)/demo/$$m.png"; done
+	@$(B)/bin/subd info test/data/torus_tri.obj
+
+$(B)/bench/bench: bench/bench.c $(SRC) $(SRC_H) port/host/fileio.c | dirs
+	@mkdir -p $(B)/bench
+	$(HOST_CC) $(WARN) $(INC) -Iport/host -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 bench/bench.c $(SRC) port/host/fileio.c -lm -o $@
+
+bench: deps
+	@$(MAKE) --no-print-directory bench-run
+
+bench-run: $(B)/bench/bench $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a
+	@echo "== host: OBJ parse and mesh build (make bench; $(HOST_CC) -O2)"
+	@$(B)/bench/bench $(wildcard $(SHARED)/data/meshes/bench/*.obj)
+	@echo "== Cortex-M library size (arm-none-eabi-size, -O2)"
+	@$(CM_SIZE) -t $(B)/m4f-float/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m4f-float libsubd.a/'
+	@$(CM_SIZE) -t $(B)/m3-fixed/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m3-fixed libsubd.a/'
+
 clean:
 	rm -rf $(B)
+
+.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run tool clean \
+        m4f-float-images m3-fixed-images

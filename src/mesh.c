@@ -24,7 +24,7 @@ void subd_diag_clear(subd_diag *d)
     d->bytes_needed = 0;
 }
 
-int mesh_fail(subd_diag *d, int status)
+int subd_fail(subd_diag *d, int status)
 {
     d->status = status;
     return status;
@@ -66,14 +66,14 @@ static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32
     return SUBD_OK;
 }
 
-uint32_t mesh_plan_bytes(const mesh_counts *c)
+uint32_t subd_mesh_counts_bytes(const mesh_counts *c)
 {
     uint32_t bytes;
     mesh_layout(0, c, 0, &bytes);
     return bytes;
 }
 
-int mesh_alloc(subd_arena *a, const mesh_counts *c, subd_mesh *m)
+int subd_mesh_alloc_arrays(subd_arena *a, const mesh_counts *c, subd_mesh *m)
 {
     uint32_t bytes;
     int st;
@@ -100,17 +100,17 @@ static int check_faces(const subd_mesh *m, subd_diag *d)
         uint32_t s = m->face_start[f], e = m->face_start[f + 1u];
         d->face = f;
         for (i = s; i < e; i++)
-            if (m->corner_vert[i] >= m->num_verts) return mesh_fail(d, SUBD_ERR_INDEX);
+            if (m->corner_vert[i] >= m->num_verts) return subd_fail(d, SUBD_ERR_INDEX);
         for (i = s; i < e; i++)
             for (j = i + 1u; j < e; j++)
-                if (m->corner_vert[i] == m->corner_vert[j]) return mesh_fail(d, SUBD_ERR_DEGENERATE);
+                if (m->corner_vert[i] == m->corner_vert[j]) return subd_fail(d, SUBD_ERR_DEGENERATE);
     }
     d->face = SUBD_NONE;
     for (f = 0; f < m->num_lines; f++) {
         for (i = m->line_start[f]; i < m->line_start[f + 1u]; i++) {
             if (m->line_vert[i] >= m->num_verts) {
                 d->polyline = f;
-                return mesh_fail(d, SUBD_ERR_INDEX);
+                return subd_fail(d, SUBD_ERR_INDEX);
             }
         }
     }
@@ -123,7 +123,7 @@ static int check_positions(const subd_mesh *m, subd_diag *d)
     for (i = 0; i < 3u * m->num_verts; i++) {
         if (!subd_real_is_finite(m->pos[i])) {
             d->vertex = i / 3u;
-            return mesh_fail(d, SUBD_ERR_NAN);
+            return subd_fail(d, SUBD_ERR_NAN);
         }
     }
     return SUBD_OK;
@@ -156,11 +156,11 @@ static int build_twins(subd_mesh *m, const uint32_t *vstart, const uint32_t *vco
         }
         if (same + rev > 2u) {
             d->face = last_face;
-            return mesh_fail(d, SUBD_ERR_NONMANIFOLD_EDGE);
+            return subd_fail(d, SUBD_ERR_NONMANIFOLD_EDGE);
         }
         if (same == 2u) {
             d->face = last_face;
-            return mesh_fail(d, SUBD_ERR_ORIENTATION);
+            return subd_fail(d, SUBD_ERR_ORIENTATION);
         }
         if (rev == 1u) m->twin[h] = other;
     }
@@ -189,7 +189,7 @@ static int build_fans(subd_mesh *m, const uint32_t *vstart, const uint32_t *vcor
         }
         if (nb > 1u) {
             d->vertex = v;
-            return mesh_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
+            return subd_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
         }
         if (nb == 0) start = vcorner[vstart[v]];
         steps = 1;
@@ -197,7 +197,7 @@ static int build_fans(subd_mesh *m, const uint32_t *vstart, const uint32_t *vcor
             steps++;
         if (steps != deg) {
             d->vertex = v;
-            return mesh_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
+            return subd_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
         }
         m->vert_out[v] = start;
         if (nb) m->vert_tag[v] = SUBD_VTAG_BOUNDARY;
@@ -230,7 +230,7 @@ static void count_boundary_loops(subd_mesh *m)
     m->num_edges = (m->num_corners + nbe) / 2u;
 }
 
-int mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
+int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
 {
     uint32_t mark = subd_arena_mark(a);
     uint32_t *vstart, *vcorner, v, f, c;
@@ -246,7 +246,7 @@ int mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
     vcorner = (uint32_t *)subd_arena_alloc(a, m->num_corners * 4u);
     if (!vstart || !vcorner) {
         subd_arena_rewind(a, mark);
-        return mesh_fail(d, SUBD_ERR_NOMEM);
+        return subd_fail(d, SUBD_ERR_NOMEM);
     }
     /* count -> prefix sum -> scatter; vstart[v] ends as the first bucket slot of v */
     for (v = 0; v <= m->num_verts; v++) vstart[v] = 0;
@@ -273,12 +273,12 @@ static int face_list_counts(const subd_face_list *fl, mesh_counts *c, subd_diag 
         uint32_t k = fl->face_size ? fl->face_size[f] : 3u;
         if (k < 3u || k > SUBD_MAX_FACE_SIZE) {
             d->face = f;
-            return mesh_fail(d, SUBD_ERR_FACE_SIZE);
+            return subd_fail(d, SUBD_ERR_FACE_SIZE);
         }
         nc += k;
     }
     for (f = 0; f < fl->num_lines; f++) nlv += fl->line_size[f];
-    if (nc >= UINT32_MAX || nlv >= UINT32_MAX) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+    if (nc >= UINT32_MAX || nlv >= UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     c->nv = fl->num_verts;
     c->nf = fl->num_faces;
     c->nc = (uint32_t)nc;
@@ -304,7 +304,7 @@ int subd_mesh_plan(const subd_face_list *fl, uint32_t *bytes)
     if (!face_list_ok(fl) || !bytes) return SUBD_ERR_PARAM;
     subd_diag_clear(&d);
     if ((st = face_list_counts(fl, &c, &d)) != SUBD_OK) return st;
-    *bytes = mesh_plan_bytes(&c);
+    *bytes = subd_mesh_counts_bytes(&c);
     return (*bytes == UINT32_MAX) ? SUBD_ERR_TOO_BIG : SUBD_OK;
 }
 
@@ -318,15 +318,15 @@ int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out,
     int st;
 
     subd_diag_clear(d);
-    if (!arena || !out || !face_list_ok(fl)) return mesh_fail(d, SUBD_ERR_PARAM);
-    if (fl->num_verts == 0) return mesh_fail(d, SUBD_ERR_EMPTY);
+    if (!arena || !out || !face_list_ok(fl)) return subd_fail(d, SUBD_ERR_PARAM);
+    if (fl->num_verts == 0) return subd_fail(d, SUBD_ERR_EMPTY);
     if ((st = face_list_counts(fl, &c, d)) != SUBD_OK) return st;
-    d->bytes_needed = mesh_plan_bytes(&c);
+    d->bytes_needed = subd_mesh_counts_bytes(&c);
     mark = subd_arena_mark(arena);
-    st = mesh_alloc(arena, &c, &m);
+    st = subd_mesh_alloc_arrays(arena, &c, &m);
     if (st != SUBD_OK) {
         subd_arena_rewind(arena, mark);
-        return mesh_fail(d, st);
+        return subd_fail(d, st);
     }
     for (i = 0; i < 3u * c.nv; i++) m.pos[i] = fl->pos[i];
     m.face_start[0] = 0;
@@ -335,7 +335,7 @@ int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out,
     m.line_start[0] = 0;
     for (f = 0; f < c.nl; f++) m.line_start[f + 1u] = m.line_start[f] + fl->line_size[f];
     for (i = 0; i < c.nlv; i++) m.line_vert[i] = fl->line_index[i];
-    st = mesh_finish(arena, &m, d);
+    st = subd_mesh_finish(arena, &m, d);
     if (st != SUBD_OK) {
         subd_arena_rewind(arena, mark);
         return st;

@@ -11,18 +11,18 @@ typedef struct mesh_counts {
 
 /* Exact bytes of the mesh arrays plus the builder's temporary memory; UINT32_MAX when the
  * counts are too large for 32-bit sizes. */
-uint32_t mesh_plan_bytes(const mesh_counts *c);
+uint32_t subd_mesh_counts_bytes(const mesh_counts *c);
 
-/* Allocates the mesh arrays (not the scratch) in the order mesh_plan_bytes counts them and
+/* Allocates the mesh arrays (not the scratch) in the order subd_mesh_counts_bytes counts them and
  * sets every pointer and count of *m. Returns SUBD_OK or SUBD_ERR_NOMEM; on failure the
  * arena may have advanced (callers rewind to their own mark). */
-int mesh_alloc(subd_arena *a, const mesh_counts *c, subd_mesh *m);
+int subd_mesh_alloc_arrays(subd_arena *a, const mesh_counts *c, subd_mesh *m);
 
 /* Validates the filled arrays (pos, face_start, corner_vert, line_start, line_vert) and
  * builds corner_face, twin, vert_out, tags and the summary counts. Uses scratch memory
  * above the arrays and gives it back. Returns SUBD_OK or a validation error (with diag). */
-int mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d);
+int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d);
 
 /* Sets diag fields for an error and returns the status (for one-line error returns). */
-int mesh_fail(subd_diag *d, int status);
+int subd_fail(subd_diag *d, int status);
 #endif

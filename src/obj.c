@@ -25,7 +25,7 @@ static int is_ignored(const char *s, const char *e)
     static const char *const words[] = {"vt", "vn", "vp", "g", "o", "s", "usemtl", "mtllib", 0};
     int i;
     for (i = 0; words[i]; i++)
-        if (text_token_is(s, e, words[i])) return 1;
+        if (subd_text_token_is(s, e, words[i])) return 1;
     return 0;
 }
 
@@ -37,14 +37,14 @@ static int parse_ref(const char *s, const char *e, uint32_t nv_so_far, uint32_t 
     int32_t idx, dummy;
     int st, parts = 0;
     while (slash < e && *slash != '/') slash++;
-    st = text_parse_int(s, slash, &idx);
+    st = subd_text_parse_int(s, slash, &idx);
     if (st != SUBD_OK) return st;
     while (slash < e) { /* "/vt", "//vn", "/vt/vn" */
         const char *q = slash + 1;
         const char *r = q;
         if (++parts > 2) return SUBD_ERR_PARSE;
         while (r < e && *r != '/') r++;
-        if (r > q && text_parse_int(q, r, &dummy) == SUBD_ERR_PARSE) return SUBD_ERR_PARSE;
+        if (r > q && subd_text_parse_int(q, r, &dummy) == SUBD_ERR_PARSE) return SUBD_ERR_PARSE;
         if (r == q && (r == e)) return SUBD_ERR_PARSE; /* trailing '/' */
         slash = r;
     }
@@ -69,61 +69,61 @@ static int obj_scan_buffer(obj_scan *sc, const char *buf, uint32_t len, subd_dia
     uint32_t nv_total = m ? sc->nv_total : UINT32_MAX;
     int st = SUBD_OK;
 
-    text_init(&t, buf, len);
-    while (text_next_line(&t)) {
-        const char *s = text_skip_ws(t.line, t.line_end), *e = t.line_end, *kw_end;
+    subd_text_init(&t, buf, len);
+    while (subd_text_next_line(&t)) {
+        const char *s = subd_text_skip_ws(t.line, t.line_end), *e = t.line_end, *kw_end;
         d->line = t.lineno;
-        if (!text_line_is_text(t.line, e)) return mesh_fail(d, SUBD_ERR_PARSE);
+        if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
         if (s == e || *s == '#') continue;
-        kw_end = text_token_end(s, e);
-        if (text_token_is(s, kw_end, "v")) {
+        kw_end = subd_text_token_end(s, e);
+        if (subd_text_token_is(s, kw_end, "v")) {
             subd_real xyz[3], extra;
             uint32_t k, n_extra = 0;
             s = kw_end;
             for (k = 0; k < 3u; k++)
-                if ((st = text_parse_real(&s, e, &xyz[k])) != SUBD_OK) return mesh_fail(d, st);
+                if ((st = subd_text_parse_real(&s, e, &xyz[k])) != SUBD_OK) return subd_fail(d, st);
             /* optional w or r g b: checked for syntax, not kept */
-            for (s = text_skip_ws(s, e); s < e; s = text_skip_ws(s, e)) {
-                if (++n_extra > 4u) return mesh_fail(d, SUBD_ERR_PARSE);
+            for (s = subd_text_skip_ws(s, e); s < e; s = subd_text_skip_ws(s, e)) {
+                if (++n_extra > 4u) return subd_fail(d, SUBD_ERR_PARSE);
                 st = subd_real_parse(&s, e, &extra);
-                if (st != SUBD_OK && st != SUBD_ERR_RANGE) return mesh_fail(d, st == SUBD_ERR_NAN ? SUBD_ERR_PARSE : st);
-                if (s < e && *s != ' ' && *s != '\t' && *s != '\r') return mesh_fail(d, SUBD_ERR_PARSE);
+                if (st != SUBD_OK && st != SUBD_ERR_RANGE) return subd_fail(d, st == SUBD_ERR_NAN ? SUBD_ERR_PARSE : st);
+                if (s < e && *s != ' ' && *s != '\t' && *s != '\r') return subd_fail(d, SUBD_ERR_PARSE);
             }
             if (m) for (k = 0; k < 3u; k++) m->pos[3u * sc->c.nv + k] = xyz[k];
-            if (sc->c.nv == UINT32_MAX - 1u) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+            if (sc->c.nv == UINT32_MAX - 1u) return subd_fail(d, SUBD_ERR_TOO_BIG);
             sc->c.nv++;
-        } else if (text_token_is(s, kw_end, "f") || text_token_is(s, kw_end, "l")) {
+        } else if (subd_text_token_is(s, kw_end, "f") || subd_text_token_is(s, kw_end, "l")) {
             int is_face = (*s == 'f');
             uint32_t n = 0, base = is_face ? sc->c.nc : sc->c.nlv;
-            for (s = text_skip_ws(kw_end, e); s < e; s = text_skip_ws(s, e)) {
-                const char *te = text_token_end(s, e);
+            for (s = subd_text_skip_ws(kw_end, e); s < e; s = subd_text_skip_ws(s, e)) {
+                const char *te = subd_text_token_end(s, e);
                 uint32_t vi = 0;
                 st = parse_ref(s, te, sc->c.nv, nv_total, &vi);
-                if (st != SUBD_OK) return mesh_fail(d, st);
-                if (is_face && n >= SUBD_MAX_FACE_SIZE) return mesh_fail(d, SUBD_ERR_FACE_SIZE);
+                if (st != SUBD_OK) return subd_fail(d, st);
+                if (is_face && n >= SUBD_MAX_FACE_SIZE) return subd_fail(d, SUBD_ERR_FACE_SIZE);
                 if (m) {
                     if (is_face) m->corner_vert[base + n] = vi;
                     else m->line_vert[base + n] = vi;
                 }
-                if (n == UINT32_MAX - base - 1u) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+                if (n == UINT32_MAX - base - 1u) return subd_fail(d, SUBD_ERR_TOO_BIG);
                 n++;
                 s = te;
             }
             if (is_face) {
-                if (n < 3u) return mesh_fail(d, SUBD_ERR_FACE_SIZE);
-                if (sc->c.nf == UINT32_MAX - 1u) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+                if (n < 3u) return subd_fail(d, SUBD_ERR_FACE_SIZE);
+                if (sc->c.nf == UINT32_MAX - 1u) return subd_fail(d, SUBD_ERR_TOO_BIG);
                 sc->c.nf++;
                 sc->c.nc += n;
                 if (m) m->face_start[sc->c.nf] = sc->c.nc;
             } else {
-                if (n < 2u) return mesh_fail(d, SUBD_ERR_PARSE);
-                if (sc->c.nl == UINT32_MAX - 1u) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+                if (n < 2u) return subd_fail(d, SUBD_ERR_PARSE);
+                if (sc->c.nl == UINT32_MAX - 1u) return subd_fail(d, SUBD_ERR_TOO_BIG);
                 sc->c.nl++;
                 sc->c.nlv += n;
                 if (m) m->line_start[sc->c.nl] = sc->c.nlv;
             }
         } else if (!is_ignored(s, kw_end)) {
-            return mesh_fail(d, SUBD_ERR_PARSE);
+            return subd_fail(d, SUBD_ERR_PARSE);
         }
     }
     d->line = 0;
@@ -136,10 +136,10 @@ static uint32_t obj_statement_line(const char *buf, uint32_t len, const char *kw
 {
     text_cursor t;
     uint32_t seen = 0;
-    text_init(&t, buf, len);
-    while (text_next_line(&t)) {
-        const char *s = text_skip_ws(t.line, t.line_end);
-        if (text_token_is(s, text_token_end(s, t.line_end), kw) && seen++ == n) return t.lineno;
+    subd_text_init(&t, buf, len);
+    while (subd_text_next_line(&t)) {
+        const char *s = subd_text_skip_ws(t.line, t.line_end);
+        if (subd_text_token_is(s, subd_text_token_end(s, t.line_end), kw) && seen++ == n) return t.lineno;
     }
     return 0;
 }
@@ -155,9 +155,9 @@ static int obj_count(const char *buf, uint32_t len, mesh_counts *c, subd_diag *d
     if ((st = obj_scan_buffer(&sc, buf, len, d)) != SUBD_OK) return st;
     if (sc.c.nv == 0) {
         d->line = sc.lines ? sc.lines : 1u;
-        return mesh_fail(d, SUBD_ERR_EMPTY);
+        return subd_fail(d, SUBD_ERR_EMPTY);
     }
-    if (mesh_plan_bytes(&sc.c) == UINT32_MAX) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+    if (subd_mesh_counts_bytes(&sc.c) == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     *c = sc.c;
     return SUBD_OK;
 }
@@ -169,9 +169,9 @@ int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *dia
     mesh_counts c;
     int st;
     subd_diag_clear(d);
-    if ((!buf && len) || !bytes) return mesh_fail(d, SUBD_ERR_PARAM);
+    if ((!buf && len) || !bytes) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = obj_count(buf, len, &c, d)) != SUBD_OK) return st;
-    *bytes = mesh_plan_bytes(&c);
+    *bytes = subd_mesh_counts_bytes(&c);
     return SUBD_OK;
 }
 
@@ -185,13 +185,13 @@ int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     int st;
 
     subd_diag_clear(d);
-    if (!arena || !out || (!buf && len)) return mesh_fail(d, SUBD_ERR_PARAM);
+    if (!arena || !out || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = obj_count(buf, len, &sc.c, d)) != SUBD_OK) return st;
     mark = subd_arena_mark(arena);
-    if ((st = mesh_alloc(arena, &sc.c, &m)) != SUBD_OK) {
+    if ((st = subd_mesh_alloc_arrays(arena, &sc.c, &m)) != SUBD_OK) {
         subd_arena_rewind(arena, mark);
-        d->bytes_needed = mesh_plan_bytes(&sc.c);
-        return mesh_fail(d, st);
+        d->bytes_needed = subd_mesh_counts_bytes(&sc.c);
+        return subd_fail(d, st);
     }
     sc.nv_total = sc.c.nv;
     sc.c.nv = sc.c.nf = sc.c.nc = sc.c.nl = sc.c.nlv = 0;
@@ -200,7 +200,7 @@ int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     m.line_start[0] = 0;
     st = obj_scan_buffer(&sc, buf, len, d);
     if (st == SUBD_OK) {
-        st = mesh_finish(arena, &m, d);
+        st = subd_mesh_finish(arena, &m, d);
         if (d->face != SUBD_NONE) d->line = obj_statement_line(buf, len, "f", d->face);
         else if (d->polyline != SUBD_NONE) d->line = obj_statement_line(buf, len, "l", d->polyline);
         else if (d->vertex != SUBD_NONE) d->line = obj_statement_line(buf, len, "v", d->vertex);
@@ -216,31 +216,31 @@ int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
 static void obj_emit(const subd_mesh *m, text_sink *k)
 {
     uint32_t v, f, c, l;
-    sink_str(k, "# tinysubd\n");
+    subd_sink_str(k, "# tinysubd\n");
     for (v = 0; v < m->num_verts; v++) {
-        sink_str(k, "v ");
-        sink_real(k, m->pos[3u * v]);
-        sink_str(k, " ");
-        sink_real(k, m->pos[3u * v + 1u]);
-        sink_str(k, " ");
-        sink_real(k, m->pos[3u * v + 2u]);
-        sink_str(k, "\n");
+        subd_sink_str(k, "v ");
+        subd_sink_real(k, m->pos[3u * v]);
+        subd_sink_str(k, " ");
+        subd_sink_real(k, m->pos[3u * v + 1u]);
+        subd_sink_str(k, " ");
+        subd_sink_real(k, m->pos[3u * v + 2u]);
+        subd_sink_str(k, "\n");
     }
     for (f = 0; f < m->num_faces; f++) {
-        sink_str(k, "f");
+        subd_sink_str(k, "f");
         for (c = m->face_start[f]; c < m->face_start[f + 1u]; c++) {
-            sink_str(k, " ");
-            sink_u32(k, m->corner_vert[c] + 1u);
+            subd_sink_str(k, " ");
+            subd_sink_u32(k, m->corner_vert[c] + 1u);
         }
-        sink_str(k, "\n");
+        subd_sink_str(k, "\n");
     }
     for (l = 0; l < m->num_lines; l++) {
-        sink_str(k, "l");
+        subd_sink_str(k, "l");
         for (c = m->line_start[l]; c < m->line_start[l + 1u]; c++) {
-            sink_str(k, " ");
-            sink_u32(k, m->line_vert[c] + 1u);
+            subd_sink_str(k, " ");
+            subd_sink_u32(k, m->line_vert[c] + 1u);
         }
-        sink_str(k, "\n");
+        subd_sink_str(k, "\n");
     }
 }
 
@@ -250,12 +250,12 @@ int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
     int st;
     if (!m || !len) return SUBD_ERR_PARAM;
     obj_emit(m, &k); /* count first: a too-small buffer is left untouched */
-    if ((st = sink_finish(&k, len)) != SUBD_OK) return st;
+    if ((st = subd_sink_finish(&k, len)) != SUBD_OK) return st;
     if (!buf) return SUBD_OK;
     if (*len > cap) return SUBD_ERR_NOMEM;
     k.buf = buf;
     k.cap = cap;
     k.len = 0;
     obj_emit(m, &k);
-    return sink_finish(&k, len);
+    return subd_sink_finish(&k, len);
 }

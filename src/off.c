@@ -16,19 +16,19 @@
  * at end of buffer. */
 static const char *off_next(text_cursor *t)
 {
-    while (text_next_line(t)) {
-        const char *s = text_skip_ws(t->line, t->line_end);
+    while (subd_text_next_line(t)) {
+        const char *s = subd_text_skip_ws(t->line, t->line_end);
         if (s < t->line_end && *s != '#') return s;
-        if (!text_line_is_text(t->line, t->line_end)) return t->line;
+        if (!subd_text_line_is_text(t->line, t->line_end)) return t->line;
     }
     return 0;
 }
 
 static int off_uint(const char **s, const char *e, uint32_t *out)
 {
-    const char *p = text_skip_ws(*s, e), *te = text_token_end(p, e);
+    const char *p = subd_text_skip_ws(*s, e), *te = subd_text_token_end(p, e);
     int32_t v;
-    int st = text_parse_int(p, te, &v);
+    int st = subd_text_parse_int(p, te, &v);
     if (st == SUBD_ERR_INDEX) return SUBD_ERR_PARSE;
     if (st != SUBD_OK || v < 0) return SUBD_ERR_PARSE;
     *out = (uint32_t)v;
@@ -43,34 +43,34 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
     uint32_t nv, nf, ne, i, k, j, nc = 0;
     int st;
 
-    text_init(&t, buf, len);
+    subd_text_init(&t, buf, len);
     s = off_next(&t);
     d->line = t.lineno ? t.lineno : 1u;
-    if (!s) return mesh_fail(d, SUBD_ERR_EMPTY);
+    if (!s) return subd_fail(d, SUBD_ERR_EMPTY);
     e = t.line_end;
-    if (!text_line_is_text(t.line, e)) return mesh_fail(d, SUBD_ERR_PARSE);
-    if (!text_token_is(s, text_token_end(s, e), "OFF")) return mesh_fail(d, SUBD_ERR_PARSE);
-    s = text_skip_ws(text_token_end(s, e), e);
+    if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
+    if (!subd_text_token_is(s, subd_text_token_end(s, e), "OFF")) return subd_fail(d, SUBD_ERR_PARSE);
+    s = subd_text_skip_ws(subd_text_token_end(s, e), e);
     if (s == e || *s == '#') {
         s = off_next(&t);
         d->line = t.lineno;
-        if (!s) return mesh_fail(d, SUBD_ERR_PARSE);
+        if (!s) return subd_fail(d, SUBD_ERR_PARSE);
         e = t.line_end;
     }
-    if (off_uint(&s, e, &nv) || off_uint(&s, e, &nf) || off_uint(&s, e, &ne)) return mesh_fail(d, SUBD_ERR_PARSE);
+    if (off_uint(&s, e, &nv) || off_uint(&s, e, &nf) || off_uint(&s, e, &ne)) return subd_fail(d, SUBD_ERR_PARSE);
     (void)ne;
-    if ((uint64_t)nv * 6u + (uint64_t)nf * 8u > (uint64_t)len + 8u) return mesh_fail(d, SUBD_ERR_PARSE);
-    if (nv == 0) return mesh_fail(d, SUBD_ERR_EMPTY);
+    if ((uint64_t)nv * 6u + (uint64_t)nf * 8u > (uint64_t)len + 8u) return subd_fail(d, SUBD_ERR_PARSE);
+    if (nv == 0) return subd_fail(d, SUBD_ERR_EMPTY);
 
     for (i = 0; i < nv; i++) {
         s = off_next(&t);
         d->line = t.lineno + (s ? 0u : 1u);
-        if (!s) return mesh_fail(d, SUBD_ERR_PARSE);
+        if (!s) return subd_fail(d, SUBD_ERR_PARSE);
         e = t.line_end;
-        if (!text_line_is_text(t.line, e)) return mesh_fail(d, SUBD_ERR_PARSE);
+        if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
         for (k = 0; k < 3u; k++) {
             subd_real x;
-            if ((st = text_parse_real(&s, e, &x)) != SUBD_OK) return mesh_fail(d, st);
+            if ((st = subd_text_parse_real(&s, e, &x)) != SUBD_OK) return subd_fail(d, st);
             if (m) m->pos[3u * i + k] = x;
         }
     }
@@ -78,19 +78,19 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
         uint32_t fs;
         s = off_next(&t);
         d->line = t.lineno + (s ? 0u : 1u);
-        if (!s) return mesh_fail(d, SUBD_ERR_PARSE);
+        if (!s) return subd_fail(d, SUBD_ERR_PARSE);
         e = t.line_end;
-        if (!text_line_is_text(t.line, e)) return mesh_fail(d, SUBD_ERR_PARSE);
-        if (off_uint(&s, e, &fs)) return mesh_fail(d, SUBD_ERR_PARSE);
-        if (fs < 3u || fs > SUBD_MAX_FACE_SIZE) return mesh_fail(d, SUBD_ERR_FACE_SIZE);
+        if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
+        if (off_uint(&s, e, &fs)) return subd_fail(d, SUBD_ERR_PARSE);
+        if (fs < 3u || fs > SUBD_MAX_FACE_SIZE) return subd_fail(d, SUBD_ERR_FACE_SIZE);
         for (j = 0; j < fs; j++) {
             uint32_t vi;
-            const char *p = text_skip_ws(s, e), *te = text_token_end(p, e);
+            const char *p = subd_text_skip_ws(s, e), *te = subd_text_token_end(p, e);
             int32_t v;
-            if (p == e) return mesh_fail(d, SUBD_ERR_PARSE);
-            st = text_parse_int(p, te, &v);
-            if (st != SUBD_OK) return mesh_fail(d, st);
-            if (v < 0 || (uint32_t)v >= nv) return mesh_fail(d, SUBD_ERR_INDEX);
+            if (p == e) return subd_fail(d, SUBD_ERR_PARSE);
+            st = subd_text_parse_int(p, te, &v);
+            if (st != SUBD_OK) return subd_fail(d, st);
+            if (v < 0 || (uint32_t)v >= nv) return subd_fail(d, SUBD_ERR_INDEX);
             vi = (uint32_t)v;
             if (m) m->corner_vert[nc + j] = vi;
             s = te;
@@ -100,7 +100,7 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
     }
     if (off_next(&t)) {
         d->line = t.lineno;
-        return mesh_fail(d, SUBD_ERR_PARSE);
+        return subd_fail(d, SUBD_ERR_PARSE);
     }
     d->line = 0;
     c->nv = nv;
@@ -108,7 +108,7 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
     c->nc = nc;
     c->nl = 0;
     c->nlv = 0;
-    if (mesh_plan_bytes(c) == UINT32_MAX) return mesh_fail(d, SUBD_ERR_TOO_BIG);
+    if (subd_mesh_counts_bytes(c) == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     return SUBD_OK;
 }
 
@@ -118,9 +118,9 @@ static uint32_t off_element_line(const char *buf, uint32_t len, uint32_t n)
     text_cursor t;
     uint32_t seen = 0;
     const char *s;
-    text_init(&t, buf, len);
+    subd_text_init(&t, buf, len);
     s = off_next(&t);
-    if (s) s = text_skip_ws(text_token_end(s, t.line_end), t.line_end);
+    if (s) s = subd_text_skip_ws(subd_text_token_end(s, t.line_end), t.line_end);
     if (s && (s == t.line_end || *s == '#')) off_next(&t); /* counts on their own line */
     while (off_next(&t))
         if (seen++ == n) return t.lineno;
@@ -134,9 +134,9 @@ int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *dia
     mesh_counts c;
     int st;
     subd_diag_clear(d);
-    if ((!buf && len) || !bytes) return mesh_fail(d, SUBD_ERR_PARAM);
+    if ((!buf && len) || !bytes) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = off_scan(buf, len, &c, 0, d)) != SUBD_OK) return st;
-    *bytes = mesh_plan_bytes(&c);
+    *bytes = subd_mesh_counts_bytes(&c);
     return SUBD_OK;
 }
 
@@ -150,20 +150,20 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     int st;
 
     subd_diag_clear(d);
-    if (!arena || !out || (!buf && len)) return mesh_fail(d, SUBD_ERR_PARAM);
+    if (!arena || !out || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = off_scan(buf, len, &c, 0, d)) != SUBD_OK) return st;
     mark = subd_arena_mark(arena);
-    if ((st = mesh_alloc(arena, &c, &m)) != SUBD_OK) {
+    if ((st = subd_mesh_alloc_arrays(arena, &c, &m)) != SUBD_OK) {
         subd_arena_rewind(arena, mark);
-        d->bytes_needed = mesh_plan_bytes(&c);
-        return mesh_fail(d, st);
+        d->bytes_needed = subd_mesh_counts_bytes(&c);
+        return subd_fail(d, st);
     }
     m.face_start[0] = 0;
     m.line_start[0] = 0;
     nv = c.nv;
     st = off_scan(buf, len, &c, &m, d);
     if (st == SUBD_OK) {
-        st = mesh_finish(arena, &m, d);
+        st = subd_mesh_finish(arena, &m, d);
         if (d->face != SUBD_NONE) d->line = off_element_line(buf, len, nv + d->face);
         else if (d->vertex != SUBD_NONE) d->line = off_element_line(buf, len, d->vertex);
     }
@@ -178,28 +178,28 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
 static void off_emit(const subd_mesh *m, text_sink *k)
 {
     uint32_t v, f, c;
-    sink_str(k, "OFF\n");
-    sink_u32(k, m->num_verts);
-    sink_str(k, " ");
-    sink_u32(k, m->num_faces);
-    sink_str(k, " ");
-    sink_u32(k, m->num_edges);
-    sink_str(k, "\n");
+    subd_sink_str(k, "OFF\n");
+    subd_sink_u32(k, m->num_verts);
+    subd_sink_str(k, " ");
+    subd_sink_u32(k, m->num_faces);
+    subd_sink_str(k, " ");
+    subd_sink_u32(k, m->num_edges);
+    subd_sink_str(k, "\n");
     for (v = 0; v < m->num_verts; v++) {
-        sink_real(k, m->pos[3u * v]);
-        sink_str(k, " ");
-        sink_real(k, m->pos[3u * v + 1u]);
-        sink_str(k, " ");
-        sink_real(k, m->pos[3u * v + 2u]);
-        sink_str(k, "\n");
+        subd_sink_real(k, m->pos[3u * v]);
+        subd_sink_str(k, " ");
+        subd_sink_real(k, m->pos[3u * v + 1u]);
+        subd_sink_str(k, " ");
+        subd_sink_real(k, m->pos[3u * v + 2u]);
+        subd_sink_str(k, "\n");
     }
     for (f = 0; f < m->num_faces; f++) {
-        sink_u32(k, subd_face_size(m, f));
+        subd_sink_u32(k, subd_face_size(m, f));
         for (c = m->face_start[f]; c < m->face_start[f + 1u]; c++) {
-            sink_str(k, " ");
-            sink_u32(k, m->corner_vert[c]);
+            subd_sink_str(k, " ");
+            subd_sink_u32(k, m->corner_vert[c]);
         }
-        sink_str(k, "\n");
+        subd_sink_str(k, "\n");
     }
 }
 
@@ -209,12 +209,12 @@ int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
     int st;
     if (!m || !len) return SUBD_ERR_PARAM;
     off_emit(m, &k);
-    if ((st = sink_finish(&k, len)) != SUBD_OK) return st;
+    if ((st = subd_sink_finish(&k, len)) != SUBD_OK) return st;
     if (!buf) return SUBD_OK;
     if (*len > cap) return SUBD_ERR_NOMEM;
     k.buf = buf;
     k.cap = cap;
     k.len = 0;
     off_emit(m, &k);
-    return sink_finish(&k, len);
+    return subd_sink_finish(&k, len);
 }

@@ -1,7 +1,7 @@
 /* Text cursor, token helpers and output sink shared by the OBJ and OFF readers/writers. */
 #include "text.h"
 
-void text_init(text_cursor *t, const char *buf, uint32_t len)
+void subd_text_init(text_cursor *t, const char *buf, uint32_t len)
 {
     t->p = buf;
     t->end = buf + len;
@@ -9,7 +9,7 @@ void text_init(text_cursor *t, const char *buf, uint32_t len)
     t->lineno = 0;
 }
 
-int text_next_line(text_cursor *t)
+int subd_text_next_line(text_cursor *t)
 {
     const char *s = t->p;
     if (s >= t->end) return 0;
@@ -23,25 +23,25 @@ int text_next_line(text_cursor *t)
     return 1;
 }
 
-const char *text_skip_ws(const char *s, const char *end)
+const char *subd_text_skip_ws(const char *s, const char *end)
 {
     while (s < end && (*s == ' ' || *s == '\t' || *s == '\r')) s++;
     return s;
 }
 
-const char *text_token_end(const char *s, const char *end)
+const char *subd_text_token_end(const char *s, const char *end)
 {
     while (s < end && *s != ' ' && *s != '\t' && *s != '\r') s++;
     return s;
 }
 
-int text_token_is(const char *s, const char *e, const char *w)
+int subd_text_token_is(const char *s, const char *e, const char *w)
 {
     while (s < e && *w && *s == *w) { s++; w++; }
     return s == e && *w == 0;
 }
 
-int text_parse_int(const char *s, const char *e, int32_t *out)
+int subd_text_parse_int(const char *s, const char *e, int32_t *out)
 {
     int neg = 0;
     uint32_t v = 0;
@@ -57,7 +57,7 @@ int text_parse_int(const char *s, const char *e, int32_t *out)
     return SUBD_OK;
 }
 
-int text_line_is_text(const char *s, const char *e)
+int subd_text_line_is_text(const char *s, const char *e)
 {
     for (; s < e; s++) {
         unsigned char c = (unsigned char)*s;
@@ -67,9 +67,9 @@ int text_line_is_text(const char *s, const char *e)
     return 1;
 }
 
-int text_parse_real(const char **s, const char *e, subd_real *out)
+int subd_text_parse_real(const char **s, const char *e, subd_real *out)
 {
-    const char *p = text_skip_ws(*s, e);
+    const char *p = subd_text_skip_ws(*s, e);
     int st;
     if (p >= e) return SUBD_ERR_PARSE;
     st = subd_real_parse(&p, e, out);
@@ -79,7 +79,7 @@ int text_parse_real(const char **s, const char *e, subd_real *out)
     return SUBD_OK;
 }
 
-void sink_chars(text_sink *k, const char *s, uint32_t n)
+void subd_sink_chars(text_sink *k, const char *s, uint32_t n)
 {
     uint32_t i;
     if (k->overflow || n > UINT32_MAX - k->len) { k->overflow = 1; return; }
@@ -88,28 +88,28 @@ void sink_chars(text_sink *k, const char *s, uint32_t n)
     k->len += n;
 }
 
-void sink_str(text_sink *k, const char *s)
+void subd_sink_str(text_sink *k, const char *s)
 {
     uint32_t n = 0;
     while (s[n]) n++;
-    sink_chars(k, s, n);
+    subd_sink_chars(k, s, n);
 }
 
-void sink_u32(text_sink *k, uint32_t v)
+void subd_sink_u32(text_sink *k, uint32_t v)
 {
     char b[10];
     uint32_t n = 0;
     do { b[9u - n] = (char)('0' + (int)(v % 10u)); v /= 10u; n++; } while (v);
-    sink_chars(k, b + 10u - n, n);
+    subd_sink_chars(k, b + 10u - n, n);
 }
 
-void sink_real(text_sink *k, subd_real x)
+void subd_sink_real(text_sink *k, subd_real x)
 {
     char b[32];
-    sink_chars(k, b, subd_real_format(x, b));
+    subd_sink_chars(k, b, subd_real_format(x, b));
 }
 
-int sink_finish(const text_sink *k, uint32_t *len)
+int subd_sink_finish(const text_sink *k, uint32_t *len)
 {
     if (k->overflow) return SUBD_ERR_TOO_BIG;
     *len = k->len;

@@ -12,23 +12,23 @@ typedef struct text_cursor {
     uint32_t lineno;       /* 1-based number of the current line                       */
 } text_cursor;
 
-void text_init(text_cursor *t, const char *buf, uint32_t len);
+void subd_text_init(text_cursor *t, const char *buf, uint32_t len);
 /* Advances to the next line; returns 0 at end of buffer. */
-int text_next_line(text_cursor *t);
+int subd_text_next_line(text_cursor *t);
 /* Skips spaces and tabs (and a trailing CR) from *s. */
-const char *text_skip_ws(const char *s, const char *end);
+const char *subd_text_skip_ws(const char *s, const char *end);
 /* End of the token at s (first space, tab, CR, or end). */
-const char *text_token_end(const char *s, const char *end);
+const char *subd_text_token_end(const char *s, const char *end);
 /* True when [s, e) equals the NUL-terminated word w. */
-int text_token_is(const char *s, const char *e, const char *w);
+int subd_text_token_is(const char *s, const char *e, const char *w);
 /* Parses an optionally signed decimal integer token [s, e) exactly (no trailing garbage).
  * Returns SUBD_OK, SUBD_ERR_PARSE, or SUBD_ERR_INDEX when the magnitude exceeds 2^31-1. */
-int text_parse_int(const char *s, const char *e, int32_t *out);
+int subd_text_parse_int(const char *s, const char *e, int32_t *out);
 /* True if every byte of [s, e) is printable text (tab, space, 0x21..0x7e or >= 0x80). */
-int text_line_is_text(const char *s, const char *e);
+int subd_text_line_is_text(const char *s, const char *e);
 /* Parses one real token at *s (after skipping blanks); the token must end at a blank or the
  * line end. */
-int text_parse_real(const char **s, const char *e, subd_real *out);
+int subd_text_parse_real(const char **s, const char *e, subd_real *out);
 
 /* Output sink: writes while there is room, always counts. */
 typedef struct text_sink {
@@ -36,10 +36,10 @@ typedef struct text_sink {
     uint32_t cap, len;
     int overflow;          /* the count no longer fits 32 bits */
 } text_sink;
-void sink_str(text_sink *k, const char *s);
-void sink_chars(text_sink *k, const char *s, uint32_t n);
-void sink_u32(text_sink *k, uint32_t v);
-void sink_real(text_sink *k, subd_real x);
+void subd_sink_str(text_sink *k, const char *s);
+void subd_sink_chars(text_sink *k, const char *s, uint32_t n);
+void subd_sink_u32(text_sink *k, uint32_t v);
+void subd_sink_real(text_sink *k, subd_real x);
 /* Final status of a writer: SUBD_OK, or SUBD_ERR_NOMEM when buf was given but too small. */
-int sink_finish(const text_sink *k, uint32_t *len);
+int subd_sink_finish(const text_sink *k, uint32_t *len);
 #endif

@@ -6,38 +6,6 @@ static uint32_t g_tests_passed, g_tests_failed;
 
 uint8_t h_arena_buf[H_ARENA_BYTES] __attribute__((aligned(8)));
 
-void h_str(const char *s)
-{
-    uint32_t n = 0;
-    while (s[n]) n++;
-    port_write(s, n);
-}
-
-void h_u32(uint32_t v)
-{
-    char b[10];
-    uint32_t n = 0;
-    do { b[9 - n] = (char)('0' + v % 10u); v /= 10u; n++; } while (v);
-    port_write(b + 10 - n, n);
-}
-
-void h_i32(int32_t v)
-{
-    if (v < 0) { h_str("-"); h_u32(0u - (uint32_t)v); } else h_u32((uint32_t)v);
-}
-
-void h_hex32(uint32_t v)
-{
-    static const char d[] = "0123456789abcdef";
-    char b[10];
-    int i;
-    b[0] = '0'; b[1] = 'x';
-    for (i = 0; i < 8; i++) b[2 + i] = d[(v >> (28 - 4 * i)) & 15u];
-    port_write(b, 10);
-}
-
-void h_nl(void) { port_write("\n", 1); }
-
 int h_check(int cond, const char *file, int line, const char *expr)
 {
     if (!cond) {

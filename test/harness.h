@@ -7,9 +7,7 @@
 #include <stdint.h>
 #include "subd.h"
 
-/* Provided by the port (port/host/port_host.c, port/cortex-m/port_cm.c). */
-void port_write(const char *s, uint32_t n);
-void port_exit(int code);
+#include "print.h" /* port_write, port_exit, print_* (port/print.c) */
 
 typedef void (*test_fn)(void);
 typedef struct test_case {
@@ -22,11 +20,11 @@ typedef struct test_case {
 #include "suites.h"
 #undef SUITE
 
-void h_str(const char *s);
-void h_u32(uint32_t v);
-void h_i32(int32_t v);
-void h_hex32(uint32_t v);
-void h_nl(void);
+#define h_str print_str
+#define h_u32 print_u32
+#define h_i32 print_i32
+#define h_hex32 print_hex32
+#define h_nl print_nl
 
 /* Records one check; prints the failing location and expression. Returns cond. */
 int h_check(int cond, const char *file, int line, const char *expr);

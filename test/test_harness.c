@@ -1,5 +1,51 @@
+/* The harness itself: its formatter, hash and PRNG against known values, and target
+ * assumptions the library relies on (arithmetic right shift, type sizes). Built once more
+ * with -DH_INJECT_FAILURE=1 to prove that a failing check fails the run (Makefile). */
 #include "harness.h"
 
+static void harness_known_values(void)
+{
+    /* FNV-1a 32-bit of "a" and of "foobar" (published test vectors) */
+    CHECK(h_fnv(2166136261u, "a", 1) == 0xe40c292cu);
+    CHECK(h_fnv(2166136261u, "foobar", 6) == 0xbf9cf968u);
+    /* xorshift32 from seed 1: first outputs of Marsaglia's generator */
+    {
+        uint32_t s = 1;
+        CHECK(h_rand(&s) == 270369u);
+        CHECK(h_rand(&s) == 67634689u);
+    }
+    {
+        uint8_t g[16];
+        h_guard_fill(g, 16);
+        CHECK(h_guard_ok(g, 16));
+        g[15] ^= 1u;
+        CHECK(!h_guard_ok(g, 16));
+    }
+}
+
+static void harness_target_assumptions(void)
+{
+    volatile int64_t neg = -3;
+    volatile int32_t neg32 = -3;
+    CHECK(sizeof(uint32_t) == 4 && sizeof(int64_t) == 8);
+    CHECK(sizeof(subd_real) == 4);
+    /* Q16.16 rounding relies on >> of a negative value being an arithmetic shift */
+    CHECK((neg >> 1) == -2);
+    CHECK((neg32 >> 1) == -2);
+}
+
+#if defined(H_INJECT_FAILURE) && H_INJECT_FAILURE
+static void harness_injected_failure(void)
+{
+    CHECK(1 + 1 == 3); /* must be reported and must fail the run */
+}
+#endif
+
 const test_case suite_harness[] = {
+    {"harness_known_values", harness_known_values},
+    {"harness_target_assumptions", harness_target_assumptions},
+#if defined(H_INJECT_FAILURE) && H_INJECT_FAILURE
+    {"harness_injected_failure", harness_injected_failure},
+#endif
     {0, 0}
 };

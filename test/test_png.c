@@ -666,7 +666,7 @@ static void t_render_nan_and_bad_indices(void)
     memcpy(pos, cube_pos, sizeof pos);
     memcpy(cv, cube_cv, sizeof cv);
     /* One NaN vertex: the 3 faces using it are skipped, the rest still drawn. */
-    pos[3 * 6 + 1] = NAN;
+    pos[3 * 6 + 1] = (double)NAN;
     m = mk_mesh(pos, 8, cube_fs, cube_cv, 6);
     img = rend(&m, &o);
     if (img) {
@@ -675,7 +675,7 @@ static void t_render_nan_and_bad_indices(void)
     }
     free(img);
     /* All NaN / infinite: nothing drawable, plain background. */
-    for (i = 0; i < 24; i++) pos[i] = (i & 1u) ? NAN : INFINITY;
+    for (i = 0; i < 24; i++) pos[i] = (i & 1u) ? (double)NAN : (double)INFINITY;
     img = rend(&m, &o);
     if (img) CHECK_EQ(count_non_bg(img), 0);
     free(img);
@@ -696,8 +696,8 @@ static void t_render_nan_and_bad_indices(void)
     }
     /* Non-finite view angles fall back to the defaults. */
     m = mk_mesh(cube_pos, 8, cube_fs, cube_cv, 6);
-    o.yaw_deg = NAN;
-    o.pitch_deg = INFINITY;
+    o.yaw_deg = (double)NAN;
+    o.pitch_deg = (double)INFINITY;
     img = rend(&m, &o);
     o = mk_opts(30, 20, 1);
     ref = rend(&m, &o);

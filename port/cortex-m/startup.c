@@ -73,7 +73,7 @@ void Reset_Handler(void)
 #define PUT_HEX(label, v) put_hex(label, sizeof(label) - 1u, v)
 static void put_hex(const char *label, uint32_t label_len, uint32_t v)
 {
-    char b[11];
+    char b[10];
     int i;
     b[0] = '0';
     b[1] = 'x';
@@ -81,9 +81,8 @@ static void put_hex(const char *label, uint32_t label_len, uint32_t v)
         b[9 - i] = "0123456789abcdef"[v & 0xFu];
         v >>= 4;
     }
-    b[10] = ' ';
     port_write(label, label_len);
-    port_write(b, 11u);
+    port_write(b, 10u);
 }
 
 static void put_dec2(uint32_t v)
@@ -104,27 +103,25 @@ void cm_fault_report(const uint32_t *frame, uint32_t exc_return)
     __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
     ipsr &= 0x1FFu;
     if (ipsr == 3u) {
-        port_write("\nHARDFAULT ", 11u);
+        port_write("\nHARDFAULT", 10u);
     } else if (ipsr >= 4u && ipsr <= 6u) {
         port_write("\nFAULT exc=", 11u);
         put_dec2(ipsr);
-        port_write(" ", 1u);
     } else {
         port_write("\nUNHANDLED EXCEPTION exc=", 25u);
         put_dec2(ipsr);
-        port_write(" ", 1u);
     }
-    PUT_HEX("pc=", frame[6]);
-    PUT_HEX("lr=", frame[5]);
-    PUT_HEX("cfsr=", SCB_CFSR);
-    PUT_HEX("hfsr=", SCB_HFSR);
-    PUT_HEX("exc_return=", exc_return);
+    PUT_HEX(" pc=", frame[6]);
+    PUT_HEX(" lr=", frame[5]);
+    PUT_HEX(" cfsr=", SCB_CFSR);
+    PUT_HEX(" hfsr=", SCB_HFSR);
+    PUT_HEX(" exc_return=", exc_return);
     port_write("\n", 1u);
     port_exit(FAULT_EXIT_CODE);
 }
 
-/* Finds the stacked frame (MSP or PSP, from EXC_RETURN bit 2) without touching the stack
- * itself, which may be the thing that is broken, then reports. */
+/* Every fault and unused vector lands here. Naked, so that no prologue changes SP or LR
+ * before the stacked frame is located (MSP or PSP, from EXC_RETURN bit 2). */
 __attribute__((naked)) void Fault_Handler(void)
 {
     __asm__ volatile(

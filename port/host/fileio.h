@@ -1,0 +1,65 @@
+/* Host-only file wrappers for the subd tool and the benchmarks: whole-file read/write and
+ * "read a mesh file by its extension into an exactly planned arena". Uses malloc and stdio;
+ * never linked into device images. */
+#ifndef FILEIO_H
+#define FILEIO_H
+#include <stdint.h>
+#include "subd.h"
+
+/* Reads the whole file into a malloc'd buffer (*buf, *len bytes, plus a NUL terminator that
+ * is not counted). Works on pipes too. Returns 0, or -1 with errno set (EFBIG when the file
+ * does not fit 32-bit lengths, ENOMEM when out of memory); *buf is NULL on failure. */
+int host_read_file(const char *path, char **buf, uint32_t *len);
+
+/* Writes buf[0..len) to path (created or truncated). Returns 0, or -1 with errno set; a
+ * partially written file is removed. */
+int host_write_file(const char *path, const void *buf, uint32_t len);
+
+/* File formats known by extension (case-insensitive). */
+typedef enum host_format {
+    HOST_FMT_UNKNOWN = 0,
+    HOST_FMT_OBJ,
+    HOST_FMT_OFF,
+    HOST_FMT_PNG
+} host_format;
+
+host_format host_format_of(const char *path);
+const char *host_format_name(host_format f); /* "obj", "off", "png" or "unknown" */
+
+/* Statuses of host_read_mesh besides the library's subd_status values (which are 0 or
+ * negative): I/O failure (errno set) and an extension that is not .obj/.off. */
+#define HOST_ERR_IO 1
+#define HOST_ERR_FORMAT 2
+#define HOST_ERR_OOM 3
+
+/* A mesh read from a file, living in its own malloc'd arena. */
+typedef struct host_mesh {
+    subd_mesh mesh;
+    subd_arena arena;   /* the arena the mesh lives in; more may be allocated after it   */
+    void *mem;          /* malloc'd block behind the arena (free with host_mesh_free)    */
+    uint32_t planned;   /* bytes the reader's plan call asked for                         */
+    uint32_t file_bytes;
+    host_format format;
+} host_mesh;
+
+/* Reads an .obj or .off file. The arena is sized from the reader's plan call: exactly the plan
+ * when budget is NULL, or *budget bytes when given (a simulated device arena; the rest stays
+ * free for later operations). Returns
+ *   SUBD_OK              hm filled; hm->arena.peak is the bytes the read used
+ *   a subd_status < 0    diag filled by the library (diag->line for input errors). When the
+ *                        plan exceeds *budget: SUBD_ERR_NOMEM with diag->bytes_needed = plan
+ *   HOST_ERR_IO          the file cannot be read (errno set)
+ *   HOST_ERR_FORMAT      the extension is not .obj or .off
+ *   HOST_ERR_OOM         the host is out of memory
+ * parse_ns, when not NULL, receives the nanoseconds spent in the library (plan + read). */
+int host_read_mesh(const char *path, const uint32_t *budget, host_mesh *hm, subd_diag *diag,
+                   double *parse_ns);
+void host_mesh_free(host_mesh *hm);
+
+/* Allocates a block of `bytes` usable arena bytes aligned to SUBD_ARENA_ALIGN and inits the
+ * arena over exactly that many bytes. Returns the malloc'd pointer to free, or NULL. */
+void *host_arena_alloc(subd_arena *a, uint32_t bytes);
+
+/* Monotonic clock in nanoseconds. */
+double host_now_ns(void);
+#endif

@@ -1,0 +1,16 @@
+/* Text output shared by the test harness and the demos on every platform: an own integer
+ * formatter over the port's write function, so host and target print the same bytes. */
+#ifndef PORT_PRINT_H
+#define PORT_PRINT_H
+#include <stdint.h>
+
+/* Provided by each port (port/host/test_port.c, port/cortex-m/port_cm.c). */
+void port_write(const char *s, uint32_t n);
+void port_exit(int code);
+
+void print_str(const char *s);
+void print_u32(uint32_t v);
+void print_i32(int32_t v);
+void print_hex32(uint32_t v);
+void print_nl(void);
+#endif

@@ -241,4 +241,6 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
 int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 
+#include "subd_loop.h"
+
 #endif

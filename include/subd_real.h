@@ -133,36 +133,56 @@ static inline subd_real subd_acc_real(subd_acc acc, uint32_t *ovf) { return subd
 
 static inline subd_real subd_neg(subd_real a, uint32_t *ovf) { return subd_sub((subd_real)0, a, ovf); }
 
-/* Converts decimal text [*p, end) to the nearest subd_real using integer arithmetic only,
- * so a file gives identical bits on every target. Accepts [+-]digits[.digits][(e|E)[+-]digits]
- * and also ".5", "5.", and the words nan/inf/infinity (any case) so that they can be
- * reported as SUBD_ERR_NAN. On success *p points after the number.
- * Float32 results are correctly rounded (round to nearest even) for inputs of up to 19
- * significant digits; more digits are truncated to 19 before rounding.
- * Returns 0 (SUBD_OK), SUBD_ERR_PARSE (no number here), SUBD_ERR_NAN (nan/inf text), or
- * SUBD_ERR_RANGE (magnitude too large for the format: |x| >= 32768 in Q16.16, >= 2^128 after
- * rounding in float32). Values too small for the format round to (signed) zero. */
+/* Converts decimal text [*p, end) to the nearest subd_real using integer arithmetic only
+ * (src/real_text.c), so a file gives identical bits on every target. Grammar, with no
+ * leading white space: [+-] digits [. digits] [(e|E) [+-] digits], where one of the two digit
+ * runs may be empty (".5", "5."). The exponent is taken only when complete: "1e", "1e+" and
+ * "1ex" read as 1 and stop before the 'e'; "0x10" reads as 0 and stops at the 'x'. Text that
+ * starts, after an optional sign, with "nan" or "inf" (any case; so also "infinity",
+ * "nan(...)") returns SUBD_ERR_NAN. Never reads outside [*p, end).
+ * Rounding: the significant digits are truncated to the first 19 (leading zeros do not
+ * count); that value is then rounded exactly. Float32: correctly rounded to nearest, ties to
+ * even, subnormals included (identical to a correct strtof for <= 19 digits); below half the
+ * smallest subnormal gives a zero of the text's sign. Q16.16: nearest multiple of 2^-16,
+ * ties away from zero; "-0" gives 0. Decimal exponents of any size are accepted (clamped
+ * internally, no overflow).
+ * Returns SUBD_OK (*out set, *p just after the number), SUBD_ERR_PARAM (a NULL pointer),
+ * SUBD_ERR_PARSE (no number at *p, including *p >= end), SUBD_ERR_NAN (nan/inf text) or
+ * SUBD_ERR_RANGE (the rounded value does not fit: outside [-32768, 32768 - 2^-16] in
+ * Q16.16, magnitude >= 2^128 after rounding in float32). On any error *p and *out are
+ * unchanged. Stack: about 120 bytes; work O(length of the text). */
 int subd_real_parse(const char **p, const char *end, subd_real *out);
 
-/* Writes x as shortest-enough decimal text into buf (at least 24 bytes), without a
- * terminator; returns the number of characters. Float32: 9 significant digits, enough to
- * read back the same bits. Q16.16: exact decimal value of the fixed-point number (up to
- * 16 fraction digits, trailing zeros removed). */
+/* Writes x as decimal text into buf (at least 24 bytes), without a terminator; returns the
+ * number of characters. Float32: the shortest decimal that subd_real_parse (or any correct
+ * strtof) reads back to the same bits, at most 9 significant digits and 15 characters,
+ * the nearest one when several are shortest; positional when the decimal exponent of those
+ * digits is -4..8, otherwise d.ddde+XX like printf's %g: "0.1", "-1.25", "100", "1e+30", "1.0000001e+30", "1e-45",
+ * "-0". Non-finite values give "inf", "-inf", "nan" (which the parser rejects). Q16.16:
+ * the exact value of x / 65536, up to 16 fraction digits, trailing zeros and point removed:
+ * "3", "-0.5", "0.0000152587890625", at most 23 characters. Stack: about 330 bytes (float). */
 uint32_t subd_real_format(subd_real x, char *buf);
 
-/* Deterministic cos and sin of the angle 2*pi*num/den (den > 0), the form every weight of
- * the schemes takes. Integer arithmetic with 62-bit intermediate precision, then one
- * rounding to subd_real, so the result is the same on every target and within 1 ulp
- * (float32) or 1 LSB (Q16.16) of the true value. */
+/* Deterministic cos and sin of the angle 2*pi*num/den (src/trig.c), the form every weight of
+ * the schemes takes. The range reduction (num mod den, quadrant, octant) is exact integer
+ * arithmetic; the Taylor series runs in Q63 fixed point (error < 2^-61 before the final
+ * rounding), then one rounding to subd_real, so the result is the same on every target and
+ * within 1 ulp (float32: correctly rounded in every case tested) or 1 LSB (Q16.16) of the
+ * true value. Exact: cos and sin are +-1, +-1/2 or +0 at multiples of 1/12 turn where the
+ * true value is; cos(-t) == cos(t), sin(-t) == -sin(t), and the values depend only on the
+ * rational num/den (2/6 gives the same bits as 1/3). Any int32 num; den <= 0 is invalid
+ * and gives 0. */
 subd_real subd_cos_turns(int32_t num, int32_t den);
 subd_real subd_sin_turns(int32_t num, int32_t den);
 
-/* Q2.62 versions of the above (value * 2^62), for callers that build weights at higher
- * precision than subd_real before one final rounding. */
+/* Q2.62 versions of the above (value * 2^62, in [-2^62, 2^62]), for callers that build
+ * weights at higher precision than subd_real before one final rounding. Within 2^-61 of the
+ * true value (measured; the Q62 rounding alone is 2^-63). */
 int64_t subd_cos_turns_q62(int32_t num, int32_t den);
 int64_t subd_sin_turns_q62(int32_t num, int32_t den);
 
-/* Rounds a Q2.62 value to the nearest subd_real. */
+/* Rounds a Q2.62 value (any int64, i.e. [-2, 2)) to the nearest subd_real: float32
+ * correctly rounded, ties to even; Q16.16 ties away from zero. */
 subd_real subd_real_from_q62(int64_t q);
 
 #endif

@@ -24,8 +24,10 @@
  * Truncation error: x^23/23! < 2^-81 and x^24/24! < 2^-86 for x <= pi/4. Every Horner
  * factor is < 1, so each step's rounding error (<= 1 unit of 2^-63 from the product and
  * the division) is damped, not amplified; with the errors of t (2^-64), of pi/2 (2^-64) and
- * of the final product, the Q63 result is within about 4 * 2^-63 of the true value, and the
- * Q2.62 result within 2^-60. One rounding to subd_real follows (subd_real_from_q62).
+ * of the final product, the Q63 result is within a few units of 2^-63 of the true value.
+ * Measured against __float128 (all num/den with den <= 600, |num| <= 2 den, and 6 million
+ * random num/den with den up to 2^31): Q2.62 error <= 2^-61.8, and every float32 result
+ * correctly rounded. One rounding to subd_real follows (subd_real_from_q62).
  *
  * Constants (exact digits via Python's decimal module, 80-digit pi):
  *   PIO2_Q63   = round(pi/2 * 2^63)      = 0xc90fdaa22168c235

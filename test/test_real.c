@@ -92,7 +92,7 @@ static const edge_case k_edges[] = {
     {"0e999999999", SUBD_OK, 11, 0},
     {"1e99999999999999999999999", SUBD_ERR_RANGE, 0, 0},
     {"100000000000000000000000000000000000000000000000000e-50", SUBD_OK, 55, 65536},
-    {"0.000000000000000000000000000000000000000000000000001e51", SUBD_OK, 57, 65536},
+    {"0.000000000000000000000000000000000000000000000000001e51", SUBD_OK, 56, 65536},
     {"1234.5678", SUBD_OK, 9, 80908635},                  /* 1234.5678*65536 = 80908635.34 */
     {"0x10", SUBD_OK, 1, 0},
     {"1e", SUBD_OK, 1, 65536},
@@ -140,7 +140,7 @@ static const edge_case k_edges[] = {
     {"0e999999999", SUBD_OK, 11, 0},
     {"1e99999999999999999999999", SUBD_ERR_RANGE, 0, 0},
     {"100000000000000000000000000000000000000000000000000e-50", SUBD_OK, 55, 0x3f800000u},
-    {"0.000000000000000000000000000000000000000000000000001e51", SUBD_OK, 57, 0x3f800000u},
+    {"0.000000000000000000000000000000000000000000000000001e51", SUBD_OK, 56, 0x3f800000u},
     {"1.00000005960464477539", SUBD_OK, 22, 0x3f800000u}, /* 1+2^-24 tie, truncated to 19 digits */
     {"0x10", SUBD_OK, 1, 0},
     {"1e", SUBD_OK, 1, 0x3f800000u},
@@ -513,7 +513,7 @@ static void real_format_roundtrip(void)
     uint32_t st = 99u, i, fails = 0, longest = 0;
     for (i = 0; i < N_RAND + 64u; i++) {
         char buf[40];
-        uint32_t n, used, bits, k;
+        uint32_t n, bits, k;
         subd_real x, y = 0;
         const char *p;
         bits = h_rand(&st);
@@ -577,7 +577,7 @@ static void real_format_roundtrip(void)
 #endif
     }
     CHECK_EQ(fails, 0);
-    CHECK(longest <= 24u);
+    CHECK(longest <= (SUBD_FIXED ? 23u : 15u)); /* the lengths subd_real.h promises */
 }
 
 #if SUBD_FIXED

@@ -128,15 +128,18 @@ static const command *find_command(const char *name)
 static void usage(FILE *f)
 {
     size_t i;
+    int w = 0;
+    for (i = 0; i < NUM_COMMANDS; i++)
+        if ((int)strlen(commands[i].synopsis) > w) w = (int)strlen(commands[i].synopsis);
     fprintf(f, "usage: subd COMMAND [options] INPUT [-o OUTPUT]\n"
                "       subd help | --help | --version\n\n"
                "tinysubd %s host tool, %s build (%s).\n\ncommands:\n",
             SUBD_VERSION, ARITHMETIC, SUBD_FIXED ? "Q16.16 fixed point" : "IEEE single precision");
     for (i = 0; i < NUM_COMMANDS; i++) {
         const char *s = commands[i].summary;
-        fprintf(f, "  %-8s %-19s ", commands[i].name, commands[i].synopsis);
+        fprintf(f, "  %-8s %-*s  ", commands[i].name, w, commands[i].synopsis);
         for (; *s; s++) {
-            if (*s == '\n') fprintf(f, "\n  %-8s %-19s ", "", "");
+            if (*s == '\n') fprintf(f, "\n  %-8s %-*s  ", "", w, "");
             else fputc(*s, f);
         }
         fputc('\n', f);
@@ -278,7 +281,7 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         }
         if (strcmp(name, "--stats") == 0 || strcmp(name, "--no-edges") == 0) {
             if (val) return usage_error("option '%s' takes no value", name);
-            if (name[2] == 's') o->stats = 1;
+            if (strcmp(name, "--stats") == 0) o->stats = 1;
             else { o->ropt.edges = 0; o->render_opt_given = 1; }
             continue;
         }

@@ -1,0 +1,87 @@
+/* Loop subdivision, Loop limit positions and normals, and progressive interpolation
+ * (paper: loop-progressive-interpolation.txt; formulas and traps in REFERENCE.md).
+ * Included by subd.h. */
+#ifndef SUBD_LOOP_H
+#define SUBD_LOOP_H
+
+/* Boundary (and crease) rules, named after where they come from. */
+typedef enum subd_loop_boundary {
+    /* Paper, section 4: boundary vertex 3/4 v + 1/8 (c0 + c1); boundary edge midpoint when
+     * both ends are regular or both extraordinary, else 5/8 regular + 3/8 extraordinary. */
+    SUBD_LOOP_BOUNDARY_PAPER = 0,
+    /* Midpoint on every boundary edge (a cubic B-spline boundary curve), as OpenSubdiv
+     * and CGAL do. */
+    SUBD_LOOP_BOUNDARY_BSPLINE = 1
+} subd_loop_boundary;
+
+/* subd_loop_opts.flags */
+#define SUBD_LOOP_ADJACENCY 0x1u /* give the final level full adjacency (twin, vert_out, tags) */
+
+typedef struct subd_loop_opts {
+    uint32_t levels;             /* 1..SUBD_MAX_LEVELS                                   */
+    subd_loop_boundary boundary;
+    uint32_t flags;
+} subd_loop_opts;
+
+/* Exact arena bytes subd_loop needs for this input and options. The input must be an
+ * all-triangle mesh (SUBD_ERR_FACE_SIZE otherwise). */
+int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
+
+/* `levels` steps of Loop subdivision (Loop's original weights) of an all-triangle mesh.
+ * Edges tagged SUBD_ETAG_CREASE follow the boundary rules; vertices tagged
+ * SUBD_VTAG_CORNER (and vertices with three or more sharp edges, Hoppe et al. 1994) stay
+ * where they are; isolated vertices are copied. Vertices keep their indices (vertex i of the
+ * input is vertex i of the output), new vertices follow. The input is not modified; *out's
+ * arrays are in the arena. Without SUBD_LOOP_ADJACENCY the output has pos, face_start,
+ * corner_vert, corner_face, vert_tag and edge_tag, and twin/vert_out are NULL.
+ * Errors: SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE, SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM
+ * (diag.bytes_needed), SUBD_ERR_RANGE (fixed-point overflow). On failure the arena is back
+ * where it was and *out is untouched. */
+int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *d);
+
+/* ------------------------------------------------------------------------------------ */
+/* Limit positions and normals                                                            */
+
+/* Exact arena bytes of subd_loop_limit (3 * num_verts subd_reals per requested array plus
+ * working memory). */
+int subd_loop_limit_plan(const subd_mesh *in, subd_loop_boundary b, int normals, uint32_t *bytes);
+
+/* Limit-surface positions of every control vertex (3 * num_verts, in the arena) and, when
+ * normals != NULL, unit limit normals (3 * num_verts; a vertex where the tangents vanish
+ * gets (0, 0, 0)). Interior: the paper's formula (3); boundary: the rule set b; creases
+ * follow the boundary rules; corners and isolated vertices stay. Errors as subd_loop. */
+int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, subd_real **pos,
+                    subd_real **normals, subd_diag *d);
+
+/* ------------------------------------------------------------------------------------ */
+/* Progressive interpolation (paper, sections 2-4)                                        */
+
+typedef enum subd_pia_method {
+    SUBD_PIA_PAPER = 0, /* V <- V + (P - L V), boundary first then interior (the paper)   */
+    SUBD_PIA_FAST = 1   /* an accelerated iteration; see pia.c for the convergence argument */
+} subd_pia_method;
+
+typedef struct subd_pia_opts {
+    subd_loop_boundary boundary;
+    subd_real tol;       /* stop when max |P - L V| <= tol (input units)                  */
+    uint32_t max_iter;   /* stop after this many iterations (>= 1)                        */
+    subd_pia_method method;
+} subd_pia_opts;
+
+typedef struct subd_pia_result {
+    uint32_t iterations;
+    subd_real max_err;   /* max over vertices of |P - L V| (Euclidean) at the end         */
+    subd_real mean_err;  /* mean of the same                                              */
+    int converged;       /* 1 when max_err <= tol                                        */
+} subd_pia_result;
+
+int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
+
+/* Control positions (3 * num_verts, in the arena) whose Loop limit surface passes through
+ * the input mesh's vertices within tol. Errors: as subd_loop, and SUBD_ERR_PARAM for a tol
+ * the arithmetic cannot resolve (below 1 LSB in Q16.16) or max_iter == 0. Not converging
+ * within max_iter is not an error: result->converged says so. */
+int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_real **pos,
+             subd_pia_result *result, subd_diag *d);
+
+#endif

@@ -1,0 +1,12 @@
+/* Private interface between the Loop files (loop.c, loop_limit.c, pia.c). */
+#ifndef SUBD_LOOP_INTERNAL_H
+#define SUBD_LOOP_INTERNAL_H
+#include "subd.h"
+
+/* Applies the limit-position operator L to control positions ctrl (3 * num_verts) of the
+ * mesh m's topology and writes L ctrl to lim (3 * num_verts; must not alias ctrl). Uses
+ * no arena memory. Overflow (fixed point) is ORed into *ovf. Rule set b as subd_loop_limit.
+ * Written by loop_limit.c; used by subd_loop_limit and by progressive interpolation. */
+void subd_loop_limit_apply(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl,
+                           subd_real *lim, uint32_t *ovf);
+#endif

@@ -1,0 +1,5 @@
+#include "harness.h"
+
+const test_case suite_loop_limit[] = {
+    {0, 0}
+};

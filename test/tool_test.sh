@@ -1,0 +1,286 @@
+#!/bin/sh
+# Tests of the subd host tool (port/host/subd_main.c): exit codes, FILE:LINE messages for
+# every row of test/bad/EXPECT, info topology on test/data, convert round trips, render,
+# --stats JSON, --arena budget, usage and I/O errors.
+# Needs only sh, coreutils, grep, sed, awk, od. Prints one "ok - ..." / "not ok - ..." line per
+# check (details of a failure follow, indented) and ends with "N passed, M failed".
+# usage: test/tool_test.sh BIN_DIR      (BIN_DIR holds subd and subd-fixed)
+if [ $# -ne 1 ]; then
+    echo "usage: $0 BIN_DIR" >&2
+    exit 2
+fi
+case $1 in /*) BIN=$1 ;; *) BIN=$(pwd)/$1 ;; esac
+cd "$(dirname "$0")/.." || exit 2 # repo root: messages name test/bad/FILE as given
+FLOAT=$BIN/subd
+FIXED=$BIN/subd-fixed
+T=$(mktemp -d "${TMPDIR:-/tmp}/subd_tool_test.XXXXXX") || exit 2
+trap 'rm -rf "$T"' EXIT
+trap 'exit 2' HUP INT TERM
+pass=0
+fail=0
+
+# run BIN ARGS...: runs with no stdin; sets rc, stdout in $T/out, stderr in $T/err.
+run() {
+    "$@" < /dev/null > "$T/out" 2> "$T/err"
+    rc=$?
+}
+# check CONDITION_STATUS DESCRIPTION (CONDITION_STATUS is 0 for a pass)
+check() {
+    if [ "$1" -eq 0 ]; then
+        pass=$((pass + 1))
+        echo "ok - $2"
+    else
+        fail=$((fail + 1))
+        echo "not ok - $2"
+        echo "    exit status $rc; stdout:"
+        head -n 5 "$T/out" | sed 's/^/      /'
+        echo "    stderr:"
+        head -n 5 "$T/err" | sed 's/^/      /'
+    fi
+}
+is() { [ "$rc" -eq "$1" ]; }
+err_starts() { # stderr's first line starts with $1 (a literal string)
+    first=$(head -n 1 "$T/err")
+    case $first in "$1"*) return 0 ;; *) return 1 ;; esac
+}
+out_has() { grep -q -e "$1" "$T/out"; }
+
+# A minimal JSON checker (one value, nothing after it); exit 0 when valid.
+json_ok() {
+    awk '
+    function ws() { while (pos <= n && index(" \t\r\n", substr(s, pos, 1))) pos++ }
+    function str(   c, e) {
+        pos++
+        while (pos <= n) {
+            c = substr(s, pos, 1)
+            if (c == "\"") { pos++; return 1 }
+            if (c == "\\") {
+                e = substr(s, pos + 1, 1)
+                if (index("\"\\/bfnrt", e)) { pos += 2; continue }
+                if (e == "u" && substr(s, pos + 2, 4) ~ /^[0-9a-fA-F][0-9a-fA-F][0-9a-fA-F][0-9a-fA-F]$/) { pos += 6; continue }
+                return 0
+            }
+            if (c == "\n" || c == "\t" || c == "\r") return 0
+            pos++
+        }
+        return 0
+    }
+    function members(cl,   c, isobj) {
+        isobj = (cl == "}")
+        pos++; ws()
+        if (substr(s, pos, 1) == cl) { pos++; return 1 }
+        for (;;) {
+            ws()
+            if (isobj) {
+                if (substr(s, pos, 1) != "\"" || !str()) return 0
+                ws()
+                if (substr(s, pos, 1) != ":") return 0
+                pos++
+            }
+            if (!value()) return 0
+            ws()
+            c = substr(s, pos, 1); pos++
+            if (c == cl) return 1
+            if (c != ",") return 0
+        }
+    }
+    function value(   c, rest) {
+        ws(); c = substr(s, pos, 1)
+        if (c == "{") return members("}")
+        if (c == "[") return members("]")
+        if (c == "\"") return str()
+        rest = substr(s, pos)
+        if (match(rest, /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?/)) { pos += RLENGTH; return 1 }
+        if (substr(rest, 1, 4) == "true" || substr(rest, 1, 4) == "null") { pos += 4; return 1 }
+        if (substr(rest, 1, 5) == "false") { pos += 5; return 1 }
+        return 0
+    }
+    { s = s $0 "\n" }
+    END {
+        n = length(s); pos = 1; ws()
+        if (substr(s, pos, 1) != "{") exit 1
+        if (!value()) exit 1
+        ws()
+        exit (pos > n) ? 0 : 1
+    }' "$1"
+}
+# json_num KEY: the number after "KEY": in $T/out (top-level keys are unique in our output).
+json_num() { sed -n "s/.*\"$1\":\([0-9][0-9.]*\).*/\1/p" "$T/out"; }
+
+for b in "$FLOAT" "$FIXED"; do
+    if [ ! -x "$b" ]; then
+        echo "not ok - $b is built"
+        echo "0 passed, 1 failed"
+        exit 1
+    fi
+done
+
+# ---------------------------------------------------------------- test/bad/EXPECT
+rows=0
+while read -r file status line only; do
+    case $file in '' | '#'*) continue ;; esac
+    rows=$((rows + 1))
+    case $only in
+    fixed) bins=$FIXED ;;
+    float) bins=$FLOAT ;;
+    *) bins="$FLOAT $FIXED" ;;
+    esac
+    for b in $bins; do
+        name=$(basename "$b")
+        run "$b" info "test/bad/$file"
+        is 2 && err_starts "test/bad/$file:$line: " && [ "$(wc -l < "$T/err")" -eq 1 ] && [ ! -s "$T/out" ]
+        check $? "$name info test/bad/$file: exit 2, 'test/bad/$file:$line: ' ($status)"
+    done
+    # A value out of range in one arithmetic only is valid in the other.
+    case $only in
+    fixed) run "$FLOAT" info "test/bad/$file"; is 0; check $? "subd info test/bad/$file: valid in float32" ;;
+    float) run "$FIXED" info "test/bad/$file"; is 0; check $? "subd-fixed info test/bad/$file: valid in q16.16" ;;
+    esac
+done < test/bad/EXPECT
+[ "$rows" -gt 0 ]; check $? "test/bad/EXPECT has rows ($rows)"
+missing=""
+for f in test/bad/*; do
+    n=$(basename "$f")
+    [ "$n" = EXPECT ] && continue
+    grep -q "^$n[ 	]" test/bad/EXPECT || missing="$missing $n"
+done
+[ -z "$missing" ]; check $? "every file in test/bad has an EXPECT row${missing:+ (missing:$missing)}"
+
+# ---------------------------------------------------------------- info on test/data
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    run "$b" info test/data/torus_tri.obj
+    is 0 && out_has '^euler characteristic: 0 ' && out_has '^genus: 1$' && out_has '^boundary loops: 0$' &&
+        out_has '^components: 1 '
+    check $? "$name info torus_tri.obj: chi 0, genus 1, closed, 1 component"
+    run "$b" info test/data/icosahedron.obj
+    is 0 && out_has '^euler characteristic: 2 ' && out_has '^genus: 0$' && out_has '^vertices: 12 ' &&
+        out_has '^valence interior: 5:12$' && out_has '^faces: 20$' && out_has '^edges: 30$'
+    check $? "$name info icosahedron.obj: chi 2, genus 0, 12 vertices of valence 5"
+    run "$b" info test/data/hexfan.obj
+    is 0 && out_has '^boundary loops: 1$' && out_has '^boundary edges: 6$' && out_has '^genus: 0$' &&
+        out_has '^valence interior: 6:1$' && out_has '^valence boundary: 3:6$'
+    check $? "$name info hexfan.obj: 1 boundary loop, centre valence 6"
+    run "$b" info test/data/cube_quad.obj
+    is 0 && out_has '^face sizes: 4:6$' && out_has '^euler characteristic: 2 '
+    check $? "$name info cube_quad.obj: 6 quads, chi 2"
+done
+run "$FLOAT" info test/data/icosahedron.obj
+out_has '^arithmetic: float32$'; check $? "subd reports arithmetic float32"
+run "$FIXED" info test/data/icosahedron.obj
+out_has '^arithmetic: q16.16$'; check $? "subd-fixed reports arithmetic q16.16"
+# Isolated vertices are accepted and do not distort the genus.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 5 5\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n' > "$T/iso.obj"
+run "$FLOAT" info "$T/iso.obj"
+is 0 && out_has '^isolated vertices: 1$' && out_has '^euler characteristic: 3 ' && out_has '^genus: 0$' &&
+    out_has '^components: 2 '
+check $? "info tetrahedron + isolated vertex: chi 3, genus 0, 2 components"
+
+# ---------------------------------------------------------------- convert round trips
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    for f in test/data/*.obj; do
+        m=$(basename "$f" .obj)
+        "$b" convert "$f" -o "$T/$m.a.obj" < /dev/null > /dev/null 2>&1 &&
+            "$b" convert "$f" -o "$T/$m.off" < /dev/null > /dev/null 2>&1 &&
+            "$b" convert "$T/$m.off" -o "$T/$m.b.obj" < /dev/null > /dev/null 2>&1 &&
+            "$b" info "$f" < /dev/null 2>&1 | sed 1d > "$T/info1" &&
+            "$b" info "$T/$m.b.obj" < /dev/null 2>&1 | sed 1d > "$T/info2" &&
+            cmp -s "$T/info1" "$T/info2" && cmp -s "$T/$m.a.obj" "$T/$m.b.obj"
+        check $? "$name convert $m: obj -> off -> obj keeps info and text"
+    done
+done
+run "$FLOAT" convert test/data/hexfan.obj -o "$T/UPPER.OFF"
+is 0 && [ "$(head -n 1 "$T/UPPER.OFF")" = OFF ]; check $? "convert: extension is case-insensitive (.OFF)"
+
+# ---------------------------------------------------------------- render
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    run "$b" render test/data/torus_tri.obj -o "$T/t.png" --size 160x120 --yaw 45 --pitch -10 --no-edges
+    is 0 && [ "$(od -An -tx1 -N8 "$T/t.png" | tr -d ' \n')" = 89504e470d0a1a0a ]
+    check $? "$name render torus_tri.obj: file starts with the PNG signature"
+done
+run "$FLOAT" convert test/data/icosahedron.obj -o "$T/i.png"
+is 0 && [ "$(od -An -tx1 -N8 "$T/i.png" | tr -d ' \n')" = 89504e470d0a1a0a ]
+check $? "convert to .png renders a PNG"
+
+# ---------------------------------------------------------------- --stats
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    run "$b" info --stats test/data/torus_tri.obj
+    keys=0
+    for k in command scheme levels arithmetic input output arena_budget arena_planned arena_used time_ms; do
+        grep -q "\"$k\":" "$T/out" || keys=1
+    done
+    planned=$(json_num arena_planned)
+    used=$(json_num arena_used)
+    is 0 && [ "$(wc -l < "$T/out")" -eq 1 ] && json_ok "$T/out" && [ $keys -eq 0 ] &&
+        grep -q '"command":"info"' "$T/out" && grep -q '"output":null' "$T/out" &&
+        [ -n "$planned" ] && [ -n "$used" ] && [ "$used" -le "$planned" ] && grep -q '^genus: 1$' "$T/err"
+    check $? "$name info --stats: one valid JSON object on stdout (report on stderr)"
+    run "$b" convert --stats test/data/spot_control_mesh.obj -o "$T/s.off"
+    is 0 && [ "$(wc -l < "$T/out")" -eq 1 ] && json_ok "$T/out" &&
+        grep -q '"output":{"file":"[^"]*s.off","format":"off"' "$T/out" && [ ! -s "$T/err" ]
+    check $? "$name convert --stats: one valid JSON object, output described"
+done
+printf '{"a":[1,2,{"b":null}],"c":"x\\"y"}\n' > "$T/good.json"
+printf '{"a":1,}\n' > "$T/bad1.json"
+printf '{"a":1}\n{"b":2}\n' > "$T/bad2.json"
+json_ok "$T/good.json" && ! json_ok "$T/bad1.json" && ! json_ok "$T/bad2.json"
+check $? "the JSON checker itself accepts valid and rejects invalid JSON"
+
+# ---------------------------------------------------------------- --arena
+run "$FLOAT" info --arena 100 test/data/torus_tri.obj
+need=$(sed -n 's/^subd: arena too small: needs \([0-9][0-9]*\) bytes, have 100$/\1/p' "$T/err")
+is 3 && [ -n "$need" ] && [ "$need" -gt 100 ] && [ ! -s "$T/out" ]
+check $? "info --arena 100: exit 3, says how many bytes are needed"
+if [ -n "$need" ]; then
+    run "$FLOAT" info --arena "$need" test/data/torus_tri.obj
+    is 0; check $? "info --arena $need (exactly the need): exit 0"
+    run "$FIXED" info --arena $((need - 1)) test/data/torus_tri.obj
+    is 3; check $? "subd-fixed info --arena $((need - 1)): exit 3 (same need in q16.16)"
+fi
+run "$FLOAT" info --arena 64k --stats test/data/icosahedron.obj
+is 0 && grep -q '"arena_budget":65536' "$T/out"; check $? "--arena accepts a k suffix"
+
+# ---------------------------------------------------------------- usage errors (exit 1)
+usage_case() { # DESCRIPTION ARGS...
+    d=$1
+    shift
+    run "$FLOAT" "$@"
+    is 1 && grep -q '^usage: subd' "$T/err" && [ ! -s "$T/out" ]
+    check $? "usage error exits 1: $d"
+}
+usage_case "no arguments"
+usage_case "unknown command" frobnicate test/data/hexfan.obj
+usage_case "unknown option" info --bogus test/data/hexfan.obj
+usage_case "missing input" info
+usage_case "two inputs" info test/data/hexfan.obj test/data/cube_quad.obj
+usage_case "convert without -o" convert test/data/hexfan.obj
+usage_case "-o without value" convert test/data/hexfan.obj -o
+usage_case "unknown output extension" convert test/data/hexfan.obj -o "$T/x.stl"
+usage_case "unknown input extension" info test/data/hexfan.stl
+usage_case "render to .obj" render test/data/hexfan.obj -o "$T/x.obj"
+usage_case "bad --size" render test/data/hexfan.obj -o "$T/x.png" --size 12by3
+usage_case "bad --pitch" render test/data/hexfan.obj -o "$T/x.png" --pitch 100
+usage_case "bad --arena" info --arena lots test/data/hexfan.obj
+usage_case "-l on info" info -l 2 test/data/hexfan.obj
+usage_case "picture option without png" convert test/data/hexfan.obj -o "$T/x.off" --no-edges
+run "$FLOAT" --help
+is 0 && grep -q '^usage: subd' "$T/out"; check $? "--help prints usage on stdout, exit 0"
+run "$FLOAT" help
+is 0 && grep -q '^usage: subd' "$T/out"; check $? "help prints usage on stdout, exit 0"
+run "$FIXED" --version
+is 0 && grep -q '^subd [0-9].*q16\.16' "$T/out"; check $? "subd-fixed --version names q16.16"
+
+# ---------------------------------------------------------------- I/O errors
+run "$FLOAT" info "$T/does-not-exist.obj"
+is 2 && grep -q "cannot read .*does-not-exist.obj" "$T/err"; check $? "missing input file: exit 2"
+mkdir "$T/dir.obj"
+run "$FLOAT" info "$T/dir.obj"
+is 2 && grep -q "cannot read" "$T/err"; check $? "input is a directory: exit 2"
+run "$FLOAT" convert test/data/hexfan.obj -o "$T/no/such/dir/x.obj"
+is 4 && grep -q "cannot write" "$T/err"; check $? "unwritable output: exit 4"
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -23,6 +23,21 @@ int subd_mesh_alloc_arrays(subd_arena *a, const mesh_counts *c, subd_mesh *m);
  * above the arrays and gives it back. Returns SUBD_OK or a validation error (with diag). */
 int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d);
 
+/* A text format for the two-pass reader driver (reader.c). scan() parses the whole buffer:
+ * with m == NULL it only counts elements into *c; otherwise *c holds the counts of the
+ * counting pass on entry and scan() fills m's arrays. line_of() turns the element a
+ * validation error names (d->face, d->vertex or d->polyline) back into its line. */
+typedef struct subd_reader {
+    int (*scan)(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m, subd_diag *d);
+    uint32_t (*line_of)(const char *buf, uint32_t len, const mesh_counts *c, const subd_diag *d);
+} subd_reader;
+
+/* Plan and read for any format: count, allocate exactly, fill, validate, map errors to
+ * lines; on failure the arena is rewound and *out untouched. */
+int subd_reader_plan(const subd_reader *r, const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
+int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint32_t len, subd_mesh *out,
+                     subd_diag *diag);
+
 /* Sets diag fields for an error and returns the status (for one-line error returns). */
 int subd_fail(subd_diag *d, int status);
 #endif

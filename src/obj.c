@@ -6,7 +6,8 @@
  * syntax error: silently ignoring it would hide e.g. free-form geometry we cannot represent,
  * and garbage must not pass as an empty mesh.
  *
- * One scan routine serves the plan (count) and the read (fill), so the two cannot disagree.
+ * One scan routine serves the plan (count) and the read (fill) through the reader driver
+ * (reader.c), so the two cannot disagree.
  * Validation errors found after parsing (repeated vertex, non-manifold, orientation) name a
  * face or vertex; the reader turns that back into a line by rescanning, which costs no memory.
  */
@@ -131,7 +132,7 @@ static int obj_scan_buffer(obj_scan *sc, const char *buf, uint32_t len, subd_dia
     return SUBD_OK;
 }
 
-/* Line of the n-th statement whose keyword is kw ("v" or "f"), for validation errors. */
+/* Line of the n-th statement whose keyword is kw ("v", "f" or "l"). */
 static uint32_t obj_statement_line(const char *buf, uint32_t len, const char *kw, uint32_t n)
 {
     text_cursor t;
@@ -144,73 +145,42 @@ static uint32_t obj_statement_line(const char *buf, uint32_t len, const char *kw
     return 0;
 }
 
-/* The counting scan shared by plan and read. */
-static int obj_count(const char *buf, uint32_t len, mesh_counts *c, subd_diag *d)
+static uint32_t obj_line_of(const char *buf, uint32_t len, const mesh_counts *c, const subd_diag *d)
+{
+    (void)c;
+    if (d->face != SUBD_NONE) return obj_statement_line(buf, len, "f", d->face);
+    if (d->polyline != SUBD_NONE) return obj_statement_line(buf, len, "l", d->polyline);
+    if (d->vertex != SUBD_NONE) return obj_statement_line(buf, len, "v", d->vertex);
+    return 0;
+}
+
+static int obj_scan_fn(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m, subd_diag *d)
 {
     obj_scan sc;
     int st;
     sc.c.nv = sc.c.nf = sc.c.nc = sc.c.nl = sc.c.nlv = 0;
-    sc.m = 0;
-    sc.nv_total = 0;
+    sc.m = m;
+    sc.nv_total = m ? c->nv : 0;
+    sc.lines = 0;
     if ((st = obj_scan_buffer(&sc, buf, len, d)) != SUBD_OK) return st;
     if (sc.c.nv == 0) {
         d->line = sc.lines ? sc.lines : 1u;
         return subd_fail(d, SUBD_ERR_EMPTY);
     }
-    if (subd_mesh_counts_bytes(&sc.c) == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     *c = sc.c;
     return SUBD_OK;
 }
 
+static const subd_reader obj_reader = {obj_scan_fn, obj_line_of};
+
 int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
-    mesh_counts c;
-    int st;
-    subd_diag_clear(d);
-    if ((!buf && len) || !bytes) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = obj_count(buf, len, &c, d)) != SUBD_OK) return st;
-    *bytes = subd_mesh_counts_bytes(&c);
-    return SUBD_OK;
+    return subd_reader_plan(&obj_reader, buf, len, bytes, diag);
 }
 
 int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
-    obj_scan sc;
-    subd_mesh m;
-    uint32_t mark;
-    int st;
-
-    subd_diag_clear(d);
-    if (!arena || !out || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = obj_count(buf, len, &sc.c, d)) != SUBD_OK) return st;
-    mark = subd_arena_mark(arena);
-    if ((st = subd_mesh_alloc_arrays(arena, &sc.c, &m)) != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        d->bytes_needed = subd_mesh_counts_bytes(&sc.c);
-        return subd_fail(d, st);
-    }
-    sc.nv_total = sc.c.nv;
-    sc.c.nv = sc.c.nf = sc.c.nc = sc.c.nl = sc.c.nlv = 0;
-    sc.m = &m;
-    m.face_start[0] = 0;
-    m.line_start[0] = 0;
-    st = obj_scan_buffer(&sc, buf, len, d);
-    if (st == SUBD_OK) {
-        st = subd_mesh_finish(arena, &m, d);
-        if (d->face != SUBD_NONE) d->line = obj_statement_line(buf, len, "f", d->face);
-        else if (d->polyline != SUBD_NONE) d->line = obj_statement_line(buf, len, "l", d->polyline);
-        else if (d->vertex != SUBD_NONE) d->line = obj_statement_line(buf, len, "v", d->vertex);
-    }
-    if (st != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        return st;
-    }
-    *out = m;
-    return SUBD_OK;
+    return subd_reader_read(&obj_reader, arena, buf, len, out, diag);
 }
 
 static void obj_emit(const subd_mesh *m, text_sink *k)
@@ -246,16 +216,5 @@ static void obj_emit(const subd_mesh *m, text_sink *k)
 
 int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
 {
-    text_sink k = {0, 0, 0, 0};
-    int st;
-    if (!m || !len) return SUBD_ERR_PARAM;
-    obj_emit(m, &k); /* count first: a too-small buffer is left untouched */
-    if ((st = subd_sink_finish(&k, len)) != SUBD_OK) return st;
-    if (!buf) return SUBD_OK;
-    if (*len > cap) return SUBD_ERR_NOMEM;
-    k.buf = buf;
-    k.cap = cap;
-    k.len = 0;
-    obj_emit(m, &k);
-    return subd_sink_finish(&k, len);
+    return subd_text_write(obj_emit, m, buf, cap, len);
 }

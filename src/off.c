@@ -7,7 +7,7 @@
  * Blank lines and `#` comments may appear anywhere. Text after the last face is an error.
  * Counts larger than the file could possibly hold (a vertex needs at least 6 bytes, a face
  * 8) are rejected on the header line before anything is allocated.
- * As in obj.c, one scan serves plan and read.
+ * As in obj.c, one scan serves plan and read (reader.c).
  */
 #include "mesh_internal.h"
 #include "text.h"
@@ -108,7 +108,6 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
     c->nc = nc;
     c->nl = 0;
     c->nlv = 0;
-    if (subd_mesh_counts_bytes(c) == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     return SUBD_OK;
 }
 
@@ -127,52 +126,23 @@ static uint32_t off_element_line(const char *buf, uint32_t len, uint32_t n)
     return 0;
 }
 
+static uint32_t off_line_of(const char *buf, uint32_t len, const mesh_counts *c, const subd_diag *d)
+{
+    if (d->face != SUBD_NONE) return off_element_line(buf, len, c->nv + d->face);
+    if (d->vertex != SUBD_NONE) return off_element_line(buf, len, d->vertex);
+    return 0;
+}
+
+static const subd_reader off_reader = {off_scan, off_line_of};
+
 int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
-    mesh_counts c;
-    int st;
-    subd_diag_clear(d);
-    if ((!buf && len) || !bytes) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = off_scan(buf, len, &c, 0, d)) != SUBD_OK) return st;
-    *bytes = subd_mesh_counts_bytes(&c);
-    return SUBD_OK;
+    return subd_reader_plan(&off_reader, buf, len, bytes, diag);
 }
 
 int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
-    mesh_counts c;
-    subd_mesh m;
-    uint32_t mark, nv;
-    int st;
-
-    subd_diag_clear(d);
-    if (!arena || !out || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = off_scan(buf, len, &c, 0, d)) != SUBD_OK) return st;
-    mark = subd_arena_mark(arena);
-    if ((st = subd_mesh_alloc_arrays(arena, &c, &m)) != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        d->bytes_needed = subd_mesh_counts_bytes(&c);
-        return subd_fail(d, st);
-    }
-    m.face_start[0] = 0;
-    m.line_start[0] = 0;
-    nv = c.nv;
-    st = off_scan(buf, len, &c, &m, d);
-    if (st == SUBD_OK) {
-        st = subd_mesh_finish(arena, &m, d);
-        if (d->face != SUBD_NONE) d->line = off_element_line(buf, len, nv + d->face);
-        else if (d->vertex != SUBD_NONE) d->line = off_element_line(buf, len, d->vertex);
-    }
-    if (st != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        return st;
-    }
-    *out = m;
-    return SUBD_OK;
+    return subd_reader_read(&off_reader, arena, buf, len, out, diag);
 }
 
 static void off_emit(const subd_mesh *m, text_sink *k)
@@ -205,16 +175,5 @@ static void off_emit(const subd_mesh *m, text_sink *k)
 
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
 {
-    text_sink k = {0, 0, 0, 0};
-    int st;
-    if (!m || !len) return SUBD_ERR_PARAM;
-    off_emit(m, &k);
-    if ((st = subd_sink_finish(&k, len)) != SUBD_OK) return st;
-    if (!buf) return SUBD_OK;
-    if (*len > cap) return SUBD_ERR_NOMEM;
-    k.buf = buf;
-    k.cap = cap;
-    k.len = 0;
-    off_emit(m, &k);
-    return subd_sink_finish(&k, len);
+    return subd_text_write(off_emit, m, buf, cap, len);
 }

@@ -109,10 +109,18 @@ void subd_sink_real(text_sink *k, subd_real x)
     subd_sink_chars(k, b, subd_real_format(x, b));
 }
 
-int subd_sink_finish(const text_sink *k, uint32_t *len)
+int subd_text_write(text_emit_fn emit, const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
 {
-    if (k->overflow) return SUBD_ERR_TOO_BIG;
-    *len = k->len;
-    if (k->buf && k->len > k->cap) return SUBD_ERR_NOMEM;
+    text_sink k = {0, 0, 0, 0};
+    if (!m || !len) return SUBD_ERR_PARAM;
+    emit(m, &k);
+    if (k.overflow) return SUBD_ERR_TOO_BIG;
+    *len = k.len;
+    if (!buf) return SUBD_OK;
+    if (k.len > cap) return SUBD_ERR_NOMEM;
+    k.buf = buf;
+    k.cap = cap;
+    k.len = 0;
+    emit(m, &k);
     return SUBD_OK;
 }

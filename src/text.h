@@ -40,6 +40,8 @@ void subd_sink_str(text_sink *k, const char *s);
 void subd_sink_chars(text_sink *k, const char *s, uint32_t n);
 void subd_sink_u32(text_sink *k, uint32_t v);
 void subd_sink_real(text_sink *k, subd_real x);
-/* Final status of a writer: SUBD_OK, or SUBD_ERR_NOMEM when buf was given but too small. */
-int subd_sink_finish(const text_sink *k, uint32_t *len);
+/* Runs a writer: emit() once to count (so a too-small buffer is left untouched), then once
+ * more into buf. Implements the contract of subd_obj_write / subd_off_write. */
+typedef void (*text_emit_fn)(const subd_mesh *m, text_sink *k);
+int subd_text_write(text_emit_fn emit, const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 #endif

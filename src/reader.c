@@ -1,0 +1,63 @@
+/* The two-pass reader driver shared by the OBJ and OFF readers: a counting scan gives the
+ * exact arena plan, a second scan of the same routine fills the arrays in place, and the
+ * mesh builder's validation runs on them. Parsing straight into the final arrays keeps the
+ * peak at one mesh; a validation error names an element, which the format maps back to its
+ * line by rescanning, so no per-element line table is ever stored. */
+#include "mesh_internal.h"
+
+static int reader_count(const subd_reader *r, const char *buf, uint32_t len, mesh_counts *c, subd_diag *d)
+{
+    int st;
+    c->nv = c->nf = c->nc = c->nl = c->nlv = 0;
+    if ((st = r->scan(buf, len, c, 0, d)) != SUBD_OK) return st;
+    if (subd_mesh_counts_bytes(c) == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
+    return SUBD_OK;
+}
+
+int subd_reader_plan(const subd_reader *r, const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag)
+{
+    subd_diag dummy;
+    subd_diag *d = diag ? diag : &dummy;
+    mesh_counts c;
+    int st;
+    subd_diag_clear(d);
+    if ((!buf && len) || !bytes) return subd_fail(d, SUBD_ERR_PARAM);
+    if ((st = reader_count(r, buf, len, &c, d)) != SUBD_OK) return st;
+    *bytes = subd_mesh_counts_bytes(&c);
+    return SUBD_OK;
+}
+
+int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint32_t len, subd_mesh *out,
+                     subd_diag *diag)
+{
+    subd_diag dummy;
+    subd_diag *d = diag ? diag : &dummy;
+    mesh_counts c, counted;
+    subd_mesh m;
+    uint32_t mark;
+    int st;
+
+    subd_diag_clear(d);
+    if (!a || !out || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
+    if ((st = reader_count(r, buf, len, &c, d)) != SUBD_OK) return st;
+    mark = subd_arena_mark(a);
+    if ((st = subd_mesh_alloc_arrays(a, &c, &m)) != SUBD_OK) {
+        subd_arena_rewind(a, mark);
+        d->bytes_needed = subd_mesh_counts_bytes(&c);
+        return subd_fail(d, st);
+    }
+    m.face_start[0] = 0;
+    m.line_start[0] = 0;
+    counted = c;
+    st = r->scan(buf, len, &c, &m, d);
+    if (st == SUBD_OK) {
+        st = subd_mesh_finish(a, &m, d);
+        if (st != SUBD_OK) d->line = r->line_of(buf, len, &counted, d);
+    }
+    if (st != SUBD_OK) {
+        subd_arena_rewind(a, mark);
+        return st;
+    }
+    *out = m;
+    return SUBD_OK;
+}

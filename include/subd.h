@@ -217,6 +217,12 @@ uint32_t subd_vertex_valence(const subd_mesh *m, uint32_t v);
 void subd_edge_tag_set(subd_mesh *m, uint32_t h, uint8_t bits);
 void subd_edge_tag_clear(subd_mesh *m, uint32_t h, uint8_t bits);
 
+/* Tags as SUBD_ETAG_CREASE every interior edge whose dihedral angle (the angle between the
+ * normals of its two faces) is larger than the angle whose cosine is cos_limit; e.g.
+ * subd_cos_turns(30, 360) for 30 degrees. Returns the number of edges tagged. Work O(C * face
+ * size); no memory. Q16.16 resolves the angle to about 0.06 degrees. */
+uint32_t subd_mesh_tag_crease_angle(subd_mesh *m, subd_real cos_limit);
+
 /* Euler characteristic V - E + F (isolated vertices included). */
 int32_t subd_mesh_euler(const subd_mesh *m);
 

@@ -246,6 +246,8 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
  * size needed and SUBD_ERR_NOMEM is returned (SUBD_OK when buf == NULL). */
 int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
+/* OBJ with one normal per vertex (3 * num_verts; `vn` records, faces as `f a//a ...`). */
+int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len);
 
 #include "subd_loop.h"
 

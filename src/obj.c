@@ -183,24 +183,34 @@ int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     return subd_reader_read(&obj_reader, arena, buf, len, out, diag);
 }
 
-static void obj_emit(const subd_mesh *m, text_sink *k)
+static void obj_xyz(text_sink *k, const char *kw, const subd_real *p)
+{
+    subd_sink_str(k, kw);
+    subd_sink_real(k, p[0]);
+    subd_sink_str(k, " ");
+    subd_sink_real(k, p[1]);
+    subd_sink_str(k, " ");
+    subd_sink_real(k, p[2]);
+    subd_sink_str(k, "\n");
+}
+
+/* With normals, vertex i has normal i and faces are written as `f a//a b//b ...`. */
+static void obj_emit(const subd_mesh *m, const subd_real *normals, text_sink *k)
 {
     uint32_t v, f, c, l;
     subd_sink_str(k, "# tinysubd\n");
-    for (v = 0; v < m->num_verts; v++) {
-        subd_sink_str(k, "v ");
-        subd_sink_real(k, m->pos[3u * v]);
-        subd_sink_str(k, " ");
-        subd_sink_real(k, m->pos[3u * v + 1u]);
-        subd_sink_str(k, " ");
-        subd_sink_real(k, m->pos[3u * v + 2u]);
-        subd_sink_str(k, "\n");
-    }
+    for (v = 0; v < m->num_verts; v++) obj_xyz(k, "v ", &m->pos[3u * v]);
+    if (normals)
+        for (v = 0; v < m->num_verts; v++) obj_xyz(k, "vn ", &normals[3u * v]);
     for (f = 0; f < m->num_faces; f++) {
         subd_sink_str(k, "f");
         for (c = m->face_start[f]; c < m->face_start[f + 1u]; c++) {
             subd_sink_str(k, " ");
             subd_sink_u32(k, m->corner_vert[c] + 1u);
+            if (normals) {
+                subd_sink_str(k, "//");
+                subd_sink_u32(k, m->corner_vert[c] + 1u);
+            }
         }
         subd_sink_str(k, "\n");
     }
@@ -216,5 +226,11 @@ static void obj_emit(const subd_mesh *m, text_sink *k)
 
 int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
 {
-    return subd_text_write(obj_emit, m, buf, cap, len);
+    return subd_text_write(obj_emit, m, 0, buf, cap, len);
+}
+
+int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len)
+{
+    if (!normals) return SUBD_ERR_PARAM;
+    return subd_text_write(obj_emit, m, normals, buf, cap, len);
 }

@@ -145,8 +145,9 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     return subd_reader_read(&off_reader, arena, buf, len, out, diag);
 }
 
-static void off_emit(const subd_mesh *m, text_sink *k)
+static void off_emit(const subd_mesh *m, const subd_real *normals, text_sink *k)
 {
+    (void)normals;
     uint32_t v, f, c;
     subd_sink_str(k, "OFF\n");
     subd_sink_u32(k, m->num_verts);
@@ -175,5 +176,5 @@ static void off_emit(const subd_mesh *m, text_sink *k)
 
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
 {
-    return subd_text_write(off_emit, m, buf, cap, len);
+    return subd_text_write(off_emit, m, 0, buf, cap, len);
 }

@@ -109,11 +109,12 @@ void subd_sink_real(text_sink *k, subd_real x)
     subd_sink_chars(k, b, subd_real_format(x, b));
 }
 
-int subd_text_write(text_emit_fn emit, const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len)
+int subd_text_write(text_emit_fn emit, const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap,
+                    uint32_t *len)
 {
     text_sink k = {0, 0, 0, 0};
     if (!m || !len) return SUBD_ERR_PARAM;
-    emit(m, &k);
+    emit(m, normals, &k);
     if (k.overflow) return SUBD_ERR_TOO_BIG;
     *len = k.len;
     if (!buf) return SUBD_OK;
@@ -121,6 +122,6 @@ int subd_text_write(text_emit_fn emit, const subd_mesh *m, char *buf, uint32_t c
     k.buf = buf;
     k.cap = cap;
     k.len = 0;
-    emit(m, &k);
+    emit(m, normals, &k);
     return SUBD_OK;
 }

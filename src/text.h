@@ -42,6 +42,7 @@ void subd_sink_u32(text_sink *k, uint32_t v);
 void subd_sink_real(text_sink *k, subd_real x);
 /* Runs a writer: emit() once to count (so a too-small buffer is left untouched), then once
  * more into buf. Implements the contract of subd_obj_write / subd_off_write. */
-typedef void (*text_emit_fn)(const subd_mesh *m, text_sink *k);
-int subd_text_write(text_emit_fn emit, const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
+typedef void (*text_emit_fn)(const subd_mesh *m, const subd_real *normals, text_sink *k);
+int subd_text_write(text_emit_fn emit, const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap,
+                    uint32_t *len);
 #endif

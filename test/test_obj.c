@@ -148,7 +148,34 @@ static void obj_corpus(void)
     }
 }
 
+/* The normals writer: `vn` per vertex, `f a//a` corners; reading it back gives the mesh. */
+static void obj_write_normals(void)
+{
+    static char buf[4096];
+    const corpus_file *f = corpus_find("test/data/cube_quad.obj");
+    subd_arena a;
+    subd_mesh m, n;
+    subd_diag d;
+    subd_real nrm[24];
+    uint32_t len, i, vn = 0, slashes = 0;
+    if (!CHECK(f != 0)) return;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!CHECK_EQ(subd_obj_read(&a, f->data, f->len, &m, &d), SUBD_OK)) return;
+    for (i = 0; i < 24; i++) nrm[i] = m.pos[i];
+    CHECK_EQ(subd_obj_write_normals(&m, 0, buf, sizeof buf, &len), SUBD_ERR_PARAM);
+    if (!CHECK_EQ(subd_obj_write_normals(&m, nrm, buf, sizeof buf, &len), SUBD_OK)) return;
+    for (i = 0; i + 3 < len; i++) {
+        if (buf[i] == '\n' && buf[i + 1] == 'v' && buf[i + 2] == 'n' && buf[i + 3] == ' ') vn++;
+        if (buf[i] == '/' && buf[i + 1] == '/') slashes++;
+    }
+    CHECK_EQ(vn, 8);
+    CHECK_EQ(slashes, 24);
+    if (!CHECK_EQ(subd_obj_read(&a, buf, len, &n, &d), SUBD_OK)) return;
+    CHECK_EQ(h_mesh_hash(&n), h_mesh_hash(&m));
+}
+
 const test_case suite_obj[] = {
+    {"obj_write_normals", obj_write_normals},
     {"obj_syntax", obj_syntax},
     {"obj_roundtrip", obj_roundtrip},
     {"obj_plan_exact", obj_plan_exact},

@@ -250,5 +250,6 @@ int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len);
 
 #include "subd_loop.h"
+#include "subd_quasi48.h"
 
 #endif

@@ -1,0 +1,98 @@
+/* Quasi 4-8 subdivision (paper: quasi-4-8-subdivision.txt, Velho): geometry-sensitive
+ * longest-edge binary refinement with edge-cluster marking (Algorithm 1) followed by the
+ * two-pass convolution smoothing (Algorithm 2), with the section 4.3 feature control
+ * (tagged vertices and edges are not affected by smoothing) and two boundary modes.
+ * Included by subd.h (until then, include it after subd.h). */
+#ifndef SUBD_QUASI48_H
+#define SUBD_QUASI48_H
+
+#include "subd.h"
+
+/* Largest number of binary steps one call accepts. Two binary steps make one 4-8
+ * refinement (face count x4, like one Loop level), hence twice SUBD_MAX_LEVELS. */
+#define SUBD_Q48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
+
+/* What smoothing does with boundary vertices (refinement is the same in both modes). */
+typedef enum subd_q48_boundary {
+    /* Boundary vertices never move; new boundary vertices are edge midpoints, so the
+     * boundary polygon keeps its shape (the paper's planar examples, figures 5-8). */
+    SUBD_Q48_BOUNDARY_FIXED = 0,
+    /* The 1-D analogue of Algorithm 2 along each boundary curve: new boundary vertices are
+     * the midpoints of their two boundary neighbours (pass 1), an old boundary vertex becomes
+     * 1/2 own + 1/2 the average of its new boundary neighbours (pass 2; with both neighbours
+     * new that is the cubic B-spline vertex rule 3/4, 1/8, 1/8). */
+    SUBD_Q48_BOUNDARY_SMOOTH = 1
+} subd_q48_boundary;
+
+/* subd_q48_opts.flags */
+#define SUBD_Q48_NO_SMOOTH 0x1u /* refinement only (Algorithm 1 without Algorithm 2)      */
+
+typedef struct subd_q48_opts {
+    uint32_t steps;              /* binary steps, 1..SUBD_Q48_MAX_STEPS                    */
+    subd_q48_boundary boundary;
+    uint32_t flags;
+    /* Length resolution of the edge sort: squared edge lengths are rounded to this many
+     * significant bits (round to nearest) before they are compared, so edges whose lengths
+     * differ only by the rounding of the arithmetic count as equal and go by the radial
+     * tie-break (see subd_quasi48). 0 = SUBD_Q48_LEN_BITS_DEFAULT; 1..53 accepted; 53
+     * (SUBD_Q48_LEN_BITS_EXACT) compares the squared lengths as computed (float32: the
+     * float32 sum of the float32 squares of the coordinate differences, 24 bits; Q16.16:
+     * the exact integer sum, exact for edges shorter than 1448 units, 53 bits beyond). */
+    uint32_t len_bits;
+} subd_q48_opts;
+
+#define SUBD_Q48_LEN_BITS_DEFAULT 12u
+#define SUBD_Q48_LEN_BITS_EXACT 53u
+
+/* Upper bounds after `steps` binary steps of a triangle mesh with V vertices and F faces
+ * (every split needs a face of its own, so one step adds at most F vertices and F faces):
+ *   F_s <= 2^s F,   V_s <= V + (2^s - 1) F,   corners = 3 F_s. */
+#define SUBD_Q48_MAX_FACES(F, s) ((F) << (s))
+#define SUBD_Q48_MAX_VERTS(V, F, s) ((V) + (((F) << (s)) - (F)))
+
+/* Arena bytes subd_quasi48 uses for this input and options. The number of splits of a step
+ * is only known after its marking pass, so the plan is computed from the bounds above: the
+ * output mesh arrays sized for step `steps`, one more set for step steps-1 (ping-pong
+ * between steps; none when steps == 1), the per-step working memory for the largest step
+ * input (edge numbering, sort keys, marks, split vertices: 37 bytes per corner of step
+ * steps-1, 1 KiB of radix counters, one tag byte per output vertex and per output corner) and the
+ * mesh builder's scratch. subd_quasi48 refuses to start unless that many bytes are free,
+ * so the run can never exceed the plan; the measured peak equals it when every step
+ * reaches the bound (e.g. one step of a single triangle). Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps or
+ * len_bits out of range, input without adjacency), SUBD_ERR_FACE_SIZE (a non-triangle),
+ * SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG (the bound does not fit 32-bit sizes). */
+int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes);
+
+/* `steps` binary steps of quasi 4-8 subdivision of an all-triangle mesh. Each step:
+ *  1. Algorithm 1 (refinement). Edges are numbered "radially around each vertex": vertices
+ *     in index order, and around each vertex its not yet numbered edges in one-ring order
+ *     (starting at vert_out[v], the order of subd_ring_next; a boundary vertex's incoming
+ *     boundary edge last). The edges are then sorted by decreasing squared length (rounded
+ *     to opts.len_bits significant bits) with a stable radix sort, so equal lengths keep the
+ *     radial numbering. Going down the sorted list, an edge that is not marked is split at
+ *     its midpoint and its cluster (the edge and every edge of the faces containing it) is
+ *     marked; so every face has at most one split edge. Every face with a split edge (a, b)
+ *     and opposite vertex c becomes (a, m, c), kept at the face's index, and (m, b, c),
+ *     appended in face order; faces without a split edge are copied unchanged.
+ *  2. Algorithm 2 (smoothing, unless SUBD_Q48_NO_SMOOTH), in place: every new interior
+ *     vertex becomes the average of its (four) neighbours; then every old vertex becomes 1/2
+ *     its position + 1/2 the average of its k new neighbours (k = 0: unchanged). Section 4.3:
+ *     vertices tagged SUBD_VTAG_CORNER or SUBD_VTAG_FIXED, both ends of every
+ *     SUBD_ETAG_CREASE edge and (SUBD_Q48_BOUNDARY_FIXED) boundary vertices do not move; new
+ *     vertices on crease and boundary edges stay at the edge midpoint; see
+ *     subd_q48_boundary for the smoothing mode.
+ * Vertex i of the input is vertex i of the output; a step's new vertices follow, in
+ * split order (longest edge first). Crease tags pass to both halves of a split crease
+ * edge; CORNER/FIXED tags stay with their vertices; polylines are copied. The output has
+ * full adjacency (it passed subd_mesh_build's validator) and its arrays lie in the arena.
+ * The input is not modified.
+ * Errors: those of subd_quasi48_plan, SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
+ * SUBD_ERR_RANGE (float32 overflow to infinity; Q16.16 cannot overflow: every new position
+ * is a convex combination). On failure the arena is back where it was and *out untouched.
+ * Work per step: at most 8 radix passes over the edges, O(C + sum of valence^2) for the
+ * adjacency (the mesh builder's validator); no recursion; stack under 500 bytes (448
+ * measured on Cortex-M, plus the mesh builder's few dozen). */
+int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out,
+                 subd_diag *d);
+
+#endif

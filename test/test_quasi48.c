@@ -1,0 +1,776 @@
+/* Quasi 4-8 subdivision: the paper's stated results (figures 5-9), per-step invariants
+ * checked by brute force against the step's input, smoothing properties (planarity,
+ * affine invariance, tags and boundaries), exact planning (every too-small arena fails
+ * cleanly), errors, and output hashes for host = QEMU. */
+#include "harness.h"
+#include "subd_quasi48.h"
+#include "corpus.h"
+#if H_HOST
+#include <stdio.h>
+#endif
+
+#define BIG_BYTES (768u * 1024u)
+static uint8_t g_big[BIG_BYTES] __attribute__((aligned(8)));
+
+#define MAXV 2048
+#define MAXF 2048
+static subd_real g_pos[3 * MAXV];
+static uint32_t g_idx[3 * MAXF];
+
+static subd_q48_opts opts(uint32_t steps, uint32_t flags)
+{
+    subd_q48_opts o;
+    o.steps = steps;
+    o.boundary = SUBD_Q48_BOUNDARY_FIXED;
+    o.flags = flags;
+    o.len_bits = 0;
+    return o;
+}
+
+static subd_real R(int32_t num, int32_t den)
+{
+    uint32_t ovf = 0;
+    return subd_div(subd_from_int(num, &ovf), subd_from_int(den, &ovf), &ovf);
+}
+
+/* Planar fan: centre (vertex 0) at (cx, 0), n rim vertices at radius radius[i] (or 1) on
+ * angles i/n turns, faces (0, i, i+1). */
+static void fan_list(subd_face_list *fl, uint32_t n, const subd_real *radius, subd_real cx)
+{
+    uint32_t i, ovf = 0;
+    g_pos[0] = cx; g_pos[1] = 0; g_pos[2] = 0;
+    for (i = 0; i < n; i++) {
+        subd_real c = subd_cos_turns((int32_t)i, (int32_t)n), s = subd_sin_turns((int32_t)i, (int32_t)n);
+        subd_real r = radius ? radius[i] : SUBD_REAL_ONE;
+        g_pos[3 * (i + 1)] = subd_mul(r, c, &ovf);
+        g_pos[3 * (i + 1) + 1] = subd_mul(r, s, &ovf);
+        g_pos[3 * (i + 1) + 2] = 0;
+        g_idx[3 * i] = 0;
+        g_idx[3 * i + 1] = i + 1;
+        g_idx[3 * i + 2] = (i + 1) % n + 1;
+    }
+    CHECK_EQ(ovf, 0);
+    fl->num_verts = n + 1;
+    fl->pos = g_pos;
+    fl->num_faces = n;
+    fl->face_size = 0;
+    fl->index = g_idx;
+    fl->num_lines = 0;
+    fl->line_size = fl->line_index = 0;
+}
+
+/* Torus of n x m quads (R = 1, r = 0.4), each cut by the diagonal a-c. */
+static void torus_list(subd_face_list *fl, uint32_t n, uint32_t m)
+{
+    uint32_t i, j, k = 0, ovf = 0;
+    subd_real r = R(2, 5);
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < m; j++) {
+            subd_real cu = subd_cos_turns((int32_t)i, (int32_t)n), su = subd_sin_turns((int32_t)i, (int32_t)n);
+            subd_real cv = subd_cos_turns((int32_t)j, (int32_t)m), sv = subd_sin_turns((int32_t)j, (int32_t)m);
+            subd_real rad = subd_add(SUBD_REAL_ONE, subd_mul(r, cv, &ovf), &ovf);
+            uint32_t v = i * m + j;
+            g_pos[3 * v] = subd_mul(rad, cu, &ovf);
+            g_pos[3 * v + 1] = subd_mul(rad, su, &ovf);
+            g_pos[3 * v + 2] = subd_mul(r, sv, &ovf);
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < m; j++) {
+            uint32_t a = i * m + j, b = ((i + 1) % n) * m + j;
+            uint32_t c = ((i + 1) % n) * m + (j + 1) % m, d = i * m + (j + 1) % m;
+            g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
+            g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
+        }
+    }
+    CHECK_EQ(ovf, 0);
+    fl->num_verts = n * m;
+    fl->pos = g_pos;
+    fl->num_faces = 2 * n * m;
+    fl->face_size = 0;
+    fl->index = g_idx;
+    fl->num_lines = 0;
+    fl->line_size = fl->line_index = 0;
+}
+
+/* Planar (n+1) x (n+1) grid of unit squares cut by alternating diagonals: an open disk. */
+static void grid_list(subd_face_list *fl, uint32_t n)
+{
+    uint32_t i, j, k = 0, ovf = 0;
+    for (i = 0; i <= n; i++)
+        for (j = 0; j <= n; j++) {
+            uint32_t v = i * (n + 1) + j;
+            g_pos[3 * v] = subd_from_int((int32_t)j, &ovf);
+            g_pos[3 * v + 1] = subd_from_int((int32_t)i, &ovf);
+            g_pos[3 * v + 2] = 0;
+        }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) {
+            uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 2, d = a + n + 1;
+            if ((i + j) & 1u) {
+                g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
+                g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
+            } else {
+                g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = d;
+                g_idx[k++] = b; g_idx[k++] = c; g_idx[k++] = d;
+            }
+        }
+    fl->num_verts = (n + 1) * (n + 1);
+    fl->pos = g_pos;
+    fl->num_faces = 2 * n * n;
+    fl->face_size = 0;
+    fl->index = g_idx;
+    fl->num_lines = 0;
+    fl->line_size = fl->line_index = 0;
+}
+
+static int build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
+{
+    subd_diag d;
+    return CHECK_EQ(subd_mesh_build(a, fl, m, &d), SUBD_OK);
+}
+
+static int run(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out)
+{
+    subd_diag d;
+    int st = subd_quasi48(a, in, o, out, &d);
+    if (!CHECK_EQ(st, SUBD_OK)) {
+        h_str("    bytes_needed ");
+        h_u32(d.bytes_needed);
+        h_nl();
+        return 0;
+    }
+    return 1;
+}
+
+/* One step, checked against its input by brute force:
+ *  - every face of `a` is either copied unchanged or split once: face f = (x, m, z) and
+ *    the next appended face = (m, y, z), with (x, y, z) = a's face rotated and m a new vertex;
+ *  - V' = V + splits (each new vertex used), F' = F + split faces, old positions moved only
+ *    by smoothing (refine-only: unchanged, new = midpoint of its edge);
+ *  - the output passes the validator again (rebuilt from its face list: same twins), closed
+ *    stays closed, Euler characteristic unchanged, all faces triangles. */
+static uint8_t g_used[MAXV];
+static void check_step(const subd_mesh *a, const subd_mesh *b, int refine_only)
+{
+    uint32_t f, k = a->num_faces, j, v, nsplit = 0;
+    subd_arena tmp;
+    subd_face_list fl;
+    subd_mesh c;
+    if (!CHECK(b->num_verts < MAXV)) return;
+    for (v = 0; v < b->num_verts; v++) g_used[v] = 0;
+    CHECK_EQ(b->num_corners, 3u * b->num_faces);
+    for (f = 0; f < a->num_faces; f++) {
+        const uint32_t *p = a->corner_vert + 3u * f, *q = b->corner_vert + 3u * f;
+        if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2]) continue;
+        nsplit++;
+        if (!CHECK(k < b->num_faces)) return;
+        for (j = 0; j < 3u; j++) {
+            const uint32_t *r = b->corner_vert + 3u * k;
+            uint32_t x = p[j], y = p[(j + 1) % 3], z = p[(j + 2) % 3], mm = q[1];
+            if (q[0] != x) continue;
+            CHECK(mm >= a->num_verts);
+            CHECK(q[2] == z);
+            CHECK(r[0] == mm && r[1] == y && r[2] == z);
+            if (mm < MAXV) g_used[mm] = 1;
+            if (refine_only && mm >= a->num_verts) {
+                uint32_t t;
+                for (t = 0; t < 3u; t++) {
+                    uint32_t ovf = 0;
+                    subd_real px = a->pos[3u * x + t], py = a->pos[3u * y + t];
+                    subd_real lo = px < py ? px : py, hi = px < py ? py : px;
+                    subd_real mid = b->pos[3u * mm + t];
+                    (void)ovf;
+                    CHECK(mid >= lo && mid <= hi);
+                }
+            }
+            break;
+        }
+        CHECK(j < 3u);
+        k++;
+    }
+    CHECK_EQ(b->num_faces, a->num_faces + nsplit);
+    for (v = a->num_verts; v < b->num_verts; v++) CHECK(g_used[v]);
+    if (refine_only)
+        for (v = 0; v < 3u * a->num_verts; v++) CHECK(a->pos[v] == b->pos[v]);
+    CHECK_EQ(subd_mesh_euler(b), subd_mesh_euler(a));
+    if (a->num_boundary_edges == 0) CHECK_EQ(b->num_boundary_edges, 0);
+    CHECK_EQ(b->num_boundary_loops, a->num_boundary_loops);
+    /* validator: rebuild from the plain face list, compare adjacency */
+    fl.num_verts = b->num_verts;
+    fl.pos = b->pos;
+    fl.num_faces = b->num_faces;
+    fl.face_size = 0;
+    fl.index = b->corner_vert;
+    fl.num_lines = 0;
+    fl.line_size = fl.line_index = 0;
+    subd_arena_init(&tmp, h_arena_buf, H_ARENA_BYTES);
+    if (CHECK_EQ(subd_mesh_build(&tmp, &fl, &c, 0), SUBD_OK)) {
+        for (j = 0; j < b->num_corners; j++) CHECK(c.twin[j] == b->twin[j]);
+        for (v = 0; v < b->num_verts; v++) CHECK(c.vert_out[v] == b->vert_out[v]);
+        CHECK_EQ(c.num_edges, b->num_edges);
+    }
+}
+
+/* Runs `steps` single steps, checking each; returns the centre (vertex 0) valence after the
+ * last one, *mesh receives the final mesh (in arena a). */
+static uint32_t stepwise(subd_arena *a, const subd_mesh *in, uint32_t steps, uint32_t flags, subd_mesh *mesh)
+{
+    subd_q48_opts o = opts(1, flags);
+    subd_mesh cur = *in, nxt;
+    uint32_t s;
+    for (s = 0; s < steps; s++) {
+        if (!run(a, &cur, &o, &nxt)) return 0;
+        check_step(&cur, &nxt, (flags & SUBD_Q48_NO_SMOOTH) != 0);
+        cur = nxt;
+    }
+    *mesh = cur;
+    return subd_vertex_valence(&cur, 0);
+}
+
+/* Figure 5: regular n-gons, n = 3..6, centre valence 2n (6 for the hexagon) after 1 and 4
+ * steps, with and without smoothing; one call of 4 steps = four calls of 1 step. */
+static void q48_regular_polygons(void)
+{
+    uint32_t n, pass, hashes = 2166136261u;
+    for (pass = 0; pass < 2; pass++) {
+        uint32_t flags = pass ? 0u : SUBD_Q48_NO_SMOOTH;
+        for (n = 3; n <= 6; n++) {
+            subd_arena a;
+            subd_face_list fl;
+            subd_mesh in, m1, m4, once;
+            subd_q48_opts o = opts(4, flags);
+            uint32_t want = n == 6 ? 6u : 2u * n;
+            subd_arena_init(&a, g_big, BIG_BYTES);
+            fan_list(&fl, n, 0, 0);
+            if (!build(&a, &fl, &in)) return;
+            CHECK_EQ(stepwise(&a, &in, 1, flags, &m1), want);
+            CHECK_EQ(stepwise(&a, &in, 4, flags, &m4), want);
+            if (run(&a, &in, &o, &once)) {
+                CHECK_EQ(h_mesh_hash(&once), h_mesh_hash(&m4));
+                hashes = h_fnv(hashes, &m4.num_faces, 4);
+                h_hash(pass ? "q48_fan_smooth" : "q48_fan_refine", h_mesh_hash(&once));
+            }
+            if (n == 6) CHECK_EQ(m1.num_verts, 10); /* three alternate spokes split */
+        }
+    }
+}
+
+/* Figure 8: 12-gon keeps centre valence 12 and 60-degree symmetry at every step; 9-gon:
+ * centre valence 10. */
+static subd_real cx_[MAXF], cy_[MAXF];
+static uint8_t taken[MAXF];
+static int rotation_invariant(const subd_mesh *m, int32_t num, int32_t den)
+{
+    uint32_t f, g, ok = 1, ovf = 0;
+    subd_real c = subd_cos_turns(num, den), s = subd_sin_turns(num, den), third = R(1, 3);
+#if SUBD_FIXED
+    subd_real tol = 64;
+#else
+    subd_real tol = 1e-4f;
+#endif
+    for (f = 0; f < m->num_faces && f < MAXF; f++) {
+        const uint32_t *p = m->corner_vert + 3u * f;
+        subd_real x = 0, y = 0;
+        uint32_t j;
+        for (j = 0; j < 3u; j++) {
+            x = subd_add(x, subd_mul(m->pos[3u * p[j]], third, &ovf), &ovf);
+            y = subd_add(y, subd_mul(m->pos[3u * p[j] + 1u], third, &ovf), &ovf);
+        }
+        cx_[f] = x;
+        cy_[f] = y;
+        taken[f] = 0;
+    }
+    for (f = 0; f < m->num_faces && f < MAXF && ok; f++) {
+        subd_real rx = subd_sub(subd_mul(cx_[f], c, &ovf), subd_mul(cy_[f], s, &ovf), &ovf);
+        subd_real ry = subd_add(subd_mul(cx_[f], s, &ovf), subd_mul(cy_[f], c, &ovf), &ovf);
+        for (g = 0; g < m->num_faces; g++) {
+            subd_real dx = subd_sub(rx, cx_[g], &ovf), dy = subd_sub(ry, cy_[g], &ovf);
+            if (!taken[g] && dx <= tol && -dx <= tol && dy <= tol && -dy <= tol) break;
+        }
+        if (g == m->num_faces) ok = 0;
+        else taken[g] = 1;
+    }
+    return ok && ovf == 0;
+}
+
+static void q48_polygons_9_12(void)
+{
+    uint32_t pass;
+    for (pass = 0; pass < 2; pass++) {
+        uint32_t flags = pass ? 0u : SUBD_Q48_NO_SMOOTH, s;
+        subd_arena a;
+        subd_face_list fl;
+        subd_mesh in, m, cur;
+        subd_arena_init(&a, g_big, BIG_BYTES);
+        fan_list(&fl, 12, 0, 0);
+        if (!build(&a, &fl, &in)) return;
+        cur = in;
+        for (s = 1; s <= 4; s++) {
+            CHECK_EQ(stepwise(&a, &cur, 1, flags, &m), 12);
+            if (!CHECK(rotation_invariant(&m, 1, 6))) {
+                h_str("    12-gon not 60-degree symmetric after step ");
+                h_u32(s);
+                h_nl();
+            }
+            cur = m;
+        }
+        h_hash(pass ? "q48_12gon_smooth" : "q48_12gon_refine", h_mesh_hash(&m));
+        fan_list(&fl, 9, 0, 0);
+        if (!build(&a, &fl, &in)) return;
+        CHECK_EQ(stepwise(&a, &in, 1, flags, &m), 10);
+        CHECK(!rotation_invariant(&m, 1, 9)); /* odd n: the decomposition is not radial */
+        stepwise(&a, &in, 4, flags, &m);
+#if H_HOST
+        printf("    9-gon after 4 steps (%s): centre valence %u\n", pass ? "smoothed" : "refine only",
+               (unsigned)subd_vertex_valence(&m, 0));
+#endif
+    }
+}
+
+/* Figure 6: hexagon warped so that the horizontal interior edges have lengths 4/3 (right)
+ * and 2/3 (left): the long one is the first split, the short one is not split. */
+static void q48_warped_hexagon(void)
+{
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, m;
+    subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
+    uint32_t f, ovf = 0;
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    fan_list(&fl, 6, 0, R(-1, 3));
+    if (!build(&a, &fl, &in) || !run(&a, &in, &o, &m)) return;
+    check_step(&in, &m, 1);
+    /* vertex 7 = first split = midpoint of centre (0) and rim vertex 1 (1, 0) */
+    {
+        subd_real dd = subd_sub(m.pos[3 * 7], R(1, 3), &ovf);
+        CHECK(dd <= 2 * SUBD_REAL_ONE / 65536 && -dd <= 2 * SUBD_REAL_ONE / 65536);
+    }
+    CHECK(m.pos[3 * 7 + 1] == 0);
+    /* the edge 0-4 (to (-1, 0)) is still an edge */
+    for (f = 0; f < m.num_corners; f++)
+        if (m.corner_vert[f] == 0 && subd_he_dest(&m, f) == 4) break;
+    CHECK(f < m.num_corners);
+    h_hash("q48_warped", h_mesh_hash(&m));
+}
+
+/* Figure 7: radial perturbation 1 + a u_i of the hexagon's rim, u_i uniform in [-1, 1],
+ * a = 0.1 and 0.3: same topology for both amplitudes; centre valence distribution over
+ * 200 fixed-seed patterns after 1 and 4 steps. */
+static int same_faces(const subd_mesh *a, const subd_mesh *b)
+{
+    uint32_t c;
+    if (a->num_faces != b->num_faces || a->num_verts != b->num_verts) return 0;
+    for (c = 0; c < a->num_corners; c++)
+        if (a->corner_vert[c] != b->corner_vert[c]) return 0;
+    return 1;
+}
+
+static void valence_hist(const subd_mesh *m, uint32_t *hist);
+
+static void q48_perturbed_hexagon(void)
+{
+    static uint32_t hist[2][2][16], h4[2][16];
+    uint32_t t, seed = 12345u, same1 = 0, same4 = 0, i, j, amp, ovf = 0;
+    subd_real rad[2][6];
+    for (i = 0; i < 16; i++) hist[0][0][i] = hist[0][1][i] = hist[1][0][i] = hist[1][1][i] = 0;
+    for (t = 0; t < 200; t++) {
+        subd_mesh m1[2], m4[2];
+        for (i = 0; i < 6; i++) {
+            int32_t u = (int32_t)(h_rand(&seed) % 2001u) - 1000; /* u_i = u / 1000 */
+            rad[0][i] = subd_add(SUBD_REAL_ONE, R(u, 10000), &ovf);
+            rad[1][i] = subd_add(SUBD_REAL_ONE, R(3 * u, 10000), &ovf);
+        }
+        for (amp = 0; amp < 2; amp++) {
+            subd_arena a;
+            subd_face_list fl;
+            subd_mesh in;
+            subd_q48_opts o = opts(4, SUBD_Q48_NO_SMOOTH), o1 = opts(1, SUBD_Q48_NO_SMOOTH);
+            uint32_t v1, v4;
+            subd_arena_init(&a, g_big + amp * (BIG_BYTES / 2u), BIG_BYTES / 2u);
+            fan_list(&fl, 6, rad[amp], 0);
+            if (!build(&a, &fl, &in) || !run(&a, &in, &o1, &m1[amp]) || !run(&a, &in, &o, &m4[amp])) return;
+            v1 = subd_vertex_valence(&m1[amp], 0);
+            v4 = subd_vertex_valence(&m4[amp], 0);
+            hist[amp][0][v1 < 16u ? v1 : 15u]++;
+            hist[amp][1][v4 < 16u ? v4 : 15u]++;
+            valence_hist(&m4[amp], h4[amp]);
+        }
+        same1 += (uint32_t)same_faces(&m1[0], &m1[1]);
+        for (i = 0; i < 16 && h4[0][i] == h4[1][i]; i++) {}
+        same4 += (i == 16);
+    }
+    for (amp = 0; amp < 2; amp++) {
+        for (j = 0; j < 2; j++) {
+            uint32_t best = 0;
+            for (i = 0; i < 16; i++) if (hist[amp][j][i] > hist[amp][j][best]) best = i;
+            CHECK_EQ(best, 8);
+            h_str(amp ? "    a = 0.3" : "    a = 0.1");
+            h_str(j ? ", after 4 steps" : ", after 1 step");
+            h_str(": centre valence");
+            for (i = 0; i < 16; i++) if (hist[amp][j][i]) { h_str(" "); h_u32(i); h_str("x"); h_u32(hist[amp][j][i]); }
+            h_nl();
+        }
+    }
+    h_str("    same step-1 connectivity for a = 0.1 and 0.3: ");
+    h_u32(same1);
+    h_str("/200; same valence histogram after 4 steps: ");
+    h_u32(same4);
+    h_str("/200");
+    h_nl();
+    CHECK(2u * same1 > 200u);
+    CHECK(2u * same4 > 200u);
+    CHECK_EQ(ovf, 0);
+}
+
+/* Figure 9: torus 12 x 6 is 4-8 regular after 1, 2 and 4 steps (with smoothing). Coarser
+ * tori: histograms reported. */
+static void valence_hist(const subd_mesh *m, uint32_t *hist)
+{
+    uint32_t v, i;
+    for (i = 0; i < 16; i++) hist[i] = 0;
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t k = subd_vertex_valence(m, v);
+        hist[k < 16u ? k : 15u]++;
+    }
+}
+
+static void q48_torus(void)
+{
+    static const uint32_t dims[3][2] = {{12, 6}, {8, 4}, {6, 3}};
+    uint32_t t, s, hist[16], i;
+    for (t = 0; t < 3; t++) {
+        subd_arena a;
+        subd_face_list fl;
+        subd_mesh in, cur, m;
+        subd_arena_init(&a, g_big, BIG_BYTES);
+        torus_list(&fl, dims[t][0], dims[t][1]);
+        if (!build(&a, &fl, &in)) return;
+        cur = in;
+        for (s = 1; s <= 4; s++) {
+            stepwise(&a, &cur, 1, 0, &m);
+            cur = m;
+            valence_hist(&m, hist);
+            if (t == 0) CHECK_EQ(hist[4] + hist[8], m.num_verts);
+            if (t == 0 && s == 4) {
+                /* one call of 4 steps gives the same mesh; report plan and peak */
+                subd_arena b;
+                subd_mesh once;
+                subd_q48_opts o4 = opts(4, 0);
+                uint32_t plan = 0;
+                subd_arena_init(&b, g_big + BIG_BYTES / 2u, BIG_BYTES / 2u);
+                CHECK_EQ(subd_quasi48_plan(&in, &o4, &plan), SUBD_OK);
+                if (run(&b, &in, &o4, &once)) {
+                    CHECK_EQ(h_mesh_hash(&once), h_mesh_hash(&m));
+                    CHECK(b.peak <= plan);
+                    h_str("    torus 12x6, 4 steps in one call: plan ");
+                    h_u32(plan);
+                    h_str(" bytes, peak ");
+                    h_u32(b.peak);
+                    h_str(", output keeps ");
+                    h_u32(b.used);
+                    h_nl();
+                }
+            }
+            if (t == 0 && s == 4) h_hash("q48_torus12x6_4", h_mesh_hash(&m));
+            h_str("    torus ");
+            h_u32(dims[t][0]);
+            h_str("x");
+            h_u32(dims[t][1]);
+            h_str(" step ");
+            h_u32(s);
+            h_str(" valences:");
+            for (i = 0; i < 16; i++) if (hist[i]) { h_str(" "); h_u32(i); h_str("x"); h_u32(hist[i]); }
+            h_nl();
+        }
+    }
+}
+
+/* Smoothing: planar stays planar; affine (similarity) invariance; fixed/tagged vertices,
+ * creases and fixed boundaries don't move; smooth-boundary rule. */
+static void q48_smoothing(void)
+{
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, m, in2, m2;
+    subd_q48_opts o = opts(3, 0);
+    uint32_t v, k, ovf = 0, c;
+    static subd_real pos2[3 * 64];
+#if SUBD_FIXED
+    subd_real tol = 8;
+#else
+    subd_real tol = 1e-5f;
+#endif
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    grid_list(&fl, 4);
+    if (!build(&a, &fl, &in) || !run(&a, &in, &o, &m)) return;
+    for (v = 0; v < m.num_verts; v++) CHECK(m.pos[3 * v + 2] == 0);
+    /* boundary fixed: old boundary vertices exactly in place, new ones on the boundary square */
+    for (v = 0; v < m.num_verts; v++) {
+        if (!(m.vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        if (v < in.num_verts) {
+            CHECK(m.pos[3 * v] == in.pos[3 * v] && m.pos[3 * v + 1] == in.pos[3 * v + 1]);
+        } else {
+            subd_real x = m.pos[3 * v], y = m.pos[3 * v + 1], four = subd_from_int(4, &ovf);
+            CHECK(x == 0 || y == 0 || x == four || y == four);
+        }
+    }
+    /* similarity: axes permuted (x, y, z) -> (y, z, x), scaled by 2, translated */
+    for (v = 0; v < in.num_verts; v++) {
+        subd_real t[3];
+        t[0] = R(1, 2); t[1] = R(-1, 4); t[2] = SUBD_REAL_ONE;
+        for (k = 0; k < 3u; k++)
+            pos2[3 * v + (k + 1) % 3] = subd_add(subd_add(in.pos[3 * v + k], in.pos[3 * v + k], &ovf), t[(k + 1) % 3], &ovf);
+    }
+    fl.pos = pos2;
+    if (!build(&a, &fl, &in2) || !run(&a, &in2, &o, &m2)) return;
+    CHECK_EQ(m2.num_faces, m.num_faces);
+    for (c = 0; c < m.num_corners && c < m2.num_corners; c++) CHECK(m.corner_vert[c] == m2.corner_vert[c]);
+    for (v = 0; v < m.num_verts && v < m2.num_verts; v++) {
+        subd_real t[3];
+        t[0] = R(1, 2); t[1] = R(-1, 4); t[2] = SUBD_REAL_ONE;
+        for (k = 0; k < 3u; k++) {
+            subd_real want = subd_add(subd_add(m.pos[3 * v + k], m.pos[3 * v + k], &ovf), t[(k + 1) % 3], &ovf);
+            subd_real got = m2.pos[3 * v + (k + 1) % 3], dd = subd_sub(want, got, &ovf);
+            CHECK(dd <= tol && -dd <= tol);
+        }
+    }
+    CHECK_EQ(ovf, 0);
+    h_hash("q48_grid_smooth", h_mesh_hash(&m));
+}
+
+static void q48_tags_and_boundary(void)
+{
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, m;
+    subd_q48_opts o = opts(2, 0);
+    uint32_t v, h, moved = 0, ovf = 0;
+    subd_real p0[3];
+    /* torus with a fixed vertex, a corner and a crease loop (a meridian j = 0 ring) */
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    torus_list(&fl, 8, 4);
+    if (!build(&a, &fl, &in)) return;
+    in.vert_tag[5] |= SUBD_VTAG_FIXED;
+    in.vert_tag[9] |= SUBD_VTAG_CORNER;
+    for (h = 0; h < in.num_corners; h++) {
+        uint32_t x = subd_he_origin(&in, h), y = subd_he_dest(&in, h);
+        if (x % 4u == 0 && y % 4u == 0) subd_edge_tag_set(&in, h, SUBD_ETAG_CREASE); /* ring j = 0 */
+    }
+    for (v = 0; v < 3; v++) p0[v] = in.pos[3 * 5 + v];
+    if (!run(&a, &in, &o, &m)) return;
+    CHECK(m.vert_tag[5] & SUBD_VTAG_FIXED);
+    CHECK(m.vert_tag[9] & SUBD_VTAG_CORNER);
+    for (v = 0; v < 3; v++) {
+        CHECK(m.pos[3 * 5 + v] == p0[v]);
+        CHECK(m.pos[3 * 9 + v] == in.pos[3 * 9 + v]);
+    }
+    for (v = 0; v < in.num_verts; v++) {
+        if (v % 4u == 0) CHECK(m.pos[3 * v] == in.pos[3 * v] && m.pos[3 * v + 1] == in.pos[3 * v + 1] &&
+                               m.pos[3 * v + 2] == in.pos[3 * v + 2]);
+        else if (m.pos[3 * v] != in.pos[3 * v]) moved++;
+    }
+    CHECK(moved > 0);
+    /* every crease edge of the output lies in the plane z = 0.4 (j = 0 ring), both halves
+     * of a split crease edge are creases, and crease edges still form closed loops */
+    {
+        uint32_t ncrease = 0;
+        for (h = 0; h < m.num_corners; h++) {
+            if (!(m.edge_tag[h] & SUBD_ETAG_CREASE)) continue;
+            ncrease++;
+            CHECK(m.pos[3 * subd_he_origin(&m, h) + 2] == 0);
+            CHECK(m.edge_tag[m.twin[h]] & SUBD_ETAG_CREASE);
+        }
+        CHECK(ncrease >= 2u * 8u);
+    }
+    h_hash("q48_torus_tags", h_mesh_hash(&m));
+
+    /* boundary smoothing: an old boundary vertex with new boundary neighbours moves to
+     * 1/2 own + 1/2 their average; new boundary vertices stay on the boundary edge */
+    {
+        subd_mesh g0, g, g1;
+        subd_q48_opts o1 = opts(1, 0);
+        uint32_t checked = 0;
+#if SUBD_FIXED
+        subd_real tol = 2;
+#else
+        subd_real tol = 1e-6f;
+#endif
+        o1.boundary = SUBD_Q48_BOUNDARY_SMOOTH;
+        grid_list(&fl, 3);
+        /* the first step splits the diagonals only; the second splits boundary edges */
+        if (!build(&a, &fl, &g0) || !run(&a, &g0, &o1, &g) || !run(&a, &g, &o1, &g1)) return;
+        check_step(&g, &g1, 0);
+        for (v = 0; v < g.num_verts; v++) {
+            uint32_t ring[16], n, j, k, cnt = 0;
+            subd_real sum[3] = {0, 0, 0};
+            if (!(g1.vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+            n = subd_vertex_ring(&g1, v, ring, 16);
+            for (j = 0; j < 2; j++) {
+                uint32_t u = j ? ring[n - 1] : ring[0];
+                if (u < g.num_verts) continue;
+                cnt++;
+                for (k = 0; k < 3; k++) sum[k] = subd_add(sum[k], g1.pos[3 * u + k], &ovf);
+            }
+            for (k = 0; k < 3; k++) {
+                subd_real want = g.pos[3 * v + k], dd;
+                if (cnt) want = subd_add(subd_mul(want, R(1, 2), &ovf),
+                                         subd_div(sum[k], subd_from_int((int32_t)(2 * cnt), &ovf), &ovf), &ovf);
+                dd = subd_sub(want, g1.pos[3 * v + k], &ovf);
+                CHECK(dd <= tol && -dd <= tol);
+            }
+            checked += cnt != 0;
+        }
+        CHECK(checked > 0);
+        CHECK_EQ(ovf, 0);
+        h_hash("q48_grid_bsmooth", h_mesh_hash(&g1));
+    }
+}
+
+/* hexfan.obj from the corpus (decimal positions): same result as the built fan. */
+static void q48_hexfan_file(void)
+{
+    const corpus_file *cf = corpus_find("test/data/hexfan.obj");
+    subd_arena a;
+    subd_mesh in, m;
+    subd_diag d;
+    subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
+    if (!CHECK(cf != 0)) return;
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    if (!CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &in, &d), SUBD_OK) || !run(&a, &in, &o, &m)) return;
+    CHECK_EQ(subd_vertex_valence(&m, 0), 6);
+    h_hash("q48_hexfan", h_mesh_hash(&m));
+}
+
+/* Exact plan: every arena size below it fails cleanly (NOMEM, bytes_needed = plan, arena
+ * mark unchanged, input untouched, guard bytes intact); at the plan it succeeds and the
+ * peak stays within it; one step of a single triangle reaches the plan exactly. */
+static void plan_case(const subd_mesh *in, const subd_q48_opts *o, int exact)
+{
+    uint32_t plan, size, h0 = h_mesh_hash(in);
+    subd_mesh out;
+    subd_diag d;
+    if (!CHECK_EQ(subd_quasi48_plan(in, o, &plan), SUBD_OK)) return;
+    if (!CHECK(plan + 64u <= H_ARENA_BYTES)) return;
+    for (size = 0; size <= plan; size++) {
+        subd_arena a;
+        int st;
+        subd_arena_init(&a, h_arena_buf, size);
+        h_guard_fill(h_arena_buf + size, 64);
+        st = subd_quasi48(&a, in, o, &out, &d);
+        if (!h_guard_ok(h_arena_buf + size, 64)) { CHECK(0); return; }
+        if (size < plan) {
+            if (st != SUBD_ERR_NOMEM || a.used != 0 || d.bytes_needed != plan) {
+                CHECK_EQ(st, SUBD_ERR_NOMEM);
+                CHECK_EQ(a.used, 0);
+                CHECK_EQ(d.bytes_needed, plan);
+                return;
+            }
+        } else {
+            CHECK_EQ(st, SUBD_OK);
+            CHECK(a.peak <= plan);
+            if (exact) CHECK_EQ(a.peak, plan);
+        }
+    }
+    CHECK_EQ(h_mesh_hash(in), h0);
+}
+
+static void q48_plan_exhaustive(void)
+{
+    static const uint32_t tri_idx[3] = {0, 1, 2};
+    subd_real tpos[9];
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, in2;
+    subd_q48_opts o = opts(1, 0);
+    uint32_t i;
+    for (i = 0; i < 9; i++) tpos[i] = 0;
+    tpos[3] = SUBD_REAL_ONE;
+    tpos[7] = R(1, 2);
+    fl.num_verts = 3; fl.pos = tpos; fl.num_faces = 1; fl.face_size = 0; fl.index = tri_idx;
+    fl.num_lines = 0; fl.line_size = fl.line_index = 0;
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    if (!build(&a, &fl, &in)) return;
+    plan_case(&in, &o, 1);
+    fan_list(&fl, 5, 0, 0);
+    if (!build(&a, &fl, &in2)) return;
+    o = opts(3, 0);
+    plan_case(&in2, &o, 0);
+    o = opts(2, SUBD_Q48_NO_SMOOTH);
+    o.boundary = SUBD_Q48_BOUNDARY_SMOOTH;
+    plan_case(&in2, &o, 0);
+}
+
+static void q48_errors(void)
+{
+    static const uint32_t quad_idx[4] = {0, 1, 2, 3}, quad_size[1] = {4};
+    subd_real qpos[12];
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, q, out;
+    subd_diag d;
+    subd_q48_opts o = opts(1, 0);
+    uint32_t plan, i, ovf = 0;
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    fan_list(&fl, 4, 0, 0);
+    if (!build(&a, &fl, &in)) return;
+    o.steps = 0;
+    CHECK_EQ(subd_quasi48_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    o.steps = SUBD_Q48_MAX_STEPS + 1u;
+    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    o = opts(1, 0);
+    o.len_bits = SUBD_Q48_LEN_BITS_EXACT + 1u;
+    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    o = opts(1, 0);
+    o.boundary = (subd_q48_boundary)7;
+    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    o = opts(1, 0);
+    CHECK_EQ(subd_quasi48(0, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48(&a, 0, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48(&a, &in, 0, &out, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48_plan(&in, &o, 0), SUBD_ERR_PARAM);
+    for (i = 0; i < 12; i++) qpos[i] = 0;
+    qpos[3] = qpos[6] = qpos[7] = qpos[10] = subd_from_int(1, &ovf);
+    fl.num_verts = 4; fl.pos = qpos; fl.num_faces = 1; fl.face_size = quad_size; fl.index = quad_idx;
+    if (!build(&a, &fl, &q)) return;
+    CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(d.face, 0);
+    CHECK_EQ(ovf, 0);
+}
+
+/* len_bits: with exact comparison the fixed build's rounded hexagon rim makes the spokes
+ * at 60 degrees longer than the horizontal ones (report what happens in each arithmetic). */
+static void q48_len_bits(void)
+{
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, m;
+    subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    fan_list(&fl, 6, 0, 0);
+    if (!build(&a, &fl, &in)) return;
+    o.len_bits = SUBD_Q48_LEN_BITS_EXACT;
+    if (!run(&a, &in, &o, &m)) return;
+    h_str("    hexagon, exact length comparison: centre valence ");
+    h_u32(subd_vertex_valence(&m, 0));
+    h_nl();
+    CHECK_EQ(subd_vertex_valence(&m, 0), SUBD_FIXED ? 8 : 6);
+}
+
+const test_case suite_quasi48[] = {
+    {"q48_regular_polygons", q48_regular_polygons},
+    {"q48_polygons_9_12", q48_polygons_9_12},
+    {"q48_warped_hexagon", q48_warped_hexagon},
+    {"q48_perturbed_hexagon", q48_perturbed_hexagon},
+    {"q48_torus", q48_torus},
+    {"q48_smoothing", q48_smoothing},
+    {"q48_tags_and_boundary", q48_tags_and_boundary},
+    {"q48_hexfan_file", q48_hexfan_file},
+    {"q48_plan_exhaustive", q48_plan_exhaustive},
+    {"q48_errors", q48_errors},
+    {"q48_len_bits", q48_len_bits},
+    {0, 0}
+};

@@ -24,19 +24,32 @@ typedef struct subd_loop_opts {
 } subd_loop_opts;
 
 /* Exact arena bytes subd_loop needs for this input and options. The input must be an
- * all-triangle mesh (SUBD_ERR_FACE_SIZE otherwise). */
+ * all-triangle mesh (SUBD_ERR_FACE_SIZE otherwise) with adjacency (twin, vert_out: a mesh
+ * from the builder or readers, or a subd_loop output made with SUBD_LOOP_ADJACENCY;
+ * SUBD_ERR_PARAM otherwise). The plan is the output arrays plus level L-1's arrays with
+ * twins (pos, corners, twins, vert_out, tags): peak = input + output + previous level.
+ * O(corners) work, no arena use. */
 int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
 
 /* `levels` steps of Loop subdivision (Loop's original weights) of an all-triangle mesh.
  * Edges tagged SUBD_ETAG_CREASE follow the boundary rules; vertices tagged
  * SUBD_VTAG_CORNER (and vertices with three or more sharp edges, Hoppe et al. 1994) stay
  * where they are; isolated vertices are copied. Vertices keep their indices (vertex i of the
- * input is vertex i of the output), new vertices follow. The input is not modified; *out's
- * arrays are in the arena. Without SUBD_LOOP_ADJACENCY the output has pos, face_start,
- * corner_vert, corner_face, vert_tag and edge_tag, and twin/vert_out are NULL.
+ * input is vertex i of the output), new vertices follow, one per edge in the order of the
+ * edge's lower half-edge index. Face f's children are faces 4f..4f+3: (v_i, m_i, m_{i-1})
+ * for i = 0, 1, 2 and (m0, m1, m2), with v_i face f's corners and m_i the new vertex on
+ * edge v_i -> v_{i+1}. Child edges of crease/boundary edges keep their tags; CORNER and
+ * FIXED vertex tags are kept (FIXED changes no rule); polylines are not carried over
+ * (num_lines = 0). The input is not modified; *out's arrays are in the arena, and after the
+ * call the arena holds only them. Without SUBD_LOOP_ADJACENCY the output has pos,
+ * face_start, corner_vert, corner_face, vert_tag and edge_tag, and twin/vert_out are NULL;
+ * with it the output equals subd_mesh_build of its own face list (plus the crease and
+ * corner tags). Rules, regular/extraordinary classification and memory layout: src/loop.c.
  * Errors: SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE, SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM
  * (diag.bytes_needed), SUBD_ERR_RANGE (fixed-point overflow). On failure the arena is back
- * where it was and *out is untouched. */
+ * where it was and *out is untouched. Every rule is a convex combination whose Q16.16
+ * weights sum to exactly 1, so RANGE cannot occur in Q16.16; in float32 it means a sum
+ * near FLT_MAX rounded to infinity. Work O(4^levels * corners); stack about 550 bytes. */
 int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *d);
 
 /* ------------------------------------------------------------------------------------ */

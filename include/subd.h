@@ -78,6 +78,9 @@ uint32_t subd_arena_mark(const subd_arena *a);
 void subd_arena_rewind(subd_arena *a, uint32_t mark);
 /* Bytes still free. */
 uint32_t subd_arena_free_bytes(const subd_arena *a);
+/* Starts a new peak measurement at the current position (peak = used), so the peak of the
+ * next call can be compared with its plan. */
+void subd_arena_reset_peak(subd_arena *a);
 
 /* Size arithmetic that cannot wrap: a * b + c rounded up to SUBD_ARENA_ALIGN, accumulated into
  * *total. Any overflow of 32 bits sets *total to UINT32_MAX and stays there (sticky). */

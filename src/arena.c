@@ -46,6 +46,8 @@ void subd_arena_rewind(subd_arena *a, uint32_t mark)
 
 uint32_t subd_arena_free_bytes(const subd_arena *a) { return a->size - a->used; }
 
+void subd_arena_reset_peak(subd_arena *a) { a->peak = a->used; }
+
 void subd_size_add(uint32_t *total, uint32_t count, uint32_t elem_bytes)
 {
     uint64_t bytes = (uint64_t)count * elem_bytes;

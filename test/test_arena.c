@@ -26,6 +26,12 @@ static void arena_basic(void)
     CHECK(subd_arena_alloc(&a, 0) != 0);
     CHECK(subd_arena_alloc(&a, UINT32_MAX) == 0);
     CHECK(subd_arena_alloc(&a, UINT32_MAX - 3u) == 0);
+    /* a new peak measurement starts at the current position */
+    subd_arena_rewind(&a, 8);
+    subd_arena_reset_peak(&a);
+    CHECK_EQ(a.peak, 8);
+    CHECK(subd_arena_alloc(&a, 16) != 0);
+    CHECK_EQ(a.peak, 24);
     /* rewinding forward is ignored */
     subd_arena_rewind(&a, 8);
     subd_arena_rewind(&a, 50);

@@ -1,0 +1,164 @@
+/* tinysubd — semi-stationary alpha-subdivision (Zhang & Wang, "Semi-stationary subdivision
+ * operators in geometric modeling", 2002; ../shared/papers/semi-stationary-subdivision.txt).
+ *
+ * Curves: the second order bisect operator S_2(f; n) of formula (2) and the higher orders of
+ * definition 3 (S_{2k} = B C S_{2k-1}, S_{2k+1} = C S_{2k}; C averages consecutive points,
+ * B shifts the indices by one). Surfaces: the Doo-Sabin type operator of formula (3).
+ *
+ * Kernel and parameter. The level-n weights use f_n = f(alpha; n) = s * g(2^-(n+1) alpha),
+ * where s is the stiffness (s = f(0), table 1) and g is the kernel:
+ *   SUBD_ALPHA_BSPLINE  g = 1                (f == s; s = 1: uniform B-splines, Chaikin)
+ *   SUBD_ALPHA_COS      g(x) = cos x         (C-curves: exact circles and ellipses)
+ *   SUBD_ALPHA_POLY     g(x) = 1 - x^2 / 2   (the paper's "1 - alpha^2/2")
+ *   SUBD_ALPHA_COSH     g(x) = cosh x        (the paper's "(e^alpha + e^-alpha) / 2")
+ * The paper writes the cos kernel as cos(2^-(n+1) alpha) and the other two without the
+ * level argument; we evaluate all three at the same argument 2^-(n+1) alpha, so that POLY is
+ * the second order Taylor polynomial of COS and COSH is COS at an imaginary angle (it
+ * reproduces hyperbolas as COS reproduces circles).
+ *
+ * alpha is an exact rational number of turns: alpha = 2 pi * alpha_num / alpha_den radians
+ * (a regular N-gon's edge angle is 1/N). The kernel values are computed with integer
+ * arithmetic only (cos from subd_cos_turns_q62, cosh from an own Q62 exponential series),
+ * the weights in Q32.32 integers, then rounded once to subd_real: identical bits on every
+ * target, no libm, no float in the fixed-point build.
+ *
+ * Table 1 as behaviour: s <= -1 diverges and is rejected with SUBD_ERR_PARAM; s in (-1, 0]
+ * is accepted and reported as not smooth (continuity = -1); s in (0, 1/2] gives GC0
+ * (continuity 0); s > 1/2 gives GC^(k-1) for curves (theorem 1) and GC1 for the Doo-Sabin
+ * type surface (theorem 2). A level whose own f_n <= -1 (possible when s > 1 and the kernel
+ * is negative at a large alpha) would divide by 1 + f_n <= 0 and is rejected the same way.
+ *
+ * Memory: every call has a plan that is exactly the arena peak of the run. On any failure
+ * the arena is rewound to where it was and the outputs are not touched.
+ */
+#ifndef SUBD_ALPHA_H
+#define SUBD_ALPHA_H
+
+#include <stdint.h>
+#include "subd.h"
+
+typedef enum subd_alpha_kernel {
+    SUBD_ALPHA_BSPLINE = 0,
+    SUBD_ALPHA_COS = 1,
+    SUBD_ALPHA_POLY = 2,
+    SUBD_ALPHA_COSH = 3
+} subd_alpha_kernel;
+
+/* Highest operator order accepted (S_2 .. S_8). */
+#define SUBD_ALPHA_MAX_ORDER 8u
+/* |alpha_num| and every |tag| must be <= this; alpha_den must be in 1..(INT32_MAX >>
+ * (levels + 1)) so that every level's angle is an exact int32 fraction of a turn. */
+#define SUBD_ALPHA_MAX_NUM ((1 << 30) - 1)
+
+typedef struct subd_alpha_opts {
+    uint32_t order;       /* k in 2..SUBD_ALPHA_MAX_ORDER (surfaces: 2 only)              */
+    uint32_t levels;      /* 0..SUBD_MAX_LEVELS (surfaces: >= 1)                          */
+    uint32_t kernel;      /* subd_alpha_kernel                                            */
+    int32_t alpha_num;    /* alpha = 2 pi alpha_num / alpha_den radians                   */
+    int32_t alpha_den;    /* > 0                                                          */
+    subd_real stiffness;  /* s = f(0); must be > -1                                       */
+    /* Optional per-vertex alpha numerators (curves only, section 3; shared alpha_den), one
+     * per input point; NULL = alpha_num everywhere. See the curve section for how they
+     * travel. Surfaces: must be NULL. */
+    const int32_t *tag_num;
+} subd_alpha_opts;
+
+/* order 2, levels 1, B-spline kernel, alpha = 0, stiffness 1, no tags. */
+void subd_alpha_opts_default(subd_alpha_opts *o);
+
+/* The kernel value f(alpha; n) = s g(2^-(n+1) alpha) for alpha = 2 pi num / den, rounded to
+ * subd_real. Any int32 num. Returns SUBD_OK, SUBD_ERR_PARAM (bad kernel, den <= 0,
+ * den << (n + 1) not an int32, s <= -1 or not finite) or SUBD_ERR_RANGE (the value
+ * does not fit: cosh of a large angle). Pure computation, no arena; stack < 200 bytes. */
+int subd_alpha_kernel_value(uint32_t kernel, int32_t num, int32_t den, uint32_t level, subd_real s,
+                            subd_real *f);
+
+/* ------------------------------------------------------------------------------------ */
+/* Curves                                                                                 */
+/*                                                                                        */
+/* Closed polygon of m >= 3 points (the edge p[m-1] p[0] is implied; do not repeat p[0]):  */
+/* every level maps m points to 2m (S_2 doubles, C keeps the count); for even k the B      */
+/* shifts of definition 3 rotate the start by (k - 2) / 2 points per level.                 */
+/*                                                                                        */
+/* Open polyline of m >= 2 points, end condition "odd reflection": the polyline is         */
+/* continued beyond each end point e by the point reflection through e (p[-j] = 2 e -      */
+/* p[j]). Both operators map such point-symmetric sequences to point-symmetric ones, so the */
+/* end points never move and every level's end tangent points along its end edge. For     */
+/* S_2 the first and last input points are the midpoints of virtual end edges (whose far   */
+/* vertices are those reflections); a control polyline that circumscribes a circular arc  */
+/* and starts and ends at its tangent points therefore gives that arc exactly with the cos */
+/* kernel. Point counts: S_2 maps m to 2m - 2 (m >= 3; a segment stays a segment); C maps  */
+/* m to m - 1 after S_2 and to m + 1 after another C; B is not applied to open curves.     */
+/*                                                                                        */
+/* Per-vertex alpha (tag_num, section 3): an edge (a, b) of S_2 uses alpha = (tag_a +      */
+/* tag_b) / 2 (exact: num tag_a + tag_b over 2 alpha_den); the two new points of an edge   */
+/* inherit the tag of their nearer end, C's midpoint of (a, b) gets floor((tag_a +         */
+/* tag_b) / 2); a reflected point has its mirror image's tag. Equal tags give exactly the  */
+/* uniform result.                                                                        */
+
+typedef struct subd_alpha_curve_out {
+    uint32_t num_points;
+    subd_real *pos;       /* 3 * num_points, in the arena                                  */
+    int32_t continuity;   /* -1 not smooth (s <= 0), 0 GC0, else k - 1 (theorem 1)         */
+} subd_alpha_curve_out;
+
+/* Exact arena bytes and output point count of subd_alpha_curve for m input points.
+ * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, bad order / levels / kernel) or SUBD_ERR_EMPTY
+ * (m < 2 open, m < 3 closed) or SUBD_ERR_TOO_BIG. */
+int subd_alpha_curve_plan(uint32_t m, int closed, const subd_alpha_opts *o, uint32_t *bytes,
+                          uint32_t *out_points);
+
+/* Refines one curve by opts->levels applications of S_k(f; n), n = 0 .. levels - 1.
+ * Uses one arena buffer of the largest intermediate size (each operator runs in place)
+ * plus, with tags, one int32 tag per point that is given back at the end: after success
+ * the arena holds only out->pos. Errors: SUBD_ERR_PARAM (NULL, options, s <= -1, a level
+ * with f_n <= -1), SUBD_ERR_EMPTY, SUBD_ERR_NAN (a non-finite input point, diag.vertex),
+ * SUBD_ERR_RANGE (overflow: a kernel value or a point outside the Q16.16 range),
+ * SUBD_ERR_NOMEM (diag.bytes_needed = the plan), SUBD_ERR_TOO_BIG.
+ * Stack: about 200 bytes. Work: O(points of the last level * k). */
+int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
+                     const subd_alpha_opts *o, subd_alpha_curve_out *out, subd_diag *diag);
+
+/* ------------------------------------------------------------------------------------ */
+/* Surfaces: the Doo-Sabin type operator S_2(f; n), formula (3).                          */
+/*                                                                                        */
+/* Each corner i of an N-gon gets p_i' = f/(1+f) p_i + f/(2(1+f)^2) (p_{i-1} + p_{i+1})   */
+/* + 1/(N(1+f)^2) sum p, computed as c + f/(1+f) d_i + f/(2(1+f)^2)(d_{i-1} + d_{i+1}),   */
+/* d = p - c, c the face centroid (the weights sum to 1). The output is the Doo-Sabin mesh: */
+/* vertex j of the output is corner j of the input; faces, in this order: one per input    */
+/* face (same corner order), one quad per interior edge, one face per interior vertex (its */
+/* corners in ring order). Boundary rule: boundary edges and boundary vertices make no      */
+/* face, so the boundary recedes by half a face per level (the classical Doo-Sabin         */
+/* behaviour without boundary rules); faces on the boundary use formula (3) unchanged.     */
+/* Isolated vertices and polylines are dropped. The output is built with the library's     */
+/* validator (subd_mesh_finish), so every adjacency array and tag is set.                  */
+/* Counts per level: V' = C, F' = F + E_int + V_int, C' = C + 4 E_int + sum of the         */
+/* valences of the interior vertices.                                                     */
+
+typedef struct subd_alpha_surface_info {
+    int32_t continuity;   /* -1 not smooth (s <= 0), 0 GC0 (s in (0, 1/2]), 1 GC1          */
+} subd_alpha_surface_info;
+
+/* Note on theorem 2: the eigenvalues of a face's circulant matrix (lemma 1 on the paper's
+ * Cir_N row, which is formula (3)) are 1 and f/(1+f) + f/(1+f)^2 cos(2 pi (j-1)/N); the
+ * closed form printed in the paper's proof has 2f/(1+f)^2, a factor 2 too large (at f = 1,
+ * N = 4 it would give 0 instead of Doo-Sabin's 1/4). The code follows formula (3).       */
+
+/* Exact arena bytes of subd_alpha_surface (the peak: with levels >= 2 two levels' meshes
+ * coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM, SUBD_ERR_EMPTY (no faces),
+ * SUBD_ERR_FACE_SIZE (an interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face
+ * that large), SUBD_ERR_TOO_BIG. */
+int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes);
+
+/* opts->levels (1..SUBD_MAX_LEVELS) Doo-Sabin type steps with f_n = f(alpha; n); order
+ * must be 2 and tag_num NULL (higher orders and per-face alpha are not implemented). The
+ * input is not modified; the result's arrays are in the arena (the only memory left in use
+ * after success). info (may be NULL) receives the continuity class.
+ * Errors: SUBD_ERR_PARAM (NULL, options, s <= -1, a level with f_n <= -1), SUBD_ERR_EMPTY,
+ * SUBD_ERR_FACE_SIZE (diag.vertex), SUBD_ERR_NAN (diag.vertex), SUBD_ERR_RANGE (a kernel
+ * value or a position overflows), SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
+ * SUBD_ERR_TOO_BIG. Stack: about 400 bytes. Work: O(output corners) per level. */
+int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
+                       subd_alpha_surface_info *info, subd_diag *diag);
+
+#endif

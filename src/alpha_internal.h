@@ -1,0 +1,95 @@
+/* Private interface of the alpha-subdivision files (alpha_kernel.c, alpha_curve.c,
+ * alpha_surface.c): exact integer helpers, the kernel in Q32.32, and the weight type.
+ *
+ * Weights are computed in Q32.32 integers (int64, value * 2^32) from the kernel value and
+ * then kept as subd_alpha_wt: a float in the float build (rounded once, correctly), the
+ * Q32.32 integer itself in the fixed build, where a product weight * coordinate is formed
+ * exactly in 128 bits and rounded once to Q16.16. That keeps the Q16.16 weights' own error
+ * (2^-17 for a Q16.16 weight, i.e. up to edge length * 2^-17) out of the positions.
+ */
+#ifndef SUBD_ALPHA_INTERNAL_H
+#define SUBD_ALPHA_INTERNAL_H
+#include "subd_alpha.h"
+#include "mesh_internal.h"
+
+#define SUBD_Q32_ONE ((int64_t)1 << 32)
+
+/* round(a * b / 2^shift), shift in 1..63, half away from zero; sets *ovf when the result
+ * does not fit int64. */
+int64_t subd_alpha_mulq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf);
+/* round(a * 2^shift / b), shift in 0..63, b != 0, half away from zero; *ovf on overflow. */
+int64_t subd_alpha_divq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf);
+/* Q32.32 -> subd_real (float: correctly rounded to nearest even; fixed: half up, saturated
+ * with *ovf). */
+subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf);
+/* subd_real -> Q32.32 (float: rounded to nearest, *ovf when |x| >= 2^31 or not finite). */
+int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf);
+
+/* Kernel value f(alpha; n) = s g(2^-(n+1) alpha), alpha = 2 pi num / den, in Q32.32.
+ * Returns SUBD_OK, SUBD_ERR_PARAM or SUBD_ERR_RANGE (see subd_alpha_kernel_value). */
+int subd_alpha_kernel_q32(uint32_t kernel, int32_t num, int32_t den, uint32_t level, int64_t s_q32,
+                          int64_t *f_q32);
+
+/* Common option checks (order <= max_order, levels, kernel, den, num, stiffness); *s_q32
+ * receives the stiffness. */
+int subd_alpha_check_opts(const subd_alpha_opts *o, uint32_t max_order, int64_t *s_q32);
+/* Table 1 / theorems 1-2: -1 for s <= 0, 0 for s <= 1/2, else smooth_class. */
+int32_t subd_alpha_continuity(int64_t s_q32, int32_t smooth_class);
+
+#if SUBD_FIXED
+typedef int64_t subd_alpha_wt;
+static inline subd_alpha_wt subd_alpha_wt_from_q32(int64_t q, uint32_t *ovf) { (void)ovf; return q; }
+/* a + w (b - a), rounded once. */
+static inline subd_real subd_alpha_lerp(subd_real a, subd_real b, subd_alpha_wt w, uint32_t *ovf)
+{
+    int64_t d = subd_alpha_mulq((int64_t)b - a, w, 32, ovf);
+    if (d > INT32_MAX || d < -(int64_t)INT32_MAX) { *ovf |= 1u; return a; }
+    return subd_real_sat((int64_t)a + d, ovf);
+}
+/* c + wa * da + wb * db, with da, db differences of subd_reals (exact in int64 here). */
+static inline subd_real subd_alpha_comb(subd_real c, subd_alpha_wt wa, int64_t da, subd_alpha_wt wb, int64_t db,
+                                        uint32_t *ovf)
+{
+    int64_t x = subd_alpha_mulq(da, wa, 16, ovf), y = subd_alpha_mulq(db, wb, 16, ovf);
+    int64_t s;
+    if (x > ((int64_t)1 << 60) || x < -((int64_t)1 << 60) || y > ((int64_t)1 << 60) || y < -((int64_t)1 << 60)) {
+        *ovf |= 1u;
+        return c;
+    }
+    s = x + y; /* Q32 */
+    return subd_real_sat((int64_t)c + ((s + ((int64_t)1 << 15)) >> 16), ovf);
+}
+typedef int64_t subd_alpha_diff;
+static inline subd_alpha_diff subd_alpha_sub(subd_real a, subd_real b, uint32_t *ovf)
+{
+    (void)ovf;
+    return (int64_t)a - b;
+}
+static inline subd_alpha_diff subd_alpha_dadd(subd_alpha_diff a, subd_alpha_diff b, uint32_t *ovf)
+{
+    (void)ovf;
+    return a + b;
+}
+#else
+typedef float subd_alpha_wt;
+static inline subd_alpha_wt subd_alpha_wt_from_q32(int64_t q, uint32_t *ovf) { return subd_alpha_q32_to_real(q, ovf); }
+static inline subd_real subd_alpha_lerp(subd_real a, subd_real b, subd_alpha_wt w, uint32_t *ovf)
+{
+    subd_real d = subd_sub(b, a, ovf);
+    return subd_add(a, subd_mul(w, d, ovf), ovf);
+}
+static inline subd_real subd_alpha_comb(subd_real c, subd_alpha_wt wa, float da, subd_alpha_wt wb, float db,
+                                        uint32_t *ovf)
+{
+    subd_real x = subd_mul(wa, da, ovf), y = subd_mul(wb, db, ovf);
+    return subd_add(c, subd_add(x, y, ovf), ovf);
+}
+typedef float subd_alpha_diff;
+static inline subd_alpha_diff subd_alpha_sub(subd_real a, subd_real b, uint32_t *ovf) { return subd_sub(a, b, ovf); }
+static inline subd_alpha_diff subd_alpha_dadd(subd_alpha_diff a, subd_alpha_diff b, uint32_t *ovf)
+{
+    return subd_add(a, b, ovf);
+}
+#endif
+
+#endif

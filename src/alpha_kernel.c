@@ -1,0 +1,276 @@
+/* Kernel functions of semi-stationary alpha-subdivision (Zhang & Wang 2002, section 1,
+ * definition 2 and the kernels listed after theorem 1), evaluated without libm.
+ *
+ * f(alpha; n) = s * g(x), x = 2^-(n+1) alpha, alpha = 2 pi num / den (exact turns).
+ *   B-spline: g = 1. cos: g = cos x = subd_cos_turns_q62(num, den << (n+1)), the scalar
+ *   layer's deterministic cosine of an exact fraction of a turn. poly: g = 1 - x^2/2.
+ *   cosh: g = (e^x + e^-x)/2 with x = k ln 2 + r, |r| <= ln2/2, e^+-r from the Taylor series
+ *   in Q62 (28 terms: r^28/28! < 2^-110), then scaled by 2^+-k.
+ * The paper is silent on the level argument of its poly and cosh kernels; we use the cos
+ * kernel's 2^-(n+1) alpha for all (see subd_alpha.h). x for poly and cosh is formed in
+ * Q32.32 from the turns num/(den 2^(n+1)) (rounded to 2^-32) times 2 pi in Q60; the result
+ * is within a few 2^-32 (relative, cosh) of the true value, far below one float32 ulp.
+ * Everything is integer arithmetic: the same bits on every target, and no float code at all
+ * in the Q16.16 build (the float conversion below builds the IEEE bit pattern by hand).
+ */
+#include "alpha_internal.h"
+
+#define TWOPI_Q60 INT64_C(0x6487ed5110b4611a) /* round(2 pi 2^60) */
+#define LN2_Q62 INT64_C(0x2c5c85fdf473de6b)   /* round(ln 2 2^62) */
+
+static void mul_u64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
+{
+    uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
+    *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    *lo = (mid << 32) | (uint32_t)p00;
+}
+
+static uint64_t mag(int64_t a) { return a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a; }
+
+static int64_t signed_result(uint64_t m, int neg, uint32_t *ovf)
+{
+    if (m > (uint64_t)INT64_MAX) {
+        *ovf |= 1u;
+        return neg ? -INT64_MAX : INT64_MAX;
+    }
+    return neg ? -(int64_t)m : (int64_t)m;
+}
+
+int64_t subd_alpha_mulq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf)
+{
+    uint64_t hi, lo, r;
+    int neg = (a < 0) != (b < 0);
+    mul_u64(mag(a), mag(b), &hi, &lo);
+    /* add 2^(shift-1) for rounding, with carry into hi */
+    r = lo + ((uint64_t)1 << (shift - 1u));
+    if (r < lo) hi++;
+    lo = r;
+    if ((hi >> shift) != 0) {
+        *ovf |= 1u;
+        return neg ? -INT64_MAX : INT64_MAX;
+    }
+    return signed_result((hi << (64u - shift)) | (lo >> shift), neg, ovf);
+}
+
+int64_t subd_alpha_divq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf)
+{
+    uint64_t d = mag(b), hi, lo, rem, q = 0;
+    int neg = (a < 0) != (b < 0), i;
+    if (d == 0) {
+        *ovf |= 1u;
+        return 0;
+    }
+    /* numerator |a| * 2^shift as 128 bits */
+    lo = shift ? mag(a) << shift : mag(a);
+    hi = shift ? mag(a) >> (64u - shift) : 0;
+    if (hi >= d) {
+        *ovf |= 1u;
+        return neg ? -INT64_MAX : INT64_MAX;
+    }
+    rem = hi;
+    for (i = 0; i < 64; i++) {
+        uint64_t carry = rem >> 63;
+        rem = (rem << 1) | (lo >> 63);
+        lo <<= 1;
+        q <<= 1;
+        if (carry || rem >= d) {
+            rem -= d;
+            q |= 1u;
+        }
+    }
+    /* round half away from zero: rem >= d - rem */
+    if (rem >= d - rem) {
+        if (q == UINT64_MAX) {
+            *ovf |= 1u;
+            return neg ? -INT64_MAX : INT64_MAX;
+        }
+        q++;
+    }
+    return signed_result(q, neg, ovf);
+}
+
+#if SUBD_FIXED
+subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf)
+{
+    if (q > INT64_MAX - 32768) {
+        *ovf |= 1u;
+        return INT32_MAX;
+    }
+    return subd_real_sat((q + 32768) >> 16, ovf);
+}
+
+int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf)
+{
+    (void)ovf;
+    return (int64_t)x * 65536;
+}
+#else
+static float float_from_bits(uint32_t u)
+{
+    union { float f; uint32_t u; } c;
+    c.u = u;
+    return c.f;
+}
+
+subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf)
+{
+    uint64_t u = mag(q), m;
+    uint32_t p = 63, sign = q < 0 ? 0x80000000u : 0u;
+    (void)ovf;
+    if (u == 0) return 0.0f;
+    while (!((u >> p) & 1u)) p--;
+    if (p > 23u) {
+        uint32_t sh = p - 23u;
+        uint64_t rest = u & (((uint64_t)1 << sh) - 1u), half = (uint64_t)1 << (sh - 1u);
+        m = u >> sh;
+        if (rest > half || (rest == half && (m & 1u))) m++;
+        if (m == ((uint64_t)1 << 24)) {
+            m >>= 1;
+            p++;
+        }
+    } else {
+        m = u << (23u - p);
+    }
+    /* value = m 2^(p - 23) 2^-32 with m in [2^23, 2^24): exponent p - 32 in -32..31 */
+    return float_from_bits(sign | ((p + 95u) << 23) | ((uint32_t)m & 0x7fffffu));
+}
+
+int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf)
+{
+    uint32_t b = subd_real_bits(x), e = (b >> 23) & 0xffu;
+    uint64_t m = (b & 0x7fffffu) | 0x800000u, v;
+    int neg = (b >> 31) != 0;
+    if (e == 0xffu) {
+        *ovf |= 1u;
+        return 0;
+    }
+    if (e == 0) return 0; /* zero or subnormal: far below 2^-32 */
+    /* x = m 2^(e - 150); Q32 = m 2^(e - 118) */
+    if (e >= 118u) {
+        if (e - 118u > 38u) {
+            *ovf |= 1u;
+            return 0;
+        }
+        v = m << (e - 118u);
+    } else {
+        uint32_t sh = 118u - e;
+        if (sh > 40u) return 0;
+        v = (m + ((uint64_t)1 << (sh - 1u))) >> sh;
+    }
+    return neg ? -(int64_t)v : (int64_t)v;
+}
+#endif
+
+/* e^r for |r| <= 1/2 in Q62 (r in Q62): Taylor series, 28 terms. */
+static int64_t exp_q62(int64_t r, uint32_t *ovf)
+{
+    int64_t sum = (int64_t)1 << 62, term = (int64_t)1 << 62;
+    int32_t i;
+    for (i = 1; i <= 28 && term != 0; i++) {
+        term = subd_alpha_mulq(term, r, 62, ovf) / i;
+        sum += term;
+    }
+    return sum;
+}
+
+static int64_t round_shift(int64_t v, uint32_t sh)
+{
+    if (sh == 0) return v;
+    if (sh > 62u) return 0;
+    return (v + ((int64_t)1 << (sh - 1u))) >> sh;
+}
+
+int subd_alpha_kernel_q32(uint32_t kernel, int32_t num, int32_t den, uint32_t level, int64_t s_q32,
+                          int64_t *f_q32)
+{
+    uint32_t ovf = 0;
+    int64_t g, x, turns, f;
+    int32_t dn;
+    if (den <= 0 || level > 29u || (den > (INT32_MAX >> (level + 1u))) || s_q32 <= -SUBD_Q32_ONE)
+        return SUBD_ERR_PARAM;
+    dn = den << (level + 1u);
+    switch (kernel) {
+    case SUBD_ALPHA_BSPLINE:
+        g = SUBD_Q32_ONE;
+        break;
+    case SUBD_ALPHA_COS:
+        g = round_shift(subd_cos_turns_q62(num, dn), 30);
+        break;
+    case SUBD_ALPHA_POLY:
+    case SUBD_ALPHA_COSH:
+        turns = subd_alpha_divq(num, dn, 32, &ovf);
+        x = subd_alpha_mulq(turns, TWOPI_Q60, 60, &ovf);
+        if (x < 0) x = -x;
+        if (kernel == SUBD_ALPHA_POLY) {
+            g = SUBD_Q32_ONE - subd_alpha_mulq(x, x, 33, &ovf);
+        } else {
+            int64_t ln2 = round_shift(LN2_Q62, 30), k = (x + ln2 / 2) / ln2; /* round(x / ln 2) */
+            int64_t r, ep, em;
+            if (k > 30) return SUBD_ERR_RANGE;
+            r = x - subd_alpha_mulq(k, LN2_Q62, 30, &ovf); /* |r| <= ln2 / 2, Q32 */
+            ep = exp_q62(r * ((int64_t)1 << 30), &ovf);
+            em = exp_q62(-r * ((int64_t)1 << 30), &ovf);
+            g = round_shift(ep, (uint32_t)(31 - k)) + round_shift(em, (uint32_t)(31 + k));
+        }
+        break;
+    default:
+        return SUBD_ERR_PARAM;
+    }
+    f = subd_alpha_mulq(s_q32, g, 32, &ovf);
+    if (ovf || f > ((int64_t)1 << 62) || f < -((int64_t)1 << 62)) return SUBD_ERR_RANGE;
+    *f_q32 = f;
+    return SUBD_OK;
+}
+
+int subd_alpha_kernel_value(uint32_t kernel, int32_t num, int32_t den, uint32_t level, subd_real s,
+                            subd_real *f)
+{
+    uint32_t ovf = 0;
+    int64_t sq, fq;
+    subd_real v;
+    int st;
+    if (!f) return SUBD_ERR_PARAM;
+    sq = subd_alpha_real_to_q32(s, &ovf);
+    if (ovf) return SUBD_ERR_PARAM;
+    st = subd_alpha_kernel_q32(kernel, num, den, level, sq, &fq);
+    if (st != SUBD_OK) return st;
+    v = subd_alpha_q32_to_real(fq, &ovf);
+    if (ovf) return SUBD_ERR_RANGE;
+    *f = v;
+    return SUBD_OK;
+}
+
+void subd_alpha_opts_default(subd_alpha_opts *o)
+{
+    o->order = 2;
+    o->levels = 1;
+    o->kernel = SUBD_ALPHA_BSPLINE;
+    o->alpha_num = 0;
+    o->alpha_den = 1;
+    o->stiffness = SUBD_REAL_ONE;
+    o->tag_num = 0;
+}
+
+int subd_alpha_check_opts(const subd_alpha_opts *o, uint32_t max_order, int64_t *s_q32)
+{
+    uint32_t ovf = 0;
+    int64_t s;
+    if (!o || o->order < 2u || o->order > max_order || o->levels > SUBD_MAX_LEVELS ||
+        o->kernel > SUBD_ALPHA_COSH || o->alpha_den <= 0 ||
+        o->alpha_den > (INT32_MAX >> (o->levels + 2u)) || o->alpha_num > SUBD_ALPHA_MAX_NUM ||
+        o->alpha_num < -SUBD_ALPHA_MAX_NUM)
+        return SUBD_ERR_PARAM;
+    s = subd_alpha_real_to_q32(o->stiffness, &ovf);
+    if (ovf || s <= -SUBD_Q32_ONE) return SUBD_ERR_PARAM; /* table 1: s <= -1 diverges */
+    *s_q32 = s;
+    return SUBD_OK;
+}
+
+int32_t subd_alpha_continuity(int64_t s_q32, int32_t smooth_class)
+{
+    if (s_q32 <= 0) return -1;
+    if (s_q32 <= SUBD_Q32_ONE / 2) return 0;
+    return smooth_class;
+}

@@ -1,0 +1,290 @@
+/* Doo-Sabin type alpha-subdivision surface S_2(f; n) (Zhang & Wang 2002, section 2.1,
+ * formula (3), theorem 2).
+ *
+ * Geometry: for corner i of an N-gon with centroid c and d_j = p_j - c,
+ *   p_i' = c + f/(1+f) d_i + f/(2(1+f)^2) (d_{i-1} + d_{i+1}),
+ * which is formula (3) rewritten with its weights' sum 1 (f/(1+f) + f/(1+f)^2 + 1/(1+f)^2 = 1):
+ * the centroid is formed once per face, so the face's centroid is kept up to rounding
+ * (theorem 2) and a translation moves every output point by the same amount. The two
+ * weights come from the kernel in Q32.32 (alpha_kernel.c); Q16.16 products are formed in
+ * 128 bits and rounded once per point.
+ *
+ * Topology (Doo-Sabin, the paper's figure 1): output vertex j is input corner j; faces are
+ * the input faces (corner order kept), a quad [next(h), h, next(t), t] per interior edge
+ * (h < t = twin(h)), and per interior vertex the face of its corners in ring order. The
+ * arrays go through subd_mesh_finish, the builder's own validator.
+ *
+ * Boundary (the paper is silent): boundary edges and vertices make no face; boundary faces
+ * use formula (3) unchanged. The surface therefore recedes from the boundary polygon, as
+ * Doo-Sabin without boundary rules does; it stays a valid manifold with boundary and keeps
+ * its Euler characteristic.
+ *
+ * Counts (exact plan without doing the work): with E_i interior edges, V_i interior
+ * vertices and S the corners at interior vertices, one step gives
+ *   V' = C, F' = F + E_i + V_i, C' = C + 4 E_i + S, E_i' = 2 E_i + S, V_i' = S, S' = 4 S
+ * (an output vertex is interior iff its input vertex is, and then has valence 4; boundary
+ * vertices and boundary edges of the output are equal in number, C - S).
+ *
+ * Memory: level 1 builds its mesh above the caller's mark; each later level builds above
+ * the previous one and is then moved down over it (a forward byte copy to a lower address;
+ * the arrays hold indices, never pointers), so the peak is two consecutive levels plus the
+ * validator's scratch, and after success only the last level's arrays remain.
+ */
+#include "alpha_internal.h"
+
+typedef struct ds_stats {
+    uint32_t v, f, c, ei, vi, s;
+} ds_stats;
+
+static int input_stats(const subd_mesh *m, ds_stats *st, uint32_t *bad_vertex)
+{
+    uint32_t h, v;
+    st->v = m->num_verts;
+    st->f = m->num_faces;
+    st->c = m->num_corners;
+    st->ei = st->vi = st->s = 0;
+    *bad_vertex = SUBD_NONE;
+    for (h = 0; h < m->num_corners; h++)
+        if (m->twin[h] != SUBD_NONE && h < m->twin[h]) st->ei++;
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t first = m->vert_out[v], h2, k = 0;
+        if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        for (h2 = first; h2 != SUBD_NONE && k <= m->num_corners; h2 = subd_ring_next(m, first, h2)) k++;
+        if (k > SUBD_MAX_FACE_SIZE) {
+            *bad_vertex = v;
+            return SUBD_ERR_FACE_SIZE;
+        }
+        st->vi++;
+        st->s += k;
+    }
+    return SUBD_OK;
+}
+
+/* One step's counts, or 0 when they do not fit 32 bits. */
+static int next_stats(const ds_stats *a, ds_stats *b)
+{
+    uint64_t f = (uint64_t)a->f + a->ei + a->vi, c = (uint64_t)a->c + 4u * (uint64_t)a->ei + a->s;
+    uint64_t ei = 2u * (uint64_t)a->ei + a->s, s = 4u * (uint64_t)a->s;
+    if (f >= (1u << 28) || c >= (1u << 28) || ei >= (1u << 28) || s >= (1u << 28)) return 0;
+    b->v = a->c;
+    b->f = (uint32_t)f;
+    b->c = (uint32_t)c;
+    b->ei = (uint32_t)ei;
+    b->vi = a->s;
+    b->s = (uint32_t)s;
+    return 1;
+}
+
+static void to_counts(const ds_stats *s, mesh_counts *c)
+{
+    c->nv = s->v;
+    c->nf = s->f;
+    c->nc = s->c;
+    c->nl = 0;
+    c->nlv = 0;
+}
+
+/* Mesh arrays without the validator's scratch. */
+static uint32_t arrays_bytes(const mesh_counts *c)
+{
+    uint32_t total = subd_mesh_counts_bytes(c), scratch = 0;
+    subd_size_add(&scratch, c->nv + 1u, 4u);
+    subd_size_add(&scratch, c->nc, 4u);
+    return total == UINT32_MAX ? UINT32_MAX : total - scratch;
+}
+
+static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    ds_stats cur, nxt;
+    mesh_counts c;
+    uint32_t l, peak = 0, prev_arrays = 0, bad;
+    int st = input_stats(in, &cur, &bad);
+    if (st != SUBD_OK) {
+        d->vertex = bad;
+        return st;
+    }
+    for (l = 0; l < o->levels; l++) {
+        uint32_t total, here;
+        if (!next_stats(&cur, &nxt)) return SUBD_ERR_TOO_BIG;
+        to_counts(&nxt, &c);
+        total = subd_mesh_counts_bytes(&c);
+        if (total == UINT32_MAX || (uint64_t)total + prev_arrays >= UINT32_MAX) return SUBD_ERR_TOO_BIG;
+        here = total + prev_arrays;
+        if (here > peak) peak = here;
+        prev_arrays = arrays_bytes(&c);
+        cur = nxt;
+    }
+    *bytes = peak;
+    return SUBD_OK;
+}
+
+static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_q32)
+{
+    int st;
+    if (!in) return SUBD_ERR_PARAM;
+    if ((st = subd_alpha_check_opts(o, 2u, s_q32)) != SUBD_OK) return st;
+    if (o->levels < 1u || o->tag_num) return SUBD_ERR_PARAM;
+    if (in->num_faces == 0) return SUBD_ERR_EMPTY;
+    return SUBD_OK;
+}
+
+int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes)
+{
+    subd_diag d;
+    int64_t s;
+    int st;
+    if (!bytes) return SUBD_ERR_PARAM;
+    if ((st = check_args(in, o, &s)) != SUBD_OK) return st;
+    subd_diag_clear(&d);
+    return surface_plan(in, o, bytes, &d);
+}
+
+/* Face centroid, rounded once (Q16.16: exact sum, one rounded division). */
+static subd_real centroid(const subd_mesh *m, uint32_t s, uint32_t e, uint32_t k, uint32_t *ovf)
+{
+    uint32_t i;
+#if SUBD_FIXED
+    int64_t sum = 0, n = (int64_t)(e - s);
+    for (i = s; i < e; i++) sum += m->pos[3u * m->corner_vert[i] + k];
+    sum = (sum >= 0) ? (sum + n / 2) / n : -((-sum + n / 2) / n);
+    return subd_real_sat(sum, ovf);
+#else
+    float sum = 0.0f;
+    for (i = s; i < e; i++) sum = subd_add(sum, m->pos[3u * m->corner_vert[i] + k], ovf);
+    return subd_div(sum, (float)(e - s), ovf);
+#endif
+}
+
+/* Formula (3) for every corner of every face of m, into pos (3 per corner). */
+static void ds_positions(const subd_mesh *m, subd_alpha_wt wa, subd_alpha_wt wb, subd_real *pos, uint32_t *ovf)
+{
+    uint32_t f, k;
+    for (f = 0; f < m->num_faces; f++) {
+        uint32_t s = m->face_start[f], e = m->face_start[f + 1u], i;
+        for (k = 0; k < 3u; k++) {
+            subd_real c = centroid(m, s, e, k, ovf);
+            for (i = s; i < e; i++) {
+                uint32_t ip = (i == s) ? e - 1u : i - 1u, in = (i + 1u == e) ? s : i + 1u;
+                subd_alpha_diff di = subd_alpha_sub(m->pos[3u * m->corner_vert[i] + k], c, ovf);
+                subd_alpha_diff dp = subd_alpha_sub(m->pos[3u * m->corner_vert[ip] + k], c, ovf);
+                subd_alpha_diff dn = subd_alpha_sub(m->pos[3u * m->corner_vert[in] + k], c, ovf);
+                pos[3u * i + k] = subd_alpha_comb(c, wa, di, wb, subd_alpha_dadd(dp, dn, ovf), ovf);
+            }
+        }
+    }
+}
+
+/* Doo-Sabin faces of m into out's face_start / corner_vert (counts already set). */
+static void ds_faces(const subd_mesh *m, subd_mesh *out)
+{
+    uint32_t f, h, v, nf = 0, nc = 0;
+    out->face_start[0] = 0;
+    for (f = 0; f < m->num_faces; f++) {
+        for (h = m->face_start[f]; h < m->face_start[f + 1u]; h++) out->corner_vert[nc++] = h;
+        out->face_start[++nf] = nc;
+    }
+    for (h = 0; h < m->num_corners; h++) {
+        uint32_t t = m->twin[h];
+        if (t == SUBD_NONE || t < h) continue;
+        out->corner_vert[nc++] = subd_he_next(m, h);
+        out->corner_vert[nc++] = h;
+        out->corner_vert[nc++] = subd_he_next(m, t);
+        out->corner_vert[nc++] = t;
+        out->face_start[++nf] = nc;
+    }
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t first = m->vert_out[v];
+        if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) out->corner_vert[nc++] = h;
+        out->face_start[++nf] = nc;
+    }
+    out->line_start[0] = 0;
+}
+
+/* Moves mesh *m (arrays contiguous from m->pos, `bytes` long) down to dst. */
+static void move_mesh(subd_mesh *m, uint8_t *dst, uint32_t bytes)
+{
+    uint8_t *src = (uint8_t *)m->pos;
+    uint32_t i, delta = (uint32_t)(src - dst);
+    for (i = 0; i < bytes; i++) dst[i] = src[i];
+#define MOVE(p) (m->p = (void *)((uint8_t *)m->p - delta))
+    MOVE(pos);
+    MOVE(face_start);
+    MOVE(corner_vert);
+    MOVE(corner_face);
+    MOVE(twin);
+    MOVE(vert_out);
+    MOVE(vert_tag);
+    MOVE(edge_tag);
+    MOVE(line_start);
+    MOVE(line_vert);
+#undef MOVE
+}
+
+int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
+                       subd_alpha_surface_info *info, subd_diag *diag)
+{
+    subd_diag dummy;
+    subd_diag *d = diag ? diag : &dummy;
+    int64_t s_q32;
+    uint32_t mark, bytes, l, i, ovf = 0;
+    subd_mesh prev, cur;
+    ds_stats st_in, st_cur;
+    int st;
+
+    subd_diag_clear(d);
+    if (!arena || !out) return subd_fail(d, SUBD_ERR_PARAM);
+    if ((st = check_args(in, o, &s_q32)) != SUBD_OK) return subd_fail(d, st);
+    for (i = 0; i < 3u * in->num_verts; i++)
+        if (!subd_real_is_finite(in->pos[i])) {
+            d->vertex = i / 3u;
+            return subd_fail(d, SUBD_ERR_NAN);
+        }
+    if ((st = surface_plan(in, o, &bytes, d)) != SUBD_OK) return subd_fail(d, st);
+    if (bytes > subd_arena_free_bytes(arena)) {
+        d->bytes_needed = bytes;
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+    mark = subd_arena_mark(arena);
+    input_stats(in, &st_in, &i);
+    st_cur = st_in;
+    prev = *in;
+    for (l = 0; l < o->levels; l++) {
+        ds_stats nx;
+        mesh_counts c;
+        int64_t f, u, a, b;
+        next_stats(&st_cur, &nx);
+        to_counts(&nx, &c);
+        st = subd_alpha_kernel_q32(o->kernel, o->alpha_num, o->alpha_den, l, s_q32, &f);
+        if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
+        if (st == SUBD_OK) st = subd_mesh_alloc_arrays(arena, &c, &cur);
+        if (st != SUBD_OK) break;
+        u = SUBD_Q32_ONE + f;
+        a = subd_alpha_divq(f, u, 32, &ovf);         /* f / (1 + f)        */
+        b = subd_alpha_divq(a, 2 * u, 32, &ovf);     /* f / (2 (1 + f)^2)  */
+        ds_positions(&prev, subd_alpha_wt_from_q32(a, &ovf), subd_alpha_wt_from_q32(b, &ovf), cur.pos, &ovf);
+        if (ovf) {
+            st = SUBD_ERR_RANGE;
+            break;
+        }
+        ds_faces(&prev, &cur);
+        st = subd_mesh_finish(arena, &cur, d);
+        if (st != SUBD_OK) break;
+        if (l > 0u) {
+            /* drop the previous level: move this one down to where it started */
+            subd_arena_rewind(arena, mark);
+            move_mesh(&cur, arena->base + mark, arrays_bytes(&c));
+            subd_arena_alloc(arena, arrays_bytes(&c));
+        }
+        prev = cur;
+        st_cur = nx;
+    }
+    if (st != SUBD_OK) {
+        subd_arena_rewind(arena, mark);
+        if (st != SUBD_ERR_NOMEM) d->bytes_needed = 0;
+        return subd_fail(d, st);
+    }
+    *out = cur;
+    if (info) info->continuity = subd_alpha_continuity(s_q32, 1);
+    return SUBD_OK;
+}

@@ -1,0 +1,562 @@
+/* Doo-Sabin type alpha-subdivision surface (src/alpha_surface.c, formula (3)): f = 1 on a
+ * quad gives 9/16, 3/16, 3/16, 1/16; on a regular quad grid the operator is the tensor
+ * product of the curve operator S_2 for any f; theorem 2 (each face's centroid is kept;
+ * the circulant eigenvalues lambda_j); closed-form counts over levels, Euler characteristic
+ * and boundary loops kept; exact plans with every too-small arena; error paths; hashes. */
+#include "harness.h"
+#include "corpus.h"
+#include "subd_alpha.h"
+#if H_HOST
+#include <math.h>
+#include <stdio.h>
+#endif
+
+#define MAXV 400
+#define MAXC 1600
+static subd_real g_pos[3 * MAXV];
+static uint32_t g_idx[MAXC], g_size[MAXC];
+static uint32_t g_state = 4242u;
+
+#if H_HOST
+#define WORK_BYTES (8u * 1024u * 1024u)
+static uint8_t work_buf[WORK_BYTES] __attribute__((aligned(8)));
+#define WORK_BUF work_buf
+static double dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.0 : (double)x; }
+#else
+#define WORK_BYTES H_ARENA_BYTES
+#define WORK_BUF h_arena_buf
+#endif
+
+static subd_real rint_(int32_t i)
+{
+    uint32_t ovf = 0;
+    return subd_from_int(i, &ovf);
+}
+static int same(subd_real a, subd_real b) { return subd_real_bits(a) == subd_real_bits(b); }
+
+static void sopts(subd_alpha_opts *o, uint32_t levels, uint32_t kernel, int32_t num, int32_t den, subd_real s)
+{
+    subd_alpha_opts_default(o);
+    o->levels = levels;
+    o->kernel = kernel;
+    o->alpha_num = num;
+    o->alpha_den = den;
+    o->stiffness = s;
+}
+
+/* (n+1) x (m+1) planar grid of quads, z a bumpy integer height; an open disk. */
+static subd_face_list quad_grid(uint32_t n, uint32_t m)
+{
+    subd_face_list fl = {0, 0, 0, 0, 0, 0, 0, 0};
+    uint32_t i, j, k = 0, f = 0;
+    for (i = 0; i <= n; i++)
+        for (j = 0; j <= m; j++) {
+            uint32_t v = i * (m + 1u) + j;
+            g_pos[3u * v] = rint_((int32_t)j * 4);
+            g_pos[3u * v + 1u] = rint_((int32_t)i * 4);
+            g_pos[3u * v + 2u] = rint_((int32_t)(h_rand(&g_state) % 9u) - 4);
+        }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++) {
+            uint32_t a = i * (m + 1u) + j;
+            g_idx[k++] = a;
+            g_idx[k++] = a + 1u;
+            g_idx[k++] = a + m + 2u;
+            g_idx[k++] = a + m + 1u;
+            g_size[f++] = 4;
+        }
+    fl.num_verts = (n + 1u) * (m + 1u);
+    fl.pos = g_pos;
+    fl.num_faces = f;
+    fl.face_size = g_size;
+    fl.index = g_idx;
+    return fl;
+}
+
+/* One N-gon, vertices given. */
+static subd_face_list one_face(uint32_t n)
+{
+    subd_face_list fl = {0, 0, 0, 0, 0, 0, 0, 0};
+    uint32_t i;
+    for (i = 0; i < n; i++) g_idx[i] = i;
+    g_size[0] = n;
+    fl.num_verts = n;
+    fl.pos = g_pos;
+    fl.num_faces = 1;
+    fl.face_size = g_size;
+    fl.index = g_idx;
+    return fl;
+}
+
+static int build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
+{
+    subd_diag d;
+    return CHECK_EQ(subd_mesh_build(a, fl, m, &d), SUBD_OK);
+}
+
+static int read_obj(subd_arena *a, const char *name, subd_mesh *m)
+{
+    const corpus_file *f = corpus_find(name);
+    subd_diag d;
+    if (!CHECK(f != 0)) return 0;
+    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
+}
+
+static int ds(subd_arena *a, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out)
+{
+    subd_diag d;
+    subd_alpha_surface_info info;
+    return CHECK_EQ(subd_alpha_surface(a, in, o, out, &info, &d), SUBD_OK);
+}
+
+/* ------------------------------------------------------------------------------------ */
+
+static void alpha_ds_quad_weights(void)
+{
+    subd_arena a;
+    subd_mesh in, out;
+    subd_alpha_opts o;
+    subd_face_list fl = one_face(4);
+    uint32_t i, c, ovf = 0, ok = 1;
+    for (i = 0; i < 12u; i++) g_pos[i] = rint_((int32_t)(h_rand(&g_state) % 41u) - 20);
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!build(&a, &fl, &in)) return;
+    sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
+    if (!ds(&a, &in, &o, &out)) return;
+    CHECK_EQ(out.num_verts, 4);
+    CHECK_EQ(out.num_faces, 1);
+    for (i = 0; i < 4u; i++)
+        for (c = 0; c < 3u; c++) {
+            subd_acc acc = subd_acc_zero();
+            acc = subd_acc_add(acc, SUBD_REAL_FRAC(9, 16), g_pos[3u * i + c]);
+            acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 16), g_pos[3u * ((i + 1u) % 4u) + c]);
+            acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 16), g_pos[3u * ((i + 2u) % 4u) + c]);
+            acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 16), g_pos[3u * ((i + 3u) % 4u) + c]);
+            ok &= same(out.pos[3u * i + c], subd_acc_real(acc, &ovf));
+        }
+    CHECK(ok);
+    /* the cube: 24 vertices, 6 + 12 + 8 faces, closed, Euler 2 */
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!read_obj(&a, "test/data/cube_quad.obj", &in) || !ds(&a, &in, &o, &out)) return;
+    CHECK_EQ(out.num_verts, 24);
+    CHECK_EQ(out.num_faces, 26);
+    CHECK_EQ(out.num_boundary_edges, 0);
+    CHECK_EQ(subd_mesh_euler(&out), 2);
+    h_hash("alpha_ds_cube", h_mesh_hash(&out));
+}
+
+#if H_HOST
+/* Regular quad grid: every output corner of face (i, j) is the tensor product of the
+ * curve weights w0 = (1+2f)/(2+2f), w1 = 1/(2+2f): w0^2 p + w0 w1 (p_prev + p_next) + w1^2
+ * p_opposite; f from the kernel, for several kernels and stiffnesses. */
+static void alpha_ds_tensor(void)
+{
+    static const int32_t s8[4] = {3, 8, 20, -4};
+    uint32_t si, kern;
+    double worst = 0;
+    for (kern = 0; kern < 2u; kern++)
+        for (si = 0; si < 4u; si++) {
+            subd_arena a;
+            subd_mesh in, out;
+            subd_alpha_opts o;
+            subd_face_list fl = quad_grid(5, 4);
+            subd_real fr;
+            double f, w0, w1;
+            uint32_t fc, i, c;
+            sopts(&o, 1, kern, 1, 7, SUBD_REAL_FRAC(s8[si], 8));
+            subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+            if (!build(&a, &fl, &in) || !ds(&a, &in, &o, &out)) return;
+            if (!CHECK_EQ(subd_alpha_kernel_value(kern, 1, 7, 0, o.stiffness, &fr), SUBD_OK)) return;
+            f = dbl(fr);
+            w0 = (1 + 2 * f) / (2 + 2 * f);
+            w1 = 1 / (2 + 2 * f);
+            for (fc = 0; fc < in.num_faces; fc++)
+                for (i = 0; i < 4u; i++)
+                    for (c = 0; c < 3u; c++) {
+                        uint32_t b = in.face_start[fc];
+                        double p = dbl(in.pos[3u * in.corner_vert[b + i] + c]);
+                        double pn = dbl(in.pos[3u * in.corner_vert[b + (i + 1u) % 4u] + c]);
+                        double po = dbl(in.pos[3u * in.corner_vert[b + (i + 2u) % 4u] + c]);
+                        double pp = dbl(in.pos[3u * in.corner_vert[b + (i + 3u) % 4u] + c]);
+                        double want = w0 * w0 * p + w0 * w1 * (pn + pp) + w1 * w1 * po;
+                        double e = fabs(dbl(out.pos[3u * (b + i) + c]) - want);
+                        if (e > worst) worst = e;
+                    }
+        }
+    /* coordinates up to 20: float 1e-6 relative to that; fixed 2 LSB */
+    CHECK(worst <= (SUBD_FIXED ? 2.0 / 65536.0 : 2e-5));
+    {
+        char buf[120];
+        snprintf(buf, sizeof buf, "  note: DS tensor-product max abs error = %.3g%s\n",
+                 SUBD_FIXED ? worst * 65536.0 : worst, SUBD_FIXED ? " LSB" : "");
+        h_str(buf);
+    }
+}
+
+/* Circulant eigenvalues: one N-gon whose x, y are the real and imaginary parts of the
+ * eigenvector W_j (radius 8) is mapped to lambda_j times itself. lambda_j is computed
+ * independently by lemma 1 from the paper's own circulant row S_2^(n) = Cir_N[(1/N + f +
+ * f^2), (1/N + f/2), 1/N, .., 1/N, (1/N + f/2)] / (1+f)^2 (which is formula (3)):
+ * lambda_j = sum_i a_i w_j^(i-1) = f/(1+f) + f/(1+f)^2 cos(2 pi (j-1)/N).
+ * The closed form printed in the paper's proof of theorem 2, f/(1+f) + 2f/(1+f)^2 cos(..),
+ * has the cosine term twice too large: it contradicts the circulant just above it and
+ * Doo-Sabin's quad eigenvalues 1, 1/2, 1/4 at f = 1 (it gives 1, 1/2, 0). The test shows
+ * that the measured values match lemma 1 and differ from the printed form by exactly
+ * f/(1+f)^2 cos(2 pi (j-1)/N). Theorem 2's conclusions (|lambda_j| < 1 for j > 1 and
+ * f_n > 0, lambda_2 = lambda_N the largest) hold for the corrected values as well. */
+static void alpha_ds_eigen(void)
+{
+    static const int32_t s8[3] = {4, 8, 24};
+    uint32_t n, j, si;
+    double worst = 0;
+    for (n = 3; n <= 8u; n++)
+        for (j = 1; j <= n; j++)
+            for (si = 0; si < 4u; si++) {
+                subd_arena a;
+                subd_mesh in, out;
+                subd_alpha_opts o;
+                subd_face_list fl;
+                subd_real fr;
+                double f, lam, num = 0, den = 0, res = 0, th;
+                uint32_t i, kern = si == 3u ? SUBD_ALPHA_COS : SUBD_ALPHA_BSPLINE;
+                for (i = 0; i < n; i++) {
+                    th = 2 * 3.14159265358979323846 * (double)((j - 1u) * i) / n;
+                    /* j = 1: the constant vector, shifted off the origin */
+                    g_pos[3u * i] = (subd_real)(SUBD_FIXED ? floor(8 * cos(th) * 65536 + 0.5) : 8 * cos(th));
+                    g_pos[3u * i + 1u] = (subd_real)(SUBD_FIXED ? floor(8 * sin(th) * 65536 + 0.5) : 8 * sin(th));
+                    g_pos[3u * i + 2u] = 0;
+                }
+                fl = one_face(n);
+                sopts(&o, 1, kern, 1, 5, si == 3u ? SUBD_REAL_ONE : SUBD_REAL_FRAC(s8[si], 8));
+                subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+                if (!build(&a, &fl, &in) || !ds(&a, &in, &o, &out)) return;
+                if (!CHECK_EQ(subd_alpha_kernel_value(kern, 1, 5, 0, o.stiffness, &fr), SUBD_OK)) return;
+                f = dbl(fr);
+                {
+                    /* lemma 1 on the circulant row, summed term by term (real part) */
+                    double re = 0, im = 0, q = 1.0 / ((1 + f) * (1 + f)), printed;
+                    for (i = 0; i < n; i++) {
+                        double ai = (i == 0u) ? (1.0 / n + f + f * f) * q
+                                    : (i == 1u || i == n - 1u) ? (1.0 / n + f / 2) * q : q / n;
+                        double ph = 2 * 3.14159265358979323846 * (double)((j - 1u) * i) / n;
+                        re += ai * cos(ph);
+                        im += ai * sin(ph);
+                    }
+                    CHECK(fabs(im) < 1e-12);
+                    lam = re;
+                    printed = (j == 1u) ? 1.0 : f / (1 + f) + 2 * f * q * cos(2 * 3.14159265358979323846 * (j - 1u) / n);
+                    CHECK(fabs((printed - lam) - ((j == 1u) ? 0.0 : f * q * cos(2 * 3.14159265358979323846 * (j - 1u) / n))) < 1e-12);
+                    if (n == 4u && si == 1u) /* f = 1: Doo-Sabin's 1, 1/2, 1/4, 1/2 */
+                        CHECK(fabs(lam - (j == 1u ? 1.0 : j == 3u ? 0.25 : 0.5)) < 1e-12);
+                }
+                for (i = 0; i < n; i++) {
+                    double x = dbl(in.pos[3u * i]), y = dbl(in.pos[3u * i + 1u]);
+                    double u = dbl(out.pos[3u * i]), v = dbl(out.pos[3u * i + 1u]);
+                    num += u * x + v * y;
+                    den += x * x + y * y;
+                }
+                for (i = 0; i < n; i++) {
+                    double e = hypot(dbl(out.pos[3u * i]) - num / den * dbl(in.pos[3u * i]),
+                                     dbl(out.pos[3u * i + 1u]) - num / den * dbl(in.pos[3u * i + 1u]));
+                    if (e > res) res = e;
+                }
+                /* the measured eigenvalue and the paper's lambda_j agree; the output is
+                 * lambda times the input (an eigenvector) */
+                if (fabs(num / den - lam) > worst) worst = fabs(num / den - lam);
+                CHECK(fabs(num / den - lam) <= (SUBD_FIXED ? 2e-5 : 1e-6));
+                CHECK(res <= (SUBD_FIXED ? 3.0 / 65536.0 : 4e-6));
+            }
+    {
+        char buf[120];
+        snprintf(buf, sizeof buf, "  note: circulant eigenvalue max |measured - lambda_j| = %.3g\n", worst);
+        h_str(buf);
+    }
+}
+#endif
+
+/* Theorem 2: every face's centroid is kept by a step (up to one rounding). Checked in
+ * subd_real arithmetic so it also runs on the device. */
+static subd_real face_centroid(const subd_real *pos, const uint32_t *cv, uint32_t s, uint32_t e, uint32_t k,
+                               int direct)
+{
+    uint32_t i, ovf = 0;
+#if SUBD_FIXED
+    int64_t sum = 0, n = (int64_t)(e - s);
+    for (i = s; i < e; i++) sum += pos[3u * (direct ? i : cv[i]) + k];
+    (void)ovf;
+    return (subd_real)((sum >= 0) ? (sum + n / 2) / n : -((-sum + n / 2) / n));
+#else
+    float sum = 0.0f;
+    for (i = s; i < e; i++) sum = subd_add(sum, pos[3u * (direct ? i : cv[i]) + k], &ovf);
+    return sum / (float)(e - s);
+#endif
+}
+
+static void alpha_ds_centroid(void)
+{
+    /* stiffness * 8 and the allowed shift: 2 units (LSB, or 1e-7 in float where the
+     * coordinates are within 1) for s > 0, where the weights f/(1+f) + f/(1+f)^2 of the
+     * centroid's own rounding error are < 1; for s = -3/4 (not smooth) f/(1+f) = -3 and
+     * f/(2(1+f)^2) = -6 magnify that 1/2-unit error 15 times (and in float the rounding
+     * of every weighted difference as well: 20 units) */
+    static const int32_t s8[5] = {2, 8, 40, -6, 8}, bound[5] = {2, 2, 2, SUBD_FIXED ? 10 : 20, 2};
+    uint32_t si, f, k;
+    for (si = 0; si < 5u; si++) {
+        subd_arena a;
+        subd_mesh in, out;
+        subd_alpha_opts o;
+        uint32_t worst = 0;
+        subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+        if (!read_obj(&a, "test/data/spot_control_mesh.obj", &in)) return;
+        sopts(&o, 1, si == 4u ? SUBD_ALPHA_COS : SUBD_ALPHA_BSPLINE, 1, 6, SUBD_REAL_FRAC(s8[si], 8));
+        if (!ds(&a, &in, &o, &out)) return;
+        for (f = 0; f < in.num_faces; f++)
+            for (k = 0; k < 3u; k++) {
+                uint32_t s = in.face_start[f], e = in.face_start[f + 1u];
+                subd_real c0 = face_centroid(in.pos, in.corner_vert, s, e, k, 0);
+                subd_real c1 = face_centroid(out.pos, out.corner_vert, s, e, k, 0);
+#if SUBD_FIXED
+                uint32_t diff = (uint32_t)(c0 > c1 ? c0 - c1 : c1 - c0);
+#else
+                float dd = c0 > c1 ? c0 - c1 : c1 - c0;
+                uint32_t diff = (uint32_t)(dd * 1e7f); /* in units of 1e-7 (coordinates ~1) */
+#endif
+                if (diff > worst) worst = diff;
+            }
+        /* the output F-face f has the same corner range as the input face f */
+        CHECK_EQ(out.face_start[in.num_faces], in.num_corners);
+        CHECK(worst <= (uint32_t)bound[si]);
+        h_str("  note: DS centroid max shift, s = ");
+        h_i32(s8[si]);
+        h_str("/8: ");
+        h_u32(worst);
+        h_str(SUBD_FIXED ? " LSB" : " x 1e-7");
+        h_nl();
+    }
+}
+
+/* Counts over levels follow the closed form; Euler characteristic and boundary loops are
+ * kept; hashes. */
+static void alpha_ds_levels(void)
+{
+    static const char *const files[3] = {"test/data/cube_quad.obj", "test/data/hexfan.obj",
+                                          "test/data/spot_control_mesh.obj"};
+    uint32_t fi, lev;
+    g_state = 4242u; /* host-only tests draw random numbers too: restart for the hashes */
+    for (fi = 0; fi < 4u; fi++)
+        /* the device arena (256 KiB) holds the spot mesh's level 1 only */
+        for (lev = 1; lev <= (H_HOST ? 3u : fi == 2u ? 1u : 2u); lev++) {
+            subd_arena a;
+            subd_mesh in, out;
+            subd_alpha_opts o;
+            uint32_t v, f, c, ei = 0, vi = 0, s = 0, h, l, plan;
+            subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+            if (fi < 3u) {
+                if (!read_obj(&a, files[fi], &in)) return;
+            } else {
+                subd_face_list fl = quad_grid(4, 3);
+                if (!build(&a, &fl, &in)) return;
+            }
+            /* closed form */
+            v = in.num_verts;
+            f = in.num_faces;
+            c = in.num_corners;
+            for (h = 0; h < in.num_corners; h++)
+                if (in.twin[h] != SUBD_NONE && h < in.twin[h]) ei++;
+            for (h = 0; h < in.num_verts; h++)
+                if (!(in.vert_tag[h] & (SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED))) {
+                    vi++;
+                    s += subd_vertex_valence(&in, h);
+                }
+            for (l = 0; l < lev; l++) {
+                uint32_t nf = f + ei + vi, nc = c + 4u * ei + s;
+                v = c;
+                f = nf;
+                c = nc;
+                ei = 2u * ei + s;
+                vi = s;
+                s = 4u * s;
+            }
+            sopts(&o, lev, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_FRAC(7, 8));
+            if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_OK)) return;
+            {
+                uint32_t m0 = subd_arena_mark(&a);
+                if (!ds(&a, &in, &o, &out)) return;
+                CHECK(a.peak - m0 <= plan);
+            }
+            CHECK_EQ(out.num_verts, v);
+            CHECK_EQ(out.num_faces, f);
+            CHECK_EQ(out.num_corners, c);
+            CHECK_EQ(out.num_edges - out.num_boundary_edges, ei);
+            CHECK_EQ(subd_mesh_euler(&out), subd_mesh_euler(&in) - (int32_t)in.num_isolated);
+            CHECK_EQ(out.num_boundary_loops, in.num_boundary_loops);
+            if (lev == (fi == 2u ? 1u : 2u))
+                h_hash(fi == 0u ? "alpha_ds_cube_l2" : fi == 1u ? "alpha_ds_hexfan_l2"
+                       : fi == 2u ? "alpha_ds_spot_l1" : "alpha_ds_grid_l2",
+                       h_mesh_hash(&out));
+        }
+}
+
+static void check_plan_exhaustive(const subd_mesh *in, const subd_alpha_opts *o)
+{
+    static uint8_t buf[40000 + 64] __attribute__((aligned(8)));
+    uint32_t plan, s, i;
+    subd_mesh out, sentinel;
+    uint8_t *po = (uint8_t *)&out, *ps = (uint8_t *)&sentinel;
+    uint32_t step;
+    if (!CHECK_EQ(subd_alpha_surface_plan(in, o, &plan), SUBD_OK)) return;
+    if (!CHECK(plan <= 40000u)) return;
+    for (i = 0; i < sizeof out; i++) ps[i] = (uint8_t)(0x3c ^ i);
+    /* every size on the host; every 8th (and the last 64) on the device */
+    step = H_HOST ? 1u : 8u;
+    for (s = 0; s <= plan; s += (s + 64u >= plan) ? 1u : step) {
+        subd_arena a;
+        subd_diag d;
+        int st;
+        for (i = 0; i < sizeof out; i++) po[i] = ps[i];
+        subd_arena_init(&a, buf, 8u + s);
+        subd_arena_alloc(&a, 8);
+        h_guard_fill(buf + 8u + s, 64);
+        st = subd_alpha_surface(&a, in, o, &out, 0, &d);
+        if (s < plan) {
+            int untouched = 1;
+            for (i = 0; i < sizeof out; i++) untouched &= (po[i] == ps[i]);
+            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&a), 8) || !CHECK(untouched) ||
+                !CHECK_EQ(d.bytes_needed, plan))
+                return;
+        } else {
+            if (!CHECK_EQ(st, SUBD_OK)) return;
+            CHECK_EQ(a.peak - 8u, plan);
+        }
+        if (!CHECK(h_guard_ok(buf + 8u + s, 64))) return;
+    }
+}
+
+static void alpha_ds_plan_exact(void)
+{
+    subd_arena a;
+    subd_mesh cube, grid;
+    subd_alpha_opts o;
+    subd_face_list fl = quad_grid(3, 2);
+    uint32_t lev;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!read_obj(&a, "test/data/cube_quad.obj", &cube) || !build(&a, &fl, &grid)) return;
+    for (lev = 1; lev <= 2u; lev++) {
+        sopts(&o, lev, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
+        check_plan_exhaustive(&cube, &o);
+        check_plan_exhaustive(&grid, &o);
+    }
+}
+
+static void alpha_ds_errors(void)
+{
+    subd_arena a;
+    subd_mesh in, out;
+    subd_alpha_opts o;
+    subd_diag d;
+    subd_face_list fl = quad_grid(2, 2);
+    uint32_t plan, i, m0;
+    static int32_t tags[4];
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!build(&a, &fl, &in)) return;
+    m0 = subd_arena_mark(&a);
+    sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
+    CHECK_EQ(subd_alpha_surface(0, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface(&a, 0, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, 0, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, 0), SUBD_ERR_PARAM);
+    o.levels = 0;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    o.levels = 1;
+    o.order = 3;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    o.order = 2;
+    o.tag_num = tags;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    o.tag_num = 0;
+    o.stiffness = rint_(-1); /* table 1: diverges */
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    /* s in (-1, 0]: accepted, not smooth; s in (0, 1/2]: GC0; above: GC1 */
+    {
+        subd_alpha_surface_info info;
+        o.stiffness = SUBD_REAL_FRAC(-1, 2);
+        if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, &info, &d), SUBD_OK)) CHECK_EQ(info.continuity, -1);
+        subd_arena_rewind(&a, m0);
+        o.stiffness = SUBD_REAL_FRAC(1, 2);
+        if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, &info, &d), SUBD_OK)) CHECK_EQ(info.continuity, 0);
+        subd_arena_rewind(&a, m0);
+        o.stiffness = SUBD_REAL_ONE;
+        if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, &info, &d), SUBD_OK)) CHECK_EQ(info.continuity, 1);
+        subd_arena_rewind(&a, m0);
+    }
+    /* overflow: s = -0.9 makes f/(1+f) = -9 */
+    o.stiffness = SUBD_REAL_FRAC(-9, 10);
+    for (i = 0; i < in.num_verts; i++) in.pos[3u * i] = SUBD_FIXED ? rint_((int32_t)(i * 4000u)) : (float)i * 4e37f;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_RANGE);
+    CHECK_EQ(subd_arena_mark(&a), m0);
+    /* a vertex of valence 33 > SUBD_MAX_FACE_SIZE would make a 33-gon */
+    {
+        subd_face_list fan = {0, 0, 0, 0, 0, 0, 0, 0};
+        uint32_t n = SUBD_MAX_FACE_SIZE + 1u;
+        for (i = 0; i <= n; i++) {
+            g_pos[3u * i] = rint_(i == 0 ? 0 : (int32_t)(i % 7u));
+            g_pos[3u * i + 1u] = rint_(i == 0 ? 0 : (int32_t)(i % 5u));
+            g_pos[3u * i + 2u] = rint_((int32_t)i);
+        }
+        for (i = 0; i < n; i++) {
+            g_idx[3u * i] = 0;
+            g_idx[3u * i + 1u] = 1u + i;
+            g_idx[3u * i + 2u] = 1u + (i + 1u) % n;
+        }
+        fan.num_verts = n + 1u;
+        fan.pos = g_pos;
+        fan.num_faces = n;
+        fan.index = g_idx;
+        subd_arena_rewind(&a, m0);
+        if (!build(&a, &fan, &in)) return;
+        sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
+        CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_FACE_SIZE);
+        CHECK_EQ(d.vertex, 0);
+    }
+    /* no faces */
+    {
+        subd_face_list pts = {0, 0, 0, 0, 0, 0, 0, 0};
+        pts.num_verts = 3;
+        pts.pos = g_pos;
+        subd_arena_rewind(&a, m0);
+        if (!build(&a, &pts, &in)) return;
+        CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_EMPTY);
+    }
+}
+
+static void alpha_ds_hashes(void)
+{
+    uint32_t kern;
+    for (kern = 0; kern < 4u; kern++) {
+        subd_arena a;
+        subd_mesh in, out;
+        subd_alpha_opts o;
+        char name[] = "alpha_ds_spot_k0";
+        subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+        if (!read_obj(&a, "test/data/spot_control_mesh.obj", &in)) return;
+        sopts(&o, 1, kern, 1, 6, SUBD_REAL_FRAC(5, 4));
+        if (!ds(&a, &in, &o, &out)) return;
+        name[15] = (char)('0' + kern);
+        h_hash(name, h_mesh_hash(&out));
+    }
+}
+
+const test_case suite_alpha_surface[] = {
+    {"alpha_ds_quad_weights", alpha_ds_quad_weights},
+#if H_HOST
+    {"alpha_ds_tensor", alpha_ds_tensor},
+    {"alpha_ds_eigen", alpha_ds_eigen},
+#endif
+    {"alpha_ds_centroid", alpha_ds_centroid},
+    {"alpha_ds_levels", alpha_ds_levels},
+    {"alpha_ds_plan_exact", alpha_ds_plan_exact},
+    {"alpha_ds_errors", alpha_ds_errors},
+    {"alpha_ds_hashes", alpha_ds_hashes},
+    {0, 0}
+};

@@ -174,11 +174,8 @@ demo-run: $(B)/m4f-float/demo.elf $(B)/m3-fixed/demo.elf tool
 	@qemu/run.sh mps2-an386 $(B)/m4f-float/demo.elf 120
 	@echo "== firmware demo, Cortex-M3 Q16.16 (QEMU mps2-an385)"
 	@qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 120
-	@echo "== host tool"
-	@for m in icosahedron torus_tri spot_control_mesh hexfan; do \
-	    $(B)/bin/subd render test/data/$$m.obj -o $(B)/demo/$$m.png || exit 1; \
-	    echo "wrote $(B)/demo/$$m.png"; done
-	@$(B)/bin/subd info test/data/torus_tri.obj
+	@echo "== host tool (pictures in $(B)/demo/)"
+	@demo/host_demo.sh $(B)/bin $(B)/demo
 
 $(B)/bench/bench: bench/bench.c $(SRC) $(SRC_H) port/host/fileio.c | dirs
 	@mkdir -p $(B)/bench

@@ -88,12 +88,33 @@ typedef struct subd_pia_result {
     int converged;       /* 1 when max_err <= tol                                        */
 } subd_pia_result;
 
+/* Exact arena bytes of subd_pia for this input and options: PAPER 2 arrays of 3 * num_verts
+ * subd_reals (V, L V); FAST 4 such arrays (V, L V, search direction, L of it) plus one
+ * subd_real and one byte per vertex, each rounded up to SUBD_ARENA_ALIGN. Validates like
+ * subd_pia (SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE, SUBD_ERR_TOO_BIG). */
 int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
 
-/* Control positions (3 * num_verts, in the arena) whose Loop limit surface passes through
- * the input mesh's vertices within tol. Errors: as subd_loop, and SUBD_ERR_PARAM for a tol
- * the arithmetic cannot resolve (below 1 LSB in Q16.16) or max_iter == 0. Not converging
- * within max_iter is not an error: result->converged says so. */
+/* Control positions V (3 * num_verts, in the arena) whose Loop limit surface passes through
+ * the input mesh's vertices P within tol: max over vertices of the Euclidean distance
+ * |P_i - (L V)_i| <= tol, L being subd_loop_limit's operator with rule o->boundary (creases
+ * and corners of the input honoured). The input needs full adjacency (twin, vert_out) and
+ * triangles only. PAPER starts from V = P and repeats V += P - L V, on the boundary vertices
+ * until they are within tol, then on the rest with the boundary fixed (paper, sections 2
+ * and 4). FAST (conjugate gradients, or Chebyshev iteration when a crease ends inside the
+ * surface; see src/pia.c for the convergence argument) reaches the same tol in fewer
+ * iterations. An iteration is one update of V; result->iterations counts them over all
+ * phases and never exceeds max_iter; max_err and mean_err are over
+ * all vertices (corners and isolated vertices stay where they are, error 0). A phase whose
+ * error stops decreasing for 10 iterations (the arithmetic's rounding floor) ends early.
+ * Not converging within max_iter is not an error: result->converged says so.
+ * tol: float32 any positive finite value; Q16.16 at least 2 LSB (2^-15): L's rounding floor
+ * is about 1 LSB per coordinate, sqrt(3) LSB in norm.
+ * Errors: SUBD_ERR_PARAM (NULL pointer, mesh without adjacency, bad boundary or method,
+ * max_iter == 0, tol not positive, NaN/inf or below the Q16.16 minimum), SUBD_ERR_FACE_SIZE
+ * (diag.face: the first non-triangle), SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM (diag.bytes_needed),
+ * SUBD_ERR_RANGE (a control point or error leaves the Q16.16 range, or is not finite in
+ * float32). On failure the arena is back where it was and *pos and *result are untouched;
+ * on success only V stays in the arena. */
 int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_real **pos,
              subd_pia_result *result, subd_diag *d);
 

@@ -185,4 +185,14 @@ int64_t subd_sin_turns_q62(int32_t num, int32_t den);
  * correctly rounded, ties to even; Q16.16 ties away from zero. */
 subd_real subd_real_from_q62(int64_t q);
 
+/* Deterministic square root (src/sqrt.c; no libm). Float32: correctly rounded, so
+ * bit-identical to IEEE sqrt for every input >= 0 (-0 gives -0, +inf gives +inf,
+ * subnormals included); a negative input or -inf gives the quiet NaN 0x7fc00000 and a NaN
+ * is returned quieted. Q16.16: the nearest Q16.16 value to the square root (ties cannot
+ * occur); a negative input gives 0. Integer arithmetic only, about 32 loop steps. */
+subd_real subd_sqrt(subd_real x);
+
+/* Integer square root of x rounded to nearest (saturating at 2^32 - 1), digit by digit. */
+uint32_t subd_isqrt64(uint64_t x);
+
 #endif

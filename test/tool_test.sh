@@ -243,6 +243,42 @@ fi
 run "$FLOAT" info --arena 64k --stats test/data/icosahedron.obj
 is 0 && grep -q '"arena_budget":65536' "$T/out"; check $? "--arena accepts a k suffix"
 
+# ---------------------------------------------------------------- scheme commands
+# Counts checked against closed forms (Loop: V' = V + E, F' = 4F; Doo-Sabin: V' = corners,
+# F' = F + E + V on a closed mesh), geometry against known shapes.
+run "$FLOAT" loop -l 2 test/data/icosahedron.obj -o "$T/ico2.obj" --stats
+is 0 && json_ok "$T/out" && [ "$(json_num vertices)" = 162 ] && [ "$(json_num faces)" = 320 ] &&
+    [ "$(json_num arena_planned)" = "$(json_num arena_used)" ]
+check $? "loop -l 2 icosahedron: 162 vertices, 320 faces, arena used = planned"
+run "$FIXED" loop -l 2 --boundary bspline test/data/hexfan.obj -o "$T/hex2.off"
+is 0 && [ "$(sed -n 2p "$T/hex2.off" | cut -d' ' -f1-2)" = "61 96" ]
+check $? "subd-fixed loop -l 2 --boundary bspline hexfan: 61 vertices, 96 faces"
+run "$FLOAT" loop -l 1 --crease-angle 60 demo/cube_tri.obj -o "$T/cube1.obj"
+is 0 && grep -q "^subd: 12 crease edge" "$T/err"; check $? "loop --crease-angle 60 on a triangulated cube tags its 12 cube edges, not the diagonals"
+run "$FLOAT" loop test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && err_starts "test/data/cube_quad.obj"; check $? "loop on quads: exit 2 naming the input"
+run "$FLOAT" quasi48 -l 2 demo/torus_12x6.obj -o "$T/q.obj" --stats
+is 0 && json_ok "$T/out" && [ "$(json_num faces)" = 576 ]; check $? "quasi48 -l 2 on the 12x6 torus: every face split twice (576)"
+run "$FLOAT" alpha --kernel cos --alpha 1/4 -l 5 demo/square.obj -o "$T/circle.xyz"
+is 0 && awk 'BEGIN { n = 0 } NF == 3 { x[n] = $1; y[n] = $2; n++ }
+    END { if (n != 129 || x[0] != x[128] || y[0] != y[128]) exit 1
+          for (i = 0; i + 1 < n; i++) { j = i + 1; mx = (x[i] + x[j]) / 2; my = (y[i] + y[j]) / 2
+              r = sqrt(mx * mx + my * my); if (r < 1 - 1e-6 || r > 1 + 1e-6) exit 1 }
+          exit 0 }' "$T/circle.xyz"
+check $? "alpha cos kernel on the square: 128 points (closed), every edge midpoint on the unit circle"
+run "$FLOAT" alpha -l 1 test/data/cube_quad.obj -o "$T/ds.obj" --stats
+is 0 && [ "$(json_num vertices)" = 24 ] && [ "$(json_num faces)" = 26 ]; check $? "alpha (Doo-Sabin type) on the cube: 24 vertices, 26 faces"
+run "$FLOAT" limit --normals test/data/icosahedron.obj -o "$T/lim.obj"
+is 0 && [ "$(grep -c '^vn ' "$T/lim.obj")" = 12 ]; check $? "limit --normals: one vn per vertex"
+run "$FLOAT" pia --tol 1e-4 test/data/icosahedron.obj -o "$T/pia.obj" --stats
+is 0 && json_ok "$T/out" && grep -q '"converged":true' "$T/out"; check $? "pia --tol 1e-4 on the icosahedron converges"
+usage_case_pre() { run "$FLOAT" "$@"; is 1; }
+usage_case_pre loop --boundary sideways test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --boundary sideways: exit 1"
+usage_case_pre quasi48 --boundary paper test/data/icosahedron.obj -o "$T/x.obj"; check $? "quasi48 --boundary paper: exit 1"
+usage_case_pre alpha --stiffness -1 demo/square.obj -o "$T/x.obj"; check $? "alpha --stiffness -1 (diverges): exit 1"
+usage_case_pre pia test/data/icosahedron.obj -o "$T/x.obj"; check $? "pia without --tol: exit 1"
+usage_case_pre loop --tol 1 test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --tol (not its option): exit 1"
+
 # ---------------------------------------------------------------- usage errors (exit 1)
 usage_case() { # DESCRIPTION ARGS...
     d=$1

@@ -1,5 +1,6 @@
-/* Firmware demo: what a device build of tinysubd does, inside one static arena, with the
- * counts, arena bytes and instruction counts it printed. Run by `make demo` under QEMU on
+/* Firmware demo: what a device build of tinysubd does, inside one static arena: read a mesh
+ * from OBJ text, then Loop subdivision (3 levels), Loop limit positions and normals, and
+ * quasi 4-8 subdivision of it, printing counts, arena bytes and instruction counts. Run by `make demo` under QEMU on
  * both targets (Cortex-M4F float32, Cortex-M3 Q16.16). */
 #include "subd.h"
 #include "print.h"
@@ -7,7 +8,7 @@
 
 /* The whole memory budget of the demo. The plan calls below say exactly how much of it
  * each step needs; the demo checks before it builds. */
-static uint8_t arena_buf[16384] __attribute__((aligned(8)));
+static uint8_t arena_buf[96 * 1024] __attribute__((aligned(8)));
 
 static const char icosahedron_obj[] =
     "# regular icosahedron (vertices (0, +-1, +-p) cyclically, p = golden ratio)\n"
@@ -27,11 +28,107 @@ static void kv(const char *key, uint32_t v)
     print_nl();
 }
 
+/* Marks the arena and starts a new peak measurement there, so each step's peak can be
+ * compared with its own plan. */
+static uint32_t start_measure(subd_arena *a)
+{
+    subd_arena_reset_peak(a);
+    return subd_arena_mark(a);
+}
+
+static int report_error(int st, const subd_diag *d)
+{
+    print_str("  error: ");
+    print_str(subd_status_str(st));
+    if (st == SUBD_ERR_NOMEM) {
+        print_str(", needs ");
+        print_u32(d->bytes_needed);
+        print_str(" bytes");
+    }
+    print_nl();
+    return st;
+}
+
+/* Loop subdivision, level 3, of the mesh: plan, check the budget, run, report. */
+static int demo_loop(subd_arena *arena, const subd_mesh *in)
+{
+    subd_loop_opts o;
+    subd_mesh out;
+    subd_diag d;
+    uint32_t plan, t0, t1, mark = start_measure(arena), insns;
+    int st;
+    o.levels = 3;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    print_str("Loop subdivision, 3 levels:\n");
+    if ((st = subd_loop_plan(in, &o, &plan)) != SUBD_OK) return st;
+    kv("arena bytes planned", plan);
+    if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
+    t0 = port_cycles();
+    st = subd_loop(arena, in, &o, &out, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    kv("arena bytes used (peak)", arena->peak - mark);
+    kv("output vertices", out.num_verts);
+    kv("output faces", out.num_faces);
+    kv("instructions", insns);
+    kv("instructions per output face", insns / out.num_faces);
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}
+
+static int demo_limit(subd_arena *arena, const subd_mesh *in)
+{
+    subd_real *pos = 0, *nrm = 0;
+    subd_diag d;
+    uint32_t plan, t0, t1, mark = start_measure(arena);
+    int st;
+    print_str("Loop limit positions and normals:\n");
+    if ((st = subd_loop_limit_plan(in, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan)) != SUBD_OK) return st;
+    kv("arena bytes planned", plan);
+    t0 = port_cycles();
+    st = subd_loop_limit(arena, in, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    kv("arena bytes used (peak)", arena->peak - mark);
+    kv("instructions per vertex", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK / in->num_verts);
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}
+
+static int demo_quasi48(subd_arena *arena, const subd_mesh *in)
+{
+    subd_q48_opts o;
+    subd_mesh out;
+    subd_diag d;
+    uint32_t plan, t0, t1, mark = start_measure(arena), insns;
+    int st;
+    o.steps = 4;
+    o.boundary = SUBD_Q48_BOUNDARY_FIXED;
+    o.flags = 0;
+    o.len_bits = 0;
+    print_str("quasi 4-8 subdivision, 4 binary steps:\n");
+    if ((st = subd_quasi48_plan(in, &o, &plan)) != SUBD_OK) return st;
+    kv("arena bytes planned", plan);
+    if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
+    t0 = port_cycles();
+    st = subd_quasi48(arena, in, &o, &out, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    kv("arena bytes used (peak)", arena->peak - mark);
+    kv("output faces", out.num_faces);
+    kv("instructions per output face", insns / out.num_faces);
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}
+
 static int demo_icosahedron(subd_arena *arena)
 {
     subd_mesh m;
     subd_diag d;
-    uint32_t plan, t0, t1, mark = subd_arena_mark(arena);
+    uint32_t plan, t0, t1, mark = start_measure(arena);
     int st = subd_obj_plan(icosahedron_obj, sizeof icosahedron_obj - 1u, &plan, &d);
     print_str("icosahedron from OBJ text:\n");
     if (st != SUBD_OK) return st;
@@ -41,12 +138,10 @@ static int demo_icosahedron(subd_arena *arena)
     st = subd_obj_read(arena, icosahedron_obj, sizeof icosahedron_obj - 1u, &m, &d);
     t1 = port_cycles();
     if (st != SUBD_OK) {
-        print_str("  error: ");
-        print_str(subd_status_str(st));
-        print_str(" at line ");
+        print_str("  at line ");
         print_u32(d.line);
         print_nl();
-        return st;
+        return report_error(st, &d);
     }
     kv("arena bytes used (peak)", arena->peak - mark);
     kv("vertices", m.num_verts);
@@ -57,6 +152,10 @@ static int demo_icosahedron(subd_arena *arena)
     print_nl();
     kv("valence of vertex 0", subd_vertex_valence(&m, 0));
     kv("instructions (parse + validate + adjacency)", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK);
+    /* the schemes work on the mesh just read, above it in the same arena */
+    if ((st = demo_loop(arena, &m)) != SUBD_OK) return st;
+    if ((st = demo_limit(arena, &m)) != SUBD_OK) return st;
+    if ((st = demo_quasi48(arena, &m)) != SUBD_OK) return st;
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }

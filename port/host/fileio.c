@@ -98,6 +98,7 @@ host_format host_format_of(const char *path)
     if (ends_with_ci(path, ".obj")) return HOST_FMT_OBJ;
     if (ends_with_ci(path, ".off")) return HOST_FMT_OFF;
     if (ends_with_ci(path, ".png")) return HOST_FMT_PNG;
+    if (ends_with_ci(path, ".xyz")) return HOST_FMT_XYZ;
     return HOST_FMT_UNKNOWN;
 }
 
@@ -107,6 +108,7 @@ const char *host_format_name(host_format f)
     case HOST_FMT_OBJ: return "obj";
     case HOST_FMT_OFF: return "off";
     case HOST_FMT_PNG: return "png";
+    case HOST_FMT_XYZ: return "xyz";
     default: return "unknown";
     }
 }

@@ -53,7 +53,39 @@ typedef struct tool_opts {
     uint32_t levels;
     int render_opt_given; /* any of --size/--yaw/--pitch/--no-edges */
     render_opts ropt;
+    /* scheme options */
+    const char *boundary_name;   /* --boundary, interpreted by the command               */
+    subd_loop_boundary boundary; /* loop/limit/pia: paper (default) | bspline             */
+    subd_q48_boundary q48_boundary; /* quasi48: fixed (default) | smooth                  */
+    int no_smooth;               /* --no-smooth (quasi48): refinement only                */
+    int tag_boundary;            /* --tag-boundary: tag boundary edges as creases first   */
+    int has_crease_angle;
+    double crease_deg;           /* --crease-angle DEG: tag sharper edges as creases      */
+    int normals;                 /* --normals (limit): write limit normals as OBJ vn      */
+    double tol;                  /* --tol T (pia)                                         */
+    uint32_t max_iter;           /* --max-iter K (pia)                                    */
+    subd_pia_method method;      /* --method paper|fast (pia)                             */
+    subd_alpha_opts alpha;       /* --order, --kernel, --alpha, --stiffness (alpha)       */
+    unsigned given;              /* OPT_* bits of the scheme options given                */
 } tool_opts;
+
+/* Scheme options, as bits: each command lists the ones it accepts. */
+#define OPT_BOUNDARY 0x01u
+#define OPT_CREASE 0x02u
+#define OPT_NORMALS 0x04u
+#define OPT_TOL 0x08u
+#define OPT_MAX_ITER 0x10u
+#define OPT_METHOD 0x20u
+#define OPT_Q48 0x40u /* --no-smooth, --tag-boundary, --boundary fixed|smooth */
+#define OPT_ALPHA 0x80u /* --order, --kernel, --alpha, --stiffness */
+
+/* What a scheme produced besides the output mesh: optional per-vertex normals (written as
+ * OBJ vn) and extra --stats members (a JSON fragment without braces, e.g. "iterations":9). */
+typedef struct scheme_extra {
+    subd_real *normals;
+    char json[256];
+    void *host_mem; /* output arrays a scheme built in host memory (freed at exit) */
+} scheme_extra;
 
 /* Command flags. */
 #define CMD_OUTPUT_NONE 0x01u     /* takes no -o (report only)                              */
@@ -70,11 +102,13 @@ typedef struct command {
     unsigned flags;
     const char *scheme;       /* paper scheme name for --stats, NULL for plain commands  */
     uint32_t default_levels;  /* used when -l is not given (CMD_LEVELS)                  */
+    unsigned options;         /* OPT_* scheme options the command accepts                */
     /* Scheme commands: exact arena bytes run() needs for this input (after the input mesh,
      * which stays in the arena), and the operation itself (arena, const input -> output).
      * Both NULL: the output is the input mesh. Return a subd_status, diag filled. */
     int (*plan)(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d);
-    int (*run)(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, subd_diag *d);
+    int (*run)(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+               subd_diag *d);
     /* Human-readable report (info), written to `f`. */
     int (*report)(FILE *f, const struct tool_run *r);
 } command;
@@ -91,29 +125,248 @@ typedef struct tool_run {
     uint32_t used;         /* measured peak of that (virtual) arena                       */
     double lib_ns;         /* time spent in library calls (parse, build, plan, run)       */
     uint32_t out_bytes;    /* bytes written to OUTPUT                                     */
+    scheme_extra extra;
     int out_width, out_height;
 } tool_run;
 
 static int info_report(FILE *f, const tool_run *r);
 
-/* To add a scheme (e.g. loop): write
- *   static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
- *   { return subd_loop_plan(in, o->levels, bytes, d); }
- *   static int loop_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out,
- *                       subd_diag *d)
- *   { return subd_loop(a, in, o->levels, out, d); }
- * and add a row
- *   {"loop", "[-l N] INPUT -o OUTPUT", "Loop subdivision (triangles)", CMD_OUTPUT_REQUIRED |
- *    CMD_LEVELS, "loop", 1, loop_plan, loop_run, NULL},
- * Scheme-specific options go into tool_opts and parse_option(). */
+/* ------------------------------------------------------------------------------------ */
+/* Scheme commands: a plan and a run function each (the common path does the rest).      */
+
+static subd_loop_opts loop_opts_of(const tool_opts *o)
+{
+    subd_loop_opts lo;
+    lo.levels = o->levels;
+    lo.boundary = o->boundary;
+    lo.flags = 0;
+    return lo;
+}
+
+static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_loop_opts lo = loop_opts_of(o);
+    (void)d;
+    return subd_loop_plan(in, &lo, bytes);
+}
+
+static int loop_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                    subd_diag *d)
+{
+    subd_loop_opts lo = loop_opts_of(o);
+    (void)x;
+    return subd_loop(a, in, &lo, out, d);
+}
+
+static int limit_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    (void)d;
+    return subd_loop_limit_plan(in, o->boundary, o->normals, bytes);
+}
+
+/* The limit and interpolation commands move the vertices: the output is the input's
+ * topology with new positions. */
+static int limit_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                     subd_diag *d)
+{
+    subd_real *pos = NULL;
+    int st = subd_loop_limit(a, in, o->boundary, &pos, o->normals ? &x->normals : NULL, d);
+    if (st != SUBD_OK) return st;
+    *out = *in;
+    out->pos = pos;
+    return SUBD_OK;
+}
+
+static subd_pia_opts pia_opts_of(const tool_opts *o)
+{
+    subd_pia_opts po;
+    po.boundary = o->boundary;
+    po.tol = host_real_from_double(o->tol);
+    po.max_iter = o->max_iter;
+    po.method = o->method;
+    return po;
+}
+
+static int pia_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_pia_opts po = pia_opts_of(o);
+    (void)d;
+    return subd_pia_plan(in, &po, bytes);
+}
+
+static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                   subd_diag *d)
+{
+    subd_pia_opts po = pia_opts_of(o);
+    subd_pia_result res;
+    subd_real *pos = NULL;
+    int st = subd_pia(a, in, &po, &pos, &res, d);
+    if (st != SUBD_OK) return st;
+    *out = *in;
+    out->pos = pos;
+    snprintf(x->json, sizeof x->json,
+             "\"method\":\"%s\",\"tol\":%.9g,\"iterations\":%lu,\"max_err\":%.9g,\"mean_err\":%.9g,\"converged\":%s",
+             o->method == SUBD_PIA_FAST ? "fast" : "paper", o->tol, (unsigned long)res.iterations,
+             host_real_to_double(res.max_err), host_real_to_double(res.mean_err), res.converged ? "true" : "false");
+    if (!o->stats)
+        fprintf(stderr, "pia: %lu iterations, max error %.6g, mean error %.6g, %s\n", (unsigned long)res.iterations,
+                host_real_to_double(res.max_err), host_real_to_double(res.mean_err),
+                res.converged ? "converged" : "NOT converged (raise --max-iter or --tol)");
+    return SUBD_OK;
+}
+
+static subd_q48_opts q48_opts_of(const tool_opts *o)
+{
+    subd_q48_opts qo;
+    qo.steps = o->levels;
+    qo.boundary = o->q48_boundary;
+    qo.flags = o->no_smooth ? SUBD_Q48_NO_SMOOTH : 0u;
+    qo.len_bits = 0;
+    return qo;
+}
+
+static int q48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_q48_opts qo = q48_opts_of(o);
+    (void)d;
+    return subd_quasi48_plan(in, &qo, bytes);
+}
+
+static int q48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                   subd_diag *d)
+{
+    subd_q48_opts qo = q48_opts_of(o);
+    int st = subd_quasi48(a, in, &qo, out, d);
+    if (st == SUBD_OK)
+        snprintf(x->json, sizeof x->json, "\"binary_steps\":%lu,\"smoothing\":%s,\"boundary\":\"%s\"",
+                 (unsigned long)o->levels, o->no_smooth ? "false" : "true",
+                 o->q48_boundary == SUBD_Q48_BOUNDARY_SMOOTH ? "smooth" : "fixed");
+    return st;
+}
+
+/* alpha: the semi-stationary operators. A mesh with faces gets the Doo-Sabin type surface
+ * operator; a mesh of polylines (OBJ l records) gets the curve operator S_k once per
+ * polyline, closed when its last index repeats its first. Curves are refined one at a time
+ * in the arena (the plan is the largest single curve) and collected in host memory. */
+static int alpha_is_closed(const subd_mesh *in, uint32_t l, uint32_t *m)
+{
+    uint32_t s = in->line_start[l], e = in->line_start[l + 1u];
+    *m = e - s;
+    if (*m >= 4u && in->line_vert[s] == in->line_vert[e - 1u]) {
+        (*m)--;
+        return 1;
+    }
+    return 0;
+}
+
+static int alpha_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    uint32_t l, most = 0, b, pts, m;
+    int st;
+    (void)d;
+    if (in->num_faces) return subd_alpha_surface_plan(in, &o->alpha, bytes);
+    if (!in->num_lines) return SUBD_ERR_EMPTY;
+    for (l = 0; l < in->num_lines; l++) {
+        int closed = alpha_is_closed(in, l, &m);
+        st = subd_alpha_curve_plan(m, closed, &o->alpha, &b, &pts);
+        if (st != SUBD_OK) return st;
+        /* room for the gathered input points too */
+        b += (3u * m * (uint32_t)sizeof(subd_real) + 7u) & ~7u;
+        if (b > most) most = b;
+    }
+    *bytes = most;
+    return SUBD_OK;
+}
+
+static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                     subd_diag *d)
+{
+    uint32_t l, total = 0, k, m, pts, b;
+    int32_t continuity = 1;
+    subd_real *pos;
+    uint32_t *lstart, *lvert;
+    int st;
+    if (in->num_faces) {
+        subd_alpha_surface_info info;
+        st = subd_alpha_surface(a, in, &o->alpha, out, &info, d);
+        if (st == SUBD_OK)
+            snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"surface\"",
+                     (unsigned long)o->alpha.order, (long)info.continuity);
+        return st;
+    }
+    for (l = 0; l < in->num_lines; l++) {
+        int closed = alpha_is_closed(in, l, &m);
+        if ((st = subd_alpha_curve_plan(m, closed, &o->alpha, &b, &pts)) != SUBD_OK) return st;
+        total += pts + (uint32_t)closed;
+    }
+    x->host_mem = malloc((size_t)total * (3u * sizeof(subd_real) + sizeof(uint32_t)) +
+                         (in->num_lines + 1u) * sizeof(uint32_t) + sizeof(uint32_t));
+    if (!x->host_mem) return SUBD_ERR_NOMEM;
+    pos = (subd_real *)x->host_mem;
+    lvert = (uint32_t *)(void *)(pos + 3u * total);
+    lstart = lvert + total;
+    lstart[0] = 0;
+    total = 0;
+    for (l = 0; l < in->num_lines; l++) {
+        uint32_t mark = subd_arena_mark(a), s = in->line_start[l];
+        int closed = alpha_is_closed(in, l, &m);
+        subd_alpha_curve_out co;
+        subd_real *p = (subd_real *)subd_arena_alloc(a, 3u * m * (uint32_t)sizeof(subd_real));
+        if (!p) return SUBD_ERR_NOMEM;
+        for (k = 0; k < 3u * m; k++) p[k] = in->pos[3u * in->line_vert[s + k / 3u] + k % 3u];
+        st = subd_alpha_curve(a, p, m, closed, &o->alpha, &co, d);
+        if (st != SUBD_OK) {
+            d->polyline = l;
+            return st;
+        }
+        for (k = 0; k < 3u * co.num_points; k++) pos[3u * total + k] = co.pos[k];
+        for (k = 0; k < co.num_points; k++) lvert[lstart[l] + k] = total + k;
+        if (closed) lvert[lstart[l] + co.num_points] = total; /* repeat the first point */
+        lstart[l + 1u] = lstart[l] + co.num_points + (uint32_t)closed;
+        total += co.num_points;
+        if (co.continuity < continuity) continuity = co.continuity;
+        subd_arena_rewind(a, mark);
+    }
+    memset(out, 0, sizeof *out);
+    out->num_verts = total;
+    out->pos = pos;
+    out->face_start = lstart; /* any valid pointer: there are no faces */
+    out->num_lines = in->num_lines;
+    out->num_line_verts = lstart[in->num_lines];
+    out->line_start = lstart;
+    out->line_vert = lvert;
+    snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"curves\"",
+             (unsigned long)o->alpha.order, (long)continuity);
+    return SUBD_OK;
+}
+
+#define LOOP_OPTS (OPT_BOUNDARY | OPT_CREASE)
 static const command commands[] = {
     {"info", "INPUT", "counts, components, Euler characteristic, genus,\n"
                       "valences and bounding box of a mesh",
-     CMD_OUTPUT_NONE, NULL, 0, NULL, NULL, info_report},
+     CMD_OUTPUT_NONE, NULL, 0, 0, NULL, NULL, info_report},
     {"convert", "INPUT -o OUTPUT", "write the mesh in OUTPUT's format",
-     CMD_OUTPUT_REQUIRED, NULL, 0, NULL, NULL, NULL},
+     CMD_OUTPUT_REQUIRED, NULL, 0, 0, NULL, NULL, NULL},
     {"render", "INPUT -o OUTPUT.png", "draw the mesh (shaded, with edges) as a PNG",
-     CMD_OUTPUT_REQUIRED | CMD_PNG_ONLY, NULL, 0, NULL, NULL, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_PNG_ONLY, NULL, 0, 0, NULL, NULL, NULL},
+    {"loop", "[-l N] INPUT -o OUTPUT", "Loop subdivision of a triangle mesh (default 1 level);\n"
+                                       "--boundary paper|bspline, --crease-angle DEG",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "loop", 1, LOOP_OPTS, loop_plan, loop_run, NULL},
+    {"limit", "INPUT -o OUTPUT", "control vertices moved to their Loop limit positions;\n"
+                                 "--normals adds limit normals (OBJ vn)",
+     CMD_OUTPUT_REQUIRED, "limit", 0, LOOP_OPTS | OPT_NORMALS, limit_plan, limit_run, NULL},
+    {"pia", "--tol T INPUT -o OUTPUT", "progressive interpolation: a control mesh whose Loop\n"
+                                       "limit surface passes through INPUT's vertices;\n"
+                                       "--max-iter K (default 100), --method paper|fast",
+     CMD_OUTPUT_REQUIRED, "pia", 0, LOOP_OPTS | OPT_TOL | OPT_MAX_ITER | OPT_METHOD, pia_plan, pia_run, NULL},
+    {"quasi48", "[-l N] INPUT -o OUTPUT", "quasi 4-8 subdivision, N binary steps (default 2 = one\n"
+                                          "4-8 refinement); --no-smooth, --boundary fixed|smooth,\n"
+                                          "--tag-boundary, --crease-angle DEG",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, OPT_Q48 | OPT_CREASE, q48_plan, q48_run, NULL},
+    {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"
+                                        "or the Doo-Sabin type surface; --order K, --kernel\n"
+                                        "bspline|cos|poly|cosh, --alpha A, --stiffness S",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, OPT_ALPHA, alpha_plan, alpha_run, NULL},
 };
 #define NUM_COMMANDS (sizeof commands / sizeof commands[0])
 
@@ -146,7 +399,8 @@ static void usage(FILE *f)
     }
     fprintf(f,
             "\nformats, by extension (any case): .obj and .off are read and written;\n"
-            ".png is written (a rendering of the result).\n"
+            ".png is written (a rendering of the result); .xyz is written as plain 'x y z'\n"
+            "lines, polylines separated by a blank line (for CNC use).\n"
             "\noptions:\n"
             "  -o FILE          output file\n"
             "  -l N             subdivision levels, 0..%d (scheme commands)\n"
@@ -156,6 +410,20 @@ static void usage(FILE *f)
             "                   human report of 'info' then goes to stderr\n"
             "  --arena BYTES    simulate a device arena of BYTES bytes (suffix k = 1024,\n"
             "                   m = 1048576): exit 3 when the command needs more\n"
+            "  --boundary R     loop/limit/pia: boundary and crease rule, paper (the paper's\n"
+            "                   section 4, default) or bspline (midpoints, as OpenSubdiv and\n"
+            "                   CGAL); quasi48: fixed (default) or smooth boundary vertices\n"
+            "  --no-smooth      (quasi48) refinement only, no smoothing\n"
+            "  --tag-boundary   (quasi48) tag boundary edges as creases (they stay put)\n"
+            "  --crease-angle D tag edges whose faces meet at more than D degrees as creases\n"
+            "  --normals        (limit) also write unit limit normals as OBJ vn records\n"
+            "  --tol T          (pia) stop when every limit point is within T of its input vertex\n"
+            "  --max-iter K     (pia) at most K iterations (default 100)\n"
+            "  --method M       (pia) paper (V += P - LV) or fast (default; see src/pia.c)\n"
+            "  --order K        (alpha) operator order S_K, 2..8 (surfaces: 2)\n"
+            "  --kernel K       (alpha) bspline (default), cos (C-curves: circles), poly, cosh\n"
+            "  --alpha A        (alpha) angle as a fraction of a turn N/D (1/8) or degrees (45deg)\n"
+            "  --stiffness S    (alpha) s = f(0), default 1; s <= -1 diverges (rejected)\n"
             "  --size WxH       picture size in pixels (default 800x600, up to 8192x8192)\n"
             "  --yaw DEG        view rotation about the up axis (default 30)\n"
             "  --pitch DEG      view elevation, -90..90 (default 20)\n"
@@ -229,6 +497,35 @@ static int parse_double(const char *s, double lo, double hi, double *out)
     return 0;
 }
 
+/* alpha as an exact fraction of a turn: "N/D" or "DEGdeg" (degrees with up to 4 decimals,
+ * turned into DEG * 10^4 / 3600000). */
+static int parse_alpha(const char *s, int32_t *num, int32_t *den)
+{
+    char *end;
+    long n, dd;
+    size_t len = strlen(s);
+    if (len > 3 && strcmp(s + len - 3, "deg") == 0) {
+        double deg = strtod(s, &end);
+        if (end != s + len - 3 || !(deg >= -36000.0 && deg <= 36000.0)) return -1;
+        *num = (int32_t)(deg * 1e4 + (deg < 0 ? -0.5 : 0.5));
+        *den = 3600000;
+        return 0;
+    }
+    n = strtol(s, &end, 10);
+    if (end == s) return -1;
+    if (*end == '\0') { dd = 1; }
+    else {
+        const char *q = end + 1;
+        if (*end != '/') return -1;
+        dd = strtol(q, &end, 10);
+        if (end == q || *end != '\0') return -1;
+    }
+    if (dd <= 0 || dd > 1000000000L || n < -1000000000L || n > 1000000000L) return -1;
+    *num = (int32_t)n;
+    *den = (int32_t)dd;
+    return 0;
+}
+
 static int parse_size(const char *s, int *w, int *h)
 {
     const char *x = strchr(s, 'x');
@@ -253,6 +550,7 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     int i, no_more_options = 0;
     memset(o, 0, sizeof *o);
     render_opts_default(&o->ropt);
+    subd_alpha_opts_default(&o->alpha);
     for (i = 2; i < argc; i++) {
         const char *a = argv[i], *val = NULL, *eq;
         char name[32];
@@ -279,14 +577,21 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             usage(stdout);
             exit(EXIT_OK);
         }
-        if (strcmp(name, "--stats") == 0 || strcmp(name, "--no-edges") == 0) {
+        if (strcmp(name, "--stats") == 0 || strcmp(name, "--no-edges") == 0 || strcmp(name, "--normals") == 0 ||
+            strcmp(name, "--no-smooth") == 0 || strcmp(name, "--tag-boundary") == 0) {
             if (val) return usage_error("option '%s' takes no value", name);
             if (strcmp(name, "--stats") == 0) o->stats = 1;
+            else if (strcmp(name, "--normals") == 0) { o->normals = 1; o->given |= OPT_NORMALS; }
+            else if (strcmp(name, "--no-smooth") == 0) { o->no_smooth = 1; o->given |= OPT_Q48; }
+            else if (strcmp(name, "--tag-boundary") == 0) { o->tag_boundary = 1; o->given |= OPT_Q48; }
             else { o->ropt.edges = 0; o->render_opt_given = 1; }
             continue;
         }
         if (strcmp(name, "-o") && strcmp(name, "-l") && strcmp(name, "--arena") &&
-            strcmp(name, "--size") && strcmp(name, "--yaw") && strcmp(name, "--pitch"))
+            strcmp(name, "--size") && strcmp(name, "--yaw") && strcmp(name, "--pitch") &&
+            strcmp(name, "--boundary") && strcmp(name, "--crease-angle") && strcmp(name, "--tol") &&
+            strcmp(name, "--max-iter") && strcmp(name, "--method") && strcmp(name, "--order") &&
+            strcmp(name, "--kernel") && strcmp(name, "--alpha") && strcmp(name, "--stiffness"))
             return usage_error("unknown option '%s'", a);
         if (!val) {
             if (i + 1 >= argc) return usage_error("option '%s' needs a value", name);
@@ -301,6 +606,47 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             if (parse_u32(val, SUBD_MAX_LEVELS, &o->levels))
                 return usage_error("bad level count '%s' (expected 0..%d)", val, SUBD_MAX_LEVELS);
             o->has_levels = 1;
+        } else if (strcmp(name, "--boundary") == 0) {
+            o->boundary_name = val; /* checked below, once the command is known */
+        } else if (strcmp(name, "--crease-angle") == 0) {
+            if (parse_double(val, 0.0, 180.0, &o->crease_deg))
+                return usage_error("bad crease angle '%s' (degrees, 0..180)", val);
+            o->has_crease_angle = 1;
+            o->given |= OPT_CREASE;
+        } else if (strcmp(name, "--tol") == 0) {
+            if (parse_double(val, 0.0, 1e30, &o->tol) || !(o->tol > 0.0))
+                return usage_error("bad tolerance '%s' (a positive number, input units)", val);
+            o->given |= OPT_TOL;
+        } else if (strcmp(name, "--max-iter") == 0) {
+            if (parse_u32(val, 1000000u, &o->max_iter) || o->max_iter == 0)
+                return usage_error("bad iteration count '%s' (1..1000000)", val);
+            o->given |= OPT_MAX_ITER;
+        } else if (strcmp(name, "--method") == 0) {
+            if (strcmp(val, "paper") == 0) o->method = SUBD_PIA_PAPER;
+            else if (strcmp(val, "fast") == 0) o->method = SUBD_PIA_FAST;
+            else return usage_error("bad method '%s' (expected paper or fast)", val);
+            o->given |= OPT_METHOD;
+        } else if (strcmp(name, "--order") == 0) {
+            if (parse_u32(val, SUBD_ALPHA_MAX_ORDER, &o->alpha.order) || o->alpha.order < 2)
+                return usage_error("bad order '%s' (2..%u)", val, SUBD_ALPHA_MAX_ORDER);
+            o->given |= OPT_ALPHA;
+        } else if (strcmp(name, "--kernel") == 0) {
+            if (strcmp(val, "bspline") == 0) o->alpha.kernel = SUBD_ALPHA_BSPLINE;
+            else if (strcmp(val, "cos") == 0) o->alpha.kernel = SUBD_ALPHA_COS;
+            else if (strcmp(val, "poly") == 0) o->alpha.kernel = SUBD_ALPHA_POLY;
+            else if (strcmp(val, "cosh") == 0) o->alpha.kernel = SUBD_ALPHA_COSH;
+            else return usage_error("bad kernel '%s' (bspline, cos, poly or cosh)", val);
+            o->given |= OPT_ALPHA;
+        } else if (strcmp(name, "--alpha") == 0) {
+            if (parse_alpha(val, &o->alpha.alpha_num, &o->alpha.alpha_den))
+                return usage_error("bad alpha '%s' (a fraction of a turn N/D, e.g. 1/8, or degrees, e.g. 45deg)", val);
+            o->given |= OPT_ALPHA;
+        } else if (strcmp(name, "--stiffness") == 0) {
+            double sv;
+            if (parse_double(val, -1e4, 1e4, &sv)) return usage_error("bad stiffness '%s'", val);
+            if (sv <= -1.0) return usage_error("stiffness %s <= -1: the subdivision diverges (paper, table 1)", val);
+            o->alpha.stiffness = host_real_from_double(sv);
+            o->given |= OPT_ALPHA;
         } else if (strcmp(name, "--arena") == 0) {
             if (parse_bytes(val, &o->budget)) return usage_error("bad arena size '%s' (bytes, optional k or m suffix, < 4 GiB)", val);
             o->has_budget = 1;
@@ -324,7 +670,7 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         if (cmd->flags & CMD_OUTPUT_NONE) return usage_error("'%s' writes no output file (no -o)", cmd->name);
         o->out_format = host_format_of(o->output);
         if (o->out_format == HOST_FMT_UNKNOWN)
-            return usage_error("cannot write '%s': output must be .obj, .off or .png", o->output);
+            return usage_error("cannot write '%s': output must be .obj, .off, .png or .xyz", o->output);
         if ((cmd->flags & CMD_PNG_ONLY) && o->out_format != HOST_FMT_PNG)
             return usage_error("'%s' writes a .png picture", cmd->name);
     } else if (cmd->flags & CMD_OUTPUT_REQUIRED) {
@@ -332,7 +678,29 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     }
     if (o->render_opt_given && o->out_format != HOST_FMT_PNG)
         return usage_error("picture options (--size, --yaw, --pitch, --no-edges) need a .png output");
+    if (o->boundary_name) {
+        const char *b = o->boundary_name;
+        if (cmd->options & OPT_BOUNDARY) {
+            if (strcmp(b, "paper") == 0) o->boundary = SUBD_LOOP_BOUNDARY_PAPER;
+            else if (strcmp(b, "bspline") == 0) o->boundary = SUBD_LOOP_BOUNDARY_BSPLINE;
+            else return usage_error("bad boundary rule '%s' for '%s' (expected paper or bspline)", b, cmd->name);
+        } else if (cmd->options & OPT_Q48) {
+            if (strcmp(b, "fixed") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_FIXED;
+            else if (strcmp(b, "smooth") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_SMOOTH;
+            else return usage_error("bad boundary mode '%s' for '%s' (expected fixed or smooth)", b, cmd->name);
+        } else {
+            return usage_error("option --boundary does not apply to '%s'", cmd->name);
+        }
+    }
+    if (o->given & ~cmd->options) return usage_error("option not accepted by '%s' (see subd --help)", cmd->name);
+    if ((cmd->options & OPT_TOL) && !(o->given & OPT_TOL)) return usage_error("'%s' needs --tol T", cmd->name);
+    if (o->normals && o->out_format != HOST_FMT_OBJ) return usage_error("--normals needs an .obj output");
+    if (!(o->given & OPT_MAX_ITER)) o->max_iter = 100;
+    if (!(o->given & OPT_METHOD)) o->method = SUBD_PIA_FAST;
     if (!o->has_levels) o->levels = cmd->default_levels;
+    o->alpha.levels = o->levels;
+    if ((cmd->flags & CMD_LEVELS) && cmd->run && o->levels == 0)
+        return usage_error("'%s' needs at least one level (-l 1..%d)", cmd->name, SUBD_MAX_LEVELS);
     return EXIT_OK;
 }
 
@@ -574,13 +942,44 @@ static int write_png(tool_run *r)
     return EXIT_OK;
 }
 
+/* Plain points for CNC use: "x y z" per line in the library's exact decimal form; the
+ * points of each polyline in order with a blank line between polylines, or every vertex
+ * when there are no polylines. */
+static int write_xyz(tool_run *r)
+{
+    const subd_mesh *m = &r->out;
+    FILE *f = fopen(r->o.output, "w");
+    uint32_t l, c, nl = m->num_lines ? m->num_lines : 1u;
+    long n;
+    if (!f) return write_failed(r->o.output);
+    for (l = 0; l < nl; l++) {
+        uint32_t s = m->num_lines ? m->line_start[l] : 0u;
+        uint32_t e = m->num_lines ? m->line_start[l + 1u] : m->num_verts;
+        if (l) fputc('\n', f);
+        for (c = s; c < e; c++) {
+            uint32_t v = m->num_lines ? m->line_vert[c] : c, k;
+            for (k = 0; k < 3u; k++) {
+                char b[32];
+                uint32_t len = subd_real_format(m->pos[3u * v + k], b);
+                fwrite(b, 1, len, f);
+                fputc(k < 2u ? ' ' : '\n', f);
+            }
+        }
+    }
+    n = ftell(f);
+    if (ferror(f) | (fclose(f) != 0)) return write_failed(r->o.output);
+    r->out_bytes = n > 0 ? (uint32_t)n : 0u;
+    return EXIT_OK;
+}
+
 static int write_mesh(tool_run *r)
 {
     int (*writer)(const subd_mesh *, char *, uint32_t, uint32_t *) =
         (r->o.out_format == HOST_FMT_OBJ) ? subd_obj_write : subd_off_write;
     uint32_t len = 0;
     char *buf;
-    int st = writer(&r->out, NULL, 0, &len);
+    int st = r->extra.normals ? subd_obj_write_normals(&r->out, r->extra.normals, NULL, 0, &len)
+                              : writer(&r->out, NULL, 0, &len);
     if (st != SUBD_OK) {
         fprintf(stderr, "subd: %s: %s\n", r->o.output, subd_status_str(st));
         return st == SUBD_ERR_TOO_BIG ? EXIT_LIMIT : EXIT_OUTPUT;
@@ -590,7 +989,8 @@ static int write_mesh(tool_run *r)
                 r->o.output, (unsigned long)r->out.num_lines);
     buf = (char *)malloc((size_t)len + 1u);
     if (!buf) return out_of_memory();
-    st = writer(&r->out, buf, len, &len);
+    st = r->extra.normals ? subd_obj_write_normals(&r->out, r->extra.normals, buf, len, &len)
+                          : writer(&r->out, buf, len, &len);
     if (st != SUBD_OK) {
         free(buf);
         fprintf(stderr, "subd: %s: %s\n", r->o.output, subd_status_str(st));
@@ -654,8 +1054,10 @@ static void print_stats(FILE *f, const tool_run *r)
     fprintf(f, ",\"arena_budget\":");
     if (r->o.has_budget) fprintf(f, "%lu", (unsigned long)r->o.budget);
     else fprintf(f, "null");
-    fprintf(f, ",\"arena_planned\":%lu,\"arena_used\":%lu,\"time_ms\":%.3f}\n", (unsigned long)r->planned,
+    fprintf(f, ",\"arena_planned\":%lu,\"arena_used\":%lu,\"time_ms\":%.3f", (unsigned long)r->planned,
             (unsigned long)r->used, r->lib_ns / 1e6);
+    if (r->extra.json[0]) fprintf(f, ",%s", r->extra.json);
+    fprintf(f, "}\n");
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -681,6 +1083,17 @@ static int run_command(tool_run *r)
     r->planned = r->in.planned;
     r->used = r->in.arena.peak;
     r->out = r->in.mesh;
+    if (r->o.tag_boundary) {
+        uint32_t h;
+        for (h = 0; h < r->in.mesh.num_corners; h++)
+            if (r->in.mesh.twin[h] == SUBD_NONE) r->in.mesh.edge_tag[h] |= SUBD_ETAG_CREASE;
+    }
+    if (r->o.has_crease_angle) {
+        /* cos of the angle in whole hundredths of a degree, by the library's own cos */
+        int32_t hundredths = (int32_t)(r->o.crease_deg * 100.0 + 0.5);
+        uint32_t n = subd_mesh_tag_crease_angle(&r->in.mesh, subd_cos_turns(hundredths, 36000));
+        if (!r->o.stats) fprintf(stderr, "subd: %lu crease edge(s) tagged\n", (unsigned long)n);
+    }
 
     if (cmd->run) {
         uint32_t bytes = 0, base = r->in.arena.used, need;
@@ -700,7 +1113,7 @@ static int run_command(tool_run *r)
             a = &r->work;
         }
         t0 = host_now_ns();
-        st = cmd->run(a, &r->in.mesh, &r->o, &r->out, &d);
+        st = cmd->run(a, &r->in.mesh, &r->o, &r->out, &r->extra, &d);
         r->lib_ns += host_now_ns() - t0;
         if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
         if (r->o.has_budget) {
@@ -711,7 +1124,8 @@ static int run_command(tool_run *r)
     }
 
     if (r->o.output) {
-        st = (r->o.out_format == HOST_FMT_PNG) ? write_png(r) : write_mesh(r);
+        st = (r->o.out_format == HOST_FMT_PNG) ? write_png(r)
+             : (r->o.out_format == HOST_FMT_XYZ) ? write_xyz(r) : write_mesh(r);
         if (st != EXIT_OK) return st;
     }
     if (cmd->report) {
@@ -750,6 +1164,7 @@ int main(int argc, char **argv)
     rc = run_command(&r);
     host_mesh_free(&r.in);
     free(r.work_mem);
+    free(r.extra.host_mem);
     if (fflush(stdout) != 0 && rc == EXIT_OK) {
         fprintf(stderr, "subd: cannot write standard output: %s\n", strerror(errno));
         rc = EXIT_OUTPUT;

@@ -1,0 +1,39 @@
+#!/bin/sh
+# Host half of `make demo`: runs the subd tool on the demo meshes, one picture per result.
+# usage: demo/host_demo.sh BIN_DIR OUT_DIR
+bin=$1 out=$2
+set -e
+mkdir -p "$out"
+run() { # picture name, then the subd arguments
+    name=$1; shift
+    "$bin/subd" "$@" -o "$out/$name.png"
+    echo "wrote $out/$name.png  (subd $*)"
+}
+top="--pitch 0 --yaw 0 --size 400x400"
+
+echo "-- input meshes"
+run torus_tri render test/data/torus_tri.obj
+run spot_control_mesh render test/data/spot_control_mesh.obj
+
+echo "-- Loop subdivision, limit positions, progressive interpolation"
+run loop_icosahedron_l3 loop -l 3 test/data/icosahedron.obj
+run loop_hexfan_l3_paper loop -l 3 --boundary paper test/data/hexfan.obj $top
+run loop_cube_creases_l3 loop -l 3 --crease-angle 60 demo/cube_tri.obj
+run limit_icosahedron limit test/data/icosahedron.obj
+run pia_icosahedron_l3 pia --tol 1e-5 test/data/icosahedron.obj
+
+echo "-- quasi 4-8 subdivision (the paper's figures)"
+for n in 3 4 5 6 9 12; do
+    run quasi48_fan${n}_4steps quasi48 -l 4 --no-smooth demo/fan$n.obj $top
+done
+run quasi48_warped_hexagon_1step quasi48 -l 1 --no-smooth demo/warped_hexagon.obj $top
+run quasi48_torus_4steps quasi48 -l 4 demo/torus_12x6.obj
+run quasi48_spot_2steps quasi48 -l 2 demo/spot_triangulated.obj
+
+echo "-- semi-stationary alpha-subdivision"
+run alpha_circle_from_square alpha --kernel cos --alpha 1/4 -l 5 demo/square.obj $top
+run alpha_bspline_square alpha --kernel bspline -l 5 demo/square.obj $top
+"$bin/subd" alpha --kernel cos --alpha 1/4 -l 5 demo/square.obj -o "$out/alpha_circle.xyz"
+echo "wrote $out/alpha_circle.xyz  (points for a CNC controller)"
+run alpha_ellipse alpha --kernel cos --alpha 1/4 -l 5 demo/ellipse_control.obj $top
+run alpha_doo_sabin_spot alpha -l 2 test/data/spot_control_mesh.obj

@@ -1,0 +1,763 @@
+/* Progressive interpolation with Loop subdivision surfaces.
+ *
+ * Paper: F. Cheng, F. Fan, S. Lai, C. Huang, J. Wang, J. Yong, "Loop subdivision surface
+ * based progressive interpolation" (../shared/papers/loop-progressive-interpolation.txt),
+ * sections 2-4.
+ *
+ * Given the vertices P of a triangle mesh, find control points V with the same topology
+ * whose Loop limit positions L V are P. L is the limit-position operator
+ * (subd_loop_limit_apply, loop_limit.c): formula (3) at smooth vertices (and darts), the
+ * six boundary masks of section 4 (or the B-spline mask 1/6, 2/3, 1/6) on boundaries and
+ * creases, identity at corners and isolated vertices.
+ *
+ * SUBD_PIA_PAPER: the paper's method (section 2, formulas (1) and (2)):
+ *     V^0 = P,   D^k = P - L V^k,   V^{k+1} = V^k + D^k          (pia_step_paper)
+ * Section 3: D^{k+1} = (I - B) D^k with B = D S (D diagonal positive, S symmetric positive
+ * definite), so B's eigenvalues are in (0, 1] (theorem 2) and the error shrinks by
+ * max |1 - lambda| per iteration. Section 4, open meshes: a boundary vertex's limit depends
+ * only on boundary vertices, so the boundary is interpolated first (phase 1: only vertices
+ * tagged SUBD_VTAG_BOUNDARY move, until their error is <= tol), then the interior with the
+ * boundary fixed (phase 2: the other vertices move, until their error is <= tol). A closed
+ * mesh has only phase 2.
+ *
+ * Choices where the paper is silent (also in include/subd_loop.h):
+ *   - The error of a vertex is the Euclidean distance |P_i - (L V)_i| in input units;
+ *     max_err and mean_err are over all vertices (corners and isolated vertices, whose
+ *     limit is the control point itself, have error 0).
+ *   - One iteration is one update of V. `iterations` counts the updates of all phases and
+ *     max_iter bounds that total (a later phase gets what the earlier ones leave). One tol
+ *     ends every phase, as in the paper's section 5.
+ *   - Crease vertices (curve rules) and interior corners are "interior" for the paper's
+ *     sequencing and move in phase 2. Without darts their limits depend only on crease and
+ *     corner vertices, so phase 2's matrix is block triangular (corners, crease curves,
+ *     smooth vertices) and its eigenvalues, those of the blocks, are in (0, 1].
+ *   - Phase 2 runs even if phase 1 stopped above tol (stall guard below): the interior is
+ *     still interpolated as well as it can be, and converged = 0.
+ *   - Stall guard: a phase stops (not converged) when its max error has not reached a new
+ *     minimum for PIA_STALL consecutive iterations. In exact arithmetic the error decreases
+ *     geometrically, so this ends only runs that sit at the rounding floor (or whose
+ *     assumptions fail); max_iter still bounds everything.
+ *
+ * SUBD_PIA_FAST, beyond the paper. Two accelerations, chosen by the mesh's structure:
+ *
+ * (1) Conjugate gradients, phase by phase (pia_phase_cg), when no dart couples the phases.
+ * The phases are the paper's, split by limit rule rather than by the boundary tag: first
+ * the curve vertices (boundary and crease vertices, two sharp edges), then the smooth ones;
+ * corners and isolated vertices never move (V = P is exact there). Vertices outside the
+ * phase are fixed, so the phase solves A x = b with A its block of L, and CG runs in the
+ * inner product <x, y>_W = sum_v w_v x_v . y_v, where W makes W A symmetric:
+ *   - smooth block: row v of L is beta_n on v and chi_n = (1 - beta_n) / n on each
+ *     neighbour; w_v = 1 / chi_{n_v} = n / (1 - beta_n) gives (W A)_{uv} = 1 for every edge:
+ *     W A is the minor S_I of the paper's S (section 4), positive definite by theorem 1;
+ *   - curve block: the weight of neighbour u in row v is c_v g_u with c_v = 1/48 (regular
+ *     v) or 1/40 (extraordinary), g_u = 8 (regular u) or 7 (the six masks 1/6, 7/48, 1/5,
+ *     7/40); w_v = 48 or 35 gives (W A)_{uv} = g_u g_v / 8, symmetric, and as the two
+ *     neighbour weights of a row sum to at most 2/5, W A is strictly diagonally dominant
+ *     with a positive diagonal, hence positive definite. B-spline rule: w_v = 1.
+ * CG's k-th iterate minimises the energy norm |e|_{WA} over V^0 + K_k(A, r_0). The paper's
+ * k-th iterate V^0 + sum_{j<k} (I - A)^j r_0 lies in the same affine Krylov space, so in
+ * exact arithmetic CG is never behind the paper's method after the same number of
+ * iterations (in that norm), and |e_k| <= 2 q^k |e_0| with q = (sqrt(kappa) - 1) /
+ * (sqrt(kappa) + 1), kappa <= 1 / lambda_min. A lower bound for lambda_min from theorem 1's
+ * proof, x^T S x >= sum_i n_i (beta_i/(1-beta_i) - 1/2) x_i^2, gives lambda_min >=
+ * min_i (3 beta_i - 1) / 2 = 1/10, 17/110, 0.207, 1/4 for smallest valence 3, 4, 5, >= 6
+ * (tight on the regular lattice, spectrum [1/4, 1]): q = 1/3 there against the paper's
+ * 3/4. In practice CG does far better (superlinear; exact after as many steps as the data
+ * has distinct eigenvalues: 1 on the bundled icosahedron, whose coordinates are one
+ * eigenvector). Per iteration: one application of L (to the search direction; L V follows
+ * by the same recurrence) and two weighted dot products.
+ *
+ * (2) Chebyshev semi-iteration on all movable vertices at once (pia_phase_cheb) when the
+ * mesh has darts. A dart (one sharp edge) uses formula (3), yet the crease vertex next to it
+ * depends on it, so the curve and smooth blocks are coupled both ways, L is no longer
+ * symmetrisable and CG does not apply; alternating CG phases (block Gauss-Seidel) measured
+ * no faster than the paper's step. Chebyshev needs only an interval [l, 1] holding the
+ * spectrum: l = the smallest of the bounds above over the movable vertices, with 1/5
+ * (paper rule) or 1/3 (B-spline rule) for curve vertices by Gershgorin on their rows and
+ * both bounds for a dart. Its residual after k steps is p_k(L) r_0 with p_k the scaled
+ * Chebyshev polynomial, |p_k| <= 2 q^k / (1 + q^2k) on [l, 1], q = (1 - sqrt l) /
+ * (1 + sqrt l); the first step is the optimally weighted paper step V += 2/(1 + l) r.
+ * With darts there is no proof that the spectrum is real; eigenvalues in (0, l) or
+ * (1, 1 + l) would still decay (|p_k| < 1 there), only more slowly. Chebyshev is not the
+ * choice without darts because it is tuned to the worst case: on smooth data (error near
+ * eigenvalue 1) it lost to the paper's plain step (6 against 5 iterations on the
+ * icosahedron), where CG takes 1.
+ *
+ * Safeguards (FAST). W is computed here from the valence and loop_limit.c's regularity rule
+ * while L's weights are rounded (and valences above PIA_MAX_VALENCE get a capped weight), so
+ * W A is symmetric only to that accuracy: perturbed CG, slower at worst. The recurrence for
+ * L V drifts from the true L V by rounding, so when it says "converged" L V is recomputed
+ * and the true error decides; if that fails the phase is at the rounding floor and the
+ * paper's step finishes it (its integer floor is lower than CG's). A curvature
+ * <p, A p>_W <= 0, a step or ratio that does not fit subd_real, or an error above twice the
+ * phase's starting error also hand the phase to the paper's step (which converges for any
+ * spectrum in (0, 2)). Whatever is left above tol after the accelerated phases (a stalled
+ * phase) gets the paper's step on every movable vertex; the stall guard ends each phase.
+ *
+ * Arithmetic. Q16.16: L rounds each coordinate of each limit point once (1/2 LSB), P - L V
+ * is an exact integer, and FAST's updates round again, so the floor an iteration can reach is
+ * about 1 LSB per coordinate: sqrt(3) = 1.73 LSB in the Euclidean norm. The smallest tol
+ * accepted is therefore PIA_TOL_MIN_LSB = 2 LSB (2^-15, > sqrt(3)); anything below is
+ * SUBD_ERR_PARAM, not an endless loop. 2 LSB was reached by both methods on every test and
+ * bench mesh, coordinates up to 8000 included; should a run sit at the floor above tol, the
+ * stall guard ends it (converged = 0). The CG dot products are summed exactly in 128 bits
+ * from components scaled to 21 bits and weights in 8.8 fixed point, and their ratios come
+ * from an integer division, so the fixed build uses no float. Any saturation sets the
+ * overflow flag and the call fails with SUBD_ERR_RANGE. Float32: tol must be positive and
+ * finite; the floor is a few ulps of the coordinates (the stall guard ends runs below it),
+ * and squared distances must stay finite (coordinates below about 1e18, else RANGE).
+ *
+ * Memory (exact plan): V (the output, 3 subd_reals per vertex) and L V (same); FAST adds
+ * the search direction p and q = L p (same), one weight per vertex (subd_real) and one
+ * class byte per vertex. On success only V stays in the arena. Stack (Cortex-M3, -O2): under
+ * 600 bytes plus subd_loop_limit_apply's. Work per iteration: one application of L,
+ * O(corners), plus O(vertices).
+ */
+#include "loop_internal.h"
+#include "mesh_internal.h"
+
+#define PIA_STALL 10u         /* iterations without a new minimum that end a phase        */
+#define PIA_TOL_MIN_LSB 2     /* Q16.16: smallest accepted tol, in units of 2^-16         */
+#define PIA_MAX_VALENCE 4096u /* larger valences get this valence's CG weight             */
+#define PIA_WCACHE 20u        /* CG weights of valences below this are computed once      */
+
+/* Vertex classes (FAST), mirroring loop_limit.c's classification by sharp edges. */
+enum { PIA_CLS_FIXED = 0, PIA_CLS_CURVE = 1, PIA_CLS_SMOOTH = 2 };
+
+/* Vertex sets a phase moves and measures. */
+enum { PIA_SET_ALL, PIA_SET_BOUNDARY, PIA_SET_INTERIOR, PIA_SET_CURVE, PIA_SET_SMOOTH, PIA_SET_MOVABLE };
+
+#if SUBD_FIXED
+typedef uint64_t pia_sq; /* squared distance in LSB^2: 3 * (2^31)^2 < 2^64 */
+/* A weighted dot product: the 128-bit two's complement integer (hi, lo) times 2^e. */
+typedef struct pia_dotv {
+    uint64_t lo;
+    int64_t hi;
+    int32_t e;
+} pia_dotv;
+#else
+typedef float pia_sq;
+typedef float pia_dotv;
+#endif
+
+typedef struct pia_state {
+    const subd_mesh *m;
+    const subd_pia_opts *o;
+    subd_real *v;   /* control points being improved                                    */
+    subd_real *lv;  /* L v: exact when lv_true, else only on the current phase's set     */
+    subd_real *p;   /* FAST: search direction (0 outside the phase's set)                */
+    subd_real *q;   /* FAST: L p                                                         */
+    subd_real *w;   /* FAST: CG inner-product weight per vertex                          */
+    uint8_t *cls;   /* FAST: PIA_CLS_* per vertex                                        */
+    subd_real ell;  /* FAST: lower bound of L's spectrum on the movable vertices          */
+    int darts;      /* FAST: some smooth vertex has one sharp edge                       */
+    uint32_t iters;
+    uint32_t ovf;
+    int lv_true;
+} pia_state;
+
+/* ------------------------------------------------------------------------------------ */
+/* Validation and layout                                                                  */
+
+static int pia_tol_ok(subd_real tol)
+{
+#if SUBD_FIXED
+    return tol >= PIA_TOL_MIN_LSB;
+#else
+    return subd_real_is_finite(tol) && tol > 0.0f;
+#endif
+}
+
+/* PARAM (pointers, options, a mesh without adjacency), then FACE_SIZE (diag.face). */
+static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
+{
+    uint32_t f;
+    if (!in || !o || !in->pos || !in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
+        !in->vert_out || !in->vert_tag || !in->edge_tag || in->num_verts == 0u)
+        return subd_fail(d, SUBD_ERR_PARAM);
+    if ((o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE) ||
+        (o->method != SUBD_PIA_PAPER && o->method != SUBD_PIA_FAST) || o->max_iter == 0u ||
+        !pia_tol_ok(o->tol))
+        return subd_fail(d, SUBD_ERR_PARAM);
+    for (f = 0; f < in->num_faces; f++) {
+        if (subd_face_size(in, f) != 3u) {
+            d->face = f;
+            return subd_fail(d, SUBD_ERR_FACE_SIZE);
+        }
+    }
+    return SUBD_OK;
+}
+
+/* Bytes of the arrays subd_pia allocates, in its order; UINT32_MAX if too big. */
+static uint32_t pia_bytes(const subd_mesh *in, const subd_pia_opts *o)
+{
+    uint32_t total = 0, nv = in->num_verts, n, i, arrays = (o->method == SUBD_PIA_FAST) ? 4u : 2u;
+    if (nv > UINT32_MAX / 3u) return UINT32_MAX;
+    n = 3u * nv;
+    for (i = 0; i < arrays; i++) subd_size_add(&total, n, (uint32_t)sizeof(subd_real)); /* V, LV, p, q */
+    if (o->method == SUBD_PIA_FAST) {
+        subd_size_add(&total, nv, (uint32_t)sizeof(subd_real)); /* w   */
+        subd_size_add(&total, nv, 1u);                          /* cls */
+    }
+    return total;
+}
+
+int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes)
+{
+    subd_diag d;
+    int st;
+    subd_diag_clear(&d);
+    if (!bytes) return SUBD_ERR_PARAM;
+    if ((st = pia_check(in, o, &d)) != SUBD_OK) return st;
+    *bytes = pia_bytes(in, o);
+    return (*bytes == UINT32_MAX) ? SUBD_ERR_TOO_BIG : SUBD_OK;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Sets, errors, L                                                                        */
+
+static int pia_in_set(const pia_state *s, uint32_t v, uint32_t set)
+{
+    int bnd = (s->m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
+    switch (set) {
+    case PIA_SET_BOUNDARY: return bnd;
+    case PIA_SET_INTERIOR: return !bnd;
+    case PIA_SET_CURVE: return s->cls[v] == PIA_CLS_CURVE;
+    case PIA_SET_SMOOTH: return s->cls[v] == PIA_CLS_SMOOTH;
+    case PIA_SET_MOVABLE: return s->cls[v] != PIA_CLS_FIXED;
+    default: return 1;
+    }
+}
+
+/* |p - l|^2 for one vertex. */
+static pia_sq pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
+{
+    uint32_t k;
+#if SUBD_FIXED
+    uint64_t s = 0;
+    for (k = 0; k < 3u; k++) {
+        int64_t r = subd_sub(p[k], l[k], ovf); /* |r| <= 2^31 after saturation */
+        s += (uint64_t)(r * r);
+    }
+#else
+    float s = 0.0f;
+    for (k = 0; k < 3u; k++) {
+        float r = subd_sub(p[k], l[k], ovf);
+        float r2 = r * r;
+        s = s + r2;
+    }
+    (void)subd_chk(s, ovf);
+#endif
+    return s;
+}
+
+static subd_real pia_root(pia_sq s, uint32_t *ovf)
+{
+#if SUBD_FIXED
+    uint32_t r = subd_isqrt64(s);
+    if (r > (uint32_t)INT32_MAX) {
+        *ovf |= 1u;
+        return INT32_MAX;
+    }
+    return (subd_real)r;
+#else
+    (void)ovf;
+    return subd_sqrt(s);
+#endif
+}
+
+/* Max over the set of |P - L V| (with the current lv). */
+static subd_real pia_max_err(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    pia_sq best = 0, e;
+    uint32_t i;
+    for (i = 0; i < m->num_verts; i++) {
+        if (!pia_in_set(s, i, set)) continue;
+        e = pia_dist2(&m->pos[3u * i], &s->lv[3u * i], &s->ovf);
+        if (e > best) best = e;
+    }
+    return pia_root(best, &s->ovf);
+}
+
+/* lv = L v, exactly. */
+static void pia_limit(pia_state *s)
+{
+    subd_loop_limit_apply(s->m, s->o->boundary, s->v, s->lv, &s->ovf);
+    s->lv_true = 1;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* The paper's iteration                                                                  */
+
+/* Update (2) on the set: V += P - L V. */
+static void pia_step_paper(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    uint32_t i, k;
+    for (i = 0; i < m->num_verts; i++) {
+        if (!pia_in_set(s, i, set)) continue;
+        for (k = 3u * i; k < 3u * i + 3u; k++)
+            s->v[k] = subd_add(s->v[k], subd_sub(m->pos[k], s->lv[k], &s->ovf), &s->ovf);
+    }
+}
+
+/* Runs the paper's iteration on the set until its max error is <= tol, it stalls, or the
+ * budget is spent. Needs an exact lv on entry and leaves one. */
+static void pia_phase_paper(pia_state *s, uint32_t set)
+{
+    subd_real err, best = 0;
+    uint32_t stall = 0, k;
+    for (k = 0;; k++) {
+        err = pia_max_err(s, set);
+        if (s->ovf || err <= s->o->tol) return;
+        if (k == 0u || err < best) {
+            best = err;
+            stall = 0;
+        } else if (++stall >= PIA_STALL) {
+            return;
+        }
+        if (s->iters >= s->o->max_iter) return;
+        pia_step_paper(s, set);
+        s->iters++;
+        pia_limit(s);
+        if (s->ovf) return;
+    }
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Conjugate gradients (FAST)                                                             */
+
+/* CG weight of a smooth vertex of valence n: n / (1 - beta_n) = n (1 - x^2) / (5/8 - x^2)
+ * with x = 3/8 + cos(2 pi / n) / 4 (see loop_limit.c); 5/8 - x^2 >= 15/64. */
+static subd_real pia_weight_smooth(uint32_t n, uint32_t *ovf)
+{
+    subd_real x, x2;
+    if (n > PIA_MAX_VALENCE) n = PIA_MAX_VALENCE;
+    x = subd_add(SUBD_REAL_FRAC(3, 8), subd_mul(subd_cos_turns(1, (int32_t)n), SUBD_REAL_FRAC(1, 4), ovf), ovf);
+    x2 = subd_mul(x, x, ovf);
+    return subd_mul(subd_from_int((int32_t)n, ovf),
+                    subd_div(subd_sub(SUBD_REAL_ONE, x2, ovf), subd_sub(SUBD_REAL_FRAC(5, 8), x2, ovf), ovf), ovf);
+}
+
+/* Class and CG weight of every vertex, by the rules of loop_limit.c: sharp edges are
+ * boundary and crease edges; a SUBD_VTAG_CORNER vertex or one with three or more sharp
+ * edges is a corner; two sharp edges make a curve vertex, regular when its valence is 4 on a
+ * boundary or 6 inside; fewer make a smooth vertex (one: a dart, formula (3) as well). */
+static void pia_classify(pia_state *s)
+{
+    const subd_mesh *m = s->m;
+    const subd_real curve = (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) ? SUBD_REAL_FRAC(1, 3) : SUBD_REAL_FRAC(1, 5);
+    subd_real lo, cache[PIA_WCACHE];
+    uint32_t v, h, first, n, ns;
+    int bnd;
+    for (v = 0; v < PIA_WCACHE; v++) cache[v] = 0;
+    s->ell = SUBD_REAL_FRAC(1, 3);
+    s->darts = 0;
+    for (v = 0; v < m->num_verts; v++) {
+        first = m->vert_out[v];
+        s->cls[v] = PIA_CLS_FIXED;
+        s->w[v] = 0;
+        if (first == SUBD_NONE || (m->vert_tag[v] & (SUBD_VTAG_ISOLATED | SUBD_VTAG_CORNER))) continue;
+        bnd = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
+        n = 0;
+        ns = 0;
+        /* the walk visits each outgoing half-edge once; n <= num_corners bounds it */
+        for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
+            n++;
+            if (m->twin[h] == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) ns++;
+        }
+        if (bnd) { /* the incoming boundary edge */
+            n++;
+            ns++;
+        }
+        if (ns >= 3u) continue;
+        if (ns == 2u) {
+            s->cls[v] = PIA_CLS_CURVE;
+            if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) s->w[v] = SUBD_REAL_ONE;
+            else s->w[v] = subd_from_int(n == (bnd ? 4u : 6u) ? 48 : 35, &s->ovf);
+            lo = curve;
+        } else {
+            s->cls[v] = PIA_CLS_SMOOTH;
+            if (n < PIA_WCACHE) {
+                if (cache[n] == 0) cache[n] = pia_weight_smooth(n, &s->ovf);
+                s->w[v] = cache[n];
+            } else {
+                s->w[v] = pia_weight_smooth(n, &s->ovf);
+            }
+            /* (3 beta_n - 1) / 2, increasing in n */
+            if (n <= 2u) lo = SUBD_REAL_FRAC(1, 14);
+            else if (n == 3u) lo = SUBD_REAL_FRAC(1, 10);
+            else if (n == 4u) lo = SUBD_REAL_FRAC(17, 110);
+            else if (n == 5u) lo = SUBD_REAL_FRAC(2071, 10000); /* 0.2071326 rounded down */
+            else lo = SUBD_REAL_FRAC(1, 4);
+            if (ns == 1u) {
+                s->darts = 1;
+                if (curve < lo) lo = curve;
+            }
+        }
+        if (lo < s->ell) s->ell = lo;
+    }
+}
+
+#if SUBD_FIXED
+
+/* Component k of a - as (as may be NULL), exactly. */
+static int64_t pia_comp(const subd_real *a, const subd_real *as, uint32_t k)
+{
+    return (int64_t)a[k] - (as ? as[k] : 0);
+}
+
+/* c / 2^sh truncated towards zero (symmetric, so tiny values of either sign vanish), for
+ * |c| < 2^(21 + sh): the result fits 22 bits. */
+static int32_t pia_shr(int64_t c, uint32_t sh)
+{
+    return (int32_t)(c < 0 ? -(int64_t)((uint64_t)-c >> sh) : (int64_t)((uint64_t)c >> sh));
+}
+
+/* sum over the set of w_v (a_v - as_v) . (b_v - bs_v), summed exactly in 128 bits after
+ * scaling the components to |c| < 2^21 (one shift for the whole sum, from the largest
+ * component) and the weights to 8.8 fixed point (< 2^16): each vertex term is below
+ * 3 * 2^42 * 2^16 < 2^60. The products are 32 x 32 -> 64 bits (one instruction on a
+ * Cortex-M3). */
+static pia_dotv pia_dot(const pia_state *s, uint32_t set, const subd_real *a, const subd_real *as,
+                        const subd_real *b, const subd_real *bs)
+{
+    pia_dotv r;
+    uint64_t bits = 0, old;
+    uint32_t i, k, sh = 0;
+    r.lo = 0;
+    r.hi = 0;
+    for (i = 0; i < s->m->num_verts; i++) {
+        if (!pia_in_set(s, i, set)) continue;
+        for (k = 3u * i; k < 3u * i + 3u; k++) {
+            int64_t ca = pia_comp(a, as, k), cb = pia_comp(b, bs, k);
+            bits |= (uint64_t)(ca < 0 ? -ca : ca) | (uint64_t)(cb < 0 ? -cb : cb);
+        }
+    }
+    while ((bits >> sh) >= ((uint64_t)1 << 21)) sh++;
+    for (i = 0; i < s->m->num_verts; i++) {
+        int64_t t = 0, wq;
+        if (!pia_in_set(s, i, set)) continue;
+        for (k = 3u * i; k < 3u * i + 3u; k++)
+            t += (int64_t)pia_shr(pia_comp(a, as, k), sh) * pia_shr(pia_comp(b, bs, k), sh);
+        wq = ((int64_t)s->w[i] + 128) / 256;
+        if (wq > 65535) wq = 65535;
+        t *= wq;
+        old = r.lo;
+        r.lo += (uint64_t)t;
+        r.hi += (t < 0 ? -1 : 0) + (r.lo < old ? 1 : 0);
+    }
+    r.e = (int32_t)(2u * sh) - 8;
+    return r;
+}
+
+/* x as mant * 2^e with mant in [2^61, 2^62) (x > 0, hi >= 0). */
+static uint64_t pia_norm(pia_dotv x, int32_t *e)
+{
+    uint64_t hi = (uint64_t)x.hi, lo = x.lo;
+    int32_t ex = x.e;
+    while (hi != 0u || lo >= ((uint64_t)1 << 62)) {
+        lo = (lo >> 1) | (hi << 63);
+        hi >>= 1;
+        ex++;
+    }
+    while (lo < ((uint64_t)1 << 61)) {
+        lo <<= 1;
+        ex--;
+    }
+    *e = ex;
+    return lo;
+}
+
+/* x / y as a subd_real (truncated); *ok = 0 when x < 0, y <= 0 or the ratio does not fit. */
+static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
+{
+    uint64_t mx, my, q = 0;
+    int32_t ex, ey, sh;
+    uint32_t i;
+    if (x.hi < 0 || y.hi < 0 || (y.hi == 0 && y.lo == 0u)) {
+        *ok = 0;
+        return 0;
+    }
+    if (x.hi == 0 && x.lo == 0u) return 0;
+    mx = pia_norm(x, &ex);
+    my = pia_norm(y, &ey);
+    /* restoring division: q = floor(mx / my * 2^30), mx / my in (1/2, 2), r < 2 my < 2^63 */
+    for (i = 0; i < 31u; i++) {
+        q <<= 1;
+        if (mx >= my) {
+            mx -= my;
+            q |= 1u;
+        }
+        mx <<= 1;
+    }
+    /* value = q * 2^(ex - ey - 30); Q16.16 raw = q * 2^(ex - ey - 14) */
+    sh = ex - ey - 14;
+    if (sh >= 0) {
+        if (sh > 31 || q > ((uint64_t)INT32_MAX >> sh)) {
+            *ok = 0;
+            return 0;
+        }
+        return (subd_real)(q << sh);
+    }
+    if (sh <= -63) return 0;
+    return (subd_real)(q >> -sh);
+}
+
+#else
+
+static pia_dotv pia_dot(const pia_state *s, uint32_t set, const subd_real *a, const subd_real *as,
+                        const subd_real *b, const subd_real *bs)
+{
+    float acc = 0.0f;
+    uint32_t i, k;
+    for (i = 0; i < s->m->num_verts; i++) {
+        float t = 0.0f, wt;
+        if (!pia_in_set(s, i, set)) continue;
+        for (k = 3u * i; k < 3u * i + 3u; k++) {
+            float ca = as ? a[k] - as[k] : a[k], cb = bs ? b[k] - bs[k] : b[k];
+            float pr = ca * cb;
+            t = t + pr;
+        }
+        wt = s->w[i] * t;
+        acc = acc + wt;
+    }
+    return acc;
+}
+
+static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
+{
+    float r;
+    if (!(x >= 0.0f) || !(y > 0.0f) || !subd_real_is_finite(x) || !subd_real_is_finite(y)) {
+        *ok = 0;
+        return 0.0f;
+    }
+    r = x / y;
+    if (!subd_real_is_finite(r)) *ok = 0;
+    return r;
+}
+
+#endif
+
+/* CG on the set (all other vertices fixed) until its max error is <= tol, it stalls, the
+ * budget is spent, or a safeguard hands the phase to the paper's step. Needs an exact lv on
+ * entry and leaves one. */
+static void pia_phase_cg(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    const subd_real *P = m->pos;
+    subd_real err, start, best, alpha, beta;
+    pia_dotv rho, rho_new, sigma;
+    pia_sq e2;
+    uint32_t i, k, stall = 0;
+    int ok = 1;
+
+    err = pia_max_err(s, set);
+    if (s->ovf || err <= s->o->tol) return;
+    start = best = err;
+    for (i = 0; i < m->num_verts; i++) {
+        int in = pia_in_set(s, i, set);
+        for (k = 3u * i; k < 3u * i + 3u; k++) s->p[k] = in ? subd_sub(P[k], s->lv[k], &s->ovf) : 0;
+    }
+    rho = pia_dot(s, set, P, s->lv, P, s->lv);
+    while (!s->ovf && s->iters < s->o->max_iter) {
+        subd_loop_limit_apply(m, s->o->boundary, s->p, s->q, &s->ovf);
+        sigma = pia_dot(s, set, s->p, 0, s->q, 0);
+        alpha = pia_ratio(rho, sigma, &ok);
+        if (!ok || s->ovf) break;
+        /* V += alpha p, L V += alpha q, and the new max error, in one pass */
+        e2 = 0;
+        for (i = 0; i < m->num_verts; i++) {
+            pia_sq d2;
+            if (!pia_in_set(s, i, set)) continue;
+            for (k = 3u * i; k < 3u * i + 3u; k++) {
+                s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
+                s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
+            }
+            d2 = pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
+            if (d2 > e2) e2 = d2;
+        }
+        s->lv_true = 0;
+        s->iters++;
+        err = pia_root(e2, &s->ovf);
+        if (!s->ovf && err <= s->o->tol) { /* residual replacement: the true error decides */
+            pia_limit(s);
+            err = pia_max_err(s, set);
+            if (s->ovf || err <= s->o->tol) return;
+            ok = 0; /* the recurrence drifted: at the rounding floor, polish with the paper's step */
+            break;
+        }
+        if (err < best) {
+            best = err;
+            stall = 0;
+        } else if (++stall >= PIA_STALL) {
+            if (!s->lv_true) pia_limit(s);
+            return; /* stalled: not converged */
+        }
+        if (err > start && subd_sub(err, start, &s->ovf) > start) {
+            ok = 0; /* the error grew beyond twice its start */
+            break;
+        }
+        rho_new = pia_dot(s, set, P, s->lv, P, s->lv);
+        beta = pia_ratio(rho_new, rho, &ok);
+        if (!ok) break;
+        rho = rho_new;
+        for (i = 0; i < m->num_verts; i++) {
+            if (!pia_in_set(s, i, set)) continue;
+            for (k = 3u * i; k < 3u * i + 3u; k++) {
+                subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_ONE, subd_sub(P[k], s->lv[k], &s->ovf));
+                acc = subd_acc_add(acc, beta, s->p[k]);
+                s->p[k] = subd_acc_real(acc, &s->ovf);
+            }
+        }
+    }
+    if (s->ovf) return;
+    if (!s->lv_true) pia_limit(s);
+    if (!ok) pia_phase_paper(s, set); /* safeguard: the paper's step from here on */
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Chebyshev semi-iteration (FAST on meshes with darts)                                   */
+
+/* Chebyshev iteration for L V = P on the set, for a spectrum in [ell, 1], until the max
+ * error is <= tol, it stalls, or the budget is spent; an error above twice the starting
+ * one hands the set to the paper's step. p holds the step d_k. Exact lv on entry and exit. */
+static void pia_phase_cheb(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    subd_real one = SUBD_REAL_ONE, two = subd_add(one, one, &s->ovf);
+    subd_real opl = subd_add(one, s->ell, &s->ovf), oml = subd_sub(one, s->ell, &s->ovf);
+    subd_real c0 = subd_div(two, opl, &s->ovf);                                /* 1 / theta  */
+    subd_real two_sigma = subd_div(subd_add(opl, opl, &s->ovf), oml, &s->ovf); /* 2 sigma    */
+    subd_real four_over = subd_div(subd_add(two, two, &s->ovf), oml, &s->ovf); /* 2 / delta  */
+    subd_real err, best = 0, start = 0, rho = 0, rho_new, a, c;
+    uint32_t stall = 0, k, i;
+    for (k = 0;; k++) {
+        err = pia_max_err(s, set);
+        if (s->ovf || err <= s->o->tol) return;
+        if (k == 0u || err < best) {
+            best = err;
+            stall = 0;
+        } else if (++stall >= PIA_STALL) {
+            return;
+        }
+        if (s->iters >= s->o->max_iter) return;
+        if (k == 0u) {
+            start = err;
+            a = 0;
+            c = c0;
+            rho = subd_div(oml, opl, &s->ovf); /* rho_0 = 1 / sigma */
+            for (i = 0; i < 3u * m->num_verts; i++) s->p[i] = 0;
+        } else if (err > start && subd_sub(err, start, &s->ovf) > start) {
+            pia_phase_paper(s, set); /* safeguard: the error grew beyond twice its start */
+            return;
+        } else {
+            rho_new = subd_div(one, subd_sub(two_sigma, rho, &s->ovf), &s->ovf);
+            a = subd_mul(rho_new, rho, &s->ovf);
+            c = subd_mul(rho_new, four_over, &s->ovf);
+            rho = rho_new;
+        }
+        /* d = a d + c (P - L V), V += d */
+        for (i = 0; i < m->num_verts; i++) {
+            uint32_t j;
+            if (!pia_in_set(s, i, set)) continue;
+            for (j = 3u * i; j < 3u * i + 3u; j++) {
+                subd_acc acc = subd_acc_add(subd_acc_zero(), a, s->p[j]);
+                acc = subd_acc_add(acc, c, subd_sub(m->pos[j], s->lv[j], &s->ovf));
+                s->p[j] = subd_acc_real(acc, &s->ovf);
+                s->v[j] = subd_add(s->v[j], s->p[j], &s->ovf);
+            }
+        }
+        s->iters++;
+        pia_limit(s);
+        if (s->ovf) return;
+    }
+}
+
+/* ------------------------------------------------------------------------------------ */
+
+int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_real **pos,
+             subd_pia_result *result, subd_diag *diag)
+{
+    subd_diag dummy;
+    subd_diag *d = diag ? diag : &dummy;
+    pia_state s;
+    subd_pia_result res;
+    uint32_t mark, keep, bytes, i, n, vb;
+    int st, fast;
+
+    subd_diag_clear(d);
+    if (!a || !pos || !result) return subd_fail(d, SUBD_ERR_PARAM);
+    if ((st = pia_check(in, o, d)) != SUBD_OK) return st;
+    bytes = pia_bytes(in, o);
+    if (bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
+    fast = o->method == SUBD_PIA_FAST;
+    n = 3u * in->num_verts;
+    vb = n * (uint32_t)sizeof(subd_real);
+    mark = subd_arena_mark(a);
+    s.m = in;
+    s.o = o;
+    s.iters = 0;
+    s.ovf = 0;
+    s.lv_true = 0;
+    s.v = (subd_real *)subd_arena_alloc(a, vb);
+    keep = subd_arena_mark(a);
+    s.lv = (subd_real *)subd_arena_alloc(a, vb);
+    s.p = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
+    s.q = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
+    s.w = fast ? (subd_real *)subd_arena_alloc(a, in->num_verts * (uint32_t)sizeof(subd_real)) : 0;
+    s.cls = fast ? (uint8_t *)subd_arena_alloc(a, in->num_verts) : 0;
+    if (!s.v || !s.lv || (fast && (!s.p || !s.q || !s.w || !s.cls))) {
+        subd_arena_rewind(a, mark);
+        d->bytes_needed = bytes;
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+
+    for (i = 0; i < n; i++) s.v[i] = in->pos[i]; /* V^0 = P */
+    pia_limit(&s);
+    if (fast) {
+        pia_classify(&s);
+        if (!s.ovf && s.darts) pia_phase_cheb(&s, PIA_SET_MOVABLE);
+        if (!s.ovf && !s.darts) pia_phase_cg(&s, PIA_SET_CURVE);
+        if (!s.ovf && !s.darts) pia_phase_cg(&s, PIA_SET_SMOOTH);
+        /* a phase that stalled or gave up: the paper's step polishes what is left */
+        if (!s.ovf && pia_max_err(&s, PIA_SET_ALL) > o->tol) pia_phase_paper(&s, PIA_SET_MOVABLE);
+    } else {
+        if (in->num_boundary_edges > 0u) pia_phase_paper(&s, PIA_SET_BOUNDARY);
+        if (!s.ovf) pia_phase_paper(&s, PIA_SET_INTERIOR);
+    }
+
+    /* final statistics over all vertices, from the exact L V of the returned V */
+    if (!s.ovf) {
+#if SUBD_FIXED
+        uint64_t sum = 0;
+#else
+        float sum = 0.0f;
+#endif
+        res.max_err = pia_max_err(&s, PIA_SET_ALL);
+        for (i = 0; i < in->num_verts; i++) {
+            subd_real e = pia_root(pia_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf);
+#if SUBD_FIXED
+            sum += (uint64_t)e;
+#else
+            sum = sum + e;
+#endif
+        }
+#if SUBD_FIXED
+        res.mean_err = (subd_real)((sum + in->num_verts / 2u) / in->num_verts);
+#else
+        res.mean_err = sum / (float)in->num_verts;
+#endif
+        res.iterations = s.iters;
+        res.converged = res.max_err <= o->tol;
+    }
+    if (s.ovf) {
+        subd_arena_rewind(a, mark);
+        return subd_fail(d, SUBD_ERR_RANGE);
+    }
+    subd_arena_rewind(a, keep); /* give back everything but V */
+    *pos = s.v;
+    *result = res;
+    return SUBD_OK;
+}

@@ -185,7 +185,7 @@ bench: deps
 	@$(MAKE) --no-print-directory bench-run
 
 bench-run: $(B)/bench/bench $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a
-	@echo "== host: OBJ parse and mesh build (make bench; $(HOST_CC) -O2)"
+	@echo "== host benchmark (make bench; $(HOST_CC) -O2)"
 	@$(B)/bench/bench $(wildcard $(SHARED)/data/meshes/bench/*.obj)
 	@echo "== Cortex-M library size (arm-none-eabi-size, -O2)"
 	@$(CM_SIZE) -t $(B)/m4f-float/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m4f-float libsubd.a/'

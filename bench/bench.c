@@ -1,15 +1,23 @@
-/* Host benchmark: OBJ parsing (subd_obj_plan + subd_obj_read) and mesh building
- * (subd_mesh_build from a plain face list) on real meshes.
+/* Host benchmark (`make bench`): OBJ parsing and mesh building, then every scheme on real
+ * meshes: Loop (levels 1-5), Loop limit positions + normals, quasi 4-8 (1, 2, 4, 8 binary
+ * steps), alpha-subdivision curves (S_2, S_3, S_4) and Doo-Sabin type surfaces (levels 1-3),
+ * a quality comparison quasi 4-8 vs Loop (volume shrinkage, maximum dihedral angle) and
+ * progressive interpolation (PIA, method PAPER vs FAST).
  *
- *   bench [-t SECONDS] [FILE.obj ...]
+ *   bench [-t SECONDS] [-s SECTIONS] [FILE.obj ...]
  *
- * Each measurement repeats the operation until about SECONDS (default 1) have passed (at
- * least 5 runs) and reports the median run. Without files it takes the largest .obj in
+ * Each measurement first runs the operation once (checking its status and that the arena
+ * peak equals the plan), then repeats it until about SECONDS (default 0.5) have passed (at
+ * least 5 runs, but a run is not started when it would take the measurement past 3 x
+ * SECONDS) and reports the median run (CLOCK_MONOTONIC). Arenas are malloc'd, sized from the
+ * plan calls, and reused across the repeats. Without files it takes every .obj in
  * ../shared/data/meshes/bench/ (relative to the working directory, i.e. the repository when
- * run by `make bench`) and says so when there is none. Build with -O2 and no sanitizers.
+ * run by `make bench`) and says so when there is none. SECTIONS is a comma list of
+ * parse,loop,limit,q48,alpha,quality,pia (default: all). Build with -O2, no sanitizers.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,14 +28,22 @@
 #define DEFAULT_DIR "../shared/data/meshes/bench"
 #define MIN_RUNS 5
 #define MAX_RUNS 100000
+#define MAX_FILES 64
+#define PLAN_LIMIT 1500000000.0  /* skip a case whose arena plan exceeds ~1.5 GB          */
+#define OUT_LIMIT 2147483648.0   /* ... or whose output would exceed 2^31 bytes           */
+#define REPRO "make bench"
 
 #if SUBD_FIXED
 #define ARITHMETIC "q16.16"
+#define R2D(x) ((double)(x) / 65536.0)
+#define D2R(x) ((subd_real)lround((x) * 65536.0))
 #else
 #define ARITHMETIC "float32"
+#define R2D(x) ((double)(x))
+#define D2R(x) ((subd_real)(x))
 #endif
 
-static double g_seconds = 1.0;
+static double g_seconds = 0.5;
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -35,24 +51,37 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Runs op() repeatedly for about g_seconds; returns the median nanoseconds of one run, or a
+/* Runs op() repeatedly for about g_seconds (at least MIN_RUNS runs unless the next run would
+ * take the measurement past 3 x g_seconds); returns the median nanoseconds of one run, or a
  * negative value when op fails. */
 typedef int (*bench_op)(void *ctx);
 static double measure(bench_op op, void *ctx, int *runs_out)
 {
     static double t[MAX_RUNS];
-    double start = host_now_ns(), med;
+    double start = host_now_ns(), med, elapsed;
     int n = 0;
-    while (n < MAX_RUNS && (n < MIN_RUNS || host_now_ns() - start < g_seconds * 1e9)) {
+    while (n < MAX_RUNS) {
         double t0 = host_now_ns();
         if (op(ctx) != SUBD_OK) return -1.0;
         t[n++] = host_now_ns() - t0;
+        elapsed = host_now_ns() - start;
+        if (elapsed >= g_seconds * 1e9 && n >= MIN_RUNS) break;
+        if (elapsed + t[n - 1] > 3.0 * g_seconds * 1e9) break;
     }
     qsort(t, (size_t)n, sizeof t[0], cmp_double); /* host timing only: order of ties irrelevant */
     med = (n % 2) ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
     *runs_out = n;
     return med;
 }
+
+static const char *base_name(const char *path)
+{
+    const char *s = strrchr(path, '/');
+    return s ? s + 1 : path;
+}
+
+/* ==================================================================================== */
+/* Section 0: OBJ parse and mesh build                                                   */
 
 typedef struct parse_ctx {
     const char *text;
@@ -85,12 +114,6 @@ static int op_build(void *p)
     build_ctx *c = (build_ctx *)p;
     subd_arena_rewind(&c->arena, 0);
     return subd_mesh_build(&c->arena, &c->fl, &c->mesh, &c->diag);
-}
-
-static const char *base_name(const char *path)
-{
-    const char *s = strrchr(path, '/');
-    return s ? s + 1 : path;
 }
 
 static int bench_file(const char *path)
@@ -179,71 +202,756 @@ done:
     return rc;
 }
 
-/* The largest .obj in dir (malloc'd path), or NULL. */
-static char *largest_obj(const char *dir)
+/* ==================================================================================== */
+/* Scheme runs: one context, one op, for every scheme                                   */
+
+typedef enum run_kind { RUN_LOOP, RUN_LIMIT, RUN_Q48, RUN_CURVE, RUN_SURF, RUN_PIA } run_kind;
+
+typedef struct run_ctx {
+    run_kind kind;
+    const subd_mesh *in;
+    subd_arena arena;
+    void *mem;
+    uint32_t plan;
+    subd_diag diag;
+    subd_mesh out;
+    subd_loop_opts lo;
+    subd_q48_opts qo;
+    subd_alpha_opts ao;
+    subd_pia_opts po;
+    subd_pia_result pr;
+    subd_real *lpos, *lnrm, *ppos;
+    const subd_real *cpos; /* curve input */
+    uint32_t cm;
+    subd_alpha_curve_out co;
+} run_ctx;
+
+static int op_run(void *p)
+{
+    run_ctx *c = (run_ctx *)p;
+    subd_arena_rewind(&c->arena, 0);
+    switch (c->kind) {
+    case RUN_LOOP: return subd_loop(&c->arena, c->in, &c->lo, &c->out, &c->diag);
+    case RUN_LIMIT: return subd_loop_limit(&c->arena, c->in, SUBD_LOOP_BOUNDARY_PAPER, &c->lpos, &c->lnrm, &c->diag);
+    case RUN_Q48: return subd_quasi48(&c->arena, c->in, &c->qo, &c->out, &c->diag);
+    case RUN_CURVE: return subd_alpha_curve(&c->arena, c->cpos, c->cm, 1, &c->ao, &c->co, &c->diag);
+    case RUN_SURF: return subd_alpha_surface(&c->arena, c->in, &c->ao, &c->out, NULL, &c->diag);
+    case RUN_PIA: return subd_pia(&c->arena, c->in, &c->po, &c->ppos, &c->pr, &c->diag);
+    }
+    return SUBD_ERR_PARAM;
+}
+
+/* The plan of c (fills c->plan). */
+static int run_plan(run_ctx *c)
+{
+    uint32_t pts;
+    switch (c->kind) {
+    case RUN_LOOP: return subd_loop_plan(c->in, &c->lo, &c->plan);
+    case RUN_LIMIT: return subd_loop_limit_plan(c->in, SUBD_LOOP_BOUNDARY_PAPER, 1, &c->plan);
+    case RUN_Q48: return subd_quasi48_plan(c->in, &c->qo, &c->plan);
+    case RUN_CURVE: return subd_alpha_curve_plan(c->cm, 1, &c->ao, &c->plan, &pts);
+    case RUN_SURF: return subd_alpha_surface_plan(c->in, &c->ao, &c->plan);
+    case RUN_PIA: return subd_pia_plan(c->in, &c->po, &c->plan);
+    }
+    return SUBD_ERR_PARAM;
+}
+
+/* Allocates the planned arena and runs once (status, peak). Returns SUBD_OK or the failing
+ * status (message printed with `label`). */
+static int run_first(run_ctx *c, const char *label, double *first_ns)
+{
+    int st;
+    double t0;
+    c->mem = host_arena_alloc(&c->arena, c->plan);
+    if (!c->mem) {
+        printf("%s: host out of memory for %lu arena bytes\n", label, (unsigned long)c->plan);
+        return SUBD_ERR_NOMEM;
+    }
+    memset(c->arena.base, 0, c->plan); /* fault the pages in: the first run is then a fair sample */
+    t0 = host_now_ns();
+    st = op_run(c);
+    if (first_ns) *first_ns = host_now_ns() - t0;
+    if (st != SUBD_OK) {
+        printf("%s: FAILED: %s (plan %lu, diag.bytes_needed %lu)\n", label, subd_status_str(st),
+               (unsigned long)c->plan, (unsigned long)c->diag.bytes_needed);
+        return st;
+    }
+    return SUBD_OK;
+}
+
+/* The median time of c; a case whose checked first run already took more than 4 x g_seconds
+ * is not repeated (runs = 1: that run is the measurement). */
+static double time_run(run_ctx *c, double first_ns, int *runs)
+{
+    if (first_ns > 4.0 * g_seconds * 1e9) {
+        *runs = 1;
+        return first_ns;
+    }
+    return measure(op_run, c, runs);
+}
+
+static void run_free(run_ctx *c)
+{
+    free(c->mem);
+    c->mem = NULL;
+}
+
+/* "=" when the peak equals the plan, else "peak/plan %". */
+static const char *peak_str(const run_ctx *c, char *buf, size_t n)
+{
+    if (c->arena.peak == c->plan)
+        snprintf(buf, n, "=plan");
+    else
+        snprintf(buf, n, "%.1f%%", 100.0 * (double)c->arena.peak / (double)c->plan);
+    return buf;
+}
+
+/* ==================================================================================== */
+/* Bench meshes                                                                         */
+
+typedef struct bmesh {
+    char name[80];
+    const char *path;
+    host_mesh hm;
+    int tri;     /* all faces are triangles */
+    int closed;  /* no boundary edge */
+    double diag; /* bounding-box diagonal */
+} bmesh;
+
+static bmesh g_mesh[MAX_FILES];
+static int g_nmesh;
+
+static void mesh_name(char *dst, size_t n, const char *path)
+{
+    const char *b = base_name(path);
+    size_t len = strlen(b);
+    if (len > 4 && strcmp(b + len - 4, ".obj") == 0) len -= 4;
+    if (len >= n) len = n - 1u;
+    memcpy(dst, b, len);
+    dst[len] = '\0';
+}
+
+static int load_meshes(char **paths, int n)
+{
+    int i, failed = 0;
+    for (i = 0; i < n && g_nmesh < MAX_FILES; i++) {
+        bmesh *m = &g_mesh[g_nmesh];
+        subd_diag d;
+        uint32_t v;
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, dd = 0.0;
+        int st, k;
+        memset(m, 0, sizeof *m);
+        st = host_read_mesh(paths[i], NULL, &m->hm, &d, NULL);
+        if (st != SUBD_OK) {
+            fprintf(stderr, "%s: cannot read (status %d, line %lu)\n", paths[i], st, (unsigned long)d.line);
+            failed++;
+            continue;
+        }
+        m->path = paths[i];
+        mesh_name(m->name, sizeof m->name, paths[i]);
+        m->tri = m->hm.mesh.num_corners == 3u * m->hm.mesh.num_faces;
+        m->closed = m->hm.mesh.num_boundary_edges == 0u;
+        for (v = 0; v < m->hm.mesh.num_verts; v++) {
+            if (m->hm.mesh.vert_tag[v] & SUBD_VTAG_ISOLATED) continue;
+            for (k = 0; k < 3; k++) {
+                double x = R2D(m->hm.mesh.pos[3u * v + (uint32_t)k]);
+                if (x < lo[k]) lo[k] = x;
+                if (x > hi[k]) hi[k] = x;
+            }
+        }
+        for (k = 0; k < 3; k++) dd += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+        m->diag = sqrt(dd);
+        g_nmesh++;
+    }
+    return failed;
+}
+
+static bmesh *find_mesh(const char *name)
+{
+    int i;
+    for (i = 0; i < g_nmesh; i++)
+        if (strcmp(g_mesh[i].name, name) == 0) return &g_mesh[i];
+    return NULL;
+}
+
+/* ==================================================================================== */
+/* Section 1: Loop levels 1-5                                                           */
+
+static void section_loop(void)
+{
+    int i;
+    uint32_t level;
+    printf("\n== Loop subdivision (subd_loop, boundary PAPER, flags 0 = no output adjacency), levels 1-5; "
+           "reproduce: " REPRO "\n");
+    printf("%-24s %5s %10s %10s %10s %10s %13s %7s %5s\n", "mesh", "level", "out verts", "out faces", "ms/call",
+           "Mfaces/s", "arena bytes", "peak", "runs");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        if (!m->tri) {
+            printf("%-24s skipped: not all triangles (Loop needs triangles)\n", m->name);
+            continue;
+        }
+        for (level = 1; level <= 5; level++) {
+            run_ctx c;
+            double ns, first, faces_est, out_est;
+            int runs, st;
+            char pk[16];
+            memset(&c, 0, sizeof c);
+            c.kind = RUN_LOOP;
+            c.in = &m->hm.mesh;
+            c.lo.levels = level;
+            c.lo.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+            c.lo.flags = 0;
+            st = run_plan(&c);
+            faces_est = (double)m->hm.mesh.num_faces * pow(4.0, (double)level);
+            out_est = faces_est * (4.0 + 3.0 * 9.0) + 0.5 * faces_est * 13.0;
+            if (st == SUBD_ERR_TOO_BIG) {
+                printf("%-24s %5lu skipped (plan exceeds 32-bit sizes)\n", m->name, (unsigned long)level);
+                continue;
+            }
+            if (st != SUBD_OK) {
+                printf("%-24s %5lu plan FAILED: %s\n", m->name, (unsigned long)level, subd_status_str(st));
+                continue;
+            }
+            if ((double)c.plan > PLAN_LIMIT || out_est > OUT_LIMIT) {
+                printf("%-24s %5lu skipped (plan %lu bytes)\n", m->name, (unsigned long)level, (unsigned long)c.plan);
+                continue;
+            }
+            if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
+            ns = time_run(&c, first, &runs);
+            printf("%-24s %5lu %10lu %10lu %10.2f %10.2f %13lu %7s %5d\n", m->name, (unsigned long)level,
+                   (unsigned long)c.out.num_verts, (unsigned long)c.out.num_faces, ns / 1e6,
+                   (double)c.out.num_faces / 1e6 / (ns / 1e9), (unsigned long)c.plan, peak_str(&c, pk, sizeof pk), runs);
+            fflush(stdout);
+            run_free(&c);
+        }
+    }
+}
+
+/* ==================================================================================== */
+/* Section 2: Loop limit positions + normals                                            */
+
+static void section_limit(void)
+{
+    int i;
+    printf("\n== Loop limit positions + normals (subd_loop_limit, boundary PAPER) of the input vertices; "
+           "reproduce: " REPRO "\n");
+    printf("%-24s %10s %10s %10s %13s %7s %5s\n", "mesh", "verts", "ms/call", "Mverts/s", "arena bytes", "peak",
+           "runs");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        run_ctx c;
+        double ns, first;
+        int runs, st;
+        char pk[16];
+        if (!m->tri) {
+            printf("%-24s skipped: not all triangles\n", m->name);
+            continue;
+        }
+        memset(&c, 0, sizeof c);
+        c.kind = RUN_LIMIT;
+        c.in = &m->hm.mesh;
+        st = run_plan(&c);
+        if (st != SUBD_OK) {
+            printf("%-24s plan FAILED: %s\n", m->name, subd_status_str(st));
+            continue;
+        }
+        if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
+        ns = time_run(&c, first, &runs);
+        printf("%-24s %10lu %10.3f %10.2f %13lu %7s %5d\n", m->name, (unsigned long)m->hm.mesh.num_verts, ns / 1e6,
+               (double)m->hm.mesh.num_verts / 1e6 / (ns / 1e9), (unsigned long)c.plan, peak_str(&c, pk, sizeof pk),
+               runs);
+        fflush(stdout);
+        run_free(&c);
+    }
+}
+
+/* ==================================================================================== */
+/* Section 3: quasi 4-8                                                                 */
+
+/* Largest vertex valence of a mesh with adjacency. */
+static uint32_t max_valence(const subd_mesh *m)
+{
+    uint32_t v, mx = 0;
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t n = subd_vertex_valence(m, v);
+        if (n > mx) mx = n;
+    }
+    return mx;
+}
+
+static void section_q48(void)
+{
+    static const uint32_t steps_list[] = {1u, 2u, 4u, 8u};
+    int i;
+    size_t s;
+    printf("\n== Quasi 4-8 (subd_quasi48, smoothing on, boundary FIXED, len_bits default), 1/2/4/8 binary steps; "
+           "reproduce: " REPRO "\n");
+    printf("   (the plan is an upper bound: 2^steps x faces; \"peak\" = measured peak / plan)\n");
+    printf("%-24s %5s %10s %10s %7s %10s %10s %10s %13s %7s %5s\n", "mesh", "steps", "out verts", "out faces",
+           "max val", "ms/call", "steps/s", "Mfaces/s", "arena bytes", "peak", "runs");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        if (!m->tri) {
+            printf("%-24s skipped: not all triangles (quasi 4-8 needs triangles)\n", m->name);
+            continue;
+        }
+        for (s = 0; s < sizeof steps_list / sizeof steps_list[0]; s++) {
+            run_ctx c;
+            double ns, first;
+            int runs, st;
+            char pk[16];
+            memset(&c, 0, sizeof c);
+            c.kind = RUN_Q48;
+            c.in = &m->hm.mesh;
+            c.qo.steps = steps_list[s];
+            c.qo.boundary = SUBD_Q48_BOUNDARY_FIXED;
+            c.qo.flags = 0;
+            c.qo.len_bits = 0;
+            st = run_plan(&c);
+            if (st == SUBD_ERR_TOO_BIG) {
+                printf("%-24s %5lu skipped (plan exceeds 32-bit sizes)\n", m->name, (unsigned long)c.qo.steps);
+                continue;
+            }
+            if (st != SUBD_OK) {
+                printf("%-24s %5lu plan FAILED: %s\n", m->name, (unsigned long)c.qo.steps, subd_status_str(st));
+                continue;
+            }
+            if ((double)c.plan > PLAN_LIMIT) {
+                printf("%-24s %5lu skipped (plan %lu bytes)\n", m->name, (unsigned long)c.qo.steps,
+                       (unsigned long)c.plan);
+                continue;
+            }
+            if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
+            ns = time_run(&c, first, &runs);
+            printf("%-24s %5lu %10lu %10lu %7lu %10.2f %10.1f %10.2f %13lu %7s %5d\n", m->name,
+                   (unsigned long)c.qo.steps, (unsigned long)c.out.num_verts, (unsigned long)c.out.num_faces,
+                   (unsigned long)max_valence(&c.out), ns / 1e6,
+                   (double)c.qo.steps / (ns / 1e9), (double)c.out.num_faces / 1e6 / (ns / 1e9), (unsigned long)c.plan,
+                   peak_str(&c, pk, sizeof pk), runs);
+            fflush(stdout);
+            run_free(&c);
+        }
+    }
+}
+
+/* ==================================================================================== */
+/* Section 4: alpha-subdivision curves and Doo-Sabin type surfaces                      */
+
+#define CURVE_POINTS 4000u
+#define CURVE_LEVELS 8u
+
+static void section_alpha(void)
+{
+    static const uint32_t orders[] = {2u, 3u, 4u};
+    subd_real *poly;
+    uint32_t j;
+    size_t s;
+    int i;
+    double headline = -1.0;
+
+    printf("\n== Alpha-subdivision curves (subd_alpha_curve, cos kernel, alpha = 1/%u turn, s = 1), closed "
+           "regular %u-gon, %u levels; reproduce: " REPRO "\n",
+           CURVE_POINTS, CURVE_POINTS, CURVE_LEVELS);
+    printf("   (%u points x 2^%u: SUBD_MAX_LEVELS = %u caps the levels, so the polygon has %u points, not 1000)\n",
+           CURVE_POINTS, CURVE_LEVELS, (unsigned)SUBD_MAX_LEVELS, CURVE_POINTS);
+    printf("%-24s %10s %10s %10s %13s %7s %5s\n", "operator", "out points", "ms/call", "Mpoints/s", "arena bytes",
+           "peak", "runs");
+    poly = (subd_real *)malloc(3u * CURVE_POINTS * sizeof *poly);
+    if (!poly) {
+        printf("out of memory\n");
+        return;
+    }
+    for (j = 0; j < CURVE_POINTS; j++) {
+        double a = 2.0 * 3.14159265358979323846 * (double)j / (double)CURVE_POINTS;
+        poly[3u * j] = D2R(cos(a));
+        poly[3u * j + 1u] = D2R(sin(a));
+        poly[3u * j + 2u] = D2R(0.0);
+    }
+    for (s = 0; s < sizeof orders / sizeof orders[0]; s++) {
+        run_ctx c;
+        double ns, first;
+        int runs, st;
+        char pk[16], label[32];
+        memset(&c, 0, sizeof c);
+        c.kind = RUN_CURVE;
+        c.cpos = poly;
+        c.cm = CURVE_POINTS;
+        subd_alpha_opts_default(&c.ao);
+        c.ao.order = orders[s];
+        c.ao.levels = CURVE_LEVELS;
+        c.ao.kernel = SUBD_ALPHA_COS;
+        c.ao.alpha_num = 1;
+        c.ao.alpha_den = (int32_t)CURVE_POINTS;
+        snprintf(label, sizeof label, "S_%lu", (unsigned long)orders[s]);
+        st = run_plan(&c);
+        if (st != SUBD_OK) {
+            printf("%-24s plan FAILED: %s\n", label, subd_status_str(st));
+            continue;
+        }
+        if (run_first(&c, label, &first) != SUBD_OK) { run_free(&c); continue; }
+        ns = time_run(&c, first, &runs);
+        printf("%-24s %10lu %10.3f %10.2f %13lu %7s %5d\n", label, (unsigned long)c.co.num_points, ns / 1e6,
+               (double)c.co.num_points / 1e6 / (ns / 1e9), (unsigned long)c.plan, peak_str(&c, pk, sizeof pk), runs);
+        fflush(stdout);
+        run_free(&c);
+    }
+    free(poly);
+
+    printf("\n== Doo-Sabin type surfaces (subd_alpha_surface, order 2, B-spline kernel, s = 1: classical Doo-Sabin "
+           "weights), levels 1-3; reproduce: " REPRO "\n");
+    printf("%-24s %5s %10s %10s %10s %10s %13s %7s %5s\n", "mesh", "level", "out verts", "out faces", "ms/call",
+           "Mfaces/s", "arena bytes", "peak", "runs");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        uint32_t level;
+        for (level = 1; level <= 3; level++) {
+            run_ctx c;
+            double ns, first;
+            int runs, st;
+            char pk[16];
+            memset(&c, 0, sizeof c);
+            c.kind = RUN_SURF;
+            c.in = &m->hm.mesh;
+            subd_alpha_opts_default(&c.ao);
+            c.ao.levels = level;
+            st = run_plan(&c);
+            if (st != SUBD_OK) {
+                printf("%-24s %5lu plan FAILED: %s\n", m->name, (unsigned long)level, subd_status_str(st));
+                continue;
+            }
+            if ((double)c.plan > PLAN_LIMIT) {
+                printf("%-24s %5lu skipped (plan %lu bytes)\n", m->name, (unsigned long)level, (unsigned long)c.plan);
+                continue;
+            }
+            if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
+            ns = time_run(&c, first, &runs);
+            printf("%-24s %5lu %10lu %10lu %10.2f %10.2f %13lu %7s %5d\n", m->name, (unsigned long)level,
+                   (unsigned long)c.out.num_verts, (unsigned long)c.out.num_faces, ns / 1e6,
+                   (double)c.out.num_faces / 1e6 / (ns / 1e9), (unsigned long)c.plan, peak_str(&c, pk, sizeof pk), runs);
+            fflush(stdout);
+            if (level == 3 && strcmp(m->name, "stanford-bunny-open") == 0) headline = ns;
+            run_free(&c);
+        }
+    }
+    if (headline > 0.0)
+        printf("headline: Doo-Sabin level 3 of stanford-bunny-open: %.3f s per call (CGAL: about 2.7 s on this "
+               "machine)\n",
+               headline / 1e9);
+}
+
+/* ==================================================================================== */
+/* Section 5: quality, quasi 4-8 (8 binary steps) vs Loop level 4                       */
+
+/* Enclosed volume by the divergence theorem (fan triangulation of each face), in double. */
+static double mesh_volume(const subd_mesh *m)
+{
+    double vol = 0.0;
+    uint32_t f;
+    for (f = 0; f < m->num_faces; f++) {
+        uint32_t s = m->face_start[f], e = m->face_start[f + 1u], c;
+        const subd_real *p0 = m->pos + 3u * m->corner_vert[s];
+        for (c = s + 1u; c + 1u < e; c++) {
+            const subd_real *p1 = m->pos + 3u * m->corner_vert[c];
+            const subd_real *p2 = m->pos + 3u * m->corner_vert[c + 1u];
+            double ax = R2D(p0[0]), ay = R2D(p0[1]), az = R2D(p0[2]);
+            double bx = R2D(p1[0]), by = R2D(p1[1]), bz = R2D(p1[2]);
+            double cx = R2D(p2[0]), cy = R2D(p2[1]), cz = R2D(p2[2]);
+            vol += ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+        }
+    }
+    return vol / 6.0;
+}
+
+/* Unit normal of face f (Newell's method, double); returns 0 for a degenerate face. */
+static int face_normal(const subd_mesh *m, uint32_t f, double n[3])
+{
+    uint32_t s = m->face_start[f], e = m->face_start[f + 1u], c;
+    double len;
+    n[0] = n[1] = n[2] = 0.0;
+    for (c = s; c < e; c++) {
+        const subd_real *p = m->pos + 3u * m->corner_vert[c];
+        const subd_real *q = m->pos + 3u * m->corner_vert[c + 1u == e ? s : c + 1u];
+        double px = R2D(p[0]), py = R2D(p[1]), pz = R2D(p[2]), qx = R2D(q[0]), qy = R2D(q[1]), qz = R2D(q[2]);
+        n[0] += (py - qy) * (pz + qz);
+        n[1] += (pz - qz) * (px + qx);
+        n[2] += (px - qx) * (py + qy);
+    }
+    len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0.0)) return 0;
+    n[0] /= len;
+    n[1] /= len;
+    n[2] /= len;
+    return 1;
+}
+
+/* Maximum and mean angle (degrees) between the normals of two faces sharing an edge (0 =
+ * flat); edges next to a degenerate face are counted in *skipped. Needs twin. */
+static void mesh_dihedral(const subd_mesh *m, double *max_deg, double *mean_deg, uint32_t *skipped)
+{
+    uint32_t h, n = 0;
+    double mx = 0.0, sum = 0.0;
+    *skipped = 0;
+    for (h = 0; h < m->num_corners; h++) {
+        uint32_t t = m->twin[h];
+        double a[3], b[3], d, ang;
+        if (t == SUBD_NONE || t < h) continue;
+        if (!face_normal(m, m->corner_face[h], a) || !face_normal(m, m->corner_face[t], b)) {
+            (*skipped)++;
+            continue;
+        }
+        d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        if (d > 1.0) d = 1.0;
+        if (d < -1.0) d = -1.0;
+        ang = acos(d) * (180.0 / 3.14159265358979323846);
+        if (ang > mx) mx = ang;
+        sum += ang;
+        n++;
+    }
+    *max_deg = mx;
+    *mean_deg = n ? sum / (double)n : 0.0;
+}
+
+static void quality_row(const char *what, const subd_mesh *m, double vol_in)
+{
+    double vol = mesh_volume(m), mx, mean;
+    uint32_t skipped;
+    mesh_dihedral(m, &mx, &mean, &skipped);
+    printf("  %-34s %10lu %14.6g %11.3f %12.2f %12.3f", what, (unsigned long)m->num_faces, vol,
+           100.0 * (vol - vol_in) / vol_in, mx, mean);
+    if (skipped) printf("  (%lu edges at degenerate faces skipped)", (unsigned long)skipped);
+    printf("\n");
+}
+
+static void section_quality(void)
+{
+    int i, any = 0;
+    printf("\n== Quality: quasi 4-8 (8 binary steps, smoothing on) vs Loop level 4 (boundary PAPER) on the closed "
+           "triangle meshes; reproduce: " REPRO "\n");
+    printf("   volume by the divergence theorem in double; shrinkage = (V - V_input) / V_input; dihedral = angle "
+           "between\n   the normals of two faces sharing an edge (0 = flat), max and mean over the edges\n");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        run_ctx q, l;
+        double vol_in;
+        int st;
+        if (!m->tri || !m->closed) continue;
+        any = 1;
+        memset(&q, 0, sizeof q);
+        memset(&l, 0, sizeof l);
+        q.kind = RUN_Q48;
+        q.in = &m->hm.mesh;
+        q.qo.steps = 8;
+        q.qo.boundary = SUBD_Q48_BOUNDARY_FIXED;
+        l.kind = RUN_LOOP;
+        l.in = &m->hm.mesh;
+        l.lo.levels = 4;
+        l.lo.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+        l.lo.flags = SUBD_LOOP_ADJACENCY;
+        st = run_plan(&q);
+        if (st == SUBD_OK) st = run_plan(&l);
+        if (st != SUBD_OK) {
+            printf("%s: plan FAILED: %s\n", m->name, subd_status_str(st));
+            continue;
+        }
+        if ((double)q.plan > PLAN_LIMIT || (double)l.plan > PLAN_LIMIT) {
+            printf("%s: skipped (plans %lu and %lu bytes)\n", m->name, (unsigned long)q.plan, (unsigned long)l.plan);
+            continue;
+        }
+        vol_in = mesh_volume(&m->hm.mesh);
+        printf("%s:\n  %-34s %10s %14s %11s %12s %12s\n", m->name, "mesh", "faces", "volume", "shrinkage%",
+               "max dihedral", "mean dihedr.");
+        quality_row("input", &m->hm.mesh, vol_in);
+        if (run_first(&q, m->name, NULL) == SUBD_OK) quality_row("quasi 4-8, 8 binary steps", &q.out, vol_in);
+        run_free(&q);
+        if (run_first(&l, m->name, NULL) == SUBD_OK) quality_row("Loop, level 4", &l.out, vol_in);
+        run_free(&l);
+        fflush(stdout);
+    }
+    if (!any) printf("no closed triangle mesh among the inputs; skipped\n");
+}
+
+/* ==================================================================================== */
+/* Section 6: progressive interpolation, PAPER vs FAST                                  */
+
+#define PIA_MAX_ITER 2000u
+
+static void section_pia(void)
+{
+    static const char *const names[] = {"spot_triangulated", "stanford-bunny-open"};
+    static const double tol_rel[] = {1e-4, 1e-5, 1e-6};
+    size_t k, t;
+    printf("\n== Progressive interpolation (subd_pia, boundary PAPER, tol = 1e-4 x bounding-box diagonal, max_iter "
+           "%u), PAPER vs FAST; reproduce: " REPRO "\n"
+           "   (1e-4 is the specified tolerance; the 1e-5 and 1e-6 rows are for information only)\n",
+           PIA_MAX_ITER);
+    printf("%-24s %7s %6s %10s %6s %9s %11s %11s %10s %10s %5s\n", "mesh", "tol/diag", "method", "iterations",
+           "conv", "tol", "max_err", "mean_err", "ms/call", "us/iter", "runs");
+    for (k = 0; k < sizeof names / sizeof names[0]; k++) {
+        bmesh *m = find_mesh(names[k]);
+        if (!m) {
+            printf("%-24s absent; skipped\n", names[k]);
+            continue;
+        }
+        for (t = 0; t < sizeof tol_rel / sizeof tol_rel[0]; t++) {
+            uint32_t it[2] = {0, 0};
+            int conv[2] = {0, 0}, ok[2] = {0, 0}, meth;
+            double tns[2] = {0.0, 0.0};
+            for (meth = 0; meth < 2; meth++) {
+                run_ctx c;
+                double ns, first;
+                int runs, st;
+                memset(&c, 0, sizeof c);
+                c.kind = RUN_PIA;
+                c.in = &m->hm.mesh;
+                c.po.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+                c.po.tol = D2R(tol_rel[t] * m->diag);
+                c.po.max_iter = PIA_MAX_ITER;
+                c.po.method = meth ? SUBD_PIA_FAST : SUBD_PIA_PAPER;
+                st = run_plan(&c);
+                if (st != SUBD_OK) {
+                    printf("%-24s %7.0e %6s plan FAILED: %s\n", m->name, tol_rel[t], meth ? "FAST" : "PAPER",
+                           subd_status_str(st));
+                    continue;
+                }
+                if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
+                ns = time_run(&c, first, &runs);
+                printf("%-24s %7.0e %6s %10lu %6s %9.3g %11.4g %11.4g %10.2f %10.2f %5d\n", m->name, tol_rel[t],
+                       meth ? "FAST" : "PAPER", (unsigned long)c.pr.iterations, c.pr.converged ? "yes" : "no",
+                       R2D(c.po.tol), R2D(c.pr.max_err), R2D(c.pr.mean_err), ns / 1e6,
+                       c.pr.iterations ? ns / 1e3 / (double)c.pr.iterations : 0.0, runs);
+                fflush(stdout);
+                it[meth] = c.pr.iterations;
+                conv[meth] = c.pr.converged;
+                tns[meth] = ns;
+                ok[meth] = 1;
+                run_free(&c);
+            }
+            if (ok[0] && ok[1] && it[0] > 0u)
+                printf("%-24s %7.0e  FAST/PAPER iterations %lu/%lu = %.3f (target <= 1/3: %s%s), time ratio %.3f\n",
+                       m->name, tol_rel[t], (unsigned long)it[1], (unsigned long)it[0], (double)it[1] / (double)it[0],
+                       3u * it[1] <= it[0] ? "holds" : "does NOT hold",
+                       (conv[0] && conv[1]) ? "" : "; not both converged", tns[1] / tns[0]);
+        }
+    }
+}
+
+/* ==================================================================================== */
+
+/* Every .obj in dir (malloc'd paths, sorted by name), count in *n. */
+static char **list_objs(const char *dir, int *n)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
-    char *best = NULL;
-    long long best_size = -1;
+    char **list = NULL;
+    int cnt = 0, i, j;
+    *n = 0;
     if (!d) return NULL;
-    while ((e = readdir(d)) != NULL) {
-        size_t n = strlen(e->d_name);
+    list = (char **)calloc(MAX_FILES, sizeof *list);
+    if (!list) {
+        closedir(d);
+        return NULL;
+    }
+    while ((e = readdir(d)) != NULL && cnt < MAX_FILES) {
+        size_t len = strlen(e->d_name);
         struct stat sb;
         char *p;
-        if (n < 5 || host_format_of(e->d_name) != HOST_FMT_OBJ) continue;
-        p = (char *)malloc(strlen(dir) + n + 2u);
+        if (len < 5 || host_format_of(e->d_name) != HOST_FMT_OBJ) continue;
+        p = (char *)malloc(strlen(dir) + len + 2u);
         if (!p) break;
         sprintf(p, "%s/%s", dir, e->d_name);
-        if (stat(p, &sb) == 0 && S_ISREG(sb.st_mode) &&
-            ((long long)sb.st_size > best_size ||
-             ((long long)sb.st_size == best_size && best && strcmp(p, best) < 0))) {
-            free(best);
-            best = p;
-            best_size = (long long)sb.st_size;
-        } else {
+        if (stat(p, &sb) == 0 && S_ISREG(sb.st_mode))
+            list[cnt++] = p;
+        else
             free(p);
-        }
     }
     closedir(d);
-    return best;
+    for (i = 1; i < cnt; i++) /* insertion sort by name: a reproducible order */
+        for (j = i; j > 0 && strcmp(list[j - 1], list[j]) > 0; j--) {
+            char *t = list[j];
+            list[j] = list[j - 1];
+            list[j - 1] = t;
+        }
+    *n = cnt;
+    return list;
+}
+
+static int section_on(const char *sections, const char *name)
+{
+    const char *p = sections;
+    size_t n = strlen(name);
+    if (!sections) return 1;
+    while (*p) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == n && strncmp(p, name, n) == 0) return 1;
+        if (!e) break;
+        p = e + 1;
+    }
+    return 0;
+}
+
+static int usage(int rc)
+{
+    fprintf(rc ? stderr : stdout,
+            "usage: bench [-t SECONDS] [-s parse,loop,limit,q48,alpha,quality,pia] [FILE.obj ...]\n");
+    return rc;
 }
 
 int main(int argc, char **argv)
 {
-    int i = 1, failed = 0, nfiles;
-    char *def = NULL;
+    int i = 1, failed = 0, nfiles, ndef = 0, k;
+    char **def = NULL, **files;
+    const char *sections = NULL;
+    double t_start = host_now_ns();
 
-    if (i + 1 < argc && strcmp(argv[i], "-t") == 0) {
-        char *end;
-        g_seconds = strtod(argv[i + 1], &end);
-        if (*end || !(g_seconds >= 0.0 && g_seconds <= 600.0)) {
-            fprintf(stderr, "usage: bench [-t SECONDS] [FILE.obj ...]\n");
-            return 1;
+    while (i < argc && argv[i][0] == '-') {
+        if (strcmp(argv[i], "-t") == 0 && i + 1 < argc) {
+            char *end;
+            g_seconds = strtod(argv[i + 1], &end);
+            if (*end || !(g_seconds >= 0.0 && g_seconds <= 600.0)) return usage(1);
+            i += 2;
+        } else if (strcmp(argv[i], "-s") == 0 && i + 1 < argc) {
+            sections = argv[i + 1];
+            i += 2;
+        } else {
+            return usage(argv[i][1] == 'h' || strcmp(argv[i], "--help") == 0 ? 0 : 1);
         }
-        i += 2;
-    } else if (i < argc && argv[i][0] == '-') {
-        fprintf(stderr, "usage: bench [-t SECONDS] [FILE.obj ...]\n");
-        return argv[i][1] == 'h' || strcmp(argv[i], "--help") == 0 ? 0 : 1;
     }
     nfiles = argc - i;
+    files = argv + i;
     if (nfiles == 0) {
-        def = largest_obj(DEFAULT_DIR);
-        if (!def) {
-            printf("bench: no .obj files in %s/ (shared mesh data absent); skipped\n", DEFAULT_DIR);
-            return 0;
+        def = list_objs(DEFAULT_DIR, &ndef);
+        if (!def || ndef == 0) {
+            printf("bench: no .obj files in %s/ (shared mesh data absent); mesh sections skipped, curves "
+                   "only\n", DEFAULT_DIR);
+            sections = "alpha";
         }
+        nfiles = ndef;
+        files = def;
     }
-    printf("tinysubd %s host benchmark (%s). parse = subd_obj_plan + subd_obj_read of the file in memory;\n"
-           "build = subd_mesh_build from its face list (Mc/s = million corners per second); median of\n"
-           "repeated runs, ~%.1f s per measurement; arena bytes = the plan (exact arena of one mesh).\n",
+    printf("tinysubd %s host benchmark (%s; reproduce: " REPRO "). Median of repeated runs, ~%.2f s per "
+           "measurement\n(fewer runs for slow cases; \"runs\" column), CLOCK_MONOTONIC; arenas malloc'd from the "
+           "plan calls;\n\"peak\" = \"=plan\" when the measured arena peak equals the plan.\n",
            SUBD_VERSION, ARITHMETIC, g_seconds);
-    printf("%-24s %10s %8s %8s %8s %10s %9s %10s %9s %11s %9s\n", "file", "size", "verts", "faces", "corners",
-           "parse MB/s", "parse ms", "build Mc/s", "build ms", "arena bytes", "runs");
-    if (def) {
-        failed += bench_file(def);
-        free(def);
+    if (section_on(sections, "parse")) {
+        printf("\n== OBJ parse and mesh build; reproduce: " REPRO "\n"
+               "parse = subd_obj_plan + subd_obj_read of the file in memory; build = subd_mesh_build from its face "
+               "list\n(Mc/s = million corners per second); arena bytes = the plan (exact arena of one mesh).\n");
+        printf("%-24s %10s %8s %8s %8s %10s %9s %10s %9s %11s %9s\n", "file", "size", "verts", "faces", "corners",
+               "parse MB/s", "parse ms", "build Mc/s", "build ms", "arena bytes", "runs");
+        for (k = 0; k < nfiles; k++) failed += bench_file(files[k]);
     }
-    for (; i < argc; i++) failed += bench_file(argv[i]);
+    failed += load_meshes(files, nfiles);
+    if (section_on(sections, "loop")) section_loop();
+    if (section_on(sections, "limit")) section_limit();
+    if (section_on(sections, "q48")) section_q48();
+    if (section_on(sections, "alpha")) section_alpha();
+    if (section_on(sections, "quality")) section_quality();
+    if (section_on(sections, "pia")) section_pia();
+    for (k = 0; k < g_nmesh; k++) host_mesh_free(&g_mesh[k].hm);
+    for (k = 0; k < ndef; k++) free(def[k]);
+    free(def);
+    printf("\nbench: total %.1f s\n", (host_now_ns() - t_start) / 1e9);
     return failed ? 1 : 0;
 }

@@ -109,8 +109,9 @@
  *
  * Memory (exact plan): V (the output, 3 subd_reals per vertex) and L V (same); FAST adds
  * the search direction p and q = L p (same), one weight per vertex (subd_real) and one
- * class byte per vertex. On success only V stays in the arena. Stack (Cortex-M3, -O2): under
- * 600 bytes plus subd_loop_limit_apply's. Work per iteration: one application of L,
+ * class byte per vertex. On success only V stays in the arena. Stack (-fstack-usage, -O2):
+ * under 700 bytes on the deepest path (subd_pia, pia_phase_cg, pia_dot) plus
+ * subd_loop_limit_apply's. Work per iteration: one application of L,
  * O(corners), plus O(vertices).
  */
 #include "loop_internal.h"

@@ -277,6 +277,8 @@ usage_case_pre loop --boundary sideways test/data/icosahedron.obj -o "$T/x.obj";
 usage_case_pre quasi48 --boundary paper test/data/icosahedron.obj -o "$T/x.obj"; check $? "quasi48 --boundary paper: exit 1"
 usage_case_pre alpha --stiffness -1 demo/square.obj -o "$T/x.obj"; check $? "alpha --stiffness -1 (diverges): exit 1"
 usage_case_pre pia test/data/icosahedron.obj -o "$T/x.obj"; check $? "pia without --tol: exit 1"
+run "$FIXED" pia --tol 1e-6 test/data/icosahedron.obj -o "$T/x.obj"
+is 1 && grep -q "below what Q16.16 can resolve" "$T/err"; check $? "subd-fixed pia --tol 1e-6: exit 1, says Q16.16 cannot resolve it"
 usage_case_pre loop --tol 1 test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --tol (not its option): exit 1"
 
 # ---------------------------------------------------------------- usage errors (exit 1)

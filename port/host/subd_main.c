@@ -616,6 +616,11 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         } else if (strcmp(name, "--tol") == 0) {
             if (parse_double(val, 0.0, 1e30, &o->tol) || !(o->tol > 0.0))
                 return usage_error("bad tolerance '%s' (a positive number, input units)", val);
+#if SUBD_FIXED
+            /* Q16.16 resolves 2^-16; the limit operator's rounding leaves about 1.7 LSB */
+            if (o->tol < 2.0 / 65536.0)
+                return usage_error("--tol %s is below what Q16.16 can resolve (minimum 2 LSB = 3.05e-05)", val);
+#endif
             o->given |= OPT_TOL;
         } else if (strcmp(name, "--max-iter") == 0) {
             if (parse_u32(val, 1000000u, &o->max_iter) || o->max_iter == 0)

@@ -5,6 +5,7 @@
 #                Installs the ARM toolchain and QEMU from Debian packages when missing.
 #   make demo    firmware demo in QEMU + host tool on bundled meshes -> build/demo/
 #   make bench   performance report (never part of make test)
+#   make bench-peers  the same Loop / Doo-Sabin work by OpenSubdiv, CGAL and OpenMesh
 #   make tool    build/bin/subd (float32) and build/bin/subd-fixed (Q16.16)
 
 .SUFFIXES:
@@ -191,8 +192,13 @@ bench-run: $(B)/bench/bench $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a
 	@$(CM_SIZE) -t $(B)/m4f-float/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m4f-float libsubd.a/'
 	@$(CM_SIZE) -t $(B)/m3-fixed/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m3-fixed libsubd.a/'
 
+# Loop and Doo-Sabin next to OpenSubdiv, CGAL and OpenMesh (installs libosd-dev libcgal-dev
+# libopenmesh-dev when missing); see bench/peers/README.md.
+bench-peers:
+	@bench/peers/run.sh $(SHARED)/data/meshes/bench
+
 clean:
 	rm -rf $(B)
 
-.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run tool clean \
+.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean \
         m4f-float-images m3-fixed-images

@@ -1,0 +1,246 @@
+#!/bin/sh
+# tinysubd vs OpenSubdiv, CGAL and OpenMesh (make bench-peers). See bench/peers/README.md.
+#
+#   bench/peers/run.sh [MESH_DIR]        (run from anywhere; MESH_DIR defaults to
+#                                          $SHARED/data/meshes/bench, SHARED=../shared)
+# Environment: TIME=cpu|wall (which time the tables use, default cpu: the process CPU time of
+# the timed call, robust on a shared machine; both are in the raw lines), REPS (runs per case, default 3), LONG (s; a first run longer than this is not
+# repeated, default 5), CASE_LIMIT (s; skip a mesh/level whose predicted total over all
+# implementations exceeds it, default 60), MEM_LIMIT_MB (skip an implementation whose
+# predicted max RSS exceeds it, default 8192), PEERS_NO_INSTALL=1 (never call apt-get).
+#
+# Installs libosd-dev libcgal-dev libopenmesh-dev with apt-get when missing, builds the four
+# drivers into build/peers/, runs every case in its own process (so max RSS is per case),
+# REPS times, and prints the medians, the ratios and whether the issue's target is met.
+# Needs no stdin. Raw result lines: build/peers/results.txt.
+set -eu
+
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+if [ $# -ge 1 ]; then MESH_DIR=$(cd "$1" && pwd); fi
+cd "$ROOT"
+SHARED=${SHARED:-../shared}
+MESH_DIR=${MESH_DIR:-$SHARED/data/meshes/bench}
+TIME=${TIME:-cpu}
+case $TIME in cpu|wall) ;; *) echo "TIME must be cpu or wall" >&2; exit 2 ;; esac
+OUT=build/peers
+REPS=${REPS:-3}
+LONG=${LONG:-5}
+CASE_LIMIT=${CASE_LIMIT:-60}
+MEM_LIMIT_MB=${MEM_LIMIT_MB:-8192}
+MESHES="spot_triangulated nefertiti stanford-bunny-open"
+IMPLS="tinysubd osd cgal openmesh"
+
+# ------------------------------------------------------------------ packages
+PKGS="libosd-dev libcgal-dev libopenmesh-dev"
+missing=
+for p in $PKGS; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+    if [ "${PEERS_NO_INSTALL:-0}" = 1 ]; then echo "missing packages:$missing" >&2; exit 1; fi
+    echo "installing$missing"
+    SUDO=; [ "$(id -u)" -eq 0 ] || SUDO=sudo
+    $SUDO apt-get update -q </dev/null >/dev/null &&
+        DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q $missing </dev/null >/dev/null ||
+        { echo "could not install$missing" >&2; exit 1; }
+fi
+for m in $MESHES; do
+    [ -f "$MESH_DIR/$m.obj" ] || { echo "missing mesh $MESH_DIR/$m.obj" >&2; exit 1; }
+done
+
+# ------------------------------------------------------------------ build
+mkdir -p "$OUT"
+CXX=${CXX:-g++}
+CC=${CC:-gcc}
+CXXFLAGS="-O2 -DNDEBUG -std=c++17 -Ibench/peers"
+echo "== building drivers into $OUT/"
+$CC -std=c99 -O2 -Iinclude -DSUBD_FIXED=0 bench/peers/tinysubd_driver.c src/*.c -lm \
+    -o "$OUT/tinysubd_driver" 2>"$OUT/build-tinysubd.log" & p1=$!
+$CXX $CXXFLAGS bench/peers/osd_driver.cpp -o "$OUT/osd_driver" -losdCPU \
+    2>"$OUT/build-osd.log" & p2=$!
+$CXX $CXXFLAGS bench/peers/openmesh_driver.cpp -o "$OUT/openmesh_driver" -lOpenMeshCore \
+    2>"$OUT/build-openmesh.log" & p3=$!
+$CXX $CXXFLAGS bench/peers/cgal_driver.cpp -o "$OUT/cgal_driver" -lgmp -lmpfr \
+    2>"$OUT/build-cgal.log" & p4=$!
+fail=0
+for p in $p1 $p2 $p3 $p4; do wait $p || fail=1; done
+if [ $fail -ne 0 ]; then cat "$OUT"/build-*.log >&2; echo "driver build failed" >&2; exit 1; fi
+
+ver() { dpkg-query -W -f='${Version}' "$1" 2>/dev/null || echo "?"; }
+echo "versions: tinysubd $(sed -n 's/^#define SUBD_VERSION "\(.*\)"/\1/p' include/subd.h)" \
+     "(gcc -O2, float32) | OpenSubdiv $(ver libosd-dev) | CGAL $(ver libcgal-dev)" \
+     "| OpenMesh $(ver libopenmesh-dev) | $($CXX --version | head -n 1)"
+echo "machine: $(nproc) CPUs, $(awk '/MemTotal/ {printf "%.1f GB", $2/1048576}' /proc/meminfo)," \
+     "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+# ------------------------------------------------------------------ run
+RES="$OUT/results.txt"
+: >"$RES"
+SKIPS="$OUT/skips.txt"
+: >"$SKIPS"
+start=$(date +%s)
+
+# run IMPL SCHEME MESH LEVEL -> appends result lines; prints the first run's "seconds maxrss_kb"
+run_case() {
+    drv="$OUT/$1_driver"
+    n=0
+    first=
+    while [ $n -lt "$REPS" ]; do
+        if ! line=$(timeout 300 "$drv" "$2" "$MESH_DIR/$3.obj" "$4" 2>"$OUT/last-stderr.txt"); then
+            echo "$3 L$4 $2 $1: failed: $(tail -n 1 "$OUT/last-stderr.txt")" >>"$SKIPS"
+            echo "fail"
+            return 0
+        fi
+        echo "$line" >>"$RES"
+        n=$((n + 1))
+        if [ -z "$first" ]; then
+            first=$(echo "$line" | sed "s/.* ${TIME}_seconds=\\([^ ]*\\).*maxrss_kb=\\([^ ]*\\).*/\\1 \\2/")
+            # a long case is not repeated (time budget); the table shows the run count
+            if awk -v t="${first% *}" -v l="$LONG" 'BEGIN { exit !(t > l) }'; then break; fi
+        fi
+    done
+    echo "$first"
+}
+
+echo "== running (time = $TIME; each case in its own process; REPS=$REPS, runs over ${LONG}s not repeated)"
+for scheme in loop doosabin; do
+    if [ $scheme = loop ]; then levels="1 2 3 4 5"; impls=$IMPLS; else levels=3; impls="tinysubd cgal"; fi
+    for m in $MESHES; do
+        # per implementation: last level's seconds and max RSS, for the skip prediction
+        for i in $impls; do eval "t_$i=0; r_$i=0"; done
+        for l in $levels; do
+            # predict this level from the previous one: 4x the faces -> ~4.5x time, 4x memory
+            pred=0
+            for i in $impls; do
+                eval "t=\$t_$i"
+                pred=$(awk -v p="$pred" -v t="$t" 'BEGIN { printf "%.3f", p + 4.5 * t }')
+            done
+            if awk -v p="$pred" -v c="$CASE_LIMIT" 'BEGIN { exit !(p > c) }'; then
+                if awk -v p="$pred" 'BEGIN { exit !(p > 1e8) }'; then
+                    why="the previous level was skipped"
+                else
+                    why="predicted ${pred} s for all implementations together (4.5x the previous level) > ${CASE_LIMIT} s"
+                fi
+                echo "$m L$l $scheme: skipped, $why" >>"$SKIPS"
+                printf '  %-20s %-8s L%s skipped\n' "$m" "$scheme" "$l"
+                for i in $impls; do eval "t_$i=1e9"; done
+                continue
+            fi
+            printf '  %-20s %-8s L%s' "$m" "$scheme" "$l"
+            for i in $impls; do
+                eval "r=\$r_$i"
+                mem=$(awk -v r="$r" 'BEGIN { printf "%.0f", 4 * r / 1024 }')
+                if [ "$mem" -gt "$MEM_LIMIT_MB" ]; then
+                    echo "$m L$l $scheme $i: skipped, predicted max RSS ${mem} MB > ${MEM_LIMIT_MB} MB" >>"$SKIPS"
+                    eval "t_$i=0; r_$i=1e12"
+                    printf ' %s:skip' "$i"
+                    continue
+                fi
+                res=$(run_case "$i" "$scheme" "$m" "$l")
+                if [ "$res" = fail ]; then eval "t_$i=1e9; r_$i=1e12"; printf ' %s:FAIL' "$i"; continue; fi
+                eval "t_$i=${res% *}; r_$i=${res#* }"
+                printf ' %s:%ss' "$i" "${res% *}"
+            done
+            echo
+        done
+    done
+done
+echo "total run time: $(( $(date +%s) - start )) s"
+
+# ------------------------------------------------------------------ report
+awk -v meshes="$MESHES" -v tfield="${TIME}_seconds" '
+function median(key,    n, i, j, a, t) {
+    n = cnt[key]
+    for (i = 1; i <= n; i++) a[i] = sec[key, i]
+    for (i = 2; i <= n; i++) { t = a[i]; for (j = i - 1; j >= 1 && a[j] > t; j--) a[j + 1] = a[j]; a[j + 1] = t }
+    return (n % 2) ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
+}
+function maxrss(key,    n, i, a, t) {  # median of the runs max RSS
+    n = cnt[key]
+    for (i = 1; i <= n; i++) a[i] = rss[key, i]
+    for (i = 2; i <= n; i++) { t = a[i]; for (j = i - 1; j >= 1 && a[j] > t; j--) a[j + 1] = a[j]; a[j + 1] = t }
+    return (n % 2) ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
+}
+{
+    delete kv
+    for (i = 1; i <= NF; i++) { split($i, p, "="); kv[p[1]] = p[2] }
+    peer = kv["peer"]; if (peer == "opensubdiv") peer = "osd"
+    key = kv["scheme"] SUBSEP kv["mesh"] SUBSEP kv["level"] SUBSEP peer
+    n = ++cnt[key]
+    sec[key, n] = kv[tfield]; rss[key, n] = kv["maxrss_kb"]
+    faces[key] = kv["faces"]
+    if ("arena_bytes" in kv) arena[key] = kv["arena_bytes"]
+    row = kv["scheme"] SUBSEP kv["mesh"] SUBSEP kv["level"]
+    if (!(row in seen)) { seen[row] = 1; rows[++nrows] = row }
+}
+END {
+    np = split("tinysubd osd cgal openmesh", P, " ")
+    nm = split(meshes, M, " ")
+    # rows in a fixed order
+    nr = 0
+    split("loop doosabin", S, " ")
+    for (s = 1; s <= 2; s++) for (m = 1; m <= nm; m++) for (l = 1; l <= 8; l++) {
+        row = S[s] SUBSEP M[m] SUBSEP l
+        if (row in seen) order[++nr] = row
+    }
+    print ""
+    print "Times: median " (tfield == "cpu_seconds" ? "process CPU" : "wall-clock") " seconds of the timed call (n runs); Mf/s = output faces / s / 1e6; MB = max RSS of the case process (MiB)."
+    printf "%-8s %-20s %2s %10s | %-27s | %-21s | %-21s | %-21s\n", "", "", "", "",
+           "tinysubd", "opensubdiv", "cgal", "openmesh"
+    printf "%-8s %-20s %2s %10s | %-27s | %-21s | %-21s | %-21s\n", "scheme", "mesh", "L", "out faces",
+           "     s  Mf/s    MB arenaMB", "     s  Mf/s    MB(n)", "     s  Mf/s    MB(n)", "     s  Mf/s    MB(n)"
+    for (r = 1; r <= nr; r++) {
+        split(order[r], k, SUBSEP)
+        f = faces[order[r] SUBSEP "tinysubd"]
+        if (f == "") for (i = 2; i <= np; i++) if (faces[order[r] SUBSEP P[i]] != "") { f = faces[order[r] SUBSEP P[i]]; break }
+        printf "%-8s %-20s %2s %10s", k[1], k[2], k[3], f
+        for (i = 1; i <= np; i++) {
+            key = order[r] SUBSEP P[i]
+            if (!(key in cnt)) { printf " | %-" (i == 1 ? 27 : 21) "s", "-"; continue }
+            T[P[i]] = median(key); R[P[i]] = maxrss(key) / 1024; F[P[i]] = faces[key]
+            printf " | %6.3f %5.2f %5.0f", T[P[i]], F[P[i]] / T[P[i]] / 1e6, R[P[i]]
+            if (i == 1) printf " %5.0f(%d)", arena[key] / 1048576, cnt[key]
+            else printf "(%d)", cnt[key]
+            if (faces[key] != f) printf "*"
+        }
+        printf "\n"
+    }
+    print ""
+    print "Ratios: speed = tinysubd output faces/s / peer output faces/s (>1: tinysubd faster);"
+    print "        mem = tinysubd max RSS / peer max RSS (<1: tinysubd smaller)."
+    print "Target (issue): Loop L3-5, speed vs OpenSubdiv >= 6 and mem vs OpenSubdiv <= 1/3."
+    printf "%-8s %-20s %2s | %-23s | %-23s | %s\n", "scheme", "mesh", "L", "speed: osd  cgal  om", "mem: osd  cgal   om", "target"
+    tested = 0; met = 0
+    for (r = 1; r <= nr; r++) {
+        split(order[r], k, SUBSEP)
+        tk = order[r] SUBSEP "tinysubd"
+        if (!(tk in cnt)) continue
+        tt = median(tk); tr = maxrss(tk); tf = faces[tk]
+        printf "%-8s %-20s %2s | ", k[1], k[2], k[3]
+        for (i = 2; i <= np; i++) {
+            key = order[r] SUBSEP P[i]
+            if (key in cnt) printf "%6.2f ", (tf / tt) / (faces[key] / median(key)); else printf "%6s ", "-"
+        }
+        printf " | "
+        for (i = 2; i <= np; i++) {
+            key = order[r] SUBSEP P[i]
+            if (key in cnt) printf "%6.2f ", tr / maxrss(key); else printf "%6s ", "-"
+        }
+        ok = "";
+        ok_key = order[r] SUBSEP "osd"
+        if (k[1] == "loop" && k[3] >= 3 && (ok_key in cnt)) {
+            sp = (tf / tt) / (faces[ok_key] / median(ok_key)); mr = tr / maxrss(ok_key)
+            tested++
+            if (sp >= 6 && mr <= 1 / 3) { ok = "met"; met++ }
+            else ok = "NOT met (" (sp >= 6 ? "" : "speed") (sp < 6 && mr > 1 / 3 ? ", " : "") (mr <= 1 / 3 ? "" : "memory") ")"
+        }
+        printf " | %s\n", ok
+    }
+    print ""
+    if (tested == 0) print "TARGET: not evaluated (no Loop L3-5 case with both tinysubd and OpenSubdiv)"
+    else if (met == tested) printf "TARGET MET in all %d Loop L3-5 cases (>= 6x OpenSubdiv output faces/s, <= 1/3 its max RSS)\n", tested
+    else printf "TARGET NOT MET: %d of %d Loop L3-5 cases meet >= 6x OpenSubdiv output faces/s with <= 1/3 its max RSS\n", met, tested
+    print "(n) = runs behind the median; * = this implementation output a different face count."
+}' "$RES"
+if [ -s "$SKIPS" ]; then echo "skipped / failed:"; sed 's/^/  /' "$SKIPS"; fi
+echo "raw lines: $RES"

@@ -303,6 +303,18 @@ static void pia_step_paper(pia_state *s, uint32_t set)
     }
 }
 
+/* Tracks a phase's progress: records err of iteration k and returns 1 once the error has
+ * not reached a new minimum for PIA_STALL iterations (the rounding floor: not converged). */
+static int pia_stalled(subd_real err, uint32_t k, subd_real *best, uint32_t *stall)
+{
+    if (k == 0u || err < *best) {
+        *best = err;
+        *stall = 0;
+        return 0;
+    }
+    return ++*stall >= PIA_STALL;
+}
+
 /* Runs the paper's iteration on the set until its max error is <= tol, it stalls, or the
  * budget is spent. Needs an exact lv on entry and leaves one. */
 static void pia_phase_paper(pia_state *s, uint32_t set)
@@ -311,13 +323,7 @@ static void pia_phase_paper(pia_state *s, uint32_t set)
     uint32_t stall = 0, k;
     for (k = 0;; k++) {
         err = pia_max_err(s, set);
-        if (s->ovf || err <= s->o->tol) return;
-        if (k == 0u || err < best) {
-            best = err;
-            stall = 0;
-        } else if (++stall >= PIA_STALL) {
-            return;
-        }
+        if (s->ovf || err <= s->o->tol || pia_stalled(err, k, &best, &stall)) return;
         if (s->iters >= s->o->max_iter) return;
         pia_step_paper(s, set);
         s->iters++;
@@ -636,13 +642,7 @@ static void pia_phase_cheb(pia_state *s, uint32_t set)
     uint32_t stall = 0, k, i;
     for (k = 0;; k++) {
         err = pia_max_err(s, set);
-        if (s->ovf || err <= s->o->tol) return;
-        if (k == 0u || err < best) {
-            best = err;
-            stall = 0;
-        } else if (++stall >= PIA_STALL) {
-            return;
-        }
+        if (s->ovf || err <= s->o->tol || pia_stalled(err, k, &best, &stall)) return;
         if (s->iters >= s->o->max_iter) return;
         if (k == 0u) {
             start = err;

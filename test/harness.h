@@ -39,6 +39,14 @@ uint32_t h_fnv(uint32_t h, const void *data, uint32_t n);
 uint32_t h_mesh_hash(const subd_mesh *m);
 void h_hash(const char *name, uint32_t value);
 
+/* An integer as a subd_real, and bit-identity of two subd_reals (for exactness checks). */
+static inline subd_real h_int(int32_t i)
+{
+    uint32_t ovf = 0;
+    return subd_from_int(i, &ovf);
+}
+static inline int h_same(subd_real a, subd_real b) { return subd_real_bits(a) == subd_real_bits(b); }
+
 /* Deterministic PRNG (xorshift32) for property tests: no rand(), no clocks. */
 uint32_t h_rand(uint32_t *state);
 

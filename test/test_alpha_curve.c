@@ -32,12 +32,6 @@ static void note(const char *what, double v)
 #define WORK_BUF h_arena_buf
 #endif
 
-static subd_real rint_(int32_t i)
-{
-    uint32_t ovf = 0;
-    return subd_from_int(i, &ovf);
-}
-static int same(subd_real a, subd_real b) { return subd_real_bits(a) == subd_real_bits(b); }
 
 static uint32_t hash_curve(const subd_alpha_curve_out *c)
 {
@@ -71,7 +65,7 @@ static int run(subd_arena *a, const subd_real *p, uint32_t m, int closed, const 
 static void rand_poly(uint32_t m)
 {
     uint32_t i;
-    for (i = 0; i < 3u * m; i++) g_in[i] = rint_((int32_t)(h_rand(&g_state) % 129u) - 64);
+    for (i = 0; i < 3u * m; i++) g_in[i] = h_int((int32_t)(h_rand(&g_state) % 129u) - 64);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -83,24 +77,24 @@ static void alpha_kernel_values(void)
     uint32_t n;
     /* B-spline: f == s */
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_BSPLINE, 3, 7, 2, SUBD_REAL_FRAC(3, 4), &f), SUBD_OK);
-    CHECK(same(f, SUBD_REAL_FRAC(3, 4)));
+    CHECK(h_same(f, SUBD_REAL_FRAC(3, 4)));
     /* cos: alpha = 1/3 turn, level 0: cos(60 degrees) = 1/2 exactly; level n equals the
      * scalar layer's cos of 1/(3 2^(n+1)) turn */
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, 3, 0, SUBD_REAL_ONE, &f), SUBD_OK);
-    CHECK(same(f, SUBD_REAL_FRAC(1, 2)));
+    CHECK(h_same(f, SUBD_REAL_FRAC(1, 2)));
     for (n = 0; n < 8u; n++) {
         CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 2, 7, n, SUBD_REAL_ONE, &f), SUBD_OK);
-        CHECK(same(f, subd_cos_turns(2, 7 << (n + 1u))));
+        CHECK(h_same(f, subd_cos_turns(2, 7 << (n + 1u))));
     }
     /* alpha = 0: every kernel is 1 (times s) */
     for (n = 0; n < 4u; n++) {
         CHECK_EQ(subd_alpha_kernel_value(n, 0, 1, 3, SUBD_REAL_FRAC(5, 4), &f), SUBD_OK);
-        CHECK(same(f, SUBD_REAL_FRAC(5, 4)));
+        CHECK(h_same(f, SUBD_REAL_FRAC(5, 4)));
     }
     /* errors */
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, 0, 0, SUBD_REAL_ONE, &f), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_kernel_value(4, 1, 3, 0, SUBD_REAL_ONE, &f), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, 3, 0, rint_(-1), &f), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, 3, 0, h_int(-1), &f), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, INT32_MAX, 0, SUBD_REAL_ONE, &f), SUBD_ERR_PARAM);
     /* cosh(10 turns * pi) is about 2^44: too big */
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, 20, 1, 0, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
@@ -182,7 +176,7 @@ static void alpha_bspline_masks(void)
                 subd_arena_init(&a, WORK_BUF, WORK_BYTES);
                 if (!run(&a, g_in, m, 1, &o, &out)) return;
                 if (!CHECK_EQ(out.num_points, n)) return;
-                for (i = 0; i < 3u * n; i++) ok &= same(out.pos[i], r0[i]);
+                for (i = 0; i < 3u * n; i++) ok &= h_same(out.pos[i], r0[i]);
                 CHECK(ok);
                 CHECK_EQ(out.continuity, (int32_t)k - 1);
             }
@@ -198,7 +192,7 @@ static void alpha_bspline_masks(void)
         if (!run(&a, g_in, 7, 0, &o, &x)) return;
         opts(&o, 3, 3, SUBD_ALPHA_COS, 0, 5);
         if (!run(&a, g_in, 7, 0, &o, &y)) return;
-        for (i = 0; i < 3u * x.num_points; i++) ok &= same(x.pos[i], y.pos[i]);
+        for (i = 0; i < 3u * x.num_points; i++) ok &= h_same(x.pos[i], y.pos[i]);
         CHECK(ok);
     }
 }
@@ -220,17 +214,17 @@ static void alpha_open_end_condition(void)
     CHECK_EQ(out.num_points, 2u * m - 2u);
     for (c = 0; c < 3u; c++) {
         subd_real h = SUBD_REAL_FRAC(1, 2), q = SUBD_REAL_FRAC(1, 4), t = SUBD_REAL_FRAC(3, 4);
-        ok &= same(out.pos[c], g_in[c]);
-        ok &= same(out.pos[3 + c], subd_add(subd_mul(h, g_in[c], &ovf), subd_mul(h, g_in[3 + c], &ovf), &ovf));
+        ok &= h_same(out.pos[c], g_in[c]);
+        ok &= h_same(out.pos[3 + c], subd_add(subd_mul(h, g_in[c], &ovf), subd_mul(h, g_in[3 + c], &ovf), &ovf));
         for (i = 1; i + 2u < m; i++) {
-            ok &= same(out.pos[3u * (2u * i) + c],
+            ok &= h_same(out.pos[3u * (2u * i) + c],
                        subd_add(subd_mul(t, g_in[3u * i + c], &ovf), subd_mul(q, g_in[3u * (i + 1u) + c], &ovf), &ovf));
-            ok &= same(out.pos[3u * (2u * i + 1u) + c],
+            ok &= h_same(out.pos[3u * (2u * i + 1u) + c],
                        subd_add(subd_mul(q, g_in[3u * i + c], &ovf), subd_mul(t, g_in[3u * (i + 1u) + c], &ovf), &ovf));
         }
-        ok &= same(out.pos[3u * (2u * m - 4u) + c],
+        ok &= h_same(out.pos[3u * (2u * m - 4u) + c],
                    subd_add(subd_mul(h, g_in[3u * (m - 2u) + c], &ovf), subd_mul(h, g_in[3u * (m - 1u) + c], &ovf), &ovf));
-        ok &= same(out.pos[3u * (2u * m - 3u) + c], g_in[3u * (m - 1u) + c]);
+        ok &= h_same(out.pos[3u * (2u * m - 3u) + c], g_in[3u * (m - 1u) + c]);
     }
     CHECK(ok);
     /* every order and level keeps both end points exactly; counts as documented */
@@ -251,8 +245,8 @@ static void alpha_open_end_condition(void)
             if (!run(&a, g_in, m, 0, &o, &out)) return;
             CHECK_EQ(out.num_points, want);
             for (c = 0; c < 3u; c++) {
-                CHECK(same(out.pos[c], g_in[c]));
-                CHECK(same(out.pos[3u * (out.num_points - 1u) + c], g_in[3u * (m - 1u) + c]));
+                CHECK(h_same(out.pos[c], g_in[c]));
+                CHECK(h_same(out.pos[3u * (out.num_points - 1u) + c], g_in[3u * (m - 1u) + c]));
             }
         }
     /* a two-point polyline stays a segment */
@@ -346,7 +340,7 @@ static void alpha_ccurve_circle(void)
                 subd_arena a;
                 subd_alpha_opts o;
                 subd_alpha_curve_out out;
-                ngon(nn, rint_(CIRCLE_R));
+                ngon(nn, h_int(CIRCLE_R));
                 opts(&o, k, lev, SUBD_ALPHA_COS, 1, (int32_t)nn);
                 subd_arena_init(&a, WORK_BUF, WORK_BYTES);
                 if (!run(&a, g_in, nn, 1, &o, &out)) return;
@@ -388,7 +382,7 @@ static void alpha_ccurve_circle(void)
         subd_alpha_opts o;
         subd_alpha_curve_out out;
         double want = CIRCLE_R, worst = 0;
-        ngon(nn, rint_(CIRCLE_R));
+        ngon(nn, h_int(CIRCLE_R));
         for (lev = 1; lev <= 6u; lev++) {
             double rr;
             if (lev >= 2u) want *= cos(3.14159265358979323846 / (nn * (double)(1u << (lev - 1u))));
@@ -407,7 +401,7 @@ static void alpha_ccurve_circle(void)
         subd_alpha_opts o;
         subd_alpha_curve_out out;
         double me, es, rs;
-        ngon(nn, rint_(CIRCLE_R));
+        ngon(nn, h_int(CIRCLE_R));
         opts(&o, 2, 6, SUBD_ALPHA_BSPLINE, 0, 1);
         subd_arena_init(&a, WORK_BUF, WORK_BYTES);
         if (!run(&a, g_in, nn, 1, &o, &out)) return;
@@ -438,10 +432,10 @@ static void alpha_ccurve_affine(void)
             subd_alpha_curve_out x, y;
             uint32_t i, ovf = 0;
             /* A(p) = (2x + y/2 + 3, 3y/4 - 1, x/4 + z) */
-            const subd_real A[3][4] = {{rint_(2), SUBD_REAL_FRAC(1, 2), 0, rint_(3)},
-                                       {0, SUBD_REAL_FRAC(3, 4), 0, rint_(-1)},
+            const subd_real A[3][4] = {{h_int(2), SUBD_REAL_FRAC(1, 2), 0, h_int(3)},
+                                       {0, SUBD_REAL_FRAC(3, 4), 0, h_int(-1)},
                                        {SUBD_REAL_FRAC(1, 4), 0, SUBD_REAL_ONE, 0}};
-            ngon(nn, rint_(CIRCLE_R));
+            ngon(nn, h_int(CIRCLE_R));
             for (i = 0; i < nn; i++) {
                 uint32_t r;
                 for (r = 0; r < 3u; r++) {
@@ -490,7 +484,7 @@ static void alpha_open_arc(void)
         subd_alpha_opts o;
         subd_alpha_curve_out out;
         uint32_t i, ovf = 0, m = K + 2u;
-        subd_real r = rint_(CIRCLE_R), big = over_cos(r, 1, 16);
+        subd_real r = h_int(CIRCLE_R), big = over_cos(r, 1, 16);
         /* alpha = 1/8 turn: tangent points at i/8 turn, vertices at (2i-1)/16 turn */
         polar(g_in, r, 0, 1);
         for (i = 1; i <= K; i++) polar(g_in + 3u * i, big, 2 * (int32_t)i - 1, 16);
@@ -613,7 +607,7 @@ static void alpha_stiffness(void)
     opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     /* table 1: s <= -1 diverges -> SUBD_ERR_PARAM, arena untouched */
-    o.stiffness = rint_(-1);
+    o.stiffness = h_int(-1);
     CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_PARAM);
     o.stiffness = SUBD_REAL_FRAC(-3, 2);
     CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_PARAM);
@@ -631,7 +625,7 @@ static void alpha_stiffness(void)
     if (run(&a, g_in, 9, 1, &o, &out)) CHECK_EQ(out.continuity, 3);
     /* a level with f_n <= -1: s = 2, cos kernel, alpha = 0.9 turn: f_0 = 2 cos(0.45 turn) */
     opts(&o, 2, 2, SUBD_ALPHA_COS, 9, 10);
-    o.stiffness = rint_(2);
+    o.stiffness = h_int(2);
     CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_PARAM);
     /* s > 0: successive levels contract: the longest edge shrinks every level, by at most
      * max(s, 1)/(1 + s) (the inner edge is f/(1+f) of its parent, the corner edge at most
@@ -707,7 +701,7 @@ static void alpha_per_vertex(void)
             if (!run(&a, g_in, m, (int)closed, &o, &y)) return;
             /* equal tags == uniform, bit for bit */
             CHECK_EQ(x.num_points, y.num_points);
-            for (i = 0; i < 3u * x.num_points; i++) ok &= same(x.pos[i], y.pos[i]);
+            for (i = 0; i < 3u * x.num_points; i++) ok &= h_same(x.pos[i], y.pos[i]);
             CHECK(ok);
             /* one vertex tagged differently (vertex 6, alpha = 1/4 turn): only points near it
              * move; after 3 levels of S_k the influence stays within (k + 1) input edges */
@@ -717,7 +711,7 @@ static void alpha_per_vertex(void)
                 uint32_t c, moved = 0;
                 /* point i at level 3 lies near input parameter i / 8 */
                 int32_t dist = (int32_t)(i / 8u) - 6;
-                for (c = 0; c < 3u; c++) moved |= !same(x.pos[3u * i + c], y.pos[3u * i + c]);
+                for (c = 0; c < 3u; c++) moved |= !h_same(x.pos[3u * i + c], y.pos[3u * i + c]);
                 diff += moved;
                 if (moved && (dist > (int32_t)k + 1 || dist < -(int32_t)k - 2)) far_ok = 0;
             }
@@ -826,7 +820,7 @@ static void alpha_curve_errors(void)
     /* overflow of the positions: s = -0.96 gives w = 1/(2 - 1.92) = 12.5 */
     opts(&o, 2, 3, SUBD_ALPHA_BSPLINE, 0, 1);
     o.stiffness = SUBD_REAL_FRAC(-24, 25);
-    g_in[0] = SUBD_FIXED ? rint_(30000) : 3e38f;
+    g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
     CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
 #if !SUBD_FIXED
     {
@@ -845,7 +839,7 @@ static void alpha_curve_errors(void)
     opts(&o, 3, 0, SUBD_ALPHA_COS, 1, 5);
     if (run(&a, g_in, 5, 0, &o, &out)) {
         CHECK_EQ(out.num_points, 5);
-        CHECK(same(out.pos[14], g_in[14]));
+        CHECK(h_same(out.pos[14], g_in[14]));
     }
 }
 

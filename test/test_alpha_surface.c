@@ -27,12 +27,6 @@ static double dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.0 : (doub
 #define WORK_BUF h_arena_buf
 #endif
 
-static subd_real rint_(int32_t i)
-{
-    uint32_t ovf = 0;
-    return subd_from_int(i, &ovf);
-}
-static int same(subd_real a, subd_real b) { return subd_real_bits(a) == subd_real_bits(b); }
 
 static void sopts(subd_alpha_opts *o, uint32_t levels, uint32_t kernel, int32_t num, int32_t den, subd_real s)
 {
@@ -52,9 +46,9 @@ static subd_face_list quad_grid(uint32_t n, uint32_t m)
     for (i = 0; i <= n; i++)
         for (j = 0; j <= m; j++) {
             uint32_t v = i * (m + 1u) + j;
-            g_pos[3u * v] = rint_((int32_t)j * 4);
-            g_pos[3u * v + 1u] = rint_((int32_t)i * 4);
-            g_pos[3u * v + 2u] = rint_((int32_t)(h_rand(&g_state) % 9u) - 4);
+            g_pos[3u * v] = h_int((int32_t)j * 4);
+            g_pos[3u * v + 1u] = h_int((int32_t)i * 4);
+            g_pos[3u * v + 2u] = h_int((int32_t)(h_rand(&g_state) % 9u) - 4);
         }
     for (i = 0; i < n; i++)
         for (j = 0; j < m; j++) {
@@ -118,7 +112,7 @@ static void alpha_ds_quad_weights(void)
     subd_alpha_opts o;
     subd_face_list fl = one_face(4);
     uint32_t i, c, ovf = 0, ok = 1;
-    for (i = 0; i < 12u; i++) g_pos[i] = rint_((int32_t)(h_rand(&g_state) % 41u) - 20);
+    for (i = 0; i < 12u; i++) g_pos[i] = h_int((int32_t)(h_rand(&g_state) % 41u) - 20);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     if (!build(&a, &fl, &in)) return;
     sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
@@ -132,7 +126,7 @@ static void alpha_ds_quad_weights(void)
             acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 16), g_pos[3u * ((i + 1u) % 4u) + c]);
             acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 16), g_pos[3u * ((i + 2u) % 4u) + c]);
             acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 16), g_pos[3u * ((i + 3u) % 4u) + c]);
-            ok &= same(out.pos[3u * i + c], subd_acc_real(acc, &ovf));
+            ok &= h_same(out.pos[3u * i + c], subd_acc_real(acc, &ovf));
         }
     CHECK(ok);
     /* the cube: 24 vertices, 6 + 12 + 8 faces, closed, Euler 2 */
@@ -474,7 +468,7 @@ static void alpha_ds_errors(void)
     o.tag_num = tags;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     o.tag_num = 0;
-    o.stiffness = rint_(-1); /* table 1: diverges */
+    o.stiffness = h_int(-1); /* table 1: diverges */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_PARAM);
     /* s in (-1, 0]: accepted, not smooth; s in (0, 1/2]: GC0; above: GC1 */
@@ -492,7 +486,7 @@ static void alpha_ds_errors(void)
     }
     /* overflow: s = -0.9 makes f/(1+f) = -9 */
     o.stiffness = SUBD_REAL_FRAC(-9, 10);
-    for (i = 0; i < in.num_verts; i++) in.pos[3u * i] = SUBD_FIXED ? rint_((int32_t)(i * 4000u)) : (float)i * 4e37f;
+    for (i = 0; i < in.num_verts; i++) in.pos[3u * i] = SUBD_FIXED ? h_int((int32_t)(i * 4000u)) : (float)i * 4e37f;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_RANGE);
     CHECK_EQ(subd_arena_mark(&a), m0);
     /* a vertex of valence 33 > SUBD_MAX_FACE_SIZE would make a 33-gon */
@@ -500,9 +494,9 @@ static void alpha_ds_errors(void)
         subd_face_list fan = {0, 0, 0, 0, 0, 0, 0, 0};
         uint32_t n = SUBD_MAX_FACE_SIZE + 1u;
         for (i = 0; i <= n; i++) {
-            g_pos[3u * i] = rint_(i == 0 ? 0 : (int32_t)(i % 7u));
-            g_pos[3u * i + 1u] = rint_(i == 0 ? 0 : (int32_t)(i % 5u));
-            g_pos[3u * i + 2u] = rint_((int32_t)i);
+            g_pos[3u * i] = h_int(i == 0 ? 0 : (int32_t)(i % 7u));
+            g_pos[3u * i + 1u] = h_int(i == 0 ? 0 : (int32_t)(i % 5u));
+            g_pos[3u * i + 2u] = h_int((int32_t)i);
         }
         for (i = 0; i < n; i++) {
             g_idx[3u * i] = 0;

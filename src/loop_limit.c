@@ -771,8 +771,9 @@ static void lim_dart_normal(const subd_mesh *m, subd_loop_boundary b, const subd
  * normalised. This is the tangent plane when the sector has at most two faces; with more
  * faces an interior mode of the sector can decay more slowly than the curves and Loop's
  * corner has no tangent plane in general (Biermann et al. 2000), so it is an approximation
- * there. A corner without sharp edges (tagged) uses the interior tangents, which stay exact
- * for a fixed centre. */
+ * there. A tagged corner without sharp edges uses the interior tangents, which stay exact
+ * for a fixed centre (its modes with weight 0 on v are those of the smooth ring); with one
+ * sharp edge, the same (an approximation). */
 static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_t v, uint32_t n,
                               int boundary, subd_real *out)
 {
@@ -837,7 +838,7 @@ static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real
     lim_wide t1[3], t2[3];
     uint32_t k, n = c->valence;
     for (k = 0; k < 3u; k++) out[k] = (subd_real)0;
-    if (c->cls == LIM_SMOOTH || (c->cls == LIM_CORNER && c->nsharp == 0u)) {
+    if (c->cls == LIM_SMOOTH || (c->cls == LIM_CORNER && c->nsharp <= 1u)) {
         lim_smooth_tangents(m, ctrl, v, n, 0u, t1, t2);
         lim_unit_cross(t1, t2, out);
     } else if (c->cls == LIM_DART) {
@@ -863,7 +864,6 @@ static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real
             lim_unit(acc, out);
         }
     }
-    (void)lim_dot_sign;
 }
 
 /* ------------------------------------------------------------------------------------ */

@@ -892,6 +892,74 @@ static void apply_test(void)
     CHECK_EQ(ovf, 0);
 }
 
+/* Consistency with the refinement (loop.c): a control vertex's limit point and normal do not
+ * change when the mesh is subdivided first (vertex i stays vertex i), for every class and
+ * both rule sets. Float32: within 2e-6 of the mesh size; Q16.16: within 3 LSB (each level
+ * of refinement rounds once). Normals (corners excepted) within 0.36 degree (float) or 0.8
+ * degree (Q16.16: the dot product test itself rounds). */
+static void refine_test(void)
+{
+    static subd_real p0[3 * TMV], n0[3 * TMV];
+    uint32_t r, f, lev, bad = 0, badn = 0, i, k;
+    for (f = 0; f < 3; f++) {
+        for (r = 0; r < 2; r++) {
+            subd_loop_boundary rule = r ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER;
+            subd_arena a;
+            subd_mesh m, out;
+            subd_real *pos, *nrm;
+            subd_diag d;
+            uint32_t nv;
+            if (f == 0) tm_torus(&g_tm, 10, 8, 5u);
+            if (f == 1) {
+                tm_grid(&g_tm, 5, 4, 11u, 0);
+                g_tm.corner[g_tm.nc++] = 0;
+                g_tm.corner[g_tm.nc++] = 29;
+            }
+            if (f == 2) {
+                tm_bipyramid(&g_tm, 7, 12u);
+                tm_sharp(&g_tm, 0, 2);
+            }
+            if (!CHECK(limit_of(&g_tm, rule, &a, &m, &pos, &nrm))) return;
+            nv = m.num_verts;
+            for (i = 0; i < 3u * nv; i++) { p0[i] = pos[i]; n0[i] = nrm[i]; }
+            for (lev = 1; lev <= 2; lev++) {
+                subd_loop_opts o;
+                uint32_t mark = subd_arena_mark(&a);
+                o.levels = lev;
+                o.boundary = rule;
+                o.flags = SUBD_LOOP_ADJACENCY;
+                if (!CHECK_EQ(subd_loop(&a, &m, &o, &out, &d), SUBD_OK)) return;
+                if (!CHECK_EQ(subd_loop_limit(&a, &out, rule, &pos, &nrm, &d), SUBD_OK)) return;
+                for (i = 0; i < nv; i++) {
+                    for (k = 0; k < 3; k++) {
+                        subd_real e = pos[3 * i + k] - p0[3 * i + k];
+#if SUBD_FIXED
+                        if (e > 3 || e < -3) bad++;
+#else
+                        if (e > 2e-6f * 8.0f || e < -2e-6f * 8.0f) bad++;
+#endif
+                    }
+                    {
+                        /* normals: dot of unit vectors */
+                        uint32_t ovf = 0;
+                        subd_real dot = subd_add(subd_add(subd_mul(nrm[3 * i], n0[3 * i], &ovf),
+                                                          subd_mul(nrm[3 * i + 1], n0[3 * i + 1], &ovf), &ovf),
+                                                 subd_mul(nrm[3 * i + 2], n0[3 * i + 2], &ovf), &ovf);
+                        int corner = (m.vert_tag[i] & SUBD_VTAG_CORNER) != 0;
+                        /* float: 0.99998 = cos 0.36 deg; Q16.16: the dot of two rounded unit
+                         * vectors, itself rounded three times, can be 2 LSB below 1 for equal
+                         * directions, so 0.9999 (0.8 deg) */
+                        if (!corner && dot < (SUBD_FIXED ? SUBD_REAL_FRAC(9999, 10000) : SUBD_REAL_FRAC(99998, 100000))) badn++;
+                    }
+                }
+                subd_arena_rewind(&a, mark);
+            }
+        }
+    }
+    CHECK_EQ(bad, 0);
+    CHECK_EQ(badn, 0);
+}
+
 /* Every arena size below the plan fails cleanly; the plan itself is enough and is the
  * measured peak; nothing is written past the arena. */
 static void arena_test(void)
@@ -1309,6 +1377,22 @@ static void ref_corners(void)
         report(r ? "side corner BSPLINE (approximate normal)" : "side corner PAPER (approximate normal)", &st);
         CHECK_EQ(st.bad_pos, 0);
         CHECK_EQ(st.bad_nrm, 0);
+        /* a tagged corner with no sharp edge: fixed centre, interior tangents (exact) */
+        stats_clear(&st);
+        tm_bipyramid(&g_tm, 5, 77u);
+        g_tm.corner[g_tm.nc++] = 0;
+        compare_mesh(&g_tm, rule, &st);
+        CHECK_EQ(st.bad_pos, 0);
+        CHECK_EQ(st.n[R_CORNER], 1);
+        CHECK(st.ang[R_CORNER] <= 0.1);
+        /* ... and with one sharp edge: the fixed centre with a crease leaving it has no
+         * tangent plane (the crease direction outgrows the ring); reported only */
+        stats_clear(&st);
+        tm_sharp(&g_tm, 0, 2);
+        compare_mesh(&g_tm, rule, &st);
+        report(r ? "corner with one crease BSPLINE (no tangent plane)" : "corner with one crease PAPER (no tangent plane)", &st);
+        CHECK_EQ(st.bad_pos, 0);
+        CHECK(st.ang[R_CORNER] < 180.0); /* a unit normal, not (0, 0, 0) */
     }
 }
 
@@ -1465,6 +1549,7 @@ const test_case suite_loop_limit[] = {
     {"limit_planar_normals", planar_test},
     {"limit_convex_outward", convex_test},
     {"limit_apply", apply_test},
+    {"limit_refine_invariant", refine_test},
     {"limit_arena", arena_test},
     {"limit_errors", errors_test},
     {"limit_hashes", hashes_test},

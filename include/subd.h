@@ -198,8 +198,9 @@ static inline uint32_t subd_face_size(const subd_mesh *m, uint32_t f)
 
 /* Ordered one-ring traversal. subd_ring_first gives vert_out[v]; subd_ring_next gives the
  * next outgoing half-edge of the same vertex (rotating towards the previous corner of the
- * face, i.e. counter-clockwise seen from the front for counter-clockwise faces) or SUBD_NONE after the last one. On an
- * interior vertex the walk stops before returning to the first half-edge. */
+ * face, i.e. counter-clockwise seen from the front for counter-clockwise faces) or
+ * SUBD_NONE after the last one. On an interior vertex the walk stops before returning to
+ * the first half-edge. */
 static inline uint32_t subd_ring_first(const subd_mesh *m, uint32_t v) { return m->vert_out[v]; }
 static inline uint32_t subd_ring_next(const subd_mesh *m, uint32_t first, uint32_t h)
 {

@@ -37,3 +37,4 @@ run alpha_bspline_square alpha --kernel bspline -l 5 demo/square.obj $top
 echo "wrote $out/alpha_circle.xyz  (points for a CNC controller)"
 run alpha_ellipse alpha --kernel cos --alpha 1/4 -l 5 demo/ellipse_control.obj $top
 run alpha_doo_sabin_spot alpha -l 2 test/data/spot_control_mesh.obj
+run alpha_s3_cube alpha --order 3 -l 3 test/data/cube_quad.obj

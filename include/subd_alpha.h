@@ -51,7 +51,7 @@ typedef enum subd_alpha_kernel {
 #define SUBD_ALPHA_MAX_NUM ((1 << 30) - 1)
 
 typedef struct subd_alpha_opts {
-    uint32_t order;       /* k in 2..SUBD_ALPHA_MAX_ORDER (surfaces: 2 only)              */
+    uint32_t order;       /* k in 2..SUBD_ALPHA_MAX_ORDER                                 */
     uint32_t levels;      /* 0..SUBD_MAX_LEVELS (surfaces: >= 1)                          */
     uint32_t kernel;      /* subd_alpha_kernel                                            */
     int32_t alpha_num;    /* alpha = 2 pi alpha_num / alpha_den radians                   */
@@ -120,7 +120,8 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
                      const subd_alpha_opts *o, subd_alpha_curve_out *out, subd_diag *diag);
 
 /* ------------------------------------------------------------------------------------ */
-/* Surfaces: the Doo-Sabin type operator S_2(f; n), formula (3).                          */
+/* Surfaces: the Doo-Sabin type operator S_2(f; n), formula (3), and the higher orders     */
+/* S_k = C^(k-2) S_2 of section 2.2 (S_3 = C S_2 is the paper's Catmull-Clark variant).    */
 /*                                                                                        */
 /* Each corner i of an N-gon gets p_i' = f/(1+f) p_i + f/(2(1+f)^2) (p_{i-1} + p_{i+1})   */
 /* + 1/(N(1+f)^2) sum p, computed as c + f/(1+f) d_i + f/(2(1+f)^2)(d_{i-1} + d_{i+1}),   */
@@ -132,11 +133,28 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
 /* behaviour without boundary rules); faces on the boundary use formula (3) unchanged.     */
 /* Isolated vertices and polylines are dropped. The output is built with the library's     */
 /* validator (subd_mesh_finish), so every adjacency array and tag is set.                  */
-/* Counts per level: V' = C, F' = F + E_int + V_int, C' = C + 4 E_int + sum of the         */
-/* valences of the interior vertices.                                                     */
+/* Counts per S_2 step: V' = C, F' = F + E_int + V_int, C' = C + 4 E_int + S (S = the sum  */
+/* of the valences of the interior vertices); then E_int' = 2 E_int + S, V_int' = S,       */
+/* S' = 4 S and B' = C - S boundary vertices (= boundary edges).                          */
+/*                                                                                        */
+/* Dual averaging C (figure 3), applied k - 2 times after each S_2 step (no parameter):    */
+/* output vertices are the face centroids (face order), then the midpoints of the boundary */
+/* edges (half-edge order), then the boundary vertices themselves (vertex order); one face */
+/* per vertex of the mesh (vertex order): an interior vertex gives the centroids of its    */
+/* faces in ring order; a boundary vertex v gives [v, midpoint of its outgoing boundary    */
+/* edge, the centroids of its faces in ring order, midpoint of its incoming boundary edge] */
+/* (boundary rule: the dual of the mesh with its boundary polygon kept, split at the edge  */
+/* midpoints; so C keeps the boundary polygon and only S_2 makes it recede). C keeps the   */
+/* Euler characteristic and the boundary loops. Counts per C step (B boundary vertices =   */
+/* boundary edges): V' = F + 2B, F' = V, C' = C + 3B, E_int' = E_int + B, V_int' = F,      */
+/* S' = C, B' = 2B. On a regular quad grid with f = 1, S_3 is the tensor-product cubic     */
+/* B-spline refinement (the face, edge and vertex points of Catmull-Clark).                */
+/*                                                                                        */
+/* Not implemented: per-face alpha (k even) and per-vertex alpha (k odd) tags; tag_num must */
+/* be NULL for surfaces.                                                                  */
 
 typedef struct subd_alpha_surface_info {
-    int32_t continuity;   /* -1 not smooth (s <= 0), 0 GC0 (s in (0, 1/2]), 1 GC1          */
+    int32_t continuity;   /* -1 not smooth (s <= 0), 0 GC0 (s in (0, 1/2]), 1 GC1 (any k)  */
 } subd_alpha_surface_info;
 
 /* Note on theorem 2: the eigenvalues of a face's circulant matrix (lemma 1 on the paper's
@@ -144,16 +162,18 @@ typedef struct subd_alpha_surface_info {
  * closed form printed in the paper's proof has 2f/(1+f)^2, a factor 2 too large (at f = 1,
  * N = 4 it would give 0 instead of Doo-Sabin's 1/4). The code follows formula (3).       */
 
-/* Exact arena bytes of subd_alpha_surface (the peak: with levels >= 2 two levels' meshes
- * coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM, SUBD_ERR_EMPTY (no faces),
+/* Exact arena bytes of subd_alpha_surface (the peak: after the first step two consecutive
+ * steps' meshes coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM, SUBD_ERR_EMPTY (no faces),
  * SUBD_ERR_FACE_SIZE (an interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face
  * that large), SUBD_ERR_TOO_BIG. */
 int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes);
 
-/* opts->levels (1..SUBD_MAX_LEVELS) Doo-Sabin type steps with f_n = f(alpha; n); order
- * must be 2 and tag_num NULL (higher orders and per-face alpha are not implemented). The
- * input is not modified; the result's arrays are in the arena (the only memory left in use
- * after success). info (may be NULL) receives the continuity class.
+/* opts->levels (1..SUBD_MAX_LEVELS) levels of S_k, k = opts->order in 2..
+ * SUBD_ALPHA_MAX_ORDER: level n is a Doo-Sabin type step with f_n = f(alpha; n) followed by
+ * k - 2 dual averaging steps. tag_num must be NULL (tags are not implemented for surfaces).
+ * The input is not modified; the result's arrays are in the arena (the only memory left
+ * in use after success). info (may be NULL) receives the continuity class (the S_2 class
+ * for every order: the paper proves GC^(k-1) only away from extraordinary points).
  * Errors: SUBD_ERR_PARAM (NULL, options, s <= -1, a level with f_n <= -1), SUBD_ERR_EMPTY,
  * SUBD_ERR_FACE_SIZE (diag.vertex), SUBD_ERR_NAN (diag.vertex), SUBD_ERR_RANGE (a kernel
  * value or a position overflows), SUBD_ERR_NOMEM (diag.bytes_needed = the plan),

@@ -1,5 +1,6 @@
 /* Doo-Sabin type alpha-subdivision surface S_2(f; n) (Zhang & Wang 2002, section 2.1,
- * formula (3), theorem 2).
+ * formula (3), theorem 2) and the higher orders S_k = C^(k-2) S_2 (section 2.2, figure 3;
+ * C is the dual averaging step dual_step below, see subd_alpha.h for its boundary rule).
  *
  * Geometry: for corner i of an N-gon with centroid c and d_j = p_j - c,
  *   p_i' = c + f/(1+f) d_i + f/(2(1+f)^2) (d_{i-1} + d_{i+1}),
@@ -25,15 +26,26 @@
  * (an output vertex is interior iff its input vertex is, and then has valence 4; boundary
  * vertices and boundary edges of the output are equal in number, C - S).
  *
- * Memory: level 1 builds its mesh above the caller's mark; each later level builds above
- * the previous one and is then moved down over it (a forward byte copy to a lower address;
- * the arrays hold indices, never pointers), so the peak is two consecutive levels plus the
- * validator's scratch, and after success only the last level's arrays remain.
+ * Dual step C counts (B = boundary vertices = boundary edges, a manifold boundary: every
+ * mesh C sees is a Doo-Sabin or C output, whose boundary vertices have one fan each):
+ *   V' = F + 2B, F' = V, C' = C + 3B, E_i' = E_i + B, V_i' = F, S' = C, B' = 2B.
+ * A face of C has as many corners as its vertex has faces, plus 3 on the boundary: an
+ * interior vertex of an S_2 output has 4 faces and one of a C output as many as a face of
+ * the mesh before (<= SUBD_MAX_FACE_SIZE); boundary vertices have at most 3 faces (S_2) or
+ * 2 (C). So the input's valence check is the only face size check needed.
+ *
+ * Memory: the first step (S_2 of level 1) builds its mesh above the caller's mark; each
+ * later step (S_2 or C) builds above the previous one and is then moved down over it (a
+ * forward byte copy to a lower address; the arrays hold indices, never pointers), so the
+ * peak is two consecutive steps plus the validator's scratch, and after success only the
+ * last step's arrays remain. C keeps its index maps in the new mesh's twin and corner_face
+ * arrays before the validator fills them, so it needs no scratch of its own.
  */
 #include "alpha_internal.h"
 
 typedef struct ds_stats {
     uint32_t v, f, c, ei, vi, s;
+    uint32_t b; /* boundary vertices = boundary edges (after a step; not used for the input) */
 } ds_stats;
 
 static int input_stats(const subd_mesh *m, ds_stats *st, uint32_t *bad_vertex)
@@ -42,7 +54,7 @@ static int input_stats(const subd_mesh *m, ds_stats *st, uint32_t *bad_vertex)
     st->v = m->num_verts;
     st->f = m->num_faces;
     st->c = m->num_corners;
-    st->ei = st->vi = st->s = 0;
+    st->ei = st->vi = st->s = st->b = 0;
     *bad_vertex = SUBD_NONE;
     for (h = 0; h < m->num_corners; h++)
         if (m->twin[h] != SUBD_NONE && h < m->twin[h]) st->ei++;
@@ -60,18 +72,38 @@ static int input_stats(const subd_mesh *m, ds_stats *st, uint32_t *bad_vertex)
     return SUBD_OK;
 }
 
-/* One step's counts, or 0 when they do not fit 32 bits. */
-static int next_stats(const ds_stats *a, ds_stats *b)
+/* One step's counts (dual = 0: Doo-Sabin type S_2; dual = 1: the dual averaging C), or 0
+ * when they do not fit 32 bits. */
+static int next_stats(const ds_stats *a, int dual, ds_stats *b)
 {
-    uint64_t f = (uint64_t)a->f + a->ei + a->vi, c = (uint64_t)a->c + 4u * (uint64_t)a->ei + a->s;
-    uint64_t ei = 2u * (uint64_t)a->ei + a->s, s = 4u * (uint64_t)a->s;
-    if (f >= (1u << 28) || c >= (1u << 28) || ei >= (1u << 28) || s >= (1u << 28)) return 0;
-    b->v = a->c;
+    uint64_t v, f, c, ei, vi, s, nb;
+    if (!dual) {
+        v = a->c;
+        f = (uint64_t)a->f + a->ei + a->vi;
+        c = (uint64_t)a->c + 4u * (uint64_t)a->ei + a->s;
+        ei = 2u * (uint64_t)a->ei + a->s;
+        vi = a->s;
+        s = 4u * (uint64_t)a->s;
+        nb = a->c - a->s;
+    } else {
+        v = (uint64_t)a->f + 2u * (uint64_t)a->b;
+        f = (uint64_t)a->vi + a->b;
+        c = (uint64_t)a->c + 3u * (uint64_t)a->b;
+        ei = (uint64_t)a->ei + a->b;
+        vi = a->f;
+        s = a->c;
+        nb = 2u * (uint64_t)a->b;
+    }
+    if (v >= (1u << 28) || f >= (1u << 28) || c >= (1u << 28) || ei >= (1u << 28) || s >= (1u << 28) ||
+        nb >= (1u << 28))
+        return 0;
+    b->v = (uint32_t)v;
     b->f = (uint32_t)f;
     b->c = (uint32_t)c;
     b->ei = (uint32_t)ei;
-    b->vi = a->s;
+    b->vi = (uint32_t)vi;
     b->s = (uint32_t)s;
+    b->b = (uint32_t)nb;
     return 1;
 }
 
@@ -97,15 +129,15 @@ static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t 
 {
     ds_stats cur, nxt;
     mesh_counts c;
-    uint32_t l, peak = 0, prev_arrays = 0, bad;
+    uint32_t t, peak = 0, prev_arrays = 0, bad;
     int st = input_stats(in, &cur, &bad);
     if (st != SUBD_OK) {
         d->vertex = bad;
         return st;
     }
-    for (l = 0; l < o->levels; l++) {
+    for (t = 0; t < o->levels * (o->order - 1u); t++) {
         uint32_t total, here;
-        if (!next_stats(&cur, &nxt)) return SUBD_ERR_TOO_BIG;
+        if (!next_stats(&cur, t % (o->order - 1u) != 0u, &nxt)) return SUBD_ERR_TOO_BIG;
         to_counts(&nxt, &c);
         total = subd_mesh_counts_bytes(&c);
         if (total == UINT32_MAX || (uint64_t)total + prev_arrays >= UINT32_MAX) return SUBD_ERR_TOO_BIG;
@@ -122,7 +154,7 @@ static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_
 {
     int st;
     if (!in) return SUBD_ERR_PARAM;
-    if ((st = subd_alpha_check_opts(o, 2u, s_q32)) != SUBD_OK) return st;
+    if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, s_q32)) != SUBD_OK) return st;
     if (o->levels < 1u || o->tag_num) return SUBD_ERR_PARAM;
     if (in->num_faces == 0) return SUBD_ERR_EMPTY;
     return SUBD_OK;
@@ -201,6 +233,63 @@ static void ds_faces(const subd_mesh *m, subd_mesh *out)
     out->line_start[0] = 0;
 }
 
+/* Midpoint of two coordinates, rounded once (Q16.16: half away from zero, as centroid). */
+static subd_real midpoint(subd_real a, subd_real b, uint32_t *ovf)
+{
+#if SUBD_FIXED
+    int64_t sum = (int64_t)a + b;
+    sum = (sum >= 0) ? (sum + 1) / 2 : -((-sum + 1) / 2);
+    return subd_real_sat(sum, ovf);
+#else
+    return subd_mul(0.5f, subd_add(a, b, ovf), ovf);
+#endif
+}
+
+/* The dual averaging operator C on m into out (counts already set): output vertices are
+ * m's face centroids (face order), then the midpoints of m's boundary edges (half-edge
+ * order), then m's boundary vertices (vertex order); one face per vertex of m (vertex
+ * order): an interior vertex gives the centroids of its faces in ring order, a boundary
+ * vertex v gives [v, mid(first boundary edge), centroids in ring order, mid(last boundary
+ * edge)]. out->twin (>= m's corners) and out->corner_face (>= m's vertices) hold the index
+ * maps until subd_mesh_finish overwrites them. */
+static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
+{
+    uint32_t *emap = out->twin, *vmap = out->corner_face;
+    uint32_t f, h, v, k, n = m->num_faces, nf = 0, nc = 0;
+    for (f = 0; f < m->num_faces; f++)
+        for (k = 0; k < 3u; k++) out->pos[3u * f + k] = centroid(m, m->face_start[f], m->face_start[f + 1u], k, ovf);
+    for (h = 0; h < m->num_corners; h++) {
+        uint32_t a, b;
+        if (m->twin[h] != SUBD_NONE) continue;
+        a = m->corner_vert[h];
+        b = subd_he_dest(m, h);
+        for (k = 0; k < 3u; k++) out->pos[3u * n + k] = midpoint(m->pos[3u * a + k], m->pos[3u * b + k], ovf);
+        emap[h] = n++;
+    }
+    for (v = 0; v < m->num_verts; v++) {
+        if (m->vert_out[v] == SUBD_NONE || !(m->vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        for (k = 0; k < 3u; k++) out->pos[3u * n + k] = m->pos[3u * v + k];
+        vmap[v] = n++;
+    }
+    out->face_start[0] = 0;
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t first = m->vert_out[v], last = SUBD_NONE, bnd;
+        if (first == SUBD_NONE) continue;
+        bnd = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
+        if (bnd) {
+            out->corner_vert[nc++] = vmap[v];
+            out->corner_vert[nc++] = emap[first];
+        }
+        for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) {
+            out->corner_vert[nc++] = m->corner_face[h];
+            last = h;
+        }
+        if (bnd) out->corner_vert[nc++] = emap[subd_he_prev(m, last)];
+        out->face_start[++nf] = nc;
+    }
+    out->line_start[0] = 0;
+}
+
 /* Moves mesh *m (arrays contiguous from m->pos, `bytes` long) down to dst. */
 static void move_mesh(subd_mesh *m, uint8_t *dst, uint32_t bytes)
 {
@@ -227,7 +316,7 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
     subd_diag dummy;
     subd_diag *d = diag ? diag : &dummy;
     int64_t s_q32;
-    uint32_t mark, bytes, l, i, ovf = 0;
+    uint32_t mark, bytes, l, t, i, ovf = 0;
     subd_mesh prev, cur;
     ds_stats st_in, st_cur;
     int st;
@@ -249,29 +338,36 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
     input_stats(in, &st_in, &i);
     st_cur = st_in;
     prev = *in;
-    for (l = 0; l < o->levels; l++) {
+    for (t = 0; t < o->levels * (o->order - 1u); t++) {
         ds_stats nx;
         mesh_counts c;
-        int64_t f, u, a, b;
-        next_stats(&st_cur, &nx);
+        int dual = t % (o->order - 1u) != 0u;
+        next_stats(&st_cur, dual, &nx);
         to_counts(&nx, &c);
-        st = subd_alpha_kernel_q32(o->kernel, o->alpha_num, o->alpha_den, l, s_q32, &f);
-        if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
-        if (st == SUBD_OK) st = subd_mesh_alloc_arrays(arena, &c, &cur);
-        if (st != SUBD_OK) break;
-        u = SUBD_Q32_ONE + f;
-        a = subd_alpha_divq(f, u, 32, &ovf);         /* f / (1 + f)        */
-        b = subd_alpha_divq(a, 2 * u, 32, &ovf);     /* f / (2 (1 + f)^2)  */
-        ds_positions(&prev, subd_alpha_wt_from_q32(a, &ovf), subd_alpha_wt_from_q32(b, &ovf), cur.pos, &ovf);
+        if (!dual) {
+            int64_t f, u, a, b;
+            l = t / (o->order - 1u);
+            st = subd_alpha_kernel_q32(o->kernel, o->alpha_num, o->alpha_den, l, s_q32, &f);
+            if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
+            if (st == SUBD_OK) st = subd_mesh_alloc_arrays(arena, &c, &cur);
+            if (st != SUBD_OK) break;
+            u = SUBD_Q32_ONE + f;
+            a = subd_alpha_divq(f, u, 32, &ovf);         /* f / (1 + f)        */
+            b = subd_alpha_divq(a, 2 * u, 32, &ovf);     /* f / (2 (1 + f)^2)  */
+            ds_positions(&prev, subd_alpha_wt_from_q32(a, &ovf), subd_alpha_wt_from_q32(b, &ovf), cur.pos, &ovf);
+            if (!ovf) ds_faces(&prev, &cur);
+        } else {
+            if ((st = subd_mesh_alloc_arrays(arena, &c, &cur)) != SUBD_OK) break;
+            dual_step(&prev, &cur, &ovf);
+        }
         if (ovf) {
             st = SUBD_ERR_RANGE;
             break;
         }
-        ds_faces(&prev, &cur);
         st = subd_mesh_finish(arena, &cur, d);
         if (st != SUBD_OK) break;
-        if (l > 0u) {
-            /* drop the previous level: move this one down to where it started */
+        if (t > 0u) {
+            /* drop the previous mesh: move this one down to where it started */
             subd_arena_rewind(arena, mark);
             move_mesh(&cur, arena->base + mark, arrays_bytes(&c));
             subd_arena_alloc(arena, arrays_bytes(&c));

@@ -2,7 +2,10 @@
  * quad gives 9/16, 3/16, 3/16, 1/16; on a regular quad grid the operator is the tensor
  * product of the curve operator S_2 for any f; theorem 2 (each face's centroid is kept;
  * the circulant eigenvalues lambda_j); closed-form counts over levels, Euler characteristic
- * and boundary loops kept; exact plans with every too-small arena; error paths; hashes. */
+ * and boundary loops kept; exact plans with every too-small arena; error paths; hashes.
+ * Higher orders S_k = C^(k-2) S_2: S_3 with f = 1 on a regular quad grid is the tensor
+ * cubic B-spline refinement (exact); closed-form counts, Euler characteristic, boundary
+ * loops, plan = peak and hashes for k = 3..5; every too-small arena for S_3 and S_4. */
 #include "harness.h"
 #include "corpus.h"
 #include "subd_alpha.h"
@@ -462,11 +465,18 @@ static void alpha_ds_errors(void)
     o.levels = 0;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     o.levels = 1;
-    o.order = 3;
+    o.order = SUBD_ALPHA_MAX_ORDER + 1u;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    o.order = 1;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     o.order = 2;
     o.tag_num = tags;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    o.order = 3; /* per-face / per-vertex tags are not implemented for surfaces */
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    o.order = 2;
+    CHECK_EQ(subd_arena_mark(&a), m0);
     o.tag_num = 0;
     o.stiffness = h_int(-1); /* table 1: diverges */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
@@ -541,6 +551,237 @@ static void alpha_ds_hashes(void)
     }
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* Higher orders S_k = C^(k-2) S_2 (section 2.2).                                          */
+
+/* S_3 = C S_2 with f = 1 on a regular quad grid is the tensor-product cubic B-spline
+ * refinement (Catmull-Clark on regular quads): the face-copy centroids are the face points
+ * (1/4 each corner), the edge-quad centroids the edge points ((1 6 1)/8 across times (1 1)/2
+ * along), the vertex-face centroids the vertex points ((1 6 1)/8 x (1 6 1)/8). Expected
+ * values from those masks in integers (64ths) on the input grid; exact in both arithmetics
+ * (every intermediate is a short dyadic). Output vertex j < F + E_i + V_i is the centroid
+ * of the Doo-Sabin mesh's face j (documented order: input faces, interior edges by
+ * half-edge, interior vertices by index). */
+static int64_t ival(subd_real x) /* an integer-valued subd_real's value */
+{
+#if SUBD_FIXED
+    return (int64_t)(x / 65536);
+#else
+    return (int64_t)(int32_t)x;
+#endif
+}
+
+static void alpha_s3_bspline(void)
+{
+    subd_arena a;
+    subd_mesh in, out;
+    subd_alpha_opts o;
+    subd_face_list fl;
+    uint32_t f, h, v, k, j = 0, bad = 0;
+    int64_t want[3];
+    g_state = 555u; /* host-only tests draw random numbers too */
+    fl = quad_grid(4, 5);
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!build(&a, &fl, &in)) return;
+    sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
+    o.order = 3;
+    if (!ds(&a, &in, &o, &out)) return;
+#define FACE_SUM(ff, kk, acc)                                                                    \
+    do {                                                                                       \
+        uint32_t c_;                                                                           \
+        for (c_ = in.face_start[ff]; c_ < in.face_start[(ff) + 1u]; c_++)                      \
+            acc += ival(in.pos[3u * in.corner_vert[c_] + (kk)]); \
+    } while (0)
+    for (f = 0; f < in.num_faces; f++, j++)
+        for (k = 0; k < 3u; k++) {
+            int64_t sum = 0;
+            FACE_SUM(f, k, sum);
+            want[k] = 16 * sum;
+            bad += !h_same(out.pos[3u * j + k], subd_div(h_int((int32_t)want[k]), h_int(64), &bad));
+        }
+    for (h = 0; h < in.num_corners; h++) {
+        uint32_t t = in.twin[h];
+        if (t == SUBD_NONE || t < h) continue;
+        for (k = 0; k < 3u; k++) {
+            int64_t s1 = 0, s2 = 0;
+            FACE_SUM(in.corner_face[h], k, s1);
+            FACE_SUM(in.corner_face[t], k, s2);
+            want[k] = 4 * (s1 + s2) + 16 * (ival(in.pos[3u * in.corner_vert[h] + k]) + ival(in.pos[3u * in.corner_vert[t] + k]));
+            bad += !h_same(out.pos[3u * j + k], subd_div(h_int((int32_t)want[k]), h_int(64), &bad));
+        }
+        j++;
+    }
+    for (v = 0; v < in.num_verts; v++) {
+        uint32_t nbr[8], n, i, first = in.vert_out[v];
+        if (in.vert_tag[v] & SUBD_VTAG_BOUNDARY) continue;
+        n = subd_vertex_ring(&in, v, nbr, 8);
+        if (!CHECK_EQ(n, 4)) return;
+        for (k = 0; k < 3u; k++) {
+            int64_t sf = 0, se = 0;
+            for (h = first; h != SUBD_NONE; h = subd_ring_next(&in, first, h)) FACE_SUM(in.corner_face[h], k, sf);
+            for (i = 0; i < n; i++) se += ival(in.pos[3u * nbr[i] + k]);
+            want[k] = sf + 4 * se + 32 * ival(in.pos[3u * v + k]);
+            bad += !h_same(out.pos[3u * j + k], subd_div(h_int((int32_t)want[k]), h_int(64), &bad));
+        }
+        j++;
+    }
+#undef FACE_SUM
+    CHECK_EQ(j, 20u + 31u + 12u);
+    CHECK_EQ(bad, 0);
+    h_hash("alpha_s3_grid_bspline", h_mesh_hash(&out));
+}
+
+/* C's boundary rule: after S_2 (out2), S_3 (out3) has out2's face centroids, then the
+ * midpoints of out2's boundary edges (half-edge order), then out2's boundary vertices
+ * unchanged (vertex order); the boundary loops keep their shape. */
+static void alpha_s3_boundary(void)
+{
+    subd_arena a;
+    subd_mesh in, out2, out3;
+    subd_alpha_opts o;
+    subd_face_list fl;
+    uint32_t h, v, k, n, bad = 0;
+    g_state = 99u;
+    fl = quad_grid(3, 4);
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!build(&a, &fl, &in)) return;
+    sopts(&o, 1, SUBD_ALPHA_COS, 1, 7, SUBD_REAL_FRAC(5, 4));
+    if (!ds(&a, &in, &o, &out2)) return;
+    o.order = 3;
+    if (!ds(&a, &in, &o, &out3)) return;
+    n = out2.num_faces;
+    for (h = 0; h < out2.num_corners; h++) {
+        uint32_t p = out2.corner_vert[h], q;
+        if (out2.twin[h] != SUBD_NONE) continue;
+        q = subd_he_dest(&out2, h);
+        for (k = 0; k < 3u; k++) {
+            subd_real m = out3.pos[3u * n + k], x = out2.pos[3u * p + k], y = out2.pos[3u * q + k];
+#if SUBD_FIXED
+            int64_t e = 2 * (int64_t)m - ((int64_t)x + y);
+            bad += (e < -1 || e > 1);
+#else
+            uint32_t ovf = 0;
+            bad += !h_same(subd_add(m, m, &ovf), subd_add(x, y, &ovf));
+#endif
+        }
+        n++;
+    }
+    for (v = 0; v < out2.num_verts; v++) {
+        if (!(out2.vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        for (k = 0; k < 3u; k++) bad += !h_same(out3.pos[3u * n + k], out2.pos[3u * v + k]);
+        n++;
+    }
+    CHECK_EQ(n, out3.num_verts);
+    CHECK_EQ(bad, 0);
+    CHECK_EQ(out3.num_boundary_edges, 2u * out2.num_boundary_edges);
+    CHECK_EQ(out3.num_boundary_loops, 1);
+    h_hash("alpha_s3_grid_cos", h_mesh_hash(&out3));
+}
+
+/* Closed-form counts of S_k over levels (S_2 then k - 2 times C per level, header
+ * formulas), Euler characteristic and boundary loops kept, plan >= peak, hashes. */
+static void alpha_sk_levels(void)
+{
+    static const char *const files[2] = {"test/data/cube_quad.obj", "test/data/hexfan.obj"};
+    uint32_t fi, lev, order;
+    for (fi = 0; fi < 4u; fi++)
+        for (order = 3; order <= 5u; order++)
+            for (lev = 1; lev <= (H_HOST ? 3u : 2u); lev++) {
+                subd_arena a;
+                subd_mesh in, out;
+                subd_alpha_opts o;
+                uint32_t v, f, c, ei = 0, vi = 0, s = 0, b = 0, h, l, t, plan, m0;
+                subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+                g_state = 777u; /* the same grid for every run, host and device */
+                if (fi < 2u) {
+                    if (!read_obj(&a, files[fi], &in)) return;
+                } else {
+                    subd_face_list fl = fi == 2u ? quad_grid(3, 2) : one_face(5);
+                    if (fi == 3u)
+                        for (h = 0; h < 15u; h++) g_pos[h] = h_int((int32_t)((h * 7u) % 11u));
+                    if (!build(&a, &fl, &in)) return;
+                }
+                v = in.num_verts;
+                f = in.num_faces;
+                c = in.num_corners;
+                for (h = 0; h < in.num_corners; h++)
+                    if (in.twin[h] != SUBD_NONE && h < in.twin[h]) ei++;
+                for (h = 0; h < in.num_verts; h++)
+                    if (!(in.vert_tag[h] & (SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED))) {
+                        vi++;
+                        s += subd_vertex_valence(&in, h);
+                    }
+                for (l = 0; l < lev; l++) {
+                    /* S_2: V' = C, F' = F + E_i + V_i, C' = C + 4 E_i + S, E_i' = 2 E_i + S,
+                     * V_i' = S, S' = 4 S, B' = C - S */
+                    uint32_t nf = f + ei + vi, nc = c + 4u * ei + s;
+                    b = c - s;
+                    v = c;
+                    f = nf;
+                    c = nc;
+                    ei = 2u * ei + s;
+                    vi = s;
+                    s = 4u * s;
+                    for (t = 2; t < order; t++) {
+                        /* C: V' = F + 2B, F' = V, C' = C + 3B, E_i' = E_i + B, V_i' = F,
+                         * S' = C, B' = 2B */
+                        uint32_t nv = f + 2u * b;
+                        nf = v;
+                        nc = c + 3u * b;
+                        ei = ei + b;
+                        vi = f;
+                        s = c;
+                        v = nv;
+                        f = nf;
+                        c = nc;
+                        b = 2u * b;
+                    }
+                }
+                sopts(&o, lev, SUBD_ALPHA_COS, 1, 5, SUBD_REAL_FRAC(3, 4));
+                o.order = order;
+                if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_OK)) return;
+                if (!CHECK(plan <= subd_arena_free_bytes(&a))) return;
+                m0 = subd_arena_mark(&a);
+                if (!ds(&a, &in, &o, &out)) return;
+                CHECK_EQ(a.peak - m0, plan);
+                CHECK_EQ(out.num_verts, v);
+                CHECK_EQ(out.num_faces, f);
+                CHECK_EQ(out.num_corners, c);
+                CHECK_EQ(out.num_edges - out.num_boundary_edges, ei);
+                CHECK_EQ(out.num_boundary_edges, b);
+                CHECK_EQ(out.num_isolated, 0);
+                CHECK_EQ(subd_mesh_euler(&out), subd_mesh_euler(&in) - (int32_t)in.num_isolated);
+                CHECK_EQ(out.num_boundary_loops, in.num_boundary_loops);
+                if (lev == 2u) {
+                    char name[] = "alpha_sk_m0_k0_l2";
+                    name[10] = (char)('0' + fi);
+                    name[13] = (char)('0' + order);
+                    h_hash(name, h_mesh_hash(&out));
+                }
+            }
+}
+
+/* Every too-small arena fails cleanly for S_3 and S_4; plan = peak. */
+static void alpha_sk_plan_exact(void)
+{
+    subd_arena a;
+    subd_mesh cube, grid;
+    subd_alpha_opts o;
+    subd_face_list fl = quad_grid(2, 2);
+    uint32_t order;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!read_obj(&a, "test/data/cube_quad.obj", &cube) || !build(&a, &fl, &grid)) return;
+    for (order = 3; order <= 4u; order++) {
+        sopts(&o, 1, SUBD_ALPHA_POLY, 1, 3, SUBD_REAL_ONE);
+        o.order = order;
+        check_plan_exhaustive(&cube, &o);
+        check_plan_exhaustive(&grid, &o);
+    }
+    sopts(&o, 2, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
+    o.order = 3;
+    check_plan_exhaustive(&grid, &o);
+}
+
 const test_case suite_alpha_surface[] = {
     {"alpha_ds_quad_weights", alpha_ds_quad_weights},
 #if H_HOST
@@ -552,5 +793,9 @@ const test_case suite_alpha_surface[] = {
     {"alpha_ds_plan_exact", alpha_ds_plan_exact},
     {"alpha_ds_errors", alpha_ds_errors},
     {"alpha_ds_hashes", alpha_ds_hashes},
+    {"alpha_s3_bspline", alpha_s3_bspline},
+    {"alpha_s3_boundary", alpha_s3_boundary},
+    {"alpha_sk_levels", alpha_sk_levels},
+    {"alpha_sk_plan_exact", alpha_sk_plan_exact},
     {0, 0}
 };

@@ -268,6 +268,8 @@ is 0 && awk 'BEGIN { n = 0 } NF == 3 { x[n] = $1; y[n] = $2; n++ }
 check $? "alpha cos kernel on the square: 128 points (closed), every edge midpoint on the unit circle"
 run "$FLOAT" alpha -l 1 test/data/cube_quad.obj -o "$T/ds.obj" --stats
 is 0 && [ "$(json_num vertices)" = 24 ] && [ "$(json_num faces)" = 26 ]; check $? "alpha (Doo-Sabin type) on the cube: 24 vertices, 26 faces"
+run "$FLOAT" alpha --order 3 -l 1 test/data/cube_quad.obj -o "$T/cc.obj" --stats
+is 0 && [ "$(json_num vertices)" = 26 ] && [ "$(json_num faces)" = 24 ]; check $? "alpha --order 3 on the cube: Catmull-Clark counts, 26 vertices, 24 faces"
 run "$FLOAT" limit --normals test/data/icosahedron.obj -o "$T/lim.obj"
 is 0 && [ "$(grep -c '^vn ' "$T/lim.obj")" = 12 ]; check $? "limit --normals: one vn per vertex"
 run "$FLOAT" pia --tol 1e-4 test/data/icosahedron.obj -o "$T/pia.obj" --stats

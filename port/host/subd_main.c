@@ -420,7 +420,7 @@ static void usage(FILE *f)
             "  --tol T          (pia) stop when every limit point is within T of its input vertex\n"
             "  --max-iter K     (pia) at most K iterations (default 100)\n"
             "  --method M       (pia) paper (V += P - LV) or fast (default; see src/pia.c)\n"
-            "  --order K        (alpha) operator order S_K, 2..8 (surfaces: 2)\n"
+            "  --order K        (alpha) operator order S_K, 2..8 (S_3: the paper's Catmull-Clark variant)\n"
             "  --kernel K       (alpha) bspline (default), cos (C-curves: circles), poly, cosh\n"
             "  --alpha A        (alpha) angle as a fraction of a turn N/D (1/8) or degrees (45deg)\n"
             "  --stiffness S    (alpha) s = f(0), default 1; s <= -1 diverges (rejected)\n"

@@ -102,8 +102,10 @@
  * Memory and work: subd_loop_limit_apply uses no arena memory; subd_loop_limit allocates
  * exactly its outputs (3 * num_verts subd_reals each). Work O(sum of valences) for
  * positions; a dart with the B-spline rule costs O(n^3) (power iteration, n <= 48, above
- * which the interior cos mask is used). No recursion; the largest frame (subd_loop_limit
- * with the normal code inlined) is below 1 KB on Cortex-M.
+ * which the interior cos mask is used). The interior tangent weights of valences 4..8 are
+ * tabulated once per call in subd_loop_limit's frame (lim_trig), so the integer trig runs
+ * O(1) times per call for them instead of twice per neighbour. No recursion; the largest
+ * frame (subd_loop_limit with the normal code inlined) is below 1 KB on Cortex-M.
  */
 #include "loop_internal.h"
 #include "mesh_internal.h"
@@ -569,10 +571,52 @@ static uint32_t lim_ring_step(const subd_mesh *m, uint32_t first, uint32_t *h, u
     return u;
 }
 
+/* Per-call table of the interior tangent weights subd_cos_turns(j, n), subd_sin_turns(j, n)
+ * for the common valences LIM_TRIG_LO..LIM_TRIG_HI, j = 0..n/2, each valence filled on its
+ * first use (the integer trig was most of the normals' time). The other half of the ring
+ * follows bit for bit from the exact range reduction of trig.c: cos((n-j)/n) == cos(j/n),
+ * sin((n-j)/n) == -sin(j/n) in Q62, and subd_real_from_q62 rounds the magnitude, so the
+ * negation commutes with it (sin is 0 only at j = 0 and n/2, which are stored). Lives in
+ * subd_loop_limit's frame: no global state, no arena memory. */
+#define LIM_TRIG_LO 4u
+#define LIM_TRIG_HI 8u
+#define LIM_TRIG_SLOTS 19u /* sum of (n/2 + 1) for n = LIM_TRIG_LO..LIM_TRIG_HI */
+
+typedef struct lim_trig {
+    uint32_t filled; /* bit n: valence n present */
+    subd_real c[LIM_TRIG_SLOTS], s[LIM_TRIG_SLOTS];
+} lim_trig;
+
+/* cos(2 pi j/n) and sin(2 pi j/n), 0 <= j < n, as subd_cos_turns / subd_sin_turns. */
+static void lim_sincos(lim_trig *t, uint32_t j, uint32_t n, subd_real *wc, subd_real *ws)
+{
+    uint32_t off = 0, m, jj;
+    if (!t || n < LIM_TRIG_LO || n > LIM_TRIG_HI) {
+        *wc = subd_cos_turns((int32_t)j, (int32_t)n);
+        *ws = subd_sin_turns((int32_t)j, (int32_t)n);
+        return;
+    }
+    for (m = LIM_TRIG_LO; m < n; m++) off += m / 2u + 1u;
+    if (!(t->filled & ((uint32_t)1 << n))) {
+        for (jj = 0; jj <= n / 2u; jj++) {
+            t->c[off + jj] = subd_cos_turns((int32_t)jj, (int32_t)n);
+            t->s[off + jj] = subd_sin_turns((int32_t)jj, (int32_t)n);
+        }
+        t->filled |= (uint32_t)1 << n;
+    }
+    if (j <= n / 2u) {
+        *wc = t->c[off + j];
+        *ws = t->s[off + j];
+    } else {
+        *wc = t->c[off + n - j];
+        *ws = (subd_real)0 - t->s[off + n - j];
+    }
+}
+
 /* Interior tangents t1 = sum cos(2 pi i/n) (p_i - v), t2 = sum sin(2 pi i/n) (p_i - v),
  * with i counted from ring position i0. */
 static void lim_smooth_tangents(const subd_mesh *m, const subd_real *ctrl, uint32_t v, uint32_t n,
-                                uint32_t i0, lim_wide *t1, lim_wide *t2)
+                                uint32_t i0, lim_trig *tab, lim_wide *t1, lim_wide *t2)
 {
     const subd_real *pv = &ctrl[3u * v];
     uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, k;
@@ -580,7 +624,8 @@ static void lim_smooth_tangents(const subd_mesh *m, const subd_real *ctrl, uint3
     for (i = 0; i < n; i++) {
         const subd_real *p = &ctrl[3u * lim_ring_step(m, first, &h, &last)];
         uint32_t j = (i + n - i0) % n;
-        subd_real wc = subd_cos_turns((int32_t)j, (int32_t)n), ws = subd_sin_turns((int32_t)j, (int32_t)n);
+        subd_real wc, ws;
+        lim_sincos(tab, j, n, &wc, &ws);
         for (k = 0; k < 3u; k++) {
             lim_wide d = lim_diff(p[k], pv[k]);
             t1[k] = lim_madd(t1[k], wc, d);
@@ -833,13 +878,13 @@ static int32_t lim_w8(subd_loop_boundary b, int rv, int rc)
 }
 
 static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
-                       const lim_vert *c, subd_real *out)
+                       const lim_vert *c, lim_trig *tab, subd_real *out)
 {
     lim_wide t1[3], t2[3];
     uint32_t k, n = c->valence;
     for (k = 0; k < 3u; k++) out[k] = (subd_real)0;
     if (c->cls == LIM_SMOOTH || (c->cls == LIM_CORNER && c->nsharp <= 1u)) {
-        lim_smooth_tangents(m, ctrl, v, n, 0u, t1, t2);
+        lim_smooth_tangents(m, ctrl, v, n, 0u, tab, t1, t2);
         lim_unit_cross(t1, t2, out);
     } else if (c->cls == LIM_DART) {
         lim_dart_normal(m, b, ctrl, v, c, out);
@@ -912,6 +957,7 @@ int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, su
     subd_diag *d = diag ? diag : &dummy;
     subd_real *p, *nrm = 0;
     lim_w cache[LIM_CACHE];
+    lim_trig tab;
     uint32_t bytes, mark, v, k, ovf = 0;
     lim_vert c;
     int st;
@@ -934,10 +980,11 @@ int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, su
         return subd_fail(d, SUBD_ERR_NOMEM);
     }
     for (k = 0; k < LIM_CACHE; k++) cache[k] = (lim_w)0;
+    tab.filled = 0;
     for (v = 0; v < in->num_verts; v++) {
         lim_classify(in, v, &c);
         lim_position(in, b, in->pos, v, &c, cache, &p[3u * v], &ovf);
-        if (nrm) lim_normal(in, b, in->pos, v, &c, &nrm[3u * v]);
+        if (nrm) lim_normal(in, b, in->pos, v, &c, &tab, &nrm[3u * v]);
     }
     if (ovf) {
         subd_arena_rewind(a, mark);

@@ -5,13 +5,22 @@
 
 static void embed_readme_example(void)
 {
-    uint32_t faces = 0, used = 0, plan = 0;
+    subd_mesh fine;
+    subd_arena a;
+    subd_mesh coarse;
     subd_diag d;
-    CHECK_EQ(example_build_tetra(&faces, &used), SUBD_OK);
-    CHECK_EQ(faces, 4);
-    CHECK_EQ(subd_obj_plan(tetra_obj, sizeof tetra_obj - 1, &plan, &d), SUBD_OK);
-    CHECK_EQ(used, plan);
-    CHECK(plan <= sizeof arena_buf);
+    subd_loop_opts o = {2, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    uint32_t read_plan, loop_plan;
+    CHECK_EQ(example_subdivide(&fine), SUBD_OK);
+    CHECK_EQ(fine.num_faces, 4u * 4u * 4u); /* F' = 4F per level */
+    CHECK_EQ(fine.num_verts, 34);            /* V + E + (2E + 3F) = 4 + 6 + 24 */
+    /* the buffer is big enough by the plans, computed independently here */
+    CHECK_EQ(subd_obj_plan(tetra_obj, sizeof tetra_obj - 1, &read_plan, &d), SUBD_OK);
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    CHECK_EQ(subd_obj_read(&a, tetra_obj, sizeof tetra_obj - 1, &coarse, &d), SUBD_OK);
+    CHECK_EQ(subd_loop_plan(&coarse, &o, &loop_plan), SUBD_OK);
+    CHECK(read_plan <= sizeof arena_buf);
+    CHECK(subd_arena_mark(&a) + loop_plan <= sizeof arena_buf);
 }
 
 const test_case suite_embed[] = {

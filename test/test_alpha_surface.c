@@ -41,6 +41,21 @@ static void sopts(subd_alpha_opts *o, uint32_t levels, uint32_t kernel, int32_t 
     o->stiffness = s;
 }
 
+/* The quantities the closed-form counts use, by brute force over the input: interior edges,
+ * interior vertices and the sum of the interior vertices' valences. */
+static void interior_counts(const subd_mesh *m, uint32_t *ei, uint32_t *vi, uint32_t *s)
+{
+    uint32_t h;
+    *ei = *vi = *s = 0;
+    for (h = 0; h < m->num_corners; h++)
+        if (m->twin[h] != SUBD_NONE && h < m->twin[h]) (*ei)++;
+    for (h = 0; h < m->num_verts; h++)
+        if (!(m->vert_tag[h] & (SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED))) {
+            (*vi)++;
+            *s += subd_vertex_valence(m, h);
+        }
+}
+
 /* (n+1) x (m+1) planar grid of quads, z a bumpy integer height; an open disk. */
 static subd_face_list quad_grid(uint32_t n, uint32_t m)
 {
@@ -346,7 +361,7 @@ static void alpha_ds_levels(void)
             subd_arena a;
             subd_mesh in, out;
             subd_alpha_opts o;
-            uint32_t v, f, c, ei = 0, vi = 0, s = 0, h, l, plan;
+            uint32_t v, f, c, ei, vi, s, l, plan;
             subd_arena_init(&a, WORK_BUF, WORK_BYTES);
             if (fi < 3u) {
                 if (!read_obj(&a, files[fi], &in)) return;
@@ -358,13 +373,7 @@ static void alpha_ds_levels(void)
             v = in.num_verts;
             f = in.num_faces;
             c = in.num_corners;
-            for (h = 0; h < in.num_corners; h++)
-                if (in.twin[h] != SUBD_NONE && h < in.twin[h]) ei++;
-            for (h = 0; h < in.num_verts; h++)
-                if (!(in.vert_tag[h] & (SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED))) {
-                    vi++;
-                    s += subd_vertex_valence(&in, h);
-                }
+            interior_counts(&in, &ei, &vi, &s);
             for (l = 0; l < lev; l++) {
                 uint32_t nf = f + ei + vi, nc = c + 4u * ei + s;
                 v = c;
@@ -690,7 +699,7 @@ static void alpha_sk_levels(void)
                 subd_arena a;
                 subd_mesh in, out;
                 subd_alpha_opts o;
-                uint32_t v, f, c, ei = 0, vi = 0, s = 0, b = 0, h, l, t, plan, m0;
+                uint32_t v, f, c, ei, vi, s, b = 0, h, l, t, plan, m0;
                 subd_arena_init(&a, WORK_BUF, WORK_BYTES);
                 g_state = 777u; /* the same grid for every run, host and device */
                 if (fi < 2u) {
@@ -704,13 +713,7 @@ static void alpha_sk_levels(void)
                 v = in.num_verts;
                 f = in.num_faces;
                 c = in.num_corners;
-                for (h = 0; h < in.num_corners; h++)
-                    if (in.twin[h] != SUBD_NONE && h < in.twin[h]) ei++;
-                for (h = 0; h < in.num_verts; h++)
-                    if (!(in.vert_tag[h] & (SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED))) {
-                        vi++;
-                        s += subd_vertex_valence(&in, h);
-                    }
+                interior_counts(&in, &ei, &vi, &s);
                 for (l = 0; l < lev; l++) {
                     /* S_2: V' = C, F' = F + E_i + V_i, C' = C + 4 E_i + S, E_i' = 2 E_i + S,
                      * V_i' = S, S' = 4 S, B' = C - S */

@@ -1,0 +1,181 @@
+/* Semi-regular 4-8 refinement with four-direction (Zwart-Powell) box-spline smoothing and
+ * variable-resolution extraction (paper: semi-regular-4-8-refinement-box-splines.txt,
+ * Velho). Included by subd.h (until then, include it after subd.h).
+ *
+ * Three stages:
+ *  1. Pre-processing (section 5): find_clusters picks an independent set of two-face
+ *     clusters (interior edges only, by decreasing length, radially around each vertex, the
+ *     same sort_edges / mark_cluster as quasi 4-8's Algorithm 1); hybrid subdivision splits
+ *     each cluster's diagonal (new vertex: the cluster's face point) and each remaining
+ *     isolated triangle barycentrically; one regular binary step then splits every original
+ *     edge (new vertex: its edge point). The result, level 0 of the hierarchy, is a
+ *     triangulated quadrangulation: every triangle is right-angled in the 4-8 sense and
+ *     knows its base edge (the edge opposite its newest vertex).
+ *  2. Regular 4-8 refinement (section 4) as `steps` binary steps, each splitting every base
+ *     edge; two binary steps are one 4-8 refinement (faces x4). All levels are kept as an
+ *     index-based hierarchy of right triangles (below), so variable-resolution meshes can be
+ *     extracted without recomputing anything.
+ *  3. Smoothing (section 6, unless SUBD_SR48_NO_SMOOTH): the factored ZP rule, see
+ *     subd_sr48_build.
+ *
+ * Then subd_sr48_extract cuts a crack-free mesh out of the hierarchy: uniform at one level,
+ * or with a resolution that follows an adaptation function (section 7), or the coarsest
+ * mesh within a chordal tolerance of the finest level. */
+#ifndef SUBD_SEMIREG48_H
+#define SUBD_SEMIREG48_H
+
+#include "subd.h"
+
+/* Binary levels above level 0 one hierarchy can hold (two per 4-8 refinement). */
+#define SUBD_SR48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
+
+/* subd_sr48_opts.flags */
+#define SUBD_SR48_NO_SMOOTH 0x1u /* refinement only: new vertices are base-edge midpoints */
+
+typedef struct subd_sr48_opts {
+    uint32_t steps; /* binary steps after pre-processing, 0..SUBD_SR48_MAX_STEPS */
+    uint32_t flags;
+} subd_sr48_opts;
+
+/* The hierarchy of right triangles. All arrays live in the arena.
+ *
+ * Triangles are stored level by level: level k (0..steps) holds the triangles
+ * [level_tri[k], level_tri[k+1]). Parent and children are implicit in the index, so the
+ * hierarchy costs 16 bytes per triangle:
+ *   the i-th triangle of level k (t = level_tri[k] + i), k < steps, has the children
+ *   level_tri[k+1] + 2i and level_tri[k+1] + 2i + 1; the parent of a level-k triangle t
+ *   (k > 0) is level_tri[k-1] + (t - level_tri[k]) / 2.
+ * tri_vert[3t..3t+2] = (apex, b0, b1), counter-clockwise in the input's orientation; the
+ * base edge is b0 -> b1, the apex is the triangle's newest vertex. Splitting t = (c; a, b)
+ * at the new vertex m on its base gives child 2i = (m; c, a) and child 2i+1 = (m; b, c):
+ * a child's base is one of its parent's legs.
+ * tri_base_nb[t] is the triangle across t's base edge: it is on the same level and has the
+ * same base edge (t and it form a diamond and are always split together), or SUBD_NONE
+ * when the base edge is on the boundary (a half-diamond).
+ *
+ * Vertices are never renumbered: the vertices existing at level k are [0, level_verts[k]);
+ * the input's vertices come first (0..num_input_verts-1), then the pre-processing face
+ * points, then its edge points, then each binary step's new vertices. Positions are those
+ * of the finest level (`steps`): extraction at any level uses them, so every extracted
+ * mesh interpolates the finest surface at its vertices. */
+typedef struct subd_sr48 {
+    uint32_t steps;
+    uint32_t flags;
+    uint32_t num_input_verts;
+    uint32_t num_verts; /* = level_verts[steps]                                       */
+    uint32_t num_tris;  /* = level_tri[steps + 1], all levels                        */
+    subd_real *pos;     /* 3 * num_verts                                             */
+    uint32_t *tri_vert; /* 3 * num_tris                                              */
+    uint32_t *tri_base_nb;
+    uint32_t level_verts[SUBD_SR48_MAX_STEPS + 1];
+    uint32_t level_tri[SUBD_SR48_MAX_STEPS + 2];
+    /* pre-processing report (section 5) */
+    uint32_t num_clusters;     /* two-face clusters                                   */
+    uint32_t num_isolated;     /* triangles split barycentrically                     */
+} subd_sr48;
+
+/* Cluster count argument of subd_sr48_plan when it is not known. */
+#define SUBD_SR48_CLUSTERS_UNKNOWN 0xFFFFFFFFu
+
+/* Arena bytes subd_sr48_build uses. The pre-processed size depends on how many two-face
+ * clusters find_clusters picks (level 0 has 8 triangles per cluster and 6 per isolated
+ * triangle), which needs the edge sort. With clusters = SUBD_SR48_CLUSTERS_UNKNOWN the
+ * result is an upper bound (no clusters: the largest level 0); with the count from
+ * subd_sr48_count_clusters it is exact: the build's peak arena use equals it.
+ * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps out of range, input without adjacency,
+ * clusters more than half the faces), SUBD_ERR_FACE_SIZE (a non-triangle), SUBD_ERR_EMPTY
+ * (no faces) or SUBD_ERR_TOO_BIG. */
+int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes);
+
+/* Runs find_clusters in the arena's free space and gives the space back: the arena is
+ * unchanged afterwards. Returns SUBD_OK, the errors of subd_sr48_plan, or SUBD_ERR_NOMEM
+ * (diag->bytes_needed says how much the sort needs). */
+int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clusters, subd_diag *diag);
+
+/* Pre-processes `in` and refines it `o->steps` binary steps into *out.
+ *
+ * Smoothing (the factored Zwart-Powell rule of section 6). The paper's "the values at new
+ * grid points are the average of their two neighbours" is ambiguous on a 4-8 mesh (a new
+ * vertex has four neighbours); the choice made here reproduces the ZP dual quad scheme
+ * exactly on regular grids (test_sr48 checks it against an independent ZP):
+ *  - pre-processing: a cluster's face point is the centroid of its four vertices, an
+ *    isolated triangle's the barycentre, an edge point the edge's midpoint; then every
+ *    interior input vertex and every face point moves to the average of its adjacent edge
+ *    points, every boundary input vertex to the average of its two boundary edge points;
+ *  - each binary step: the new vertex of a diamond is the average of the diamond's two
+ *    apexes (the vertices opposite the split base edge); of a boundary half-diamond, the
+ *    midpoint of the base edge;
+ *  - after every second binary step, every older interior vertex moves to the average of
+ *    its neighbours created by that step (the centroid of its new quad blocks), every older
+ *    boundary vertex to the average of its two new boundary neighbours (the boundary
+ *    converges to the quadratic B-spline, as the interior does to the ZP box spline).
+ * On a regular grid the ZP control points are the valence-4 vertices after each double
+ * step. With SUBD_SR48_NO_SMOOTH, face points are the midpoint of the cluster diagonal
+ * (barycentre for isolated triangles), every new vertex is its base edge's midpoint and
+ * nothing moves: the surface is the input polyhedron.
+ * Q16.16: each average is one exact integer sum divided once, rounded to nearest.
+ *
+ * On failure the arena is rewound and *out untouched. Errors: those of subd_sr48_plan,
+ * SUBD_ERR_NOMEM (bytes_needed = the plan bound), SUBD_ERR_RANGE (a position left the Q16.16 range). */
+int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out,
+                    subd_diag *diag);
+
+/* --------------------------------------------------------------------------------------
+ * Variable-resolution extraction (section 7).
+ * The extracted mesh is conforming: a diamond is split as a whole, and splitting a diamond
+ * first splits the (at most two) coarser diamonds its triangles come from ("forced
+ * splits", the restricted hierarchy), with an explicit stack in the arena. So edge
+ * neighbours differ by at most one level and there are no T-junctions. */
+typedef enum subd_adapt_mode {
+    SUBD_ADAPT_UNIFORM = 0, /* every triangle at max_level                                  */
+    SUBD_ADAPT_POINT,       /* finest at `point`: level max_level - floor(d / radius), d the
+                               distance from the point to the triangle                       */
+    SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at the
+                               bounding-box minimum to max_level at the maximum, evaluated at
+                               the triangle's largest coordinate on that axis                 */
+    SUBD_ADAPT_PLANE,       /* max_level where a triangle touches the side (x - point).normal
+                               >= 0, level 0 elsewhere (a step function)                      */
+    SUBD_ADAPT_CALLBACK,    /* level = fn(ctx, the triangle's three vertex positions)         */
+    SUBD_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
+} subd_adapt_mode;
+
+typedef uint32_t (*subd_adapt_fn)(void *ctx, const subd_real *p0, const subd_real *p1, const subd_real *p2);
+
+typedef struct subd_adapt {
+    subd_adapt_mode mode;
+    uint32_t max_level;  /* 0..hierarchy steps                                             */
+    subd_real point[3];  /* POINT, PLANE                                                   */
+    subd_real normal[3]; /* PLANE (need not be unit length)                                */
+    subd_real radius;    /* POINT: distance per level; 0 = bounding-box diagonal / (2 max_level) */
+    uint32_t axis;       /* RAMP                                                           */
+    subd_real eps;       /* CHORD: > 0, in input units                                     */
+    subd_adapt_fn fn;    /* CALLBACK                                                       */
+    void *ctx;
+} subd_adapt;
+
+/* What an extraction produced. */
+typedef struct subd_adapt_report {
+    uint32_t faces;         /* output triangles                                             */
+    uint32_t uniform_faces; /* triangles of uniform level max_level (saved = the difference)  */
+    uint32_t forced_splits; /* diamonds split only to keep the mesh conforming              */
+    uint32_t level_faces[SUBD_SR48_MAX_STEPS + 1]; /* output triangles per level            */
+} subd_adapt_report;
+
+/* Arena bytes subd_sr48_extract may use: exact for SUBD_ADAPT_UNIFORM; for the other modes
+ * the bound of the uniform max_level mesh (an adaptive mesh never has more triangles or
+ * vertices) plus the marking memory. */
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes);
+
+/* Extracts a conforming triangle mesh (validated, with adjacency) from the hierarchy.
+ * A triangle t of level k is split when k < max_level and the adaptation function asks for
+ * a level above k (CHORD: when its chordal deviation exceeds eps), or when a finer
+ * neighbour needs it (forced). Chordal deviation of t: the largest distance between a
+ * finest-level vertex inside t (or on its edges) and the point of t with the same
+ * hierarchy (dyadic barycentric) parameter: an upper bound of the distance to t, so every
+ * finest-level vertex is within eps of the extracted mesh. Output vertices are the used
+ * hierarchy vertices in increasing index order. On failure the arena is rewound and *out
+ * untouched. */
+int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
+                      subd_adapt_report *rep, subd_diag *diag);
+
+#endif

@@ -21,12 +21,8 @@
  *    vertices to float32 or Q16.16 (Q16.16: the hexagon's spokes at 60 degrees come out
  *    4e-6 longer than those at 0 degrees); the paper's figures depend on those ties, so
  *    without this the fixed build would give the perturbed-hexagon topology (centre 8).
- *  - Squared lengths: Q16.16 exactly, in 64-bit integers from the raw differences (each
- *    square < 2^64, the sum kept in 66 bits), encoded as a monotonic 64-bit key (bit length
- *    << 52 | 52 bits below the leading one); float32: dx*dx + dy*dy + dz*dz in float32
- *    (deterministic, no fused multiply-add), key from its bit pattern in the same format.
- *    The sort is an LSD radix sort (8-bit digits, passes over constant digits skipped):
- *    stable, so no tie key is needed, and no qsort.
+ *  - Squared lengths, their keys and the stable radix sort: src/edge_sort.c (shared with
+ *    the semi-regular 4-8 pre-processing).
  *  - New vertices are edge midpoints (refinement is purely topological plus midpoints);
  *    Algorithm 2 then moves them.
  *  - Section 4.3, "a tagged vertex or edge is not affected by smoothing": vertices tagged
@@ -44,8 +40,7 @@
  */
 #include "mesh_internal.h"
 #include "subd_quasi48.h"
-
-#define Q48_KEY_FRAC 52u
+#include "edge_sort.h"
 
 typedef struct q48_layout {
     mesh_counts out;  /* bound for the last step's output                                */
@@ -55,13 +50,8 @@ typedef struct q48_layout {
 } q48_layout;
 
 typedef struct q48_work {
-    uint32_t *edge_of;  /* per input half-edge: its edge number (radial order)           */
-    uint32_t *edge_he;  /* per edge: one of its half-edges                              */
-    uint64_t *key[2];   /* sort keys, ping-pong                                          */
-    uint32_t *ord[2];   /* edge numbers, ping-pong                                       */
+    subd_edge_work es;  /* edge numbering, sort and cluster marks (edge_sort.c)          */
     uint32_t *split;    /* per edge: the new vertex, or SUBD_NONE                        */
-    uint8_t *mark;      /* per edge: marked by a cluster                                 */
-    uint32_t *cnt;      /* 256 radix counters                                            */
     uint8_t *vkeep;     /* per output vertex: caller tags, then "pinned" during smoothing */
     uint8_t *ekeep;     /* per output half-edge: crease tag to restore after the builder */
 } q48_work;
@@ -111,15 +101,15 @@ static int q48_layout_work(subd_arena *a, const q48_layout *L, q48_work *w, uint
                                arr[n].count = (cnt); arr[n].elem = (sz); n++; } while (0)
     q48_work tmp;
     q48_work *p = w ? w : &tmp;
-    ARR(p->key[0], L->cs, 8u);
-    ARR(p->key[1], L->cs, 8u);
-    ARR(p->edge_of, L->cs, 4u);
-    ARR(p->edge_he, L->cs, 4u);
-    ARR(p->ord[0], L->cs, 4u);
-    ARR(p->ord[1], L->cs, 4u);
+    ARR(p->es.key[0], L->cs, 8u);
+    ARR(p->es.key[1], L->cs, 8u);
+    ARR(p->es.edge_of, L->cs, 4u);
+    ARR(p->es.edge_he, L->cs, 4u);
+    ARR(p->es.ord[0], L->cs, 4u);
+    ARR(p->es.ord[1], L->cs, 4u);
     ARR(p->split, L->cs, 4u);
-    ARR(p->mark, L->cs, 1u);
-    ARR(p->cnt, 256u, 4u);
+    ARR(p->es.mark, L->cs, 1u);
+    ARR(p->es.cnt, 256u, 4u);
     ARR(p->vkeep, L->out.nv, 1u);
     ARR(p->ekeep, L->out.nc, 1u);
 #undef ARR
@@ -229,160 +219,21 @@ static subd_real q48_blend(subd_real p, q48_sum s, uint32_t k, uint32_t *ovf)
 }
 #endif
 
-/* ------------------------------------------------------------------------------------ */
-/* sort_edges                                                                             */
-
-/* Squared length of the edge of half-edge h as a monotonic key: (bit length of the value
- * in units of the arithmetic) << 52 | the 52 bits below its leading one. */
-static uint64_t q48_len_key(const subd_mesh *m, uint32_t h)
-{
-    const subd_real *p = m->pos + 3u * subd_he_origin(m, h), *q = m->pos + 3u * subd_he_dest(m, h);
-#if SUBD_FIXED
-    uint64_t lo = 0, hi = 0, top;
-    uint32_t i, n = 0;
-    for (i = 0; i < 3u; i++) {
-        int64_t dd = (int64_t)q[i] - p[i];
-        uint64_t ad = (uint64_t)(dd < 0 ? -dd : dd); /* < 2^32 */
-        uint64_t sq = ad * ad;                         /* < 2^64 */
-        lo += sq;
-        if (lo < sq) hi++;
-    }
-    if (hi == 0 && lo == 0) return 0;
-    /* bit length n of hi:lo (hi <= 2) */
-    if (hi) n = 64u + (hi > 1u ? 2u : 1u);
-    else for (top = lo; top; top >>= 1) n++;
-    if (n <= Q48_KEY_FRAC + 1u) {
-        top = lo << (Q48_KEY_FRAC + 1u - n);
-    } else {
-        uint32_t sh = n - (Q48_KEY_FRAC + 1u);
-        top = lo >> sh;
-        if (hi) top |= hi << (64u - sh); /* n >= 65, so 12 <= sh <= 13 */
-    }
-    return ((uint64_t)n << Q48_KEY_FRAC) | (top & ((1ull << Q48_KEY_FRAC) - 1u));
-#else
-    uint32_t ovf = 0, b;
-    subd_real dx = subd_sub(q[0], p[0], &ovf), dy = subd_sub(q[1], p[1], &ovf), dz = subd_sub(q[2], p[2], &ovf);
-    subd_real xx = dx * dx, yy = dy * dy, zz = dz * dz;
-    subd_real s = xx + yy;
-    s = s + zz;
-    b = subd_real_bits(s) & 0x7fffffffu; /* s >= 0 (or +inf) */
-    return ((uint64_t)(b >> 23) << Q48_KEY_FRAC) | ((uint64_t)(b & 0x7fffffu) << (Q48_KEY_FRAC - 23u));
-#endif
-}
-
-/* Rounds a key to `bits` significant bits (1..53), to nearest; the carry into the bit
- * length field is the correct result (as for floating-point numbers). */
-static uint64_t q48_round_key(uint64_t k, uint32_t bits)
-{
-    uint32_t drop = Q48_KEY_FRAC + 1u - bits;
-    if (drop == 0 || k == 0) return k;
-    k += 1ull << (drop - 1u);
-    return k & ~((1ull << drop) - 1u);
-}
-
-/* Numbers the edges radially around each vertex (see the file comment). Returns E. */
-static uint32_t q48_number_edges(const subd_mesh *m, const q48_work *w)
-{
-    uint32_t h, v, ne = 0;
-    for (h = 0; h < m->num_corners; h++) w->edge_of[h] = SUBD_NONE;
-    for (v = 0; v < m->num_verts; v++) {
-        uint32_t first = m->vert_out[v], last = SUBD_NONE, steps = 0;
-        if (first == SUBD_NONE) continue;
-        for (h = first; h != SUBD_NONE && steps < m->num_corners; h = subd_ring_next(m, first, h), steps++) {
-            last = h;
-            if (w->edge_of[h] != SUBD_NONE) continue;
-            w->edge_of[h] = ne;
-            if (m->twin[h] != SUBD_NONE) w->edge_of[m->twin[h]] = ne;
-            w->edge_he[ne++] = h;
-        }
-        if (m->twin[first] == SUBD_NONE) { /* boundary: the incoming boundary edge comes last */
-            h = subd_he_prev(m, last);
-            if (w->edge_of[h] == SUBD_NONE) {
-                w->edge_of[h] = ne;
-                w->edge_he[ne++] = h;
-            }
-        }
-    }
-    return ne;
-}
-
-/* Stable LSD radix sort of ord[0][0..n) by key[0] ascending, 8-bit digits; passes where
- * every key has the same digit are skipped. Returns the array that holds the result. */
-static const uint32_t *q48_radix_sort(q48_work *w, uint32_t n)
-{
-    uint64_t *ks = w->key[0], *kd = w->key[1], *kt;
-    uint32_t *os = w->ord[0], *od = w->ord[1], *ot;
-    uint32_t shift, i, d;
-    for (shift = 0; shift < 64u; shift += 8u) {
-        uint32_t sum = 0, skip = 0;
-        for (d = 0; d < 256u; d++) w->cnt[d] = 0;
-        for (i = 0; i < n; i++) w->cnt[(uint32_t)(ks[i] >> shift) & 255u]++;
-        for (d = 0; d < 256u; d++) {
-            uint32_t c = w->cnt[d];
-            if (c == n) skip = 1;
-            w->cnt[d] = sum;
-            sum += c;
-        }
-        if (skip) continue;
-        for (i = 0; i < n; i++) {
-            uint32_t at = w->cnt[(uint32_t)(ks[i] >> shift) & 255u]++;
-            kd[at] = ks[i];
-            od[at] = os[i];
-        }
-        kt = ks; ks = kd; kd = kt;
-        ot = os; os = od; od = ot;
-    }
-    return os;
-}
-
-/* ------------------------------------------------------------------------------------ */
-/* Algorithm 1: one binary refinement step m -> o                                         */
-
-/* Marks e and every edge of the faces that contain e. */
-static void q48_mark_cluster(const subd_mesh *m, const q48_work *w, uint32_t e)
-{
-    uint32_t side, h = w->edge_he[e];
-    w->mark[e] = 1;
-    for (side = 0; side < 2u; side++) {
-        uint32_t s;
-        if (h == SUBD_NONE) break;
-        s = m->face_start[m->corner_face[h]];
-        w->mark[w->edge_of[s]] = 1;
-        w->mark[w->edge_of[s + 1u]] = 1;
-        w->mark[w->edge_of[s + 2u]] = 1;
-        h = m->twin[h];
-    }
-}
-
 static int q48_refine(subd_arena *a, const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, uint32_t bits,
                       q48_work *w, subd_diag *d)
 {
     const uint32_t nv = m->num_verts, nf = m->num_faces;
-    uint32_t ne, i, e, f, ns = 0, nsf = 0, k, ovf = 0;
-    const uint32_t *ord;
+    uint32_t ne, i, e, f, ns, nsf = 0, k, ovf = 0;
     int st;
 
-    /* sort_edges */
-    ne = q48_number_edges(m, w);
-    for (e = 0; e < ne; e++) {
-        w->key[0][e] = ~q48_round_key(q48_len_key(m, w->edge_he[e]), bits); /* ascending = longest first */
-        w->ord[0][e] = e;
-        w->split[e] = SUBD_NONE;
-        w->mark[e] = 0;
-    }
-    ord = q48_radix_sort(w, ne);
-
-    /* split unmarked edges, mark their clusters */
-    for (i = 0; i < ne; i++) {
-        e = ord[i];
-        if (w->mark[e]) continue;
-        w->split[e] = nv + ns++;
-        q48_mark_cluster(m, w, e);
-    }
+    /* sort_edges, then split unmarked edges and mark their clusters (edge_sort.c) */
+    ne = subd_edge_number(m, &w->es, m->num_corners);
+    if (ne == SUBD_NONE) return subd_fail(d, SUBD_ERR_PARAM); /* cannot happen: E <= corners */
+    ns = subd_edge_clusters(m, &w->es, ne, bits, 0, nv, w->split);
     for (f = 0; f < nf; f++) {
         uint32_t s = m->face_start[f];
-        if (w->split[w->edge_of[s]] != SUBD_NONE || w->split[w->edge_of[s + 1u]] != SUBD_NONE ||
-            w->split[w->edge_of[s + 2u]] != SUBD_NONE)
+        if (w->split[w->es.edge_of[s]] != SUBD_NONE || w->split[w->es.edge_of[s + 1u]] != SUBD_NONE ||
+            w->split[w->es.edge_of[s + 2u]] != SUBD_NONE)
             nsf++;
     }
     /* ns <= nsf <= nf by the marking, so the bounds hold; checked anyway */
@@ -397,7 +248,7 @@ static int q48_refine(subd_arena *a, const subd_mesh *m, subd_mesh *o, const mes
     /* positions: old vertices copied, new ones at the midpoints */
     for (i = 0; i < 3u * nv; i++) o->pos[i] = m->pos[i];
     for (e = 0; e < ne; e++) {
-        uint32_t v = w->split[e], h = w->edge_he[e];
+        uint32_t v = w->split[e], h = w->es.edge_he[e];
         const subd_real *p, *q;
         if (v == SUBD_NONE) continue;
         p = m->pos + 3u * subd_he_origin(m, h);
@@ -415,7 +266,7 @@ static int q48_refine(subd_arena *a, const subd_mesh *m, subd_mesh *o, const mes
     for (f = 0; f < nf; f++) {
         uint32_t s = m->face_start[f], j, at = 3u * f;
         for (j = 0; j < 3u; j++) {
-            uint32_t h = s + j, v = w->split[w->edge_of[h]];
+            uint32_t h = s + j, v = w->split[w->es.edge_of[h]];
             if (v == SUBD_NONE) continue;
             {
                 uint32_t h1 = s + (j + 1u) % 3u, h2 = s + (j + 2u) % 3u, bt = 3u * k;

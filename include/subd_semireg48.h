@@ -81,10 +81,15 @@ typedef struct subd_sr48 {
  * clusters find_clusters picks (level 0 has 8 triangles per cluster and 6 per isolated
  * triangle), which needs the edge sort. With clusters = SUBD_SR48_CLUSTERS_UNKNOWN the
  * result is an upper bound (no clusters: the largest level 0); with the count from
- * subd_sr48_count_clusters it is exact: the build's peak arena use equals it.
- * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps out of range, input without adjacency,
- * clusters more than half the faces), SUBD_ERR_FACE_SIZE (a non-triangle), SUBD_ERR_EMPTY
- * (no faces) or SUBD_ERR_TOO_BIG. */
+ * subd_sr48_count_clusters it is exact: the build's peak arena use equals it. The bytes are:
+ * the output arrays (pos, tri_vert, tri_base_nb), plus the largest of find_clusters' edge
+ * sort (33 bytes per edge + 12 per face + 1 KiB), the pre-processing arrays with the level-0
+ * smoothing sums, and the smoothing sums of the largest later even level (per vertex 3 sums
+ * and a count: 28 bytes in Q16.16, whose sums are exact 64-bit integers, 16 in float32; so
+ * the two arithmetics have different plans).
+ * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps out of range, unknown flag bits, input
+ * without adjacency, clusters more than half the faces), SUBD_ERR_FACE_SIZE (a
+ * non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG. */
 int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes);
 
 /* Runs find_clusters in the arena's free space and gives the space back: the arena is
@@ -115,8 +120,13 @@ int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clust
  * nothing moves: the surface is the input polyhedron.
  * Q16.16: each average is one exact integer sum divided once, rounded to nearest.
  *
+ * The build first counts the clusters in the free arena (as subd_sr48_count_clusters), then
+ * allocates the output and runs find_clusters again above it.
  * On failure the arena is rewound and *out untouched. Errors: those of subd_sr48_plan,
- * SUBD_ERR_NOMEM (bytes_needed = the plan bound), SUBD_ERR_RANGE (a position left the Q16.16 range). */
+ * SUBD_ERR_NOMEM (bytes_needed = the exact plan when the arena holds the cluster count's
+ * sort, otherwise the SUBD_SR48_CLUSTERS_UNKNOWN bound), SUBD_ERR_RANGE (float32: a
+ * position overflowed; Q16.16 averages cannot leave the range), SUBD_ERR_PARAM also when
+ * the input's summary counts (num_edges, num_boundary_edges) do not match its faces. */
 int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out,
                     subd_diag *diag);
 
@@ -132,10 +142,11 @@ typedef enum subd_adapt_mode {
                                distance from the point to the triangle                       */
     SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at the
                                bounding-box minimum to max_level at the maximum, evaluated at
-                               the triangle's largest coordinate on that axis                 */
+                               the triangle's largest coordinate x on that axis: level
+                               floor(max_level (x - lo) / (hi - lo)), max_level if hi = lo   */
     SUBD_ADAPT_PLANE,       /* max_level where a triangle touches the side (x - point).normal
                                >= 0, level 0 elsewhere (a step function)                      */
-    SUBD_ADAPT_CALLBACK,    /* level = fn(ctx, the triangle's three vertex positions)         */
+    SUBD_ADAPT_CALLBACK,    /* level = fn(ctx, the triangle's apex, b0, b1 positions)         */
     SUBD_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
 } subd_adapt_mode;
 
@@ -161,20 +172,41 @@ typedef struct subd_adapt_report {
     uint32_t level_faces[SUBD_SR48_MAX_STEPS + 1]; /* output triangles per level            */
 } subd_adapt_report;
 
-/* Arena bytes subd_sr48_extract may use: exact for SUBD_ADAPT_UNIFORM; for the other modes
- * the bound of the uniform max_level mesh (an adaptive mesh never has more triangles or
- * vertices) plus the marking memory. */
+/* Arena bytes subd_sr48_extract may use: exact for SUBD_ADAPT_UNIFORM (when every input
+ * vertex is used by a face; unused input vertices are dropped, so the mesh is then smaller);
+ * for the other modes the bound of the uniform max_level mesh (an adaptive mesh never has
+ * more triangles or vertices) plus the marking memory (1 byte and 4 bytes per triangle of
+ * levels < max_level, 80 bytes per level for CHORD). An adaptive extraction needs only the
+ * bytes it uses: it fails with SUBD_ERR_NOMEM only when they are not free, and then
+ * diag->bytes_needed is the exact need when the marking memory fit (else the plan).
+ * Returns SUBD_OK or the parameter errors of subd_sr48_extract. Work O(levels). */
 int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes);
 
 /* Extracts a conforming triangle mesh (validated, with adjacency) from the hierarchy.
  * A triangle t of level k is split when k < max_level and the adaptation function asks for
  * a level above k (CHORD: when its chordal deviation exceeds eps), or when a finer
- * neighbour needs it (forced). Chordal deviation of t: the largest distance between a
- * finest-level vertex inside t (or on its edges) and the point of t with the same
- * hierarchy (dyadic barycentric) parameter: an upper bound of the distance to t, so every
- * finest-level vertex is within eps of the extracted mesh. Output vertices are the used
- * hierarchy vertices in increasing index order. On failure the arena is rewound and *out
- * untouched. */
+ * neighbour needs it (forced). The result is the least such cut, so it does not depend on
+ * evaluation order; each triangle that becomes part of the cut below max_level is
+ * evaluated once (CALLBACK: one call each). forced_splits counts the split diamonds
+ * neither of whose triangles asked for the split. Chordal deviation of t: the largest
+ * distance between a vertex of level <= max_level (the finest level of this extraction:
+ * max_level triangles are never split) inside t (or on its edges) and the point of t with
+ * the same hierarchy (dyadic barycentric) parameter: an upper bound of the distance to t,
+ * so every vertex of level <= max_level is within eps of the extracted mesh (Q16.16: the
+ * deviation is rounded to Q16.16 before the comparison, so within eps + 2^-16). RAMP's
+ * bounding box and POINT's default radius use the vertices of levels 0..max_level. POINT,
+ * Q16.16: the distance is computed to about 2^-13 of the triangle's and the point's extent.
+ * Output vertices are the used hierarchy vertices in increasing index order; output faces
+ * are the cut's triangles by level, then by hierarchy index, as (apex, b0, b1).
+ * Work: O(triangles of levels <= max_level) plus, for CHORD, a walk of each evaluated
+ * triangle's subtree (stopping at the first vertex beyond eps): at most O(faces of level
+ * max_level * max_level).
+ * Errors: SUBD_ERR_PARAM (a NULL pointer; mode out of range; max_level > h->steps; RAMP
+ * axis > 2; CHORD eps not > 0; CALLBACK fn NULL; POINT radius < 0; PLANE normal zero;
+ * float: a non-finite point, normal, radius or eps; a hierarchy that breaks the index rules
+ * above on levels 0..max_level), SUBD_ERR_EMPTY (no level-0 triangle), SUBD_ERR_TOO_BIG,
+ * SUBD_ERR_NOMEM (see subd_sr48_extract_plan). rep and diag may be NULL. On failure the
+ * arena is rewound and *out and *rep untouched. */
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag);
 

@@ -1,0 +1,793 @@
+/* Variable-resolution extraction from the semi-regular 4-8 hierarchy of right triangles.
+ *
+ * Paper: L. Velho, "Semi-regular 4-8 refinement and box spline surfaces"
+ * (semi-regular-4-8-refinement-box-splines.txt), section 3 (adaptive tilings: a basic block
+ * - a diamond - is split as a whole, and splitting an external edge of a block forces the
+ * neighbouring block to split: the restricted hierarchy) and section 7 (figure 20:
+ * tessellations extracted by point location, a linear ramp and a step across a plane).
+ * Beyond the paper: a chordal tolerance (CHORD) and a caller callback.
+ *
+ * How the cut is computed (the least conforming refinement that honours every request):
+ *  - a triangle is "active" when it belongs to the current cut (level 0, or its parent is
+ *    split). Splitting a diamond needs both of its triangles active, so force_split first
+ *    splits the diamonds of their parents, coarser and coarser, with an explicit stack in
+ *    the arena (each entry is one level coarser than the one below it, so its depth is at
+ *    most max_level);
+ *  - a FIFO worklist holds every triangle of level < max_level that becomes active (each
+ *    exactly once: a triangle becomes active when its parent's diamond splits), including
+ *    the ones activated by forced splits; each is evaluated against the adaptation function
+ *    once and, when it asks for a split, force_split splits it. The result is the least
+ *    fixpoint, so it does not depend on the processing order.
+ *  - one mark byte per triangle of level < max_level: SPLIT, and WANT (the adaptation
+ *    function asked for the split), so forced_splits counts the diamonds neither of whose
+ *    triangles wanted the split.
+ *
+ * Adaptation functions (all evaluated on the triangle's three corner positions, which are
+ * the hierarchy's finest positions):
+ *  - POINT: level max_level - floor(d / radius), i.e. split at level k iff
+ *    d < (max_level - k) * radius, d the point-to-triangle distance (Ericson's Voronoi
+ *    region walk). Q16.16: the three difference vectors are scaled by a power of two to
+ *    below 2^13 so every dot product and every product of two dot products fits int64; the
+ *    distance is then exact to about 2^-13 of the largest of |b-a|, |c-a|, |p-a|.
+ *  - RAMP: level floor(max_level (x - lo) / (hi - lo)) at the largest coordinate x on the
+ *    axis, i.e. split at level k iff (k + 1)(hi - lo) <= max_level (x - lo); Q16.16 exact.
+ *  - PLANE: split iff a corner v has (v - point).normal >= 0; Q16.16: exact sign (the three
+ *    64-bit products are summed as high and low 32-bit halves, so nothing overflows).
+ *  - CHORD: the chordal deviation of t is the largest |P(v) - L_t(v)| over the vertices v
+ *    of t's subtree down to level max_level (the "finest level" of this extraction; deeper
+ *    vertices cannot be honoured, max_level triangles are never split), L_t the linear
+ *    interpolation of t's corners at v's dyadic parameter. The subtree is walked depth
+ *    first with an explicit arena stack carrying L at the three corners of each node: the
+ *    parameter of a split vertex is the midpoint of its node's base, so L there is the
+ *    average of L at the base ends (Q16.16: L is kept in Q32.32, so 16 halvings are exact).
+ *    The walk stops at the first vertex beyond eps; only active triangles are walked, so
+ *    the work is O(faces of level max_level * levels) at most.
+ *  The bounding box (RAMP, POINT's default radius) is that of the vertices of levels
+ *  0..max_level.
+ *
+ * Memory (one layout function for plan and run): phase 1 allocates the marks, the worklist
+ * (reused afterwards as per-vertex "used" flags to count the output vertices), the
+ * force-split stack and, for CHORD, the deviation stack. Phase 2 keeps the marks, puts the
+ * output mesh arrays (exact counts) above them and a vertex renumbering map above those,
+ * fills the mesh, gives the map back and moves the arrays down over the marks, so the
+ * result occupies exactly its own bytes; then subd_mesh_finish validates it and builds the
+ * adjacency in scratch above the arrays. The bytes needed are
+ *   max(phase 1, marks + mesh arrays + max(map, builder scratch)),
+ * which the plan bounds with the uniform max_level counts (and which is exact for UNIFORM,
+ * where there are no marks, whenever every input vertex is used by a face).
+ */
+#include "mesh_internal.h"
+#include "subd_semireg48.h"
+
+#define EX_SPLIT 0x1u
+#define EX_WANT 0x2u
+
+/* A node of the chordal-deviation walk: the triangle, its level and the linear
+ * interpolant of the walk's root at its three corners (apex, b0, b1). The arena reserves
+ * EX_CNODE_BYTES per node in both arithmetics so the plan does not depend on the build. */
+#if SUBD_FIXED
+typedef int64_t ex_lin; /* Q32.32 */
+#else
+typedef float ex_lin;
+#endif
+typedef struct ex_cnode {
+    uint32_t tri, level;
+    ex_lin l[9];
+} ex_cnode;
+#define EX_CNODE_BYTES 80u
+typedef char ex_cnode_fits[(sizeof(ex_cnode) <= EX_CNODE_BYTES) ? 1 : -1];
+
+typedef struct ex_layout {
+    uint32_t max;          /* max_level                                                 */
+    uint32_t uniform;      /* mode UNIFORM: no marks, no worklist                        */
+    uint32_t ntri;         /* triangles of levels < max (marks, worklist)               */
+    uint32_t nvert;        /* vertices of levels <= max                                 */
+    uint32_t marks;        /* aligned bytes of the marks (kept during phase 2)          */
+    uint32_t phase1;       /* bytes of phase 1                                          */
+    uint32_t vmap;         /* aligned bytes of the renumbering map                      */
+} ex_layout;
+
+typedef struct ex_ctx {
+    const subd_sr48 *h;
+    const subd_adapt *ad;
+    uint32_t max, uniform;
+    uint8_t *mark;
+    uint32_t *work;    /* worklist, then per-vertex used flags                          */
+    uint32_t *fstack;  /* force_split stack, max + 1 entries                            */
+    ex_cnode *cstack;  /* CHORD walk stack, max + 1 entries                             */
+    uint32_t qtail;
+    uint32_t forced;
+    subd_real lo[3], hi[3];
+    subd_real radius;
+} ex_ctx;
+
+static void add_bytes(uint32_t *total, uint32_t b)
+{
+    if (b == UINT32_MAX || *total > UINT32_MAX - b) *total = UINT32_MAX;
+    else *total += b;
+}
+
+static uint32_t max_u32(uint32_t a, uint32_t b) { return a > b ? a : b; }
+
+static uint32_t builder_scratch(const mesh_counts *c)
+{
+    uint32_t b = 0;
+    subd_size_add(&b, c->nv + 1u, 4u);
+    subd_size_add(&b, c->nc, 4u);
+    return b;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Parameters and the hierarchy's shape.                                                  */
+
+static int real_ok(subd_real x) { return subd_real_is_finite(x); }
+
+static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
+{
+    uint32_t k, i;
+    if (!h || !ad) return SUBD_ERR_PARAM;
+    if (h->steps > SUBD_SR48_MAX_STEPS || ad->max_level > h->steps) return SUBD_ERR_PARAM;
+    switch (ad->mode) {
+    case SUBD_ADAPT_UNIFORM: break;
+    case SUBD_ADAPT_POINT:
+        for (i = 0; i < 3u; i++) if (!real_ok(ad->point[i])) return SUBD_ERR_PARAM;
+        if (!real_ok(ad->radius) || ad->radius < 0) return SUBD_ERR_PARAM;
+        break;
+    case SUBD_ADAPT_RAMP:
+        if (ad->axis > 2u) return SUBD_ERR_PARAM;
+        break;
+    case SUBD_ADAPT_PLANE:
+        for (i = 0; i < 3u; i++)
+            if (!real_ok(ad->point[i]) || !real_ok(ad->normal[i])) return SUBD_ERR_PARAM;
+        if (ad->normal[0] == 0 && ad->normal[1] == 0 && ad->normal[2] == 0) return SUBD_ERR_PARAM;
+        break;
+    case SUBD_ADAPT_CALLBACK:
+        if (!ad->fn) return SUBD_ERR_PARAM;
+        break;
+    case SUBD_ADAPT_CHORD:
+        if (!real_ok(ad->eps) || !(ad->eps > 0)) return SUBD_ERR_PARAM;
+        break;
+    default: return SUBD_ERR_PARAM;
+    }
+    /* level structure: level 0 from 0, every later level twice the one before */
+    if (h->level_tri[0] != 0u) return SUBD_ERR_PARAM;
+    for (k = 1; k <= h->steps + 1u; k++) {
+        uint32_t n = h->level_tri[k] - h->level_tri[k - 1u];
+        if (h->level_tri[k] < h->level_tri[k - 1u]) return SUBD_ERR_PARAM;
+        if (k >= 2u && n != 2u * (h->level_tri[k - 1u] - h->level_tri[k - 2u])) return SUBD_ERR_PARAM;
+    }
+    for (k = 1; k <= h->steps; k++)
+        if (h->level_verts[k] < h->level_verts[k - 1u]) return SUBD_ERR_PARAM;
+    if (h->num_tris != h->level_tri[h->steps + 1u] || h->num_verts != h->level_verts[h->steps])
+        return SUBD_ERR_PARAM;
+    if (h->level_tri[1] == 0u) return SUBD_ERR_EMPTY;
+    if (!h->pos || !h->tri_vert || !h->tri_base_nb) return SUBD_ERR_PARAM;
+    return SUBD_OK;
+}
+
+/* The index rules of subd_sr48 for every triangle of levels 0..max (so the extraction can
+ * never read outside the arrays or build a broken mesh from a hand-made hierarchy). */
+static int ex_check_hierarchy(const subd_sr48 *h, uint32_t max)
+{
+    uint32_t k, t;
+    for (k = 0; k <= max; k++) {
+        uint32_t t0 = h->level_tri[k], t1 = h->level_tri[k + 1u], nv = h->level_verts[k];
+        for (t = t0; t < t1; t++) {
+            const uint32_t *v = h->tri_vert + 3u * t;
+            uint32_t nb = h->tri_base_nb[t];
+            if (v[0] >= nv || v[1] >= nv || v[2] >= nv || v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
+                return SUBD_ERR_PARAM;
+            if (nb != SUBD_NONE) {
+                if (nb < t0 || nb >= t1 || nb == t || h->tri_base_nb[nb] != t) return SUBD_ERR_PARAM;
+                if (h->tri_vert[3u * nb + 1u] != v[2] || h->tri_vert[3u * nb + 2u] != v[1]) return SUBD_ERR_PARAM;
+            }
+            if (k < max) {
+                uint32_t c0 = t1 + 2u * (t - t0);
+                const uint32_t *a = h->tri_vert + 3u * c0, *b = a + 3;
+                uint32_t m = a[0];
+                if (m < nv || m >= h->level_verts[k + 1u]) return SUBD_ERR_PARAM;
+                if (a[1] != v[0] || a[2] != v[1] || b[0] != m || b[1] != v[2] || b[2] != v[0]) return SUBD_ERR_PARAM;
+                if (nb != SUBD_NONE && h->tri_vert[3u * (t1 + 2u * (nb - t0))] != m) return SUBD_ERR_PARAM;
+            }
+        }
+    }
+    return SUBD_OK;
+}
+
+/* The one layout. With a == NULL it only counts; otherwise it allocates phase 1. */
+static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_adapt *ad)
+{
+    uint32_t b = 0, mk = 0;
+    uint32_t nwork = L->uniform ? L->nvert : max_u32(L->ntri, L->nvert);
+    uint32_t nf = L->uniform ? 0u : L->max + 1u;
+    uint32_t ncs = (!L->uniform && ad->mode == SUBD_ADAPT_CHORD) ? L->max + 1u : 0u;
+    subd_size_add(&mk, L->uniform ? 0u : L->ntri, 1u);
+    add_bytes(&b, mk);
+    subd_size_add(&b, nwork, 4u);
+    subd_size_add(&b, nf, 4u);
+    subd_size_add(&b, ncs, EX_CNODE_BYTES);
+    L->marks = mk;
+    L->phase1 = b;
+    L->vmap = 0;
+    subd_size_add(&L->vmap, L->nvert, 4u);
+    if (!a) return b == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
+    c->mark = (uint8_t *)subd_arena_alloc(a, L->uniform ? 0u : L->ntri);
+    c->work = (uint32_t *)subd_arena_alloc(a, nwork * 4u);
+    c->fstack = (uint32_t *)subd_arena_alloc(a, nf * 4u);
+    c->cstack = (ex_cnode *)subd_arena_alloc(a, ncs * EX_CNODE_BYTES);
+    if (!c->mark || !c->work || !c->fstack || !c->cstack) return SUBD_ERR_NOMEM;
+    return SUBD_OK;
+}
+
+/* Bytes needed once the output counts are known (see the file comment). */
+static uint32_t ex_need(const ex_layout *L, uint32_t nv, uint32_t nf)
+{
+    mesh_counts mc;
+    uint32_t arrays, scratch, b = L->marks;
+    if (nf > (UINT32_MAX - 1u) / 3u) return UINT32_MAX;
+    mc.nv = nv; mc.nf = nf; mc.nc = 3u * nf; mc.nl = 0; mc.nlv = 0;
+    arrays = subd_mesh_counts_bytes(&mc);
+    if (arrays == UINT32_MAX) return UINT32_MAX;
+    scratch = builder_scratch(&mc);
+    arrays -= scratch;
+    add_bytes(&b, arrays);
+    add_bytes(&b, max_u32(scratch, L->vmap));
+    return max_u32(b, L->phase1);
+}
+
+static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint32_t *bound)
+{
+    int st = ex_check_params(h, ad);
+    if (st != SUBD_OK) return st;
+    L->max = ad->max_level;
+    L->uniform = (ad->mode == SUBD_ADAPT_UNIFORM) || ad->max_level == 0u;
+    L->ntri = h->level_tri[L->max];
+    L->nvert = h->level_verts[L->max];
+    if ((st = ex_layout_phase1(0, L, 0, ad)) != SUBD_OK) return st;
+    *bound = ex_need(L, L->nvert, h->level_tri[L->max + 1u] - h->level_tri[L->max]);
+    return *bound == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
+}
+
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes)
+{
+    ex_layout L;
+    uint32_t b;
+    int st;
+    if (!bytes) return SUBD_ERR_PARAM;
+    st = ex_plan(h, ad, &L, &b);
+    if (st == SUBD_OK) *bytes = b;
+    return st;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Adaptation functions.                                                                  */
+
+static const subd_real *ex_pos(const ex_ctx *c, uint32_t v) { return c->h->pos + 3u * v; }
+
+#if SUBD_FIXED
+typedef int64_t ex_num;
+#else
+typedef float ex_num;
+#endif
+
+static ex_num ex_dot(const ex_num *a, const ex_num *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static void ex_cross(const ex_num *a, const ex_num *b, ex_num *r)
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+static void ex_sub3(const ex_num *a, const ex_num *b, ex_num *r)
+{
+    r[0] = a[0] - b[0]; r[1] = a[1] - b[1]; r[2] = a[2] - b[2];
+}
+
+#if SUBD_FIXED
+/* Distances in the scaled frame come back as 16 * d (4 fraction bits) and are turned into
+ * Q16.16 by the frame's power of two, saturating. */
+static subd_real ex_unscale(uint64_t d16, int32_t s)
+{
+    uint64_t r;
+    if (s >= 4) {
+        if (d16 != 0u && (d16 >> (63 - (s - 4))) != 0u) return SUBD_REAL_MAX;
+        r = d16 << (s - 4);
+    } else {
+        uint32_t sh = (uint32_t)(4 - s);
+        r = (d16 + ((uint64_t)1 << (sh - 1u))) >> sh;
+    }
+    return r > (uint64_t)INT32_MAX ? SUBD_REAL_MAX : (subd_real)r;
+}
+static subd_real ex_len(const ex_num *q, int32_t s)
+{
+    return ex_unscale(subd_isqrt64((uint64_t)ex_dot(q, q) << 8), s);
+}
+/* Distance from q (relative to a point of the line) to the line along e: |q x e| / |e|. */
+static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
+{
+    ex_num x[3];
+    uint64_t num, den, d2;
+    ex_cross(q, e, x);
+    num = (uint64_t)ex_dot(x, x);
+    den = (uint64_t)ex_dot(e, e);
+    if (den == 0u) return ex_len(q, s);
+    d2 = ((num / den) << 8) + ((num % den) << 8) / den;
+    return ex_unscale(subd_isqrt64(d2), s);
+}
+static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
+{
+    ex_num nq = ex_dot(n, q);
+    uint32_t nl = subd_isqrt64((uint64_t)ex_dot(n, n));
+    if (nl == 0u) return ex_len(q, s);
+    if (nq < 0) nq = -nq;
+    return ex_unscale(((uint64_t)nq << 4) / nl, s);
+}
+#else
+static subd_real ex_len(const ex_num *q, int32_t s) { (void)s; return subd_sqrt(ex_dot(q, q)); }
+static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
+{
+    ex_num x[3], den = ex_dot(e, e);
+    if (den == 0.0f) return ex_len(q, s);
+    ex_cross(q, e, x);
+    return subd_sqrt(ex_dot(x, x) / den);
+}
+static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
+{
+    ex_num nq = ex_dot(n, q), nl = subd_sqrt(ex_dot(n, n));
+    if (nl == 0.0f) return ex_len(q, s);
+    if (nq < 0.0f) nq = -nq;
+    return nq / nl;
+}
+#endif
+
+/* Distance from p to the triangle (a, b, c): the Voronoi-region walk of Ericson,
+ * "Real-Time Collision Detection", 5.1.5, with the distance taken to the region's vertex,
+ * edge line or plane. */
+static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const subd_real *b, const subd_real *c)
+{
+    ex_num ab[3], ac[3], ap[3], bp[3], cp[3], bc[3], n[3];
+    ex_num d1, d2, d3, d4, d5, d6, va, vb, vc;
+    int32_t s = 0;
+    uint32_t i;
+#if SUBD_FIXED
+    /* Scale by 2^-s so every component is below 2^13: dot products stay below 2^29 and
+     * their products below 2^59 (int64). */
+    uint64_t mx = 0;
+    uint32_t bits = 0;
+    for (i = 0; i < 3u; i++) {
+        int64_t e[3];
+        uint32_t j;
+        e[0] = (int64_t)b[i] - a[i]; e[1] = (int64_t)c[i] - a[i]; e[2] = (int64_t)p[i] - a[i];
+        for (j = 0; j < 3u; j++) {
+            uint64_t m = (uint64_t)(e[j] < 0 ? -e[j] : e[j]);
+            if (m > mx) mx = m;
+        }
+    }
+    if (mx == 0u) return 0;
+    while ((mx >> bits) != 0u) bits++;
+    s = (int32_t)bits - 13;
+    for (i = 0; i < 3u; i++) {
+        int64_t e0 = (int64_t)b[i] - a[i], e1 = (int64_t)c[i] - a[i], e2 = (int64_t)p[i] - a[i];
+        if (s > 0) {
+            ab[i] = e0 >> s; ac[i] = e1 >> s; ap[i] = e2 >> s;
+        } else {
+            int64_t f = (int64_t)1 << (-s);
+            ab[i] = e0 * f; ac[i] = e1 * f; ap[i] = e2 * f;
+        }
+    }
+#else
+    for (i = 0; i < 3u; i++) {
+        ab[i] = b[i] - a[i]; ac[i] = c[i] - a[i]; ap[i] = p[i] - a[i];
+    }
+#endif
+    d1 = ex_dot(ab, ap);
+    d2 = ex_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return ex_len(ap, s);
+    ex_sub3(ap, ab, bp);
+    d3 = ex_dot(ab, bp);
+    d4 = ex_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return ex_len(bp, s);
+    vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return ex_line_dist(ap, ab, s);
+    ex_sub3(ap, ac, cp);
+    d5 = ex_dot(ab, cp);
+    d6 = ex_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return ex_len(cp, s);
+    vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return ex_line_dist(ap, ac, s);
+    va = d3 * d6 - d5 * d4;
+    ex_sub3(ac, ab, bc);
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return ex_line_dist(bp, bc, s);
+    ex_cross(ab, ac, n);
+    return ex_plane_dist(n, ap, s);
+}
+
+/* d < n * radius (n = max_level - k levels to go). */
+static int ex_point_wants(const ex_ctx *c, const uint32_t *v, uint32_t n)
+{
+    subd_real d = ex_point_tri_dist(c->ad->point, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2]));
+#if SUBD_FIXED
+    return (int64_t)d < (int64_t)n * c->radius;
+#else
+    return d < (float)n * c->radius;
+#endif
+}
+
+/* (k + 1)(hi - lo) <= max (x - lo), x the largest coordinate on the axis. */
+static int ex_ramp_wants(const ex_ctx *c, const uint32_t *v, uint32_t k)
+{
+    uint32_t ax = c->ad->axis, i;
+    subd_real x = ex_pos(c, v[0])[ax], lo = c->lo[ax], hi = c->hi[ax];
+    for (i = 1; i < 3u; i++)
+        if (ex_pos(c, v[i])[ax] > x) x = ex_pos(c, v[i])[ax];
+#if SUBD_FIXED
+    return (int64_t)(k + 1u) * ((int64_t)hi - lo) <= (int64_t)c->max * ((int64_t)x - lo);
+#else
+    return (float)(k + 1u) * (hi - lo) <= (float)c->max * (x - lo);
+#endif
+}
+
+/* (q - point).normal >= 0. */
+static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_real *nrm)
+{
+#if SUBD_FIXED
+    /* Each product is below 2^63 in magnitude; the sum of three is kept as hi * 2^32 + lo
+     * with 0 <= lo < 2^32, so its sign is the sign of hi. */
+    int64_t hi = 0, lo = 0;
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        int64_t prod = ((int64_t)q[i] - pt[i]) * (int64_t)nrm[i];
+        hi += prod >> 32;
+        lo += prod & (int64_t)0xffffffff;
+    }
+    hi += lo >> 32;
+    return hi >= 0;
+#else
+    float s0 = (q[0] - pt[0]) * nrm[0], s1 = (q[1] - pt[1]) * nrm[1], s2 = (q[2] - pt[2]) * nrm[2];
+    return s0 + s1 + s2 >= 0.0f;
+#endif
+}
+
+#if SUBD_FIXED
+static ex_lin ex_lin_of(subd_real x) { return (int64_t)x * 65536; }
+static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) >> 1; }
+#else
+static ex_lin ex_lin_of(subd_real x) { return x; }
+static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) * 0.5f; }
+#endif
+
+/* |P - L| > eps. */
+static int ex_beyond(const subd_real *p, const ex_lin *l, subd_real eps)
+{
+#if SUBD_FIXED
+    uint64_t sum = 0, e = (uint64_t)eps;
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        int64_t d = ((int64_t)p[i] * 65536 - l[i] + 32768) >> 16;
+        uint64_t ad = (uint64_t)(d < 0 ? -d : d);
+        if (ad > e) return 1;
+        sum += ad * ad;
+    }
+    return sum > e * e;
+#else
+    float d0 = p[0] - l[0], d1 = p[1] - l[1], d2 = p[2] - l[2];
+    float s0 = d0 * d0, s1 = d1 * d1, s2 = d2 * d2;
+    return s0 + s1 + s2 > eps * eps;
+#endif
+}
+
+/* Chordal deviation of t (level k < max) beyond eps: depth-first walk of t's subtree down
+ * to level max, stopping at the first vertex that deviates. Stack: pop one node, push its
+ * two children, so at most (max - k) + 1 <= max + 1 entries. */
+static int ex_chord_wants(const ex_ctx *c, uint32_t t, uint32_t k)
+{
+    const subd_sr48 *h = c->h;
+    ex_cnode *st = c->cstack;
+    uint32_t sp = 1, i;
+    st[0].tri = t;
+    st[0].level = k;
+    for (i = 0; i < 9u; i++) st[0].l[i] = ex_lin_of(ex_pos(c, h->tri_vert[3u * t + i / 3u])[i % 3u]);
+    while (sp > 0u) {
+        ex_cnode nd = st[--sp];
+        uint32_t kk = nd.level, c0 = h->level_tri[kk + 1u] + 2u * (nd.tri - h->level_tri[kk]);
+        uint32_t m = h->tri_vert[3u * c0];
+        ex_lin lm[3];
+        for (i = 0; i < 3u; i++) lm[i] = ex_lin_mid(nd.l[3u + i], nd.l[6u + i]);
+        if (ex_beyond(ex_pos(c, m), lm, c->ad->eps)) return 1;
+        if (kk + 1u >= c->max) continue;
+        if (sp + 2u > c->max + 1u) return 1; /* cannot happen (see above); stay in bounds */
+        /* child 2i = (m; apex, b0), child 2i+1 = (m; b1, apex) */
+        st[sp].tri = c0;
+        st[sp + 1u].tri = c0 + 1u;
+        st[sp].level = st[sp + 1u].level = kk + 1u;
+        for (i = 0; i < 3u; i++) {
+            st[sp].l[i] = lm[i];
+            st[sp].l[3u + i] = nd.l[i];
+            st[sp].l[6u + i] = nd.l[3u + i];
+            st[sp + 1u].l[i] = lm[i];
+            st[sp + 1u].l[3u + i] = nd.l[6u + i];
+            st[sp + 1u].l[6u + i] = nd.l[i];
+        }
+        sp += 2u;
+    }
+    return 0;
+}
+
+/* Does triangle t of level k < max ask for a split? */
+static int ex_wants(const ex_ctx *c, uint32_t t, uint32_t k)
+{
+    const uint32_t *v = c->h->tri_vert + 3u * t;
+    uint32_t i;
+    switch (c->ad->mode) {
+    case SUBD_ADAPT_POINT: return ex_point_wants(c, v, c->max - k);
+    case SUBD_ADAPT_RAMP: return ex_ramp_wants(c, v, k);
+    case SUBD_ADAPT_PLANE:
+        for (i = 0; i < 3u; i++)
+            if (ex_plane_side(ex_pos(c, v[i]), c->ad->point, c->ad->normal)) return 1;
+        return 0;
+    case SUBD_ADAPT_CALLBACK: return c->ad->fn(c->ad->ctx, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2])) > k;
+    case SUBD_ADAPT_CHORD: return ex_chord_wants(c, t, k);
+    default: return 1;
+    }
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* The restricted hierarchy: marking.                                                     */
+
+static uint32_t ex_level(const subd_sr48 *h, uint32_t t, uint32_t max)
+{
+    uint32_t k = max;
+    while (k > 0u && t < h->level_tri[k]) k--;
+    return k;
+}
+
+static uint32_t ex_parent(const subd_sr48 *h, uint32_t t, uint32_t k)
+{
+    return h->level_tri[k - 1u] + (t - h->level_tri[k]) / 2u;
+}
+
+/* Marks t's diamond split and queues the new active triangles that may split again. */
+static void ex_split_one(ex_ctx *c, uint32_t t, uint32_t k)
+{
+    const subd_sr48 *h = c->h;
+    uint32_t c0 = h->level_tri[k + 1u] + 2u * (t - h->level_tri[k]);
+    c->mark[t] = (uint8_t)(c->mark[t] | EX_SPLIT);
+    if (k + 1u < c->max) {
+        c->work[c->qtail++] = c0;
+        c->work[c->qtail++] = c0 + 1u;
+    }
+}
+
+/* Splits t's diamond after the diamonds of the parents of t and of its partner. Each entry
+ * pushed is the parent of the entry below it or of that entry's partner, so it is one level
+ * coarser: at most max entries (levels max-1 .. 0). */
+static void ex_force_split(ex_ctx *c, uint32_t t0)
+{
+    const subd_sr48 *h = c->h;
+    uint32_t sp = 0;
+    c->fstack[sp++] = t0;
+    while (sp > 0u) {
+        uint32_t t = c->fstack[sp - 1u], k = ex_level(h, t, c->max), nb = h->tri_base_nb[t];
+        if (c->mark[t] & EX_SPLIT) { sp--; continue; }
+        if (k > 0u && sp <= c->max) {
+            uint32_t p = ex_parent(h, t, k);
+            if (!(c->mark[p] & EX_SPLIT)) { c->fstack[sp++] = p; continue; }
+            if (nb != SUBD_NONE) {
+                p = ex_parent(h, nb, k);
+                if (!(c->mark[p] & EX_SPLIT)) { c->fstack[sp++] = p; continue; }
+            }
+        }
+        ex_split_one(c, t, k);
+        if (nb != SUBD_NONE) ex_split_one(c, nb, k);
+        sp--;
+    }
+}
+
+static void ex_mark(ex_ctx *c)
+{
+    const subd_sr48 *h = c->h;
+    uint32_t head = 0, t, n0 = h->level_tri[1];
+    c->qtail = 0;
+    c->forced = 0;
+    for (t = 0; t < c->h->level_tri[c->max]; t++) c->mark[t] = 0;
+    for (t = 0; t < n0; t++) c->work[c->qtail++] = t;
+    /* every triangle enters the queue once, when it becomes active, so the queue never
+     * holds more than the triangles of levels < max */
+    while (head < c->qtail) {
+        uint32_t k;
+        t = c->work[head++];
+        k = ex_level(h, t, c->max);
+        if (!ex_wants(c, t, k)) continue;
+        c->mark[t] = (uint8_t)(c->mark[t] | EX_WANT);
+        if (!(c->mark[t] & EX_SPLIT)) ex_force_split(c, t);
+    }
+    for (t = 0; t < h->level_tri[c->max]; t++) {
+        uint32_t nb = h->tri_base_nb[t];
+        uint8_t w;
+        if (!(c->mark[t] & EX_SPLIT) || (nb != SUBD_NONE && nb < t)) continue;
+        w = (uint8_t)(c->mark[t] | (nb != SUBD_NONE ? c->mark[nb] : 0u));
+        if (!(w & EX_WANT)) c->forced++;
+    }
+}
+
+static int ex_is_leaf(const ex_ctx *c, uint32_t t, uint32_t k)
+{
+    if (c->uniform) return k == c->max;
+    if (k > 0u && !(c->mark[ex_parent(c->h, t, k)] & EX_SPLIT)) return 0;
+    return k == c->max || !(c->mark[t] & EX_SPLIT);
+}
+
+/* Flags the vertices the leaves use in used[] (cleared first); returns the face count. */
+static uint32_t ex_used(const ex_ctx *c, uint32_t *used, uint32_t nvert)
+{
+    const subd_sr48 *h = c->h;
+    uint32_t k, t, v, nf = 0, k0 = c->uniform ? c->max : 0u;
+    for (v = 0; v < nvert; v++) used[v] = 0;
+    for (k = k0; k <= c->max; k++) {
+        for (t = h->level_tri[k]; t < h->level_tri[k + 1u]; t++) {
+            if (!ex_is_leaf(c, t, k)) continue;
+            used[h->tri_vert[3u * t]] = used[h->tri_vert[3u * t + 1u]] = used[h->tri_vert[3u * t + 2u]] = 1u;
+            nf++;
+        }
+    }
+    return nf;
+}
+
+static void ex_bbox(ex_ctx *c, uint32_t nvert)
+{
+    uint32_t v, i;
+    for (i = 0; i < 3u; i++) c->lo[i] = c->hi[i] = c->h->pos[i];
+    for (v = 1; v < nvert; v++) {
+        const subd_real *p = c->h->pos + 3u * v;
+        for (i = 0; i < 3u; i++) {
+            if (p[i] < c->lo[i]) c->lo[i] = p[i];
+            if (p[i] > c->hi[i]) c->hi[i] = p[i];
+        }
+    }
+}
+
+/* POINT's default radius: bounding-box diagonal / (2 max_level), at least one unit of the
+ * last place so the level function stays defined. */
+static subd_real ex_default_radius(const ex_ctx *c)
+{
+#if SUBD_FIXED
+    uint64_t d[3], sum = 0, diag;
+    uint32_t i, sh = 0;
+    for (i = 0; i < 3u; i++) {
+        d[i] = (uint64_t)((int64_t)c->hi[i] - c->lo[i]);
+        if (d[i] >> 31) sh = 1u; /* keep each square below 2^62 */
+    }
+    for (i = 0; i < 3u; i++) sum += (d[i] >> sh) * (d[i] >> sh);
+    diag = (uint64_t)subd_isqrt64(sum) << sh;
+    diag /= 2u * c->max;
+    if (diag == 0u) diag = 1u;
+    return diag > (uint64_t)INT32_MAX ? SUBD_REAL_MAX : (subd_real)diag;
+#else
+    float dx = c->hi[0] - c->lo[0], dy = c->hi[1] - c->lo[1], dz = c->hi[2] - c->lo[2];
+    float sx = dx * dx, sy = dy * dy, sz = dz * dz;
+    float r = subd_sqrt(sx + sy + sz) / (float)(2u * c->max);
+    return r > 0.0f ? r : 1.0f;
+#endif
+}
+
+/* ------------------------------------------------------------------------------------ */
+
+/* Moves the mesh arrays [from, end) of the arena down to `to` and rebases the pointers. */
+static void ex_move_down(subd_arena *a, subd_mesh *m, uint32_t from, uint32_t to, uint32_t end)
+{
+    uint8_t *dst = a->base + to;
+    const uint8_t *src = a->base + from;
+    uint32_t i, delta = from - to;
+    for (i = 0; i < end - from; i++) dst[i] = src[i];
+#define EX_REBASE(f) m->f = (void *)((uint8_t *)(void *)m->f - delta)
+    EX_REBASE(pos);
+    EX_REBASE(face_start);
+    EX_REBASE(corner_vert);
+    EX_REBASE(corner_face);
+    EX_REBASE(twin);
+    EX_REBASE(vert_out);
+    EX_REBASE(vert_tag);
+    EX_REBASE(edge_tag);
+    EX_REBASE(line_start);
+    EX_REBASE(line_vert);
+#undef EX_REBASE
+}
+
+int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
+                      subd_adapt_report *rep, subd_diag *diag)
+{
+    subd_diag dummy;
+    subd_diag *d = diag ? diag : &dummy;
+    ex_layout L;
+    ex_ctx c;
+    mesh_counts mc;
+    subd_mesh m;
+    subd_adapt_report r;
+    uint32_t bound, need, mark0, arr0, arr1, nv, nf, v, k, t, f;
+    uint32_t *vmap;
+    int st;
+
+    subd_diag_clear(d);
+    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
+    if ((st = ex_plan(h, ad, &L, &bound)) != SUBD_OK) return subd_fail(d, st);
+    if ((st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_fail(d, st);
+    if (L.phase1 > subd_arena_free_bytes(a)) {
+        d->bytes_needed = bound;
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+    c.h = h;
+    c.ad = ad;
+    c.max = L.max;
+    c.uniform = L.uniform;
+    c.forced = 0;
+    c.radius = ad->radius;
+    mark0 = subd_arena_mark(a);
+    if ((st = ex_layout_phase1(a, &L, &c, ad)) != SUBD_OK) goto fail;
+
+    /* phase 1: the cut and its counts */
+    if (!c.uniform) {
+        ex_bbox(&c, L.nvert);
+        if (ad->mode == SUBD_ADAPT_POINT && c.radius == 0) c.radius = ex_default_radius(&c);
+        ex_mark(&c);
+    }
+    nf = ex_used(&c, c.work, L.nvert);
+    for (nv = 0, v = 0; v < L.nvert; v++) nv += c.work[v];
+    need = ex_need(&L, nv, nf);
+    if (need == UINT32_MAX) { st = SUBD_ERR_TOO_BIG; goto fail; }
+    if (need > a->size - mark0) {
+        subd_arena_rewind(a, mark0);
+        d->bytes_needed = need;
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+
+    /* phase 2: arrays above the marks, the renumbering map above the arrays */
+    subd_arena_rewind(a, mark0 + L.marks);
+    mc.nv = nv; mc.nf = nf; mc.nc = 3u * nf; mc.nl = 0; mc.nlv = 0;
+    arr0 = subd_arena_mark(a);
+    if ((st = subd_mesh_alloc_arrays(a, &mc, &m)) != SUBD_OK) goto fail;
+    arr1 = subd_arena_mark(a);
+    vmap = (uint32_t *)subd_arena_alloc(a, L.nvert * 4u);
+    if (!vmap) { st = SUBD_ERR_NOMEM; goto fail; }
+    (void)ex_used(&c, vmap, L.nvert);
+    for (nv = 0, v = 0; v < L.nvert; v++) {
+        if (!vmap[v]) { vmap[v] = SUBD_NONE; continue; }
+        for (k = 0; k < 3u; k++) m.pos[3u * nv + k] = h->pos[3u * v + k];
+        vmap[v] = nv++;
+    }
+    for (k = 0; k < SUBD_SR48_MAX_STEPS + 1u; k++) r.level_faces[k] = 0;
+    f = 0;
+    m.face_start[0] = 0;
+    for (k = c.uniform ? c.max : 0u; k <= c.max; k++) {
+        for (t = h->level_tri[k]; t < h->level_tri[k + 1u]; t++) {
+            if (!ex_is_leaf(&c, t, k)) continue;
+            m.corner_vert[3u * f] = vmap[h->tri_vert[3u * t]];
+            m.corner_vert[3u * f + 1u] = vmap[h->tri_vert[3u * t + 1u]];
+            m.corner_vert[3u * f + 2u] = vmap[h->tri_vert[3u * t + 2u]];
+            m.face_start[f + 1u] = 3u * (f + 1u);
+            r.level_faces[k]++;
+            f++;
+        }
+    }
+    m.line_start[0] = 0;
+    r.faces = nf;
+    r.uniform_faces = h->level_tri[c.max + 1u] - h->level_tri[c.max];
+    r.forced_splits = c.forced;
+
+    /* give the map and the marks back: the mesh arrays move down to mark0 */
+    subd_arena_rewind(a, arr1);
+    if (arr0 != mark0) {
+        ex_move_down(a, &m, arr0, mark0, arr1);
+        subd_arena_rewind(a, mark0 + (arr1 - arr0));
+    }
+    if ((st = subd_mesh_finish(a, &m, d)) != SUBD_OK) {
+        subd_arena_rewind(a, mark0);
+        return st;
+    }
+    *out = m;
+    if (rep) *rep = r;
+    d->bytes_needed = 0;
+    return SUBD_OK;
+fail:
+    subd_arena_rewind(a, mark0);
+    if (st == SUBD_ERR_NOMEM) d->bytes_needed = bound;
+    return subd_fail(d, st);
+}

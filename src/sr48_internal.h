@@ -1,0 +1,91 @@
+/* Semi-regular 4-8 refinement, private interface between the pre-processing
+ * (sr48_pre.c, paper section 5) and the binary steps, smoothing and planning
+ * (sr48_refine.c, sections 4 and 6). Paper: semi-regular-4-8-refinement-box-splines.txt.
+ *
+ * Level -1 is the hybrid subdivision (section 5, step 2), which is never stored: hybrid
+ * triangle H of input face f is fstart[f] + j (two per cluster face, three per isolated
+ * face), and its base neighbour (the hybrid triangle across its base, an original edge) is
+ * hnb[H], a hybrid index or SUBD_NONE. Level 0 triangles 2H and 2H + 1 are its children,
+ * exactly as every later level's triangles are children of the level before, so one binary
+ * step function and one smoothing function serve the pre-processing step and all later
+ * steps: they take the parent level's base neighbours as (array, index of its first
+ * triangle). */
+#ifndef SUBD_SR48_INTERNAL_H
+#define SUBD_SR48_INTERNAL_H
+#include "subd.h"
+#include "edge_sort.h"
+
+#define SR48_DIAG 0xfffffffeu  /* sel[e]: the edge is a cluster diagonal                  */
+#define SR48_BFLAG 0x80000000u /* sums count: the vertex is on the boundary of the step   */
+
+#if SUBD_FIXED
+typedef int64_t sr48_sum; /* exact sums of Q16.16 values */
+#else
+typedef float sr48_sum;
+#endif
+
+/* Counts and bytes of one build, from the input, the options and the cluster count. */
+typedef struct sr48_layout {
+    uint32_t steps, smooth;
+    uint32_t nf, ne, clusters, isolated;
+    uint32_t nhyb;   /* hybrid triangles 4C + 3I                                           */
+    uint32_t nv_hyb; /* vertices before the edge points: V + C + I                         */
+    uint32_t level_verts[SUBD_SR48_MAX_STEPS + 1];
+    uint32_t level_tri[SUBD_SR48_MAX_STEPS + 2];
+    uint32_t out_bytes; /* pos, tri_vert, tri_base_nb                                      */
+    uint32_t a_bytes;   /* find_clusters: edge numbering and sort                          */
+    uint32_t b_bytes;   /* hybrid subdivision, level 0 and its smoothing, step 0 -> 1       */
+    uint32_t s_bytes;   /* largest smoothing sums of a later double step                   */
+    uint32_t bytes;     /* the plan: out + max(a, b, s)                                    */
+} sr48_layout;
+
+/* Pre-processing working memory (sr48_pre.c). */
+typedef struct sr48_pre {
+    subd_edge_work es;
+    uint32_t *sel;    /* per edge: SR48_DIAG or its edge point                              */
+    uint32_t *fstart; /* per face: its first hybrid triangle                                */
+    uint32_t *fpt;    /* per face: its face point                                           */
+    uint32_t *hnb;    /* per hybrid triangle: base neighbour (hybrid index) or SUBD_NONE     */
+} sr48_pre;
+
+/* Per-vertex smoothing sums. */
+typedef struct sr48_sums {
+    sr48_sum *s;   /* 3 per vertex                                                         */
+    uint32_t *cnt; /* per vertex: number of summed neighbours | SR48_BFLAG                 */
+} sr48_sums;
+
+/* Adds count * elem bytes to *total (subd_size_add) and, when a != NULL, allocates them
+ * into *slot. Returns SUBD_OK or SUBD_ERR_NOMEM. */
+int subd_sr48_take(subd_arena *a, void **slot, uint32_t count, uint32_t elem, uint32_t *total);
+
+/* Phase A (find_clusters) and phase B (hybrid subdivision) memory, in allocation order;
+ * with a == NULL only *bytes is computed. Phase B allocates on top of phase A's first three
+ * arrays (edge_of, edge_he, sel: *keep bytes), which stay. */
+int subd_sr48_pre_alloc_a(subd_arena *a, const subd_mesh *in, sr48_pre *w, uint32_t *bytes, uint32_t *keep);
+int subd_sr48_pre_alloc_b(subd_arena *a, const sr48_layout *L, sr48_pre *w, uint32_t *bytes);
+
+/* find_clusters (section 5, Algorithm 1): numbers and sorts the edges and selects the
+ * cluster diagonals (sel[e] != SUBD_NONE). Returns SUBD_OK (count in *clusters) or
+ * SUBD_ERR_PARAM when the mesh's edge count is inconsistent. */
+int subd_sr48_find_clusters(const subd_mesh *in, sr48_pre *w, uint32_t *clusters);
+
+/* Hybrid subdivision and the first binary step: level 0 triangles, base neighbours and the
+ * positions of the input vertices, face points and edge points (before smoothing), and
+ * hnb. Needs find_clusters' result in w. */
+int subd_sr48_level0(const subd_mesh *in, const sr48_layout *L, sr48_pre *w, subd_sr48 *h);
+
+/* One binary step level k -> k+1 (k < steps): children, new vertices, base neighbours of
+ * level k+1. pnb/pbase: base neighbours of level k-1 (hnb, 0 for k = 0). */
+int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase, int smooth);
+
+/* Smoothing of the vertices older than level k (k even) by the neighbours level k's step
+ * created; pnb/pbase as above for level k-1, nold the number of older vertices. */
+int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase, uint32_t nold,
+                     const sr48_sums *s);
+
+/* Averages (Q16.16: one exact sum, one rounding to nearest, ties away from zero). */
+subd_real subd_sr48_avg(sr48_sum s, uint32_t k, uint32_t *ovf);
+subd_real subd_sr48_mid(subd_real a, subd_real b, uint32_t *ovf);
+static inline sr48_sum sr48_add(sr48_sum s, subd_real v) { return s + (sr48_sum)v; }
+
+#endif

@@ -26,10 +26,53 @@ typedef struct subd_loop_opts {
 /* Exact arena bytes subd_loop needs for this input and options. The input must be an
  * all-triangle mesh (SUBD_ERR_FACE_SIZE otherwise) with adjacency (twin, vert_out: a mesh
  * from the builder or readers, or a subd_loop output made with SUBD_LOOP_ADJACENCY;
- * SUBD_ERR_PARAM otherwise). The plan is the output arrays plus level L-1's arrays with
- * twins (pos, corners, twins, vert_out, tags): peak = input + output + previous level.
- * O(corners) work, no arena use. */
+ * SUBD_ERR_PARAM otherwise). The intermediate levels live inside the output block (level
+ * L-1 where face_start and corner_face go, which are written last), so the plan is the
+ * output arrays alone unless isolated vertices dominate the mesh: peak = input + output.
+ * SUBD_LOOP_BYTES below gives the same number at compile time. O(corners) work, no arena
+ * use. */
 int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
+
+/* The plan as a compile-time constant, for sizing a static buffer: subd_loop_plan of an
+ * all-triangle mesh with V vertices (isolated ones included), F faces and E edges
+ * (E = (3 F + boundary edges) / 2), L levels, flags 0 (SUBD_LOOP_BYTES) or
+ * SUBD_LOOP_ADJACENCY (SUBD_LOOP_BYTES_ADJ); the boundary rule does not matter. A uint64_t
+ * constant expression: equal to subd_loop_plan whenever that succeeds (values of
+ * UINT32_MAX and more mean SUBD_ERR_TOO_BIG). Level k has F 4^k faces,
+ * E 2^k + 3 F 2^k (2^k - 1) / 2 edges and V + E (2^k - 1) + F (2^k - 1)(2^k - 2) / 2
+ * vertices; each array is rounded up to SUBD_ARENA_ALIGN. Example:
+ *     static uint8_t buf[SUBD_LOOP_BYTES(12, 20, 30, 3)]; // icosahedron, 3 levels */
+#define SUBD_LOOP_BYTES(V, F, E, L) SUBD_LOOP_BYTES_(V, F, E, L, 0u)
+#define SUBD_LOOP_BYTES_ADJ(V, F, E, L) SUBD_LOOP_BYTES_(V, F, E, L, 1u)
+
+/* helpers of SUBD_LOOP_BYTES (not API): the layout of src/loop.c, level by level */
+#define SUBD_LOOP_AL_(x) (((uint64_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint64_t)(SUBD_ARENA_ALIGN - 1u))
+#define SUBD_LOOP_MAX_(a, b) ((a) > (b) ? (a) : (b))
+#define SUBD_LOOP_P2_(k) ((uint64_t)1 << (k))
+#define SUBD_LOOP_NF_(F, k) ((uint64_t)(F) << (2u * (k)))
+#define SUBD_LOOP_NE_(F, E, k) \
+    (((uint64_t)(E) << (k)) + 3u * (uint64_t)(F) * (SUBD_LOOP_P2_(k) * (SUBD_LOOP_P2_(k) - 1u) / 2u))
+#define SUBD_LOOP_NV_(V, F, E, k) \
+    ((uint64_t)(V) + (uint64_t)(E) * (SUBD_LOOP_P2_(k) - 1u) + \
+     (uint64_t)(F) * ((SUBD_LOOP_P2_(k) - 1u) * (SUBD_LOOP_P2_(k) - 2u) / 2u))
+/* an intermediate level: pos, corners, twins, vert_out, vertex tags, valences, edge tags */
+#define SUBD_LOOP_LEVEL_(nv, nf) \
+    (SUBD_LOOP_AL_(12u * (nv)) + 2u * SUBD_LOOP_AL_(12u * (nf)) + SUBD_LOOP_AL_(4u * (nv)) + \
+     2u * SUBD_LOOP_AL_(nv) + SUBD_LOOP_AL_(3u * (nf)))
+#define SUBD_LOOP_LV_(V, F, E, k) SUBD_LOOP_LEVEL_(SUBD_LOOP_NV_(V, F, E, k), SUBD_LOOP_NF_(F, k))
+/* output arrays written while level L is refined: pos, corners, tags (twins, vert_out) */
+#define SUBD_LOOP_FRONT_(nv, nf, adj) \
+    (SUBD_LOOP_AL_(12u * (nv)) + SUBD_LOOP_AL_(12u * (nf)) + SUBD_LOOP_AL_(nv) + SUBD_LOOP_AL_(3u * (nf)) + \
+     ((adj) ? SUBD_LOOP_AL_(12u * (nf)) + SUBD_LOOP_AL_(4u * (nv)) : 0u))
+/* ... then face_start and corner_face */
+#define SUBD_LOOP_OUT_(nv, nf, adj) \
+    (SUBD_LOOP_FRONT_(nv, nf, adj) + SUBD_LOOP_AL_(4u * ((nf) + 1u)) + SUBD_LOOP_AL_(12u * (nf)))
+#define SUBD_LOOP_BYTES_(V, F, E, L, adj) \
+    SUBD_LOOP_MAX_(SUBD_LOOP_OUT_(SUBD_LOOP_NV_(V, F, E, L), SUBD_LOOP_NF_(F, L), adj), \
+                   (L) < 2u ? 0u : \
+                   SUBD_LOOP_MAX_(SUBD_LOOP_FRONT_(SUBD_LOOP_NV_(V, F, E, L), SUBD_LOOP_NF_(F, L), adj), \
+                                  (L) < 3u ? 0u : SUBD_LOOP_LV_(V, F, E, (L) < 3u ? 0u : (L) - 2u)) + \
+                   SUBD_LOOP_LV_(V, F, E, (L) < 2u ? 0u : (L) - 1u))
 
 /* `levels` steps of Loop subdivision (Loop's original weights) of an all-triangle mesh.
  * Edges tagged SUBD_ETAG_CREASE follow the boundary rules; vertices tagged
@@ -49,7 +92,7 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
  * (diag.bytes_needed), SUBD_ERR_RANGE (fixed-point overflow). On failure the arena is back
  * where it was and *out is untouched. Every rule is a convex combination whose Q16.16
  * weights sum to exactly 1, so RANGE cannot occur in Q16.16; in float32 it means a sum
- * near FLT_MAX rounded to infinity. Work O(4^levels * corners); stack about 550 bytes. */
+ * near FLT_MAX rounded to infinity. Work O(4^levels * corners); stack about 650 bytes (Cortex-M4). */
 int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *d);
 
 /* ------------------------------------------------------------------------------------ */
@@ -89,8 +132,9 @@ typedef struct subd_pia_result {
 } subd_pia_result;
 
 /* Exact arena bytes of subd_pia for this input and options: PAPER 2 arrays of 3 * num_verts
- * subd_reals (V, L V); FAST 4 such arrays (V, L V, search direction, L of it) plus one
- * subd_real and one byte per vertex, each rounded up to SUBD_ARENA_ALIGN. Validates like
+ * subd_reals (V, L V); FAST 6 such arrays (V, L V, search direction, L of it, two for the
+ * preconditioner) plus two subd_reals and one byte per vertex, each rounded up to
+ * SUBD_ARENA_ALIGN. Validates like
  * subd_pia (SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE, SUBD_ERR_TOO_BIG). */
 int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
 
@@ -100,10 +144,12 @@ int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
  * and corners of the input honoured). The input needs full adjacency (twin, vert_out) and
  * triangles only. PAPER starts from V = P and repeats V += P - L V, on the boundary vertices
  * until they are within tol, then on the rest with the boundary fixed (paper, sections 2
- * and 4). FAST (conjugate gradients, or Chebyshev iteration when a crease ends inside the
- * surface; see src/pia.c for the convergence argument) reaches the same tol in fewer
- * iterations. An iteration is one update of V; result->iterations counts them over all
- * phases and never exceeds max_iter; max_err and mean_err are over
+ * and 4). FAST (conjugate gradients, symmetric Gauss-Seidel preconditioned unless every
+ * vertex of a phase has the same valence and rule, or Chebyshev iteration when a crease ends
+ * inside the surface; see src/pia.c for the convergence argument) reaches the same tol in
+ * fewer iterations. An iteration is one update of V costing one application of L (a
+ * preconditioned FAST step costs and counts 1.5; the total is rounded up);
+ * result->iterations counts them over all phases and never exceeds max_iter; max_err and mean_err are over
  * all vertices (corners and isolated vertices stay where they are, error 0). A phase whose
  * error stops decreasing for 10 iterations (the arithmetic's rounding floor) ends early.
  * Not converging within max_iter is not an error: result->converged says so.

@@ -55,26 +55,47 @@
  * from the parent twin, the nine inner ones are fixed within the four children. This is
  * O(C) with no scratch memory, where re-bucketing with the builder would cost
  * O(C + sum valence^2) time and (V + C + 1) words. vert_out follows the builder's
- * convention exactly (the boundary half-edge, else the smallest corner), so with
- * SUBD_LOOP_ADJACENCY the output equals subd_mesh_build of its own face list (the test
- * checks this array by array).
+ * convention exactly (the boundary half-edge, else the smallest corner) and is derived in
+ * O(1) per vertex: an old vertex's child vert_out is the first child half-edge of its
+ * parent vert_out, a new vertex's is a fixed corner of the lower half-edge's face (see
+ * new_vout). So with SUBD_LOOP_ADJACENCY the output equals subd_mesh_build of its own face
+ * list (the test checks this array by array).
+ *
+ * Speed (the work is per output face, so constant factors matter; see make bench):
+ *   - One pass over the parent faces writes each face's 12 child corners, edge tags and
+ *     twins contiguously; the new vertex of an edge is created (position, tag, vert_out) at
+ *     its lower half-edge and read back from the twin face's children at the upper one.
+ *   - Classes are inherited: refinement keeps every old vertex's valence and number of
+ *     sharp edges, and makes new vertices smooth of valence 6 (interior edge) or regular
+ *     crease vertices (sharp edge). So only level 1 classifies by walking the input's rings;
+ *     on the levels this file made, a smooth vertex (private tag bit VTAG_SMOOTH, valence in
+ *     a byte array) takes exactly `valence` ring steps with no sharpness tests, and only
+ *     crease, corner and high-valence vertices take the general walk. The order of the
+ *     weighted sums is the same in both paths (bit-identical output).
+ *   - Loop's weights b(n), 1 - n b(n) are cached per valence during a call.
  *
  * Memory (one block, plan = its size; all offsets from loop_layout_of, used by plan and run):
- *   [ output arrays of level L          ][ level L-1 (twins, vert_out, tags) ]
- *   [ = level L-2, L-4, ... while alive  ]  level L-3, L-5, ... as well
- * Level L is written into the output arrays while reading level L-1; level L-1 is built from
- * L-2, which lives in the (not yet used) output region. The output region is the larger of
- * the output arrays and level L-2. Peak = input + output + level L-1 (plus the excess of
- * level L-2 over the output when isolated vertices dominate). After success the arena
- * keeps only the output arrays. No other scratch: the new-vertex index of each edge goes
- * straight into the child corner arrays and the per-vertex class into a private tag bit.
+ *   [ output: pos corners tags (twins vert_out) | face_start corner_face ]
+ *   [ = level L-2, L-4, ... while alive          | level L-1, L-3, ...    ]
+ * face_start and corner_face are filled last, after level L is complete, so level L-1 (read
+ * while level L is written into the front arrays) lives in their place; level L-2, read
+ * while level L-1 is built, lives in the front arrays, which are not written yet. Each
+ * region starts where the other ends (region A at max(front arrays, level L-2)), so the
+ * plan is max(output arrays, A offset + level L-1): the output alone whenever level L-1
+ * fits into face_start + corner_face (16 bytes per output face against about 9), which is
+ * every mesh that is not mostly isolated vertices. After success the arena keeps only the
+ * output arrays. No other scratch: the per-vertex class is a private tag bit plus a
+ * valence byte of the intermediate levels.
  */
 #include "mesh_internal.h"
 
 #define ETAG_SHARP (SUBD_ETAG_BOUNDARY | SUBD_ETAG_CREASE)
 #define VTAG_CALLER (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED)
-#define VTAG_REGULAR 0x80u /* private, while one level is refined: regular crease vertex */
-#define BETA_CACHE 16u     /* b(n) kept for n < BETA_CACHE during one call */
+#define VTAG_REGULAR 0x80u /* private: regular crease vertex (PAPER sharp-edge rule)       */
+#define VTAG_SMOOTH 0x40u  /* private, intermediate levels: smooth interior vertex whose
+                            * valence is in the level's val array (1..255)               */
+#define VTAG_PRIVATE (VTAG_REGULAR | VTAG_SMOOTH)
+#define BETA_CACHE 16u     /* b(n), 1 - n b(n) kept for n < BETA_CACHE during one call    */
 
 /* Counts of one level. */
 typedef struct loop_counts {
@@ -82,33 +103,39 @@ typedef struct loop_counts {
 } loop_counts;
 
 /* A level as read (the input mesh or an intermediate level). Faces are triangles, so
- * corner c belongs to face c / 3 and face_start / corner_face are not needed. */
+ * corner c belongs to face c / 3 and face_start / corner_face are not needed. `made` is 1
+ * for a level this file made: its vertex tags carry the private class bits, val holds
+ * valences, both halves of an edge carry the same tags and vert_out follows the builder's
+ * convention. The input gives no such guarantees (made = 0, val = NULL). */
 typedef struct loop_src {
     uint32_t nv, nf;
     const subd_real *pos;
     const uint32_t *cv, *twin, *vout;
-    const uint8_t *vtag, *etag;
+    const uint8_t *vtag, *val, *etag;
+    int made;
 } loop_src;
 
-/* A level as written. twin and vout are NULL for a final level without adjacency. */
+/* A level as written. twin and vout are NULL for a final level without adjacency; val
+ * and the private tag bits (other than REGULAR, cleared at the end) only on intermediate
+ * levels (val != NULL). */
 typedef struct loop_dst {
     subd_real *pos;
     uint32_t *cv, *twin, *vout;
-    uint8_t *vtag, *etag;
+    uint8_t *vtag, *val, *etag;
 } loop_dst;
 
-/* Array offsets inside the block. Intermediate levels: pos, cv, twin, vout, vtag, etag.
- * Output: pos, face_start, corner_vert, corner_face, vert_tag, edge_tag, twin, vert_out. */
-enum { LV_POS, LV_CV, LV_TWIN, LV_VOUT, LV_VTAG, LV_ETAG, LV_N };
-enum { OUT_POS, OUT_FS, OUT_CV, OUT_CF, OUT_VTAG, OUT_ETAG, OUT_TWIN, OUT_VOUT, OUT_N };
+/* Array offsets inside the block. Intermediate levels: pos, cv, twin, vout, vtag, val, etag.
+ * Output: the front arrays (written while level L is refined) and then face_start and
+ * corner_face (written last, over level L-1). */
+enum { LV_POS, LV_CV, LV_TWIN, LV_VOUT, LV_VTAG, LV_VAL, LV_ETAG, LV_N };
+enum { OUT_POS, OUT_CV, OUT_VTAG, OUT_ETAG, OUT_TWIN, OUT_VOUT, OUT_FS, OUT_CF, OUT_N };
 
 typedef struct loop_layout {
     loop_counts c0;          /* the input                                           */
     loop_counts cl;          /* level L                                             */
     uint32_t out_off[OUT_N];
     uint32_t out_bytes;      /* the output arrays                                   */
-    uint32_t y_bytes;        /* region at offset 0: max(out_bytes, level L-2)       */
-    uint32_t x_off;          /* region of level L-1                                 */
+    uint32_t a_off;          /* region A (levels L-1, L-3, ...); region B is at 0   */
     uint32_t total;          /* the plan                                            */
 } loop_layout;
 
@@ -129,7 +156,8 @@ static int counts_next(const loop_counts *p, loop_counts *c)
     return 1;
 }
 
-/* Offsets of an intermediate level's arrays; returns its bytes (UINT32_MAX: too big). */
+/* Offsets of an intermediate level's arrays; returns its bytes (UINT32_MAX: too big).
+ * SUBD_LOOP_LEVEL_BYTES_ in subd_loop.h is the same sum. */
 static uint32_t level_layout(const loop_counts *c, uint32_t off[LV_N])
 {
     uint32_t t = 0, nc = 3u * c->nf;
@@ -138,21 +166,24 @@ static uint32_t level_layout(const loop_counts *c, uint32_t off[LV_N])
     off[LV_TWIN] = t; subd_size_add(&t, nc, 4u);
     off[LV_VOUT] = t; subd_size_add(&t, c->nv, 4u);
     off[LV_VTAG] = t; subd_size_add(&t, c->nv, 1u);
+    off[LV_VAL] = t;  subd_size_add(&t, c->nv, 1u);
     off[LV_ETAG] = t; subd_size_add(&t, nc, 1u);
     return t;
 }
 
+/* Offsets of the output arrays; returns their bytes. off[OUT_FS] is the size of the
+ * front arrays. SUBD_LOOP_OUT_BYTES_ / SUBD_LOOP_FRONT_BYTES_ in subd_loop.h are the same. */
 static uint32_t out_layout(const loop_counts *c, int adjacency, uint32_t off[OUT_N])
 {
     uint32_t t = 0, nc = 3u * c->nf;
     off[OUT_POS] = t;  subd_size_add(&t, c->nv, 3u * (uint32_t)sizeof(subd_real));
-    off[OUT_FS] = t;   subd_size_add(&t, c->nf + 1u, 4u);
     off[OUT_CV] = t;   subd_size_add(&t, nc, 4u);
-    off[OUT_CF] = t;   subd_size_add(&t, nc, 4u);
     off[OUT_VTAG] = t; subd_size_add(&t, c->nv, 1u);
     off[OUT_ETAG] = t; subd_size_add(&t, nc, 1u);
     off[OUT_TWIN] = t; if (adjacency) subd_size_add(&t, nc, 4u);
     off[OUT_VOUT] = t; if (adjacency) subd_size_add(&t, c->nv, 4u);
+    off[OUT_FS] = t;   subd_size_add(&t, c->nf + 1u, 4u);
+    off[OUT_CF] = t;   subd_size_add(&t, nc, 4u);
     return t;
 }
 
@@ -168,7 +199,7 @@ static int mesh_ok(const subd_mesh *m)
 static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_layout *lay, subd_diag *d)
 {
     loop_counts prev2, prev1, cur;
-    uint32_t f, h, nbe = 0, k, lv_off[LV_N], b1 = 0, b2 = 0, t;
+    uint32_t f, h, nbe = 0, k, lv_off[LV_N], b1 = 0, b2 = 0, front;
     if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
@@ -197,15 +228,14 @@ static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_lay
     }
     lay->cl = cur;
     lay->out_bytes = out_layout(&cur, (o->flags & SUBD_LOOP_ADJACENCY) != 0u, lay->out_off);
+    if (lay->out_bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     if (o->levels >= 2u) b1 = level_layout(&prev1, lv_off);
     if (o->levels >= 3u) b2 = level_layout(&prev2, lv_off);
-    lay->y_bytes = lay->out_bytes > b2 ? lay->out_bytes : b2;
-    lay->x_off = lay->y_bytes;
-    t = lay->y_bytes;
-    if (lay->out_bytes == UINT32_MAX || b1 == UINT32_MAX || b2 == UINT32_MAX || b1 > UINT32_MAX - t)
-        return subd_fail(d, SUBD_ERR_TOO_BIG);
-    lay->total = t + b1;
-    if (lay->total == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
+    if (b1 == UINT32_MAX || b2 == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
+    front = lay->out_off[OUT_FS];
+    lay->a_off = front > b2 ? front : b2;
+    if (b1 >= UINT32_MAX - lay->a_off) return subd_fail(d, SUBD_ERR_TOO_BIG);
+    lay->total = lay->a_off + b1 > lay->out_bytes ? lay->a_off + b1 : lay->out_bytes;
     return SUBD_OK;
 }
 
@@ -247,19 +277,35 @@ static subd_real loop_beta(uint32_t n)
     return subd_real_from_q62((int64_t)((num + n / 2u) / n));
 }
 
+/* Neighbour weight b and centre weight 1 - n b of the smooth rule for valence n. */
+typedef struct weights {
+    subd_real b, wc;
+} weights;
+
 typedef struct beta_cache {
-    subd_real b[BETA_CACHE];
-    uint32_t have; /* bit n: b[n] is valid */
+    weights w[BETA_CACHE];
+    uint32_t have; /* bit n: w[n] is valid */
 } beta_cache;
 
-static subd_real beta_of(beta_cache *bc, uint32_t n)
+static weights weights_calc(uint32_t n, uint32_t *ovf)
 {
-    if (n >= BETA_CACHE) return loop_beta(n);
+    weights w;
+    w.b = loop_beta(n);
+    w.wc = SUBD_REAL_ONE;
+    /* b rounds to 0 in Q16.16 from n ~ 30000 on, before n overflows subd_from_int */
+    if (w.b != (subd_real)0) w.wc = subd_sub(w.wc, subd_mul(subd_from_int((int32_t)n, ovf), w.b, ovf), ovf);
+    return w;
+}
+
+/* For n < BETA_CACHE no overflow is possible (n b < 1), so caching drops no flag. */
+static weights weights_of(beta_cache *bc, uint32_t n, uint32_t *ovf)
+{
+    if (n >= BETA_CACHE) return weights_calc(n, ovf);
     if (!(bc->have & (1u << n))) {
-        bc->b[n] = loop_beta(n);
+        bc->w[n] = weights_calc(n, ovf);
         bc->have |= 1u << n;
     }
-    return bc->b[n];
+    return bc->w[n];
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -314,41 +360,65 @@ static uint32_t ring_step(const loop_src *s, ring_it *it, int *sharp)
     return nb;
 }
 
+/* Child corner index of corner j of child k of face f. */
+#define CC(f, k, j) (12u * (f) + 3u * (k) + (j))
+
+/* First child half-edge along parent half-edge h = 3f + i (v_i -> m_i, corner 0 of child
+ * i): 12 f + 3 i = 4 h - i. */
+static uint32_t half_first(uint32_t h) { return 4u * h - h % 3u; }
+
 /* ------------------------------------------------------------------------------------ */
 /* Position rules                                                                         */
 
 static const subd_real *P(const loop_src *s, uint32_t v) { return s->pos + 3u * v; }
 
-/* out = sum w_i x_i over k points, accumulated per coordinate in the given order. */
-static void combine(subd_real *out, uint32_t k, const subd_real *w, const subd_real *const *x, uint32_t *ovf)
+/* Smooth rule on a level this file made: v is interior with valence n, so the ring is
+ * exactly n steps of twin(prev(h)) from vert_out, in the order of the general walk. */
+static void smooth_fast(const loop_src *s, subd_real *out, uint32_t v, uint32_t n, weights w, uint32_t *ovf)
 {
-    uint32_t j, i;
-    for (j = 0; j < 3u; j++) {
-        subd_acc acc = subd_acc_zero();
-        for (i = 0; i < k; i++) acc = subd_acc_add(acc, w[i], x[i][j]);
-        out[j] = subd_acc_real(acc, ovf);
+    const subd_real *pv = P(s, v);
+    subd_acc a0 = subd_acc_add(subd_acc_zero(), w.wc, pv[0]);
+    subd_acc a1 = subd_acc_add(subd_acc_zero(), w.wc, pv[1]);
+    subd_acc a2 = subd_acc_add(subd_acc_zero(), w.wc, pv[2]);
+    uint32_t h = s->vout[v], k, nc = 3u * s->nf;
+    for (k = 0; k < n; k++) {
+        uint32_t r = h % 3u;
+        const subd_real *q = P(s, s->cv[r == 2u ? h - 2u : h + 1u]);
+        a0 = subd_acc_add(a0, w.b, q[0]);
+        a1 = subd_acc_add(a1, w.b, q[1]);
+        a2 = subd_acc_add(a2, w.b, q[2]);
+        h = s->twin[r == 0u ? h + 2u : h - 1u];
+        if (h >= nc) break; /* cannot happen on a made level; keeps reads in bounds */
     }
+    out[0] = subd_acc_real(a0, ovf);
+    out[1] = subd_acc_real(a1, ovf);
+    out[2] = subd_acc_real(a2, ovf);
 }
 
-/* Even vertex v: child position and child tag (with the private regular bit). */
-static void refine_vertex(const loop_src *s, const loop_dst *t, uint32_t v, beta_cache *bc, uint32_t *ovf)
+/* Even vertex v by the general walk, which also classifies it: child position, child tag
+ * (public bits, REGULAR, and SMOOTH + valence when t->val is given) and child vert_out. */
+static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, beta_cache *bc, uint32_t *ovf)
 {
     subd_real *out = t->pos + 3u * v;
     const subd_real *pv = P(s, v);
     uint8_t tag = (uint8_t)(s->vtag[v] & VTAG_CALLER);
-    uint32_t n = 0, nsharp = 0, nb, snb[2] = {0, 0}, sidx[2] = {0, 0}, j;
+    uint32_t n = 0, nsharp = 0, nb, snb[2] = {0, 0}, sidx[2] = {0, 0}, j, hmin = SUBD_NONE;
     int sharp, boundary;
     ring_it it;
 
     if (s->vout[v] == SUBD_NONE) { /* isolated: copied */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
         t->vtag[v] = (uint8_t)(tag | SUBD_VTAG_ISOLATED);
+        if (t->vout) t->vout[v] = SUBD_NONE;
         return;
     }
     boundary = s->twin[s->vout[v]] == SUBD_NONE;
     if (boundary) tag |= SUBD_VTAG_BOUNDARY;
     ring_begin(s, v, &it);
-    while ((nb = ring_step(s, &it, &sharp)) != SUBD_NONE) {
+    for (;;) {
+        uint32_t h = it.h, tail = it.tail; /* h is outgoing unless this is the tail step */
+        if ((nb = ring_step(s, &it, &sharp)) == SUBD_NONE) break;
+        if (!tail && h < hmin) hmin = h;
         if (sharp) {
             if (nsharp < 2u) {
                 snb[nsharp] = nb;
@@ -358,131 +428,161 @@ static void refine_vertex(const loop_src *s, const loop_dst *t, uint32_t v, beta
         }
         n++;
     }
+    /* vert_out as the builder chooses it: the boundary half-edge, else the smallest corner
+     * (the children of v's corners are ordered like them) */
+    if (t->vout) t->vout[v] = half_first(boundary ? s->vout[v] : hmin);
     if ((s->vtag[v] & SUBD_VTAG_CORNER) || nsharp >= 3u) { /* corner: fixed */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
     } else if (nsharp == 2u) { /* crease (or boundary) vertex */
-        const subd_real w[3] = {SUBD_REAL_FRAC(3, 4), SUBD_REAL_FRAC(1, 8), SUBD_REAL_FRAC(1, 8)};
-        const subd_real *x[3];
-        x[0] = pv;
-        x[1] = P(s, snb[0]);
-        x[2] = P(s, snb[1]);
-        combine(out, 3, w, x, ovf);
+        const subd_real *x1 = P(s, snb[0]), *x2 = P(s, snb[1]);
+        for (j = 0; j < 3u; j++) {
+            subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_FRAC(3, 4), pv[j]);
+            acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), x1[j]);
+            acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), x2[j]);
+            out[j] = subd_acc_real(acc, ovf);
+        }
         if (boundary ? n == 4u : (n == 6u && sidx[1] - sidx[0] == 3u)) tag |= VTAG_REGULAR;
     } else { /* smooth or dart: Loop's rule */
-        subd_real b = beta_of(bc, n), wc = SUBD_REAL_ONE;
+        weights w = weights_of(bc, n, ovf);
         subd_acc acc[3];
-        /* b rounds to 0 in Q16.16 from n ~ 30000 on, before n overflows subd_from_int */
-        if (b != (subd_real)0) wc = subd_sub(wc, subd_mul(subd_from_int((int32_t)n, ovf), b, ovf), ovf);
-        for (j = 0; j < 3u; j++) acc[j] = subd_acc_add(subd_acc_zero(), wc, pv[j]);
+        for (j = 0; j < 3u; j++) acc[j] = subd_acc_add(subd_acc_zero(), w.wc, pv[j]);
         ring_begin(s, v, &it);
         while ((nb = ring_step(s, &it, &sharp)) != SUBD_NONE)
-            for (j = 0; j < 3u; j++) acc[j] = subd_acc_add(acc[j], b, P(s, nb)[j]);
+            for (j = 0; j < 3u; j++) acc[j] = subd_acc_add(acc[j], w.b, P(s, nb)[j]);
         for (j = 0; j < 3u; j++) out[j] = subd_acc_real(acc[j], ovf);
+        /* the child keeps the class: interior, valence n (not boundary: two sharp edges) */
+        if (t->val && n <= 255u) {
+            tag |= VTAG_SMOOTH;
+            t->val[v] = (uint8_t)n;
+        }
     }
     t->vtag[v] = tag;
-}
-
-/* New vertex m on the edge of half-edge h (the lower half-edge of its edge; tw its twin).
- * The child tags of the parent's vertices are already set (regular bit). */
-static void refine_edge(const loop_src *s, const loop_dst *t, uint32_t h, uint32_t tw, uint32_t m,
-                        subd_loop_boundary rule, uint32_t *ovf)
-{
-    uint32_t a = s->cv[h], b = s->cv[tri_next(h)];
-    subd_real w[4];
-    const subd_real *x[4];
-    x[0] = P(s, a);
-    x[1] = P(s, b);
-    if (!edge_sharp(s, h)) {
-        x[2] = P(s, s->cv[tri_prev(h)]);
-        x[3] = P(s, s->cv[tri_prev(tw)]);
-        w[0] = w[1] = SUBD_REAL_FRAC(3, 8);
-        w[2] = w[3] = SUBD_REAL_FRAC(1, 8);
-        combine(t->pos + 3u * m, 4, w, x, ovf);
-        return;
-    }
-    {
-        int ra = (t->vtag[a] & VTAG_REGULAR) != 0u, rb = (t->vtag[b] & VTAG_REGULAR) != 0u;
-        if (rule == SUBD_LOOP_BOUNDARY_BSPLINE || ra == rb) {
-            w[0] = w[1] = SUBD_REAL_FRAC(1, 2);
-        } else {
-            w[0] = ra ? SUBD_REAL_FRAC(5, 8) : SUBD_REAL_FRAC(3, 8);
-            w[1] = rb ? SUBD_REAL_FRAC(5, 8) : SUBD_REAL_FRAC(3, 8);
-        }
-        combine(t->pos + 3u * m, 2, w, x, ovf);
-    }
 }
 
 /* ------------------------------------------------------------------------------------ */
 /* One level                                                                              */
 
-/* Child corner index of corner j of child k of face f. */
-#define CC(f, k, j) (12u * (f) + 3u * (k) + (j))
-
-/* The two child half-edges along parent half-edge h = 3f + i (v_i -> v_{i+1}):
- * first v_i -> m_i is corner 0 of child i, second m_i -> v_{i+1} corner 2 of child i+1. */
-static uint32_t half_first(uint32_t h) { return CC(h / 3u, h % 3u, 0u); }
-static uint32_t half_second(uint32_t h)
+/* vert_out of the new vertex on the edge of lower half-edge h = 3f + i (twin tw): its
+ * boundary half-edge m_i -> v_{i+1} (corner 2 of child i+1), else its smallest corner,
+ * which is in face f (the twin face has a larger index): among CC(f, i, 1),
+ * CC(f, i+1, 2) and CC(f, 3, i) that is CC(0,1), CC(1,1), CC(0,2) for i = 0, 1, 2. */
+static uint32_t new_vout(uint32_t f, uint32_t i, uint32_t tw)
 {
-    uint32_t f = h / 3u, i = h % 3u;
-    return CC(f, (i + 1u) % 3u, 2u);
+    static const uint8_t smallest[3] = {1u, 4u, 2u};
+    if (tw == SUBD_NONE) return CC(f, (i + 1u) % 3u, 2u);
+    return 12u * f + smallest[i];
 }
 
 static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundary rule, beta_cache *bc,
                          uint32_t *ovf)
 {
-    uint32_t v, f, i, h, e = 0, nc = 3u * s->nf;
+    uint32_t v, f, e = s->nv;
+    /* class bits kept on the child's new vertices (none on the output) */
+    uint8_t keep = t->val ? (uint8_t)VTAG_PRIVATE : (uint8_t)0u;
 
-    for (v = 0; v < s->nv; v++) refine_vertex(s, t, v, bc, ovf);
-
-    /* New vertices in lower-half-edge order; their index goes straight into the three
-     * child corners of each adjacent face that use it. */
-    for (h = 0; h < nc; h++) {
-        uint32_t tw = s->twin[h], m, g;
-        if (tw != SUBD_NONE && tw < h) continue;
-        m = s->nv + e++;
-        for (g = h;; g = tw) {
-            uint32_t gf = g / 3u, gi = g % 3u;
-            t->cv[CC(gf, gi, 1u)] = m;
-            t->cv[CC(gf, (gi + 1u) % 3u, 2u)] = m;
-            t->cv[CC(gf, 3u, gi)] = m;
-            if (g == tw || tw == SUBD_NONE) break;
+    /* Even vertices. On a made level the class is known: smooth ones take the fast walk. */
+    for (v = 0; v < s->nv; v++) {
+        uint8_t st = s->made ? s->vtag[v] : (uint8_t)0u;
+        if (st & VTAG_SMOOTH) {
+            uint32_t n = s->val[v];
+            smooth_fast(s, t->pos + 3u * v, v, n, weights_of(bc, n, ovf), ovf);
+            /* same class, same tags: interior, so only the caller bits and the class */
+            t->vtag[v] = (uint8_t)(st & (VTAG_CALLER | keep));
+            if (t->val) t->val[v] = (uint8_t)n;
+            if (t->vout) t->vout[v] = half_first(s->vout[v]);
+        } else {
+            vertex_general(s, t, v, bc, ovf);
         }
-        t->vtag[m] = (tw == SUBD_NONE) ? (uint8_t)SUBD_VTAG_BOUNDARY : (uint8_t)0u;
-        refine_edge(s, t, h, tw, m, rule, ovf);
     }
 
-    /* Old vertices in the corner children, edge tags, twins. */
+    /* Faces in order: new vertices are numbered by lower half-edge, which is face order;
+     * each face's 12 child corners, edge tags and twins are written together. */
     for (f = 0; f < s->nf; f++) {
+        uint32_t m[3], i, h0 = 3u * f;
+        uint32_t *cv = t->cv + 12u * f;
+        uint8_t *et = t->etag + 12u * f;
+        uint8_t tag[3];
         for (i = 0; i < 3u; i++) {
-            uint32_t hp = 3u * f + i, tw = s->twin[hp];
-            uint8_t tag = (uint8_t)(s->etag[hp] & SUBD_ETAG_CREASE);
-            if (tw == SUBD_NONE) tag = (uint8_t)(tag | SUBD_ETAG_BOUNDARY);
-            else tag = (uint8_t)(tag | (s->etag[tw] & SUBD_ETAG_CREASE));
-            t->cv[CC(f, i, 0u)] = s->cv[hp];
-            t->etag[half_first(hp)] = tag;
-            t->etag[half_second(hp)] = tag;
-            t->etag[CC(f, i, 1u)] = 0;
-            t->etag[CC(f, 3u, i)] = 0;
-            if (t->twin) {
-                t->twin[half_first(hp)] = (tw == SUBD_NONE) ? SUBD_NONE : half_second(tw);
-                t->twin[half_second(hp)] = (tw == SUBD_NONE) ? SUBD_NONE : half_first(tw);
-                t->twin[CC(f, i, 1u)] = CC(f, 3u, (i + 2u) % 3u);
-                t->twin[CC(f, 3u, i)] = CC(f, (i + 1u) % 3u, 1u);
+            uint32_t h = h0 + i, tw = s->twin[h];
+            uint32_t a = s->cv[h], b = s->cv[i == 2u ? h0 : h + 1u];
+            uint8_t tg;
+            int sharp;
+            if (s->made) { /* both halves carry the same BOUNDARY / CREASE bits, nothing else */
+                tg = s->etag[h];
+                sharp = (tg & ETAG_SHARP) != 0u;
+            } else {
+                tg = (uint8_t)(s->etag[h] & SUBD_ETAG_CREASE);
+                tg = (uint8_t)(tg | (tw == SUBD_NONE ? SUBD_ETAG_BOUNDARY : (s->etag[tw] & SUBD_ETAG_CREASE)));
+                sharp = edge_sharp(s, h);
+            }
+            tag[i] = tg;
+            if (tw != SUBD_NONE && tw < h) { /* upper half: made at the twin's face */
+                m[i] = t->cv[CC(tw / 3u, tw % 3u, 1u)];
+                continue;
+            }
+            m[i] = e;
+            {
+                const subd_real *xa = P(s, a), *xb = P(s, b);
+                subd_real *out = t->pos + 3u * e;
+                uint32_t j;
+                if (!sharp) {
+                    const subd_real *xc = P(s, s->cv[i == 0u ? h0 + 2u : h - 1u]);
+                    const subd_real *xd = P(s, s->cv[tri_prev(tw)]);
+                    for (j = 0; j < 3u; j++) {
+                        subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_FRAC(3, 8), xa[j]);
+                        acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 8), xb[j]);
+                        acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), xc[j]);
+                        acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), xd[j]);
+                        out[j] = subd_acc_real(acc, ovf);
+                    }
+                    t->vtag[e] = (uint8_t)(VTAG_SMOOTH & keep);
+                    if (t->val) t->val[e] = 6u;
+                } else {
+                    int ra = (t->vtag[a] & VTAG_REGULAR) != 0u, rb = (t->vtag[b] & VTAG_REGULAR) != 0u;
+                    subd_real wa = SUBD_REAL_FRAC(1, 2), wb = SUBD_REAL_FRAC(1, 2);
+                    if (rule == SUBD_LOOP_BOUNDARY_PAPER && ra != rb) {
+                        wa = ra ? SUBD_REAL_FRAC(5, 8) : SUBD_REAL_FRAC(3, 8);
+                        wb = rb ? SUBD_REAL_FRAC(5, 8) : SUBD_REAL_FRAC(3, 8);
+                    }
+                    for (j = 0; j < 3u; j++) {
+                        subd_acc acc = subd_acc_add(subd_acc_zero(), wa, xa[j]);
+                        acc = subd_acc_add(acc, wb, xb[j]);
+                        out[j] = subd_acc_real(acc, ovf);
+                    }
+                    /* a new vertex on a sharp edge is a regular crease vertex */
+                    t->vtag[e] = (uint8_t)((tw == SUBD_NONE ? SUBD_VTAG_BOUNDARY : 0u) | (VTAG_REGULAR & keep));
+                }
+                if (t->vout) t->vout[e] = new_vout(f, i, tw);
+            }
+            e++;
+        }
+        /* child i = (v_i, m_i, m_{i-1}), child 3 = (m0, m1, m2) */
+        cv[0] = s->cv[h0];      cv[1] = m[0]; cv[2] = m[2];
+        cv[3] = s->cv[h0 + 1u]; cv[4] = m[1]; cv[5] = m[0];
+        cv[6] = s->cv[h0 + 2u]; cv[7] = m[2]; cv[8] = m[1];
+        cv[9] = m[0];           cv[10] = m[1]; cv[11] = m[2];
+        /* parent edge i is split into CC(i, 0) and CC(i+1, 2); inner edges are untagged */
+        et[0] = tag[0]; et[1] = 0; et[2] = tag[2];
+        et[3] = tag[1]; et[4] = 0; et[5] = tag[0];
+        et[6] = tag[2]; et[7] = 0; et[8] = tag[1];
+        et[9] = 0;      et[10] = 0; et[11] = 0;
+        if (t->twin) {
+            uint32_t *tt = t->twin + 12u * f;
+            for (i = 0; i < 3u; i++) {
+                uint32_t tw = s->twin[h0 + i], i1 = (i + 1u) % 3u;
+                /* outer: v_i -> m_i pairs with the twin's second half, m_i -> v_{i+1} with
+                 * its first half; inner: (m_i, m_{i-1}) of child i with child 3's edge
+                 * m_{i-1} -> m_i, which is CC(3, i+2) */
+                tt[3u * i] = (tw == SUBD_NONE) ? SUBD_NONE : 12u * (tw / 3u) + 3u * ((tw + 1u) % 3u) + 2u;
+                tt[3u * i1 + 2u] = (tw == SUBD_NONE) ? SUBD_NONE : half_first(tw);
+                tt[3u * i + 1u] = CC(f, 3u, (i + 2u) % 3u);
+                tt[9u + i] = CC(f, i1, 1u);
             }
         }
     }
-
-    /* vert_out as the builder chooses it: a boundary vertex's boundary half-edge, else
-     * its smallest corner. */
-    if (t->vout) {
-        uint32_t cnv = s->nv + e;
-        for (v = 0; v < cnv; v++) t->vout[v] = SUBD_NONE;
-        for (h = 0; h < 4u * nc; h++)
-            if (t->vout[t->cv[h]] == SUBD_NONE) t->vout[t->cv[h]] = h;
-        for (h = 0; h < 4u * nc; h++)
-            if (t->twin[h] == SUBD_NONE) t->vout[t->cv[h]] = h;
-    }
-    for (v = 0; v < s->nv; v++) t->vtag[v] = (uint8_t)(t->vtag[v] & ~VTAG_REGULAR);
+    /* REGULAR was only for this level's sharp edges; the output has no private bits */
+    if (!t->val)
+        for (v = 0; v < s->nv; v++) t->vtag[v] = (uint8_t)(t->vtag[v] & ~VTAG_PRIVATE);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -496,6 +596,7 @@ static void carve_level(uint8_t *base, const loop_counts *c, loop_dst *t, loop_s
     t->twin = (uint32_t *)(void *)(base + off[LV_TWIN]);
     t->vout = (uint32_t *)(void *)(base + off[LV_VOUT]);
     t->vtag = base + off[LV_VTAG];
+    t->val = base + off[LV_VAL];
     t->etag = base + off[LV_ETAG];
     next->nv = c->nv;
     next->nf = c->nf;
@@ -504,7 +605,9 @@ static void carve_level(uint8_t *base, const loop_counts *c, loop_dst *t, loop_s
     next->twin = t->twin;
     next->vout = t->vout;
     next->vtag = t->vtag;
+    next->val = t->val;
     next->etag = t->etag;
+    next->made = 1;
 }
 
 int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *diag)
@@ -539,11 +642,14 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     src.twin = in->twin;
     src.vout = in->vert_out;
     src.vtag = in->vert_tag;
+    src.val = 0;
     src.etag = in->edge_tag;
-    /* the final level goes straight into the output arrays */
+    src.made = 0;
+    /* the final level goes straight into the output's front arrays */
     fin.pos = (subd_real *)(void *)(base + lay.out_off[OUT_POS]);
     fin.cv = (uint32_t *)(void *)(base + lay.out_off[OUT_CV]);
     fin.vtag = base + lay.out_off[OUT_VTAG];
+    fin.val = 0;
     fin.etag = base + lay.out_off[OUT_ETAG];
     fin.twin = adjacency ? (uint32_t *)(void *)(base + lay.out_off[OUT_TWIN]) : 0;
     fin.vout = adjacency ? (uint32_t *)(void *)(base + lay.out_off[OUT_VOUT]) : 0;
@@ -553,9 +659,9 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
         loop_dst dst = fin;
         loop_src next;
         (void)counts_next(&cur, &child); /* cannot fail: the layout checked every level */
-        /* levels L-1, L-3, ... in region X; L-2, L-4, ... in the (still unused) output region */
+        /* levels L-1, L-3, ... in region A; L-2, L-4, ... in region B (the front arrays) */
         if (k < o->levels)
-            carve_level(base + (((o->levels - 1u - k) % 2u == 0u) ? lay.x_off : 0u), &child, &dst, &next);
+            carve_level(base + (((o->levels - 1u - k) % 2u == 0u) ? lay.a_off : 0u), &child, &dst, &next);
         refine_level(&src, &dst, o->boundary, &bc, &ovf);
         if (ovf) {
             subd_arena_rewind(a, mark);
@@ -566,6 +672,7 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
         cur = child;
     }
 
+    /* level L-1 is dead: its region becomes face_start and corner_face */
     m.num_verts = cur.nv;
     m.num_faces = cur.nf;
     m.num_corners = 3u * cur.nf;
@@ -578,7 +685,11 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     m.vert_tag = fin.vtag;
     m.edge_tag = fin.etag;
     for (f = 0; f <= cur.nf; f++) m.face_start[f] = 3u * f;
-    for (c = 0; c < m.num_corners; c++) m.corner_face[c] = c / 3u;
+    for (f = 0, c = 0; f < cur.nf; f++, c += 3u) {
+        m.corner_face[c] = f;
+        m.corner_face[c + 1u] = f;
+        m.corner_face[c + 2u] = f;
+    }
     m.num_lines = m.num_line_verts = 0;
     m.line_start = m.line_vert = 0;
     m.num_edges = cur.ne;

@@ -40,7 +40,9 @@
  *
  * SUBD_PIA_FAST, beyond the paper. Two accelerations, chosen by the mesh's structure:
  *
- * (1) Conjugate gradients, phase by phase (pia_phase_cg), when no dart couples the phases.
+ * (1) Conjugate gradients, phase by phase (pia_phase_sym), when no dart couples the phases:
+ * plain CG (pia_phase_cg) on a uniform phase, preconditioned CG (pia_phase_sgs, (1b) below)
+ * on any other.
  * The phases are the paper's, split by limit rule rather than by the boundary tag: first
  * the curve vertices (boundary and crease vertices, two sharp edges), then the smooth ones;
  * corners and isolated vertices never move (V = P is exact there). Vertices outside the
@@ -66,6 +68,28 @@
  * has distinct eigenvalues: 1 on the bundled icosahedron, whose coordinates are one
  * eigenvector). Per iteration: one application of L (to the search direction; L V follows
  * by the same recurrence) and two weighted dot products.
+ *
+ * (1b) Symmetric Gauss-Seidel preconditioning (pia_phase_sgs). With the phase's block
+ * A = D + Lo + Up split by vertex index (D its diagonal: beta_n, or 1 minus the two curve
+ * weights), M = K D^-1 K', K = D + Lo, K' = D + Up, satisfies W M = (D_W + E) D_W^-1
+ * (D_W + E^T) with D_W = W D, E = W Lo, W Up = E^T (W A symmetric): M is W-symmetric and
+ * positive definite, so PCG in the W inner product converges, |e_k| <= 2 q^k |e_0| in the
+ * energy norm with q from kappa(M^-1 A) instead of kappa(A). Its Krylov space is not the
+ * paper's, so (1)'s "never behind the paper" does not carry over: that is measured (every
+ * test and bench mesh, pia_fast in test/test_pia.c). SGS shrinks kappa on irregular
+ * meshes (measured in float64 on L at 1e-4 x diagonal: spot 4 -> 2 iterations, the open
+ * bunny 8 -> 4). Eisenstat's trick keeps pt = K' p by recurrence, so A p = pt + Lo p: an
+ * iteration is a forward sweep y = K^-1 r, a backward sweep z = K'^-1 D y and Lo p, each half
+ * an application of L (the strictly lower or upper neighbours of every row), and counts as
+ * 1.5 iterations (`iterations` is the work in applications of L, rounded up; max_iter bounds
+ * it). The sweeps use loop_limit.c's weights recomputed here (chi_n = 1 / w_v, the curve
+ * masks by regularity), equal to L's up to rounding; a difference only perturbs the L V
+ * recurrence, which the true error at convergence checks (safeguards below). A uniform phase,
+ * where every row has the same diagonal and CG weight (the icosahedron, torus_tri, the
+ * hexfan's boundary), keeps plain CG: the data's symmetry that CG exploits there (1
+ * iteration on the icosahedron, 3 on torus_tri) is lost to the sweep order (measured: 5 and
+ * 4 SGS iterations, 7.5 and 6 in work), and Jacobi scaling, the symmetric alternative, is
+ * the identity there.
  *
  * (2) Chebyshev semi-iteration on all movable vertices at once (pia_phase_cheb) when the
  * mesh has darts. A dart (one sharp edge) uses formula (3), yet the crease vertex next to it
@@ -108,11 +132,13 @@
  * and squared distances must stay finite (coordinates below about 1e18, else RANGE).
  *
  * Memory (exact plan): V (the output, 3 subd_reals per vertex) and L V (same); FAST adds
- * the search direction p and q = L p (same), one weight per vertex (subd_real) and one
- * class byte per vertex. On success only V stays in the arena. Stack (-fstack-usage, -O2):
- * under 700 bytes on the deepest path (subd_pia, pia_phase_cg, pia_dot) plus
- * subd_loop_limit_apply's. Work per iteration: one application of L,
- * O(corners), plus O(vertices).
+ * the search direction p, q = L p, pt = K' p and the sweep vector z (same), two weights per
+ * vertex (the CG weight w and chi, subd_reals) and one class byte per vertex. On success
+ * only V stays in the arena. Stack (-fstack-usage, -O2):
+ * under 850 bytes on the deepest path (Cortex-M3, Q16.16: subd_pia, pia_phase_sym with the
+ * inlined CG and SGS phases, pia_sweep_fwd, pia_half_row), and subd_pia, pia_phase_sym plus
+ * subd_loop_limit_apply's. Work per iteration: one application of L, O(corners), plus
+ * O(vertices); an SGS step does 1.5 applications' worth (three half-row passes).
  */
 #include "loop_internal.h"
 #include "mesh_internal.h"
@@ -149,10 +175,13 @@ typedef struct pia_state {
     subd_real *p;   /* FAST: search direction (0 outside the phase's set)                */
     subd_real *q;   /* FAST: L p                                                         */
     subd_real *w;   /* FAST: CG inner-product weight per vertex                          */
+    subd_real *pt;  /* FAST, SGS: K' p (the Eisenstat companion of p)                     */
+    subd_real *z;   /* FAST, SGS: y = K^-1 r                                              */
+    subd_real *od;  /* FAST: off-diagonal weight chi of a smooth vertex's row of L        */
     uint8_t *cls;   /* FAST: PIA_CLS_* per vertex                                        */
     subd_real ell;  /* FAST: lower bound of L's spectrum on the movable vertices          */
     int darts;      /* FAST: some smooth vertex has one sharp edge                       */
-    uint32_t iters;
+    uint64_t half;  /* work done in half iterations (one application of L = 2)           */
     uint32_t ovf;
     int lv_true;
 } pia_state;
@@ -192,12 +221,13 @@ static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
 /* Bytes of the arrays subd_pia allocates, in its order; UINT32_MAX if too big. */
 static uint32_t pia_bytes(const subd_mesh *in, const subd_pia_opts *o)
 {
-    uint32_t total = 0, nv = in->num_verts, n, i, arrays = (o->method == SUBD_PIA_FAST) ? 4u : 2u;
+    uint32_t total = 0, nv = in->num_verts, n, i, arrays = (o->method == SUBD_PIA_FAST) ? 6u : 2u;
     if (nv > UINT32_MAX / 3u) return UINT32_MAX;
     n = 3u * nv;
-    for (i = 0; i < arrays; i++) subd_size_add(&total, n, (uint32_t)sizeof(subd_real)); /* V, LV, p, q */
+    for (i = 0; i < arrays; i++) subd_size_add(&total, n, (uint32_t)sizeof(subd_real)); /* V, LV, p, q, pt, z */
     if (o->method == SUBD_PIA_FAST) {
         subd_size_add(&total, nv, (uint32_t)sizeof(subd_real)); /* w   */
+        subd_size_add(&total, nv, (uint32_t)sizeof(subd_real)); /* od  */
         subd_size_add(&total, nv, 1u);                          /* cls */
     }
     return total;
@@ -288,6 +318,12 @@ static void pia_limit(pia_state *s)
     s->lv_true = 1;
 }
 
+/* 1 if h more half iterations fit the budget of max_iter iterations. */
+static int pia_budget(const pia_state *s, uint32_t h)
+{
+    return s->half + h <= 2u * (uint64_t)s->o->max_iter;
+}
+
 /* ------------------------------------------------------------------------------------ */
 /* The paper's iteration                                                                  */
 
@@ -324,9 +360,9 @@ static void pia_phase_paper(pia_state *s, uint32_t set)
     for (k = 0;; k++) {
         err = pia_max_err(s, set);
         if (s->ovf || err <= s->o->tol || pia_stalled(err, k, &best, &stall)) return;
-        if (s->iters >= s->o->max_iter) return;
+        if (!pia_budget(s, 2u)) return;
         pia_step_paper(s, set);
-        s->iters++;
+        s->half += 2u;
         pia_limit(s);
         if (s->ovf) return;
     }
@@ -365,6 +401,7 @@ static void pia_classify(pia_state *s)
         first = m->vert_out[v];
         s->cls[v] = PIA_CLS_FIXED;
         s->w[v] = 0;
+        s->od[v] = 0;
         if (first == SUBD_NONE || (m->vert_tag[v] & (SUBD_VTAG_ISOLATED | SUBD_VTAG_CORNER))) continue;
         bnd = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
         n = 0;
@@ -392,6 +429,7 @@ static void pia_classify(pia_state *s)
             } else {
                 s->w[v] = pia_weight_smooth(n, &s->ovf);
             }
+            s->od[v] = subd_div(SUBD_REAL_ONE, s->w[v], &s->ovf); /* chi_n = 1 / w_v */
             /* (3 beta_n - 1) / 2, increasing in n */
             if (n <= 2u) lo = SUBD_REAL_FRAC(1, 14);
             else if (n == 3u) lo = SUBD_REAL_FRAC(1, 10);
@@ -568,7 +606,7 @@ static void pia_phase_cg(pia_state *s, uint32_t set)
         for (k = 3u * i; k < 3u * i + 3u; k++) s->p[k] = in ? subd_sub(P[k], s->lv[k], &s->ovf) : 0;
     }
     rho = pia_dot(s, set, P, s->lv, P, s->lv);
-    while (!s->ovf && s->iters < s->o->max_iter) {
+    while (!s->ovf && pia_budget(s, 2u)) {
         subd_loop_limit_apply(m, s->o->boundary, s->p, s->q, &s->ovf);
         sigma = pia_dot(s, set, s->p, 0, s->q, 0);
         alpha = pia_ratio(rho, sigma, &ok);
@@ -586,7 +624,7 @@ static void pia_phase_cg(pia_state *s, uint32_t set)
             if (d2 > e2) e2 = d2;
         }
         s->lv_true = 0;
-        s->iters++;
+        s->half += 2u;
         err = pia_root(e2, &s->ovf);
         if (!s->ovf && err <= s->o->tol) { /* residual replacement: the true error decides */
             pia_limit(s);
@@ -625,6 +663,222 @@ static void pia_phase_cg(pia_state *s, uint32_t set)
 }
 
 /* ------------------------------------------------------------------------------------ */
+/* Symmetric Gauss-Seidel preconditioned CG with Eisenstat's trick (FAST)                 */
+
+/* The two sharp-edge neighbours of curve vertex v, in ring order (as loop_limit.c). */
+static void pia_curve_nbrs(const subd_mesh *m, uint32_t v, uint32_t *c)
+{
+    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0;
+    c[0] = c[1] = v;
+    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h), n++) {
+        if (m->twin[h] == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) {
+            if (ns < 2u) c[ns] = subd_he_dest(m, h);
+            ns++;
+        }
+        last = h;
+    }
+    if ((m->vert_tag[v] & SUBD_VTAG_BOUNDARY) && ns < 2u && last != SUBD_NONE)
+        c[ns] = m->corner_vert[subd_he_prev(m, last)];
+}
+
+/* Weight of curve neighbour u in curve vertex v's row of L (lim_curve_weights). */
+static subd_real pia_curve_w(const pia_state *s, uint32_t v, uint32_t u)
+{
+    int rv, ru;
+    if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) return SUBD_REAL_FRAC(1, 6);
+    rv = s->w[v] == SUBD_REAL_FRAC(48, 1);
+    ru = s->cls[u] == PIA_CLS_CURVE && s->w[u] == SUBD_REAL_FRAC(48, 1);
+    if (rv) return ru ? SUBD_REAL_FRAC(1, 6) : SUBD_REAL_FRAC(7, 48);
+    return ru ? SUBD_REAL_FRAC(1, 5) : SUBD_REAL_FRAC(7, 40);
+}
+
+/* Vertex v's row of A (L restricted to the set PIA_SET_CURVE or PIA_SET_SMOOTH, v in it): the diagonal, returned, and in
+ * sum the off-diagonal part applied to x over the neighbours u in the set with u < v
+ * (upper = 0: the strictly lower triangle Lo) or u > v (upper = 1: Up); rows of L with
+ * neighbours outside the set lose those columns (fixed vertices). x = NULL: the diagonal
+ * only. */
+static subd_real pia_half_row(pia_state *s, uint32_t set, uint32_t v, int upper, const subd_real *x,
+                              subd_real *sum)
+{
+    const subd_mesh *m = s->m;
+    subd_acc acc[3];
+    subd_real d;
+    uint32_t k, i, n = 0;
+    const uint8_t want = set == PIA_SET_CURVE ? PIA_CLS_CURVE : PIA_CLS_SMOOTH; /* the set's class */
+    for (k = 0; k < 3u; k++) acc[k] = subd_acc_zero();
+    if (s->cls[v] == PIA_CLS_CURVE) {
+        uint32_t c[2];
+        pia_curve_nbrs(m, v, c);
+        d = SUBD_REAL_ONE;
+        for (i = 0; i < 2u; i++) {
+            subd_real wu = pia_curve_w(s, v, c[i]);
+            d = subd_sub(d, wu, &s->ovf);
+            if (!x || (upper ? c[i] <= v : c[i] >= v) || s->cls[c[i]] != want) continue;
+            for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], wu, x[3u * c[i] + k]);
+        }
+    } else {
+        uint32_t first = m->vert_out[v], h;
+        for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h), n++) {
+            uint32_t u = subd_he_dest(m, h);
+            if (!x || (upper ? u <= v : u >= v) || s->cls[u] != want) continue;
+            for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], s->od[v], x[3u * u + k]);
+        }
+        d = subd_sub(SUBD_REAL_ONE, subd_mul(subd_from_int((int32_t)n, &s->ovf), s->od[v], &s->ovf), &s->ovf);
+    }
+    for (k = 0; k < 3u; k++) sum[k] = subd_acc_real(acc[k], &s->ovf);
+    return d;
+}
+
+/* Forward sweep: z = K^-1 (P - L V) on the set, K = D + Lo (0 elsewhere). */
+static void pia_sweep_fwd(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    subd_real sum[3], d;
+    uint32_t v, k;
+    for (v = 0; v < m->num_verts; v++) {
+        if (!pia_in_set(s, v, set)) {
+            for (k = 3u * v; k < 3u * v + 3u; k++) s->z[k] = 0;
+            continue;
+        }
+        d = pia_half_row(s, set, v, 0, s->z, sum);
+        for (k = 0; k < 3u; k++) {
+            subd_real r = subd_sub(m->pos[3u * v + k], s->lv[3u * v + k], &s->ovf);
+            s->z[3u * v + k] = subd_div(subd_sub(r, sum[k], &s->ovf), d, &s->ovf);
+        }
+    }
+}
+
+/* Backward sweep: q = K'^-1 D z on the set, K' = D + Up (0 elsewhere). */
+static void pia_sweep_bwd(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    subd_real sum[3], d;
+    uint32_t v, k;
+    for (v = m->num_verts; v-- > 0u;) {
+        if (!pia_in_set(s, v, set)) {
+            for (k = 3u * v; k < 3u * v + 3u; k++) s->q[k] = 0;
+            continue;
+        }
+        d = pia_half_row(s, set, v, 1, s->q, sum);
+        for (k = 0; k < 3u; k++)
+            s->q[3u * v + k] = subd_sub(s->z[3u * v + k], subd_div(sum[k], d, &s->ovf), &s->ovf);
+    }
+}
+
+/* PCG on the set (all other vertices fixed) with the symmetric Gauss-Seidel preconditioner
+ * M = K D^-1 K' (K = D + Lo, K' = D + Up, A = K + K' - D the set's block of L in vertex
+ * order), until its max error is <= tol, it stalls, the budget is spent, or a safeguard
+ * hands the phase to the paper's step. With pt = K' p, A p = pt + Lo p (Eisenstat), so an
+ * iteration costs a forward sweep (Lo), a backward sweep (Up) and Lo p: three halves of an
+ * application of L, counted as 1.5 iterations. Exact lv on entry and exit. */
+static void pia_phase_sgs(pia_state *s, uint32_t set)
+{
+    const subd_mesh *m = s->m;
+    const subd_real *P = m->pos;
+    subd_real err, start, best, alpha, beta, sum[3], d;
+    pia_dotv rho, rho_new, sigma;
+    pia_sq e2;
+    uint32_t i, k, stall = 0;
+    int ok = 1;
+
+    err = pia_max_err(s, set);
+    if (s->ovf || err <= s->o->tol || !pia_budget(s, 3u)) return;
+    start = best = err;
+    beta = 0;
+    for (i = 0; i < 3u * m->num_verts; i++) s->p[i] = s->pt[i] = 0;
+    pia_sweep_fwd(s, set);
+    pia_sweep_bwd(s, set);
+    rho = pia_dot(s, set, P, s->lv, s->q, 0);
+    while (!s->ovf && pia_budget(s, 3u)) {
+        /* one ascending pass: p = z + beta p, pt = D y + beta pt (= K' p), q = pt + Lo p
+         * (= A p); Lo p at v reads only the p_u, u < v, already updated (q held z) */
+        for (i = 0; i < m->num_verts; i++) {
+            if (!pia_in_set(s, i, set)) continue;
+            d = pia_half_row(s, set, i, 0, s->p, sum);
+            for (k = 0; k < 3u; k++) {
+                uint32_t j = 3u * i + k;
+                subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_ONE, s->q[j]);
+                s->p[j] = subd_acc_real(subd_acc_add(acc, beta, s->p[j]), &s->ovf);
+                acc = subd_acc_add(subd_acc_zero(), d, s->z[j]);
+                s->pt[j] = subd_acc_real(subd_acc_add(acc, beta, s->pt[j]), &s->ovf);
+                s->q[j] = subd_add(s->pt[j], sum[k], &s->ovf);
+            }
+        }
+        sigma = pia_dot(s, set, s->p, 0, s->q, 0);
+        alpha = pia_ratio(rho, sigma, &ok);
+        if (!ok || s->ovf) break;
+        e2 = 0;
+        for (i = 0; i < m->num_verts; i++) {
+            pia_sq d2;
+            if (!pia_in_set(s, i, set)) continue;
+            for (k = 3u * i; k < 3u * i + 3u; k++) {
+                s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
+                s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
+            }
+            d2 = pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
+            if (d2 > e2) e2 = d2;
+        }
+        s->lv_true = 0;
+        s->half += 3u;
+        err = pia_root(e2, &s->ovf);
+        if (!s->ovf && err <= s->o->tol) { /* residual replacement: the true error decides */
+            pia_limit(s);
+            err = pia_max_err(s, set);
+            if (s->ovf || err <= s->o->tol) return;
+            ok = 0;
+            break;
+        }
+        if (err < best) {
+            best = err;
+            stall = 0;
+        } else if (++stall >= PIA_STALL) {
+            if (!s->lv_true) pia_limit(s);
+            return;
+        }
+        if (err > start && subd_sub(err, start, &s->ovf) > start) {
+            ok = 0;
+            break;
+        }
+        pia_sweep_fwd(s, set);
+        pia_sweep_bwd(s, set);
+        rho_new = pia_dot(s, set, P, s->lv, s->q, 0);
+        beta = pia_ratio(rho_new, rho, &ok);
+        if (!ok) break;
+        rho = rho_new;
+    }
+    if (s->ovf) return;
+    if (!s->lv_true) pia_limit(s);
+    if (!ok) pia_phase_paper(s, set);
+}
+
+/* 1 when every vertex of the set has the same row shape (CG weight and diagonal of L). */
+static int pia_uniform(pia_state *s, uint32_t set)
+{
+    subd_real w0 = 0, d0 = 0, d, sum[3];
+    uint32_t v;
+    int first = 1;
+    for (v = 0; v < s->m->num_verts; v++) {
+        if (!pia_in_set(s, v, set)) continue;
+        d = pia_half_row(s, set, v, 0, 0, sum);
+        if (first) {
+            w0 = s->w[v];
+            d0 = d;
+            first = 0;
+        } else if (s->w[v] != w0 || d != d0) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* A phase of the symmetrisable system: plain CG when the set is uniform, else SGS-PCG. */
+static void pia_phase_sym(pia_state *s, uint32_t set)
+{
+    if (pia_uniform(s, set)) pia_phase_cg(s, set);
+    else if (!s->ovf) pia_phase_sgs(s, set);
+}
+
+/* ------------------------------------------------------------------------------------ */
 /* Chebyshev semi-iteration (FAST on meshes with darts)                                   */
 
 /* Chebyshev iteration for L V = P on the set, for a spectrum in [ell, 1], until the max
@@ -643,7 +897,7 @@ static void pia_phase_cheb(pia_state *s, uint32_t set)
     for (k = 0;; k++) {
         err = pia_max_err(s, set);
         if (s->ovf || err <= s->o->tol || pia_stalled(err, k, &best, &stall)) return;
-        if (s->iters >= s->o->max_iter) return;
+        if (!pia_budget(s, 2u)) return;
         if (k == 0u) {
             start = err;
             a = 0;
@@ -670,7 +924,7 @@ static void pia_phase_cheb(pia_state *s, uint32_t set)
                 s->v[j] = subd_add(s->v[j], s->p[j], &s->ovf);
             }
         }
-        s->iters++;
+        s->half += 2u;
         pia_limit(s);
         if (s->ovf) return;
     }
@@ -699,7 +953,7 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
     mark = subd_arena_mark(a);
     s.m = in;
     s.o = o;
-    s.iters = 0;
+    s.half = 0;
     s.ovf = 0;
     s.lv_true = 0;
     s.v = (subd_real *)subd_arena_alloc(a, vb);
@@ -707,9 +961,12 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
     s.lv = (subd_real *)subd_arena_alloc(a, vb);
     s.p = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
     s.q = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
+    s.pt = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
+    s.z = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
     s.w = fast ? (subd_real *)subd_arena_alloc(a, in->num_verts * (uint32_t)sizeof(subd_real)) : 0;
+    s.od = fast ? (subd_real *)subd_arena_alloc(a, in->num_verts * (uint32_t)sizeof(subd_real)) : 0;
     s.cls = fast ? (uint8_t *)subd_arena_alloc(a, in->num_verts) : 0;
-    if (!s.v || !s.lv || (fast && (!s.p || !s.q || !s.w || !s.cls))) {
+    if (!s.v || !s.lv || (fast && (!s.p || !s.q || !s.pt || !s.z || !s.w || !s.od || !s.cls))) {
         subd_arena_rewind(a, mark);
         d->bytes_needed = bytes;
         return subd_fail(d, SUBD_ERR_NOMEM);
@@ -720,8 +977,8 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
     if (fast) {
         pia_classify(&s);
         if (!s.ovf && s.darts) pia_phase_cheb(&s, PIA_SET_MOVABLE);
-        if (!s.ovf && !s.darts) pia_phase_cg(&s, PIA_SET_CURVE);
-        if (!s.ovf && !s.darts) pia_phase_cg(&s, PIA_SET_SMOOTH);
+        if (!s.ovf && !s.darts) pia_phase_sym(&s, PIA_SET_CURVE);
+        if (!s.ovf && !s.darts) pia_phase_sym(&s, PIA_SET_SMOOTH);
         /* a phase that stalled or gave up: the paper's step polishes what is left */
         if (!s.ovf && pia_max_err(&s, PIA_SET_ALL) > o->tol) pia_phase_paper(&s, PIA_SET_MOVABLE);
     } else {
@@ -750,7 +1007,7 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
 #else
         res.mean_err = sum / (float)in->num_verts;
 #endif
-        res.iterations = s.iters;
+        res.iterations = (uint32_t)((s.half + 1u) / 2u); /* <= max_iter (pia_budget) */
         res.converged = res.max_err <= o->tol;
     }
     if (s.ovf) {

@@ -743,15 +743,17 @@ static void loop_plan_exact(void)
     check_plan_exhaustive(&iso, 4, SUBD_LOOP_ADJACENCY);
 }
 
-/* Bytes of an intermediate level (pos, corners, twins, vert_out, vertex and edge tags). */
+/* Bytes of an intermediate level (pos, corners, twins, vert_out, vertex tags, valences,
+ * edge tags). */
 static uint32_t level_bytes(uint32_t nv, uint32_t nc)
 {
-    return SUBD_ALIGN_UP(12u * nv) + 2u * SUBD_ALIGN_UP(4u * nc) + SUBD_ALIGN_UP(4u * nv) + SUBD_ALIGN_UP(nv) +
+    return SUBD_ALIGN_UP(12u * nv) + 2u * SUBD_ALIGN_UP(4u * nc) + SUBD_ALIGN_UP(4u * nv) + 2u * SUBD_ALIGN_UP(nv) +
            SUBD_ALIGN_UP(nc);
 }
 
-/* The plan formula: output arrays + level L-1 (level L-2 lives in the output region while
- * it fits there), not all levels; after the call the arena keeps only the output. */
+/* The plan formula: the output arrays, with the intermediate levels inside them (level L-1
+ * in place of face_start + corner_face, level L-2 in the front arrays), not all levels;
+ * after the call the arena keeps only the output. */
 static void loop_memory(void)
 {
     subd_arena a;
@@ -764,14 +766,15 @@ static void loop_memory(void)
     o.flags = 0;
     for (levels = 1; levels <= 4u; levels++) {
         uint32_t mark = subd_arena_mark(&a), nv = in.num_verts, ne = in.num_edges, nf = in.num_faces;
-        uint32_t pv = 0, pf = 0, qv = 0, qf = 0;
+        uint32_t pv = 0, pf = 0, qv = 0, qf = 0, front, fscf;
         o.levels = levels;
         if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) return;
         if (!run(&a, &in, levels, PAPER, 0, &out)) return;
         keep = subd_arena_mark(&a) - mark;
-        CHECK_EQ(keep, SUBD_ALIGN_UP(12u * out.num_verts) + SUBD_ALIGN_UP(4u * (out.num_faces + 1u)) +
-                           2u * SUBD_ALIGN_UP(4u * out.num_corners) + SUBD_ALIGN_UP(out.num_verts) +
-                           SUBD_ALIGN_UP(out.num_corners));
+        front = SUBD_ALIGN_UP(12u * out.num_verts) + SUBD_ALIGN_UP(4u * out.num_corners) +
+                SUBD_ALIGN_UP(out.num_verts) + SUBD_ALIGN_UP(out.num_corners);
+        fscf = SUBD_ALIGN_UP(4u * (out.num_faces + 1u)) + SUBD_ALIGN_UP(4u * out.num_corners);
+        CHECK_EQ(keep, front + fscf);
         for (k = 0; k < levels; k++) { /* (qv, qf) = level L-2, (pv, pf) = level L-1 */
             qv = pv; qf = pf;
             pv = nv; pf = nf;
@@ -779,12 +782,15 @@ static void loop_memory(void)
             ne = 2u * ne + 3u * nf;
             nf *= 4u;
         }
-        if (levels == 1u) CHECK_EQ(plan, keep);
-        else CHECK(level_bytes(qv, 3u * qf) <= keep && plan == keep + level_bytes(pv, 3u * pf));
+        /* the output alone: level L-1 fits into face_start + corner_face, L-2 in front */
+        CHECK_EQ(plan, keep);
+        if (levels >= 2u) CHECK(level_bytes(pv, 3u * pf) <= fscf);
+        if (levels >= 3u) CHECK(level_bytes(qv, 3u * qf) <= front);
         subd_arena_rewind(&a, mark);
     }
-    /* one triangle and 1000 isolated vertices, 3 levels: level 1 (17 bytes per vertex) is
-     * larger than the output (13 per vertex), so the plan is level 1 + level 2 */
+    /* one triangle and 1000 isolated vertices, 3 levels: level 1 (18 bytes per vertex) is
+     * larger than the output's front arrays (13 per vertex), so the plan is level 1 +
+     * level 2 */
     {
         subd_face_list fl = gen_tri_isolated(1000);
         uint32_t v1, c1, v2, c2;
@@ -793,6 +799,63 @@ static void loop_memory(void)
         if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) return;
         v1 = 1003u + 3u, c1 = 12u, v2 = v1 + 9u, c2 = 48u;
         CHECK_EQ(plan, level_bytes(v1, c1) + level_bytes(v2, c2));
+    }
+}
+
+/* SUBD_LOOP_BYTES sizes a static buffer at compile time and equals subd_loop_plan (a
+ * uint64_t array for the arena's 8-byte alignment; the plan is a multiple of 8). */
+static uint64_t g_ico3_buf[SUBD_LOOP_BYTES(12, 20, 30, 3) / 8u];
+static void loop_bytes_macro(void)
+{
+    static const int ids[] = {M_ICO, M_TET, M_HEXFAN, M_FAN9, M_BIPYR7, M_GRID, M_TORUS};
+    subd_arena a;
+    subd_mesh in;
+    subd_loop_opts o;
+    uint32_t k, levels, plan;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    o.boundary = PAPER;
+    for (k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+        uint32_t mark = subd_arena_mark(&a);
+        if (!make_mesh(ids[k], &a, &in)) return;
+        for (levels = 1; levels <= SUBD_MAX_LEVELS; levels++) {
+            uint32_t V = in.num_verts, F = in.num_faces, E = in.num_edges;
+            o.levels = levels;
+            o.flags = 0;
+            if (subd_loop_plan(&in, &o, &plan) != SUBD_OK) {
+                CHECK(SUBD_LOOP_BYTES(V, F, E, levels) >= UINT32_MAX);
+                continue;
+            }
+            CHECK_EQ(SUBD_LOOP_BYTES(V, F, E, levels), plan);
+            o.flags = SUBD_LOOP_ADJACENCY;
+            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) CHECK_EQ(SUBD_LOOP_BYTES_ADJ(V, F, E, levels), plan);
+        }
+        subd_arena_rewind(&a, mark);
+    }
+    /* isolated vertices dominate: the max() branches of the macro */
+    {
+        subd_face_list fl = gen_tri_isolated(1000);
+        if (!build(&a, &fl, &in)) return;
+        for (levels = 1; levels <= 4u; levels++) {
+            o.levels = levels;
+            o.flags = 0;
+            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK))
+                CHECK_EQ(SUBD_LOOP_BYTES(in.num_verts, in.num_faces, in.num_edges, levels), plan);
+            o.flags = SUBD_LOOP_ADJACENCY;
+            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK))
+                CHECK_EQ(SUBD_LOOP_BYTES_ADJ(in.num_verts, in.num_faces, in.num_edges, levels), plan);
+        }
+    }
+    /* the static buffer holds 3 levels of the icosahedron exactly */
+    {
+        subd_mesh out;
+        subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+        if (!make_mesh(M_ICO, &a, &in)) return;
+        subd_arena_init(&a, (uint8_t *)g_ico3_buf, (uint32_t)sizeof g_ico3_buf);
+        o.levels = 3;
+        o.flags = 0;
+        CHECK_EQ(subd_loop(&a, &in, &o, &out, 0), SUBD_OK);
+        CHECK_EQ(sizeof g_ico3_buf, SUBD_ALIGN_UP(12u * 642u) + SUBD_ALIGN_UP(4u * 3840u) + SUBD_ALIGN_UP(642u) +
+                                        SUBD_ALIGN_UP(3840u) + SUBD_ALIGN_UP(4u * 1281u) + SUBD_ALIGN_UP(4u * 3840u));
     }
 }
 
@@ -1212,6 +1275,7 @@ const test_case suite_loop[] = {
     {"loop_isolated", loop_isolated},
     {"loop_plan_exact", loop_plan_exact},
     {"loop_memory", loop_memory},
+    {"loop_bytes_macro", loop_bytes_macro},
     {"loop_errors", loop_errors},
     {"loop_range", loop_range},
 #if H_HOST

@@ -188,6 +188,7 @@ bench: deps
 bench-run: $(B)/bench/bench $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a
 	@echo "== host benchmark (make bench; $(HOST_CC) -O2)"
 	@$(B)/bench/bench $(wildcard $(SHARED)/data/meshes/bench/*.obj)
+	@$(B)/bench/bench -s valence48 $(wildcard $(SHARED)/data/meshes/*/*.obj)
 	@echo "== Cortex-M library size (arm-none-eabi-size, -O2)"
 	@$(CM_SIZE) -t $(B)/m4f-float/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m4f-float libsubd.a/'
 	@$(CM_SIZE) -t $(B)/m3-fixed/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m3-fixed libsubd.a/'

@@ -38,3 +38,14 @@ echo "wrote $out/alpha_circle.xyz  (points for a CNC controller)"
 run alpha_ellipse alpha --kernel cos --alpha 1/4 -l 5 demo/ellipse_control.obj $top
 run alpha_doo_sabin_spot alpha -l 2 test/data/spot_control_mesh.obj
 run alpha_s3_cube alpha --order 3 -l 3 test/data/cube_quad.obj
+
+echo "-- semi-regular 4-8 refinement and variable resolution (the paper's figures 17-20)"
+run semireg48_hexfan_preprocessed semireg48 -l 0 --no-smooth test/data/hexfan.obj $top
+run semireg48_hexfan_4steps_refine semireg48 -l 4 --no-smooth test/data/hexfan.obj $top
+run semireg48_hexfan_4steps_smooth semireg48 -l 4 test/data/hexfan.obj $top
+run semireg48_pentagon_prism_4steps semireg48 -l 4 demo/pentagon_prism.obj
+run semireg48_spot_2steps semireg48 -l 2 demo/spot_triangulated.obj
+run adapt_torus_point adapt -l 6 --point 1.4,0,0 demo/torus_12x6.obj --pitch 60
+run adapt_torus_ramp adapt -l 6 --ramp x demo/torus_12x6.obj --pitch 60
+run adapt_torus_plane adapt -l 6 --plane 0,0,0,1,0,0 demo/torus_12x6.obj --pitch 60
+run adapt_spot_chord adapt -l 6 --chord 0.01 demo/spot_triangulated.obj

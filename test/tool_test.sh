@@ -259,6 +259,44 @@ run "$FLOAT" loop test/data/cube_quad.obj -o "$T/x.obj"
 is 2 && err_starts "test/data/cube_quad.obj"; check $? "loop on quads: exit 2 naming the input"
 run "$FLOAT" quasi48 -l 2 demo/torus_12x6.obj -o "$T/q.obj" --stats
 is 0 && json_ok "$T/out" && [ "$(json_num faces)" = 576 ]; check $? "quasi48 -l 2 on the 12x6 torus: every face split twice (576)"
+usage_case_pre() { run "$FLOAT" "$@"; is 1; }
+# semi-regular 4-8: level 0 of a triangle mesh with C two-face clusters and T = F - 2C isolated
+# triangles has V + C + T + (E - C) = V + T + E vertices (a face point per cluster and per
+# isolated triangle, an edge point per edge that is not a cluster diagonal) and 8C + 6T faces
+# (section 5); each binary step doubles
+# the faces; adaptive meshes are valid meshes with fewer faces than the uniform level.
+run "$FLOAT" semireg48 -l 0 test/data/icosahedron.obj -o "$T/sr0.obj" --stats
+c=$(json_num clusters) ti=$(json_num isolated_triangles)
+is 0 && json_ok "$T/out" && [ $((2 * c + ti)) = 20 ] && [ "$(json_num faces)" = $((8 * c + 6 * ti)) ] &&
+    [ "$(sed -n 's/.*"output":{[^}]*"vertices":\([0-9]*\).*/\1/p' "$T/out")" = $((12 + ti + 30)) ] &&
+    [ "$(json_num arena_planned)" = "$(json_num arena_used)" ]
+check $? "semireg48 -l 0 icosahedron: V + T + E vertices, 8C + 6T faces, arena used = planned"
+run "$FIXED" semireg48 -l 3 test/data/icosahedron.obj -o "$T/sr3.obj" --stats
+is 0 && [ "$(json_num faces)" = $((8 * (8 * c + 6 * ti))) ] && [ "$(json_num arena_planned)" = "$(json_num arena_used)" ]
+check $? "subd-fixed semireg48 -l 3 icosahedron: 2^3 x the level-0 faces, arena used = planned"
+run "$FLOAT" adapt -l 6 --chord 0.01 demo/torus_12x6.obj -o "$T/ad.obj" --stats
+is 0 && json_ok "$T/out" && [ "$(json_num uniform_faces)" = 36864 ] &&
+    [ "$(json_num faces)" -lt 36864 ] && [ "$(json_num saved_faces)" = $((36864 - $(json_num faces))) ] &&
+    [ "$(sed -n 's/.*"output":{[^}]*"boundary_edges":\([0-9]*\).*/\1/p' "$T/out")" = 0 ]
+check $? "adapt --chord on the torus: closed output, fewer faces than uniform level 6, saved = uniform - faces"
+run "$FLOAT" info "$T/ad.obj"
+is 0 && grep -q '^genus: 1$' "$T/out"; check $? "adapt output reads back as a valid genus-1 mesh"
+for mode in "--point 1.4,0,0" "--ramp z" "--plane 0,0,0,1,0,0"; do
+    run "$FIXED" adapt -l 4 $mode demo/torus_12x6.obj -o "$T/am.off" --stats
+    is 0 && [ "$(json_num faces)" -lt "$(json_num uniform_faces)" ]; check $? "subd-fixed adapt -l 4 $mode: fewer faces than uniform"
+done
+usage_case_pre adapt -l 4 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt without a mode: exit 1"
+usage_case_pre adapt -l 4 --ramp w demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --ramp w: exit 1"
+usage_case_pre adapt -l 4 --ramp x --chord 1 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt with two modes: exit 1"
+usage_case_pre adapt -l 4 --chord 0 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --chord 0: exit 1"
+usage_case_pre adapt -l 4 --plane 0,0,0,0,0,0 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --plane with a zero normal: exit 1"
+usage_case_pre adapt -l 4 --ramp x --radius 1 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --radius without --point: exit 1"
+usage_case_pre semireg48 -l 17 test/data/icosahedron.obj -o "$T/x.obj"; check $? "semireg48 -l 17 (above 2 x SUBD_MAX_LEVELS): exit 1"
+usage_case_pre semireg48 --chord 1 test/data/icosahedron.obj -o "$T/x.obj"; check $? "semireg48 --chord (an adapt option): exit 1"
+run "$FLOAT" semireg48 -l 2 test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && err_starts "test/data/cube_quad.obj"; check $? "semireg48 on quads: exit 2 naming the input"
+run "$FLOAT" semireg48 -l 2 --arena 20k test/data/icosahedron.obj -o "$T/x.obj"
+is 3 && grep -q "needs" "$T/err"; check $? "semireg48 --arena 20k: exit 3, says how many bytes it needs"
 run "$FLOAT" alpha --kernel cos --alpha 1/4 -l 5 demo/square.obj -o "$T/circle.xyz"
 is 0 && awk 'BEGIN { n = 0 } NF == 3 { x[n] = $1; y[n] = $2; n++ }
     END { if (n != 129 || x[0] != x[128] || y[0] != y[128]) exit 1
@@ -274,7 +312,6 @@ run "$FLOAT" limit --normals test/data/icosahedron.obj -o "$T/lim.obj"
 is 0 && [ "$(grep -c '^vn ' "$T/lim.obj")" = 12 ]; check $? "limit --normals: one vn per vertex"
 run "$FLOAT" pia --tol 1e-4 test/data/icosahedron.obj -o "$T/pia.obj" --stats
 is 0 && json_ok "$T/out" && grep -q '"converged":true' "$T/out"; check $? "pia --tol 1e-4 on the icosahedron converges"
-usage_case_pre() { run "$FLOAT" "$@"; is 1; }
 usage_case_pre loop --boundary sideways test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --boundary sideways: exit 1"
 usage_case_pre quasi48 --boundary paper test/data/icosahedron.obj -o "$T/x.obj"; check $? "quasi48 --boundary paper: exit 1"
 usage_case_pre alpha --stiffness -1 demo/square.obj -o "$T/x.obj"; check $? "alpha --stiffness -1 (diverges): exit 1"

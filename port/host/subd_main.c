@@ -66,6 +66,10 @@ typedef struct tool_opts {
     uint32_t max_iter;           /* --max-iter K (pia)                                    */
     subd_pia_method method;      /* --method paper|fast (pia)                             */
     subd_alpha_opts alpha;       /* --order, --kernel, --alpha, --stiffness (alpha)       */
+    subd_adapt_mode adapt_mode;  /* adapt: --point, --ramp, --plane or --chord            */
+    double adapt_val[6];         /* the point (and plane normal), or the chord tolerance  */
+    uint32_t adapt_axis;         /* --ramp x|y|z                                          */
+    double radius;               /* --radius R (adapt --point)                            */
     unsigned given;              /* OPT_* bits of the scheme options given                */
 } tool_opts;
 
@@ -76,8 +80,10 @@ typedef struct tool_opts {
 #define OPT_TOL 0x08u
 #define OPT_MAX_ITER 0x10u
 #define OPT_METHOD 0x20u
-#define OPT_Q48 0x40u /* --no-smooth, --tag-boundary, --boundary fixed|smooth */
+#define OPT_Q48 0x40u /* --tag-boundary, --boundary fixed|smooth */
 #define OPT_ALPHA 0x80u /* --order, --kernel, --alpha, --stiffness */
+#define OPT_NO_SMOOTH 0x100u /* --no-smooth */
+#define OPT_ADAPT 0x200u /* --point, --ramp, --plane, --chord, --radius */
 
 /* What a scheme produced besides the output mesh: optional per-vertex normals (written as
  * OBJ vn) and extra --stats members (a JSON fragment without braces, e.g. "iterations":9). */
@@ -92,6 +98,7 @@ typedef struct scheme_extra {
 #define CMD_OUTPUT_REQUIRED 0x02u /* -o is mandatory                                        */
 #define CMD_PNG_ONLY 0x04u        /* the output must be .png                                */
 #define CMD_LEVELS 0x08u          /* accepts -l N                                           */
+#define CMD_LEVEL0 0x10u          /* -l 0 is meaningful                                     */
 
 struct tool_run;
 
@@ -102,6 +109,7 @@ typedef struct command {
     unsigned flags;
     const char *scheme;       /* paper scheme name for --stats, NULL for plain commands  */
     uint32_t default_levels;  /* used when -l is not given (CMD_LEVELS)                  */
+    uint32_t max_levels;      /* largest -l N                                            */
     unsigned options;         /* OPT_* scheme options the command accepts                */
     /* Scheme commands: exact arena bytes run() needs for this input (after the input mesh,
      * which stays in the arena), and the operation itself (arena, const input -> output).
@@ -244,6 +252,105 @@ static int q48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_
     return st;
 }
 
+/* semireg48 and adapt: build the hierarchy of right triangles (subd_sr48_build), then cut
+ * the output mesh out of it (subd_sr48_extract; uniform at level N for semireg48). The
+ * device arena holds both, so the plan is the build's exact bytes (with the cluster count
+ * found first) plus the extraction's; the extraction plan needs the hierarchy, so the plan
+ * builds it once in host memory. */
+static subd_sr48_opts sr48_opts_of(const tool_opts *o)
+{
+    subd_sr48_opts so;
+    so.steps = o->levels;
+    so.flags = o->no_smooth ? SUBD_SR48_NO_SMOOTH : 0u;
+    return so;
+}
+
+static subd_adapt sr48_adapt_of(const tool_opts *o)
+{
+    subd_adapt ad;
+    int i;
+    memset(&ad, 0, sizeof ad);
+    ad.mode = o->adapt_mode;
+    ad.max_level = o->levels;
+    for (i = 0; i < 3; i++) {
+        ad.point[i] = host_real_from_double(o->adapt_val[i]);
+        ad.normal[i] = host_real_from_double(o->adapt_val[3 + i]);
+    }
+    ad.radius = host_real_from_double(o->radius);
+    ad.axis = o->adapt_axis;
+    ad.eps = host_real_from_double(o->adapt_val[0]);
+    return ad;
+}
+
+/* Exact build bytes: find_clusters first (in a temporary host arena). */
+static int sr48_build_plan(const subd_mesh *in, const subd_sr48_opts *so, uint32_t *bytes, subd_diag *d)
+{
+    uint32_t bound, clusters = 0;
+    subd_arena tmp;
+    void *mem;
+    int st = subd_sr48_plan(in, so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    if (st != SUBD_OK) return st;
+    mem = host_arena_alloc(&tmp, bound);
+    if (!mem) return SUBD_ERR_NOMEM;
+    st = subd_sr48_count_clusters(&tmp, in, &clusters, d);
+    free(mem);
+    if (st != SUBD_OK) return st;
+    return subd_sr48_plan(in, so, clusters, bytes);
+}
+
+static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_sr48_opts so = sr48_opts_of(o);
+    subd_adapt ad = sr48_adapt_of(o);
+    uint32_t build = 0, extract = 0, keep;
+    subd_arena tmp;
+    subd_sr48 h;
+    void *mem;
+    int st = sr48_build_plan(in, &so, &build, d);
+    if (st != SUBD_OK) return st;
+    mem = host_arena_alloc(&tmp, build);
+    if (!mem) return SUBD_ERR_NOMEM;
+    st = subd_sr48_build(&tmp, in, &so, &h, d);
+    keep = tmp.used; /* the hierarchy; the build's scratch above it is given back */
+    if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &ad, &extract);
+    free(mem);
+    if (st != SUBD_OK) return st;
+    if (extract > UINT32_MAX - keep) return SUBD_ERR_TOO_BIG;
+    *bytes = keep + extract > build ? keep + extract : build;
+    return SUBD_OK;
+}
+
+static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                    subd_diag *d)
+{
+    static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
+    subd_sr48_opts so = sr48_opts_of(o);
+    subd_adapt ad = sr48_adapt_of(o);
+    subd_adapt_report rep;
+    subd_sr48 h;
+    uint32_t mark = subd_arena_mark(a);
+    int st = subd_sr48_build(a, in, &so, &h, d);
+    if (st != SUBD_OK) return st;
+    st = subd_sr48_extract(a, &h, &ad, out, &rep, d);
+    if (st != SUBD_OK) {
+        subd_arena_rewind(a, mark);
+        return st;
+    }
+    snprintf(x->json, sizeof x->json,
+             "\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\",\"clusters\":%lu,\"isolated_triangles\":%lu,"
+             "\"hierarchy_triangles\":%lu,\"faces\":%lu,\"uniform_faces\":%lu,\"saved_faces\":%lu,"
+             "\"forced_splits\":%lu",
+             (unsigned long)o->levels, o->no_smooth ? "false" : "true", mode_name[ad.mode],
+             (unsigned long)h.num_clusters, (unsigned long)h.num_isolated, (unsigned long)h.num_tris,
+             (unsigned long)rep.faces, (unsigned long)rep.uniform_faces,
+             (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
+    if (!o->stats && ad.mode != SUBD_ADAPT_UNIFORM)
+        fprintf(stderr, "adapt: %lu triangles (uniform level %lu: %lu, saved %lu), %lu forced splits\n",
+                (unsigned long)rep.faces, (unsigned long)o->levels, (unsigned long)rep.uniform_faces,
+                (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
+    return SUBD_OK;
+}
+
 /* alpha: the semi-stationary operators. A mesh with faces gets the Doo-Sabin type surface
  * operator; a mesh of polylines (OBJ l records) gets the curve operator S_k once per
  * polyline, closed when its last index repeats its first. Curves are refined one at a time
@@ -344,29 +451,39 @@ static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, sub
 static const command commands[] = {
     {"info", "INPUT", "counts, components, Euler characteristic, genus,\n"
                       "valences and bounding box of a mesh",
-     CMD_OUTPUT_NONE, NULL, 0, 0, NULL, NULL, info_report},
+     CMD_OUTPUT_NONE, NULL, 0, 0, 0, NULL, NULL, info_report},
     {"convert", "INPUT -o OUTPUT", "write the mesh in OUTPUT's format",
-     CMD_OUTPUT_REQUIRED, NULL, 0, 0, NULL, NULL, NULL},
+     CMD_OUTPUT_REQUIRED, NULL, 0, 0, 0, NULL, NULL, NULL},
     {"render", "INPUT -o OUTPUT.png", "draw the mesh (shaded, with edges) as a PNG",
-     CMD_OUTPUT_REQUIRED | CMD_PNG_ONLY, NULL, 0, 0, NULL, NULL, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_PNG_ONLY, NULL, 0, 0, 0, NULL, NULL, NULL},
     {"loop", "[-l N] INPUT -o OUTPUT", "Loop subdivision of a triangle mesh (default 1 level);\n"
                                        "--boundary paper|bspline, --crease-angle DEG",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "loop", 1, LOOP_OPTS, loop_plan, loop_run, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "loop", 1, SUBD_MAX_LEVELS, LOOP_OPTS, loop_plan, loop_run, NULL},
     {"limit", "INPUT -o OUTPUT", "control vertices moved to their Loop limit positions;\n"
                                  "--normals adds limit normals (OBJ vn)",
-     CMD_OUTPUT_REQUIRED, "limit", 0, LOOP_OPTS | OPT_NORMALS, limit_plan, limit_run, NULL},
+     CMD_OUTPUT_REQUIRED, "limit", 0, 0, LOOP_OPTS | OPT_NORMALS, limit_plan, limit_run, NULL},
     {"pia", "--tol T INPUT -o OUTPUT", "progressive interpolation: a control mesh whose Loop\n"
                                        "limit surface passes through INPUT's vertices;\n"
                                        "--max-iter K (default 100), --method paper|fast",
-     CMD_OUTPUT_REQUIRED, "pia", 0, LOOP_OPTS | OPT_TOL | OPT_MAX_ITER | OPT_METHOD, pia_plan, pia_run, NULL},
+     CMD_OUTPUT_REQUIRED, "pia", 0, 0, LOOP_OPTS | OPT_TOL | OPT_MAX_ITER | OPT_METHOD, pia_plan, pia_run, NULL},
     {"quasi48", "[-l N] INPUT -o OUTPUT", "quasi 4-8 subdivision, N binary steps (default 2 = one\n"
                                           "4-8 refinement); --no-smooth, --boundary fixed|smooth,\n"
                                           "--tag-boundary, --crease-angle DEG",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, OPT_Q48 | OPT_CREASE, q48_plan, q48_run, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_Q48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE, q48_plan, q48_run, NULL},
     {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"
                                         "or the Doo-Sabin type surface; --order K, --kernel\n"
                                         "bspline|cos|poly|cosh, --alpha A, --stiffness S",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, OPT_ALPHA, alpha_plan, alpha_run, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, SUBD_MAX_LEVELS, OPT_ALPHA, alpha_plan, alpha_run, NULL},
+    {"semireg48", "[-l N] INPUT -o OUTPUT", "semi-regular 4-8 refinement with Zwart-Powell box-spline\n"
+                                            "smoothing, N binary steps after pre-processing (default\n"
+                                            "2; -l 0 writes the pre-processed mesh); --no-smooth",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 2, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH, sr48_plan,
+     sr48_run, NULL},
+    {"adapt", "-l MAX MODE INPUT -o OUTPUT", "variable-resolution semi-regular 4-8 mesh up to MAX binary\n"
+                                             "steps; MODE: --point X,Y,Z [--radius R] | --ramp x|y|z |\n"
+                                             "--plane X,Y,Z,NX,NY,NZ | --chord EPS; --no-smooth",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 6, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH | OPT_ADAPT,
+     sr48_plan, sr48_run, NULL},
 };
 #define NUM_COMMANDS (sizeof commands / sizeof commands[0])
 
@@ -403,7 +520,8 @@ static void usage(FILE *f)
             "lines, polylines separated by a blank line (for CNC use).\n"
             "\noptions:\n"
             "  -o FILE          output file\n"
-            "  -l N             subdivision levels, 0..%d (scheme commands)\n"
+            "  -l N             subdivision levels (scheme commands; binary steps for quasi48,\n"
+            "                   semireg48 and adapt, up to %d; other schemes up to %d)\n"
             "  --stats          print exactly one JSON object on stdout (keys: command, scheme,\n"
             "                   levels, arithmetic, input, output, arena_budget, arena_planned,\n"
             "                   arena_used, time_ms = milliseconds in library calls); the\n"
@@ -413,7 +531,7 @@ static void usage(FILE *f)
             "  --boundary R     loop/limit/pia: boundary and crease rule, paper (the paper's\n"
             "                   section 4, default) or bspline (midpoints, as OpenSubdiv and\n"
             "                   CGAL); quasi48: fixed (default) or smooth boundary vertices\n"
-            "  --no-smooth      (quasi48) refinement only, no smoothing\n"
+            "  --no-smooth      (quasi48, semireg48, adapt) refinement only, no smoothing\n"
             "  --tag-boundary   (quasi48) tag boundary edges as creases (they stay put)\n"
             "  --crease-angle D tag edges whose faces meet at more than D degrees as creases\n"
             "  --normals        (limit) also write unit limit normals as OBJ vn records\n"
@@ -424,6 +542,14 @@ static void usage(FILE *f)
             "  --kernel K       (alpha) bspline (default), cos (C-curves: circles), poly, cosh\n"
             "  --alpha A        (alpha) angle as a fraction of a turn N/D (1/8) or degrees (45deg)\n"
             "  --stiffness S    (alpha) s = f(0), default 1; s <= -1 diverges (rejected)\n"
+            "  --point X,Y,Z    (adapt) finest at this point, one level coarser per radius away\n"
+            "  --radius R       (adapt --point) distance per level (default: bounding-box\n"
+            "                   diagonal / (2 MAX))\n"
+            "  --ramp A         (adapt) level rising along axis x, y or z from 0 to MAX\n"
+            "  --plane P,N      (adapt) MAX on the side of the plane through P the normal N\n"
+            "                   points to, level 0 elsewhere (X,Y,Z,NX,NY,NZ)\n"
+            "  --chord EPS      (adapt) refine only where a triangle is more than EPS from the\n"
+            "                   level-MAX surface (chordal tolerance, input units)\n"
             "  --size WxH       picture size in pixels (default 800x600, up to 8192x8192)\n"
             "  --yaw DEG        view rotation about the up axis (default 30)\n"
             "  --pitch DEG      view elevation, -90..90 (default 20)\n"
@@ -439,7 +565,7 @@ static void usage(FILE *f)
             "  3  resource limit: arena too small (says how many bytes are needed),\n"
             "     counts too large for 32-bit sizes, or host out of memory\n"
             "  4  OUTPUT cannot be written\n",
-            SUBD_MAX_LEVELS);
+            2 * SUBD_MAX_LEVELS, SUBD_MAX_LEVELS);
 }
 
 static int usage_error(const char *fmt, ...)
@@ -494,6 +620,23 @@ static int parse_double(const char *s, double lo, double hi, double *out)
     v = strtod(s, &end);
     if (end == s || *end || errno || !(v >= lo && v <= hi)) return -1;
     *out = v;
+    return 0;
+}
+
+/* n comma-separated numbers (coordinates within +-1e6). */
+static int parse_doubles(const char *s, int n, double *out)
+{
+    char buf[64];
+    int i;
+    for (i = 0; i < n; i++) {
+        const char *c = strchr(s, ',');
+        size_t len = (i + 1 < n) ? (c ? (size_t)(c - s) : sizeof buf) : strlen(s);
+        if (len >= sizeof buf) return -1;
+        memcpy(buf, s, len);
+        buf[len] = '\0';
+        if (parse_double(buf, -1e6, 1e6, &out[i])) return -1;
+        s += len + (i + 1 < n ? 1u : 0u);
+    }
     return 0;
 }
 
@@ -582,7 +725,7 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             if (val) return usage_error("option '%s' takes no value", name);
             if (strcmp(name, "--stats") == 0) o->stats = 1;
             else if (strcmp(name, "--normals") == 0) { o->normals = 1; o->given |= OPT_NORMALS; }
-            else if (strcmp(name, "--no-smooth") == 0) { o->no_smooth = 1; o->given |= OPT_Q48; }
+            else if (strcmp(name, "--no-smooth") == 0) { o->no_smooth = 1; o->given |= OPT_NO_SMOOTH; }
             else if (strcmp(name, "--tag-boundary") == 0) { o->tag_boundary = 1; o->given |= OPT_Q48; }
             else { o->ropt.edges = 0; o->render_opt_given = 1; }
             continue;
@@ -591,7 +734,9 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             strcmp(name, "--size") && strcmp(name, "--yaw") && strcmp(name, "--pitch") &&
             strcmp(name, "--boundary") && strcmp(name, "--crease-angle") && strcmp(name, "--tol") &&
             strcmp(name, "--max-iter") && strcmp(name, "--method") && strcmp(name, "--order") &&
-            strcmp(name, "--kernel") && strcmp(name, "--alpha") && strcmp(name, "--stiffness"))
+            strcmp(name, "--kernel") && strcmp(name, "--alpha") && strcmp(name, "--stiffness") &&
+            strcmp(name, "--point") && strcmp(name, "--ramp") && strcmp(name, "--plane") &&
+            strcmp(name, "--chord") && strcmp(name, "--radius"))
             return usage_error("unknown option '%s'", a);
         if (!val) {
             if (i + 1 >= argc) return usage_error("option '%s' needs a value", name);
@@ -603,8 +748,8 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             o->output = val;
         } else if (strcmp(name, "-l") == 0) {
             if (!(cmd->flags & CMD_LEVELS)) return usage_error("option -l does not apply to '%s'", cmd->name);
-            if (parse_u32(val, SUBD_MAX_LEVELS, &o->levels))
-                return usage_error("bad level count '%s' (expected 0..%d)", val, SUBD_MAX_LEVELS);
+            if (parse_u32(val, cmd->max_levels, &o->levels))
+                return usage_error("bad level count '%s' (expected 0..%lu)", val, (unsigned long)cmd->max_levels);
             o->has_levels = 1;
         } else if (strcmp(name, "--boundary") == 0) {
             o->boundary_name = val; /* checked below, once the command is known */
@@ -652,6 +797,33 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             if (sv <= -1.0) return usage_error("stiffness %s <= -1: the subdivision diverges (paper, table 1)", val);
             o->alpha.stiffness = host_real_from_double(sv);
             o->given |= OPT_ALPHA;
+        } else if (strcmp(name, "--point") == 0 || strcmp(name, "--plane") == 0 || strcmp(name, "--ramp") == 0 ||
+                   strcmp(name, "--chord") == 0) {
+            if (o->adapt_mode != SUBD_ADAPT_UNIFORM)
+                return usage_error("give one adaptation mode (--point, --ramp, --plane or --chord)");
+            if (strcmp(name, "--point") == 0) {
+                if (parse_doubles(val, 3, o->adapt_val)) return usage_error("bad point '%s' (expected X,Y,Z)", val);
+                o->adapt_mode = SUBD_ADAPT_POINT;
+            } else if (strcmp(name, "--plane") == 0) {
+                if (parse_doubles(val, 6, o->adapt_val) ||
+                    (o->adapt_val[3] == 0.0 && o->adapt_val[4] == 0.0 && o->adapt_val[5] == 0.0))
+                    return usage_error("bad plane '%s' (expected X,Y,Z,NX,NY,NZ with a nonzero normal)", val);
+                o->adapt_mode = SUBD_ADAPT_PLANE;
+            } else if (strcmp(name, "--ramp") == 0) {
+                if (strlen(val) != 1 || val[0] < 'x' || val[0] > 'z')
+                    return usage_error("bad ramp axis '%s' (expected x, y or z)", val);
+                o->adapt_axis = (uint32_t)(val[0] - 'x');
+                o->adapt_mode = SUBD_ADAPT_RAMP;
+            } else {
+                if (parse_double(val, 0.0, 1e30, &o->adapt_val[0]) || !(o->adapt_val[0] > 0.0))
+                    return usage_error("bad chordal tolerance '%s' (a positive number, input units)", val);
+                o->adapt_mode = SUBD_ADAPT_CHORD;
+            }
+            o->given |= OPT_ADAPT;
+        } else if (strcmp(name, "--radius") == 0) {
+            if (parse_double(val, 0.0, 1e30, &o->radius) || !(o->radius > 0.0))
+                return usage_error("bad radius '%s' (a positive number, input units)", val);
+            o->given |= OPT_ADAPT;
         } else if (strcmp(name, "--arena") == 0) {
             if (parse_bytes(val, &o->budget)) return usage_error("bad arena size '%s' (bytes, optional k or m suffix, < 4 GiB)", val);
             o->has_budget = 1;
@@ -704,8 +876,11 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     if (!(o->given & OPT_METHOD)) o->method = SUBD_PIA_FAST;
     if (!o->has_levels) o->levels = cmd->default_levels;
     o->alpha.levels = o->levels;
-    if ((cmd->flags & CMD_LEVELS) && cmd->run && o->levels == 0)
-        return usage_error("'%s' needs at least one level (-l 1..%d)", cmd->name, SUBD_MAX_LEVELS);
+    if ((cmd->flags & CMD_LEVELS) && !(cmd->flags & CMD_LEVEL0) && cmd->run && o->levels == 0)
+        return usage_error("'%s' needs at least one level (-l 1..%lu)", cmd->name, (unsigned long)cmd->max_levels);
+    if ((cmd->options & OPT_ADAPT) && o->adapt_mode == SUBD_ADAPT_UNIFORM)
+        return usage_error("'%s' needs an adaptation mode (--point, --ramp, --plane or --chord)", cmd->name);
+    if (o->radius > 0.0 && o->adapt_mode != SUBD_ADAPT_POINT) return usage_error("--radius goes with --point");
     return EXIT_OK;
 }
 

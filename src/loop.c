@@ -199,7 +199,7 @@ static int mesh_ok(const subd_mesh *m)
 static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_layout *lay, subd_diag *d)
 {
     loop_counts prev2, prev1, cur;
-    uint32_t f, h, nbe = 0, k, lv_off[LV_N], b1 = 0, b2 = 0, front;
+    uint32_t h, nbe = 0, k, lv_off[LV_N], b1 = 0, b2 = 0, front;
     if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
@@ -207,12 +207,7 @@ static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_lay
     if (o->flags & ~SUBD_LOOP_ADJACENCY) return subd_fail(d, SUBD_ERR_PARAM);
     if (in->face_start[0] != 0u || in->face_start[in->num_faces] != in->num_corners)
         return subd_fail(d, SUBD_ERR_PARAM);
-    for (f = 0; f < in->num_faces; f++) {
-        if (in->face_start[f + 1u] - in->face_start[f] != 3u) {
-            d->face = f;
-            return subd_fail(d, SUBD_ERR_FACE_SIZE);
-        }
-    }
+    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
     for (h = 0; h < in->num_corners; h++)
         if (in->twin[h] == SUBD_NONE) nbe++;
     cur.nv = in->num_verts;

@@ -916,19 +916,12 @@ static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real
 
 static int lim_check(const subd_mesh *in, subd_loop_boundary b, subd_diag *d)
 {
-    uint32_t f;
     if (!in || (b != SUBD_LOOP_BOUNDARY_PAPER && b != SUBD_LOOP_BOUNDARY_BSPLINE)) return SUBD_ERR_PARAM;
     if (in->num_verts > 0u && (!in->pos || !in->vert_out || !in->vert_tag)) return SUBD_ERR_PARAM;
     if (in->num_faces > 0u && (!in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
                                !in->edge_tag))
         return SUBD_ERR_PARAM;
-    for (f = 0; f < in->num_faces; f++) {
-        if (subd_face_size(in, f) != 3u) {
-            if (d) d->face = f;
-            return SUBD_ERR_FACE_SIZE;
-        }
-    }
-    return SUBD_OK;
+    return subd_require_triangles(in, d);
 }
 
 /* The one layout: positions, then normals; no working memory. */

@@ -30,6 +30,19 @@ int subd_fail(subd_diag *d, int status)
     return status;
 }
 
+int subd_require_triangles(const subd_mesh *m, subd_diag *d)
+{
+    uint32_t f;
+    for (f = 0; f < m->num_faces; f++) {
+        if (subd_face_size(m, f) != 3u) {
+            if (!d) return SUBD_ERR_FACE_SIZE;
+            d->face = f;
+            return subd_fail(d, SUBD_ERR_FACE_SIZE);
+        }
+    }
+    return SUBD_OK;
+}
+
 /* The one layout: with a == NULL it only counts bytes; otherwise it allocates the same
  * arrays in the same order, so plan and allocation cannot drift apart. */
 static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32_t *bytes)

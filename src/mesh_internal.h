@@ -40,4 +40,8 @@ int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint3
 
 /* Sets diag fields for an error and returns the status (for one-line error returns). */
 int subd_fail(subd_diag *d, int status);
+
+/* SUBD_OK when every face of m is a triangle; else SUBD_ERR_FACE_SIZE with d->face (when
+ * d != NULL) set to the first other face. For the schemes defined on triangles only. */
+int subd_require_triangles(const subd_mesh *m, subd_diag *d);
 #endif

@@ -201,7 +201,6 @@ static int pia_tol_ok(subd_real tol)
 /* PARAM (pointers, options, a mesh without adjacency), then FACE_SIZE (diag.face). */
 static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
 {
-    uint32_t f;
     if (!in || !o || !in->pos || !in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
         !in->vert_out || !in->vert_tag || !in->edge_tag || in->num_verts == 0u)
         return subd_fail(d, SUBD_ERR_PARAM);
@@ -209,13 +208,7 @@ static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
         (o->method != SUBD_PIA_PAPER && o->method != SUBD_PIA_FAST) || o->max_iter == 0u ||
         !pia_tol_ok(o->tol))
         return subd_fail(d, SUBD_ERR_PARAM);
-    for (f = 0; f < in->num_faces; f++) {
-        if (subd_face_size(in, f) != 3u) {
-            d->face = f;
-            return subd_fail(d, SUBD_ERR_FACE_SIZE);
-        }
-    }
-    return SUBD_OK;
+    return subd_require_triangles(in, d);
 }
 
 /* Bytes of the arrays subd_pia allocates, in its order; UINT32_MAX if too big. */
@@ -585,6 +578,49 @@ static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
 
 #endif
 
+/* The end of a CG or PCG iteration, shared by both: V += alpha p and L V += alpha q on the
+ * set with the new max error in one pass (the recurrence; `halves` half-applications of L
+ * are charged), then the verdict. DONE: the true error (residual replacement) is <= tol,
+ * or no new minimum for PIA_STALL iterations (the rounding floor: not converged); lv is
+ * exact then. SAFEGUARD: the recurrence drifted at the rounding floor, or the error grew
+ * beyond twice its start; the caller polishes with the paper's step. */
+enum { PIA_GO_ON, PIA_DONE, PIA_SAFEGUARD };
+static int pia_cg_advance(pia_state *s, uint32_t set, subd_real alpha, uint32_t halves, subd_real start,
+                          subd_real *best, uint32_t *stall)
+{
+    const subd_real *P = s->m->pos;
+    subd_real err;
+    pia_sq e2 = 0;
+    uint32_t i, k;
+    for (i = 0; i < s->m->num_verts; i++) {
+        pia_sq d2;
+        if (!pia_in_set(s, i, set)) continue;
+        for (k = 3u * i; k < 3u * i + 3u; k++) {
+            s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
+            s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
+        }
+        d2 = pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
+        if (d2 > e2) e2 = d2;
+    }
+    s->lv_true = 0;
+    s->half += halves;
+    err = pia_root(e2, &s->ovf);
+    if (!s->ovf && err <= s->o->tol) {
+        pia_limit(s);
+        err = pia_max_err(s, set);
+        return s->ovf || err <= s->o->tol ? PIA_DONE : PIA_SAFEGUARD;
+    }
+    if (err < *best) {
+        *best = err;
+        *stall = 0;
+    } else if (++*stall >= PIA_STALL) {
+        if (!s->lv_true) pia_limit(s);
+        return PIA_DONE;
+    }
+    if (err > start && subd_sub(err, start, &s->ovf) > start) return PIA_SAFEGUARD;
+    return PIA_GO_ON;
+}
+
 /* CG on the set (all other vertices fixed) until its max error is <= tol, it stalls, the
  * budget is spent, or a safeguard hands the phase to the paper's step. Needs an exact lv on
  * entry and leaves one. */
@@ -594,9 +630,8 @@ static void pia_phase_cg(pia_state *s, uint32_t set)
     const subd_real *P = m->pos;
     subd_real err, start, best, alpha, beta;
     pia_dotv rho, rho_new, sigma;
-    pia_sq e2;
     uint32_t i, k, stall = 0;
-    int ok = 1;
+    int ok = 1, st;
 
     err = pia_max_err(s, set);
     if (s->ovf || err <= s->o->tol) return;
@@ -611,37 +646,10 @@ static void pia_phase_cg(pia_state *s, uint32_t set)
         sigma = pia_dot(s, set, s->p, 0, s->q, 0);
         alpha = pia_ratio(rho, sigma, &ok);
         if (!ok || s->ovf) break;
-        /* V += alpha p, L V += alpha q, and the new max error, in one pass */
-        e2 = 0;
-        for (i = 0; i < m->num_verts; i++) {
-            pia_sq d2;
-            if (!pia_in_set(s, i, set)) continue;
-            for (k = 3u * i; k < 3u * i + 3u; k++) {
-                s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
-                s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
-            }
-            d2 = pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
-            if (d2 > e2) e2 = d2;
-        }
-        s->lv_true = 0;
-        s->half += 2u;
-        err = pia_root(e2, &s->ovf);
-        if (!s->ovf && err <= s->o->tol) { /* residual replacement: the true error decides */
-            pia_limit(s);
-            err = pia_max_err(s, set);
-            if (s->ovf || err <= s->o->tol) return;
-            ok = 0; /* the recurrence drifted: at the rounding floor, polish with the paper's step */
-            break;
-        }
-        if (err < best) {
-            best = err;
-            stall = 0;
-        } else if (++stall >= PIA_STALL) {
-            if (!s->lv_true) pia_limit(s);
-            return; /* stalled: not converged */
-        }
-        if (err > start && subd_sub(err, start, &s->ovf) > start) {
-            ok = 0; /* the error grew beyond twice its start */
+        st = pia_cg_advance(s, set, alpha, 2u, start, &best, &stall);
+        if (st == PIA_DONE) return;
+        if (st == PIA_SAFEGUARD) {
+            ok = 0;
             break;
         }
         rho_new = pia_dot(s, set, P, s->lv, P, s->lv);
@@ -777,9 +785,8 @@ static void pia_phase_sgs(pia_state *s, uint32_t set)
     const subd_real *P = m->pos;
     subd_real err, start, best, alpha, beta, sum[3], d;
     pia_dotv rho, rho_new, sigma;
-    pia_sq e2;
     uint32_t i, k, stall = 0;
-    int ok = 1;
+    int ok = 1, st;
 
     err = pia_max_err(s, set);
     if (s->ovf || err <= s->o->tol || !pia_budget(s, 3u)) return;
@@ -807,35 +814,9 @@ static void pia_phase_sgs(pia_state *s, uint32_t set)
         sigma = pia_dot(s, set, s->p, 0, s->q, 0);
         alpha = pia_ratio(rho, sigma, &ok);
         if (!ok || s->ovf) break;
-        e2 = 0;
-        for (i = 0; i < m->num_verts; i++) {
-            pia_sq d2;
-            if (!pia_in_set(s, i, set)) continue;
-            for (k = 3u * i; k < 3u * i + 3u; k++) {
-                s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
-                s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
-            }
-            d2 = pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
-            if (d2 > e2) e2 = d2;
-        }
-        s->lv_true = 0;
-        s->half += 3u;
-        err = pia_root(e2, &s->ovf);
-        if (!s->ovf && err <= s->o->tol) { /* residual replacement: the true error decides */
-            pia_limit(s);
-            err = pia_max_err(s, set);
-            if (s->ovf || err <= s->o->tol) return;
-            ok = 0;
-            break;
-        }
-        if (err < best) {
-            best = err;
-            stall = 0;
-        } else if (++stall >= PIA_STALL) {
-            if (!s->lv_true) pia_limit(s);
-            return;
-        }
-        if (err > start && subd_sub(err, start, &s->ovf) > start) {
+        st = pia_cg_advance(s, set, alpha, 3u, start, &best, &stall);
+        if (st == PIA_DONE) return;
+        if (st == PIA_SAFEGUARD) {
             ok = 0;
             break;
         }

@@ -82,18 +82,12 @@ subd_real subd_sr48_mid(subd_real a, subd_real b, uint32_t *ovf)
 
 static int sr48_check(const subd_mesh *in, const subd_sr48_opts *o, subd_diag *d)
 {
-    uint32_t f;
     if (!in || !o || o->steps > SUBD_SR48_MAX_STEPS || (o->flags & ~SUBD_SR48_NO_SMOOTH) != 0u)
         return subd_fail(d, SUBD_ERR_PARAM);
     if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->face_start || !in->corner_vert ||
                           !in->pos))
         return subd_fail(d, SUBD_ERR_PARAM);
-    for (f = 0; f < in->num_faces; f++) {
-        if (subd_face_size(in, f) != 3u) {
-            d->face = f;
-            return subd_fail(d, SUBD_ERR_FACE_SIZE);
-        }
-    }
+    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
     if (in->num_faces == 0) return subd_fail(d, SUBD_ERR_EMPTY);
     return SUBD_OK;
 }

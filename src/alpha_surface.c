@@ -290,26 +290,6 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
     out->line_start[0] = 0;
 }
 
-/* Moves mesh *m (arrays contiguous from m->pos, `bytes` long) down to dst. */
-static void move_mesh(subd_mesh *m, uint8_t *dst, uint32_t bytes)
-{
-    uint8_t *src = (uint8_t *)m->pos;
-    uint32_t i, delta = (uint32_t)(src - dst);
-    for (i = 0; i < bytes; i++) dst[i] = src[i];
-#define MOVE(p) (m->p = (void *)((uint8_t *)m->p - delta))
-    MOVE(pos);
-    MOVE(face_start);
-    MOVE(corner_vert);
-    MOVE(corner_face);
-    MOVE(twin);
-    MOVE(vert_out);
-    MOVE(vert_tag);
-    MOVE(edge_tag);
-    MOVE(line_start);
-    MOVE(line_vert);
-#undef MOVE
-}
-
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag)
 {
@@ -369,7 +349,7 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
         if (t > 0u) {
             /* drop the previous mesh: move this one down to where it started */
             subd_arena_rewind(arena, mark);
-            move_mesh(&cur, arena->base + mark, arrays_bytes(&c));
+            subd_mesh_move_down(&cur, arena->base + mark, arrays_bytes(&c));
             subd_arena_alloc(arena, arrays_bytes(&c));
         }
         prev = cur;

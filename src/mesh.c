@@ -43,6 +43,25 @@ int subd_require_triangles(const subd_mesh *m, subd_diag *d)
     return SUBD_OK;
 }
 
+void subd_mesh_move_down(subd_mesh *m, uint8_t *dst, uint32_t bytes)
+{
+    uint8_t *src = (uint8_t *)m->pos;
+    uint32_t i, delta = (uint32_t)(src - dst);
+    for (i = 0; i < bytes; i++) dst[i] = src[i]; /* ascending: safe for dst <= src */
+#define MOVE(p) (m->p = (void *)((uint8_t *)(void *)m->p - delta))
+    MOVE(pos);
+    MOVE(face_start);
+    MOVE(corner_vert);
+    MOVE(corner_face);
+    MOVE(twin);
+    MOVE(vert_out);
+    MOVE(vert_tag);
+    MOVE(edge_tag);
+    MOVE(line_start);
+    MOVE(line_vert);
+#undef MOVE
+}
+
 /* The one layout: with a == NULL it only counts bytes; otherwise it allocates the same
  * arrays in the same order, so plan and allocation cannot drift apart. */
 static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32_t *bytes)

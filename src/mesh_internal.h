@@ -44,4 +44,9 @@ int subd_fail(subd_diag *d, int status);
 /* SUBD_OK when every face of m is a triangle; else SUBD_ERR_FACE_SIZE with d->face (when
  * d != NULL) set to the first other face. For the schemes defined on triangles only. */
 int subd_require_triangles(const subd_mesh *m, subd_diag *d);
+
+/* Moves mesh *m, whose arrays lie contiguous from m->pos (`bytes` long, as the mesh layout
+ * allocates them), down to dst <= m->pos, and rebases its pointers. Used to drop working
+ * memory from below a finished output. */
+void subd_mesh_move_down(subd_mesh *m, uint8_t *dst, uint32_t bytes);
 #endif

@@ -671,27 +671,6 @@ static subd_real ex_default_radius(const ex_ctx *c)
 
 /* ------------------------------------------------------------------------------------ */
 
-/* Moves the mesh arrays [from, end) of the arena down to `to` and rebases the pointers. */
-static void ex_move_down(subd_arena *a, subd_mesh *m, uint32_t from, uint32_t to, uint32_t end)
-{
-    uint8_t *dst = a->base + to;
-    const uint8_t *src = a->base + from;
-    uint32_t i, delta = from - to;
-    for (i = 0; i < end - from; i++) dst[i] = src[i];
-#define EX_REBASE(f) m->f = (void *)((uint8_t *)(void *)m->f - delta)
-    EX_REBASE(pos);
-    EX_REBASE(face_start);
-    EX_REBASE(corner_vert);
-    EX_REBASE(corner_face);
-    EX_REBASE(twin);
-    EX_REBASE(vert_out);
-    EX_REBASE(vert_tag);
-    EX_REBASE(edge_tag);
-    EX_REBASE(line_start);
-    EX_REBASE(line_vert);
-#undef EX_REBASE
-}
-
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag)
 {
@@ -775,7 +754,7 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     /* give the map and the marks back: the mesh arrays move down to mark0 */
     subd_arena_rewind(a, arr1);
     if (arr0 != mark0) {
-        ex_move_down(a, &m, arr0, mark0, arr1);
+        subd_mesh_move_down(&m, a->base + mark0, arr1 - arr0); /* m.pos is at arr0 */
         subd_arena_rewind(a, mark0 + (arr1 - arr0));
     }
     if ((st = subd_mesh_finish(a, &m, d)) != SUBD_OK) {

@@ -35,6 +35,17 @@ int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const ch
     return 1;
 }
 
+int h_check_ok(int status, const subd_diag *d, const char *file, int line, const char *expr)
+{
+    if (!h_check_eq_i(status, SUBD_OK, file, line, expr)) {
+        h_str("    bytes_needed ");
+        h_u32(d->bytes_needed);
+        h_nl();
+        return 0;
+    }
+    return 1;
+}
+
 uint32_t h_fnv(uint32_t h, const void *data, uint32_t n)
 {
     const uint8_t *p = (const uint8_t *)data;

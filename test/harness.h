@@ -33,6 +33,10 @@ int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const ch
 #define CHECK(c) h_check((c) ? 1 : 0, __FILE__, __LINE__, #c)
 #define CHECK_EQ(got, want) h_check_eq_i((int64_t)(got), (int64_t)(want), __FILE__, __LINE__, #got " == " #want)
 
+/* A library call's status must be SUBD_OK; on failure also prints diag.bytes_needed. */
+int h_check_ok(int status, const subd_diag *d, const char *file, int line, const char *expr);
+#define CHECK_OK(st, d) h_check_ok((st), (d), __FILE__, __LINE__, #st " == SUBD_OK")
+
 /* Output hashes: FNV-1a 32-bit. Every test that builds output prints `HASH name value`
  * lines; the Makefile compares those lines between host and QEMU for each arithmetic. */
 uint32_t h_fnv(uint32_t h, const void *data, uint32_t n);

@@ -134,13 +134,7 @@ static int run(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_
 {
     subd_diag d;
     int st = subd_quasi48(a, in, o, out, &d);
-    if (!CHECK_EQ(st, SUBD_OK)) {
-        h_str("    bytes_needed ");
-        h_u32(d.bytes_needed);
-        h_nl();
-        return 0;
-    }
-    return 1;
+    return CHECK_OK(st, &d);
 }
 
 /* One step, checked against its input by brute force:

@@ -123,13 +123,7 @@ static int sr48(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, sub
 {
     subd_diag d;
     int st = subd_sr48_build(a, in, o, h, &d);
-    if (!CHECK_EQ(st, SUBD_OK)) {
-        h_str("    bytes_needed ");
-        h_u32(d.bytes_needed);
-        h_nl();
-        return 0;
-    }
-    return 1;
+    return CHECK_OK(st, &d);
 }
 
 /* The triangles of level k as a validated mesh (vertices [0, level_verts[k])). */

@@ -658,13 +658,7 @@ static int extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd
     if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan), SUBD_OK)) return 0;
     subd_arena_reset_peak(a);
     st = subd_sr48_extract(a, h, ad, out, rep, &d);
-    if (!CHECK_EQ(st, SUBD_OK)) {
-        h_str("    bytes_needed ");
-        h_u32(d.bytes_needed);
-        h_nl();
-        return 0;
-    }
-    return 1;
+    return CHECK_OK(st, &d);
 }
 
 /* Extract into a fresh arena, run every property check, return the face count. */

@@ -1,6 +1,7 @@
 /* Firmware demo: what a device build of tinysubd does, inside one static arena: read a mesh
- * from OBJ text, then Loop subdivision (3 levels), Loop limit positions and normals, and
- * quasi 4-8 subdivision of it, printing counts, arena bytes and instruction counts. Run by `make demo` under QEMU on
+ * from OBJ text, then Loop subdivision (3 levels), Loop limit positions and normals, quasi
+ * 4-8 subdivision, and a semi-regular 4-8 hierarchy with a chordal-tolerance extraction of
+ * it, printing counts, arena bytes and instruction counts. Run by `make demo` under QEMU on
  * both targets (Cortex-M4F float32, Cortex-M3 Q16.16). */
 #include "subd.h"
 #include "print.h"
@@ -124,6 +125,64 @@ static int demo_quasi48(subd_arena *arena, const subd_mesh *in)
     return SUBD_OK;
 }
 
+/* Semi-regular 4-8: the hierarchy (exact plan from the cluster count), then the coarsest
+ * conforming mesh within a chordal tolerance of its finest level, as a CNC controller
+ * would ask for it, above the hierarchy in the same arena. */
+static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
+{
+    subd_sr48_opts o;
+    subd_sr48 h;
+    subd_adapt ad;
+    subd_adapt_report rep;
+    subd_mesh out;
+    subd_diag d;
+    uint32_t plan, clusters, t0, t1, mark = start_measure(arena), mark2, insns;
+    uint32_t ovf = 0;
+    int st;
+    o.steps = 4;
+    o.flags = 0;
+    print_str("semi-regular 4-8 hierarchy, 4 binary steps:\n");
+    if ((st = subd_sr48_count_clusters(arena, in, &clusters, &d)) != SUBD_OK) return report_error(st, &d);
+    if ((st = subd_sr48_plan(in, &o, clusters, &plan)) != SUBD_OK) return st;
+    kv("arena bytes planned", plan);
+    if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
+    t0 = port_cycles();
+    st = subd_sr48_build(arena, in, &o, &h, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    kv("arena bytes used (peak)", arena->peak - mark);
+    kv("triangles (all levels)", h.num_tris);
+    kv("instructions per triangle", insns / h.num_tris);
+
+    ad.mode = SUBD_ADAPT_CHORD;
+    ad.max_level = 4;
+    ad.eps = subd_div(subd_from_int(1, &ovf), subd_from_int(20, &ovf), &ovf); /* 0.05 units */
+    ad.point[0] = ad.point[1] = ad.point[2] = 0;
+    ad.normal[0] = ad.normal[1] = ad.normal[2] = 0;
+    ad.radius = 0;
+    ad.axis = 0;
+    ad.fn = 0;
+    ad.ctx = 0;
+    if (ovf) return SUBD_ERR_RANGE;
+    print_str("chordal extraction, eps 0.05, up to level 4:\n");
+    mark2 = start_measure(arena);
+    if ((st = subd_sr48_extract_plan(&h, &ad, &plan)) != SUBD_OK) return st;
+    kv("arena bytes planned (bound)", plan);
+    t0 = port_cycles();
+    st = subd_sr48_extract(arena, &h, &ad, &out, &rep, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    kv("arena bytes used (peak)", arena->peak - mark2);
+    kv("output faces", rep.faces);
+    kv("faces of uniform level 4", rep.uniform_faces);
+    kv("forced splits", rep.forced_splits);
+    kv("instructions per output face", insns / rep.faces);
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}
+
 static int demo_icosahedron(subd_arena *arena)
 {
     subd_mesh m;
@@ -156,6 +215,7 @@ static int demo_icosahedron(subd_arena *arena)
     if ((st = demo_loop(arena, &m)) != SUBD_OK) return st;
     if ((st = demo_limit(arena, &m)) != SUBD_OK) return st;
     if ((st = demo_quasi48(arena, &m)) != SUBD_OK) return st;
+    if ((st = demo_semireg48(arena, &m)) != SUBD_OK) return st;
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }

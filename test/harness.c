@@ -46,6 +46,13 @@ int h_check_ok(int status, const subd_diag *d, const char *file, int line, const
     return 1;
 }
 
+int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
+{
+    subd_diag d;
+    int st = subd_mesh_build(a, fl, m, &d);
+    return CHECK_OK(st, &d);
+}
+
 uint32_t h_fnv(uint32_t h, const void *data, uint32_t n)
 {
     const uint8_t *p = (const uint8_t *)data;

@@ -51,6 +51,12 @@ static inline subd_real h_int(int32_t i)
 }
 static inline int h_same(subd_real a, subd_real b) { return subd_real_bits(a) == subd_real_bits(b); }
 
+/* A subd_real as a double, for the tests' independent reference computations. */
+static inline double h_dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.0 : (double)x; }
+
+/* subd_mesh_build of a face list that must succeed (a failed CHECK otherwise). */
+int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m);
+
 /* Deterministic PRNG (xorshift32) for property tests: no rand(), no clocks. */
 uint32_t h_rand(uint32_t *state);
 

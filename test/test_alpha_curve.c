@@ -20,7 +20,6 @@ static uint32_t g_state = 12345u;
 #define WORK_BYTES (4u * 1024u * 1024u)
 static uint8_t work_buf[WORK_BYTES] __attribute__((aligned(8)));
 #define WORK_BUF work_buf
-static double dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.0 : (double)x; }
 static void note(const char *what, double v)
 {
     char buf[160];
@@ -110,7 +109,7 @@ static void alpha_kernel_values(void)
                     double x = 2.0 * 3.14159265358979323846 * num / 16.0 / (double)(2u << n);
                     double want = (k == SUBD_ALPHA_POLY) ? 1.0 - x * x / 2.0 : cosh(x), e;
                     if (!CHECK_EQ(subd_alpha_kernel_value(k, num, 16, n, SUBD_REAL_ONE, &f), SUBD_OK)) return;
-                    e = fabs(dbl(f) - want) / (SUBD_FIXED ? 1.0 / 65536.0 : fabs(want));
+                    e = fabs(h_dbl(f) - want) / (SUBD_FIXED ? 1.0 / 65536.0 : fabs(want));
                     if (e > maxe) maxe = e;
                 }
             }
@@ -308,7 +307,7 @@ static void polygon_stats(const subd_alpha_curve_out *c, double r, double *mid_e
     uint32_t i, n = c->num_points;
     for (i = 0; i < n; i++) {
         const subd_real *p = c->pos + 3u * i, *q = c->pos + 3u * ((i + 1u) % n);
-        double x = dbl(p[0]), y = dbl(p[1]), u = dbl(q[0]), v = dbl(q[1]);
+        double x = h_dbl(p[0]), y = h_dbl(p[1]), u = h_dbl(q[0]), v = h_dbl(q[1]);
         double e = hypot(u - x, v - y), rr = hypot(x, y), mr = hypot((x + u) / 2, (y + v) / 2);
         if (e < emin) emin = e;
         if (e > emax) emax = e;
@@ -389,7 +388,7 @@ static void alpha_ccurve_circle(void)
             opts(&o, 3, lev, SUBD_ALPHA_COS, 1, (int32_t)nn);
             subd_arena_init(&a, WORK_BUF, WORK_BYTES);
             if (!run(&a, g_in, nn, 1, &o, &out)) return;
-            rr = hypot(dbl(out.pos[0]), dbl(out.pos[1]));
+            rr = hypot(h_dbl(out.pos[0]), h_dbl(out.pos[1]));
             if (fabs(rr - want) / CIRCLE_R > worst) worst = fabs(rr - want) / CIRCLE_R;
         }
         CHECK(worst <= tol_reg);
@@ -455,9 +454,9 @@ static void alpha_ccurve_affine(void)
                 for (i = 0; i < x.num_points; i++) {
                     uint32_t r;
                     for (r = 0; r < 3u; r++) {
-                        double want = dbl(A[r][3]), got = dbl(y.pos[3u * i + r]);
+                        double want = h_dbl(A[r][3]), got = h_dbl(y.pos[3u * i + r]);
                         uint32_t c;
-                        for (c = 0; c < 3u; c++) want += dbl(A[r][c]) * dbl(x.pos[3u * i + c]);
+                        for (c = 0; c < 3u; c++) want += h_dbl(A[r][c]) * h_dbl(x.pos[3u * i + c]);
                         if (fabs(got - want) > worst) worst = fabs(got - want);
                     }
                 }
@@ -498,13 +497,13 @@ static void alpha_open_arc(void)
         {
             double worst_mid = 0, worst_pt = 0;
             for (i = 0; i < out.num_points; i++) {
-                double x = dbl(out.pos[3u * i]), y = dbl(out.pos[3u * i + 1u]);
+                double x = h_dbl(out.pos[3u * i]), y = h_dbl(out.pos[3u * i + 1u]);
                 double e = fabs(hypot(x, y) - CIRCLE_R) / CIRCLE_R;
                 if (e > worst_pt) worst_pt = e;
                 /* the first and last stored segments are halves of the virtual end edges
                  * (whose midpoints are the end points themselves) */
                 if (i >= 1u && i + 2u < out.num_points) {
-                    double u = dbl(out.pos[3u * i + 3u]), v = dbl(out.pos[3u * i + 4u]);
+                    double u = h_dbl(out.pos[3u * i + 3u]), v = h_dbl(out.pos[3u * i + 4u]);
                     e = fabs(hypot((x + u) / 2, (y + v) / 2) - CIRCLE_R) / CIRCLE_R;
                     if (e > worst_mid) worst_mid = e;
                 }
@@ -548,8 +547,8 @@ static void alpha_cosh_hyperbola(void)
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     if (!run(&a, g_in, m, 0, &o, &out)) return;
     for (i = 1; i + 2u < out.num_points; i++) {
-        double x = (dbl(out.pos[3u * i]) + dbl(out.pos[3u * i + 3u])) / 2;
-        double y = (dbl(out.pos[3u * i + 1u]) + dbl(out.pos[3u * i + 4u])) / 2;
+        double x = (h_dbl(out.pos[3u * i]) + h_dbl(out.pos[3u * i + 3u])) / 2;
+        double y = (h_dbl(out.pos[3u * i + 1u]) + h_dbl(out.pos[3u * i + 4u])) / 2;
         if (fabs(x * x - y * y - 1.0) > worst) worst = fabs(x * x - y * y - 1.0);
     }
     CHECK(worst <= (SUBD_FIXED ? 8.0 / 65536.0 : 2e-6));

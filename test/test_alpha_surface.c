@@ -24,7 +24,6 @@ static uint32_t g_state = 4242u;
 #define WORK_BYTES (8u * 1024u * 1024u)
 static uint8_t work_buf[WORK_BYTES] __attribute__((aligned(8)));
 #define WORK_BUF work_buf
-static double dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.0 : (double)x; }
 #else
 #define WORK_BYTES H_ARENA_BYTES
 #define WORK_BUF h_arena_buf
@@ -100,12 +99,6 @@ static subd_face_list one_face(uint32_t n)
     return fl;
 }
 
-static int build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
-{
-    subd_diag d;
-    return CHECK_EQ(subd_mesh_build(a, fl, m, &d), SUBD_OK);
-}
-
 static int read_obj(subd_arena *a, const char *name, subd_mesh *m)
 {
     const corpus_file *f = corpus_find(name);
@@ -132,7 +125,7 @@ static void alpha_ds_quad_weights(void)
     uint32_t i, c, ovf = 0, ok = 1;
     for (i = 0; i < 12u; i++) g_pos[i] = h_int((int32_t)(h_rand(&g_state) % 41u) - 20);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
     if (!ds(&a, &in, &o, &out)) return;
     CHECK_EQ(out.num_verts, 4);
@@ -177,21 +170,21 @@ static void alpha_ds_tensor(void)
             uint32_t fc, i, c;
             sopts(&o, 1, kern, 1, 7, SUBD_REAL_FRAC(s8[si], 8));
             subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-            if (!build(&a, &fl, &in) || !ds(&a, &in, &o, &out)) return;
+            if (!h_build(&a, &fl, &in) || !ds(&a, &in, &o, &out)) return;
             if (!CHECK_EQ(subd_alpha_kernel_value(kern, 1, 7, 0, o.stiffness, &fr), SUBD_OK)) return;
-            f = dbl(fr);
+            f = h_dbl(fr);
             w0 = (1 + 2 * f) / (2 + 2 * f);
             w1 = 1 / (2 + 2 * f);
             for (fc = 0; fc < in.num_faces; fc++)
                 for (i = 0; i < 4u; i++)
                     for (c = 0; c < 3u; c++) {
                         uint32_t b = in.face_start[fc];
-                        double p = dbl(in.pos[3u * in.corner_vert[b + i] + c]);
-                        double pn = dbl(in.pos[3u * in.corner_vert[b + (i + 1u) % 4u] + c]);
-                        double po = dbl(in.pos[3u * in.corner_vert[b + (i + 2u) % 4u] + c]);
-                        double pp = dbl(in.pos[3u * in.corner_vert[b + (i + 3u) % 4u] + c]);
+                        double p = h_dbl(in.pos[3u * in.corner_vert[b + i] + c]);
+                        double pn = h_dbl(in.pos[3u * in.corner_vert[b + (i + 1u) % 4u] + c]);
+                        double po = h_dbl(in.pos[3u * in.corner_vert[b + (i + 2u) % 4u] + c]);
+                        double pp = h_dbl(in.pos[3u * in.corner_vert[b + (i + 3u) % 4u] + c]);
                         double want = w0 * w0 * p + w0 * w1 * (pn + pp) + w1 * w1 * po;
-                        double e = fabs(dbl(out.pos[3u * (b + i) + c]) - want);
+                        double e = fabs(h_dbl(out.pos[3u * (b + i) + c]) - want);
                         if (e > worst) worst = e;
                     }
         }
@@ -241,9 +234,9 @@ static void alpha_ds_eigen(void)
                 fl = one_face(n);
                 sopts(&o, 1, kern, 1, 5, si == 3u ? SUBD_REAL_ONE : SUBD_REAL_FRAC(s8[si], 8));
                 subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-                if (!build(&a, &fl, &in) || !ds(&a, &in, &o, &out)) return;
+                if (!h_build(&a, &fl, &in) || !ds(&a, &in, &o, &out)) return;
                 if (!CHECK_EQ(subd_alpha_kernel_value(kern, 1, 5, 0, o.stiffness, &fr), SUBD_OK)) return;
-                f = dbl(fr);
+                f = h_dbl(fr);
                 {
                     /* lemma 1 on the circulant row, summed term by term (real part) */
                     double re = 0, im = 0, q = 1.0 / ((1 + f) * (1 + f)), printed;
@@ -262,14 +255,14 @@ static void alpha_ds_eigen(void)
                         CHECK(fabs(lam - (j == 1u ? 1.0 : j == 3u ? 0.25 : 0.5)) < 1e-12);
                 }
                 for (i = 0; i < n; i++) {
-                    double x = dbl(in.pos[3u * i]), y = dbl(in.pos[3u * i + 1u]);
-                    double u = dbl(out.pos[3u * i]), v = dbl(out.pos[3u * i + 1u]);
+                    double x = h_dbl(in.pos[3u * i]), y = h_dbl(in.pos[3u * i + 1u]);
+                    double u = h_dbl(out.pos[3u * i]), v = h_dbl(out.pos[3u * i + 1u]);
                     num += u * x + v * y;
                     den += x * x + y * y;
                 }
                 for (i = 0; i < n; i++) {
-                    double e = hypot(dbl(out.pos[3u * i]) - num / den * dbl(in.pos[3u * i]),
-                                     dbl(out.pos[3u * i + 1u]) - num / den * dbl(in.pos[3u * i + 1u]));
+                    double e = hypot(h_dbl(out.pos[3u * i]) - num / den * h_dbl(in.pos[3u * i]),
+                                     h_dbl(out.pos[3u * i + 1u]) - num / den * h_dbl(in.pos[3u * i + 1u]));
                     if (e > res) res = e;
                 }
                 /* the measured eigenvalue and the paper's lambda_j agree; the output is
@@ -367,7 +360,7 @@ static void alpha_ds_levels(void)
                 if (!read_obj(&a, files[fi], &in)) return;
             } else {
                 subd_face_list fl = quad_grid(4, 3);
-                if (!build(&a, &fl, &in)) return;
+                if (!h_build(&a, &fl, &in)) return;
             }
             /* closed form */
             v = in.num_verts;
@@ -446,7 +439,7 @@ static void alpha_ds_plan_exact(void)
     subd_face_list fl = quad_grid(3, 2);
     uint32_t lev;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (!read_obj(&a, "test/data/cube_quad.obj", &cube) || !build(&a, &fl, &grid)) return;
+    if (!read_obj(&a, "test/data/cube_quad.obj", &cube) || !h_build(&a, &fl, &grid)) return;
     for (lev = 1; lev <= 2u; lev++) {
         sopts(&o, lev, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
         check_plan_exhaustive(&cube, &o);
@@ -464,7 +457,7 @@ static void alpha_ds_errors(void)
     uint32_t plan, i, m0;
     static int32_t tags[4];
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     m0 = subd_arena_mark(&a);
     sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
     CHECK_EQ(subd_alpha_surface(0, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
@@ -527,7 +520,7 @@ static void alpha_ds_errors(void)
         fan.num_faces = n;
         fan.index = g_idx;
         subd_arena_rewind(&a, m0);
-        if (!build(&a, &fan, &in)) return;
+        if (!h_build(&a, &fan, &in)) return;
         sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
         CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_FACE_SIZE);
         CHECK_EQ(d.vertex, 0);
@@ -538,7 +531,7 @@ static void alpha_ds_errors(void)
         pts.num_verts = 3;
         pts.pos = g_pos;
         subd_arena_rewind(&a, m0);
-        if (!build(&a, &pts, &in)) return;
+        if (!h_build(&a, &pts, &in)) return;
         CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_EMPTY);
     }
 }
@@ -591,7 +584,7 @@ static void alpha_s3_bspline(void)
     g_state = 555u; /* host-only tests draw random numbers too */
     fl = quad_grid(4, 5);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
     o.order = 3;
     if (!ds(&a, &in, &o, &out)) return;
@@ -653,7 +646,7 @@ static void alpha_s3_boundary(void)
     g_state = 99u;
     fl = quad_grid(3, 4);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     sopts(&o, 1, SUBD_ALPHA_COS, 1, 7, SUBD_REAL_FRAC(5, 4));
     if (!ds(&a, &in, &o, &out2)) return;
     o.order = 3;
@@ -708,7 +701,7 @@ static void alpha_sk_levels(void)
                     subd_face_list fl = fi == 2u ? quad_grid(3, 2) : one_face(5);
                     if (fi == 3u)
                         for (h = 0; h < 15u; h++) g_pos[h] = h_int((int32_t)((h * 7u) % 11u));
-                    if (!build(&a, &fl, &in)) return;
+                    if (!h_build(&a, &fl, &in)) return;
                 }
                 v = in.num_verts;
                 f = in.num_faces;
@@ -773,7 +766,7 @@ static void alpha_sk_plan_exact(void)
     subd_face_list fl = quad_grid(2, 2);
     uint32_t order;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (!read_obj(&a, "test/data/cube_quad.obj", &cube) || !build(&a, &fl, &grid)) return;
+    if (!read_obj(&a, "test/data/cube_quad.obj", &cube) || !h_build(&a, &fl, &grid)) return;
     for (order = 3; order <= 4u; order++) {
         sopts(&o, 1, SUBD_ALPHA_POLY, 1, 3, SUBD_REAL_ONE);
         o.order = order;

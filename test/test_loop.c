@@ -144,12 +144,6 @@ static subd_face_list gen_tri_isolated(uint32_t extra)
 /* Output corner holding the new vertex of input half-edge h: corner 1 of child h%3 of face h/3. */
 static uint32_t mid_corner(uint32_t h) { return 12u * (h / 3u) + 3u * (h % 3u) + 1u; }
 
-static int build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
-{
-    subd_diag d;
-    return CHECK_EQ(subd_mesh_build(a, fl, m, &d), SUBD_OK);
-}
-
 static int load(subd_arena *a, const char *name, subd_mesh *m)
 {
     const corpus_file *f = corpus_find(name);
@@ -177,7 +171,7 @@ static int make_mesh(int id, subd_arena *a, subd_mesh *m)
     case M_GRID8: return load(a, "test/data/grid_tri_8x8.obj", m);
     default: return load(a, "test/data/torus_tri.obj", m);
     }
-    return build(a, &fl, m);
+    return h_build(a, &fl, m);
 }
 
 static int run(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loop_boundary b, uint32_t flags,
@@ -260,7 +254,7 @@ static void check_level(subd_arena *a, const subd_mesh *in, const subd_mesh *out
     fl.pos = out->pos;
     fl.num_faces = out->num_faces;
     fl.index = out->corner_vert;
-    if (!build(a, &fl, &b)) return;
+    if (!h_build(a, &fl, &b)) return;
     CHECK_EQ(b.num_edges, ne);
     CHECK_EQ(b.num_boundary_edges, nb);
     CHECK_EQ(b.num_boundary_loops, in->num_boundary_loops);
@@ -402,7 +396,7 @@ static void loop_beta(void)
         uint32_t i;
         for (i = 0; i < 3u * (n + 2u); i++) g_pos[i] = rint_(i < 3u ? 0 : (i < 6u ? 7 : 1));
         subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-        if (!build(&a, &fl, &in) || !run(&a, &in, 1, PAPER, 0, &out)) return;
+        if (!h_build(&a, &fl, &in) || !run(&a, &in, 1, PAPER, 0, &out)) return;
         got = out.pos[0];
         CHECK(same_real(out.pos[1], got) && same_real(out.pos[2], got));
         /* exact where cos(2 pi / n) is: 3 * 3/16, 4 * 31/256, 6 * 1/16 */
@@ -445,9 +439,9 @@ static void loop_planar_linear(void)
             uint32_t v, f, i, ovf = 0, notmid = 0;
             subd_arena_init(&a, WORK_BUF, WORK_BYTES);
             fl = gen_grid(5, 6, 0);
-            if (!build(&a, &fl, &flat)) return;
+            if (!h_build(&a, &fl, &flat)) return;
             fl = gen_grid(5, 6, GRID_LINEAR);
-            if (!build(&a, &fl, &lin)) return;
+            if (!h_build(&a, &fl, &lin)) return;
             /* z = 0 stays exactly 0 */
             if (!run(&a, &flat, level, (subd_loop_boundary)rule, 0, &out)) return;
             for (v = 0; v < out.num_verts; v++)
@@ -590,7 +584,7 @@ static void loop_crease(void)
         subd_arena_init(&a, WORK_BUF, WORK_BYTES);
         g_state = 4242u;
         fl = gen_grid(GR, GC, GRID_RANDZ);
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         for (j = 0; j < GC; j++) crease(&in, gv(3, j), gv(3, j + 1u));
         in.vert_tag[gv(1, 6)] |= SUBD_VTAG_CORNER;
         if (!run(&a, &in, 1, (subd_loop_boundary)rule, SUBD_LOOP_ADJACENCY, &out)) return;
@@ -626,7 +620,7 @@ static void loop_crease(void)
         subd_arena_init(&a, WORK_BUF, WORK_BYTES);
         g_state = 777u;
         fl = gen_grid(GR, GC, GRID_RANDZ);
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         for (j = 0; j < 4u; j++) crease(&in, gv(2, j), gv(2, j + 1u));
         crease(&in, gv(2, 4), gv(3, 4));
         crease(&in, gv(3, 4), gv(4, 4));
@@ -653,7 +647,7 @@ static void loop_isolated(void)
     subd_face_list fl = gen_tri_isolated(5);
     uint32_t v;
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     CHECK_EQ(in.num_isolated, 5);
     if (!run(&a, &in, 2, PAPER, SUBD_LOOP_ADJACENCY, &out)) return;
     check_level(&a, &in, &out, 2);
@@ -664,7 +658,7 @@ static void loop_isolated(void)
     }
     /* points only: every vertex copied, no faces */
     fl.num_faces = 0;
-    if (!build(&a, &fl, &in) || !run(&a, &in, 3, BSPLINE, SUBD_LOOP_ADJACENCY, &out)) return;
+    if (!h_build(&a, &fl, &in) || !run(&a, &in, 3, BSPLINE, SUBD_LOOP_ADJACENCY, &out)) return;
     CHECK_EQ(out.num_verts, 8);
     CHECK_EQ(out.num_faces, 0);
     CHECK_EQ(out.num_isolated, 8);
@@ -730,7 +724,7 @@ static void loop_plan_exact(void)
     subd_arena_init(&a, WORK_BUF, WORK_BYTES / 2u);
     g_state = 5u;
     fl = gen_fan(6, 1);
-    if (!build(&a, &fl, &fan)) return;
+    if (!h_build(&a, &fl, &fan)) return;
     tag_random(&fan, 3, 11);
     for (levels = 1; levels <= 3u; levels++) {
         check_plan_exhaustive(&fan, levels, 0);
@@ -738,7 +732,7 @@ static void loop_plan_exact(void)
     }
     /* isolated vertices dominate: level L-2 is larger than the output arrays */
     fl = gen_tri_isolated(1000);
-    if (!build(&a, &fl, &iso)) return;
+    if (!h_build(&a, &fl, &iso)) return;
     check_plan_exhaustive(&iso, 3, 0);
     check_plan_exhaustive(&iso, 4, SUBD_LOOP_ADJACENCY);
 }
@@ -794,7 +788,7 @@ static void loop_memory(void)
     {
         subd_face_list fl = gen_tri_isolated(1000);
         uint32_t v1, c1, v2, c2;
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         o.levels = 3;
         if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) return;
         v1 = 1003u + 3u, c1 = 12u, v2 = v1 + 9u, c2 = 48u;
@@ -834,7 +828,7 @@ static void loop_bytes_macro(void)
     /* isolated vertices dominate: the max() branches of the macro */
     {
         subd_face_list fl = gen_tri_isolated(1000);
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         for (levels = 1; levels <= 4u; levels++) {
             o.levels = levels;
             o.flags = 0;
@@ -896,7 +890,7 @@ static void loop_errors(void)
     g_idx[3] = 1; g_idx[4] = 2; g_idx[5] = 5; g_idx[6] = 4;
     fl.num_faces = 2;
     fl.face_size = sizes;
-    if (!build(&a, &fl, &mixed)) return;
+    if (!h_build(&a, &fl, &mixed)) return;
     o.levels = 1;
     o.boundary = PAPER;
     o.flags = 0;
@@ -932,7 +926,7 @@ static void loop_errors(void)
     /* sizes beyond 32 bits: 2450 faces * 4^8 * 3 corners * (4 + 4 + 1) bytes > 2^32 */
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     fl = gen_grid(35, 35, 0);
-    if (!build(&a, &fl, &big)) return;
+    if (!h_build(&a, &fl, &big)) return;
     o.levels = 8;
     if (SUBD_MAX_LEVELS >= 8) expect_error(&big, &o, SUBD_ERR_TOO_BIG);
 }
@@ -957,7 +951,7 @@ static void loop_range(void)
             g_pos[3u * i + 1u] = SUBD_REAL_MIN;
             g_pos[3u * i + 2u] = (subd_real)h_rand(&g_state);
         }
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         tag_random(&in, 3, 5);
         if (!run(&a, &in, 3, (subd_loop_boundary)rule, 0, &out)) return;
         for (i = 0; i < out.num_verts; i++) {
@@ -967,7 +961,7 @@ static void loop_range(void)
         /* the apex of valence 7: (1 - 7b) M + b M + ... + b M rounds above FLT_MAX */
         fl = gen_bipyramid(7, 0);
         for (i = 0; i < 3u * fl.num_verts; i++) g_pos[i] = SUBD_REAL_MAX;
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         {
             subd_loop_opts o;
             o.levels = 1;

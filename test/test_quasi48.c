@@ -124,12 +124,6 @@ static void grid_list(subd_face_list *fl, uint32_t n)
     fl->line_size = fl->line_index = 0;
 }
 
-static int build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
-{
-    subd_diag d;
-    return CHECK_EQ(subd_mesh_build(a, fl, m, &d), SUBD_OK);
-}
-
 static int run(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out)
 {
     subd_diag d;
@@ -237,7 +231,7 @@ static void q48_regular_polygons(void)
             uint32_t want = n == 6 ? 6u : 2u * n;
             subd_arena_init(&a, g_big, BIG_BYTES);
             fan_list(&fl, n, 0, 0);
-            if (!build(&a, &fl, &in)) return;
+            if (!h_build(&a, &fl, &in)) return;
             CHECK_EQ(stepwise(&a, &in, 1, flags, &m1), want);
             CHECK_EQ(stepwise(&a, &in, 4, flags, &m4), want);
             if (run(&a, &in, &o, &once)) {
@@ -298,7 +292,7 @@ static void q48_polygons_9_12(void)
         subd_mesh in, m, cur;
         subd_arena_init(&a, g_big, BIG_BYTES);
         fan_list(&fl, 12, 0, 0);
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         cur = in;
         for (s = 1; s <= 4; s++) {
             CHECK_EQ(stepwise(&a, &cur, 1, flags, &m), 12);
@@ -311,7 +305,7 @@ static void q48_polygons_9_12(void)
         }
         h_hash(pass ? "q48_12gon_smooth" : "q48_12gon_refine", h_mesh_hash(&m));
         fan_list(&fl, 9, 0, 0);
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         CHECK_EQ(stepwise(&a, &in, 1, flags, &m), 10);
         CHECK(!rotation_invariant(&m, 1, 9)); /* odd n: the decomposition is not radial */
         stepwise(&a, &in, 4, flags, &m);
@@ -333,7 +327,7 @@ static void q48_warped_hexagon(void)
     uint32_t f, ovf = 0;
     subd_arena_init(&a, g_big, BIG_BYTES);
     fan_list(&fl, 6, 0, R(-1, 3));
-    if (!build(&a, &fl, &in) || !run(&a, &in, &o, &m)) return;
+    if (!h_build(&a, &fl, &in) || !run(&a, &in, &o, &m)) return;
     check_step(&in, &m, 1);
     /* vertex 7 = first split = midpoint of centre (0) and rim vertex 1 (1, 0) */
     {
@@ -383,7 +377,7 @@ static void q48_perturbed_hexagon(void)
             uint32_t v1, v4;
             subd_arena_init(&a, g_big + amp * (BIG_BYTES / 2u), BIG_BYTES / 2u);
             fan_list(&fl, 6, rad[amp], 0);
-            if (!build(&a, &fl, &in) || !run(&a, &in, &o1, &m1[amp]) || !run(&a, &in, &o, &m4[amp])) return;
+            if (!h_build(&a, &fl, &in) || !run(&a, &in, &o1, &m1[amp]) || !run(&a, &in, &o, &m4[amp])) return;
             v1 = subd_vertex_valence(&m1[amp], 0);
             v4 = subd_vertex_valence(&m4[amp], 0);
             hist[amp][0][v1 < 16u ? v1 : 15u]++;
@@ -439,7 +433,7 @@ static void q48_torus(void)
         subd_mesh in, cur, m;
         subd_arena_init(&a, g_big, BIG_BYTES);
         torus_list(&fl, dims[t][0], dims[t][1]);
-        if (!build(&a, &fl, &in)) return;
+        if (!h_build(&a, &fl, &in)) return;
         cur = in;
         for (s = 1; s <= 4; s++) {
             stepwise(&a, &cur, 1, 0, &m);
@@ -497,7 +491,7 @@ static void q48_smoothing(void)
 #endif
     subd_arena_init(&a, g_big, BIG_BYTES);
     grid_list(&fl, 4);
-    if (!build(&a, &fl, &in) || !run(&a, &in, &o, &m)) return;
+    if (!h_build(&a, &fl, &in) || !run(&a, &in, &o, &m)) return;
     for (v = 0; v < m.num_verts; v++) CHECK(m.pos[3 * v + 2] == 0);
     /* boundary fixed: old boundary vertices exactly in place, new ones on the boundary square */
     for (v = 0; v < m.num_verts; v++) {
@@ -517,7 +511,7 @@ static void q48_smoothing(void)
             pos2[3 * v + (k + 1) % 3] = subd_add(subd_add(in.pos[3 * v + k], in.pos[3 * v + k], &ovf), t[(k + 1) % 3], &ovf);
     }
     fl.pos = pos2;
-    if (!build(&a, &fl, &in2) || !run(&a, &in2, &o, &m2)) return;
+    if (!h_build(&a, &fl, &in2) || !run(&a, &in2, &o, &m2)) return;
     CHECK_EQ(m2.num_faces, m.num_faces);
     for (c = 0; c < m.num_corners && c < m2.num_corners; c++) CHECK(m.corner_vert[c] == m2.corner_vert[c]);
     for (v = 0; v < m.num_verts && v < m2.num_verts; v++) {
@@ -544,7 +538,7 @@ static void q48_tags_and_boundary(void)
     /* torus with a fixed vertex, a corner and a crease loop (a meridian j = 0 ring) */
     subd_arena_init(&a, g_big, BIG_BYTES);
     torus_list(&fl, 8, 4);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     in.vert_tag[5] |= SUBD_VTAG_FIXED;
     in.vert_tag[9] |= SUBD_VTAG_CORNER;
     for (h = 0; h < in.num_corners; h++) {
@@ -593,7 +587,7 @@ static void q48_tags_and_boundary(void)
         o1.boundary = SUBD_Q48_BOUNDARY_SMOOTH;
         grid_list(&fl, 3);
         /* the first step splits the diagonals only; the second splits boundary edges */
-        if (!build(&a, &fl, &g0) || !run(&a, &g0, &o1, &g) || !run(&a, &g, &o1, &g1)) return;
+        if (!h_build(&a, &fl, &g0) || !run(&a, &g0, &o1, &g) || !run(&a, &g, &o1, &g1)) return;
         check_step(&g, &g1, 0);
         for (v = 0; v < g.num_verts; v++) {
             uint32_t ring[16], n, j, k, cnt = 0;
@@ -684,10 +678,10 @@ static void q48_plan_exhaustive(void)
     fl.num_verts = 3; fl.pos = tpos; fl.num_faces = 1; fl.face_size = 0; fl.index = tri_idx;
     fl.num_lines = 0; fl.line_size = fl.line_index = 0;
     subd_arena_init(&a, g_big, BIG_BYTES);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     plan_case(&in, &o, 1);
     fan_list(&fl, 5, 0, 0);
-    if (!build(&a, &fl, &in2)) return;
+    if (!h_build(&a, &fl, &in2)) return;
     o = opts(3, 0);
     plan_case(&in2, &o, 0);
     o = opts(2, SUBD_Q48_NO_SMOOTH);
@@ -707,7 +701,7 @@ static void q48_errors(void)
     uint32_t plan, i, ovf = 0;
     subd_arena_init(&a, g_big, BIG_BYTES);
     fan_list(&fl, 4, 0, 0);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     o.steps = 0;
     CHECK_EQ(subd_quasi48_plan(&in, &o, &plan), SUBD_ERR_PARAM);
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
@@ -728,7 +722,7 @@ static void q48_errors(void)
     for (i = 0; i < 12; i++) qpos[i] = 0;
     qpos[3] = qpos[6] = qpos[7] = qpos[10] = subd_from_int(1, &ovf);
     fl.num_verts = 4; fl.pos = qpos; fl.num_faces = 1; fl.face_size = quad_size; fl.index = quad_idx;
-    if (!build(&a, &fl, &q)) return;
+    if (!h_build(&a, &fl, &q)) return;
     CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_FACE_SIZE);
     CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_FACE_SIZE);
     CHECK_EQ(d.face, 0);
@@ -745,7 +739,7 @@ static void q48_len_bits(void)
     subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
     subd_arena_init(&a, g_big, BIG_BYTES);
     fan_list(&fl, 6, 0, 0);
-    if (!build(&a, &fl, &in)) return;
+    if (!h_build(&a, &fl, &in)) return;
     o.len_bits = SUBD_Q48_LEN_BITS_EXACT;
     if (!run(&a, &in, &o, &m)) return;
     h_str("    hexagon, exact length comparison: centre valence ");

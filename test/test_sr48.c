@@ -37,12 +37,6 @@ static subd_face_list tri_list(uint32_t nv, const subd_real *pos, uint32_t nf, c
     return fl;
 }
 
-static int build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
-{
-    subd_diag d;
-    return CHECK_EQ(subd_mesh_build(a, fl, m, &d), SUBD_OK);
-}
-
 /* An embedded OBJ as a triangle mesh (polygons fanned from their first corner). */
 static int load_tri(subd_arena *a, const char *name, subd_mesh *m)
 {
@@ -69,7 +63,7 @@ static int load_tri(subd_arena *a, const char *name, subd_mesh *m)
         }
     }
     fl = tri_list(raw.num_verts, g_pos, k / 3u, g_idx);
-    return build(a, &fl, m);
+    return h_build(a, &fl, m);
 }
 
 /* Planar n x n grid of unit squares, every square (a, b, c, d) cut by the same diagonal
@@ -131,7 +125,7 @@ static int level_mesh(subd_arena *a, const subd_sr48 *h, uint32_t k, subd_mesh *
 {
     subd_face_list fl = tri_list(h->level_verts[k], h->pos, h->level_tri[k + 1u] - h->level_tri[k],
                                  h->tri_vert + 3u * h->level_tri[k]);
-    return build(a, &fl, m);
+    return h_build(a, &fl, m);
 }
 
 static uint32_t fnv_u32(uint32_t hs, uint32_t v)
@@ -153,15 +147,6 @@ static uint32_t sr48_hash(const subd_sr48 *h)
     for (i = 0; i < 3u * h->num_tris; i++) hs = fnv_u32(hs, h->tri_vert[i]);
     for (i = 0; i < h->num_tris; i++) hs = fnv_u32(hs, h->tri_base_nb[i]);
     return hs;
-}
-
-static inline double dbl(subd_real x)
-{
-#if SUBD_FIXED
-    return (double)x / 65536.0;
-#else
-    return (double)x;
-#endif
 }
 
 static void info_counts(const char *name, const subd_sr48 *h)
@@ -259,7 +244,7 @@ static void sr48_preprocess_valences(void)
     }
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     fl = torus_list(12, 6);
-    if (build(&a, &fl, &in)) valence_table_mesh("torus 12x6", &a, &in, 1);
+    if (h_build(&a, &fl, &in)) valence_table_mesh("torus 12x6", &a, &in, 1);
     h_str("    pre-processing valence transitions on these meshes (old -> new x count):");
     h_nl();
     for (b = 0; b < 2; b++) {
@@ -416,16 +401,16 @@ static void sr48_levels(void)
     if (load_tri(&a, "test/data/spot_control_mesh.obj", &in)) levels_case("spot_control_mesh (fanned)", &in, &a, 0, 0);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     fl = torus_list(6, 3);
-    if (build(&a, &fl, &in)) levels_case("torus 6x3", &in, &a, 3, 0);
+    if (h_build(&a, &fl, &in)) levels_case("torus 6x3", &in, &a, 3, 0);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     fl = grid_list(2, 0);
-    if (build(&a, &fl, &in)) levels_case("grid 2x2", &in, &a, 4, 0);
+    if (h_build(&a, &fl, &in)) levels_case("grid 2x2", &in, &a, 4, 0);
     for (i = 0; i < 9; i++) tpos[i] = 0;
     tpos[3] = SUBD_REAL_ONE;
     tpos[7] = SUBD_REAL_ONE;
     fl = tri_list(3, tpos, 1, one_idx);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (build(&a, &fl, &in)) levels_case("one triangle", &in, &a, 6, 0);
+    if (h_build(&a, &fl, &in)) levels_case("one triangle", &in, &a, 6, 0);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -460,7 +445,7 @@ static uint32_t zp_init(uint32_t n, const subd_real *z)
             }
             g_zp[0][i][0] = 0.5 * x2;
             g_zp[0][i][1] = 0.5 * y2;
-            g_zp[0][i][2] = 0.5 * (dbl(z[v0]) + dbl(z[v1]));
+            g_zp[0][i][2] = 0.5 * (h_dbl(z[v0]) + h_dbl(z[v1]));
         }
     return N;
 }
@@ -501,7 +486,7 @@ static void zp_case(uint32_t n, uint32_t L, const subd_real *z)
     uint32_t N, l, src = 0, i, v, matched = 0, missing = 0, zbad = 0, nzp = 0;
     double worst = 0;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (!build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
+    if (!h_build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
     CHECK_EQ(h.num_clusters, n * n);
     CHECK_EQ(h.num_isolated, 0);
     N = zp_init(n, z);
@@ -515,10 +500,10 @@ static void zp_case(uint32_t n, uint32_t L, const subd_real *z)
         if (!g_zv[src][i]) continue;
         nzp++;
         for (v = h.level_verts[2u * L - 1u]; v < h.level_verts[2u * L]; v++) {
-            double dx = dbl(h.pos[3u * v]) - p[0], dy = dbl(h.pos[3u * v + 1u]) - p[1], dz;
+            double dx = h_dbl(h.pos[3u * v]) - p[0], dy = h_dbl(h.pos[3u * v + 1u]) - p[1], dz;
             if (dabs(dx) > 1e-9 || dabs(dy) > 1e-9) continue;
             found++;
-            dz = dabs(dbl(h.pos[3u * v + 2u]) - p[2]);
+            dz = dabs(h_dbl(h.pos[3u * v + 2u]) - p[2]);
             if (dz > worst) worst = dz;
             if (dz > 1e-9) zbad++;
         }
@@ -584,7 +569,7 @@ static void sr48_boundary_chaikin(void)
             else { x0 = 0; y0 = n - j; x1 = 0; y1 = n - j - 1u; }
             g_ch[0][np][0] = 0.5 * (x0 + x1);
             g_ch[0][np][1] = 0.5 * (y0 + y1);
-            g_ch[0][np][2] = 0.5 * (dbl(z[y0 * (n + 1u) + x0]) + dbl(z[y1 * (n + 1u) + x1]));
+            g_ch[0][np][2] = 0.5 * (h_dbl(z[y0 * (n + 1u) + x0]) + h_dbl(z[y1 * (n + 1u) + x1]));
             np++;
         }
         for (l = 0; l < L; l++) {
@@ -600,14 +585,14 @@ static void sr48_boundary_chaikin(void)
             src ^= 1u;
         }
         subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-        if (!build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
+        if (!h_build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
         for (i = 0; i < np; i++) {
             const double *p = g_ch[src][i];
             uint32_t found = 0;
             for (v = h.level_verts[2u * L - 1u]; v < h.level_verts[2u * L]; v++) {
-                if (dabs(dbl(h.pos[3u * v]) - p[0]) > 1e-9 || dabs(dbl(h.pos[3u * v + 1u]) - p[1]) > 1e-9) continue;
+                if (dabs(h_dbl(h.pos[3u * v]) - p[0]) > 1e-9 || dabs(h_dbl(h.pos[3u * v + 1u]) - p[1]) > 1e-9) continue;
                 found++;
-                if (dabs(dbl(h.pos[3u * v + 2u]) - p[2]) > 1e-9) zbad++;
+                if (dabs(h_dbl(h.pos[3u * v + 2u]) - p[2]) > 1e-9) zbad++;
             }
             if (found != 1u) missing++;
         }
@@ -643,11 +628,11 @@ static void sr48_planes(void)
     /* z = 0 stays exactly 0 */
     fl = grid_list(4, 0);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (!build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
+    if (!h_build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
     for (v = 0; v < h.num_verts; v++) {
         if (h.pos[3u * v + 2u] != 0) bad++;
-        if (dbl(h.pos[3u * v]) < 0 || dbl(h.pos[3u * v]) > 4.0 || dbl(h.pos[3u * v + 1u]) < 0 ||
-            dbl(h.pos[3u * v + 1u]) > 4.0)
+        if (h_dbl(h.pos[3u * v]) < 0 || h_dbl(h.pos[3u * v]) > 4.0 || h_dbl(h.pos[3u * v + 1u]) < 0 ||
+            h_dbl(h.pos[3u * v + 1u]) > 4.0)
             bad++;
     }
     CHECK_EQ(bad, 0);
@@ -659,10 +644,10 @@ static void sr48_planes(void)
                         SUBD_REAL_ONE, &ovf);
     fl = grid_list(3, z);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (!build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
+    if (!h_build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
     for (v = 0; v < h.num_verts; v++) {
-        double want = 0.5 * dbl(h.pos[3u * v]) - 0.25 * dbl(h.pos[3u * v + 1u]) + 1.0;
-        double dz = dabs(dbl(h.pos[3u * v + 2u]) - want);
+        double want = 0.5 * h_dbl(h.pos[3u * v]) - 0.25 * h_dbl(h.pos[3u * v + 1u]) + 1.0;
+        double dz = dabs(h_dbl(h.pos[3u * v + 2u]) - want);
         if (dz > worst) worst = dz;
     }
     CHECK(worst <= tol);
@@ -691,7 +676,7 @@ static void sr48_affine(void)
     if (!load_tri(&a, "test/data/icosahedron.obj", &in) || !CHECK_EQ(in.num_verts, 12)) return;
     for (v = 0; v < 36; v++) p0[v] = subd_add(in.pos[v], h_int(4), &ovf);
     fl = tri_list(12, p0, in.num_faces, in.corner_vert);
-    if (!build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
+    if (!h_build(&a, &fl, &in) || !sr48(&a, &in, &o, &h)) return;
     nv = h.num_verts;
     for (pass = 0; pass < 3; pass++) {
         uint32_t mark = subd_arena_mark(&a), bad = 0, i;
@@ -713,20 +698,20 @@ static void sr48_affine(void)
             for (i = 0; i < 3; i++) g_pos[3 * v + i] = q[i];
         }
         fl = tri_list(12, g_pos, in.num_faces, in.corner_vert);
-        if (!build(&a, &fl, &in2) || !sr48(&a, &in2, &o, &h2)) return;
+        if (!h_build(&a, &fl, &in2) || !sr48(&a, &in2, &o, &h2)) return;
         if (!CHECK_EQ(h2.num_tris, h.num_tris) || !CHECK_EQ(h2.num_verts, nv)) return;
         for (i = 0; i < 3u * h.num_tris; i++) if (h.tri_vert[i] != h2.tri_vert[i]) bad++;
         CHECK_EQ(bad, 0);
         for (v = 0; v < nv; v++) {
             double q[3];
-            q[0] = -dbl(h.pos[3 * v + 1]);
-            q[1] = dbl(h.pos[3 * v + 2]);
-            q[2] = dbl(h.pos[3 * v]);
+            q[0] = -h_dbl(h.pos[3 * v + 1]);
+            q[1] = h_dbl(h.pos[3 * v + 2]);
+            q[2] = h_dbl(h.pos[3 * v]);
             for (i = 0; i < 3; i++) {
                 double d;
-                if (pass >= 1) q[i] += dbl(t[i]);
+                if (pass >= 1) q[i] += h_dbl(t[i]);
                 if (pass == 2) q[i] *= 2.0;
-                d = dabs(q[i] - dbl(h2.pos[3 * v + i]));
+                d = dabs(q[i] - h_dbl(h2.pos[3 * v + i]));
                 if (d > worst) worst = d;
             }
         }
@@ -752,9 +737,9 @@ static int on_face(const subd_mesh *in, const subd_real *p, double tol)
         const subd_real *C = in->pos + 3u * in->corner_vert[3u * f + 2u];
         double u[3], w[3], r[3], nn[3], len2, dist, uu = 0, uw = 0, ww = 0, ru = 0, rw = 0, det, s, t;
         for (k = 0; k < 3u; k++) {
-            u[k] = dbl(B[k]) - dbl(A[k]);
-            w[k] = dbl(C[k]) - dbl(A[k]);
-            r[k] = dbl(p[k]) - dbl(A[k]);
+            u[k] = h_dbl(B[k]) - h_dbl(A[k]);
+            w[k] = h_dbl(C[k]) - h_dbl(A[k]);
+            r[k] = h_dbl(p[k]) - h_dbl(A[k]);
         }
         nn[0] = u[1] * w[2] - u[2] * w[1];
         nn[1] = u[2] * w[0] - u[0] * w[2];
@@ -793,14 +778,14 @@ static void sr48_refine_only(void)
     for (t = 0; t < h.level_tri[1]; t += 2u) {
         const uint32_t *c = h.tri_vert + 3u * t;
         for (q = 0; q < 3u; q++)
-            if (dabs(dbl(h.pos[3u * c[0] + q]) - 0.5 * (dbl(h.pos[3u * c[2] + q]) + dbl(h.pos[3u * c[4] + q]))) > tol)
+            if (dabs(h_dbl(h.pos[3u * c[0] + q]) - 0.5 * (h_dbl(h.pos[3u * c[2] + q]) + h_dbl(h.pos[3u * c[4] + q]))) > tol)
                 bad++;
     }
     for (k = 0; k < h.steps; k++)
         for (t = h.level_tri[k]; t < h.level_tri[k + 1u]; t++) {
             const uint32_t *p = h.tri_vert + 3u * t, m = h.tri_vert[3u * (h.level_tri[k + 1u] + 2u * (t - h.level_tri[k]))];
             for (q = 0; q < 3u; q++)
-                if (dabs(dbl(h.pos[3u * m + q]) - 0.5 * (dbl(h.pos[3u * p[1] + q]) + dbl(h.pos[3u * p[2] + q]))) > tol)
+                if (dabs(h_dbl(h.pos[3u * m + q]) - 0.5 * (h_dbl(h.pos[3u * p[1] + q]) + h_dbl(h.pos[3u * p[2] + q]))) > tol)
                     bad++;
         }
     CHECK_EQ(bad, 0);
@@ -881,9 +866,9 @@ static void sr48_plan_exhaustive(void)
     tpos[7] = SUBD_REAL_ONE;
     subd_arena_init(&a, g_in_buf, IN_BYTES);
     fl = tri_list(3, tpos, 1, one_idx);
-    if (!build(&a, &fl, &tri)) return;
+    if (!h_build(&a, &fl, &tri)) return;
     fl = grid_list(1, 0);
-    if (!build(&a, &fl, &sq)) return;
+    if (!h_build(&a, &fl, &sq)) return;
     if (!load_tri(&a, "test/data/hexfan.obj", &fan)) return;
     o = sopts(0, 0);
     plan_case(&tri, &o, 1);
@@ -953,7 +938,7 @@ static void sr48_errors(void)
     g_pos[0] = g_pos[1] = g_pos[2] = 0;
     g_pos[3] = g_pos[4] = g_pos[5] = 0;
     g_pos[6] = g_pos[7] = g_pos[8] = 0;
-    if (build(&a, &fl, &pts)) {
+    if (h_build(&a, &fl, &pts)) {
         CHECK_EQ(subd_sr48_plan(&pts, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan), SUBD_ERR_EMPTY);
         CHECK_EQ(subd_sr48_build(&a, &pts, &o, &h, &d), SUBD_ERR_EMPTY);
     }
@@ -967,7 +952,7 @@ static void sr48_errors(void)
         g_pos[3] = 3e38f; g_pos[4] = 1; g_pos[5] = 0;
         g_pos[6] = 3e38f; g_pos[7] = 0; g_pos[8] = 1;
         fl = tri_list(3, g_pos, 1, idx);
-        if (build(&a, &fl, &big)) {
+        if (h_build(&a, &fl, &big)) {
             uint32_t used = a.used;
             CHECK_EQ(subd_sr48_build(&a, &big, &o, &h, &d), SUBD_ERR_RANGE);
             CHECK_EQ(a.used, used);

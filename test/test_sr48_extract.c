@@ -43,7 +43,6 @@ static int g_have_par; /* g_par holds the parameters of g_h's vertices (hand-bui
 /* ------------------------------------------------------------------------------------ */
 /* Scalars                                                                                 */
 
-static double dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.0 : (double)x; }
 static subd_real real_of(double x)
 {
 #if SUBD_FIXED
@@ -68,7 +67,7 @@ static void sub3(const double *a, const double *b, double *r)
 }
 static void hpos(const subd_sr48 *h, uint32_t v, double *p)
 {
-    p[0] = dbl(h->pos[3 * v]); p[1] = dbl(h->pos[3 * v + 1]); p[2] = dbl(h->pos[3 * v + 2]);
+    p[0] = h_dbl(h->pos[3 * v]); p[1] = h_dbl(h->pos[3 * v + 1]); p[2] = h_dbl(h->pos[3 * v + 2]);
 }
 
 static double seg_dist(const double *p, const double *a, const double *b)
@@ -303,7 +302,7 @@ static double margin(const tctx *c, uint32_t t, uint32_t k)
     switch (ad->mode) {
     case SUBD_ADAPT_UNIFORM: return 1;
     case SUBD_ADAPT_POINT:
-        q[0] = dbl(ad->point[0]); q[1] = dbl(ad->point[1]); q[2] = dbl(ad->point[2]);
+        q[0] = h_dbl(ad->point[0]); q[1] = h_dbl(ad->point[1]); q[2] = h_dbl(ad->point[2]);
         return (double)(c->max - k) * c->radius - tri_dist(q, p[0], p[1], p[2]);
     case SUBD_ADAPT_RAMP: {
         double x = p[0][ad->axis], lo = c->lo[ad->axis], hi = c->hi[ad->axis];
@@ -312,9 +311,9 @@ static double margin(const tctx *c, uint32_t t, uint32_t k)
     }
     case SUBD_ADAPT_PLANE:
         for (i = 0; i < 3; i++) {
-            double s = (p[i][0] - dbl(ad->point[0])) * dbl(ad->normal[0]) +
-                       (p[i][1] - dbl(ad->point[1])) * dbl(ad->normal[1]) +
-                       (p[i][2] - dbl(ad->point[2])) * dbl(ad->normal[2]);
+            double s = (p[i][0] - h_dbl(ad->point[0])) * h_dbl(ad->normal[0]) +
+                       (p[i][1] - h_dbl(ad->point[1])) * h_dbl(ad->normal[1]) +
+                       (p[i][2] - h_dbl(ad->point[2])) * h_dbl(ad->normal[2]);
             if (s > m) m = s;
         }
         return m + 1e-12;
@@ -324,7 +323,7 @@ static double margin(const tctx *c, uint32_t t, uint32_t k)
         return (double)lv - (double)k - 0.5;
     }
     case SUBD_ADAPT_CHORD:
-        return chord_dev(c, t, k, p[0], p[1], p[2]) - dbl(ad->eps);
+        return chord_dev(c, t, k, p[0], p[1], p[2]) - h_dbl(ad->eps);
     }
     return 0;
 }
@@ -347,7 +346,7 @@ static void tctx_init(tctx *c, const subd_sr48 *h, const subd_adapt *ad)
     }
     sub3(c->hi, c->lo, p);
     dg = dsqrt(dot3(p, p));
-    c->radius = dbl(ad->radius);
+    c->radius = h_dbl(ad->radius);
     if (ad->mode == SUBD_ADAPT_POINT && ad->radius == 0 && c->max > 0) c->radius = dg / (2.0 * c->max);
 }
 
@@ -619,9 +618,9 @@ static double chord_worst(const subd_sr48 *h, const subd_adapt *ad, const subd_m
             for (f = 0; f < out->num_faces; f++) {
                 double a[3], b[3], c[3], d;
                 const uint32_t *cv = out->corner_vert + 3 * f;
-                a[0] = dbl(out->pos[3 * cv[0]]); a[1] = dbl(out->pos[3 * cv[0] + 1]); a[2] = dbl(out->pos[3 * cv[0] + 2]);
-                b[0] = dbl(out->pos[3 * cv[1]]); b[1] = dbl(out->pos[3 * cv[1] + 1]); b[2] = dbl(out->pos[3 * cv[1] + 2]);
-                c[0] = dbl(out->pos[3 * cv[2]]); c[1] = dbl(out->pos[3 * cv[2] + 1]); c[2] = dbl(out->pos[3 * cv[2] + 2]);
+                a[0] = h_dbl(out->pos[3 * cv[0]]); a[1] = h_dbl(out->pos[3 * cv[0] + 1]); a[2] = h_dbl(out->pos[3 * cv[0] + 2]);
+                b[0] = h_dbl(out->pos[3 * cv[1]]); b[1] = h_dbl(out->pos[3 * cv[1] + 1]); b[2] = h_dbl(out->pos[3 * cv[1] + 2]);
+                c[0] = h_dbl(out->pos[3 * cv[2]]); c[1] = h_dbl(out->pos[3 * cv[2] + 1]); c[2] = h_dbl(out->pos[3 * cv[2] + 2]);
                 d = tri_dist(p, a, b, c);
                 if (d < best) best = d;
             }
@@ -678,7 +677,7 @@ static uint32_t run_checked(const subd_sr48 *h, const subd_adapt *ad, double tol
     if (ad->mode == SUBD_ADAPT_CHORD) {
         double w = chord_worst(h, ad, &out);
         double slack = SUBD_FIXED ? 4.0 / 65536.0 : 1e-6;
-        if (!CHECK(w <= dbl(ad->eps) + slack)) {
+        if (!CHECK(w <= h_dbl(ad->eps) + slack)) {
             h_str("    chordal error above eps\n");
         }
     }

@@ -724,38 +724,52 @@ static void section_sr48(void)
             run_free(&c);
         }
     }
-    printf("\n   extraction from a 6-step hierarchy (subd_sr48_extract; faces/s = output triangles per second)\n");
+    printf("\n   extraction (subd_sr48_extract) from a 6-step hierarchy, or 4 steps when hierarchy + extraction "
+           "would exceed %.1f GB;\n   max_level = the hierarchy's steps; faces/s = output triangles per second\n",
+           PLAN_LIMIT / 1e9);
     printf("%-24s %-22s %10s %10s %9s %10s %10s %13s %5s\n", "mesh", "mode", "faces", "uniform", "forced",
            "ms/call", "Mfaces/s", "arena bytes", "runs");
     for (i = 0; i < g_nmesh; i++) {
         bmesh *m = &g_mesh[i];
         run_ctx c;
-        uint32_t build, k;
+        uint32_t build, k, steps, ok = 0;
         char what[40];
         double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
         if (!m->tri) continue;
-        memset(&c, 0, sizeof c);
-        c.kind = RUN_SR48;
-        c.in = &m->hm.mesh;
-        c.so.steps = 6;
-        if (run_plan(&c) != SUBD_OK) continue;
-        build = c.plan;
-        if ((double)build > PLAN_LIMIT || run_first(&c, m->name, NULL) != SUBD_OK) { run_free(&c); continue; }
-        /* one arena for the hierarchy and the largest extraction above it */
-        {
-            uint32_t xmax = 0, xp, keep = c.arena.used;
-            subd_adapt ad;
-            memset(&ad, 0, sizeof ad);
-            ad.max_level = 6;
-            ad.eps = D2R(1e-4 * m->diag);
-            ad.normal[0] = D2R(1.0);
-            for (ad.mode = SUBD_ADAPT_UNIFORM; ad.mode <= SUBD_ADAPT_CHORD; ad.mode++)
-                if (ad.mode != SUBD_ADAPT_CALLBACK && subd_sr48_extract_plan(&c.h, &ad, &xp) == SUBD_OK && xp > xmax)
-                    xmax = xp;
-            run_free(&c);
-            c.plan = keep + xmax > build ? keep + xmax : build;
-            if ((double)c.plan > PLAN_LIMIT || run_first(&c, m->name, NULL) != SUBD_OK) { run_free(&c); continue; }
+        for (steps = 6; steps >= 4 && !ok; steps -= 2) {
+            memset(&c, 0, sizeof c);
+            c.kind = RUN_SR48;
+            c.in = &m->hm.mesh;
+            c.so.steps = steps;
+            if (run_plan(&c) != SUBD_OK) continue; /* e.g. SUBD_ERR_TOO_BIG: try fewer steps */
+            build = c.plan;
+            if ((double)build > PLAN_LIMIT || run_first(&c, m->name, NULL) != SUBD_OK) { run_free(&c); continue; }
+            /* one arena for the hierarchy and the largest extraction above it */
+            {
+                uint32_t xmax = 0, xp, keep = c.arena.used;
+                subd_adapt ad;
+                memset(&ad, 0, sizeof ad);
+                ad.max_level = steps;
+                ad.eps = D2R(1e-4 * m->diag);
+                ad.normal[0] = D2R(1.0);
+                for (ad.mode = SUBD_ADAPT_UNIFORM; ad.mode <= SUBD_ADAPT_CHORD; ad.mode++)
+                    if (ad.mode != SUBD_ADAPT_CALLBACK && subd_sr48_extract_plan(&c.h, &ad, &xp) == SUBD_OK &&
+                        xp > xmax)
+                        xmax = xp;
+                run_free(&c);
+                c.plan = keep + xmax > build ? keep + xmax : build;
+                if ((double)keep + xmax > PLAN_LIMIT || run_first(&c, m->name, NULL) != SUBD_OK) {
+                    run_free(&c);
+                    continue;
+                }
+            }
+            ok = 1;
         }
+        if (!ok) {
+            printf("%-24s skipped (hierarchy + extraction above %.1f GB)\n", m->name, PLAN_LIMIT / 1e9);
+            continue;
+        }
+        steps = c.so.steps;
         c.xmark = subd_arena_mark(&c.arena);
         c.kind = RUN_SR48X;
         for (k = 0; k < m->hm.mesh.num_verts; k++) {
@@ -767,9 +781,10 @@ static void section_sr48(void)
             }
         }
         memset(&c.ad, 0, sizeof c.ad);
-        c.ad.max_level = 6;
+        c.ad.max_level = steps;
         c.ad.mode = SUBD_ADAPT_UNIFORM;
-        sr48_extract_row(&c, m->name, "uniform 6");
+        snprintf(what, sizeof what, "uniform %u", (unsigned)steps);
+        sr48_extract_row(&c, m->name, what);
         c.ad.mode = SUBD_ADAPT_POINT;
         for (k = 0; k < 3u; k++) c.ad.point[k] = D2R(hi[k]);
         sr48_extract_row(&c, m->name, "point (bbox corner)");

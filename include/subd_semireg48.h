@@ -198,13 +198,20 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * Q16.16: the distance is computed to about 2^-13 of the triangle's and the point's extent.
  * Output vertices are the used hierarchy vertices in increasing index order; output faces
  * are the cut's triangles by level, then by hierarchy index, as (apex, b0, b1).
- * Work: O(triangles of levels <= max_level) plus, for CHORD, a walk of each evaluated
- * triangle's subtree (stopping at the first vertex beyond eps): at most O(faces of level
- * max_level * max_level).
+ * Work: UNIFORM O(triangles of levels <= max_level). The other modes: O(triangles visited:
+ * level 0, the cut's triangles and their split ancestors, the coarser triangles forced
+ * splits reach) plus, for CHORD, a walk of each evaluated triangle's subtree (stopping at
+ * the first vertex beyond eps): at most O(faces of level max_level * max_level); plus
+ * streaming passes of 1 byte per triangle of levels < max_level (clearing the marks) and a
+ * few words per vertex of levels <= max_level (used flags, renumbering; RAMP and POINT's
+ * default radius: the bounding box).
  * Errors: SUBD_ERR_PARAM (a NULL pointer; mode out of range; max_level > h->steps; RAMP
  * axis > 2; CHORD eps not > 0; CALLBACK fn NULL; POINT radius < 0; PLANE normal zero;
  * float: a non-finite point, normal, radius or eps; a hierarchy that breaks the index rules
- * above on levels 0..max_level), SUBD_ERR_EMPTY (no level-0 triangle), SUBD_ERR_TOO_BIG,
+ * above: UNIFORM on any triangle of levels 0..max_level, the other modes on a triangle the
+ * extraction visits - each is checked before its indices are used, a damaged part the cut
+ * never reaches goes unnoticed, and an arena too small for the marks gives SUBD_ERR_NOMEM
+ * first), SUBD_ERR_EMPTY (no level-0 triangle), SUBD_ERR_TOO_BIG,
  * SUBD_ERR_NOMEM (see subd_sr48_extract_plan). rep and diag may be NULL. On failure the
  * arena is rewound and *out and *rep untouched. */
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,

@@ -18,9 +18,20 @@
  *    the ones activated by forced splits; each is evaluated against the adaptation function
  *    once and, when it asks for a split, force_split splits it. The result is the least
  *    fixpoint, so it does not depend on the processing order.
- *  - one mark byte per triangle of level < max_level: SPLIT, and WANT (the adaptation
+ *  - one mark byte per triangle of level < max_level: SPLIT, WANT (the adaptation
  *    function asked for the split), so forced_splits counts the diamonds neither of whose
- *    triangles wanted the split.
+ *    triangles wanted the split, and OK (its index rules were checked);
+ *  - the output faces are the cut's leaves, found by a stackless depth-first walk of the
+ *    split triangles from level 0 (ex_next_leaf); it yields each level's leaves in index
+ *    order, so each face is written straight to its place "by level, then by index".
+ *
+ * Cost: the adaptive modes touch only the triangles they visit (level 0, the active ones,
+ * the coarser ones forced splits reach, CHORD's walked subtrees, the output faces), and
+ * validate each the first time it is touched, before any of its indices is read (ex_ok),
+ * instead of checking the whole hierarchy up front. What remains proportional to the
+ * hierarchy is streaming: clearing the mark bytes, the per-vertex used flags and
+ * renumbering, and, for RAMP and POINT's default radius only, the bounding box. UNIFORM
+ * outputs all of level max, so it checks levels 0..max up front.
  *
  * Adaptation functions (all evaluated on the triangle's three corner positions, which are
  * the hierarchy's finest positions):
@@ -61,6 +72,7 @@
 
 #define EX_SPLIT 0x1u
 #define EX_WANT 0x2u
+#define EX_OK 0x4u /* ex_check_tri passed (lazy validation, see ex_ok) */
 
 /* A node of the chordal-deviation walk: the triangle, its level and the linear
  * interpolant of the walk's root at its three corners (apex, b0, b1). The arena reserves
@@ -97,6 +109,7 @@ typedef struct ex_ctx {
     ex_cnode *cstack;  /* CHORD walk stack, max + 1 entries                             */
     uint32_t qtail;
     uint32_t forced;
+    int bad;           /* a visited triangle broke the index rules: stop, SUBD_ERR_PARAM */
     subd_real lo[3], hi[3];
     subd_real radius;
 } ex_ctx;
@@ -165,32 +178,44 @@ static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
     return SUBD_OK;
 }
 
-/* The index rules of subd_sr48 for every triangle of levels 0..max (so the extraction can
- * never read outside the arrays or build a broken mesh from a hand-made hierarchy). */
+/* The index rules of subd_sr48 for triangle t of level k <= max: its vertices exist at
+ * level k and are distinct; its base neighbour is on the same level, points back and has
+ * the same base edge; below max, its children follow the split pattern around one new
+ * vertex of level k + 1, which is also the apex of the partner's first child. Every index
+ * it reads is bounds-checked first, so this is safe on any hierarchy that passed
+ * ex_check_params, and afterwards t's vertices, neighbour and children may be used freely
+ * (the extraction can then never read outside the arrays or build a broken mesh from a
+ * hand-made hierarchy). */
+static int ex_check_tri(const subd_sr48 *h, uint32_t t, uint32_t k, uint32_t max)
+{
+    uint32_t t0 = h->level_tri[k], t1 = h->level_tri[k + 1u], nv = h->level_verts[k];
+    const uint32_t *v = h->tri_vert + 3u * t;
+    uint32_t nb = h->tri_base_nb[t];
+    if (v[0] >= nv || v[1] >= nv || v[2] >= nv || v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
+        return SUBD_ERR_PARAM;
+    if (nb != SUBD_NONE) {
+        if (nb < t0 || nb >= t1 || nb == t || h->tri_base_nb[nb] != t) return SUBD_ERR_PARAM;
+        if (h->tri_vert[3u * nb + 1u] != v[2] || h->tri_vert[3u * nb + 2u] != v[1]) return SUBD_ERR_PARAM;
+    }
+    if (k < max) {
+        uint32_t c0 = t1 + 2u * (t - t0);
+        const uint32_t *a = h->tri_vert + 3u * c0, *b = a + 3;
+        uint32_t m = a[0];
+        if (m < nv || m >= h->level_verts[k + 1u]) return SUBD_ERR_PARAM;
+        if (a[1] != v[0] || a[2] != v[1] || b[0] != m || b[1] != v[2] || b[2] != v[0]) return SUBD_ERR_PARAM;
+        if (nb != SUBD_NONE && h->tri_vert[3u * (t1 + 2u * (nb - t0))] != m) return SUBD_ERR_PARAM;
+    }
+    return SUBD_OK;
+}
+
+/* Every triangle of levels 0..max (UNIFORM, whose output is all of level max anyway; the
+ * adaptive modes check lazily, see ex_ok). */
 static int ex_check_hierarchy(const subd_sr48 *h, uint32_t max)
 {
     uint32_t k, t;
-    for (k = 0; k <= max; k++) {
-        uint32_t t0 = h->level_tri[k], t1 = h->level_tri[k + 1u], nv = h->level_verts[k];
-        for (t = t0; t < t1; t++) {
-            const uint32_t *v = h->tri_vert + 3u * t;
-            uint32_t nb = h->tri_base_nb[t];
-            if (v[0] >= nv || v[1] >= nv || v[2] >= nv || v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
-                return SUBD_ERR_PARAM;
-            if (nb != SUBD_NONE) {
-                if (nb < t0 || nb >= t1 || nb == t || h->tri_base_nb[nb] != t) return SUBD_ERR_PARAM;
-                if (h->tri_vert[3u * nb + 1u] != v[2] || h->tri_vert[3u * nb + 2u] != v[1]) return SUBD_ERR_PARAM;
-            }
-            if (k < max) {
-                uint32_t c0 = t1 + 2u * (t - t0);
-                const uint32_t *a = h->tri_vert + 3u * c0, *b = a + 3;
-                uint32_t m = a[0];
-                if (m < nv || m >= h->level_verts[k + 1u]) return SUBD_ERR_PARAM;
-                if (a[1] != v[0] || a[2] != v[1] || b[0] != m || b[1] != v[2] || b[2] != v[0]) return SUBD_ERR_PARAM;
-                if (nb != SUBD_NONE && h->tri_vert[3u * (t1 + 2u * (nb - t0))] != m) return SUBD_ERR_PARAM;
-            }
-        }
-    }
+    for (k = 0; k <= max; k++)
+        for (t = h->level_tri[k]; t < h->level_tri[k + 1u]; t++)
+            if (ex_check_tri(h, t, k, max) != SUBD_OK) return SUBD_ERR_PARAM;
     return SUBD_OK;
 }
 
@@ -257,6 +282,23 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
     st = ex_plan(h, ad, &L, &b);
     if (st == SUBD_OK) *bytes = b;
     return st;
+}
+
+/* Lazy validation (adaptive modes): a triangle's index rules are checked the first time
+ * the extraction touches it - dequeued as active, on top of the forced-split stack, walked
+ * by CHORD, or emitted at level max - and before any of its indices is used, so the work
+ * follows the triangles visited instead of the whole hierarchy. EX_OK remembers the
+ * result for triangles below max (they have a mark byte); level-max triangles are touched
+ * once, when they are emitted. On failure c->bad is set and phase 1 stops. */
+static int ex_ok(ex_ctx *c, uint32_t t, uint32_t k)
+{
+    if (k < c->max && (c->mark[t] & EX_OK)) return 1;
+    if (ex_check_tri(c->h, t, k, c->max) != SUBD_OK) {
+        c->bad = 1;
+        return 0;
+    }
+    if (k < c->max) c->mark[t] = (uint8_t)(c->mark[t] | EX_OK);
+    return 1;
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -475,10 +517,11 @@ static int ex_beyond(const subd_real *p, const ex_lin *l, subd_real eps)
 #endif
 }
 
-/* Chordal deviation of t (level k < max) beyond eps: depth-first walk of t's subtree down
- * to level max, stopping at the first vertex that deviates. Stack: pop one node, push its
- * two children, so at most (max - k) + 1 <= max + 1 entries. */
-static int ex_chord_wants(const ex_ctx *c, uint32_t t, uint32_t k)
+/* Chordal deviation of t (level k < max, checked) beyond eps: depth-first walk of t's
+ * subtree down to level max, stopping at the first vertex that deviates. Stack: pop one
+ * node, push its two children, so at most (max - k) + 1 <= max + 1 entries. Each node is
+ * checked before its child is read (a failure sets c->bad and answers 0). */
+static int ex_chord_wants(ex_ctx *c, uint32_t t, uint32_t k)
 {
     const subd_sr48 *h = c->h;
     ex_cnode *st = c->cstack;
@@ -488,9 +531,11 @@ static int ex_chord_wants(const ex_ctx *c, uint32_t t, uint32_t k)
     for (i = 0; i < 9u; i++) st[0].l[i] = ex_lin_of(ex_pos(c, h->tri_vert[3u * t + i / 3u])[i % 3u]);
     while (sp > 0u) {
         ex_cnode nd = st[--sp];
-        uint32_t kk = nd.level, c0 = h->level_tri[kk + 1u] + 2u * (nd.tri - h->level_tri[kk]);
-        uint32_t m = h->tri_vert[3u * c0];
+        uint32_t kk = nd.level, c0, m;
         ex_lin lm[3];
+        if (!ex_ok(c, nd.tri, kk)) return 0; /* before reading its child's apex */
+        c0 = h->level_tri[kk + 1u] + 2u * (nd.tri - h->level_tri[kk]);
+        m = h->tri_vert[3u * c0];
         for (i = 0; i < 3u; i++) lm[i] = ex_lin_mid(nd.l[3u + i], nd.l[6u + i]);
         if (ex_beyond(ex_pos(c, m), lm, c->ad->eps)) return 1;
         if (kk + 1u >= c->max) continue;
@@ -512,8 +557,8 @@ static int ex_chord_wants(const ex_ctx *c, uint32_t t, uint32_t k)
     return 0;
 }
 
-/* Does triangle t of level k < max ask for a split? */
-static int ex_wants(const ex_ctx *c, uint32_t t, uint32_t k)
+/* Does triangle t of level k < max (checked) ask for a split? */
+static int ex_wants(ex_ctx *c, uint32_t t, uint32_t k)
 {
     const uint32_t *v = c->h->tri_vert + 3u * t;
     uint32_t i;
@@ -559,15 +604,18 @@ static void ex_split_one(ex_ctx *c, uint32_t t, uint32_t k)
 
 /* Splits t's diamond after the diamonds of the parents of t and of its partner. Each entry
  * pushed is the parent of the entry below it or of that entry's partner, so it is one level
- * coarser: at most max entries (levels max-1 .. 0). */
+ * coarser: at most max entries (levels max-1 .. 0). An entry is checked before its partner
+ * is read (a failure sets c->bad and stops). */
 static void ex_force_split(ex_ctx *c, uint32_t t0)
 {
     const subd_sr48 *h = c->h;
     uint32_t sp = 0;
     c->fstack[sp++] = t0;
     while (sp > 0u) {
-        uint32_t t = c->fstack[sp - 1u], k = ex_level(h, t, c->max), nb = h->tri_base_nb[t];
+        uint32_t t = c->fstack[sp - 1u], k = ex_level(h, t, c->max), nb;
         if (c->mark[t] & EX_SPLIT) { sp--; continue; }
+        if (!ex_ok(c, t, k)) return;
+        nb = h->tri_base_nb[t];
         if (k > 0u && sp <= c->max) {
             uint32_t p = ex_parent(h, t, k);
             if (!(c->mark[p] & EX_SPLIT)) { c->fstack[sp++] = p; continue; }
@@ -582,13 +630,22 @@ static void ex_force_split(ex_ctx *c, uint32_t t0)
     }
 }
 
-static void ex_mark(ex_ctx *c)
+/* The cut: marks and forced_splits; 0 when a visited triangle broke the index rules.
+ * The marks of all triangles below max are cleared first: one byte each, written in one
+ * streaming pass (the arena holds garbage, and the forced-split walk reads the marks of
+ * parents that are not known to be active, so they cannot be cleared lazily as triangles
+ * become active). Everything else follows the triangles visited: the worklist ends up
+ * holding every active triangle below max exactly once, and every split triangle is one
+ * of them, so forced_splits is counted over it. */
+static int ex_mark(ex_ctx *c)
 {
     const subd_sr48 *h = c->h;
-    uint32_t head = 0, t, n0 = h->level_tri[1];
+    uint32_t head = 0, t, i, n0 = h->level_tri[1], ntri = h->level_tri[c->max];
+    uint8_t *mark = c->mark; /* locals: stores through a byte pointer may alias anything */
     c->qtail = 0;
     c->forced = 0;
-    for (t = 0; t < c->h->level_tri[c->max]; t++) c->mark[t] = 0;
+    c->bad = 0;
+    for (t = 0; t < ntri; t++) mark[t] = 0;
     for (t = 0; t < n0; t++) c->work[c->qtail++] = t;
     /* every triangle enters the queue once, when it becomes active, so the queue never
      * holds more than the triangles of levels < max */
@@ -596,52 +653,85 @@ static void ex_mark(ex_ctx *c)
         uint32_t k;
         t = c->work[head++];
         k = ex_level(h, t, c->max);
-        if (!ex_wants(c, t, k)) continue;
+        if (!ex_ok(c, t, k)) return 0;
+        if (!ex_wants(c, t, k)) {
+            if (c->bad) return 0;
+            continue;
+        }
         c->mark[t] = (uint8_t)(c->mark[t] | EX_WANT);
         if (!(c->mark[t] & EX_SPLIT)) ex_force_split(c, t);
+        if (c->bad) return 0;
     }
-    for (t = 0; t < h->level_tri[c->max]; t++) {
-        uint32_t nb = h->tri_base_nb[t];
+    /* all of them were dequeued, hence checked */
+    for (i = 0; i < c->qtail; i++) {
+        uint32_t nb;
         uint8_t w;
+        t = c->work[i];
+        nb = h->tri_base_nb[t];
         if (!(c->mark[t] & EX_SPLIT) || (nb != SUBD_NONE && nb < t)) continue;
         w = (uint8_t)(c->mark[t] | (nb != SUBD_NONE ? c->mark[nb] : 0u));
         if (!(w & EX_WANT)) c->forced++;
     }
+    return 1;
 }
 
-static int ex_is_leaf(const ex_ctx *c, uint32_t t, uint32_t k)
-{
-    if (c->uniform) return k == c->max;
-    if (k > 0u && !(c->mark[ex_parent(c->h, t, k)] & EX_SPLIT)) return 0;
-    return k == c->max || !(c->mark[t] & EX_SPLIT);
-}
-
-/* Flags the vertices the leaves use in used[] (cleared first); returns the face count. */
-static uint32_t ex_used(const ex_ctx *c, uint32_t *used, uint32_t nvert)
+/* The cut's leaves (the output faces), one per call: the leaf after (*t, *k), or the first
+ * one when *t == SUBD_NONE; 0 after the last. UNIFORM: level max in index order. Otherwise
+ * a depth-first walk of the split triangles from the level-0 ones, children in index order;
+ * a child's index order is its parent's, so each level's leaves come in increasing index
+ * order, which is all the face order needs (by level, then index: the caller places each
+ * leaf after the earlier leaves of its level). No stack: a triangle's parent and its place
+ * among its siblings follow from its index, so the work is O(triangles of the cut and
+ * their split ancestors), not O(hierarchy). Reads the marks of active triangles only,
+ * which ex_mark checked. */
+static int ex_next_leaf(const ex_ctx *c, uint32_t *pt, uint32_t *pk)
 {
     const subd_sr48 *h = c->h;
-    uint32_t k, t, v, nf = 0, k0 = c->uniform ? c->max : 0u;
-    for (v = 0; v < nvert; v++) used[v] = 0;
-    for (k = k0; k <= c->max; k++) {
-        for (t = h->level_tri[k]; t < h->level_tri[k + 1u]; t++) {
-            if (!ex_is_leaf(c, t, k)) continue;
-            used[h->tri_vert[3u * t]] = used[h->tri_vert[3u * t + 1u]] = used[h->tri_vert[3u * t + 2u]] = 1u;
-            nf++;
-        }
+    uint32_t t = *pt, k = *pk;
+    if (c->uniform) {
+        t = t == SUBD_NONE ? h->level_tri[c->max] : t + 1u;
+        *pt = t;
+        *pk = c->max;
+        return t < h->level_tri[c->max + 1u];
     }
-    return nf;
+    if (t == SUBD_NONE) {
+        t = 0;
+        k = 0;
+    } else {
+        /* up while t is its parent's second child, then on to the next sibling or root */
+        while (k > 0u && ((t - h->level_tri[k]) & 1u)) {
+            t = ex_parent(h, t, k);
+            k--;
+        }
+        t++;
+        if (k == 0u && t >= h->level_tri[1]) return 0;
+    }
+    /* down to the first leaf under t */
+    while (k < c->max && (c->mark[t] & EX_SPLIT)) {
+        t = h->level_tri[k + 1u] + 2u * (t - h->level_tri[k]);
+        k++;
+    }
+    *pt = t;
+    *pk = k;
+    return 1;
 }
 
 static void ex_bbox(ex_ctx *c, uint32_t nvert)
 {
+    const subd_real *pos = c->h->pos;
+    subd_real lo[3], hi[3]; /* locals, so the compiler keeps them in registers */
     uint32_t v, i;
-    for (i = 0; i < 3u; i++) c->lo[i] = c->hi[i] = c->h->pos[i];
+    for (i = 0; i < 3u; i++) lo[i] = hi[i] = pos[i];
     for (v = 1; v < nvert; v++) {
-        const subd_real *p = c->h->pos + 3u * v;
+        const subd_real *p = pos + 3u * v;
         for (i = 0; i < 3u; i++) {
-            if (p[i] < c->lo[i]) c->lo[i] = p[i];
-            if (p[i] > c->hi[i]) c->hi[i] = p[i];
+            if (p[i] < lo[i]) lo[i] = p[i];
+            if (p[i] > hi[i]) hi[i] = p[i];
         }
+    }
+    for (i = 0; i < 3u; i++) {
+        c->lo[i] = lo[i];
+        c->hi[i] = hi[i];
     }
 }
 
@@ -681,14 +771,17 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     mesh_counts mc;
     subd_mesh m;
     subd_adapt_report r;
-    uint32_t bound, need, mark0, arr0, arr1, nv, nf, v, k, t, f;
-    uint32_t *vmap;
+    uint32_t next[SUBD_SR48_MAX_STEPS + 1u];
+    uint32_t bound, need, mark0, arr0, arr1, nv, nf, v, k, t, f, nvert;
+    uint32_t *vmap, *used;
     int st;
 
     subd_diag_clear(d);
     if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = ex_plan(h, ad, &L, &bound)) != SUBD_OK) return subd_fail(d, st);
-    if ((st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_fail(d, st);
+    /* UNIFORM emits all of level max: validate levels 0..max up front (the adaptive modes
+     * validate what they visit, ex_ok) */
+    if (L.uniform && (st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_fail(d, st);
     if (L.phase1 > subd_arena_free_bytes(a)) {
         d->bytes_needed = bound;
         return subd_fail(d, SUBD_ERR_NOMEM);
@@ -698,18 +791,35 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     c.max = L.max;
     c.uniform = L.uniform;
     c.forced = 0;
+    c.bad = 0;
     c.radius = ad->radius;
     mark0 = subd_arena_mark(a);
     if ((st = ex_layout_phase1(a, &L, &c, ad)) != SUBD_OK) goto fail;
 
     /* phase 1: the cut and its counts */
     if (!c.uniform) {
-        ex_bbox(&c, L.nvert);
+        /* the bounding box is a pass over all vertices of levels <= max: only when used */
+        if (ad->mode == SUBD_ADAPT_RAMP || (ad->mode == SUBD_ADAPT_POINT && c.radius == 0)) ex_bbox(&c, L.nvert);
         if (ad->mode == SUBD_ADAPT_POINT && c.radius == 0) c.radius = ex_default_radius(&c);
-        ex_mark(&c);
+        if (!ex_mark(&c)) { st = SUBD_ERR_PARAM; goto fail; }
     }
-    nf = ex_used(&c, c.work, L.nvert);
-    for (nv = 0, v = 0; v < L.nvert; v++) nv += c.work[v];
+    /* the leaves: per-level counts, and the used vertices flagged in the worklist's memory
+     * (level-max leaves are checked here, the first time they are touched) */
+    for (k = 0; k < SUBD_SR48_MAX_STEPS + 1u; k++) r.level_faces[k] = 0;
+    nvert = L.nvert;
+    used = c.work;
+    for (v = 0; v < nvert; v++) used[v] = 0;
+    nf = 0;
+    t = SUBD_NONE;
+    k = 0;
+    while (ex_next_leaf(&c, &t, &k)) {
+        const uint32_t *tv = h->tri_vert + 3u * t;
+        if (!c.uniform && k == c.max && !ex_ok(&c, t, k)) { st = SUBD_ERR_PARAM; goto fail; }
+        used[tv[0]] = used[tv[1]] = used[tv[2]] = 1u;
+        r.level_faces[k]++;
+        nf++;
+    }
+    for (nv = 0, v = 0; v < nvert; v++) nv += used[v];
     need = ex_need(&L, nv, nf);
     if (need == UINT32_MAX) { st = SUBD_ERR_TOO_BIG; goto fail; }
     if (need > a->size - mark0) {
@@ -724,28 +834,32 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     arr0 = subd_arena_mark(a);
     if ((st = subd_mesh_alloc_arrays(a, &mc, &m)) != SUBD_OK) goto fail;
     arr1 = subd_arena_mark(a);
-    vmap = (uint32_t *)subd_arena_alloc(a, L.nvert * 4u);
+    vmap = (uint32_t *)subd_arena_alloc(a, nvert * 4u);
     if (!vmap) { st = SUBD_ERR_NOMEM; goto fail; }
-    (void)ex_used(&c, vmap, L.nvert);
-    for (nv = 0, v = 0; v < L.nvert; v++) {
+    /* faces by level, then index: a leaf goes after the earlier leaves of its level; the
+     * corners get hierarchy vertex numbers first, renumbered once vmap is known */
+    for (f = 0, k = 0; k < SUBD_SR48_MAX_STEPS + 1u; k++) {
+        next[k] = f;
+        f += r.level_faces[k];
+    }
+    for (v = 0; v < nvert; v++) vmap[v] = 0;
+    t = SUBD_NONE;
+    k = 0;
+    while (ex_next_leaf(&c, &t, &k)) {
+        const uint32_t *tv = h->tri_vert + 3u * t;
+        uint32_t *cv = m.corner_vert + 3u * next[k]++;
+        cv[0] = tv[0];
+        cv[1] = tv[1];
+        cv[2] = tv[2];
+        vmap[tv[0]] = vmap[tv[1]] = vmap[tv[2]] = 1u;
+    }
+    for (nv = 0, v = 0; v < nvert; v++) {
         if (!vmap[v]) { vmap[v] = SUBD_NONE; continue; }
         for (k = 0; k < 3u; k++) m.pos[3u * nv + k] = h->pos[3u * v + k];
         vmap[v] = nv++;
     }
-    for (k = 0; k < SUBD_SR48_MAX_STEPS + 1u; k++) r.level_faces[k] = 0;
-    f = 0;
-    m.face_start[0] = 0;
-    for (k = c.uniform ? c.max : 0u; k <= c.max; k++) {
-        for (t = h->level_tri[k]; t < h->level_tri[k + 1u]; t++) {
-            if (!ex_is_leaf(&c, t, k)) continue;
-            m.corner_vert[3u * f] = vmap[h->tri_vert[3u * t]];
-            m.corner_vert[3u * f + 1u] = vmap[h->tri_vert[3u * t + 1u]];
-            m.corner_vert[3u * f + 2u] = vmap[h->tri_vert[3u * t + 2u]];
-            m.face_start[f + 1u] = 3u * (f + 1u);
-            r.level_faces[k]++;
-            f++;
-        }
-    }
+    for (f = 0; f < 3u * nf; f++) m.corner_vert[f] = vmap[m.corner_vert[f]];
+    for (f = 0; f <= nf; f++) m.face_start[f] = 3u * f;
     m.line_start[0] = 0;
     r.faces = nf;
     r.uniform_faces = h->level_tri[c.max + 1u] - h->level_tri[c.max];

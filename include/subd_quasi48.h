@@ -2,7 +2,7 @@
  * longest-edge binary refinement with edge-cluster marking (Algorithm 1) followed by the
  * two-pass convolution smoothing (Algorithm 2), with the section 4.3 feature control
  * (tagged vertices and edges are not affected by smoothing) and two boundary modes.
- * Included by subd.h (until then, include it after subd.h). */
+ * Included by subd.h. */
 #ifndef SUBD_QUASI48_H
 #define SUBD_QUASI48_H
 

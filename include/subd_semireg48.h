@@ -1,6 +1,6 @@
 /* Semi-regular 4-8 refinement with four-direction (Zwart-Powell) box-spline smoothing and
  * variable-resolution extraction (paper: semi-regular-4-8-refinement-box-splines.txt,
- * Velho). Included by subd.h (until then, include it after subd.h).
+ * Velho). Included by subd.h.
  *
  * Three stages:
  *  1. Pre-processing (section 5): find_clusters picks an independent set of two-face

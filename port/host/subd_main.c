@@ -495,6 +495,14 @@ static const command *find_command(const char *name)
     return NULL;
 }
 
+/* After a usage error: the synopsis and where the rest is, not the whole help (the
+ * specific message above it stays visible). */
+static void usage_short(FILE *f)
+{
+    fprintf(f, "usage: subd COMMAND [options] INPUT [-o OUTPUT]\n"
+               "run 'subd --help' for the commands, options and exit codes\n");
+}
+
 static void usage(FILE *f)
 {
     size_t i;
@@ -575,8 +583,8 @@ static int usage_error(const char *fmt, ...)
     fprintf(stderr, "subd: ");
     vfprintf(stderr, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "\n\n");
-    usage(stderr);
+    fprintf(stderr, "\n");
+    usage_short(stderr);
     return EXIT_USAGE;
 }
 
@@ -1323,8 +1331,8 @@ int main(int argc, char **argv)
     int rc;
 
     if (argc < 2) {
-        fprintf(stderr, "subd: missing command\n\n");
-        usage(stderr);
+        fprintf(stderr, "subd: missing command\n");
+        usage_short(stderr);
         return EXIT_USAGE;
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {

@@ -255,6 +255,43 @@ is 0 && [ "$(sed -n 2p "$T/hex2.off" | cut -d' ' -f1-2)" = "61 96" ]
 check $? "subd-fixed loop -l 2 --boundary bspline hexfan: 61 vertices, 96 faces"
 run "$FLOAT" loop -l 1 --crease-angle 60 demo/cube_tri.obj -o "$T/cube1.obj"
 is 0 && grep -q "^subd: 12 crease edge" "$T/err"; check $? "loop --crease-angle 60 on a triangulated cube tags its 12 cube edges, not the diagonals"
+# --tags FILE: the cube's 12 edges, found here from the coordinates (vertex pairs that differ in
+# exactly one coordinate), as a tag file give the same output as --crease-angle 60.
+awk '/^v /{n++; x[n]=$2; y[n]=$3; z[n]=$4}
+     END{print "# cube edges"; for(i=1;i<=n;i++) for(j=i+1;j<=n;j++)
+         if ((x[i]!=x[j])+(y[i]!=y[j])+(z[i]!=z[j]) == 1) print "crease", i, j}' demo/cube_tri.obj > "$T/cube.tags"
+run "$FLOAT" loop -l 2 --crease-angle 60 demo/cube_tri.obj -o "$T/cube_angle.obj"
+run "$FLOAT" loop -l 2 --tags "$T/cube.tags" demo/cube_tri.obj -o "$T/cube_tags.obj"
+is 0 && [ "$(grep -c '^crease' "$T/cube.tags")" = 12 ] && grep -q "12 crease edge(s), 0 vertex tag(s)" "$T/err" &&
+    cmp -s "$T/cube_angle.obj" "$T/cube_tags.obj"; check $? "loop --tags with the cube's 12 edges = --crease-angle 60"
+# corner and fixed vertices do not move (vertex i of the input is vertex i of the output)
+printf 'corner 1\n' > "$T/c1.tags"
+run "$FLOAT" loop -l 2 --tags "$T/c1.tags" test/data/icosahedron.obj -o "$T/ico_c.obj"
+v_in=$(grep -m1 '^v ' test/data/icosahedron.obj | awk '{print $2+0, $3+0, $4+0}')
+v_out=$(grep -m1 '^v ' "$T/ico_c.obj" | awk '{print $2+0, $3+0, $4+0}')
+v_free=$(run "$FLOAT" loop -l 2 test/data/icosahedron.obj -o "$T/ico_f.obj"; grep -m1 '^v ' "$T/ico_f.obj" | awk '{print $2+0, $3+0, $4+0}')
+is 0 && [ "$v_in" = "$v_out" ] && [ "$v_in" != "$v_free" ]; check $? "loop --tags 'corner 1': vertex 1 stays ($v_in), untagged it moves"
+printf 'fixed 1\n' > "$T/f1.tags"
+run "$FIXED" convert test/data/icosahedron.obj -o "$T/ico_q0.obj" # the input as Q16.16 reads it
+v_in=$(grep -m1 '^v ' "$T/ico_q0.obj")
+run "$FIXED" quasi48 -l 2 --tags "$T/f1.tags" test/data/icosahedron.obj -o "$T/ico_q.obj"
+v_out=$(grep -m1 '^v ' "$T/ico_q.obj")
+is 0 && [ -n "$v_in" ] && [ "$v_in" = "$v_out" ]; check $? "subd-fixed quasi48 --tags 'fixed 1': vertex 1 stays ($v_in)"
+# tag file errors: FILE:LINE, exit 2, no output written, nothing applied
+printf 'corner 1\ncrease 1 2 3\n' > "$T/bad1.tags"
+rm -f "$T/x.obj"; run "$FLOAT" loop --tags "$T/bad1.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 2 && err_starts "$T/bad1.tags:2: expected" && [ ! -e "$T/x.obj" ]; check $? "--tags with a malformed line: exit 2, FILE:LINE, no output"
+printf 'fixed 13\n' > "$T/bad2.tags"
+run "$FLOAT" loop --tags "$T/bad2.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 2 && err_starts "$T/bad2.tags:1: expected" && grep -q "1..12" "$T/err"; check $? "--tags with a vertex number out of range: exit 2"
+a1=$(awk '/^f /{for(i=2;i<=4;i++){split($i,p,"/"); if(p[1]==1) s=1} if(s){for(i=2;i<=4;i++){split($i,p,"/"); e[p[1]]=1}} s=0} END{for(v=2;v<=12;v++) if(!(v in e)){print v; exit}}' test/data/icosahedron.obj)
+printf 'crease 1 %s\n' "$a1" > "$T/bad3.tags"
+run "$FLOAT" loop --tags "$T/bad3.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 2 && err_starts "$T/bad3.tags:1: vertices 1 and $a1 share no edge"; check $? "--tags naming two vertices without an edge (1, $a1): exit 2"
+run "$FLOAT" loop --tags "$T/missing.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 2 && err_starts "subd: cannot read tag file"; check $? "--tags with a missing file: exit 2"
+run "$FLOAT" semireg48 --tags "$T/c1.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 1; check $? "--tags on a command that does not use tags (semireg48): exit 1"
 run "$FLOAT" loop test/data/cube_quad.obj -o "$T/x.obj"
 is 2 && err_starts "test/data/cube_quad.obj"; check $? "loop on quads: exit 2 naming the input"
 run "$FLOAT" quasi48 -l 2 demo/torus_12x6.obj -o "$T/q.obj" --stats

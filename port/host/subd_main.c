@@ -61,6 +61,7 @@ typedef struct tool_opts {
     int tag_boundary;            /* --tag-boundary: tag boundary edges as creases first   */
     int has_crease_angle;
     double crease_deg;           /* --crease-angle DEG: tag sharper edges as creases      */
+    const char *tags;            /* --tags FILE: crease edges, corner and fixed vertices  */
     int normals;                 /* --normals (limit): write limit normals as OBJ vn      */
     double tol;                  /* --tol T (pia)                                         */
     uint32_t max_iter;           /* --max-iter K (pia)                                    */
@@ -542,6 +543,9 @@ static void usage(FILE *f)
             "  --no-smooth      (quasi48, semireg48, adapt) refinement only, no smoothing\n"
             "  --tag-boundary   (quasi48) tag boundary edges as creases (they stay put)\n"
             "  --crease-angle D tag edges whose faces meet at more than D degrees as creases\n"
+            "  --tags FILE      (loop, limit, pia, quasi48) tags from a text file, one per line:\n"
+            "                   'crease I J' (the edge between vertices I and J), 'corner I',\n"
+            "                   'fixed I'; vertex numbers 1-based as in OBJ, '#' comments\n"
             "  --normals        (limit) also write unit limit normals as OBJ vn records\n"
             "  --tol T          (pia) stop when every limit point is within T of its input vertex\n"
             "  --max-iter K     (pia) at most K iterations (default 100)\n"
@@ -586,6 +590,101 @@ static int usage_error(const char *fmt, ...)
     fprintf(stderr, "\n");
     usage_short(stderr);
     return EXIT_USAGE;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Tag files (--tags)                                                                     */
+
+/* The half-edge from a to b or, when the edge only runs b -> a (a boundary edge), that
+ * one; SUBD_NONE when a and b share no edge. */
+static uint32_t find_edge(const subd_mesh *m, uint32_t a, uint32_t b)
+{
+    uint32_t k;
+    for (k = 0; k < 2u; k++) {
+        uint32_t from = k ? b : a, to = k ? a : b, first = m->vert_out[from], h;
+        for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h))
+            if (subd_he_dest(m, h) == to) return h;
+    }
+    return SUBD_NONE;
+}
+
+/* One vertex number of a tag line: 1-based, within the mesh; returns 0 and sets *v, or 1. */
+static int tag_vertex(const char *tok, const subd_mesh *m, uint32_t *v)
+{
+    char *end;
+    unsigned long n;
+    if (!tok || *tok < '0' || *tok > '9') return 1;
+    errno = 0;
+    n = strtoul(tok, &end, 10);
+    if (errno || *end || n == 0 || n > m->num_verts) return 1;
+    *v = (uint32_t)(n - 1u);
+    return 0;
+}
+
+/* Applies a tag file to the input mesh: 'crease I J', 'corner I', 'fixed I' per line
+ * (1-based vertex numbers, as in OBJ; '#' starts a comment; blank lines are skipped).
+ * Errors name FILE:LINE and exit 2; nothing is applied unless the whole file is valid. */
+static int apply_tag_file(const char *path, subd_mesh *m, int quiet)
+{
+    char *buf = NULL;
+    uint32_t len = 0, pass, ncrease = 0, nvert = 0;
+    if (host_read_file(path, &buf, &len) != 0) {
+        fprintf(stderr, "subd: cannot read tag file '%s': %s\n", path, strerror(errno));
+        return EXIT_INPUT;
+    }
+    /* pass 0 checks every line, pass 1 applies them: a bad file changes nothing */
+    for (pass = 0; pass < 2u; pass++) {
+        uint32_t pos = 0, line = 0;
+        while (pos < len) {
+            char text[256], *tok[5], *save = NULL, *hash;
+            uint32_t n = 0, end = pos, v[2];
+            while (end < len && buf[end] != '\n') end++;
+            line++;
+            if (end - pos >= sizeof text) {
+                fprintf(stderr, "%s:%lu: line too long\n", path, (unsigned long)line);
+                free(buf);
+                return EXIT_INPUT;
+            }
+            memcpy(text, buf + pos, end - pos);
+            text[end - pos] = '\0';
+            pos = end + 1u;
+            if ((hash = strchr(text, '#')) != NULL) *hash = '\0';
+            /* up to four tokens, so a line with too many is seen as such */
+            for (tok[n] = strtok_r(text, " \t\r", &save); tok[n] && n < 4u;)
+                tok[++n] = strtok_r(NULL, " \t\r", &save);
+            if (n == 0) continue;
+            if (strcmp(tok[0], "crease") == 0 && n == 3 && !tag_vertex(tok[1], m, &v[0]) &&
+                !tag_vertex(tok[2], m, &v[1])) {
+                uint32_t h = find_edge(m, v[0], v[1]);
+                if (h == SUBD_NONE) {
+                    fprintf(stderr, "%s:%lu: vertices %s and %s share no edge\n", path, (unsigned long)line, tok[1],
+                            tok[2]);
+                    free(buf);
+                    return EXIT_INPUT;
+                }
+                if (pass) {
+                    subd_edge_tag_set(m, h, SUBD_ETAG_CREASE);
+                    ncrease++;
+                }
+            } else if ((strcmp(tok[0], "corner") == 0 || strcmp(tok[0], "fixed") == 0) && n == 2 &&
+                       !tag_vertex(tok[1], m, &v[0])) {
+                if (pass) {
+                    m->vert_tag[v[0]] |= (uint8_t)(tok[0][0] == 'c' ? SUBD_VTAG_CORNER : SUBD_VTAG_FIXED);
+                    nvert++;
+                }
+            } else {
+                fprintf(stderr, "%s:%lu: expected 'crease I J', 'corner I' or 'fixed I' with vertex numbers "
+                                "1..%lu\n", path, (unsigned long)line, (unsigned long)m->num_verts);
+                free(buf);
+                return EXIT_INPUT;
+            }
+        }
+    }
+    free(buf);
+    if (!quiet)
+        fprintf(stderr, "subd: %s: %lu crease edge(s), %lu vertex tag(s)\n", path, (unsigned long)ncrease,
+                (unsigned long)nvert);
+    return EXIT_OK;
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -744,7 +843,7 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             strcmp(name, "--max-iter") && strcmp(name, "--method") && strcmp(name, "--order") &&
             strcmp(name, "--kernel") && strcmp(name, "--alpha") && strcmp(name, "--stiffness") &&
             strcmp(name, "--point") && strcmp(name, "--ramp") && strcmp(name, "--plane") &&
-            strcmp(name, "--chord") && strcmp(name, "--radius"))
+            strcmp(name, "--chord") && strcmp(name, "--radius") && strcmp(name, "--tags"))
             return usage_error("unknown option '%s'", a);
         if (!val) {
             if (i + 1 >= argc) return usage_error("option '%s' needs a value", name);
@@ -761,6 +860,10 @@ static int parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             o->has_levels = 1;
         } else if (strcmp(name, "--boundary") == 0) {
             o->boundary_name = val; /* checked below, once the command is known */
+        } else if (strcmp(name, "--tags") == 0) {
+            if (o->tags) return usage_error("more than one tag file ('%s')", val);
+            o->tags = val;
+            o->given |= OPT_CREASE;
         } else if (strcmp(name, "--crease-angle") == 0) {
             if (parse_double(val, 0.0, 180.0, &o->crease_deg))
                 return usage_error("bad crease angle '%s' (degrees, 0..180)", val);
@@ -1282,6 +1385,7 @@ static int run_command(tool_run *r)
         uint32_t n = subd_mesh_tag_crease_angle(&r->in.mesh, subd_cos_turns(hundredths, 36000));
         if (!r->o.stats) fprintf(stderr, "subd: %lu crease edge(s) tagged\n", (unsigned long)n);
     }
+    if (r->o.tags && (st = apply_tag_file(r->o.tags, &r->in.mesh, r->o.stats)) != EXIT_OK) return st;
 
     if (cmd->run) {
         uint32_t bytes = 0, base = r->in.arena.used, need;

@@ -37,6 +37,12 @@
  * Memory: two mesh buffers sized by the per-step bounds (ping-pong, the last step writes
  * the lower one, which becomes the output) and one set of per-step arrays sized for the
  * largest step, all planned by q48_layout.
+ *
+ * Adjacency: the general builder (subd_mesh_finish) would cost a validation and a bucket
+ * pass with random access per step, most of a step's time on large meshes. A split only
+ * cuts faces along edges of a valid manifold mesh, so the child's twins follow from the
+ * parent's (q48_link_twins) and its fans from its corners (q48_fans); both give exactly the
+ * arrays, tags and counts the builder would give, in O(C).
  */
 #include "mesh_internal.h"
 #include "subd_quasi48.h"
@@ -53,7 +59,6 @@ typedef struct q48_work {
     subd_edge_work es;  /* edge numbering, sort and cluster marks (edge_sort.c)          */
     uint32_t *split;    /* per edge: the new vertex, or SUBD_NONE                        */
     uint8_t *vkeep;     /* per output vertex: caller tags, then "pinned" during smoothing */
-    uint8_t *ekeep;     /* per output half-edge: crease tag to restore after the builder */
 } q48_work;
 
 static uint32_t builder_scratch(const mesh_counts *c)
@@ -64,7 +69,7 @@ static uint32_t builder_scratch(const mesh_counts *c)
     return b;
 }
 
-/* Bytes of the mesh arrays alone (the builder's scratch is counted separately). */
+/* Bytes of the mesh arrays alone (subd_mesh_counts_bytes adds the builder's scratch). */
 static uint32_t arrays_bytes(const mesh_counts *c)
 {
     uint32_t b = subd_mesh_counts_bytes(c);
@@ -75,6 +80,17 @@ static void add_bytes(uint32_t *total, uint32_t b)
 {
     if (b == UINT32_MAX || *total > UINT32_MAX - b) *total = UINT32_MAX;
     else *total += b;
+}
+
+/* Bytes from the start of mesh buffer c when `above` bytes are allocated after it.
+ * subd_mesh_alloc_arrays hands out a buffer only when the builder's scratch would fit above
+ * it as well; quasi 4-8 never runs the builder, but the plan must leave that room at each
+ * allocation (it exceeds `above` only for inputs with many isolated vertices). */
+static uint32_t buffer_then(const mesh_counts *c, uint32_t above)
+{
+    uint32_t b = arrays_bytes(c), s = builder_scratch(c);
+    add_bytes(&b, above > s ? above : s);
+    return b;
 }
 
 static int counts_for(const subd_mesh *in, uint32_t s, mesh_counts *c)
@@ -94,8 +110,8 @@ static int counts_for(const subd_mesh *in, uint32_t s, mesh_counts *c)
  * it only counts; otherwise it allocates the per-step arrays in the same order. */
 static int q48_layout_work(subd_arena *a, const q48_layout *L, q48_work *w, uint32_t *bytes)
 {
-    struct { void **slot; uint32_t count, elem; } arr[11];
-    void *dummy[11];
+    struct { void **slot; uint32_t count, elem; } arr[10];
+    void *dummy[10];
     uint32_t i, n = 0, total = 0;
 #define ARR(ptr, cnt, sz) do { arr[n].slot = w ? (void **)(void *)&(ptr) : &dummy[n]; \
                                arr[n].count = (cnt); arr[n].elem = (sz); n++; } while (0)
@@ -111,7 +127,6 @@ static int q48_layout_work(subd_arena *a, const q48_layout *L, q48_work *w, uint
     ARR(p->es.mark, L->cs, 1u);
     ARR(p->es.cnt, 256u, 4u);
     ARR(p->vkeep, L->out.nv, 1u);
-    ARR(p->ekeep, L->out.nc, 1u);
 #undef ARR
     for (i = 0; i < n; i++) subd_size_add(&total, arr[i].count, arr[i].elem);
     *bytes = total;
@@ -138,17 +153,16 @@ static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
 
 static int q48_plan(const subd_mesh *in, const subd_q48_opts *o, q48_layout *L, subd_diag *d)
 {
-    uint32_t b = 0, wb;
+    uint32_t b, wb;
     int st;
     if ((st = q48_check(in, o, d)) != SUBD_OK) return st;
     if ((st = counts_for(in, o->steps, &L->out)) != SUBD_OK) return subd_fail(d, st);
     if ((st = counts_for(in, o->steps - 1u, &L->mid)) != SUBD_OK) return subd_fail(d, st);
     L->cs = L->mid.nc; /* input of the last step: the output bound of step steps-1 */
-    add_bytes(&b, arrays_bytes(&L->out));
-    if (o->steps >= 2u) add_bytes(&b, arrays_bytes(&L->mid));
+    /* allocation order: buf[0] (out), buf[1] (mid, steps >= 2), the per-step arrays */
     q48_layout_work(0, L, 0, &wb);
-    add_bytes(&b, wb);
-    add_bytes(&b, builder_scratch(&L->out));
+    b = (o->steps >= 2u) ? buffer_then(&L->mid, wb) : wb;
+    b = buffer_then(&L->out, b);
     L->bytes = b;
     if (b == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     return SUBD_OK;
@@ -213,23 +227,212 @@ static subd_real q48_blend(subd_real p, q48_sum s, uint32_t k, uint32_t *ovf)
 }
 #endif
 
-static int q48_refine(subd_arena *a, const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, uint32_t bits,
+/* ------------------------------------------------------------------------------------ */
+/* Navigation in the child meshes, whose face f is corners 3f..3f+2 (q48_split_faces writes
+ * them so): the same half-edges as subd_he_next/prev and subd_ring_next, without loading
+ * corner_face and face_start on every step of a walk.                                     */
+
+static uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
+static uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
+static uint32_t tri_dest(const subd_mesh *m, uint32_t h) { return m->corner_vert[tri_next(h)]; }
+static uint32_t tri_ring_next(const subd_mesh *m, uint32_t first, uint32_t h)
+{
+    uint32_t t = m->twin[tri_prev(h)];
+    return (t == first) ? SUBD_NONE : t;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Algorithm 1: refinement.                                                               */
+
+/* The side (0..2) of parent face f whose edge is split, or 3 when none is. The marking
+ * leaves at most one split edge per face. */
+static uint32_t split_side(const subd_mesh *m, const q48_work *w, uint32_t f)
+{
+    uint32_t s = m->face_start[f], j;
+    for (j = 0; j < 3u; j++)
+        if (w->split[w->es.edge_of[s + j]] != SUBD_NONE) return j;
+    return 3u;
+}
+
+/* subdiv: a face with split edge (a, b) -> v and opposite vertex c becomes (a, v, c) at its
+ * index and (v, b, c) appended in face order; other faces are copied. Crease tags pass to
+ * both halves of a split edge and stay on unsplit sides. map[p] records where parent
+ * half-edge p went: its child half-edge, or for a split half-edge its second half (v, b);
+ * the first half (a, v) is always corner 0 of the face's kept child. */
+static void q48_split_faces(const subd_mesh *m, subd_mesh *o, const q48_work *w, uint32_t *map)
+{
+    const uint8_t cr = SUBD_ETAG_CREASE;
+    uint32_t f, j, k = m->num_faces; /* k: next appended face */
+    for (f = 0; f <= o->num_faces; f++) o->face_start[f] = 3u * f;
+    for (f = 0; f < m->num_faces; f++) {
+        uint32_t s = m->face_start[f], at = 3u * f;
+        o->corner_face[at] = o->corner_face[at + 1u] = o->corner_face[at + 2u] = f;
+        j = split_side(m, w, f);
+        if (j == 3u) {
+            for (j = 0; j < 3u; j++) {
+                o->corner_vert[at + j] = m->corner_vert[s + j];
+                o->edge_tag[at + j] = (uint8_t)(m->edge_tag[s + j] & cr);
+                map[s + j] = at + j;
+            }
+        } else {
+            uint32_t h = s + j, h1 = s + (j + 1u) % 3u, h2 = s + (j + 2u) % 3u, bt = 3u * k;
+            uint32_t v = w->split[w->es.edge_of[h]];
+            uint8_t hc = (uint8_t)(m->edge_tag[h] & cr);
+            o->corner_vert[at] = m->corner_vert[h];
+            o->corner_vert[at + 1u] = v;
+            o->corner_vert[at + 2u] = m->corner_vert[h2];
+            o->edge_tag[at] = hc;
+            o->edge_tag[at + 1u] = 0;
+            o->edge_tag[at + 2u] = (uint8_t)(m->edge_tag[h2] & cr);
+            o->corner_vert[bt] = v;
+            o->corner_vert[bt + 1u] = m->corner_vert[h1];
+            o->corner_vert[bt + 2u] = m->corner_vert[h2];
+            o->edge_tag[bt] = hc;
+            o->edge_tag[bt + 1u] = (uint8_t)(m->edge_tag[h1] & cr);
+            o->edge_tag[bt + 2u] = 0;
+            o->corner_face[bt] = o->corner_face[bt + 1u] = o->corner_face[bt + 2u] = k;
+            map[h] = bt;
+            map[h1] = bt + 1u;
+            map[h2] = at + 2u;
+            k++;
+        }
+    }
+}
+
+/* Twin of the child of an unsplit parent half-edge p: the child of p's twin. */
+static uint32_t child_twin(const subd_mesh *m, const uint32_t *map, uint32_t p)
+{
+    uint32_t t = m->twin[p];
+    return (t == SUBD_NONE) ? SUBD_NONE : map[t];
+}
+
+/* Twins of the child from the parent's: unsplit sides pair as their parents did; the halves
+ * of a split edge (a, v), (v, b) pair with the halves (v, a), (b, v) of its twin, which was
+ * split at the same vertex (both faces of a split edge are cut by it); the cut (v, c) pairs
+ * with (c, v). */
+static void q48_link_twins(const subd_mesh *m, subd_mesh *o, const q48_work *w, const uint32_t *map)
+{
+    uint32_t f, j;
+    for (f = 0; f < m->num_faces; f++) {
+        uint32_t s = m->face_start[f], at = 3u * f;
+        j = split_side(m, w, f);
+        if (j == 3u) {
+            for (j = 0; j < 3u; j++) o->twin[at + j] = child_twin(m, map, s + j);
+        } else {
+            uint32_t h = s + j, h1 = s + (j + 1u) % 3u, h2 = s + (j + 2u) % 3u, bt = map[h], t = m->twin[h];
+            o->twin[at] = (t == SUBD_NONE) ? SUBD_NONE : map[t];                    /* (v, a) */
+            o->twin[bt] = (t == SUBD_NONE) ? SUBD_NONE : 3u * m->corner_face[t];    /* (b, v) */
+            o->twin[at + 1u] = bt + 2u;
+            o->twin[bt + 2u] = at + 1u;
+            o->twin[at + 2u] = child_twin(m, map, h2);
+            o->twin[bt + 1u] = child_twin(m, map, h1);
+        }
+    }
+}
+
+#define Q48_VISITED 0x80u /* temporary edge_tag bit while walking boundary loops */
+
+/* Boundary loops, counted as the builder counts them: from a boundary half-edge a->b the
+ * next one along the loop is vert_out[b]; each loop is walked once. */
+static uint32_t q48_boundary_loops(subd_mesh *o, uint32_t nbe)
+{
+    uint32_t h, loops = 0;
+    if (nbe == 0) return 0;
+    for (h = 0; h < o->num_corners; h++) {
+        uint32_t g = h, steps = 0;
+        if ((o->edge_tag[h] & (SUBD_ETAG_BOUNDARY | Q48_VISITED)) != SUBD_ETAG_BOUNDARY) continue;
+        loops++;
+        do {
+            o->edge_tag[g] = (uint8_t)(o->edge_tag[g] | Q48_VISITED);
+            g = o->vert_out[tri_dest(o, g)];
+            steps++;
+        } while (g != h && steps <= nbe);
+    }
+    for (h = 0; h < o->num_corners; h++) o->edge_tag[h] = (uint8_t)(o->edge_tag[h] & ~Q48_VISITED);
+    return loops;
+}
+
+/* Fans, tags and counts exactly as the builder sets them (mesh.c: build_fans and
+ * count_boundary_loops): vert_out[v] is v's outgoing boundary half-edge when it has one,
+ * else its lowest corner (the builder's bucket order); a vertex without corners is
+ * isolated. Vertex tags: the builder's bits plus the kept caller tags vkeep. */
+static void q48_fans(subd_mesh *o, const uint8_t *vkeep)
+{
+    uint32_t v, c, nbe = 0, niso = 0;
+    for (v = 0; v < o->num_verts; v++) o->vert_out[v] = SUBD_NONE;
+    for (c = o->num_corners; c-- > 0;) o->vert_out[o->corner_vert[c]] = c; /* lowest corner last */
+    for (v = 0; v < o->num_verts; v++) {
+        uint8_t t = vkeep[v];
+        if (o->vert_out[v] == SUBD_NONE) {
+            t = (uint8_t)(t | SUBD_VTAG_ISOLATED);
+            niso++;
+        }
+        o->vert_tag[v] = t;
+    }
+    for (c = 0; c < o->num_corners; c++) {
+        if (o->twin[c] == SUBD_NONE) {
+            v = o->corner_vert[c];
+            o->vert_out[v] = c;
+            o->vert_tag[v] = (uint8_t)(o->vert_tag[v] | SUBD_VTAG_BOUNDARY);
+            o->edge_tag[c] = (uint8_t)(o->edge_tag[c] | SUBD_ETAG_BOUNDARY);
+            nbe++;
+        }
+    }
+    o->num_isolated = niso;
+    o->num_boundary_edges = nbe;
+    o->num_edges = (o->num_corners + nbe) / 2u;
+    o->num_boundary_loops = q48_boundary_loops(o, nbe);
+}
+
+/* Position of the new vertex on parent half-edge h (a->b): the midpoint (Algorithm 1); with
+ * smoothing, unless the vertex is pinned (a boundary or crease edge: section 4.3), Algorithm
+ * 2's pass 1 replaces it by the average of its four neighbours, all old vertices, so it is
+ * computed here from the parent without a walk in the child. Float sums depend on their
+ * order, so the neighbours are added in the order of the child's ring walk from vert_out:
+ * vert_out is v's lowest corner, the cut (v, c) of the lower-numbered of the edge's two
+ * faces, and the walk from there visits c, a, d, b for that face's half-edge a->b, its
+ * opposite vertex c and the other face's opposite vertex d. */
+static void q48_new_position(const subd_mesh *m, uint32_t h, int smooth, subd_real *out, uint32_t *ovf)
+{
+    const subd_real *p = m->pos + 3u * subd_he_origin(m, h), *q = m->pos + 3u * subd_he_dest(m, h);
+    uint32_t t = m->twin[h], k;
+    for (k = 0; k < 3u; k++) out[k] = q48_mid(p[k], q[k], ovf);
+    if (!smooth || t == SUBD_NONE || ((m->edge_tag[h] | m->edge_tag[t]) & SUBD_ETAG_CREASE)) return;
+    if (m->corner_face[t] < m->corner_face[h]) {
+        uint32_t x = h;
+        h = t;
+        t = x;
+    }
+    {
+        const subd_real *r[4];
+        r[0] = m->pos + 3u * m->corner_vert[subd_he_prev(m, h)];
+        r[1] = m->pos + 3u * subd_he_origin(m, h);
+        r[2] = m->pos + 3u * m->corner_vert[subd_he_prev(m, t)];
+        r[3] = m->pos + 3u * subd_he_dest(m, h);
+        for (k = 0; k < 3u; k++) {
+            q48_sum s = 0;
+            s = q48_sum_add(s, r[0][k]);
+            s = q48_sum_add(s, r[1][k]);
+            s = q48_sum_add(s, r[2][k]);
+            s = q48_sum_add(s, r[3][k]);
+            out[k] = q48_avg(s, 4u, ovf);
+        }
+    }
+}
+
+static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, uint32_t bits, int smooth,
                       q48_work *w, subd_diag *d)
 {
     const uint32_t nv = m->num_verts, nf = m->num_faces;
-    uint32_t ne, i, e, f, ns, nsf = 0, k, ovf = 0;
-    int st;
+    uint32_t ne, i, e, f, ns, nsf = 0, ovf = 0;
+    uint32_t *map;
 
     /* sort_edges, then split unmarked edges and mark their clusters (edge_sort.c) */
     ne = subd_edge_number(m, &w->es, m->num_corners);
     if (ne == SUBD_NONE) return subd_fail(d, SUBD_ERR_PARAM); /* cannot happen: E <= corners */
     ns = subd_edge_clusters(m, &w->es, ne, bits, 0, nv, w->split);
-    for (f = 0; f < nf; f++) {
-        uint32_t s = m->face_start[f];
-        if (w->split[w->es.edge_of[s]] != SUBD_NONE || w->split[w->es.edge_of[s + 1u]] != SUBD_NONE ||
-            w->split[w->es.edge_of[s + 2u]] != SUBD_NONE)
-            nsf++;
-    }
+    for (f = 0; f < nf; f++)
+        if (split_side(m, w, f) != 3u) nsf++;
     /* ns <= nsf <= nf by the marking, so the bounds hold; checked anyway */
     if (nv + ns > cap->nv || nf + nsf > cap->nf) return subd_fail(d, SUBD_ERR_NOMEM);
 
@@ -239,126 +442,85 @@ static int q48_refine(subd_arena *a, const subd_mesh *m, subd_mesh *o, const mes
     o->num_lines = m->num_lines;
     o->num_line_verts = m->num_line_verts;
 
-    /* positions: old vertices copied, new ones at the midpoints */
+    /* positions: old vertices copied (q48_smooth moves them later), new ones placed */
     for (i = 0; i < 3u * nv; i++) o->pos[i] = m->pos[i];
-    for (e = 0; e < ne; e++) {
-        uint32_t v = w->split[e], h = w->es.edge_he[e];
-        const subd_real *p, *q;
-        if (v == SUBD_NONE) continue;
-        p = m->pos + 3u * subd_he_origin(m, h);
-        q = m->pos + 3u * subd_he_dest(m, h);
-        for (k = 0; k < 3u; k++) o->pos[3u * v + k] = q48_mid(p[k], q[k], &ovf);
-    }
+    for (e = 0; e < ne; e++)
+        if (w->split[e] != SUBD_NONE) q48_new_position(m, w->es.edge_he[e], smooth, o->pos + 3u * w->split[e], &ovf);
     if (ovf) return subd_fail(d, SUBD_ERR_RANGE);
     for (i = 0; i < nv; i++) w->vkeep[i] = (uint8_t)(m->vert_tag[i] & (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED));
     for (; i < nv + ns; i++) w->vkeep[i] = 0;
 
-    /* subdiv: faces */
-    o->face_start[0] = 0;
-    for (f = 0; f <= nf + nsf; f++) o->face_start[f] = 3u * f;
-    k = nf; /* next appended face */
-    for (f = 0; f < nf; f++) {
-        uint32_t s = m->face_start[f], j, at = 3u * f;
-        for (j = 0; j < 3u; j++) {
-            uint32_t h = s + j, v = w->split[w->es.edge_of[h]];
-            if (v == SUBD_NONE) continue;
-            {
-                uint32_t h1 = s + (j + 1u) % 3u, h2 = s + (j + 2u) % 3u, bt = 3u * k;
-                uint8_t cr = (uint8_t)(m->edge_tag[h] & SUBD_ETAG_CREASE);
-                /* (a, m, c) at the face's index, (m, b, c) appended */
-                o->corner_vert[at] = m->corner_vert[h];
-                o->corner_vert[at + 1u] = v;
-                o->corner_vert[at + 2u] = m->corner_vert[h2];
-                w->ekeep[at] = cr;
-                w->ekeep[at + 1u] = 0;
-                w->ekeep[at + 2u] = (uint8_t)(m->edge_tag[h2] & SUBD_ETAG_CREASE);
-                o->corner_vert[bt] = v;
-                o->corner_vert[bt + 1u] = m->corner_vert[h1];
-                o->corner_vert[bt + 2u] = m->corner_vert[h2];
-                w->ekeep[bt] = cr;
-                w->ekeep[bt + 1u] = (uint8_t)(m->edge_tag[h1] & SUBD_ETAG_CREASE);
-                w->ekeep[bt + 2u] = 0;
-                k++;
-            }
-            break;
-        }
-        if (j == 3u) {
-            for (j = 0; j < 3u; j++) {
-                o->corner_vert[at + j] = m->corner_vert[s + j];
-                w->ekeep[at + j] = (uint8_t)(m->edge_tag[s + j] & SUBD_ETAG_CREASE);
-            }
-        }
-    }
+    /* the sort's order array is free once the clusters are marked: it holds the half-edge
+     * map (one entry per parent corner; it has room for the largest step's input) */
+    map = w->es.ord[0];
+    q48_split_faces(m, o, w, map);
+    q48_link_twins(m, o, w, map);
+    q48_fans(o, w->vkeep);
     o->line_start[0] = 0;
     for (i = 0; i < m->num_lines; i++) o->line_start[i + 1u] = m->line_start[i + 1u];
     for (i = 0; i < m->num_line_verts; i++) o->line_vert[i] = m->line_vert[i];
-
-    st = subd_mesh_finish(a, o, d);
-    if (st != SUBD_OK) return st;
-    for (i = 0; i < o->num_verts; i++) o->vert_tag[i] = (uint8_t)(o->vert_tag[i] | w->vkeep[i]);
-    for (i = 0; i < o->num_corners; i++) o->edge_tag[i] = (uint8_t)(o->edge_tag[i] | w->ekeep[i]);
     return SUBD_OK;
 }
 
 /* ------------------------------------------------------------------------------------ */
-/* Algorithm 2: smoothing in place; vertices >= nv_old are the step's new vertices.       */
+/* Algorithm 2, pass 2, in place: vertices >= nv_old are the step's new vertices, already
+ * smoothed by pass 1 (q48_new_position).                                                 */
+
+/* Pass 2 for old vertex v: 1/2 its position + 1/2 the average of its new neighbours (in
+ * ring order from vert_out; none: unchanged). On a boundary (smooth mode) only the two
+ * boundary neighbours count. */
+static void q48_smooth_old(subd_mesh *o, uint32_t v, uint32_t nv_old, uint32_t *ovf)
+{
+    uint32_t first = o->vert_out[v], n = 0, last = SUBD_NONE, steps = 0, h, k;
+    q48_sum s[3] = {0, 0, 0};
+    if (o->twin[first] == SUBD_NONE) {
+        uint32_t ends[2], j;
+        for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++)
+            last = h;
+        ends[0] = tri_dest(o, first);
+        ends[1] = o->corner_vert[tri_prev(last)];
+        for (j = 0; j < 2u; j++) {
+            if (ends[j] < nv_old) continue;
+            for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], o->pos[3u * ends[j] + k]);
+            n++;
+        }
+    } else {
+        for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++) {
+            uint32_t u = tri_dest(o, h);
+            if (u < nv_old) continue;
+            for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], o->pos[3u * u + k]);
+            n++;
+        }
+    }
+    if (n == 0) return;
+    for (k = 0; k < 3u; k++) o->pos[3u * v + k] = q48_blend(o->pos[3u * v + k], s[k], n, ovf);
+}
 
 static int q48_smooth(subd_mesh *o, uint32_t nv_old, subd_q48_boundary bmode, const q48_work *w, subd_diag *d)
 {
     uint8_t *pin = w->vkeep;
-    uint32_t v, h, k, ovf = 0;
+    uint32_t v, h, c, ovf = 0;
     const uint8_t fixed_bits = (uint8_t)(SUBD_VTAG_CORNER | SUBD_VTAG_FIXED | SUBD_VTAG_ISOLATED);
 
-    for (v = 0; v < o->num_verts; v++) {
+    for (v = 0; v < nv_old; v++) {
         uint8_t t = o->vert_tag[v];
         pin[v] = (uint8_t)((t & fixed_bits) != 0 ||
-                           ((t & SUBD_VTAG_BOUNDARY) && (bmode == SUBD_Q48_BOUNDARY_FIXED || v >= nv_old)));
+                           ((t & SUBD_VTAG_BOUNDARY) && bmode == SUBD_Q48_BOUNDARY_FIXED));
     }
     for (h = 0; h < o->num_corners; h++) {
-        if (o->edge_tag[h] & SUBD_ETAG_CREASE) {
-            pin[subd_he_origin(o, h)] = 1;
-            pin[subd_he_dest(o, h)] = 1;
+        if (o->edge_tag[h] & SUBD_ETAG_CREASE) { /* only old vertices are read below */
+            pin[o->corner_vert[h]] = 1;
+            pin[tri_dest(o, h)] = 1;
         }
     }
-    /* pass 1: new interior vertices = average of their neighbours (all old) */
-    for (v = nv_old; v < o->num_verts; v++) {
-        uint32_t first = o->vert_out[v], n = 0;
-        q48_sum s[3] = {0, 0, 0};
-        if (pin[v]) continue;
-        for (h = first; h != SUBD_NONE && n < o->num_corners; h = subd_ring_next(o, first, h)) {
-            const subd_real *q = o->pos + 3u * subd_he_dest(o, h);
-            for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], q[k]);
-            n++;
-        }
-        for (k = 0; k < 3u; k++) o->pos[3u * v + k] = q48_avg(s[k], n, &ovf);
-    }
-    /* pass 2: old vertices = 1/2 own + 1/2 average of the new neighbours */
-    for (v = 0; v < nv_old; v++) {
-        uint32_t first = o->vert_out[v], n = 0, last = SUBD_NONE, steps = 0;
-        q48_sum s[3] = {0, 0, 0};
-        if (pin[v]) continue;
-        if (o->twin[first] == SUBD_NONE) {
-            /* boundary curve (smooth mode): only the two boundary neighbours count */
-            uint32_t ends[2], j;
-            for (h = first; h != SUBD_NONE && steps < o->num_corners; h = subd_ring_next(o, first, h), steps++)
-                last = h;
-            ends[0] = subd_he_dest(o, first);
-            ends[1] = subd_he_origin(o, subd_he_prev(o, last));
-            for (j = 0; j < 2u; j++) {
-                if (ends[j] < nv_old) continue;
-                for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], o->pos[3u * ends[j] + k]);
-                n++;
-            }
-        } else {
-            for (h = first; h != SUBD_NONE && steps < o->num_corners; h = subd_ring_next(o, first, h), steps++) {
-                uint32_t u = subd_he_dest(o, h);
-                if (u < nv_old) continue;
-                for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], o->pos[3u * u + k]);
-                n++;
-            }
-        }
-        if (n == 0) continue;
-        for (k = 0; k < 3u; k++) o->pos[3u * v + k] = q48_blend(o->pos[3u * v + k], s[k], n, &ovf);
+    /* pass 1 (new vertices = average of their neighbours) was done by q48_new_position */
+    /* pass 2 (q48_smooth_old). A vertex reads only new vertices and writes only itself, so
+     * the order of visits is free: each is visited at its vert_out corner, in corner order,
+     * so that consecutive walks stay in neighbouring faces (vertex order is split order,
+     * longest edge first, which scatters consecutive vertices over the mesh). */
+    for (c = 0; c < o->num_corners; c++) {
+        v = o->corner_vert[c];
+        if (v < nv_old && !pin[v] && o->vert_out[v] == c) q48_smooth_old(o, v, nv_old, &ovf);
     }
     if (ovf) return subd_fail(d, SUBD_ERR_RANGE);
     return SUBD_OK;
@@ -375,7 +537,7 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
     subd_mesh buf[2];
     const subd_mesh *src = in;
     uint32_t mark, keep, s, wb, bits;
-    int st;
+    int st, smooth;
 
     subd_diag_clear(d);
     if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
@@ -383,6 +545,7 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
     d->bytes_needed = L.bytes;
     if (L.bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
     bits = o->len_bits ? o->len_bits : SUBD_Q48_LEN_BITS_DEFAULT;
+    smooth = !(o->flags & SUBD_Q48_NO_SMOOTH);
 
     mark = subd_arena_mark(a);
     st = subd_mesh_alloc_arrays(a, &L.out, &buf[0]);
@@ -395,8 +558,8 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
         /* the last step writes buf[0]; earlier steps alternate, never onto their input */
         subd_mesh *dst = &buf[(o->steps - s) & 1u];
         const mesh_counts *cap = ((o->steps - s) & 1u) ? &L.mid : &L.out;
-        st = q48_refine(a, src, dst, cap, bits, &w, d);
-        if (st == SUBD_OK && !(o->flags & SUBD_Q48_NO_SMOOTH)) st = q48_smooth(dst, src->num_verts, o->boundary, &w, d);
+        st = q48_refine(src, dst, cap, bits, smooth, &w, d);
+        if (st == SUBD_OK && smooth) st = q48_smooth(dst, src->num_verts, o->boundary, &w, d);
         if (st != SUBD_OK) goto fail;
         src = dst;
     }

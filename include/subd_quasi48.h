@@ -53,14 +53,19 @@ typedef struct subd_q48_opts {
 /* Arena bytes subd_quasi48 uses for this input and options. The number of splits of a step
  * is only known after its marking pass, so the plan is computed from the bounds above: the
  * output mesh arrays sized for step `steps`, one more set for step steps-1 (ping-pong
- * between steps; none when steps == 1), the per-step working memory for the largest step
+ * between steps; none when steps == 1) and the per-step working memory for the largest step
  * input (edge numbering, sort keys, marks, split vertices: 37 bytes per corner of step
- * steps-1, 1 KiB of radix counters, one tag byte per output vertex and per output corner) and the
- * mesh builder's scratch. subd_quasi48 refuses to start unless that many bytes are free,
- * so the run can never exceed the plan; the measured peak equals it when every step
- * reaches the bound (e.g. one step of a single triangle). Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps or
- * len_bits out of range, input without adjacency), SUBD_ERR_FACE_SIZE (a non-triangle),
- * SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG (the bound does not fit 32-bit sizes). */
+ * steps-1, 1 KiB of radix counters, one tag byte per output vertex; the sort's order array
+ * doubles as the map from parent to child half-edges). The child's adjacency is derived
+ * from the parent's, so no builder scratch is needed; but the mesh allocator hands out a
+ * mesh buffer only when the builder's scratch for it (4 bytes per vertex and per corner)
+ * would fit above it, and the plan keeps that room when what follows the buffer is smaller
+ * (only for inputs with many isolated vertices). Everything is allocated before the first
+ * step, so the measured peak equals the plan except in that case. subd_quasi48 refuses to
+ * start unless that many bytes are free, so the run can never exceed the plan. Returns
+ * SUBD_OK, SUBD_ERR_PARAM (NULL, steps or len_bits out of range, input without adjacency),
+ * SUBD_ERR_FACE_SIZE (a non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG (the
+ * bound does not fit 32-bit sizes). */
 int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes);
 
 /* `steps` binary steps of quasi 4-8 subdivision of an all-triangle mesh. Each step:
@@ -84,14 +89,15 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
  * Vertex i of the input is vertex i of the output; a step's new vertices follow, in
  * split order (longest edge first). Crease tags pass to both halves of a split crease
  * edge; CORNER/FIXED tags stay with their vertices; polylines are copied. The output has
- * full adjacency (it passed subd_mesh_build's validator) and its arrays lie in the arena.
+ * full adjacency (each step derives it from its input's; arrays, tags and counts are those
+ * subd_mesh_build would build for the same faces) and its arrays lie in the arena.
  * The input is not modified.
  * Errors: those of subd_quasi48_plan, SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
  * SUBD_ERR_RANGE (float32 overflow to infinity; Q16.16 cannot overflow: every new position
  * is a convex combination). On failure the arena is back where it was and *out untouched.
- * Work per step: at most 8 radix passes over the edges, O(C + sum of valence^2) for the
- * adjacency (the mesh builder's validator); no recursion; stack under 500 bytes (448
- * measured on Cortex-M, plus the mesh builder's few dozen). */
+ * Work per step: at most 8 radix passes over the edges, O(C) for the adjacency; no
+ * recursion; stack under 600 bytes (subd_quasi48's own frame, with every step inlined:
+ * 440 / 456 bytes on Cortex-M4F / M3, plus at most 72 in the edge sort). */
 int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out,
                  subd_diag *d);
 

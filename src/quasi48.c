@@ -258,8 +258,10 @@ static uint32_t split_side(const subd_mesh *m, const q48_work *w, uint32_t f)
  * index and (v, b, c) appended in face order; other faces are copied. Crease tags pass to
  * both halves of a split edge and stay on unsplit sides. map[p] records where parent
  * half-edge p went: its child half-edge, or for a split half-edge its second half (v, b);
- * the first half (a, v) is always corner 0 of the face's kept child. */
-static void q48_split_faces(const subd_mesh *m, subd_mesh *o, const q48_work *w, uint32_t *map)
+ * the first half (a, v) is always corner 0 of the face's kept child. side[f] keeps f's
+ * split_side for q48_link_twins. */
+static void q48_split_faces(const subd_mesh *m, subd_mesh *o, const q48_work *w, uint32_t *map,
+                            uint8_t *side)
 {
     const uint8_t cr = SUBD_ETAG_CREASE;
     uint32_t f, j, k = m->num_faces; /* k: next appended face */
@@ -268,6 +270,7 @@ static void q48_split_faces(const subd_mesh *m, subd_mesh *o, const q48_work *w,
         uint32_t s = m->face_start[f], at = 3u * f;
         o->corner_face[at] = o->corner_face[at + 1u] = o->corner_face[at + 2u] = f;
         j = split_side(m, w, f);
+        side[f] = (uint8_t)j;
         if (j == 3u) {
             for (j = 0; j < 3u; j++) {
                 o->corner_vert[at + j] = m->corner_vert[s + j];
@@ -310,12 +313,12 @@ static uint32_t child_twin(const subd_mesh *m, const uint32_t *map, uint32_t p)
  * of a split edge (a, v), (v, b) pair with the halves (v, a), (b, v) of its twin, which was
  * split at the same vertex (both faces of a split edge are cut by it); the cut (v, c) pairs
  * with (c, v). */
-static void q48_link_twins(const subd_mesh *m, subd_mesh *o, const q48_work *w, const uint32_t *map)
+static void q48_link_twins(const subd_mesh *m, subd_mesh *o, const uint32_t *map, const uint8_t *side)
 {
     uint32_t f, j;
     for (f = 0; f < m->num_faces; f++) {
         uint32_t s = m->face_start[f], at = 3u * f;
-        j = split_side(m, w, f);
+        j = side[f];
         if (j == 3u) {
             for (j = 0; j < 3u; j++) o->twin[at + j] = child_twin(m, map, s + j);
         } else {
@@ -424,15 +427,16 @@ static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, 
                       q48_work *w, subd_diag *d)
 {
     const uint32_t nv = m->num_verts, nf = m->num_faces;
-    uint32_t ne, i, e, f, ns, nsf = 0, ovf = 0;
-    uint32_t *map;
+    uint32_t ne, i, e, ns, nsf = 0, ovf = 0;
 
     /* sort_edges, then split unmarked edges and mark their clusters (edge_sort.c) */
     ne = subd_edge_number(m, &w->es, m->num_corners);
     if (ne == SUBD_NONE) return subd_fail(d, SUBD_ERR_PARAM); /* cannot happen: E <= corners */
     ns = subd_edge_clusters(m, &w->es, ne, bits, 0, nv, w->split);
-    for (f = 0; f < nf; f++)
-        if (split_side(m, w, f) != 3u) nsf++;
+    /* faces cut: one per split boundary edge, two per split interior edge (a face has at
+     * most one split edge) */
+    for (e = 0; e < ne; e++)
+        if (w->split[e] != SUBD_NONE) nsf += (m->twin[w->es.edge_he[e]] == SUBD_NONE) ? 1u : 2u;
     /* ns <= nsf <= nf by the marking, so the bounds hold; checked anyway */
     if (nv + ns > cap->nv || nf + nsf > cap->nf) return subd_fail(d, SUBD_ERR_NOMEM);
 
@@ -444,17 +448,19 @@ static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, 
 
     /* positions: old vertices copied (q48_smooth moves them later), new ones placed */
     for (i = 0; i < 3u * nv; i++) o->pos[i] = m->pos[i];
-    for (e = 0; e < ne; e++)
-        if (w->split[e] != SUBD_NONE) q48_new_position(m, w->es.edge_he[e], smooth, o->pos + 3u * w->split[e], &ovf);
+    for (e = 0; e < ne; e++) {
+        if (w->split[e] == SUBD_NONE) continue;
+        q48_new_position(m, w->es.edge_he[e], smooth, o->pos + 3u * w->split[e], &ovf);
+    }
     if (ovf) return subd_fail(d, SUBD_ERR_RANGE);
     for (i = 0; i < nv; i++) w->vkeep[i] = (uint8_t)(m->vert_tag[i] & (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED));
     for (; i < nv + ns; i++) w->vkeep[i] = 0;
 
-    /* the sort's order array is free once the clusters are marked: it holds the half-edge
-     * map (one entry per parent corner; it has room for the largest step's input) */
-    map = w->es.ord[0];
-    q48_split_faces(m, o, w, map);
-    q48_link_twins(m, o, w, map);
+    /* the sort's order array and the cluster marks are free once the clusters are marked:
+     * they hold the half-edge map (one entry per parent corner) and the split side per
+     * parent face; both have an entry per corner of the largest step's input */
+    q48_split_faces(m, o, w, w->es.ord[0], w->es.mark);
+    q48_link_twins(m, o, w->es.ord[0], w->es.mark);
     q48_fans(o, w->vkeep);
     o->line_start[0] = 0;
     for (i = 0; i < m->num_lines; i++) o->line_start[i + 1u] = m->line_start[i + 1u];

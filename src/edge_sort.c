@@ -17,19 +17,60 @@
  *    (deterministic, no fused multiply-add), key from its bit pattern in the same format.
  *    The sort is an LSD radix sort (8-bit digits, passes over constant digits skipped):
  *    stable, so no tie key is needed, and no qsort.
+ *
+ * Speed (the results are those of the straightforward version, bit for bit):
+ *  - The rounded key is sorted shifted down by the dropped bits, r = rounded >> (53 - bits)
+ *    <= 2^60 >> (53 - bits) = 2^(bits + 7): with `bits` <= 24 it fits in 32 bits, so key
+ *    and half-edge travel as one 64-bit word and each pass moves 8 bytes, not 12. Only
+ *    digits where two keys differ are sorted (bits 12: about 15 varying bits, two passes,
+ *    where the 64-bit keys took three plus a counting pass for each of the 8 digits); the
+ *    first digit is counted while the keys are made. Descending order comes from handing
+ *    out the bucket offsets from the top digit down, which keeps the sort stable.
+ *  - Q16.16 bit length by halving, not a loop over up to 64 bits.
+ *  - The sort carries the edge's half-edge, not its number: the marking needs the
+ *    half-edge for every edge but the number only for the selected ones.
+ *  - Marking by face: an edge is in a marked cluster exactly when one of its faces
+ *    contains a selected edge (a selected edge lies in its own faces, and a cluster is
+ *    its edge's faces). So one flag per face (at most 2E/3 faces, in the `mark` array)
+ *    replaces the per-edge marks: a test is two flag reads, a selection two writes.
+ *  - Triangles: a face's corners are 3f..3f+2, so next/previous half-edge is arithmetic
+ *    on h instead of two dependent loads (corner_face, face_start) per ring step.
  */
 #include "edge_sort.h"
 
 #define ES_KEY_FRAC 52u
+/* With at most this many significant bits the shifted rounded key fits in 32 bits. */
+#define ES_PACK_BITS 24u
+
+/* True when every face is a triangle: then face f's corners are 3f, 3f+1, 3f+2 (faces have
+ * at least 3 corners and face_start[0] == 0, so 3 per face on average means 3 each). */
+static int es_all_tris(const subd_mesh *m) { return m->num_corners == 3u * m->num_faces; }
+
+static uint32_t es_tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
+static uint32_t es_tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
 
 /* ------------------------------------------------------------------------------------ */
 /* sort_edges                                                                             */
 
-/* Squared length of the edge of half-edge h as a monotonic key: (bit length of the value
- * in units of the arithmetic) << 52 | the 52 bits below its leading one. */
-static uint64_t es_len_key(const subd_mesh *m, uint32_t h)
+#if SUBD_FIXED
+/* Bit length of v (0 for 0), by halving instead of a loop over 64 bits. */
+static uint32_t es_bitlen64(uint64_t v)
 {
-    const subd_real *p = m->pos + 3u * subd_he_origin(m, h), *q = m->pos + 3u * subd_he_dest(m, h);
+    uint32_t n = 0;
+    if (v >> 32) { n += 32u; v >>= 32; }
+    if (v >> 16) { n += 16u; v >>= 16; }
+    if (v >> 8) { n += 8u; v >>= 8; }
+    if (v >> 4) { n += 4u; v >>= 4; }
+    if (v >> 2) { n += 2u; v >>= 2; }
+    if (v >> 1) { n += 1u; v >>= 1; }
+    return n + (uint32_t)v;
+}
+#endif
+
+/* Squared length of the edge from corner p to corner q as a monotonic key: (bit length of
+ * the value in units of the arithmetic) << 52 | the 52 bits below its leading one. */
+static uint64_t es_len_key(const subd_real *p, const subd_real *q)
+{
 #if SUBD_FIXED
     uint64_t lo = 0, hi = 0, top;
     uint32_t i, n = 0;
@@ -43,7 +84,7 @@ static uint64_t es_len_key(const subd_mesh *m, uint32_t h)
     if (hi == 0 && lo == 0) return 0;
     /* bit length n of hi:lo (hi <= 2) */
     if (hi) n = 64u + (hi > 1u ? 2u : 1u);
-    else for (top = lo; top; top >>= 1) n++;
+    else n = es_bitlen64(lo);
     if (n <= ES_KEY_FRAC + 1u) {
         top = lo << (ES_KEY_FRAC + 1u - n);
     } else {
@@ -63,107 +104,127 @@ static uint64_t es_len_key(const subd_mesh *m, uint32_t h)
 #endif
 }
 
-/* Rounds a key to `bits` significant bits (1..53), to nearest; the carry into the bit
- * length field is the correct result (as for floating-point numbers). */
-static uint64_t es_round_key(uint64_t k, uint32_t bits)
-{
-    uint32_t drop = ES_KEY_FRAC + 1u - bits;
-    if (drop == 0 || k == 0) return k;
-    k += 1ull << (drop - 1u);
-    return k & ~((1ull << drop) - 1u);
-}
-
 uint32_t subd_edge_number(const subd_mesh *m, const subd_edge_work *w, uint32_t cap)
 {
+    /* locals: the stores into edge_of (uint32_t) could otherwise alias m->num_corners */
+    const uint32_t nc = m->num_corners, nv = m->num_verts;
+    const uint32_t *twin = m->twin, *vert_out = m->vert_out;
+    uint32_t *edge_of = w->edge_of, *edge_he = w->edge_he;
+    const int tri = es_all_tris(m);
     uint32_t h, v, ne = 0;
-    for (h = 0; h < m->num_corners; h++) w->edge_of[h] = SUBD_NONE;
-    for (v = 0; v < m->num_verts; v++) {
-        uint32_t first = m->vert_out[v], last = SUBD_NONE, steps = 0;
+    for (h = 0; h < nc; h++) edge_of[h] = SUBD_NONE;
+    for (v = 0; v < nv; v++) {
+        uint32_t first = vert_out[v], last = SUBD_NONE, steps = 0;
         if (first == SUBD_NONE) continue;
-        for (h = first; h != SUBD_NONE && steps < m->num_corners; h = subd_ring_next(m, first, h), steps++) {
+        for (h = first; h != SUBD_NONE && steps < nc; steps++) {
             last = h;
-            if (w->edge_of[h] != SUBD_NONE) continue;
-            if (ne == cap) return SUBD_NONE;
-            w->edge_of[h] = ne;
-            if (m->twin[h] != SUBD_NONE) w->edge_of[m->twin[h]] = ne;
-            w->edge_he[ne++] = h;
-        }
-        if (m->twin[first] == SUBD_NONE) { /* boundary: the incoming boundary edge comes last */
-            h = subd_he_prev(m, last);
-            if (w->edge_of[h] == SUBD_NONE) {
+            if (edge_of[h] == SUBD_NONE) {
                 if (ne == cap) return SUBD_NONE;
-                w->edge_of[h] = ne;
-                w->edge_he[ne++] = h;
+                edge_of[h] = ne;
+                if (twin[h] != SUBD_NONE) edge_of[twin[h]] = ne;
+                edge_he[ne++] = h;
+            }
+            /* subd_ring_next */
+            h = twin[tri ? es_tri_prev(h) : subd_he_prev(m, h)];
+            if (h == first) h = SUBD_NONE;
+        }
+        if (twin[first] == SUBD_NONE) { /* boundary: the incoming boundary edge comes last */
+            h = tri ? es_tri_prev(last) : subd_he_prev(m, last);
+            if (edge_of[h] == SUBD_NONE) {
+                if (ne == cap) return SUBD_NONE;
+                edge_of[h] = ne;
+                edge_he[ne++] = h;
             }
         }
     }
     return ne;
 }
 
-/* Stable LSD radix sort of ord[0][0..n) by key[0] ascending, 8-bit digits; passes where
- * every key has the same digit are skipped. Returns the array that holds the result. */
-static const uint32_t *es_radix_sort(subd_edge_work *w, uint32_t n)
+/* Stable LSD radix sort of ks[0..n) (with os[0..n) alongside unless os is a null pointer) by
+ * descending (word >> lo), 8-bit digits; `vary` has a bit set wherever two of the shifted
+ * words differ, and digits without one are skipped. On entry cnt holds the counts of the
+ * lowest digit (the caller's key pass counts them, saving a pass over the keys). Returns
+ * the array that holds the words (*os_out: the one that holds os). */
+static const uint64_t *es_radix_sort(subd_edge_work *w, uint64_t *ks, uint64_t *kd, uint32_t *os, uint32_t *od,
+                                     uint32_t n, uint32_t lo, uint64_t vary, const uint32_t **os_out)
 {
-    uint64_t *ks = w->key[0], *kd = w->key[1], *kt;
-    uint32_t *os = w->ord[0], *od = w->ord[1], *ot;
+    uint32_t *cnt = w->cnt;
     uint32_t shift, i, d;
-    for (shift = 0; shift < 64u; shift += 8u) {
-        uint32_t sum = 0, skip = 0;
-        for (d = 0; d < 256u; d++) w->cnt[d] = 0;
-        for (i = 0; i < n; i++) w->cnt[(uint32_t)(ks[i] >> shift) & 255u]++;
-        for (d = 0; d < 256u; d++) {
-            uint32_t c = w->cnt[d];
-            if (c == n) skip = 1;
-            w->cnt[d] = sum;
+    for (shift = 0; shift < 64u - lo && (vary >> shift) != 0; shift += 8u) {
+        const uint32_t s = lo + shift;
+        uint32_t sum = 0;
+        uint64_t *kt;
+        uint32_t *ot;
+        if (((vary >> shift) & 255u) == 0) continue; /* the same digit in every word */
+        if (shift) {
+            for (d = 0; d < 256u; d++) cnt[d] = 0;
+            for (i = 0; i < n; i++) cnt[(uint32_t)(ks[i] >> s) & 255u]++;
+        }
+        for (d = 256u; d-- > 0;) { /* largest digit first */
+            uint32_t c = cnt[d];
+            cnt[d] = sum;
             sum += c;
         }
-        if (skip) continue;
-        for (i = 0; i < n; i++) {
-            uint32_t at = w->cnt[(uint32_t)(ks[i] >> shift) & 255u]++;
-            kd[at] = ks[i];
-            od[at] = os[i];
+        if (os) {
+            for (i = 0; i < n; i++) {
+                uint32_t at = cnt[(uint32_t)(ks[i] >> s) & 255u]++;
+                kd[at] = ks[i];
+                od[at] = os[i];
+            }
+            ot = os; os = od; od = ot;
+        } else {
+            for (i = 0; i < n; i++) kd[cnt[(uint32_t)(ks[i] >> s) & 255u]++] = ks[i];
         }
         kt = ks; ks = kd; kd = kt;
-        ot = os; os = od; od = ot;
     }
-    return os;
+    *os_out = os;
+    return ks;
 }
 
 /* ------------------------------------------------------------------------------------ */
-/* Marks e and every edge of the faces that contain e. */
-static void es_mark_cluster(const subd_mesh *m, const subd_edge_work *w, uint32_t e)
-{
-    uint32_t side, h = w->edge_he[e];
-    w->mark[e] = 1;
-    for (side = 0; side < 2u; side++) {
-        uint32_t s;
-        if (h == SUBD_NONE) break;
-        s = m->face_start[m->corner_face[h]];
-        w->mark[w->edge_of[s]] = 1;
-        w->mark[w->edge_of[s + 1u]] = 1;
-        w->mark[w->edge_of[s + 2u]] = 1;
-        h = m->twin[h];
-    }
-}
-
 uint32_t subd_edge_clusters(const subd_mesh *m, subd_edge_work *w, uint32_t ne, uint32_t bits, int interior_only,
                             uint32_t base, uint32_t *sel)
 {
-    uint32_t e, i, ns = 0;
-    const uint32_t *ord;
+    /* rounding to `bits` significant bits: add half of the lowest kept bit, shift the
+     * dropped bits out (the carry into the bit length field is the correct result, as for
+     * floating-point numbers; a key of 0 stays 0) */
+    const uint32_t drop = ES_KEY_FRAC + 1u - bits;
+    const uint64_t half = drop ? 1ull << (drop - 1u) : 0u;
+    const int packed = bits <= ES_PACK_BITS; /* key << 32 | half-edge in one word */
+    const uint32_t lo = packed ? 32u : 0u;
+    const uint32_t *cv = m->corner_vert, *twin = m->twin, *edge_he = w->edge_he, *edge_of = w->edge_of;
+    const subd_real *pos = m->pos;
+    uint64_t *key = w->key[0], k_or = 0, k_and = ~0ull;
+    uint32_t *cnt = w->cnt;
+    uint32_t *ord = w->ord[0];
+    uint8_t *used = w->mark; /* per face: contains a selected edge (see the file header) */
+    const uint64_t *sorted;
+    const uint32_t *sorted_he;
+    uint32_t e, i, f, ns = 0;
+    for (i = 0; i < 256u; i++) cnt[i] = 0;
     for (e = 0; e < ne; e++) {
-        w->key[0][e] = ~es_round_key(es_len_key(m, w->edge_he[e]), bits); /* ascending = longest first */
-        w->ord[0][e] = e;
+        uint32_t h = edge_he[e];
+        uint64_t r = (es_len_key(pos + 3u * cv[h], pos + 3u * cv[es_tri_next(h)]) + half) >> drop;
+        k_or |= r;
+        k_and &= r;
+        cnt[(uint32_t)r & 255u]++; /* the sort's first digit */
+        if (packed) {
+            key[e] = r << 32 | h;
+        } else {
+            key[e] = r;
+            ord[e] = h;
+        }
         sel[e] = SUBD_NONE;
-        w->mark[e] = 0;
     }
-    ord = es_radix_sort(w, ne);
+    for (f = 0; f < m->num_faces; f++) used[f] = 0;
+    sorted = es_radix_sort(w, key, w->key[1], packed ? (uint32_t *)0 : ord, w->ord[1], ne, lo, k_or ^ k_and, &sorted_he);
     for (i = 0; i < ne; i++) {
-        e = ord[i];
-        if (w->mark[e]) continue;
-        if (interior_only && m->twin[w->edge_he[e]] == SUBD_NONE) continue;
-        sel[e] = base + ns++;
-        es_mark_cluster(m, w, e);
+        uint32_t h = packed ? (uint32_t)sorted[i] : sorted_he[i], t = twin[h];
+        if (used[h / 3u] || (t != SUBD_NONE && used[t / 3u])) continue; /* in a cluster */
+        if (t == SUBD_NONE && interior_only) continue;
+        sel[edge_of[h]] = base + ns++;
+        used[h / 3u] = 1;
+        if (t != SUBD_NONE) used[t / 3u] = 1;
     }
     return ns;
 }

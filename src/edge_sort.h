@@ -7,13 +7,15 @@
 #include "subd.h"
 
 /* Working arrays, allocated by the caller: edge_of per half-edge; edge_he, key[0..1],
- * ord[0..1], mark per edge (at most the number of half-edges); cnt 256 radix counters. */
+ * ord[0..1], mark per edge (at most the number of half-edges; a triangle mesh has no more
+ * faces than edges, and mark holds one flag per face); cnt 256 radix counters. After
+ * subd_edge_clusters only edge_of and edge_he hold results; ord and mark are scratch. */
 typedef struct subd_edge_work {
     uint32_t *edge_of; /* per half-edge: its edge number (radial order)                   */
     uint32_t *edge_he; /* per edge: one of its half-edges (the first one numbered)         */
-    uint64_t *key[2];  /* sort keys, ping-pong                                             */
-    uint32_t *ord[2];  /* edge numbers, ping-pong                                          */
-    uint8_t *mark;     /* per edge: marked by a cluster                                    */
+    uint64_t *key[2];  /* sort keys (with bits <= 24: key << 32 | half-edge), ping-pong     */
+    uint32_t *ord[2];  /* half-edges alongside the keys when bits > 24, ping-pong          */
+    uint8_t *mark;     /* per face: holds an edge selected by a cluster                    */
     uint32_t *cnt;     /* 256 radix counters                                               */
 } subd_edge_work;
 

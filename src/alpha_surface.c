@@ -116,15 +116,6 @@ static void to_counts(const ds_stats *s, mesh_counts *c)
     c->nlv = 0;
 }
 
-/* Mesh arrays without the validator's scratch. */
-static uint32_t arrays_bytes(const mesh_counts *c)
-{
-    uint32_t total = subd_mesh_counts_bytes(c), scratch = 0;
-    subd_size_add(&scratch, c->nv + 1u, 4u);
-    subd_size_add(&scratch, c->nc, 4u);
-    return total == UINT32_MAX ? UINT32_MAX : total - scratch;
-}
-
 static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes, subd_diag *d)
 {
     ds_stats cur, nxt;
@@ -143,7 +134,7 @@ static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t 
         if (total == UINT32_MAX || (uint64_t)total + prev_arrays >= UINT32_MAX) return SUBD_ERR_TOO_BIG;
         here = total + prev_arrays;
         if (here > peak) peak = here;
-        prev_arrays = arrays_bytes(&c);
+        prev_arrays = subd_mesh_arrays_bytes(&c);
         cur = nxt;
     }
     *bytes = peak;
@@ -349,8 +340,8 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
         if (t > 0u) {
             /* drop the previous mesh: move this one down to where it started */
             subd_arena_rewind(arena, mark);
-            subd_mesh_move_down(&cur, arena->base + mark, arrays_bytes(&c));
-            subd_arena_alloc(arena, arrays_bytes(&c));
+            subd_mesh_move_down(&cur, arena->base + mark, subd_mesh_arrays_bytes(&c));
+            subd_arena_alloc(arena, subd_mesh_arrays_bytes(&c));
         }
         prev = cur;
         st_cur = nx;

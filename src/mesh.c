@@ -83,9 +83,10 @@ static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32
     ARR(m->line_vert, c->nlv, 4u);
 #undef ARR
     for (i = 0; i < n; i++) subd_size_add(&total, arr[i].count, arr[i].elem);
-    /* builder scratch: per-vertex bucket starts and the bucketed corners */
-    subd_size_add(&total, c->nv + 1u, 4u);
-    subd_size_add(&total, c->nc, 4u);
+    {
+        uint32_t scratch = subd_mesh_scratch_bytes(c);
+        total = (scratch == UINT32_MAX || total > UINT32_MAX - scratch) ? UINT32_MAX : total + scratch;
+    }
     if (c->nv == UINT32_MAX || c->nf == UINT32_MAX || c->nl == UINT32_MAX) total = UINT32_MAX;
     *bytes = total;
     if (!a) return SUBD_OK;
@@ -96,6 +97,20 @@ static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32
         *arr[i].slot = p;
     }
     return SUBD_OK;
+}
+
+uint32_t subd_mesh_scratch_bytes(const mesh_counts *c)
+{
+    uint32_t b = 0; /* per-vertex bucket starts and the bucketed corners */
+    subd_size_add(&b, c->nv + 1u, 4u);
+    subd_size_add(&b, c->nc, 4u);
+    return b;
+}
+
+uint32_t subd_mesh_arrays_bytes(const mesh_counts *c)
+{
+    uint32_t b = subd_mesh_counts_bytes(c);
+    return b == UINT32_MAX ? b : b - subd_mesh_scratch_bytes(c);
 }
 
 uint32_t subd_mesh_counts_bytes(const mesh_counts *c)

@@ -12,6 +12,9 @@ typedef struct mesh_counts {
 /* Exact bytes of the mesh arrays plus the builder's temporary memory; UINT32_MAX when the
  * counts are too large for 32-bit sizes. */
 uint32_t subd_mesh_counts_bytes(const mesh_counts *c);
+/* Its two parts: the builder's scratch (subd_mesh_finish) and the mesh arrays alone. */
+uint32_t subd_mesh_scratch_bytes(const mesh_counts *c);
+uint32_t subd_mesh_arrays_bytes(const mesh_counts *c);
 
 /* Allocates the mesh arrays (not the scratch) in the order subd_mesh_counts_bytes counts them and
  * sets every pointer and count of *m. Returns SUBD_OK or SUBD_ERR_NOMEM; on failure the

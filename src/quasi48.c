@@ -61,21 +61,6 @@ typedef struct q48_work {
     uint8_t *vkeep;     /* per output vertex: caller tags, then "pinned" during smoothing */
 } q48_work;
 
-static uint32_t builder_scratch(const mesh_counts *c)
-{
-    uint32_t b = 0;
-    subd_size_add(&b, c->nv + 1u, 4u);
-    subd_size_add(&b, c->nc, 4u);
-    return b;
-}
-
-/* Bytes of the mesh arrays alone (subd_mesh_counts_bytes adds the builder's scratch). */
-static uint32_t arrays_bytes(const mesh_counts *c)
-{
-    uint32_t b = subd_mesh_counts_bytes(c);
-    return b == UINT32_MAX ? b : b - builder_scratch(c);
-}
-
 static void add_bytes(uint32_t *total, uint32_t b)
 {
     if (b == UINT32_MAX || *total > UINT32_MAX - b) *total = UINT32_MAX;
@@ -88,7 +73,7 @@ static void add_bytes(uint32_t *total, uint32_t b)
  * allocation (it exceeds `above` only for inputs with many isolated vertices). */
 static uint32_t buffer_then(const mesh_counts *c, uint32_t above)
 {
-    uint32_t b = arrays_bytes(c), s = builder_scratch(c);
+    uint32_t b = subd_mesh_arrays_bytes(c), s = subd_mesh_scratch_bytes(c);
     add_bytes(&b, above > s ? above : s);
     return b;
 }

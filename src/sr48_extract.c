@@ -122,14 +122,6 @@ static void add_bytes(uint32_t *total, uint32_t b)
 
 static uint32_t max_u32(uint32_t a, uint32_t b) { return a > b ? a : b; }
 
-static uint32_t builder_scratch(const mesh_counts *c)
-{
-    uint32_t b = 0;
-    subd_size_add(&b, c->nv + 1u, 4u);
-    subd_size_add(&b, c->nc, 4u);
-    return b;
-}
-
 /* ------------------------------------------------------------------------------------ */
 /* Parameters and the hierarchy's shape.                                                  */
 
@@ -253,7 +245,7 @@ static uint32_t ex_need(const ex_layout *L, uint32_t nv, uint32_t nf)
     mc.nv = nv; mc.nf = nf; mc.nc = 3u * nf; mc.nl = 0; mc.nlv = 0;
     arrays = subd_mesh_counts_bytes(&mc);
     if (arrays == UINT32_MAX) return UINT32_MAX;
-    scratch = builder_scratch(&mc);
+    scratch = subd_mesh_scratch_bytes(&mc);
     arrays -= scratch;
     add_bytes(&b, arrays);
     add_bytes(&b, max_u32(scratch, L->vmap));

@@ -53,6 +53,39 @@ int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
     return CHECK_OK(st, &d);
 }
 
+subd_face_list h_torus(uint32_t n, uint32_t m, subd_real *pos, uint32_t *idx)
+{
+    subd_face_list fl;
+    uint32_t i, j, k = 0, ovf = 0;
+    subd_real r = subd_div(h_int(2), h_int(5), &ovf);
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++) {
+            subd_real cu = subd_cos_turns((int32_t)i, (int32_t)n), su = subd_sin_turns((int32_t)i, (int32_t)n);
+            subd_real cv = subd_cos_turns((int32_t)j, (int32_t)m), sv = subd_sin_turns((int32_t)j, (int32_t)m);
+            subd_real rad = subd_add(SUBD_REAL_ONE, subd_mul(r, cv, &ovf), &ovf);
+            uint32_t v = i * m + j;
+            pos[3 * v] = subd_mul(rad, cu, &ovf);
+            pos[3 * v + 1] = subd_mul(rad, su, &ovf);
+            pos[3 * v + 2] = subd_mul(r, sv, &ovf);
+        }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++) {
+            uint32_t a = i * m + j, b = ((i + 1) % n) * m + j;
+            uint32_t c = ((i + 1) % n) * m + (j + 1) % m, d = i * m + (j + 1) % m;
+            idx[k++] = a; idx[k++] = b; idx[k++] = c;
+            idx[k++] = a; idx[k++] = c; idx[k++] = d;
+        }
+    CHECK_EQ(ovf, 0);
+    fl.num_verts = n * m;
+    fl.pos = pos;
+    fl.num_faces = 2 * n * m;
+    fl.face_size = 0;
+    fl.index = idx;
+    fl.num_lines = 0;
+    fl.line_size = fl.line_index = 0;
+    return fl;
+}
+
 uint32_t h_fnv(uint32_t h, const void *data, uint32_t n)
 {
     const uint8_t *p = (const uint8_t *)data;

@@ -57,6 +57,10 @@ static inline double h_dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.
 /* subd_mesh_build of a face list that must succeed (a failed CHECK otherwise). */
 int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m);
 
+/* Torus of n x m quads (R = 1, r = 0.4) cut by the diagonals a-c: a closed genus-1 triangle
+ * mesh in pos (3 n m reals) and idx (6 n m indices). CHECKs that the coordinates fit. */
+subd_face_list h_torus(uint32_t n, uint32_t m, subd_real *pos, uint32_t *idx);
+
 /* Deterministic PRNG (xorshift32) for property tests: no rand(), no clocks. */
 uint32_t h_rand(uint32_t *state);
 

@@ -59,40 +59,6 @@ static void fan_list(subd_face_list *fl, uint32_t n, const subd_real *radius, su
     fl->line_size = fl->line_index = 0;
 }
 
-/* Torus of n x m quads (R = 1, r = 0.4), each cut by the diagonal a-c. */
-static void torus_list(subd_face_list *fl, uint32_t n, uint32_t m)
-{
-    uint32_t i, j, k = 0, ovf = 0;
-    subd_real r = R(2, 5);
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < m; j++) {
-            subd_real cu = subd_cos_turns((int32_t)i, (int32_t)n), su = subd_sin_turns((int32_t)i, (int32_t)n);
-            subd_real cv = subd_cos_turns((int32_t)j, (int32_t)m), sv = subd_sin_turns((int32_t)j, (int32_t)m);
-            subd_real rad = subd_add(SUBD_REAL_ONE, subd_mul(r, cv, &ovf), &ovf);
-            uint32_t v = i * m + j;
-            g_pos[3 * v] = subd_mul(rad, cu, &ovf);
-            g_pos[3 * v + 1] = subd_mul(rad, su, &ovf);
-            g_pos[3 * v + 2] = subd_mul(r, sv, &ovf);
-        }
-    }
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < m; j++) {
-            uint32_t a = i * m + j, b = ((i + 1) % n) * m + j;
-            uint32_t c = ((i + 1) % n) * m + (j + 1) % m, d = i * m + (j + 1) % m;
-            g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
-            g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
-        }
-    }
-    CHECK_EQ(ovf, 0);
-    fl->num_verts = n * m;
-    fl->pos = g_pos;
-    fl->num_faces = 2 * n * m;
-    fl->face_size = 0;
-    fl->index = g_idx;
-    fl->num_lines = 0;
-    fl->line_size = fl->line_index = 0;
-}
-
 /* Planar (n+1) x (n+1) grid of unit squares cut by alternating diagonals: an open disk. */
 static void grid_list(subd_face_list *fl, uint32_t n)
 {
@@ -432,7 +398,7 @@ static void q48_torus(void)
         subd_face_list fl;
         subd_mesh in, cur, m;
         subd_arena_init(&a, g_big, BIG_BYTES);
-        torus_list(&fl, dims[t][0], dims[t][1]);
+        fl = h_torus(dims[t][0], dims[t][1], g_pos, g_idx);
         if (!h_build(&a, &fl, &in)) return;
         cur = in;
         for (s = 1; s <= 4; s++) {
@@ -537,7 +503,7 @@ static void q48_tags_and_boundary(void)
     subd_real p0[3];
     /* torus with a fixed vertex, a corner and a crease loop (a meridian j = 0 ring) */
     subd_arena_init(&a, g_big, BIG_BYTES);
-    torus_list(&fl, 8, 4);
+    fl = h_torus(8, 4, g_pos, g_idx);
     if (!h_build(&a, &fl, &in)) return;
     in.vert_tag[5] |= SUBD_VTAG_FIXED;
     in.vert_tag[9] |= SUBD_VTAG_CORNER;

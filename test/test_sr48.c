@@ -87,32 +87,6 @@ static subd_face_list grid_list(uint32_t n, const subd_real *z)
     return tri_list((n + 1u) * (n + 1u), g_pos, 2u * n * n, g_idx);
 }
 
-/* Torus of n x m quads (R = 1, r = 0.4), each cut by a diagonal: a closed genus-1 mesh. */
-static subd_face_list torus_list(uint32_t n, uint32_t m)
-{
-    uint32_t i, j, k = 0, ovf = 0;
-    subd_real r = subd_div(h_int(2), h_int(5), &ovf);
-    for (i = 0; i < n; i++)
-        for (j = 0; j < m; j++) {
-            subd_real cu = subd_cos_turns((int32_t)i, (int32_t)n), su = subd_sin_turns((int32_t)i, (int32_t)n);
-            subd_real cv = subd_cos_turns((int32_t)j, (int32_t)m), sv = subd_sin_turns((int32_t)j, (int32_t)m);
-            subd_real rad = subd_add(SUBD_REAL_ONE, subd_mul(r, cv, &ovf), &ovf);
-            uint32_t v = i * m + j;
-            g_pos[3 * v] = subd_mul(rad, cu, &ovf);
-            g_pos[3 * v + 1] = subd_mul(rad, su, &ovf);
-            g_pos[3 * v + 2] = subd_mul(r, sv, &ovf);
-        }
-    for (i = 0; i < n; i++)
-        for (j = 0; j < m; j++) {
-            uint32_t a = i * m + j, b = ((i + 1) % n) * m + j;
-            uint32_t c = ((i + 1) % n) * m + (j + 1) % m, d = i * m + (j + 1) % m;
-            g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
-            g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
-        }
-    CHECK_EQ(ovf, 0);
-    return tri_list(n * m, g_pos, 2u * n * m, g_idx);
-}
-
 static int sr48(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *h)
 {
     subd_diag d;
@@ -243,7 +217,7 @@ static void sr48_preprocess_valences(void)
         valence_table_mesh(files[i] + 10, &a, &in, i != 1u); /* torus_tri: counting only (memory) */
     }
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    fl = torus_list(12, 6);
+    fl = h_torus(12, 6, g_pos, g_idx);
     if (h_build(&a, &fl, &in)) valence_table_mesh("torus 12x6", &a, &in, 1);
     h_str("    pre-processing valence transitions on these meshes (old -> new x count):");
     h_nl();
@@ -400,7 +374,7 @@ static void sr48_levels(void)
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (load_tri(&a, "test/data/spot_control_mesh.obj", &in)) levels_case("spot_control_mesh (fanned)", &in, &a, 0, 0);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    fl = torus_list(6, 3);
+    fl = h_torus(6, 3, g_pos, g_idx);
     if (h_build(&a, &fl, &in)) levels_case("torus 6x3", &in, &a, 3, 0);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     fl = grid_list(2, 0);

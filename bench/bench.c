@@ -501,6 +501,33 @@ static uint32_t max_valence(const subd_mesh *m)
     return mx;
 }
 
+/* Plan, skip with a reason (too big for 32-bit sizes, plan above PLAN_LIMIT, a failed
+ * plan), run once, then time: the common part of the per-steps rows of the quasi 4-8 and
+ * semi-regular 4-8 sections. Returns 1 with c still allocated (run_free it), else 0. */
+static int stepped_case(run_ctx *c, const char *name, uint32_t steps, double *ns, int *runs)
+{
+    double first;
+    int st = run_plan(c);
+    if (st == SUBD_ERR_TOO_BIG) {
+        printf("%-24s %5lu skipped (plan exceeds 32-bit sizes)\n", name, (unsigned long)steps);
+        return 0;
+    }
+    if (st != SUBD_OK) {
+        printf("%-24s %5lu plan FAILED: %s\n", name, (unsigned long)steps, subd_status_str(st));
+        return 0;
+    }
+    if ((double)c->plan > PLAN_LIMIT) {
+        printf("%-24s %5lu skipped (plan %lu bytes)\n", name, (unsigned long)steps, (unsigned long)c->plan);
+        return 0;
+    }
+    if (run_first(c, name, &first) != SUBD_OK) {
+        run_free(c);
+        return 0;
+    }
+    *ns = time_run(c, first, runs);
+    return 1;
+}
+
 static void section_q48(void)
 {
     static const uint32_t steps_list[] = {1u, 2u, 4u, 8u};
@@ -519,8 +546,8 @@ static void section_q48(void)
         }
         for (s = 0; s < sizeof steps_list / sizeof steps_list[0]; s++) {
             run_ctx c;
-            double ns, first;
-            int runs, st;
+            double ns;
+            int runs;
             char pk[16];
             memset(&c, 0, sizeof c);
             c.kind = RUN_Q48;
@@ -529,22 +556,7 @@ static void section_q48(void)
             c.qo.boundary = SUBD_Q48_BOUNDARY_FIXED;
             c.qo.flags = 0;
             c.qo.len_bits = 0;
-            st = run_plan(&c);
-            if (st == SUBD_ERR_TOO_BIG) {
-                printf("%-24s %5lu skipped (plan exceeds 32-bit sizes)\n", m->name, (unsigned long)c.qo.steps);
-                continue;
-            }
-            if (st != SUBD_OK) {
-                printf("%-24s %5lu plan FAILED: %s\n", m->name, (unsigned long)c.qo.steps, subd_status_str(st));
-                continue;
-            }
-            if ((double)c.plan > PLAN_LIMIT) {
-                printf("%-24s %5lu skipped (plan %lu bytes)\n", m->name, (unsigned long)c.qo.steps,
-                       (unsigned long)c.plan);
-                continue;
-            }
-            if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
-            ns = time_run(&c, first, &runs);
+            if (!stepped_case(&c, m->name, c.qo.steps, &ns, &runs)) continue;
             printf("%-24s %5lu %10lu %10lu %7lu %10.2f %10.1f %10.2f %13lu %7s %5d\n", m->name,
                    (unsigned long)c.qo.steps, (unsigned long)c.out.num_verts, (unsigned long)c.out.num_faces,
                    (unsigned long)max_valence(&c.out), ns / 1e6,
@@ -703,20 +715,14 @@ static void section_sr48(void)
         }
         for (s = 0; s < sizeof steps_list / sizeof steps_list[0]; s++) {
             run_ctx c;
-            double ns, first;
-            int runs, st;
+            double ns;
+            int runs;
             char pk[16];
             memset(&c, 0, sizeof c);
             c.kind = RUN_SR48;
             c.in = &m->hm.mesh;
             c.so.steps = steps_list[s];
-            st = run_plan(&c);
-            if (st != SUBD_OK) {
-                printf("%-24s %5lu skipped (%s)\n", m->name, (unsigned long)c.so.steps, subd_status_str(st));
-                continue;
-            }
-            if (run_first(&c, m->name, &first) != SUBD_OK) { run_free(&c); continue; }
-            ns = time_run(&c, first, &runs);
+            if (!stepped_case(&c, m->name, c.so.steps, &ns, &runs)) continue;
             printf("%-24s %5lu %10lu %12lu %10.2f %10.2f %13lu %7s %5d\n", m->name, (unsigned long)c.so.steps,
                    (unsigned long)c.h.num_verts, (unsigned long)c.h.num_tris, ns / 1e6,
                    (double)c.h.num_tris / 1e6 / (ns / 1e9), (unsigned long)c.plan, peak_str(&c, pk, sizeof pk), runs);

@@ -1,36 +1,16 @@
+/* SPDX-License-Identifier: MIT */
 /* Loop subdivision (Loop 1987) with the boundary rules of the progressive-interpolation
  * paper (loop-progressive-interpolation.txt, section 1 for the scheme, section 4 for the
  * boundary rules) and Hoppe et al. 1994 creases and corners.
  *
- * Rules, with v the old vertex, n its valence and p_i its neighbours:
- *   smooth vertex        (1 - n b) v + b sum p_i,  b = (5/8 - (3/8 + 1/4 cos(2 pi/n))^2) / n
- *   interior edge        3/8 (v0 + v1) + 1/8 (q0 + q1)   (q: the two opposite vertices)
- *   crease/boundary vtx  3/4 v + 1/8 (c0 + c1)           (c: the two sharp neighbours)
- *   sharp edge, PAPER    midpoint when both ends are regular or both extraordinary,
- *                        else 5/8 regular end + 3/8 extraordinary end
- *   sharp edge, BSPLINE  midpoint
- *   corner               stays where it is
- *
- * Choices where the paper is silent:
- *   - Sharp edges are boundary edges and edges tagged SUBD_ETAG_CREASE (on either half).
- *     A vertex is classified by its number of sharp edges (Hoppe et al. 1994): 0 smooth,
- *     1 dart (smooth rule), 2 crease (crease rule with its two sharp neighbours), 3 or more
- *     corner (fixed); SUBD_VTAG_CORNER forces corner. A boundary vertex always has two
- *     boundary edges, so it is a crease vertex unless tagged or a crease edge ends there.
- *   - Every sharp edge, boundary or crease, uses the sharp-edge rule of the chosen set,
- *     including one that ends at a dart (the dart end counts as extraordinary).
- *   - "Regular" for the PAPER edge rule: a crease vertex that looks like the ones
- *     refinement creates. On a boundary: valence 4 (the paper). In the interior: valence 6
- *     with the two crease edges opposite (three faces on each side; Hoppe's regular crease
- *     vertex). Darts, corners and every other crease vertex are extraordinary. New vertices on
- *     a sharp edge are always regular under this definition, as the paper requires.
+ * The rules, the vertex classification (smooth / dart / crease / corner, "regular" for the
+ * paper's 5/8-3/8 sharp-edge rule) and the weights are in loop_rules.h / loop_rules.c, the
+ * one home that loop_limit.c, pia.c and loop_stream.c use as well. Here:
  *   - SUBD_VTAG_FIXED is carried to the output but does not change any rule (Loop is an
  *     approximating scheme; tag a vertex CORNER to pin it).
- *   - The weight b comes from the deterministic cos of src/trig.c in Q2.62 and 64-bit
- *     integer arithmetic, rounded once to subd_real; the centre weight is ONE - n b in
- *     subd_real, so in Q16.16 the weights of every rule sum to exactly ONE (constants are
- *     reproduced exactly). In float32 the dyadic rules (edge, crease, n = 3, 4, 6) are exact;
- *     for other n the centre weight is the float nearest 1 - fl(n b), within 1 ulp.
+ *   - Every sharp edge, boundary or crease, uses the sharp-edge rule of the chosen set,
+ *     including one that ends at a dart (the dart end counts as extraordinary). New vertices
+ *     on a sharp edge are always regular, as the paper requires.
  *
  * Overflow: every rule is a convex combination (b > 0 and 1 - n b > 0 for n >= 2), and in
  * Q16.16 the weights are non-negative integers summing to exactly 2^16 and the sum is
@@ -87,15 +67,15 @@
  * output arrays. No other scratch: the per-vertex class is a private tag bit plus a
  * valence byte of the intermediate levels.
  */
+#include "loop_rules.h"
 #include "mesh_internal.h"
 
-#define ETAG_SHARP (SUBD_ETAG_BOUNDARY | SUBD_ETAG_CREASE)
+#define ETAG_SHARP LOOP_ETAG_SHARP
 #define VTAG_CALLER (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED)
 #define VTAG_REGULAR 0x80u /* private: regular crease vertex (PAPER sharp-edge rule)       */
 #define VTAG_SMOOTH 0x40u  /* private, intermediate levels: smooth interior vertex whose
                             * valence is in the level's val array (1..255)               */
 #define VTAG_PRIVATE (VTAG_REGULAR | VTAG_SMOOTH)
-#define BETA_CACHE 16u     /* b(n), 1 - n b(n) kept for n < BETA_CACHE during one call    */
 
 /* Counts of one level. */
 typedef struct loop_counts {
@@ -248,62 +228,6 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
 }
 
 /* ------------------------------------------------------------------------------------ */
-/* Weights                                                                                */
-
-/* round(A^2 / 2^66) for A < 2^64, from four 32x32 -> 64-bit products. */
-static uint64_t sq_q66(uint64_t a)
-{
-    uint64_t a0 = (uint32_t)a, a1 = a >> 32;
-    uint64_t p00 = a0 * a0, p01 = a0 * a1, p11 = a1 * a1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p01;
-    uint64_t hi = p11 + (p01 >> 32) + (p01 >> 32) + (mid >> 32);
-    return (hi >> 2) + ((hi >> 1) & 1u);
-}
-
-/* Loop's b(n) = (5/8 - (3/8 + 1/4 cos(2 pi / n))^2) / n, n >= 1. In Q2.62:
- * A = 4 (3/8 + c/4) = 3/2 + c lies in [1/2, 5/2] (as an unsigned value * 2^62 < 2^64),
- * (A/4)^2 = A^2 / 2^66 in Q62, the quotient by n rounded to nearest, then one rounding to
- * subd_real. Exact at n = 3, 4, 6 (3/16, 31/256, 1/16), where cos is exact. */
-static subd_real loop_beta(uint32_t n)
-{
-    int64_t c = subd_cos_turns_q62(1, (int32_t)n);
-    uint64_t a = ((uint64_t)3 << 61) + (uint64_t)c; /* c >= -2^62 > -3 * 2^61: no wrap */
-    uint64_t num = ((uint64_t)5 << 59) - sq_q66(a); /* >= 0: (A/4)^2 <= 25/64 < 5/8 */
-    return subd_real_from_q62((int64_t)((num + n / 2u) / n));
-}
-
-/* Neighbour weight b and centre weight 1 - n b of the smooth rule for valence n. */
-typedef struct weights {
-    subd_real b, wc;
-} weights;
-
-typedef struct beta_cache {
-    weights w[BETA_CACHE];
-    uint32_t have; /* bit n: w[n] is valid */
-} beta_cache;
-
-static weights weights_calc(uint32_t n, uint32_t *ovf)
-{
-    weights w;
-    w.b = loop_beta(n);
-    w.wc = SUBD_REAL_ONE;
-    /* b rounds to 0 in Q16.16 from n ~ 30000 on, before n overflows subd_from_int */
-    if (w.b != (subd_real)0) w.wc = subd_sub(w.wc, subd_mul(subd_from_int((int32_t)n, ovf), w.b, ovf), ovf);
-    return w;
-}
-
-/* For n < BETA_CACHE no overflow is possible (n b < 1), so caching drops no flag. */
-static weights weights_of(beta_cache *bc, uint32_t n, uint32_t *ovf)
-{
-    if (n >= BETA_CACHE) return weights_calc(n, ovf);
-    if (!(bc->have & (1u << n))) {
-        bc->w[n] = weights_calc(n, ovf);
-        bc->have |= 1u << n;
-    }
-    return bc->w[n];
-}
-
-/* ------------------------------------------------------------------------------------ */
 /* Navigation on a triangle level                                                         */
 
 static uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
@@ -369,35 +293,28 @@ static const subd_real *P(const loop_src *s, uint32_t v) { return s->pos + 3u * 
 
 /* Smooth rule on a level this file made: v is interior with valence n, so the ring is
  * exactly n steps of twin(prev(h)) from vert_out, in the order of the general walk. */
-static void smooth_fast(const loop_src *s, subd_real *out, uint32_t v, uint32_t n, weights w, uint32_t *ovf)
+static void smooth_fast(const loop_src *s, subd_real *out, uint32_t v, uint32_t n, loop_weights w, uint32_t *ovf)
 {
-    const subd_real *pv = P(s, v);
-    subd_acc a0 = subd_acc_add(subd_acc_zero(), w.wc, pv[0]);
-    subd_acc a1 = subd_acc_add(subd_acc_zero(), w.wc, pv[1]);
-    subd_acc a2 = subd_acc_add(subd_acc_zero(), w.wc, pv[2]);
+    subd_acc acc[3];
     uint32_t h = s->vout[v], k, nc = 3u * s->nf;
+    loop_smooth_begin(acc, w, P(s, v));
     for (k = 0; k < n; k++) {
         uint32_t r = h % 3u;
-        const subd_real *q = P(s, s->cv[r == 2u ? h - 2u : h + 1u]);
-        a0 = subd_acc_add(a0, w.b, q[0]);
-        a1 = subd_acc_add(a1, w.b, q[1]);
-        a2 = subd_acc_add(a2, w.b, q[2]);
+        loop_smooth_add(acc, w, P(s, s->cv[r == 2u ? h - 2u : h + 1u]));
         h = s->twin[r == 0u ? h + 2u : h - 1u];
         if (h >= nc) break; /* cannot happen on a made level; keeps reads in bounds */
     }
-    out[0] = subd_acc_real(a0, ovf);
-    out[1] = subd_acc_real(a1, ovf);
-    out[2] = subd_acc_real(a2, ovf);
+    loop_smooth_end(out, acc, ovf);
 }
 
 /* Even vertex v by the general walk, which also classifies it: child position, child tag
  * (public bits, REGULAR, and SMOOTH + valence when t->val is given) and child vert_out. */
-static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, beta_cache *bc, uint32_t *ovf)
+static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loop_wcache *bc, uint32_t *ovf)
 {
     subd_real *out = t->pos + 3u * v;
     const subd_real *pv = P(s, v);
     uint8_t tag = (uint8_t)(s->vtag[v] & VTAG_CALLER);
-    uint32_t n = 0, nsharp = 0, nb, snb[2] = {0, 0}, sidx[2] = {0, 0}, j, hmin = SUBD_NONE;
+    uint32_t n = 0, nsharp = 0, nb, snb[2] = {0, 0}, sidx[2] = {0, 0}, j, hmin = SUBD_NONE, cls;
     int sharp, boundary;
     ring_it it;
 
@@ -426,25 +343,19 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, bet
     /* vert_out as the builder chooses it: the boundary half-edge, else the smallest corner
      * (the children of v's corners are ordered like them) */
     if (t->vout) t->vout[v] = half_first(boundary ? s->vout[v] : hmin);
-    if ((s->vtag[v] & SUBD_VTAG_CORNER) || nsharp >= 3u) { /* corner: fixed */
+    cls = loop_class_of(nsharp, (s->vtag[v] & SUBD_VTAG_CORNER) != 0u);
+    if (cls == LOOP_CORNER) { /* corner: fixed */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
-    } else if (nsharp == 2u) { /* crease (or boundary) vertex */
-        const subd_real *x1 = P(s, snb[0]), *x2 = P(s, snb[1]);
-        for (j = 0; j < 3u; j++) {
-            subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_FRAC(3, 4), pv[j]);
-            acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), x1[j]);
-            acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), x2[j]);
-            out[j] = subd_acc_real(acc, ovf);
-        }
-        if (boundary ? n == 4u : (n == 6u && sidx[1] - sidx[0] == 3u)) tag |= VTAG_REGULAR;
+    } else if (cls == LOOP_CREASE) { /* crease (or boundary) vertex */
+        loop_rule_crease(out, pv, P(s, snb[0]), P(s, snb[1]), ovf);
+        if (loop_regular_of(cls, n, (uint32_t)boundary, sidx[0], sidx[1])) tag |= VTAG_REGULAR;
     } else { /* smooth or dart: Loop's rule */
-        weights w = weights_of(bc, n, ovf);
+        loop_weights w = loop_weights_of(bc, n, ovf);
         subd_acc acc[3];
-        for (j = 0; j < 3u; j++) acc[j] = subd_acc_add(subd_acc_zero(), w.wc, pv[j]);
+        loop_smooth_begin(acc, w, pv);
         ring_begin(s, v, &it);
-        while ((nb = ring_step(s, &it, &sharp)) != SUBD_NONE)
-            for (j = 0; j < 3u; j++) acc[j] = subd_acc_add(acc[j], w.b, P(s, nb)[j]);
-        for (j = 0; j < 3u; j++) out[j] = subd_acc_real(acc[j], ovf);
+        while ((nb = ring_step(s, &it, &sharp)) != SUBD_NONE) loop_smooth_add(acc, w, P(s, nb));
+        loop_smooth_end(out, acc, ovf);
         /* the child keeps the class: interior, valence n (not boundary: two sharp edges) */
         if (t->val && n <= 255u) {
             tag |= VTAG_SMOOTH;
@@ -468,7 +379,7 @@ static uint32_t new_vout(uint32_t f, uint32_t i, uint32_t tw)
     return 12u * f + smallest[i];
 }
 
-static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundary rule, beta_cache *bc,
+static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundary rule, loop_wcache *bc,
                          uint32_t *ovf)
 {
     uint32_t v, f, e = s->nv;
@@ -480,7 +391,7 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
         uint8_t st = s->made ? s->vtag[v] : (uint8_t)0u;
         if (st & VTAG_SMOOTH) {
             uint32_t n = s->val[v];
-            smooth_fast(s, t->pos + 3u * v, v, n, weights_of(bc, n, ovf), ovf);
+            smooth_fast(s, t->pos + 3u * v, v, n, loop_weights_of(bc, n, ovf), ovf);
             /* same class, same tags: interior, so only the caller bits and the class */
             t->vtag[v] = (uint8_t)(st & (VTAG_CALLER | keep));
             if (t->val) t->val[v] = (uint8_t)n;
@@ -519,31 +430,13 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
             {
                 const subd_real *xa = P(s, a), *xb = P(s, b);
                 subd_real *out = t->pos + 3u * e;
-                uint32_t j;
                 if (!sharp) {
-                    const subd_real *xc = P(s, s->cv[i == 0u ? h0 + 2u : h - 1u]);
-                    const subd_real *xd = P(s, s->cv[tri_prev(tw)]);
-                    for (j = 0; j < 3u; j++) {
-                        subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_FRAC(3, 8), xa[j]);
-                        acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 8), xb[j]);
-                        acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), xc[j]);
-                        acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), xd[j]);
-                        out[j] = subd_acc_real(acc, ovf);
-                    }
+                    loop_rule_edge(out, xa, xb, P(s, s->cv[i == 0u ? h0 + 2u : h - 1u]), P(s, s->cv[tri_prev(tw)]), ovf);
                     t->vtag[e] = (uint8_t)(VTAG_SMOOTH & keep);
                     if (t->val) t->val[e] = 6u;
                 } else {
-                    int ra = (t->vtag[a] & VTAG_REGULAR) != 0u, rb = (t->vtag[b] & VTAG_REGULAR) != 0u;
-                    subd_real wa = SUBD_REAL_FRAC(1, 2), wb = SUBD_REAL_FRAC(1, 2);
-                    if (rule == SUBD_LOOP_BOUNDARY_PAPER && ra != rb) {
-                        wa = ra ? SUBD_REAL_FRAC(5, 8) : SUBD_REAL_FRAC(3, 8);
-                        wb = rb ? SUBD_REAL_FRAC(5, 8) : SUBD_REAL_FRAC(3, 8);
-                    }
-                    for (j = 0; j < 3u; j++) {
-                        subd_acc acc = subd_acc_add(subd_acc_zero(), wa, xa[j]);
-                        acc = subd_acc_add(acc, wb, xb[j]);
-                        out[j] = subd_acc_real(acc, ovf);
-                    }
+                    loop_rule_sharp_edge(out, xa, xb, rule, (t->vtag[a] & VTAG_REGULAR) != 0u,
+                                         (t->vtag[b] & VTAG_REGULAR) != 0u, ovf);
                     /* a new vertex on a sharp edge is a regular crease vertex */
                     t->vtag[e] = (uint8_t)((tw == SUBD_NONE ? SUBD_VTAG_BOUNDARY : 0u) | (VTAG_REGULAR & keep));
                 }
@@ -613,7 +506,7 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     loop_counts cur;
     loop_src src;
     loop_dst fin;
-    beta_cache bc;
+    loop_wcache bc;
     subd_mesh m;
     uint8_t *base;
     uint32_t mark, k, ovf = 0, f, c, v, isolated = 0;

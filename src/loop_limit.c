@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loop limit positions and normals.
  *
  * Paper: loop-progressive-interpolation.txt, formula (3) (interior limit points) and
@@ -108,89 +109,19 @@
  * frame (subd_loop_limit with the normal code inlined) is below 1 KB on Cortex-M.
  */
 #include "loop_internal.h"
+#include "loop_rules.h"
 #include "mesh_internal.h"
 
-/* ------------------------------------------------------------------------------------ */
-/* Vertex classification (Hoppe et al. 1994, by the number of sharp edges at the vertex;
- * boundary edges count as sharp).                                                        */
+/* Vertex classes: loop_rules.h (the one classification of loop.c, this file and pia.c). */
+typedef loop_vinfo lim_vert;
+#define lim_classify loop_classify
 
-enum { LIM_ISOLATED, LIM_SMOOTH, LIM_DART, LIM_CREASE, LIM_CORNER };
-
-typedef struct lim_vert {
-    uint32_t cls;      /* LIM_*                                                          */
-    uint32_t valence;  /* number of neighbours                                           */
-    uint32_t c0, c1;   /* LIM_CREASE: the two neighbours along sharp edges, in ring order */
-    uint32_t i0, i1;   /* their positions in the ring (0 .. valence-1)                   */
-    uint32_t boundary; /* 1 on a boundary                                                */
-    uint32_t nsharp;   /* number of sharp edges                                          */
-} lim_vert;
-
-static int lim_sharp(const subd_mesh *m, uint32_t h)
-{
-    return m->twin[h] == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE) != 0u;
-}
-
-static void lim_classify(const subd_mesh *m, uint32_t v, lim_vert *o)
-{
-    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
-    o->valence = 0;
-    o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
-    o->boundary = 0;
-    if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
-        o->cls = LIM_ISOLATED;
-        return;
-    }
-    /* The walk visits each outgoing half-edge once; n <= num_corners bounds it. */
-    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
-        if (lim_sharp(m, h)) {
-            if (ns < 2u) {
-                s[ns] = subd_he_dest(m, h);
-                at[ns] = n;
-            }
-            ns++;
-        }
-        n++;
-        last = h;
-    }
-    if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
-        /* the incoming boundary edge: its origin is the last neighbour */
-        if (ns < 2u) {
-            s[ns] = m->corner_vert[subd_he_prev(m, last)];
-            at[ns] = n;
-        }
-        ns++;
-        n++;
-        o->boundary = 1;
-    }
-    o->valence = n;
-    o->nsharp = ns;
-    o->c0 = s[0];
-    o->c1 = s[1];
-    o->i0 = at[0];
-    o->i1 = at[1];
-    if (m->vert_tag[v] & SUBD_VTAG_CORNER) o->cls = LIM_CORNER;
-    else if (ns == 0u) o->cls = LIM_SMOOTH;
-    else if (ns == 1u) o->cls = LIM_DART;
-    else if (ns == 2u) o->cls = LIM_CREASE;
-    else o->cls = LIM_CORNER;
-}
-
-/* Regular for the paper's boundary rule: a crease vertex (two sharp edges, not a corner)
- * that looks like the ones refinement creates: valence 4 on a boundary (the paper); inside,
- * valence 6 with the two sharp edges opposite, three faces on each side (Hoppe et al.'s
- * regular crease vertex; the same definition as loop.c). */
-static int lim_regular_v(const lim_vert *c)
-{
-    if (c->cls != LIM_CREASE) return 0;
-    if (c->boundary) return c->valence == 4u;
-    return c->valence == 6u && c->i1 - c->i0 == 3u;
-}
-
+/* The class of neighbour v (regular or not, for the paper's curve rules). */
 static int lim_regular(const subd_mesh *m, uint32_t v)
 {
     lim_vert c;
     lim_classify(m, v, &c);
-    return lim_regular_v(&c);
+    return (int)c.regular;
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -237,20 +168,12 @@ typedef float lim_w;
 static lim_w lim_w_from_q62(uint64_t q) { return subd_real_from_q62((int64_t)q); }
 #endif
 
-/* B = n beta = 5/8 - x^2 in Q62, x = 3/8 + 1/4 cos(2 pi/n) in [1/8, 5/8] (Loop's beta). */
-static uint64_t lim_nbeta_q62(uint32_t n)
-{
-    int64_t c = subd_cos_turns_q62(1, (int32_t)n);
-    uint64_t x = ((uint64_t)3 << 59) + (uint64_t)(c / 4); /* > 0 */
-    return ((uint64_t)5 << 59) - lim_mul_q62(x, x);
-}
-
 /* chi(n) = 1 / (n + 3 / (8 beta)) with Loop's beta = (5/8 - (3/8 + 1/4 cos(2 pi/n))^2) / n.
  * With B = n beta:  chi = 8B / (n (8B + 3)),  centre 1 - n chi = 3 / (8B + 3),
  * the paper's beta_n of formula (3). Computed in Q62 and rounded once. */
 static lim_w lim_chi(uint32_t n)
 {
-    uint64_t bq = lim_nbeta_q62(n) >> 3;           /* B/8 in Q62 = B in Q59 */
+    uint64_t bq = loop_nbeta_q62(n) >> 3;           /* B/8 in Q62 = B in Q59 */
     uint64_t r = lim_div_q62(bq, bq + ((uint64_t)3 << 56)); /* 8B / (8B + 3) < 1 */
     return lim_w_from_q62((r + n / 2u) / n);
 }
@@ -304,7 +227,7 @@ static uint64_t lim_dart_b(const lim_dart *s, uint32_t m)
  * midpoint on the first level (the sharp neighbour is not regular). */
 static void lim_dart_setup(lim_dart *s, uint32_t n, uint32_t w8, int first_mid)
 {
-    uint64_t b60 = lim_nbeta_q62(n) >> 2, beta = (b60 + n / 2u) / n, sq, sumb, bk;
+    uint64_t b60 = loop_nbeta_q62(n) >> 2, beta = (b60 + n / 2u) / n, sq, sumb, bk;
     s->n = n;
     s->c83 = (8u * b60 + (3u * n) / 2u) / (3u * n);
     s->rn = lim_pow_q62(LIM_R_Q62, n);
@@ -363,7 +286,7 @@ static void lim_curve_weights(const subd_mesh *m, subd_loop_boundary b, const li
         *w0 = *w1 = LIM_W_FRAC(1, 6);
         return;
     }
-    rv = lim_regular_v(c);
+    rv = (int)c->regular;
     r0 = lim_regular(m, c->c0);
     r1 = lim_regular(m, c->c1);
     if (rv) {
@@ -380,7 +303,7 @@ static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_re
 {
     const subd_real *pv = &ctrl[3u * v];
     uint32_t k;
-    if (c->cls == LIM_SMOOTH) {
+    if (c->cls == LOOP_SMOOTH) {
         uint32_t first = m->vert_out[v], h, n = 0;
         lim_wide s[3];
         lim_w w = lim_chi_cached(cache, c->valence);
@@ -397,7 +320,7 @@ static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_re
             out[k] = lim_finish(pv[k], t, ovf);
         }
 #endif
-    } else if (c->cls == LIM_DART) {
+    } else if (c->cls == LOOP_DART) {
         uint32_t first = m->vert_out[v], h, i = 0, n = c->valence;
         lim_wide acc[3];
         lim_dart ds;
@@ -410,7 +333,7 @@ static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_re
             for (k = 0; k < 3u; k++) acc[k] = lim_madd_w(acc[k], w, lim_diff(p[k], pv[k]));
         }
         for (k = 0; k < 3u; k++) out[k] = lim_finish(pv[k], acc[k], ovf);
-    } else if (c->cls == LIM_CREASE) {
+    } else if (c->cls == LOOP_CREASE) {
         const subd_real *p0 = &ctrl[3u * c->c0], *p1 = &ctrl[3u * c->c1];
         lim_w w0, w1;
         lim_curve_weights(m, b, c, &w0, &w1);
@@ -727,7 +650,7 @@ static void lim_dart_sym_power(uint32_t n, int64_t *bv)
     /* bv[0] = weight of v, bv[1 + m] = b_m for m = 0..n/2 (b_0: the sharp neighbour); the
      * full ring has b_m = b_(n-m). One step bv <- bv S is done in place, keeping the old
      * b_(j-1) in prev. */
-    uint64_t bq = lim_nbeta_q62(n), beta30 = ((bq >> 32) + n / 2u) / n; /* beta in Q30 */
+    uint64_t bq = loop_nbeta_q62(n), beta30 = ((bq >> 32) + n / 2u) / n; /* beta in Q30 */
     int64_t beta = (int64_t)beta30, cbeta = ((int64_t)1 << 30) - (int64_t)n * beta, big;
     uint32_t h = n / 2u, it, j;
     for (j = 0; j <= h; j++) /* start: the cos mask, in Q30 */
@@ -830,7 +753,7 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
     /* an interior corner: start the walk at its first sharp edge (a boundary one starts
      * at its boundary edge already) */
     if (!boundary)
-        for (h = first; h != SUBD_NONE && s0 < n && !lim_sharp(m, h); h = subd_ring_next(m, first, h)) s0++;
+        for (h = first; h != SUBD_NONE && s0 < n && !loop_edge_sharp(m, h); h = subd_ring_next(m, first, h)) s0++;
     h = first;
     for (i = 0; i < s0; i++) (void)lim_ring_step(m, first, &h, &last);
     /* faces (v, p_j, p_j+1) for j = s0 .. s0 + nfaces - 1; sector ends at sharp edges */
@@ -848,7 +771,7 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
             subd_real fn[3];
             lim_unit_cross(dp, d, fn);
             lim_add_unit(fan, fn);
-            if (he == SUBD_NONE || lim_sharp(m, he) || i == nfaces) {
+            if (he == SUBD_NONE || loop_edge_sharp(m, he) || i == nfaces) {
                 subd_real sn[3];
                 lim_wide sw[3];
                 lim_unit_cross(d0, d, sn);
@@ -883,15 +806,15 @@ static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real
     lim_wide t1[3], t2[3];
     uint32_t k, n = c->valence;
     for (k = 0; k < 3u; k++) out[k] = (subd_real)0;
-    if (c->cls == LIM_SMOOTH || (c->cls == LIM_CORNER && c->nsharp <= 1u)) {
+    if (c->cls == LOOP_SMOOTH || (c->cls == LOOP_CORNER && c->nsharp <= 1u)) {
         lim_smooth_tangents(m, ctrl, v, n, 0u, tab, t1, t2);
         lim_unit_cross(t1, t2, out);
-    } else if (c->cls == LIM_DART) {
+    } else if (c->cls == LOOP_DART) {
         lim_dart_normal(m, b, ctrl, v, c, out);
-    } else if (c->cls == LIM_CORNER) {
+    } else if (c->cls == LOOP_CORNER) {
         lim_corner_normal(m, ctrl, v, n, c->boundary != 0u, out);
-    } else if (c->cls == LIM_CREASE) {
-        int rv = b == SUBD_LOOP_BOUNDARY_PAPER && lim_regular_v(c);
+    } else if (c->cls == LOOP_CREASE) {
+        int rv = b == SUBD_LOOP_BOUNDARY_PAPER && (int)c->regular;
         int r0 = b == SUBD_LOOP_BOUNDARY_PAPER && lim_regular(m, c->c0);
         int r1 = b == SUBD_LOOP_BOUNDARY_PAPER && lim_regular(m, c->c1);
         int32_t w8v = (b == SUBD_LOOP_BOUNDARY_BSPLINE || rv) ? 4 : 3;

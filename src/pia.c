@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Progressive interpolation with Loop subdivision surfaces.
  *
  * Paper: F. Cheng, F. Fan, S. Lai, C. Huang, J. Wang, J. Yong, "Loop subdivision surface
@@ -141,6 +142,7 @@
  * O(vertices); an SGS step does 1.5 applications' worth (three half-row passes).
  */
 #include "loop_internal.h"
+#include "loop_rules.h"
 #include "mesh_internal.h"
 
 #define PIA_STALL 10u         /* iterations without a new minimum that end a phase        */
@@ -376,43 +378,33 @@ static subd_real pia_weight_smooth(uint32_t n, uint32_t *ovf)
                     subd_div(subd_sub(SUBD_REAL_ONE, x2, ovf), subd_sub(SUBD_REAL_FRAC(5, 8), x2, ovf), ovf), ovf);
 }
 
-/* Class and CG weight of every vertex, by the rules of loop_limit.c: sharp edges are
- * boundary and crease edges; a SUBD_VTAG_CORNER vertex or one with three or more sharp
- * edges is a corner; two sharp edges make a curve vertex, regular when its valence is 4 on a
- * boundary or 6 inside; fewer make a smooth vertex (one: a dart, formula (3) as well). */
+/* Class and CG weight of every vertex, by loop_classify (loop_rules.h, the classification of
+ * loop.c and loop_limit.c): a corner (tagged, or three or more sharp edges) or isolated
+ * vertex is fixed; two sharp edges make a curve vertex (regular as loop_rules.h defines it:
+ * valence 4 on a boundary, valence 6 with opposite sharp edges inside); fewer make a smooth
+ * vertex (one: a dart, formula (3) as well). */
 static void pia_classify(pia_state *s)
 {
     const subd_mesh *m = s->m;
     const subd_real curve = (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) ? SUBD_REAL_FRAC(1, 3) : SUBD_REAL_FRAC(1, 5);
     subd_real lo, cache[PIA_WCACHE];
-    uint32_t v, h, first, n, ns;
-    int bnd;
+    uint32_t v, n, ns;
+    loop_vinfo c;
     for (v = 0; v < PIA_WCACHE; v++) cache[v] = 0;
     s->ell = SUBD_REAL_FRAC(1, 3);
     s->darts = 0;
     for (v = 0; v < m->num_verts; v++) {
-        first = m->vert_out[v];
         s->cls[v] = PIA_CLS_FIXED;
         s->w[v] = 0;
         s->od[v] = 0;
-        if (first == SUBD_NONE || (m->vert_tag[v] & (SUBD_VTAG_ISOLATED | SUBD_VTAG_CORNER))) continue;
-        bnd = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
-        n = 0;
-        ns = 0;
-        /* the walk visits each outgoing half-edge once; n <= num_corners bounds it */
-        for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
-            n++;
-            if (m->twin[h] == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) ns++;
-        }
-        if (bnd) { /* the incoming boundary edge */
-            n++;
-            ns++;
-        }
-        if (ns >= 3u) continue;
+        loop_classify(m, v, &c);
+        if (c.cls == LOOP_ISOLATED || c.cls == LOOP_CORNER) continue;
+        n = c.valence;
+        ns = c.nsharp;
         if (ns == 2u) {
             s->cls[v] = PIA_CLS_CURVE;
             if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) s->w[v] = SUBD_REAL_ONE;
-            else s->w[v] = subd_from_int(n == (bnd ? 4u : 6u) ? 48 : 35, &s->ovf);
+            else s->w[v] = subd_from_int(c.regular ? 48 : 35, &s->ovf);
             lo = curve;
         } else {
             s->cls[v] = PIA_CLS_SMOOTH;

@@ -1,0 +1,94 @@
+/* SPDX-License-Identifier: MIT */
+/* Loop subdivision's vertex classification and smooth-rule weights (the rules themselves are
+ * inline in loop_rules.h). See loop_rules.h for the definitions; this file holds the parts
+ * that walk a mesh or do 64-bit integer arithmetic. */
+#include "loop_rules.h"
+
+int loop_edge_sharp(const subd_mesh *m, uint32_t h)
+{
+    uint32_t t = m->twin[h];
+    if (t == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) return 1;
+    return (m->edge_tag[t] & SUBD_ETAG_CREASE) != 0u;
+}
+
+void loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
+{
+    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
+    o->valence = 0;
+    o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
+    o->boundary = 0;
+    o->regular = 0;
+    if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
+        o->cls = LOOP_ISOLATED;
+        return;
+    }
+    /* The walk visits each outgoing half-edge once; n <= num_corners bounds it. */
+    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
+        if (loop_edge_sharp(m, h)) {
+            if (ns < 2u) {
+                s[ns] = subd_he_dest(m, h);
+                at[ns] = n;
+            }
+            ns++;
+        }
+        n++;
+        last = h;
+    }
+    if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
+        /* the incoming boundary edge: its origin is the last neighbour */
+        if (ns < 2u) {
+            s[ns] = m->corner_vert[subd_he_prev(m, last)];
+            at[ns] = n;
+        }
+        ns++;
+        n++;
+        o->boundary = 1;
+    }
+    o->valence = n;
+    o->nsharp = ns;
+    o->c0 = s[0];
+    o->c1 = s[1];
+    o->i0 = at[0];
+    o->i1 = at[1];
+    o->cls = loop_class_of(ns, (m->vert_tag[v] & SUBD_VTAG_CORNER) != 0u);
+    o->regular = loop_regular_of(o->cls, n, o->boundary, at[0], at[1]);
+}
+
+/* round(A^2 / 2^66) for A < 2^64, from four 32x32 -> 64-bit products. */
+static uint64_t sq_q66(uint64_t a)
+{
+    uint64_t a0 = (uint32_t)a, a1 = a >> 32;
+    uint64_t p00 = a0 * a0, p01 = a0 * a1, p11 = a1 * a1;
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p01;
+    uint64_t hi = p11 + (p01 >> 32) + (p01 >> 32) + (mid >> 32);
+    return (hi >> 2) + ((hi >> 1) & 1u);
+}
+
+/* A = 4 (3/8 + c/4) = 3/2 + c lies in [1/2, 5/2] (as an unsigned value * 2^62 < 2^64),
+ * (A/4)^2 = A^2 / 2^66 in Q62. */
+uint64_t loop_nbeta_q62(uint32_t n)
+{
+    int64_t c = subd_cos_turns_q62(1, (int32_t)n);
+    uint64_t a = ((uint64_t)3 << 61) + (uint64_t)c; /* c >= -2^62 > -3 * 2^61: no wrap */
+    return ((uint64_t)5 << 59) - sq_q66(a);         /* >= 0: (A/4)^2 <= 25/64 < 5/8 */
+}
+
+static loop_weights weights_calc(uint32_t n, uint32_t *ovf)
+{
+    loop_weights w;
+    w.b = subd_real_from_q62((int64_t)((loop_nbeta_q62(n) + n / 2u) / n)); /* rounded quotient */
+    w.wc = SUBD_REAL_ONE;
+    /* b rounds to 0 in Q16.16 from n ~ 30000 on, before n overflows subd_from_int */
+    if (w.b != (subd_real)0) w.wc = subd_sub(w.wc, subd_mul(subd_from_int((int32_t)n, ovf), w.b, ovf), ovf);
+    return w;
+}
+
+loop_weights loop_weights_of(loop_wcache *c, uint32_t n, uint32_t *ovf)
+{
+    if (n >= LOOP_WCACHE) return weights_calc(n, ovf);
+    if (!(c->have & (1u << n))) {
+        c->w[n] = weights_calc(n, ovf);
+        c->have |= 1u << n;
+    }
+    return c->w[n];
+}

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loop subdivision, Loop limit positions and normals, and progressive interpolation
  * (paper: loop-progressive-interpolation.txt; formulas and traps in REFERENCE.md).
  * Included by subd.h. */
@@ -94,6 +95,95 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
  * weights sum to exactly 1, so RANGE cannot occur in Q16.16; in float32 it means a sum
  * near FLT_MAX rounded to infinity. Work O(4^levels * corners); stack about 650 bytes (Cortex-M4). */
 int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *d);
+
+/* ------------------------------------------------------------------------------------ */
+/* Streaming Loop: any level in memory independent of the mesh and the output             */
+
+/* One output triangle: for each corner (in subd_loop's corner order) its position, its
+ * global vertex id and, with SUBD_LOOP_STREAM_LIMIT, its unit limit normal (else zeros). */
+typedef struct subd_loop_tri {
+    subd_real pos[3][3];
+    subd_real normal[3][3];
+    uint64_t id[3];
+} subd_loop_tri;
+
+/* The caller's consumer. tri is called once per triangle; the triangle is valid only during
+ * the call. A non-zero return stops the stream at once: subd_loop_stream returns that value
+ * unchanged (use positive values to tell them from the library's negative statuses). */
+typedef struct subd_loop_sink {
+    int (*tri)(void *ctx, const subd_loop_tri *t);
+    void *ctx;
+} subd_loop_sink;
+
+/* subd_loop_opts.flags for the stream (SUBD_LOOP_ADJACENCY does not apply) */
+#define SUBD_LOOP_STREAM_LIMIT 0x2u /* emit limit positions and unit limit normals */
+
+/* Exact arena bytes subd_loop_stream needs: a function of the level count, the largest
+ * valence of the input (neighbours per vertex, at least 6 is assumed) and the LIMIT flag
+ * only, never of the number of faces; SUBD_LOOP_STREAM_BYTES gives the same number at compile
+ * time. Validates like subd_loop (SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE); SUBD_ERR_TOO_BIG when
+ * a valence exceeds SUBD_LOOP_STREAM_MAX_VALENCE. Work O(corners), no arena use. */
+int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
+
+/* Largest valence the stream takes (local indices are 16-bit). */
+#define SUBD_LOOP_STREAM_MAX_VALENCE 2000u
+
+/* `levels` steps of Loop subdivision of `in`, exactly as subd_loop computes them, handed to
+ * sink->tri one triangle at a time instead of stored. Emission order: control face by
+ * control face; inside face f its 4^L triangles in subd_loop's order, so the j-th triangle
+ * emitted is subd_loop's output face j, with the same corners in the same order.
+ * Same surface: every position is bit-identical to the same vertex of subd_loop's level-L
+ * mesh (both boundary rules, creases, corners, both arithmetics), so a vertex shared by
+ * several triangles gets the same bits from each (no cracks).
+ * Global vertex ids, closed form (N = 2^L, V, C = the input's vertex and corner counts):
+ *   control vertex v:                              v
+ *   inside the edge of lower half-edge h, at lattice position s = 1..N-1 counted from the
+ *   end with the smaller vertex id:                V + h (N - 1) + s - 1
+ *   inside face f at lattice point a v1 + b v2 (a, b >= 1, a + b <= N - 1, in units of
+ *   1/N from corner v0 along the face's edges v0->v1 and v0->v2):
+ *                                                  V + C (N - 1) + f (N - 1)(N - 2)/2
+ *                                                    + (a - 1)(N - 1) - (a - 1) a / 2 + b - 1
+ * Equal ids have equal bits. The ids are a bijection onto subd_loop's vertices that some face
+ * uses, but not dense: an interior edge's upper half-edge h names no vertices, so
+ * (C - E)(N - 1) ids are unused (a host that wants dense indices numbers edges itself).
+ * With SUBD_LOOP_STREAM_LIMIT each corner is moved to its limit position and gets its unit
+ * limit normal, as subd_loop_limit of subd_loop's level-L output.
+ * Memory: the arena holds one control face's 1-ring per level, refined depth first (an
+ * explicit stack, no recursion); nothing stays in the arena after the call. Stack: about
+ * 300 bytes plus the sink's. Errors: as subd_loop_stream_plan, SUBD_ERR_NOMEM
+ * (diag.bytes_needed) before anything is emitted; SUBD_ERR_RANGE (float32: a position
+ * overflowed; diag.face the control face) before the triangle that holds it is emitted;
+ * or the sink's non-zero value (diag.face: the control face being streamed). The arena is
+ * always back where it was. Work O(4^levels * faces), about a constant times subd_loop's. */
+int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
+                     subd_diag *d);
+
+/* The plan at compile time, for a static buffer: levels L (1..SUBD_MAX_LEVELS), largest
+ * valence N; SUBD_LOOP_STREAM_BYTES_LIMIT for SUBD_LOOP_STREAM_LIMIT. A uint32_t constant
+ * expression equal to subd_loop_stream_plan. Example:
+ *     static uint8_t buf[SUBD_LOOP_STREAM_BYTES(6, 8)] __attribute__((aligned(8)));
+ * Per level k < L (k = 0: the control face's 1-ring, corners of valence up to N; k >= 1:
+ * at most one corner above valence 6): positions, flags, ring starts, corners, twins, sharp
+ * bits and the refined values of the level; then the scratch of one extraction. */
+#define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
+#define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
+#define SUBD_LOOP_SN_(N) ((uint32_t)(N) < 6u ? 6u : (uint32_t)(N))
+#define SUBD_LOOP_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
+/* faces, vertices, cached values of a level whose corner valences sum to at most S */
+#define SUBD_LOOP_SF_(S) ((S) - 2u)
+#define SUBD_LOOP_SV_(S) ((S) - 3u)
+#define SUBD_LOOP_SC_(S) (S)
+#define SUBD_LOOP_SLEV_(S, cache, ctl) \
+    (SUBD_LOOP_SA_(3u * 4u * SUBD_LOOP_SV_(S)) + SUBD_LOOP_SA_(SUBD_LOOP_SV_(S)) + \
+     SUBD_LOOP_SA_(2u * SUBD_LOOP_SV_(S)) + 3u * SUBD_LOOP_SA_(2u * 3u * SUBD_LOOP_SF_(S)) + \
+     SUBD_LOOP_SA_(3u * SUBD_LOOP_SF_(S)) + \
+     ((cache) ? SUBD_LOOP_SA_(3u * 4u * SUBD_LOOP_SC_(S)) + SUBD_LOOP_SA_(SUBD_LOOP_SC_(S)) : 0u) + \
+     ((ctl) ? SUBD_LOOP_SA_(4u * SUBD_LOOP_SF_(S)) + SUBD_LOOP_SA_(4u * SUBD_LOOP_SV_(S)) : 0u))
+#define SUBD_LOOP_SSCR_(S) (SUBD_LOOP_SA_(2u * SUBD_LOOP_SC_(S)) + SUBD_LOOP_SA_(2u * 4u * SUBD_LOOP_SF_(S)))
+#define SUBD_LOOP_STREAM_BYTES_(L, N, lim) \
+    (SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
+     ((L) - 1u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */

@@ -67,6 +67,7 @@
  * output arrays. No other scratch: the per-vertex class is a private tag bit plus a
  * valence byte of the intermediate levels.
  */
+#include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
 
@@ -175,19 +176,26 @@ static int mesh_ok(const subd_mesh *m)
     return 1;
 }
 
+int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d)
+{
+    if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
+    if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
+    if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
+        return subd_fail(d, SUBD_ERR_PARAM);
+    if (o->flags & ~flags) return subd_fail(d, SUBD_ERR_PARAM);
+    if (in->face_start[0] != 0u || in->face_start[in->num_faces] != in->num_corners)
+        return subd_fail(d, SUBD_ERR_PARAM);
+    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
+    return SUBD_OK;
+}
+
 /* Checks the arguments and the input, and computes the one layout of plan and run. */
 static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_layout *lay, subd_diag *d)
 {
     loop_counts prev2, prev1, cur;
     uint32_t h, nbe = 0, k, lv_off[LV_N], b1 = 0, b2 = 0, front;
-    if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
-    if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
-    if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
-        return subd_fail(d, SUBD_ERR_PARAM);
-    if (o->flags & ~SUBD_LOOP_ADJACENCY) return subd_fail(d, SUBD_ERR_PARAM);
-    if (in->face_start[0] != 0u || in->face_start[in->num_faces] != in->num_corners)
-        return subd_fail(d, SUBD_ERR_PARAM);
-    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
+    int st = subd_loop_check(in, o, SUBD_LOOP_ADJACENCY, d);
+    if (st != SUBD_OK) return st;
     for (h = 0; h < in->num_corners; h++)
         if (in->twin[h] == SUBD_NONE) nbe++;
     cur.nv = in->num_verts;

@@ -1,4 +1,5 @@
-/* Private interface between the Loop files (loop.c, loop_limit.c, pia.c). */
+/* SPDX-License-Identifier: MIT */
+/* Private interface between the Loop files (loop.c, loop_limit.c, pia.c, loop_stream.c). */
 #ifndef SUBD_LOOP_INTERNAL_H
 #define SUBD_LOOP_INTERNAL_H
 #include "subd.h"
@@ -9,4 +10,8 @@
  * Written by loop_limit.c; used by subd_loop_limit and by progressive interpolation. */
 void subd_loop_limit_apply(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl,
                            subd_real *lim, uint32_t *ovf);
+/* The checks subd_loop and subd_loop_stream share: arguments, levels, boundary rule, flags
+ * (only those in `flags` allowed), a mesh with adjacency, triangles only (SUBD_ERR_FACE_SIZE
+ * with diag.face). Returns SUBD_OK or the status (diag set). Written by loop.c. */
+int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d);
 #endif

@@ -1,0 +1,679 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming Loop subdivision: subd_loop's level-L triangles handed to a sink one at a time,
+ * in memory that depends on the level count and the largest valence only.
+ *
+ * Paper: loop-progressive-interpolation.txt, section 1 (Loop's scheme) and section 4 (the
+ * boundary rules); the rules are loop_rules.h's, the same code subd_loop runs.
+ *
+ * Method. The level-(k+1) positions of a triangle's 1-ring (every face that shares a vertex
+ * with it) follow from the level-k positions of its parent's 1-ring: the even vertices that
+ * occur are the parent's three corners, whose rings the parent 1-ring holds, and the odd ones
+ * lie on edges at those corners, whose two faces it holds. So one control face is refined
+ * depth first: level k keeps the 1-ring patch of its current face ("centre"), the refined
+ * values of that patch (the three corners' vertex points and the edge points of every edge
+ * at them: the "cache", shared by the four children) and which child comes next. An explicit
+ * stack of L such levels replaces recursion; level L-1 emits its centre's four children.
+ *
+ * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
+ * in the same order. loop.c sums a vertex's ring from vert_out (the boundary half-edge, else
+ * the smallest corner of the level, preserved by refinement), and an edge's stencil from its
+ * lower half-edge (the one with the smaller index). A patch keeps its faces sorted by their
+ * index in subd_loop's level (children of face f are 4f..4f+3, so sorted parents give sorted
+ * children) and each face's corners in that level's order, so comparing local half-edge
+ * indices compares global ones; vert_out is derived exactly as loop.c derives it (half_first
+ * for old vertices, the fixed corner of new_vout for new ones; at level 0 the input's
+ * vert_out). Classes: a control vertex's "regular" bit comes from loop_classify on the input
+ * (its whole ring), a new vertex is regular exactly when it lies on a sharp edge.
+ * Assumed, as the builder, the readers and subd_loop guarantee: vert_out of a boundary
+ * vertex is its boundary half-edge, and SUBD_ETAG_BOUNDARY is set only on boundary edges.
+ *
+ * Emission order: control face by control face; inside a face depth first with children
+ * 0..3, so the j-th triangle of face f is subd_loop's face 4^L f + j, corners in its order.
+ *
+ * Memory (the one layout of plan and run: stream_layout): L + 1 level headers, level 0's
+ * patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3 vertices, 3N cached
+ * values), levels 1..L-1 (at most one corner above valence 6: N + 12 in place of 3N), the
+ * limit mode's level L, and one extraction's scratch (a slot map and a child-face map).
+ * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
+ */
+#include "loop_internal.h"
+#include "loop_rules.h"
+#include "mesh_internal.h"
+
+#define TW_NONE 0xffffu   /* no twin: a boundary edge                        */
+#define TW_BORDER 0xfffeu /* the twin face is outside the patch              */
+#define NO_SLOT 0xffffu
+#define SH_RULE 1u  /* sharp for this level's rules (loop.c's edge_sharp)            */
+#define SH_CHILD 2u /* sharp for its children (boundary, or CREASE on either half)   */
+#define VF_REGULAR 1u
+#define VF_CORNER 2u
+
+/* Level header, in the arena (32-bit fields only: the same plan on host and device). */
+typedef struct sp_head {
+    uint32_t nv, nf, nc; /* vertices, faces, cached values                              */
+    uint32_t cf;         /* the centre face (its corners are local vertices 0, 1, 2)     */
+    uint32_t child;      /* next child of the centre to visit                            */
+    uint32_t ca[3], cb[3]; /* lattice coordinates of the centre's corners (units 1/2^L)   */
+    uint32_t pad;
+} sp_head;
+
+enum { A_POS, A_VFLAG, A_VOUT, A_CV, A_TW, A_SLOT, A_SH, A_CPOS, A_CFLAG, A_CFACE, A_CVERT, A_N };
+
+/* One level's arrays. */
+typedef struct sp_level {
+    sp_head *h;
+    subd_real *pos;  /* 3 nv                                                          */
+    uint8_t *vflag;  /* nv: VF_*                                                      */
+    uint16_t *vout;  /* nv: ring start (only the centre's corners are used)            */
+    uint16_t *cv;    /* 3 nf: local vertex of each corner                              */
+    uint16_t *tw;    /* 3 nf: local twin, TW_NONE or TW_BORDER                         */
+    uint16_t *slot;  /* 3 nf: the cached value of the half-edge's new vertex, or NO_SLOT */
+    uint8_t *sh;     /* 3 nf: SH_*                                                     */
+    subd_real *cpos; /* 3 nc: slots 0..2 the corners' vertex points, then edge points  */
+    uint8_t *cflag;  /* nc: the VF_* of each cached vertex at the next level           */
+    uint32_t *cface; /* level 0: the input face of each local face                      */
+    uint32_t *cvert; /* level 0: the input vertex of each local vertex                  */
+} sp_level;
+
+typedef struct sp_layout {
+    uint32_t n;         /* the largest valence, at least 6                                */
+    uint32_t off0[A_N]; /* level 0's arrays                                                */
+    uint32_t off1[A_N]; /* a later level's arrays                                          */
+    uint32_t lev0, lev1, size1, smap, fmap, total;
+} sp_layout;
+
+/* Faces, vertices and cached values of a level whose three corner valences sum to s. */
+static uint32_t cap_f(uint32_t s) { return s - 2u; }
+static uint32_t cap_v(uint32_t s) { return s - 3u; }
+
+/* A level's arrays for corner valence sum s; `cache`: with the refined values; `control`:
+ * with the input face and vertex of each local element. SUBD_LOOP_SLEV_ is the same sum. */
+static uint32_t level_layout(uint32_t s, int cache, int control, uint32_t off[A_N])
+{
+    uint32_t t = 0, nv = cap_v(s), nf = cap_f(s);
+    off[A_POS] = t;   subd_size_add(&t, nv, 3u * (uint32_t)sizeof(subd_real));
+    off[A_VFLAG] = t; subd_size_add(&t, nv, 1u);
+    off[A_VOUT] = t;  subd_size_add(&t, nv, 2u);
+    off[A_CV] = t;    subd_size_add(&t, nf, 6u);
+    off[A_TW] = t;    subd_size_add(&t, nf, 6u);
+    off[A_SLOT] = t;  subd_size_add(&t, nf, 6u);
+    off[A_SH] = t;    subd_size_add(&t, nf, 3u);
+    off[A_CPOS] = t;  if (cache) subd_size_add(&t, s, 3u * (uint32_t)sizeof(subd_real));
+    off[A_CFLAG] = t; if (cache) subd_size_add(&t, s, 1u);
+    off[A_CFACE] = t; if (control) subd_size_add(&t, nf, 4u);
+    off[A_CVERT] = t; if (control) subd_size_add(&t, nv, 4u);
+    return t;
+}
+
+/* The one layout (SUBD_LOOP_STREAM_BYTES_ is the same sum). */
+static void stream_layout(uint32_t levels, uint32_t valence, int limit, sp_layout *l)
+{
+    uint32_t t = 0, s0, s1, k;
+    l->n = valence < 6u ? 6u : valence;
+    s0 = 3u * l->n;
+    s1 = l->n + 12u;
+    subd_size_add(&t, levels + 1u, (uint32_t)sizeof(sp_head));
+    l->lev0 = t;
+    t += level_layout(s0, 1, 1, l->off0);
+    l->lev1 = t;
+    l->size1 = level_layout(s1, 1, 0, l->off1);
+    for (k = 1; k < levels; k++) t += l->size1;
+    if (limit) t += level_layout(s1, 0, 0, l->off1);
+    (void)level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
+    l->smap = t;
+    subd_size_add(&t, s0, 2u);
+    l->fmap = t;
+    subd_size_add(&t, 4u * cap_f(s0), 2u);
+    l->total = t;
+}
+
+static void level_at(uint8_t *base, const sp_layout *l, uint32_t k, sp_level *lv)
+{
+    const uint32_t *off = k == 0u ? l->off0 : l->off1;
+    uint8_t *b = base + (k == 0u ? l->lev0 : l->lev1 + (k - 1u) * l->size1);
+    lv->h = (sp_head *)(void *)(base + k * (uint32_t)sizeof(sp_head));
+    lv->pos = (subd_real *)(void *)(b + off[A_POS]);
+    lv->vflag = b + off[A_VFLAG];
+    lv->vout = (uint16_t *)(void *)(b + off[A_VOUT]);
+    lv->cv = (uint16_t *)(void *)(b + off[A_CV]);
+    lv->tw = (uint16_t *)(void *)(b + off[A_TW]);
+    lv->slot = (uint16_t *)(void *)(b + off[A_SLOT]);
+    lv->sh = b + off[A_SH];
+    lv->cpos = (subd_real *)(void *)(b + off[A_CPOS]);
+    lv->cflag = b + off[A_CFLAG];
+    lv->cface = (uint32_t *)(void *)(b + off[A_CFACE]);
+    lv->cvert = (uint32_t *)(void *)(b + off[A_CVERT]);
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Input                                                                                  */
+
+static uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
+static uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
+
+/* Largest number of neighbours of a vertex of the input (a triangle mesh with adjacency):
+ * outgoing half-edges, plus one on a boundary. O(corners). */
+static uint32_t max_valence(const subd_mesh *in)
+{
+    uint32_t v, best = 0;
+    for (v = 0; v < in->num_verts; v++) {
+        uint32_t h0 = in->vert_out[v], h = h0, n = 0;
+        if (h0 == SUBD_NONE || h0 >= in->num_corners) continue;
+        for (;;) {
+            uint32_t t = in->twin[tri_prev(h)];
+            n++;
+            if (t == SUBD_NONE) {
+                n++;
+                break;
+            }
+            if (t == h0 || n > in->num_corners) break;
+            h = t;
+        }
+        if (n > best) best = n;
+    }
+    return best;
+}
+
+static int stream_check(const subd_mesh *in, const subd_loop_opts *o, sp_layout *l, subd_diag *d)
+{
+    uint32_t n;
+    int st = subd_loop_check(in, o, SUBD_LOOP_STREAM_LIMIT, d);
+    if (st != SUBD_OK) return st;
+    n = max_valence(in);
+    if (n > SUBD_LOOP_STREAM_MAX_VALENCE) return subd_fail(d, SUBD_ERR_TOO_BIG);
+    stream_layout(o->levels, n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, l);
+    return SUBD_OK;
+}
+
+int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes)
+{
+    sp_layout l;
+    subd_diag d;
+    int st;
+    if (!bytes) return SUBD_ERR_PARAM;
+    subd_diag_clear(&d);
+    if ((st = stream_check(in, o, &l, &d)) != SUBD_OK) return st;
+    *bytes = l.total;
+    return SUBD_OK;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Level 0: the control face's 1-ring                                                     */
+
+/* Position of input face f in the sorted local face list, or nf. */
+static uint32_t find_face(const sp_level *p, uint32_t nf, uint32_t f)
+{
+    uint32_t lo = 0, hi = nf;
+    while (lo < hi) {
+        uint32_t mid = (lo + hi) / 2u;
+        if (p->cface[mid] < f) lo = mid + 1u;
+        else hi = mid;
+    }
+    return (lo < nf && p->cface[lo] == f) ? lo : nf;
+}
+
+/* Inserts input face f into the sorted list (no duplicates). */
+static void add_face(const sp_level *p, uint32_t *nf, uint32_t f)
+{
+    uint32_t i = find_face(p, *nf, f), j;
+    if (i < *nf) return;
+    for (i = *nf; i > 0u && p->cface[i - 1u] > f; i--) {}
+    for (j = *nf; j > i; j--) p->cface[j] = p->cface[j - 1u];
+    p->cface[i] = f;
+    (*nf)++;
+}
+
+/* Local index of input vertex v (appended when new). */
+static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
+{
+    uint32_t i, nv = p->h->nv;
+    loop_vinfo c;
+    for (i = 0; i < nv; i++)
+        if (p->cvert[i] == v) return (uint16_t)i;
+    p->cvert[nv] = v;
+    p->pos[3u * nv] = in->pos[3u * v];
+    p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
+    p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
+    loop_classify(in, v, &c);
+    p->vflag[nv] = (uint8_t)((c.regular ? VF_REGULAR : 0u) | ((in->vert_tag[v] & SUBD_VTAG_CORNER) ? VF_CORNER : 0u));
+    p->vout[nv] = TW_NONE;
+    p->h->nv = nv + 1u;
+    return (uint16_t)nv;
+}
+
+/* loop.c's sharpness of input half-edge h at level 0 (SH_RULE) and of its children. */
+static uint8_t input_sharp(const subd_mesh *in, uint32_t h)
+{
+    uint32_t t = in->twin[h];
+    uint8_t tg = in->edge_tag[h];
+    if (t == SUBD_NONE) return SH_RULE | SH_CHILD;
+    if (tg & SUBD_ETAG_CREASE || (in->edge_tag[t] & SUBD_ETAG_CREASE)) return SH_RULE | SH_CHILD;
+    return (tg & SUBD_ETAG_BOUNDARY) ? SH_RULE : 0u;
+}
+
+/* Builds level 0 for input face f: every face around its corners (walked both ways from
+ * vert_out, so an unusual vert_out loses no face), sorted; corners 0..2 are f's. */
+static void build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels)
+{
+    uint32_t j, nf = 0, lf, n1 = (uint32_t)1 << levels;
+    p->h->nv = 0;
+    for (j = 0; j < 3u; j++) {
+        uint32_t u = in->corner_vert[3u * f + j], h0 = in->vert_out[u], h = h0, steps = 0, t;
+        (void)local_vertex(in, p, u);
+        for (;;) { /* counter-clockwise: twin(prev(h)) */
+            add_face(p, &nf, h / 3u);
+            t = in->twin[tri_prev(h)];
+            if (t == SUBD_NONE || t == h0 || ++steps > in->num_corners) break;
+            h = t;
+        }
+        if (t == SUBD_NONE) /* clockwise from vert_out: next(twin(h)) */
+            for (h = h0; in->twin[h] != SUBD_NONE && steps++ <= in->num_corners;) {
+                h = tri_next(in->twin[h]);
+                add_face(p, &nf, h / 3u);
+            }
+    }
+    for (lf = 0; lf < nf; lf++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t h = 3u * p->cface[lf] + j, t = in->twin[h], l = 3u * lf + j;
+            p->cv[l] = local_vertex(in, p, in->corner_vert[h]);
+            p->sh[l] = input_sharp(in, h);
+            if (t == SUBD_NONE) {
+                p->tw[l] = TW_NONE;
+            } else {
+                uint32_t tf = find_face(p, nf, t / 3u);
+                p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)TW_BORDER;
+            }
+        }
+    for (j = 0; j < 3u; j++) { /* the input's vert_out, as loop.c's first level walks it */
+        uint32_t h = in->vert_out[in->corner_vert[3u * f + j]];
+        p->vout[j] = (uint16_t)(3u * find_face(p, nf, h / 3u) + h % 3u);
+    }
+    p->h->nf = nf;
+    p->h->cf = find_face(p, nf, f);
+    p->h->child = 0;
+    p->h->ca[0] = 0; p->h->cb[0] = 0;
+    p->h->ca[1] = n1; p->h->cb[1] = 0;
+    p->h->ca[2] = 0; p->h->cb[2] = n1;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Refined values of a level (the cache)                                                  */
+
+/* Vertex point of centre corner v (0..2), by the walk and rules of loop.c's vertex_general:
+ * from vout counter-clockwise; on a boundary the tail neighbour closes the ring. */
+static void vertex_point(const sp_level *p, uint32_t v, loop_wcache *wc, uint32_t *ovf, subd_real *out)
+{
+    uint32_t h0 = p->vout[v], h, n = 0, ns = 0, snb[2] = {0, 0}, cls, nc = 3u * p->h->nf, pass;
+    const subd_real *pv = p->pos + 3u * v;
+    loop_weights w;
+    subd_acc acc[3];
+    w.b = w.wc = 0;
+    for (pass = 0; pass < 2u; pass++) {
+        h = h0;
+        n = 0;
+        for (;;) {
+            uint32_t nb = p->cv[tri_next(h)], pr = tri_prev(h), t = p->tw[pr];
+            int sharp = (p->sh[h] & SH_RULE) != 0u;
+            if (pass == 0u && sharp) {
+                if (ns < 2u) snb[ns] = nb;
+                ns++;
+            }
+            if (pass == 1u) loop_smooth_add(acc, w, p->pos + 3u * nb);
+            n++;
+            if (t == TW_NONE) { /* the tail: origin of the incoming boundary half-edge */
+                nb = p->cv[pr];
+                if (pass == 0u) {
+                    if (ns < 2u) snb[ns] = nb;
+                    ns++;
+                } else {
+                    loop_smooth_add(acc, w, p->pos + 3u * nb);
+                }
+                n++;
+                break;
+            }
+            if (t == h0 || t >= nc || n > nc) break; /* t >= nc (a border) cannot occur here */
+            h = t;
+        }
+        if (pass == 1u) break;
+        cls = loop_class_of(ns, (p->vflag[v] & VF_CORNER) != 0u);
+        if (cls == LOOP_CORNER) {
+            out[0] = pv[0];
+            out[1] = pv[1];
+            out[2] = pv[2];
+            return;
+        }
+        if (cls == LOOP_CREASE) {
+            loop_rule_crease(out, pv, p->pos + 3u * snb[0], p->pos + 3u * snb[1], ovf);
+            return;
+        }
+        w = loop_weights_of(wc, n, ovf);
+        loop_smooth_begin(acc, w, pv);
+    }
+    loop_smooth_end(out, acc, ovf);
+}
+
+/* The lower half-edge of h's edge (the one loop.c makes the edge's new vertex at). */
+static uint32_t lower_of(const sp_level *p, uint32_t h)
+{
+    uint32_t t = p->tw[h];
+    return (t < TW_BORDER && t < h) ? t : h;
+}
+
+/* Edge point of the edge of lower half-edge hl. */
+static void edge_point(const sp_level *p, uint32_t hl, subd_loop_boundary rule, uint32_t *ovf, subd_real *out)
+{
+    uint32_t a = p->cv[hl], b = p->cv[tri_next(hl)], t = p->tw[hl];
+    if (!(p->sh[hl] & SH_RULE) && t < TW_BORDER)
+        loop_rule_edge(out, p->pos + 3u * a, p->pos + 3u * b, p->pos + 3u * p->cv[tri_prev(hl)],
+                       p->pos + 3u * p->cv[tri_prev(t)], ovf);
+    else
+        loop_rule_sharp_edge(out, p->pos + 3u * a, p->pos + 3u * b, rule, p->vflag[a] & VF_REGULAR,
+                             p->vflag[b] & VF_REGULAR, ovf);
+}
+
+/* Fills the cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner. */
+static void fill_cache(const sp_level *p, subd_loop_boundary rule, loop_wcache *wc, uint32_t *ovf)
+{
+    uint32_t h, v, nc = 3u, n3 = 3u * p->h->nf;
+    for (h = 0; h < n3; h++) p->slot[h] = NO_SLOT;
+    for (v = 0; v < 3u; v++) {
+        vertex_point(p, v, wc, ovf, p->cpos + 3u * v);
+        p->cflag[v] = p->vflag[v];
+    }
+    for (h = 0; h < n3; h++) {
+        uint32_t hl;
+        if (p->slot[h] != NO_SLOT || (p->cv[h] >= 3u && p->cv[tri_next(h)] >= 3u)) continue;
+        hl = lower_of(p, h);
+        p->slot[h] = (uint16_t)nc;
+        if (p->tw[h] < TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
+        edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
+        p->cflag[nc] = (p->sh[hl] & SH_CHILD) ? (uint8_t)VF_REGULAR : (uint8_t)0u;
+        nc++;
+    }
+    p->h->nc = nc;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* A child's 1-ring                                                                       */
+
+/* Slot of each corner of child k of local face pf (NO_SLOT: a vertex this level cannot
+ * compute; such a child never touches the centre's children). */
+static void child_slots(const sp_level *p, uint32_t pf, uint32_t k, uint32_t x[3])
+{
+    uint32_t h = 3u * pf;
+    if (k == 3u) {
+        x[0] = p->slot[h];
+        x[1] = p->slot[h + 1u];
+        x[2] = p->slot[h + 2u];
+    } else {
+        x[0] = p->cv[h + k] < 3u ? p->cv[h + k] : NO_SLOT;
+        x[1] = p->slot[h + k];
+        x[2] = p->slot[h + (k + 2u) % 3u];
+    }
+}
+
+/* Child corner (f, k, j) of the parent numbering -> child-local half-edge or TW_BORDER. */
+static uint16_t map_cc(const uint16_t *fmap, uint32_t f, uint32_t k, uint32_t j)
+{
+    uint16_t q = fmap[4u * f + k];
+    return q == NO_SLOT ? (uint16_t)TW_BORDER : (uint16_t)(3u * q + j);
+}
+
+/* Twin of an outer child half-edge: child kk, corner jj of the parent twin t's face. */
+static uint16_t outer_twin(const uint16_t *fmap, uint32_t t, int second)
+{
+    if (t == TW_NONE) return (uint16_t)TW_NONE;
+    if (t == TW_BORDER) return (uint16_t)TW_BORDER;
+    /* v_i -> m_i pairs with the twin's second half (child i+1 of its face, corner 2),
+     * m_i -> v_i+1 with its first (child i, corner 0) */
+    return second ? map_cc(fmap, t / 3u, (t % 3u + 1u) % 3u, 2u) : map_cc(fmap, t / 3u, t % 3u, 0u);
+}
+
+/* vert_out of the child's corner that descends from slot s of the centre (loop.c: half_first
+ * for an old vertex, new_vout for a new one). */
+static uint16_t child_vout(const sp_level *p, const uint16_t *fmap, uint32_t s, uint32_t h)
+{
+    static const uint8_t smallest[3] = {1u, 4u, 2u};
+    uint32_t hl, f, i;
+    if (s < 3u) {
+        uint32_t hv = p->vout[s];
+        return map_cc(fmap, hv / 3u, hv % 3u, 0u);
+    }
+    hl = lower_of(p, h);
+    f = hl / 3u;
+    i = hl % 3u;
+    if (p->tw[hl] == TW_NONE) return map_cc(fmap, f, (i + 1u) % 3u, 2u);
+    return map_cc(fmap, f, smallest[i] / 3u, smallest[i] % 3u);
+}
+
+/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. */
+static void extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
+{
+    const sp_head *ph = p->h;
+    uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0;
+    for (j = 0; j < ph->nc; j++) smap[j] = NO_SLOT;
+    for (j = 0; j < 4u * ph->nf; j++) fmap[j] = NO_SLOT;
+    /* the child's corners, in its corner order: (v_c, m_c, m_c-1) or (m0, m1, m2) */
+    if (c < 3u) {
+        s[0] = c;
+        s[1] = p->slot[3u * cf + c];
+        s[2] = p->slot[3u * cf + (c + 2u) % 3u];
+        e[0] = 0;
+        e[1] = 3u * cf + c;
+        e[2] = 3u * cf + (c + 2u) % 3u;
+    } else {
+        for (j = 0; j < 3u; j++) {
+            s[j] = p->slot[3u * cf + j];
+            e[j] = 3u * cf + j;
+        }
+    }
+    for (j = 0; j < 3u; j++) {
+        smap[s[j]] = (uint16_t)j;
+        q->pos[3u * j] = p->cpos[3u * s[j]];
+        q->pos[3u * j + 1u] = p->cpos[3u * s[j] + 1u];
+        q->pos[3u * j + 2u] = p->cpos[3u * s[j] + 2u];
+        q->vflag[j] = p->cflag[s[j]];
+    }
+    nv = 3;
+    for (pf = 0; pf < ph->nf; pf++)
+        for (k = 0; k < 4u; k++) {
+            uint32_t x[3];
+            child_slots(p, pf, k, x);
+            if (x[0] != s[0] && x[0] != s[1] && x[0] != s[2] && x[1] != s[0] && x[1] != s[1] &&
+                x[1] != s[2] && x[2] != s[0] && x[2] != s[1] && x[2] != s[2])
+                continue;
+            fmap[4u * pf + k] = (uint16_t)nf;
+            for (j = 0; j < 3u; j++) {
+                uint32_t sl = x[j];
+                if (smap[sl] == NO_SLOT) { /* sl is a valid slot: see child_slots */
+                    smap[sl] = (uint16_t)nv;
+                    q->pos[3u * nv] = p->cpos[3u * sl];
+                    q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
+                    q->pos[3u * nv + 2u] = p->cpos[3u * sl + 2u];
+                    q->vflag[nv] = p->cflag[sl];
+                    nv++;
+                }
+                q->cv[3u * nf + j] = smap[sl];
+            }
+            nf++;
+        }
+    /* twins and sharp bits (loop.c's refine_level, mapped to the child's faces) */
+    for (pf = 0; pf < ph->nf; pf++)
+        for (k = 0; k < 4u; k++) {
+            uint16_t qf = fmap[4u * pf + k];
+            uint32_t l;
+            if (qf == NO_SLOT) continue;
+            l = 3u * qf;
+            if (k == 3u) {
+                for (j = 0; j < 3u; j++) {
+                    q->tw[l + j] = map_cc(fmap, pf, (j + 1u) % 3u, 1u);
+                    q->sh[l + j] = 0;
+                }
+            } else {
+                uint32_t h0 = 3u * pf + k, h2 = 3u * pf + (k + 2u) % 3u;
+                q->tw[l] = outer_twin(fmap, p->tw[h0], 1);
+                q->tw[l + 1u] = map_cc(fmap, pf, 3u, (k + 2u) % 3u);
+                q->tw[l + 2u] = outer_twin(fmap, p->tw[h2], 0);
+                q->sh[l] = (p->sh[h0] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
+                q->sh[l + 1u] = 0;
+                q->sh[l + 2u] = (p->sh[h2] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
+            }
+        }
+    for (j = 0; j < 3u; j++) q->vout[j] = child_vout(p, fmap, s[j], e[j]);
+    q->h->nv = nv;
+    q->h->nf = nf;
+    q->h->cf = fmap[4u * cf + c];
+    q->h->child = 0;
+    /* lattice coordinates: a corner stays, a new vertex is the midpoint of edge i */
+    for (j = 0; j < 3u; j++) {
+        uint32_t i = (c == 3u) ? j : (j == 1u) ? c : (c + 2u) % 3u, i1 = (i + 1u) % 3u;
+        if (c < 3u && j == 0u) {
+            q->h->ca[0] = ph->ca[c];
+            q->h->cb[0] = ph->cb[c];
+        } else {
+            q->h->ca[j] = (ph->ca[i] + ph->ca[i1]) / 2u;
+            q->h->cb[j] = (ph->cb[i] + ph->cb[i1]) / 2u;
+        }
+    }
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Ids and emission                                                                       */
+
+/* Global id of the lattice point (a, b) of input face f (see subd_loop.h). */
+static uint64_t vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels)
+{
+    uint64_t n1 = (uint64_t)1 << levels, nm1 = n1 - 1u;
+    uint32_t h, t, u, w, tw;
+    uint64_t pos;
+    if (a == 0u && b == 0u) return in->corner_vert[3u * f];
+    if (a == n1 && b == 0u) return in->corner_vert[3u * f + 1u];
+    if (a == 0u && b == n1) return in->corner_vert[3u * f + 2u];
+    if (b == 0u) { h = 3u * f; t = a; }
+    else if ((uint64_t)a + b == n1) { h = 3u * f + 1u; t = b; }
+    else if (a == 0u) { h = 3u * f + 2u; t = (uint32_t)(n1 - b); }
+    else {
+        uint64_t am = a - 1u;
+        return (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+               (uint64_t)f * (nm1 * (nm1 - 1u) / 2u) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
+    }
+    /* on edge h = u -> w, t steps from u */
+    u = in->corner_vert[h];
+    w = in->corner_vert[tri_next(h)];
+    tw = in->twin[h];
+    pos = (u < w) ? t : n1 - t;
+    if (tw != SUBD_NONE && tw < h) h = tw;
+    return (uint64_t)in->num_verts + (uint64_t)h * nm1 + pos - 1u;
+}
+
+typedef struct sp_run {
+    const subd_mesh *in;
+    const subd_loop_opts *o;
+    const subd_loop_sink *sink;
+    uint32_t f;
+} sp_run;
+
+/* The centre's four children at the last level, from the cache. */
+static int emit_children(const sp_run *r, const sp_level *p)
+{
+    const sp_head *ph = p->h;
+    uint32_t cf = ph->cf, c, j, e[3], ea[3], eb[3];
+    subd_loop_tri t;
+    for (j = 0; j < 3u; j++) {
+        uint32_t j1 = (j + 1u) % 3u;
+        e[j] = p->slot[3u * cf + j];
+        ea[j] = (ph->ca[j] + ph->ca[j1]) / 2u;
+        eb[j] = (ph->cb[j] + ph->cb[j1]) / 2u;
+    }
+    for (j = 0; j < 9u; j++) t.normal[j / 3u][j % 3u] = 0;
+    for (c = 0; c < 4u; c++) {
+        uint32_t sl[3], a[3], b[3];
+        int st;
+        if (c < 3u) {
+            uint32_t cp = (c + 2u) % 3u;
+            sl[0] = c; a[0] = ph->ca[c]; b[0] = ph->cb[c];
+            sl[1] = e[c]; a[1] = ea[c]; b[1] = eb[c];
+            sl[2] = e[cp]; a[2] = ea[cp]; b[2] = eb[cp];
+        } else {
+            for (j = 0; j < 3u; j++) {
+                sl[j] = e[j];
+                a[j] = ea[j];
+                b[j] = eb[j];
+            }
+        }
+        for (j = 0; j < 3u; j++) {
+            t.pos[j][0] = p->cpos[3u * sl[j]];
+            t.pos[j][1] = p->cpos[3u * sl[j] + 1u];
+            t.pos[j][2] = p->cpos[3u * sl[j] + 2u];
+            t.id[j] = vertex_id(r->in, r->f, a[j], b[j], r->o->levels);
+        }
+        st = r->sink->tri(r->sink->ctx, &t);
+        if (st != 0) return st;
+    }
+    return 0;
+}
+
+int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
+                     subd_diag *diag)
+{
+    subd_diag dummy;
+    subd_diag *d = diag ? diag : &dummy;
+    sp_layout lay;
+    sp_run run;
+    loop_wcache wc;
+    uint8_t *base;
+    uint16_t *smap, *fmap;
+    uint32_t mark, f, ovf = 0, levels;
+    int st = SUBD_OK;
+
+    subd_diag_clear(d);
+    if (!a || !sink || !sink->tri) return subd_fail(d, SUBD_ERR_PARAM);
+    if ((st = stream_check(in, o, &lay, d)) != SUBD_OK) return st;
+    if (o->flags & SUBD_LOOP_STREAM_LIMIT) return subd_fail(d, SUBD_ERR_PARAM); /* not yet */
+    mark = subd_arena_mark(a);
+    base = (uint8_t *)subd_arena_alloc(a, lay.total);
+    if (!base) {
+        d->bytes_needed = lay.total;
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+    smap = (uint16_t *)(void *)(base + lay.smap);
+    fmap = (uint16_t *)(void *)(base + lay.fmap);
+    wc.have = 0;
+    levels = o->levels;
+    run.in = in;
+    run.o = o;
+    run.sink = sink;
+    for (f = 0; f < in->num_faces && st == SUBD_OK; f++) {
+        sp_level p, q;
+        uint32_t k = 0;
+        run.f = f;
+        level_at(base, &lay, 0, &p);
+        build_control(in, f, &p, levels);
+        fill_cache(&p, o->boundary, &wc, &ovf);
+        for (;;) {
+            if (ovf) {
+                st = SUBD_ERR_RANGE;
+                break;
+            }
+            level_at(base, &lay, k, &p);
+            if (k == levels - 1u) {
+                if ((st = emit_children(&run, &p)) != 0) break;
+            } else if (p.h->child < 4u) {
+                uint32_t c = p.h->child++;
+                level_at(base, &lay, k + 1u, &q);
+                extract_child(&p, &q, c, smap, fmap);
+                fill_cache(&q, o->boundary, &wc, &ovf);
+                k++;
+                continue;
+            }
+            if (k == 0u) break;
+            k--;
+        }
+    }
+    subd_arena_rewind(a, mark);
+    if (st != SUBD_OK) {
+        d->face = f - 1u;
+        d->status = st;
+    }
+    return st;
+}

@@ -1,0 +1,409 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming Loop (subd_loop_stream) against the materialising call, subd_loop: on every corpus
+ * shape (closed, open, creases, corners, valence 3 and >= 12, isolated vertices), levels 1..4,
+ * both boundary rules, the j-th streamed triangle must be subd_loop's face j with the same
+ * corners, bit-identical positions, and ids that map one-to-one onto subd_loop's vertices
+ * (checked both ways: one id per vertex, one vertex per id) and follow the documented closed
+ * form for control vertices. Plus: the plan depends on levels and valence only and equals
+ * SUBD_LOOP_STREAM_BYTES; every smaller arena fails with SUBD_ERR_NOMEM before anything is
+ * emitted; a sink that stops after k triangles gets k and its status back. */
+#include "harness.h"
+#include "corpus.h"
+
+/* A tetrahedron (valence 3) and a cube of triangles (valence 4 and 5) as OBJ text. */
+static const char tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+static const char cube_obj[] =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
+    "f 4 1 5\nf 4 5 8\n";
+/* Two triangles and an isolated vertex between them. */
+static const char iso_obj[] = "v 0 0 0\nv 1 0 0\nv 9 9 9\nv 1 1 0\nv 0 1 0.5\nf 1 2 4\nf 1 4 5\n";
+
+enum { S_TET, S_CUBE_CREASE, S_ICO, S_HEXFAN, S_FAN64, S_GRID_CREASE, S_ISO, S_TORUS, S_TORUS_CREASE, S_COUNT };
+#define S_DEVICE S_TORUS /* shapes 0..S_DEVICE-1 run on the device too, the rest on the host */
+
+static int load_text(subd_arena *a, const char *txt, subd_mesh *m)
+{
+    subd_diag d;
+    uint32_t n = 0;
+    while (txt[n]) n++;
+    return CHECK_EQ(subd_obj_read(a, txt, n, m, &d), SUBD_OK);
+}
+
+static int load_file(subd_arena *a, const char *name, subd_mesh *m)
+{
+    const corpus_file *f = corpus_find(name);
+    subd_diag d;
+    if (!CHECK(f != 0)) return 0;
+    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
+}
+
+/* Creases on every `every`-th interior edge (both halves) and two corner tags. */
+static void tag_features(subd_mesh *m, uint32_t every)
+{
+    uint32_t h, k = 0;
+    for (h = 0; h < m->num_corners; h++)
+        if (m->twin[h] != SUBD_NONE && h < m->twin[h] && k++ % every == 0u) subd_edge_tag_set(m, h, SUBD_ETAG_CREASE);
+    m->vert_tag[0] = (uint8_t)(m->vert_tag[0] | SUBD_VTAG_CORNER);
+    m->vert_tag[m->num_verts - 1u] = (uint8_t)(m->vert_tag[m->num_verts - 1u] | SUBD_VTAG_CORNER);
+}
+
+static int make_shape(int id, subd_arena *a, subd_mesh *m)
+{
+    int ok;
+    switch (id) {
+    case S_TET: return load_text(a, tet_obj, m);
+    case S_CUBE_CREASE:
+        if (!(ok = load_text(a, cube_obj, m))) return 0;
+        tag_features(m, 2);
+        return 1;
+    case S_ICO: return load_file(a, "test/data/icosahedron.obj", m);
+    case S_HEXFAN: return load_file(a, "test/data/hexfan.obj", m);
+    case S_FAN64: return load_file(a, "test/data/fan64.obj", m);
+    case S_GRID_CREASE:
+        if (!(ok = load_file(a, "test/data/grid_tri_8x8.obj", m))) return 0;
+        tag_features(m, 5);
+        return 1;
+    case S_ISO: return load_text(a, iso_obj, m);
+    case S_TORUS: return load_file(a, "test/data/torus_tri.obj", m);
+    default:
+        if (!(ok = load_file(a, "test/data/torus_tri.obj", m))) return 0;
+        tag_features(m, 3);
+        return 1;
+    }
+}
+
+/* The sink of the comparison: triangle j against face j of subd_loop's output. */
+typedef struct cmp_sink {
+    const subd_mesh *ref;
+    uint64_t *v2id;   /* ref vertex -> id seen for it, UINT64_MAX before */
+    uint32_t j, bad_pos, bad_id, stop_after;
+    uint32_t hash;
+} cmp_sink;
+
+static int cmp_tri(void *ctx, const subd_loop_tri *t)
+{
+    cmp_sink *s = (cmp_sink *)ctx;
+    uint32_t c, k;
+    if (s->j >= s->ref->num_faces) {
+        s->bad_pos++;
+        return 0;
+    }
+    for (c = 0; c < 3u; c++) {
+        uint32_t v = s->ref->corner_vert[3u * s->j + c];
+        for (k = 0; k < 3u; k++) {
+            uint32_t b = subd_real_bits(t->pos[c][k]);
+            if (!h_same(t->pos[c][k], s->ref->pos[3u * v + k])) s->bad_pos++;
+            s->hash = h_fnv(s->hash, &b, 4);
+        }
+        if (s->v2id[v] == UINT64_MAX) s->v2id[v] = t->id[c];
+        else if (s->v2id[v] != t->id[c]) s->bad_id++;
+    }
+    s->j++;
+    return (s->stop_after && s->j == s->stop_after) ? 7 : 0;
+}
+
+/* In-place ascending sort of n ids (shell sort; the test's own, no qsort). */
+static void sort_ids(uint64_t *x, uint32_t n)
+{
+    uint32_t gap, i, j;
+    for (gap = n / 2u; gap > 0u; gap /= 2u)
+        for (i = gap; i < n; i++) {
+            uint64_t v = x[i];
+            for (j = i; j >= gap && x[j - gap] > v; j -= gap) x[j] = x[j - gap];
+            x[j] = v;
+        }
+}
+
+static uint32_t g_streams, g_skipped;
+
+#if H_HOST
+/* The host compares the bigger cases (the torus at level 4: 5.5 MB of subd_loop output). */
+#define BIG_ARENA_BYTES (24u * 1024u * 1024u)
+static uint8_t big_arena[BIG_ARENA_BYTES] __attribute__((aligned(8)));
+#define CMP_BUF big_arena
+#define CMP_BYTES BIG_ARENA_BYTES
+#else
+#define CMP_BUF h_arena_buf
+#define CMP_BYTES H_ARENA_BYTES
+#endif
+
+/* Streams `in` at `levels` with rule b and compares with subd_loop. Returns 0 when the
+ * arena cannot hold subd_loop's output (the case is skipped and counted). */
+static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loop_boundary b, uint32_t *hash)
+{
+    subd_loop_opts o;
+    subd_mesh ref;
+    subd_diag d;
+    uint32_t plan, splan, mark = subd_arena_mark(a), v, nid = 0, used;
+    cmp_sink s;
+    subd_loop_sink sink;
+    uint64_t *ids;
+    int st;
+    subd_diag_clear(&d);
+    o.levels = levels;
+    o.boundary = b;
+    o.flags = 0;
+    if (!CHECK_OK(subd_loop_plan(in, &o, &plan), &d) || !CHECK_OK(subd_loop_stream_plan(in, &o, &splan), &d)) return 0;
+    if ((uint64_t)plan + splan + 16u * 1024u > subd_arena_free_bytes(a)) {
+        g_skipped++;
+        return 0;
+    }
+    if (!CHECK_OK(subd_loop(a, in, &o, &ref, &d), &d)) return 0;
+    if ((uint64_t)ref.num_verts * 8u + splan + 64u > subd_arena_free_bytes(a)) {
+        subd_arena_rewind(a, mark);
+        g_skipped++;
+        return 0;
+    }
+    ids = (uint64_t *)subd_arena_alloc(a, ref.num_verts * 8u);
+    for (v = 0; v < ref.num_verts; v++) ids[v] = UINT64_MAX;
+    s.ref = &ref;
+    s.v2id = ids;
+    s.j = s.bad_pos = s.bad_id = s.stop_after = 0;
+    s.hash = *hash;
+    sink.tri = cmp_tri;
+    sink.ctx = &s;
+    used = subd_arena_mark(a);
+    subd_arena_reset_peak(a);
+    st = subd_loop_stream(a, in, &o, &sink, &d);
+    CHECK_OK(st, &d);
+    CHECK_EQ(subd_arena_mark(a), used);          /* nothing left in the arena */
+    CHECK(a->peak - used <= splan);                /* the plan holds */
+    CHECK_EQ(s.j, ref.num_faces);                  /* every triangle, once */
+    CHECK_EQ(s.bad_pos, 0);                        /* same corners, same bits */
+    CHECK_EQ(s.bad_id, 0);                         /* one id per vertex */
+    /* control vertices keep their ids; no two vertices share one */
+    for (v = 0; v < ref.num_verts; v++) {
+        if (ids[v] == UINT64_MAX) continue; /* isolated */
+        if (v < in->num_verts && !CHECK_EQ(ids[v], v)) break;
+        ids[nid++] = ids[v];
+    }
+    CHECK_EQ(nid, ref.num_verts - ref.num_isolated);
+    sort_ids(ids, nid);
+    for (v = 1; v < nid; v++)
+        if (!CHECK(ids[v - 1u] < ids[v])) break;
+    *hash = s.hash;
+    g_streams++;
+    subd_arena_rewind(a, mark);
+    return 1;
+}
+
+static void stream_equals_loop(void)
+{
+    int id;
+    uint32_t hash = 2166136261u;
+    g_streams = g_skipped = 0;
+    for (id = 0; id < (H_HOST ? S_COUNT : S_DEVICE); id++) {
+        subd_arena a;
+        subd_mesh in;
+        uint32_t levels;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_shape(id, &a, &in)) return;
+        for (levels = 1; levels <= 4u; levels++) {
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, &hash);
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, &hash);
+        }
+    }
+    CHECK(g_streams >= (H_HOST ? 72u : 40u)); /* the host runs every case; say how many */
+    h_str("  streams compared ");
+    h_u32(g_streams);
+    h_str(", skipped (subd_loop's output too big for the test arena) ");
+    h_u32(g_skipped);
+    h_nl();
+}
+
+/* Streamed positions are hashed per arithmetic; host and QEMU must print the same. */
+static void stream_hashes(void)
+{
+    int id;
+    for (id = 0; id < S_DEVICE; id++) {
+        subd_arena a;
+        subd_mesh in;
+        uint32_t hash = 2166136261u;
+        static const char *const names[] = {"stream_tet", "stream_cube_crease", "stream_ico", "stream_hexfan",
+                                            "stream_fan64", "stream_grid_crease", "stream_iso"};
+        subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+        if (!make_shape(id, &a, &in)) return;
+        compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_PAPER, &hash);
+        compare_one(&a, &in, 3, SUBD_LOOP_BOUNDARY_BSPLINE, &hash);
+        h_hash(names[id], hash);
+    }
+}
+
+/* The plan is a function of levels and valence: equal for two meshes with the same largest
+ * valence, equal to the macro, growing with both, and under 16 KiB at 8 levels, valence 16. */
+static void stream_plan(void)
+{
+    subd_arena a;
+    subd_mesh ico, tet, cube, fan;
+    subd_loop_opts o;
+    subd_diag d0;
+    uint32_t l, n, p1, p2;
+    subd_diag_clear(&d0);
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!make_shape(S_ICO, &a, &ico) || !make_shape(S_TET, &a, &tet) || !make_shape(S_CUBE_CREASE, &a, &cube) ||
+        !make_shape(S_FAN64, &a, &fan))
+        return;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    for (l = 1; l <= SUBD_MAX_LEVELS; l++) {
+        o.levels = l;
+        /* icosahedron (valence 5), tetrahedron (3) and the cube (4, 5, 6): all below 6 or at 6 */
+        CHECK_OK(subd_loop_stream_plan(&ico, &o, &p1), &d0);
+        CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2), &d0);
+        CHECK_EQ(p1, p2);
+        CHECK_EQ(p1, SUBD_LOOP_STREAM_BYTES(l, 6));
+        CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2), &d0);
+        CHECK_EQ(p2, p1);
+        CHECK_OK(subd_loop_stream_plan(&fan, &o, &p2), &d0); /* centre valence 64 */
+        CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES(l, 64));
+        CHECK(p2 > p1);
+    }
+    for (n = 6; n <= 64u; n++) CHECK(SUBD_LOOP_STREAM_BYTES(4, n) < SUBD_LOOP_STREAM_BYTES(4, n + 1u));
+    CHECK(SUBD_LOOP_STREAM_BYTES(8, 16) <= 16u * 1024u);
+    h_str("  plan bytes, 8 levels: valence 6 ");
+    h_u32(SUBD_LOOP_STREAM_BYTES(8, 6));
+    h_str(", 16 ");
+    h_u32(SUBD_LOOP_STREAM_BYTES(8, 16));
+    h_str(", 32 ");
+    h_u32(SUBD_LOOP_STREAM_BYTES(8, 32));
+    h_nl();
+}
+
+static int count_tri(void *ctx, const subd_loop_tri *t)
+{
+    (void)t;
+    (*(uint32_t *)ctx)++;
+    return 0;
+}
+
+/* Every arena below the plan: SUBD_ERR_NOMEM, diag.bytes_needed = plan, nothing emitted, the
+ * arena as before; the plan itself succeeds. */
+static void stream_small_arenas(void)
+{
+    subd_arena a, small;
+    subd_mesh in;
+    subd_loop_opts o;
+    subd_loop_sink sink;
+    subd_diag d;
+    uint32_t plan, size, count = 0;
+    uint8_t *buf;
+    subd_diag_clear(&d);
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!make_shape(S_CUBE_CREASE, &a, &in)) return;
+    o.levels = 3;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    if (!CHECK_OK(subd_loop_stream_plan(&in, &o, &plan), &d)) return;
+    buf = (uint8_t *)subd_arena_alloc(&a, plan);
+    if (!CHECK(buf != 0)) return;
+    sink.tri = count_tri;
+    sink.ctx = &count;
+    for (size = 0; size < plan; size++) {
+        subd_arena_init(&small, buf, size);
+        if (!CHECK_EQ(subd_loop_stream(&small, &in, &o, &sink, &d), SUBD_ERR_NOMEM)) break;
+        if (!CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(small.used, 0) || !CHECK_EQ(count, 0)) break;
+    }
+    subd_arena_init(&small, buf, plan);
+    CHECK_OK(subd_loop_stream(&small, &in, &o, &sink, &d), &d);
+    CHECK_EQ(count, 12u * 64u);
+    CHECK_EQ(small.used, 0);
+    CHECK_EQ(small.peak, plan);
+}
+
+/* A sink that stops after k triangles gets exactly k, and its value comes back. */
+static void stream_sink_stop(void)
+{
+    subd_arena a;
+    subd_mesh in, ref;
+    subd_loop_opts o;
+    subd_loop_sink sink;
+    subd_diag d;
+    cmp_sink s;
+    uint64_t ids[1];
+    uint32_t k;
+    static const uint32_t stops[] = {1, 2, 5, 16, 17, 63, 64, 65, 300};
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!make_shape(S_ICO, &a, &in)) return;
+    o.levels = 2;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    if (!CHECK_OK(subd_loop(&a, &in, &o, &ref, &d), &d)) return;
+    (void)ids;
+    for (k = 0; k < sizeof stops / sizeof stops[0]; k++) {
+        uint64_t *v2id = (uint64_t *)subd_arena_alloc(&a, ref.num_verts * 8u);
+        uint32_t v, mark;
+        if (!CHECK(v2id != 0)) return;
+        for (v = 0; v < ref.num_verts; v++) v2id[v] = UINT64_MAX;
+        s.ref = &ref;
+        s.v2id = v2id;
+        s.j = s.bad_pos = s.bad_id = 0;
+        s.stop_after = stops[k];
+        s.hash = 0;
+        sink.tri = cmp_tri;
+        sink.ctx = &s;
+        mark = subd_arena_mark(&a);
+        CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), 7);
+        CHECK_EQ(d.face, (stops[k] - 1u) / 16u); /* 16 triangles per control face */
+        CHECK_EQ(s.j, stops[k]);
+        CHECK_EQ(s.bad_pos, 0);
+        CHECK_EQ(subd_arena_mark(&a), mark);
+        subd_arena_rewind(&a, mark - ((ref.num_verts * 8u + SUBD_ARENA_ALIGN - 1u) & ~(SUBD_ARENA_ALIGN - 1u)));
+    }
+}
+
+/* Bad arguments and inputs: the specific status, nothing emitted, arena unchanged. */
+static void stream_errors(void)
+{
+    subd_arena a;
+    subd_mesh in, quad, noadj;
+    subd_loop_opts o;
+    subd_loop_sink sink, nosink;
+    subd_diag d;
+    uint32_t count = 0, mark, plan;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!make_shape(S_ICO, &a, &in) || !load_file(&a, "test/data/cube_quad.obj", &quad)) return;
+    o.levels = 2;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    sink.tri = count_tri;
+    sink.ctx = &count;
+    nosink.tri = 0;
+    nosink.ctx = 0;
+    mark = subd_arena_mark(&a);
+    CHECK_EQ(subd_loop_stream(0, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream(&a, 0, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream(&a, &in, 0, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, &nosink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream_plan(&in, &o, 0), SUBD_ERR_PARAM);
+    o.levels = 0;
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    o.levels = SUBD_MAX_LEVELS + 1u;
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    o.levels = 2;
+    o.boundary = (subd_loop_boundary)7;
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = SUBD_LOOP_ADJACENCY;
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    o.flags = 0;
+    CHECK_EQ(subd_loop_stream(&a, &quad, &o, &sink, &d), SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(d.face, 0);
+    noadj = in;
+    noadj.twin = 0;
+    CHECK_EQ(subd_loop_stream(&a, &noadj, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(count, 0);
+    CHECK_EQ(subd_arena_mark(&a), mark);
+}
+
+const test_case suite_loop_stream[] = {
+    {"stream_equals_loop", stream_equals_loop},
+    {"stream_hashes", stream_hashes},
+    {"stream_plan", stream_plan},
+    {"stream_small_arenas", stream_small_arenas},
+    {"stream_sink_stop", stream_sink_stop},
+    {"stream_errors", stream_errors},
+    {0, 0},
+};

@@ -45,8 +45,10 @@
 #define NO_SLOT 0xffffu
 #define SH_RULE 1u  /* sharp for this level's rules (loop.c's edge_sharp)            */
 #define SH_CHILD 2u /* sharp for its children (boundary, or CREASE on either half)   */
-#define VF_REGULAR 1u
-#define VF_CORNER 2u
+#define VF_REGULAR 1u /* a regular crease vertex (the paper's sharp-edge rule)          */
+#define VF_CORNER 2u  /* the caller's CORNER tag                                       */
+#define VF_SMOOTH6 4u /* levels >= 1: smooth (or dart) of valence 6, the class inherited as
+                       * loop.c's VTAG_SMOOTH: one walk of six steps, no classification   */
 
 /* Level header, in the arena (32-bit fields only: the same plan on host and device). */
 typedef struct sp_head {
@@ -299,57 +301,85 @@ static void build_control(const subd_mesh *in, uint32_t f, const sp_level *p, ui
 /* ------------------------------------------------------------------------------------ */
 /* Refined values of a level (the cache)                                                  */
 
-/* Vertex point of centre corner v (0..2), by the walk and rules of loop.c's vertex_general:
- * from vout counter-clockwise; on a boundary the tail neighbour closes the ring. */
-static void vertex_point(const sp_level *p, uint32_t v, loop_wcache *wc, uint32_t *ovf, subd_real *out)
+/* One-ring iterator of a complete vertex of a patch, loop.c's walk: from vout
+ * counter-clockwise (twin of prev); on a boundary the last neighbour is the origin of the
+ * incoming boundary half-edge. Bounded by the patch's half-edges whatever the patch holds. */
+typedef struct sp_ring {
+    uint32_t h0, h, steps, tail;
+} sp_ring;
+
+static void ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
 {
-    uint32_t h0 = p->vout[v], h, n = 0, ns = 0, snb[2] = {0, 0}, cls, nc = 3u * p->h->nf, pass;
+    it->h0 = it->h = p->vout[v];
+    it->steps = 0;
+    it->tail = 0;
+}
+
+/* Next neighbour (SUBD_NONE at the end); *sharp: the edge to it is sharp. */
+static uint32_t ring_step(const sp_level *p, sp_ring *it, int *sharp)
+{
+    uint32_t h = it->h, pr, t, nb;
+    if (h == SUBD_NONE) return SUBD_NONE;
+    if (it->tail) {
+        it->h = SUBD_NONE;
+        *sharp = 1;
+        return p->cv[h];
+    }
+    nb = p->cv[tri_next(h)];
+    *sharp = (p->sh[h] & SH_RULE) != 0u;
+    pr = tri_prev(h);
+    t = p->tw[pr];
+    if (t == TW_NONE) {
+        it->h = pr;
+        it->tail = 1;
+    } else if (t == it->h0 || t == TW_BORDER || ++it->steps >= 3u * p->h->nf) {
+        it->h = SUBD_NONE; /* a border cannot occur at a centre corner: the bound is a guard */
+    } else {
+        it->h = t;
+    }
+    return nb;
+}
+
+/* Vertex point of centre corner v (0..2): classify by the walk, then the class's rule; a
+ * vertex known to be smooth of valence 6 takes the one walk of loop.c's smooth_fast.
+ * *child gets the flags of v's child (the class is kept by refinement). */
+static void vertex_point(const sp_level *p, uint32_t v, loop_wcache *wc, uint32_t *ovf, subd_real *out,
+                         uint8_t *child)
+{
+    uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, cls = LOOP_SMOOTH;
     const subd_real *pv = p->pos + 3u * v;
-    loop_weights w;
-    subd_acc acc[3];
-    w.b = w.wc = 0;
-    for (pass = 0; pass < 2u; pass++) {
-        h = h0;
-        n = 0;
-        for (;;) {
-            uint32_t nb = p->cv[tri_next(h)], pr = tri_prev(h), t = p->tw[pr];
-            int sharp = (p->sh[h] & SH_RULE) != 0u;
-            if (pass == 0u && sharp) {
+    uint8_t f = p->vflag[v];
+    int sharp;
+    sp_ring it;
+    if (f & VF_SMOOTH6) {
+        n = 6;
+    } else {
+        ring_begin(p, v, &it);
+        while ((nb = ring_step(p, &it, &sharp)) != SUBD_NONE) {
+            if (sharp) {
                 if (ns < 2u) snb[ns] = nb;
                 ns++;
             }
-            if (pass == 1u) loop_smooth_add(acc, w, p->pos + 3u * nb);
             n++;
-            if (t == TW_NONE) { /* the tail: origin of the incoming boundary half-edge */
-                nb = p->cv[pr];
-                if (pass == 0u) {
-                    if (ns < 2u) snb[ns] = nb;
-                    ns++;
-                } else {
-                    loop_smooth_add(acc, w, p->pos + 3u * nb);
-                }
-                n++;
-                break;
-            }
-            if (t == h0 || t >= nc || n > nc) break; /* t >= nc (a border) cannot occur here */
-            h = t;
         }
-        if (pass == 1u) break;
-        cls = loop_class_of(ns, (p->vflag[v] & VF_CORNER) != 0u);
-        if (cls == LOOP_CORNER) {
-            out[0] = pv[0];
-            out[1] = pv[1];
-            out[2] = pv[2];
-            return;
-        }
-        if (cls == LOOP_CREASE) {
-            loop_rule_crease(out, pv, p->pos + 3u * snb[0], p->pos + 3u * snb[1], ovf);
-            return;
-        }
-        w = loop_weights_of(wc, n, ovf);
-        loop_smooth_begin(acc, w, pv);
+        cls = loop_class_of(ns, (f & VF_CORNER) != 0u);
     }
-    loop_smooth_end(out, acc, ovf);
+    if (cls == LOOP_CORNER) {
+        out[0] = pv[0];
+        out[1] = pv[1];
+        out[2] = pv[2];
+    } else if (cls == LOOP_CREASE) {
+        loop_rule_crease(out, pv, p->pos + 3u * snb[0], p->pos + 3u * snb[1], ovf);
+    } else {
+        loop_weights w = loop_weights_of(wc, n, ovf);
+        subd_acc acc[3];
+        loop_smooth_begin(acc, w, pv);
+        ring_begin(p, v, &it);
+        while ((nb = ring_step(p, &it, &sharp)) != SUBD_NONE) loop_smooth_add(acc, w, p->pos + 3u * nb);
+        loop_smooth_end(out, acc, ovf);
+        if (n == 6u) f |= VF_SMOOTH6;
+    }
+    *child = f;
 }
 
 /* The lower half-edge of h's edge (the one loop.c makes the edge's new vertex at). */
@@ -371,14 +401,22 @@ static void edge_point(const sp_level *p, uint32_t hl, subd_loop_boundary rule, 
                              p->vflag[b] & VF_REGULAR, ovf);
 }
 
-/* Fills the cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner. */
-static void fill_cache(const sp_level *p, subd_loop_boundary rule, loop_wcache *wc, uint32_t *ovf)
+/* Fills the cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
+ * (`all`), or only the centre's three edges (the last level, which emits the centre's
+ * children and refines nothing further). */
+static void fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf)
 {
     uint32_t h, v, nc = 3u, n3 = 3u * p->h->nf;
     for (h = 0; h < n3; h++) p->slot[h] = NO_SLOT;
-    for (v = 0; v < 3u; v++) {
-        vertex_point(p, v, wc, ovf, p->cpos + 3u * v);
-        p->cflag[v] = p->vflag[v];
+    for (v = 0; v < 3u; v++) vertex_point(p, v, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
+    if (!all) {
+        for (v = 0; v < 3u; v++) {
+            h = 3u * p->h->cf + v;
+            p->slot[h] = (uint16_t)(3u + v);
+            edge_point(p, lower_of(p, h), rule, ovf, p->cpos + 3u * (3u + v));
+        }
+        p->h->nc = 6;
+        return;
     }
     for (h = 0; h < n3; h++) {
         uint32_t hl;
@@ -387,7 +425,7 @@ static void fill_cache(const sp_level *p, subd_loop_boundary rule, loop_wcache *
         p->slot[h] = (uint16_t)nc;
         if (p->tw[h] < TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
         edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
-        p->cflag[nc] = (p->sh[hl] & SH_CHILD) ? (uint8_t)VF_REGULAR : (uint8_t)0u;
+        p->cflag[nc] = (p->sh[hl] & SH_CHILD) ? (uint8_t)VF_REGULAR : (uint8_t)VF_SMOOTH6;
         nc++;
     }
     p->h->nc = nc;
@@ -410,6 +448,22 @@ static void child_slots(const sp_level *p, uint32_t pf, uint32_t k, uint32_t x[3
         x[1] = p->slot[h + k];
         x[2] = p->slot[h + (k + 2u) % 3u];
     }
+}
+
+/* Which children of local face pf (bit k: child k) touch a corner of the centre's child c,
+ * whose corners are the cached values s[0..2]: child i of a face holds its corner i, and the
+ * new vertex of its edge j lies in children j, j+1 and 3. Every face of the child's 1-ring
+ * descends from a face at the child's old corner or at one of its two edges. */
+static uint32_t child_mask(const sp_level *p, uint32_t pf, uint32_t c, const uint32_t s[3])
+{
+    uint32_t j, m = 0, h = 3u * pf;
+    for (j = 0; j < 3u; j++) {
+        uint32_t sl = p->slot[h + j];
+        if (c < 3u && p->cv[h + j] == c) m |= 1u << j;
+        if (sl != NO_SLOT && ((c == 3u && sl == s[0]) || sl == s[1] || sl == s[2]))
+            m |= (1u << j) | (1u << ((j + 1u) % 3u)) | 8u;
+    }
+    return m;
 }
 
 /* Child corner (f, k, j) of the parent numbering -> child-local half-edge or TW_BORDER. */
@@ -475,13 +529,12 @@ static void extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint
         q->vflag[j] = p->cflag[s[j]];
     }
     nv = 3;
-    for (pf = 0; pf < ph->nf; pf++)
-        for (k = 0; k < 4u; k++) {
+    for (pf = 0; pf < ph->nf; pf++) {
+        uint32_t mask = child_mask(p, pf, c, s);
+        for (k = 0; mask != 0u; k++, mask >>= 1) {
             uint32_t x[3];
+            if (!(mask & 1u)) continue;
             child_slots(p, pf, k, x);
-            if (x[0] != s[0] && x[0] != s[1] && x[0] != s[2] && x[1] != s[0] && x[1] != s[1] &&
-                x[1] != s[2] && x[2] != s[0] && x[2] != s[1] && x[2] != s[2])
-                continue;
             fmap[4u * pf + k] = (uint16_t)nf;
             for (j = 0; j < 3u; j++) {
                 uint32_t sl = x[j];
@@ -497,6 +550,7 @@ static void extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint
             }
             nf++;
         }
+    }
     /* twins and sharp bits (loop.c's refine_level, mapped to the child's faces) */
     for (pf = 0; pf < ph->nf; pf++)
         for (k = 0; k < 4u; k++) {
@@ -649,7 +703,7 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
         run.f = f;
         level_at(base, &lay, 0, &p);
         build_control(in, f, &p, levels);
-        fill_cache(&p, o->boundary, &wc, &ovf);
+        fill_cache(&p, o->boundary, levels > 1u, &wc, &ovf);
         for (;;) {
             if (ovf) {
                 st = SUBD_ERR_RANGE;
@@ -662,7 +716,7 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
                 uint32_t c = p.h->child++;
                 level_at(base, &lay, k + 1u, &q);
                 extract_child(&p, &q, c, smap, fmap);
-                fill_cache(&q, o->boundary, &wc, &ovf);
+                fill_cache(&q, o->boundary, k + 2u < levels, &wc, &ovf);
                 k++;
                 continue;
             }

@@ -257,5 +257,6 @@ int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *b
 #include "subd_quasi48.h"
 #include "subd_alpha.h"
 #include "subd_semireg48.h"
+#include "subd_tags.h"
 
 #endif

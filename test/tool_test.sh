@@ -1,7 +1,7 @@
 #!/bin/sh
-# Tests of the subd host tool (port/host/subd_main.c): exit codes, FILE:LINE messages for
+# Tests of the subd host tool (port/host/subd_*.c): exit codes, FILE:LINE messages for
 # every row of test/bad/EXPECT, info topology on test/data, convert round trips, render,
-# --stats JSON, --arena budget, usage and I/O errors.
+# --stats JSON, --arena budget, --tags files, the option table behind --help, usage and I/O errors.
 # Needs only sh, coreutils, grep, sed, awk, od. Prints one "ok - ..." / "not ok - ..." line per
 # check (details of a failure follow, indented) and ends with "N passed, M failed".
 # usage: test/tool_test.sh BIN_DIR      (BIN_DIR holds subd and subd-fixed)
@@ -386,6 +386,35 @@ run "$FLOAT" help
 is 0 && grep -q '^usage: subd' "$T/out"; check $? "help prints usage on stdout, exit 0"
 run "$FIXED" --version
 is 0 && grep -q '^subd [0-9].*q16\.16' "$T/out"; check $? "subd-fixed --version names q16.16"
+# The help's option list is generated from the parser's option table: every option it lists
+# is known to the parser (a misspelt row would say "unknown option").
+"$FLOAT" --help 2> /dev/null | awk '/^options:/ { o = 1; next } /^Long options/ { o = 0 }
+    o && /^  -/ { col = substr($0, 3, 16); sub(/ +$/, "", col); print col }' > "$T/opts"
+unknown=""
+while read -r name meta; do
+    case $name in -h, | --version) continue ;; esac
+    if [ -n "$meta" ]; then run "$FLOAT" info "$name" 1 test/data/hexfan.obj; else run "$FLOAT" info "$name" test/data/hexfan.obj; fi
+    grep -q "unknown option" "$T/err" && unknown="$unknown $name"
+done < "$T/opts"
+[ "$(wc -l < "$T/opts")" -ge 28 ] && [ -z "$unknown" ]
+check $? "every option --help lists is parsed ($(wc -l < "$T/opts") options${unknown:+; unknown:$unknown})"
+run "$FLOAT" info --help test/data/hexfan.obj
+is 0 && grep -q '^usage: subd' "$T/out" && grep -q '^  --tags FILE ' "$T/out"; check $? "--help after a command prints the help, exit 0"
+usage_case "--version after a command" info --version test/data/hexfan.obj
+usage_case "a flag given a value (--stats=1)" info --stats=1 test/data/hexfan.obj
+usage_case "two tag files" loop --tags "$T/c1.tags" --tags "$T/c1.tags" test/data/icosahedron.obj -o "$T/x.obj"
+# --tags through the library parser: CRLF and comments give the same tags as LF, --name=VALUE works,
+# an empty tag file is valid
+printf '# cube edges, CRLF\r\n' > "$T/cube_crlf.tags"
+sed 's/$/\r/' "$T/cube.tags" >> "$T/cube_crlf.tags"
+run "$FLOAT" loop -l 2 --tags="$T/cube_crlf.tags" demo/cube_tri.obj -o "$T/cube_crlf.obj"
+is 0 && cmp -s "$T/cube_tags.obj" "$T/cube_crlf.obj"; check $? "--tags=FILE with CRLF lines and comments = the LF file"
+: > "$T/empty.tags"
+run "$FIXED" loop --tags "$T/empty.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 0 && grep -q "0 crease edge(s), 0 vertex tag(s)" "$T/err"; check $? "an empty tag file is valid (no tags)"
+printf 'corner 1\nfixed 2 # ok\ncorner 0\n' > "$T/bad4.tags"
+run "$FIXED" quasi48 --tags "$T/bad4.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 2 && err_starts "$T/bad4.tags:3: expected"; check $? "subd-fixed --tags with vertex 0 on line 3: exit 2, FILE:3"
 
 # ---------------------------------------------------------------- I/O errors
 run "$FLOAT" info "$T/does-not-exist.obj"

@@ -1,0 +1,365 @@
+/* SPDX-License-Identifier: MIT */
+/* subd tool: the command table and the scheme commands. A scheme command is one row with a
+ * plan function (exact arena bytes for this input, after the input mesh) and a run function
+ * (arena, const input -> output mesh, plus optional normals and --stats members); the common
+ * path in subd_main.c does everything else. The table also gives each command's synopsis and
+ * summary for --help, the options it accepts and its level range.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdlib.h>
+#include <string.h>
+#include "subd_tool.h"
+#include "host_real.h"
+
+static subd_loop_opts loop_opts_of(const tool_opts *o)
+{
+    subd_loop_opts lo;
+    lo.levels = o->levels;
+    lo.boundary = o->boundary;
+    lo.flags = 0;
+    return lo;
+}
+
+static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_loop_opts lo = loop_opts_of(o);
+    (void)d;
+    return subd_loop_plan(in, &lo, bytes);
+}
+
+static int loop_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                    subd_diag *d)
+{
+    subd_loop_opts lo = loop_opts_of(o);
+    (void)x;
+    return subd_loop(a, in, &lo, out, d);
+}
+
+static int limit_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    (void)d;
+    return subd_loop_limit_plan(in, o->boundary, o->normals, bytes);
+}
+
+/* The limit and interpolation commands move the vertices: the output is the input's
+ * topology with new positions. */
+static int limit_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                     subd_diag *d)
+{
+    subd_real *pos = NULL;
+    int st = subd_loop_limit(a, in, o->boundary, &pos, o->normals ? &x->normals : NULL, d);
+    if (st != SUBD_OK) return st;
+    *out = *in;
+    out->pos = pos;
+    return SUBD_OK;
+}
+
+static subd_pia_opts pia_opts_of(const tool_opts *o)
+{
+    subd_pia_opts po;
+    po.boundary = o->boundary;
+    po.tol = host_real_from_double(o->tol);
+    po.max_iter = o->max_iter;
+    po.method = o->method;
+    return po;
+}
+
+static int pia_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_pia_opts po = pia_opts_of(o);
+    (void)d;
+    return subd_pia_plan(in, &po, bytes);
+}
+
+static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                   subd_diag *d)
+{
+    subd_pia_opts po = pia_opts_of(o);
+    subd_pia_result res;
+    subd_real *pos = NULL;
+    int st = subd_pia(a, in, &po, &pos, &res, d);
+    if (st != SUBD_OK) return st;
+    *out = *in;
+    out->pos = pos;
+    snprintf(x->json, sizeof x->json,
+             "\"method\":\"%s\",\"tol\":%.9g,\"iterations\":%lu,\"max_err\":%.9g,\"mean_err\":%.9g,\"converged\":%s",
+             o->method == SUBD_PIA_FAST ? "fast" : "paper", o->tol, (unsigned long)res.iterations,
+             host_real_to_double(res.max_err), host_real_to_double(res.mean_err), res.converged ? "true" : "false");
+    if (!o->stats)
+        fprintf(stderr, "pia: %lu iterations, max error %.6g, mean error %.6g, %s\n", (unsigned long)res.iterations,
+                host_real_to_double(res.max_err), host_real_to_double(res.mean_err),
+                res.converged ? "converged" : "NOT converged (raise --max-iter or --tol)");
+    return SUBD_OK;
+}
+
+static subd_q48_opts q48_opts_of(const tool_opts *o)
+{
+    subd_q48_opts qo;
+    qo.steps = o->levels;
+    qo.boundary = o->q48_boundary;
+    qo.flags = o->no_smooth ? SUBD_Q48_NO_SMOOTH : 0u;
+    qo.len_bits = 0;
+    return qo;
+}
+
+static int q48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_q48_opts qo = q48_opts_of(o);
+    (void)d;
+    return subd_quasi48_plan(in, &qo, bytes);
+}
+
+static int q48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                   subd_diag *d)
+{
+    subd_q48_opts qo = q48_opts_of(o);
+    int st = subd_quasi48(a, in, &qo, out, d);
+    if (st == SUBD_OK)
+        snprintf(x->json, sizeof x->json, "\"binary_steps\":%lu,\"smoothing\":%s,\"boundary\":\"%s\"",
+                 (unsigned long)o->levels, o->no_smooth ? "false" : "true",
+                 o->q48_boundary == SUBD_Q48_BOUNDARY_SMOOTH ? "smooth" : "fixed");
+    return st;
+}
+
+/* semireg48 and adapt: build the hierarchy of right triangles (subd_sr48_build), then cut
+ * the output mesh out of it (subd_sr48_extract; uniform at level N for semireg48). The
+ * device arena holds both, so the plan is the build's exact bytes (with the cluster count
+ * found first) plus the extraction's; the extraction plan needs the hierarchy, so the plan
+ * builds it once in host memory. */
+static subd_sr48_opts sr48_opts_of(const tool_opts *o)
+{
+    subd_sr48_opts so;
+    so.steps = o->levels;
+    so.flags = o->no_smooth ? SUBD_SR48_NO_SMOOTH : 0u;
+    return so;
+}
+
+static subd_adapt sr48_adapt_of(const tool_opts *o)
+{
+    subd_adapt ad;
+    int i;
+    memset(&ad, 0, sizeof ad);
+    ad.mode = o->adapt_mode;
+    ad.max_level = o->levels;
+    for (i = 0; i < 3; i++) {
+        ad.point[i] = host_real_from_double(o->adapt_val[i]);
+        ad.normal[i] = host_real_from_double(o->adapt_val[3 + i]);
+    }
+    ad.radius = host_real_from_double(o->radius);
+    ad.axis = o->adapt_axis;
+    ad.eps = host_real_from_double(o->adapt_val[0]);
+    return ad;
+}
+
+/* Exact build bytes: find_clusters first (in a temporary host arena). */
+static int sr48_build_plan(const subd_mesh *in, const subd_sr48_opts *so, uint32_t *bytes, subd_diag *d)
+{
+    uint32_t bound, clusters = 0;
+    subd_arena tmp;
+    void *mem;
+    int st = subd_sr48_plan(in, so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    if (st != SUBD_OK) return st;
+    mem = host_arena_alloc(&tmp, bound);
+    if (!mem) return SUBD_ERR_NOMEM;
+    st = subd_sr48_count_clusters(&tmp, in, &clusters, d);
+    free(mem);
+    if (st != SUBD_OK) return st;
+    return subd_sr48_plan(in, so, clusters, bytes);
+}
+
+static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    subd_sr48_opts so = sr48_opts_of(o);
+    subd_adapt ad = sr48_adapt_of(o);
+    uint32_t build = 0, extract = 0, keep;
+    subd_arena tmp;
+    subd_sr48 h;
+    void *mem;
+    int st = sr48_build_plan(in, &so, &build, d);
+    if (st != SUBD_OK) return st;
+    mem = host_arena_alloc(&tmp, build);
+    if (!mem) return SUBD_ERR_NOMEM;
+    st = subd_sr48_build(&tmp, in, &so, &h, d);
+    keep = tmp.used; /* the hierarchy; the build's scratch above it is given back */
+    if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &ad, &extract);
+    free(mem);
+    if (st != SUBD_OK) return st;
+    if (extract > UINT32_MAX - keep) return SUBD_ERR_TOO_BIG;
+    *bytes = keep + extract > build ? keep + extract : build;
+    return SUBD_OK;
+}
+
+static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                    subd_diag *d)
+{
+    static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
+    subd_sr48_opts so = sr48_opts_of(o);
+    subd_adapt ad = sr48_adapt_of(o);
+    subd_adapt_report rep;
+    subd_sr48 h;
+    uint32_t mark = subd_arena_mark(a);
+    int st = subd_sr48_build(a, in, &so, &h, d);
+    if (st != SUBD_OK) return st;
+    st = subd_sr48_extract(a, &h, &ad, out, &rep, d);
+    if (st != SUBD_OK) {
+        subd_arena_rewind(a, mark);
+        return st;
+    }
+    snprintf(x->json, sizeof x->json,
+             "\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\",\"clusters\":%lu,\"isolated_triangles\":%lu,"
+             "\"hierarchy_triangles\":%lu,\"faces\":%lu,\"uniform_faces\":%lu,\"saved_faces\":%lu,"
+             "\"forced_splits\":%lu",
+             (unsigned long)o->levels, o->no_smooth ? "false" : "true", mode_name[ad.mode],
+             (unsigned long)h.num_clusters, (unsigned long)h.num_isolated, (unsigned long)h.num_tris,
+             (unsigned long)rep.faces, (unsigned long)rep.uniform_faces,
+             (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
+    if (!o->stats && ad.mode != SUBD_ADAPT_UNIFORM)
+        fprintf(stderr, "adapt: %lu triangles (uniform level %lu: %lu, saved %lu), %lu forced splits\n",
+                (unsigned long)rep.faces, (unsigned long)o->levels, (unsigned long)rep.uniform_faces,
+                (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
+    return SUBD_OK;
+}
+
+/* alpha: the semi-stationary operators. A mesh with faces gets the Doo-Sabin type surface
+ * operator; a mesh of polylines (OBJ l records) gets the curve operator S_k once per
+ * polyline, closed when its last index repeats its first. Curves are refined one at a time
+ * in the arena (the plan is the largest single curve) and collected in host memory. */
+static int alpha_is_closed(const subd_mesh *in, uint32_t l, uint32_t *m)
+{
+    uint32_t s = in->line_start[l], e = in->line_start[l + 1u];
+    *m = e - s;
+    if (*m >= 4u && in->line_vert[s] == in->line_vert[e - 1u]) {
+        (*m)--;
+        return 1;
+    }
+    return 0;
+}
+
+static int alpha_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    uint32_t l, most = 0, b, pts, m;
+    int st;
+    (void)d;
+    if (in->num_faces) return subd_alpha_surface_plan(in, &o->alpha, bytes);
+    if (!in->num_lines) return SUBD_ERR_EMPTY;
+    for (l = 0; l < in->num_lines; l++) {
+        int closed = alpha_is_closed(in, l, &m);
+        st = subd_alpha_curve_plan(m, closed, &o->alpha, &b, &pts);
+        if (st != SUBD_OK) return st;
+        /* room for the gathered input points too */
+        b += SUBD_ALIGN_UP(3u * m * (uint32_t)sizeof(subd_real));
+        if (b > most) most = b;
+    }
+    *bytes = most;
+    return SUBD_OK;
+}
+
+static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+                     subd_diag *d)
+{
+    uint32_t l, total = 0, k, m, pts, b;
+    int32_t continuity = 1;
+    subd_real *pos;
+    uint32_t *lstart, *lvert;
+    int st;
+    if (in->num_faces) {
+        subd_alpha_surface_info info;
+        st = subd_alpha_surface(a, in, &o->alpha, out, &info, d);
+        if (st == SUBD_OK)
+            snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"surface\"",
+                     (unsigned long)o->alpha.order, (long)info.continuity);
+        return st;
+    }
+    for (l = 0; l < in->num_lines; l++) {
+        int closed = alpha_is_closed(in, l, &m);
+        if ((st = subd_alpha_curve_plan(m, closed, &o->alpha, &b, &pts)) != SUBD_OK) return st;
+        total += pts + (uint32_t)closed;
+    }
+    x->host_mem = malloc((size_t)total * (3u * sizeof(subd_real) + sizeof(uint32_t)) +
+                         (in->num_lines + 1u) * sizeof(uint32_t) + sizeof(uint32_t));
+    if (!x->host_mem) return SUBD_ERR_NOMEM;
+    pos = (subd_real *)x->host_mem;
+    lvert = (uint32_t *)(void *)(pos + 3u * total);
+    lstart = lvert + total;
+    lstart[0] = 0;
+    total = 0;
+    for (l = 0; l < in->num_lines; l++) {
+        uint32_t mark = subd_arena_mark(a), s = in->line_start[l];
+        int closed = alpha_is_closed(in, l, &m);
+        subd_alpha_curve_out co;
+        subd_real *p = (subd_real *)subd_arena_alloc(a, 3u * m * (uint32_t)sizeof(subd_real));
+        if (!p) return SUBD_ERR_NOMEM;
+        for (k = 0; k < 3u * m; k++) p[k] = in->pos[3u * in->line_vert[s + k / 3u] + k % 3u];
+        st = subd_alpha_curve(a, p, m, closed, &o->alpha, &co, d);
+        if (st != SUBD_OK) {
+            d->polyline = l;
+            return st;
+        }
+        for (k = 0; k < 3u * co.num_points; k++) pos[3u * total + k] = co.pos[k];
+        for (k = 0; k < co.num_points; k++) lvert[lstart[l] + k] = total + k;
+        if (closed) lvert[lstart[l] + co.num_points] = total; /* repeat the first point */
+        lstart[l + 1u] = lstart[l] + co.num_points + (uint32_t)closed;
+        total += co.num_points;
+        if (co.continuity < continuity) continuity = co.continuity;
+        subd_arena_rewind(a, mark);
+    }
+    memset(out, 0, sizeof *out);
+    out->num_verts = total;
+    out->pos = pos;
+    out->face_start = lstart; /* any valid pointer: there are no faces */
+    out->num_lines = in->num_lines;
+    out->num_line_verts = lstart[in->num_lines];
+    out->line_start = lstart;
+    out->line_vert = lvert;
+    snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"curves\"",
+             (unsigned long)o->alpha.order, (long)continuity);
+    return SUBD_OK;
+}
+
+#define LOOP_OPTS (OPT_BOUNDARY | OPT_CREASE)
+const command tool_commands[] = {
+    {"info", "INPUT", "counts, components, Euler characteristic, genus,\n"
+                      "valences and bounding box of a mesh",
+     CMD_OUTPUT_NONE, NULL, 0, 0, 0, NULL, NULL, tool_info_report},
+    {"convert", "INPUT -o OUTPUT", "write the mesh in OUTPUT's format",
+     CMD_OUTPUT_REQUIRED, NULL, 0, 0, 0, NULL, NULL, NULL},
+    {"render", "INPUT -o OUTPUT.png", "draw the mesh (shaded, with edges) as a PNG",
+     CMD_OUTPUT_REQUIRED | CMD_PNG_ONLY, NULL, 0, 0, 0, NULL, NULL, NULL},
+    {"loop", "[-l N] INPUT -o OUTPUT", "Loop subdivision of a triangle mesh (default 1 level);\n"
+                                       "--boundary paper|bspline, --crease-angle DEG",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "loop", 1, SUBD_MAX_LEVELS, LOOP_OPTS, loop_plan, loop_run, NULL},
+    {"limit", "INPUT -o OUTPUT", "control vertices moved to their Loop limit positions;\n"
+                                 "--normals adds limit normals (OBJ vn)",
+     CMD_OUTPUT_REQUIRED, "limit", 0, 0, LOOP_OPTS | OPT_NORMALS, limit_plan, limit_run, NULL},
+    {"pia", "--tol T INPUT -o OUTPUT", "progressive interpolation: a control mesh whose Loop\n"
+                                       "limit surface passes through INPUT's vertices;\n"
+                                       "--max-iter K (default 100), --method paper|fast",
+     CMD_OUTPUT_REQUIRED, "pia", 0, 0, LOOP_OPTS | OPT_TOL | OPT_MAX_ITER | OPT_METHOD, pia_plan, pia_run, NULL},
+    {"quasi48", "[-l N] INPUT -o OUTPUT", "quasi 4-8 subdivision, N binary steps (default 2 = one\n"
+                                          "4-8 refinement); --no-smooth, --boundary fixed|smooth,\n"
+                                          "--tag-boundary, --crease-angle DEG",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_Q48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE, q48_plan, q48_run, NULL},
+    {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"
+                                        "or the Doo-Sabin type surface; --order K, --kernel\n"
+                                        "bspline|cos|poly|cosh, --alpha A, --stiffness S",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, SUBD_MAX_LEVELS, OPT_ALPHA, alpha_plan, alpha_run, NULL},
+    {"semireg48", "[-l N] INPUT -o OUTPUT", "semi-regular 4-8 refinement with Zwart-Powell box-spline\n"
+                                            "smoothing, N binary steps after pre-processing (default\n"
+                                            "2; -l 0 writes the pre-processed mesh); --no-smooth",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 2, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH, sr48_plan,
+     sr48_run, NULL},
+    {"adapt", "-l MAX MODE INPUT -o OUTPUT", "variable-resolution semi-regular 4-8 mesh up to MAX binary\n"
+                                             "steps; MODE: --point X,Y,Z [--radius R] | --ramp x|y|z |\n"
+                                             "--plane X,Y,Z,NX,NY,NZ | --chord EPS; --no-smooth",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 6, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH | OPT_ADAPT,
+     sr48_plan, sr48_run, NULL},
+};
+const size_t tool_num_commands = sizeof tool_commands / sizeof tool_commands[0];
+
+const command *tool_find_command(const char *name)
+{
+    size_t i;
+    for (i = 0; i < tool_num_commands; i++)
+        if (strcmp(tool_commands[i].name, name) == 0) return &tool_commands[i];
+    return NULL;
+}

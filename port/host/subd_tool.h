@@ -1,0 +1,148 @@
+/* SPDX-License-Identifier: MIT */
+/* The subd host tool's shared types: the parsed options, the command table's row, and what
+ * one invocation produced. Each concept lives in its own file:
+ *   subd_main.c      main, the common path (read, tag, plan, run, write, report), errors
+ *   subd_options.c   the option table: parsing argv and the --help text, both from it
+ *   subd_commands.c  the command table and the scheme commands' plan and run functions
+ *   subd_info.c      the `info` report (topology, valences, bounding box)
+ *   subd_write.c     the output writers (.obj/.off, .png, .xyz) and the --stats JSON
+ * Host only (stdio, malloc); never linked into device images.
+ */
+#ifndef SUBD_TOOL_H
+#define SUBD_TOOL_H
+#include <stddef.h>
+#include <stdio.h>
+#include "subd.h"
+#include "fileio.h"
+#include "render.h"
+
+enum {
+    EXIT_OK = 0,
+    EXIT_USAGE = 1,
+    EXIT_INPUT = 2,
+    EXIT_LIMIT = 3,
+    EXIT_OUTPUT = 4
+};
+
+#if SUBD_FIXED
+#define ARITHMETIC "q16.16"
+#else
+#define ARITHMETIC "float32"
+#endif
+
+typedef struct tool_opts {
+    const char *input;
+    const char *output;
+    host_format out_format;
+    int stats;
+    int has_budget;
+    uint32_t budget;
+    int has_levels;
+    uint32_t levels;
+    int render_opt_given; /* any of --size/--yaw/--pitch/--no-edges */
+    render_opts ropt;
+    /* scheme options */
+    const char *boundary_name;   /* --boundary, interpreted by the command               */
+    subd_loop_boundary boundary; /* loop/limit/pia: paper (default) | bspline             */
+    subd_q48_boundary q48_boundary; /* quasi48: fixed (default) | smooth                  */
+    int no_smooth;               /* --no-smooth (quasi48): refinement only                */
+    int tag_boundary;            /* --tag-boundary: tag boundary edges as creases first   */
+    int has_crease_angle;
+    double crease_deg;           /* --crease-angle DEG: tag sharper edges as creases      */
+    const char *tags;            /* --tags FILE: crease edges, corner and fixed vertices  */
+    int normals;                 /* --normals (limit): write limit normals as OBJ vn      */
+    double tol;                  /* --tol T (pia)                                         */
+    uint32_t max_iter;           /* --max-iter K (pia)                                    */
+    subd_pia_method method;      /* --method paper|fast (pia)                             */
+    subd_alpha_opts alpha;       /* --order, --kernel, --alpha, --stiffness (alpha)       */
+    subd_adapt_mode adapt_mode;  /* adapt: --point, --ramp, --plane or --chord            */
+    double adapt_val[6];         /* the point (and plane normal), or the chord tolerance  */
+    uint32_t adapt_axis;         /* --ramp x|y|z                                          */
+    double radius;               /* --radius R (adapt --point)                            */
+    unsigned given;              /* OPT_* bits of the scheme options given                */
+} tool_opts;
+
+/* Scheme options, as bits: each command lists the ones it accepts. */
+#define OPT_BOUNDARY 0x01u
+#define OPT_CREASE 0x02u
+#define OPT_NORMALS 0x04u
+#define OPT_TOL 0x08u
+#define OPT_MAX_ITER 0x10u
+#define OPT_METHOD 0x20u
+#define OPT_Q48 0x40u /* --tag-boundary, --boundary fixed|smooth */
+#define OPT_ALPHA 0x80u /* --order, --kernel, --alpha, --stiffness */
+#define OPT_NO_SMOOTH 0x100u /* --no-smooth */
+#define OPT_ADAPT 0x200u /* --point, --ramp, --plane, --chord, --radius */
+
+/* What a scheme produced besides the output mesh: optional per-vertex normals (written as
+ * OBJ vn) and extra --stats members (a JSON fragment without braces, e.g. "iterations":9). */
+typedef struct scheme_extra {
+    subd_real *normals;
+    char json[256];
+    void *host_mem; /* output arrays a scheme built in host memory (freed at exit) */
+} scheme_extra;
+
+/* Command flags. */
+#define CMD_OUTPUT_NONE 0x01u     /* takes no -o (report only)                              */
+#define CMD_OUTPUT_REQUIRED 0x02u /* -o is mandatory                                        */
+#define CMD_PNG_ONLY 0x04u        /* the output must be .png                                */
+#define CMD_LEVELS 0x08u          /* accepts -l N                                           */
+#define CMD_LEVEL0 0x10u          /* -l 0 is meaningful                                     */
+
+struct tool_run;
+
+typedef struct command {
+    const char *name;
+    const char *synopsis; /* arguments after the name, for the usage text */
+    const char *summary;  /* one line (continued lines start with '\n') */
+    unsigned flags;
+    const char *scheme;       /* paper scheme name for --stats, NULL for plain commands  */
+    uint32_t default_levels;  /* used when -l is not given (CMD_LEVELS)                  */
+    uint32_t max_levels;      /* largest -l N                                            */
+    unsigned options;         /* OPT_* scheme options the command accepts                */
+    /* Scheme commands: exact arena bytes run() needs for this input (after the input mesh,
+     * which stays in the arena), and the operation itself (arena, const input -> output).
+     * Both NULL: the output is the input mesh. Return a subd_status, diag filled. */
+    int (*plan)(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d);
+    int (*run)(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
+               subd_diag *d);
+    /* Human-readable report (info), written to `f`. */
+    int (*report)(FILE *f, const struct tool_run *r);
+} command;
+
+/* Everything one invocation produced, for the report and --stats. */
+typedef struct tool_run {
+    const command *cmd;
+    tool_opts o;
+    host_mesh in;
+    subd_mesh out;         /* result of run(), or a copy of in.mesh                       */
+    void *work_mem;        /* separate arena for run() when there is no --arena budget    */
+    subd_arena work;
+    uint32_t planned;      /* arena bytes one device arena needs for the whole command    */
+    uint32_t used;         /* measured peak of that (virtual) arena                       */
+    double lib_ns;         /* time spent in library calls (parse, build, plan, run)       */
+    uint32_t out_bytes;    /* bytes written to OUTPUT                                     */
+    scheme_extra extra;
+    int out_width, out_height;
+} tool_run;
+
+/* The command table (subd_commands.c). */
+extern const command tool_commands[];
+extern const size_t tool_num_commands;
+const command *tool_find_command(const char *name);
+
+/* Options and usage (subd_options.c). tool_parse_args parses argv[2..] into *o and returns
+ * EXIT_OK or EXIT_USAGE (message printed); -h/--help prints the help and exits. */
+int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o);
+void tool_usage(FILE *f);
+void tool_usage_short(FILE *f);
+int tool_usage_error(const char *fmt, ...);
+
+/* Reports and output (subd_info.c, subd_write.c). Each returns an EXIT_* status. */
+int tool_info_report(FILE *f, const tool_run *r);
+int tool_write_output(tool_run *r);
+void tool_print_stats(FILE *f, const tool_run *r);
+
+/* Errors (subd_main.c): print the message, return the EXIT_* status. */
+int tool_out_of_memory(void);
+#endif

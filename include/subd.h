@@ -101,6 +101,8 @@ void subd_size_add(uint32_t *total, uint32_t count, uint32_t elem_bytes);
 #define SUBD_VTAG_ISOLATED 0x02u /* used by no face (set by the builder)                  */
 #define SUBD_VTAG_CORNER   0x04u /* caller: keep fixed (Hoppe et al. corner)              */
 #define SUBD_VTAG_FIXED    0x08u /* caller: do not move (schemes that honour tags)        */
+/* Bits 0x40 and 0x80 are reserved for the library: keep them 0 (subd_loop_limit and
+ * subd_pia return SUBD_ERR_PARAM, diag.vertex, when an input vertex has them). */
 /* Per-half-edge tag bits (edge tags are kept equal on both half-edges of an edge). */
 #define SUBD_ETAG_BOUNDARY 0x01u /* no twin (set by the builder)                          */
 #define SUBD_ETAG_CREASE   0x02u /* caller: sharp feature edge                            */

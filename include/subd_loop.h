@@ -179,11 +179,14 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
      SUBD_LOOP_SA_(3u * SUBD_LOOP_SF_(S)) + \
      ((cache) ? SUBD_LOOP_SA_(3u * 4u * SUBD_LOOP_SC_(S)) + SUBD_LOOP_SA_(SUBD_LOOP_SC_(S)) : 0u) + \
      ((ctl) ? SUBD_LOOP_SA_(4u * SUBD_LOOP_SF_(S)) + SUBD_LOOP_SA_(4u * SUBD_LOOP_SV_(S)) : 0u))
+#define SUBD_LOOP_SVIEW_(S) \
+    (SUBD_LOOP_SA_(4u * (SUBD_LOOP_SF_(S) + 1u)) + 3u * SUBD_LOOP_SA_(12u * SUBD_LOOP_SF_(S)) + \
+     SUBD_LOOP_SA_(4u * SUBD_LOOP_SV_(S)) + SUBD_LOOP_SA_(SUBD_LOOP_SV_(S)) + SUBD_LOOP_SA_(3u * SUBD_LOOP_SF_(S)))
 #define SUBD_LOOP_SSCR_(S) (SUBD_LOOP_SA_(2u * SUBD_LOOP_SC_(S)) + SUBD_LOOP_SA_(2u * 4u * SUBD_LOOP_SF_(S)))
 #define SUBD_LOOP_STREAM_BYTES_(L, N, lim) \
     (SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      ((L) - 1u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)))
+     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */

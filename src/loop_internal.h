@@ -10,6 +10,13 @@
  * Written by loop_limit.c; used by subd_loop_limit and by progressive interpolation. */
 void subd_loop_limit_apply(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl,
                            subd_real *lim, uint32_t *ovf);
+/* Limit position (and, when normal != NULL, unit limit normal) of vertex v alone, bit-identical
+ * to what subd_loop_limit computes for v in a call on the whole mesh (the per-call caches only
+ * memoise). Only v's own ring is walked; a neighbour's regular bit comes from LOOP_VTAG_KNOWN /
+ * LOOP_VTAG_REGULAR when set (loop_rules.h), else from its ring. Written by loop_limit.c; used by loop_stream.c. */
+void subd_loop_limit_vertex(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
+                            subd_real *pos, subd_real *normal, uint32_t *ovf);
+
 /* The checks subd_loop and subd_loop_stream share: arguments, levels, boundary rule, flags
  * (only those in `flags` allowed), a mesh with adjacency, triangles only (SUBD_ERR_FACE_SIZE
  * with diag.face). Returns SUBD_OK or the status (diag set). Written by loop.c. */

@@ -116,10 +116,12 @@
 typedef loop_vinfo lim_vert;
 #define lim_classify loop_classify
 
-/* The class of neighbour v (regular or not, for the paper's curve rules). */
+/* The class of neighbour v (regular or not, for the paper's curve rules): from its ring, or
+ * given by LOOP_VTAG_KNOWN (loop_stream.c's patch views, where v's ring may be cut). */
 static int lim_regular(const subd_mesh *m, uint32_t v)
 {
     lim_vert c;
+    if (m->vert_tag[v] & LOOP_VTAG_KNOWN) return (m->vert_tag[v] & LOOP_VTAG_REGULAR) != 0u;
     lim_classify(m, v, &c);
     return (int)c.regular;
 }
@@ -839,12 +841,28 @@ static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real
 
 static int lim_check(const subd_mesh *in, subd_loop_boundary b, subd_diag *d)
 {
+    int st;
     if (!in || (b != SUBD_LOOP_BOUNDARY_PAPER && b != SUBD_LOOP_BOUNDARY_BSPLINE)) return SUBD_ERR_PARAM;
     if (in->num_verts > 0u && (!in->pos || !in->vert_out || !in->vert_tag)) return SUBD_ERR_PARAM;
     if (in->num_faces > 0u && (!in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
                                !in->edge_tag))
         return SUBD_ERR_PARAM;
+    if ((st = loop_tags_public(in, d)) != SUBD_OK) return st;
     return subd_require_triangles(in, d);
+}
+
+void subd_loop_limit_vertex(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
+                            subd_real *pos, subd_real *normal, uint32_t *ovf)
+{
+    lim_w cache[LIM_CACHE];
+    lim_trig tab;
+    lim_vert c;
+    uint32_t k;
+    for (k = 0; k < LIM_CACHE; k++) cache[k] = (lim_w)0;
+    tab.filled = 0;
+    lim_classify(m, v, &c);
+    lim_position(m, b, ctrl, v, &c, cache, pos, ovf);
+    if (normal) lim_normal(m, b, ctrl, v, &c, &tab, normal);
 }
 
 /* The one layout: positions, then normals; no working memory. */

@@ -11,6 +11,17 @@ int loop_edge_sharp(const subd_mesh *m, uint32_t h)
     return (m->edge_tag[t] & SUBD_ETAG_CREASE) != 0u;
 }
 
+int loop_tags_public(const subd_mesh *m, subd_diag *d)
+{
+    uint32_t v;
+    for (v = 0; v < m->num_verts; v++)
+        if (m->vert_tag[v] & LOOP_VTAG_PRIVATE) {
+            if (d) d->vertex = v;
+            return SUBD_ERR_PARAM;
+        }
+    return SUBD_OK;
+}
+
 void loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
 {
     uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};

@@ -28,6 +28,18 @@
 
 #define LOOP_ETAG_SHARP (SUBD_ETAG_BOUNDARY | SUBD_ETAG_CREASE)
 
+/* Vertex tag bits 0x40 and 0x80 are the library's (subd.h: keep them 0): loop.c marks its
+ * intermediate levels' classes with them, and loop_stream.c's patch views (a level-L 1-ring
+ * whose outer vertices lack whole rings) give an outer vertex's class with them:
+ * LOOP_VTAG_KNOWN set means "regular is LOOP_VTAG_REGULAR, do not walk the ring". */
+#define LOOP_VTAG_KNOWN 0x40u
+#define LOOP_VTAG_REGULAR 0x80u
+#define LOOP_VTAG_PRIVATE (LOOP_VTAG_KNOWN | LOOP_VTAG_REGULAR)
+
+/* SUBD_OK when no vertex of m uses the library's private tag bits, else SUBD_ERR_PARAM with
+ * d->vertex (d may be NULL). For the public calls that take a caller's mesh. */
+int loop_tags_public(const subd_mesh *m, subd_diag *d);
+
 /* Vertex classes. */
 enum { LOOP_ISOLATED, LOOP_SMOOTH, LOOP_DART, LOOP_CREASE, LOOP_CORNER };
 

@@ -77,10 +77,14 @@ typedef struct sp_level {
     uint32_t *cvert; /* level 0: the input vertex of each local vertex                  */
 } sp_level;
 
+/* Limit mode: level L's patch as a subd_mesh (32-bit arrays) for loop_limit.c's masks. */
+enum { W_FS, W_CV, W_CF, W_TW, W_VOUT, W_VTAG, W_ETAG, W_N };
+
 typedef struct sp_layout {
     uint32_t n;         /* the largest valence, at least 6                                */
     uint32_t off0[A_N]; /* level 0's arrays                                                */
     uint32_t off1[A_N]; /* a later level's arrays                                          */
+    uint32_t view[W_N]; /* limit mode: the view's arrays (absolute offsets)                 */
     uint32_t lev0, lev1, size1, smap, fmap, total;
 } sp_layout;
 
@@ -107,6 +111,21 @@ static uint32_t level_layout(uint32_t s, int cache, int control, uint32_t off[A_
     return t;
 }
 
+/* The limit mode's mesh view of a level with corner valence sum s, from offset t on
+ * (SUBD_LOOP_SVIEW_ is the same sum). */
+static uint32_t view_layout(uint32_t s, uint32_t t, uint32_t off[W_N])
+{
+    uint32_t nv = cap_v(s), nf = cap_f(s);
+    off[W_FS] = t;   subd_size_add(&t, nf + 1u, 4u);
+    off[W_CV] = t;   subd_size_add(&t, nf, 12u);
+    off[W_CF] = t;   subd_size_add(&t, nf, 12u);
+    off[W_TW] = t;   subd_size_add(&t, nf, 12u);
+    off[W_VOUT] = t; subd_size_add(&t, nv, 4u);
+    off[W_VTAG] = t; subd_size_add(&t, nv, 1u);
+    off[W_ETAG] = t; subd_size_add(&t, nf, 3u);
+    return t;
+}
+
 /* The one layout (SUBD_LOOP_STREAM_BYTES_ is the same sum). */
 static void stream_layout(uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
@@ -120,7 +139,10 @@ static void stream_layout(uint32_t levels, uint32_t valence, int limit, sp_layou
     l->lev1 = t;
     l->size1 = level_layout(s1, 1, 0, l->off1);
     for (k = 1; k < levels; k++) t += l->size1;
-    if (limit) t += level_layout(s1, 0, 0, l->off1);
+    if (limit) {
+        t += level_layout(s1, 0, 0, l->off1);
+        t = view_layout(s1, t, l->view);
+    }
     (void)level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
     l->smap = t;
     subd_size_add(&t, s0, 2u);
@@ -667,6 +689,53 @@ static int emit_children(const sp_run *r, const sp_level *p)
     return 0;
 }
 
+/* Limit mode: the centre of level L's patch, each corner moved to its limit position with its
+ * unit limit normal by loop_limit.c's masks on a subd_mesh view of the patch (the corners'
+ * rings are whole; an outer vertex's class is given by LOOP_VTAG_KNOWN). */
+static int emit_limit(const sp_run *r, const sp_level *p, uint8_t *base, const sp_layout *lay, uint32_t *ovf)
+{
+    const sp_head *ph = p->h;
+    uint32_t nf = ph->nf, nv = ph->nv, c, v, j;
+    subd_mesh m;
+    subd_loop_tri t;
+    m.num_verts = nv;
+    m.num_faces = nf;
+    m.num_corners = 3u * nf;
+    m.pos = p->pos;
+    m.face_start = (uint32_t *)(void *)(base + lay->view[W_FS]);
+    m.corner_vert = (uint32_t *)(void *)(base + lay->view[W_CV]);
+    m.corner_face = (uint32_t *)(void *)(base + lay->view[W_CF]);
+    m.twin = (uint32_t *)(void *)(base + lay->view[W_TW]);
+    m.vert_out = (uint32_t *)(void *)(base + lay->view[W_VOUT]);
+    m.vert_tag = base + lay->view[W_VTAG];
+    m.edge_tag = base + lay->view[W_ETAG];
+    m.num_lines = m.num_line_verts = 0;
+    m.line_start = m.line_vert = 0;
+    m.num_edges = m.num_boundary_edges = m.num_boundary_loops = m.num_isolated = 0;
+    for (c = 0; c <= nf; c++) m.face_start[c] = 3u * c;
+    for (c = 0; c < 3u * nf; c++) {
+        uint32_t tw = p->tw[c];
+        m.corner_vert[c] = p->cv[c];
+        m.corner_face[c] = c / 3u;
+        m.twin[c] = tw < TW_BORDER ? tw : SUBD_NONE;
+        m.edge_tag[c] = (uint8_t)((tw == TW_NONE ? SUBD_ETAG_BOUNDARY : 0u) |
+                                  ((tw != TW_NONE && (p->sh[c] & SH_RULE)) ? SUBD_ETAG_CREASE : 0u));
+    }
+    for (v = 0; v < nv; v++) {
+        uint8_t f = p->vflag[v];
+        m.vert_out[v] = v < 3u ? p->vout[v] : SUBD_NONE;
+        m.vert_tag[v] = (uint8_t)(LOOP_VTAG_KNOWN | ((f & VF_REGULAR) ? LOOP_VTAG_REGULAR : 0u) |
+                                  ((f & VF_CORNER) ? SUBD_VTAG_CORNER : 0u) |
+                                  ((v < 3u && p->tw[p->vout[v]] == TW_NONE) ? SUBD_VTAG_BOUNDARY : 0u));
+    }
+    for (j = 0; j < 3u; j++) {
+        subd_loop_limit_vertex(&m, r->o->boundary, p->pos, j, t.pos[j], t.normal[j], ovf);
+        t.id[j] = vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
+    }
+    if (*ovf) return SUBD_ERR_RANGE;
+    return r->sink->tri(r->sink->ctx, &t);
+}
+
 int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
                      subd_diag *diag)
 {
@@ -677,13 +746,13 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
     loop_wcache wc;
     uint8_t *base;
     uint16_t *smap, *fmap;
-    uint32_t mark, f, ovf = 0, levels;
+    uint32_t mark, f, ovf = 0, levels, depth;
+    int limit;
     int st = SUBD_OK;
 
     subd_diag_clear(d);
     if (!a || !sink || !sink->tri) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = stream_check(in, o, &lay, d)) != SUBD_OK) return st;
-    if (o->flags & SUBD_LOOP_STREAM_LIMIT) return subd_fail(d, SUBD_ERR_PARAM); /* not yet */
     mark = subd_arena_mark(a);
     base = (uint8_t *)subd_arena_alloc(a, lay.total);
     if (!base) {
@@ -694,6 +763,8 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
     fmap = (uint16_t *)(void *)(base + lay.fmap);
     wc.have = 0;
     levels = o->levels;
+    limit = (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u;
+    depth = limit ? levels : levels - 1u; /* the level that emits */
     run.in = in;
     run.o = o;
     run.sink = sink;
@@ -703,20 +774,23 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
         run.f = f;
         level_at(base, &lay, 0, &p);
         build_control(in, f, &p, levels);
-        fill_cache(&p, o->boundary, levels > 1u, &wc, &ovf);
+        /* a level above the emitting one caches everything its children's 1-rings need;
+         * the emitting level only its centre's six values (limit mode: none) */
+        fill_cache(&p, o->boundary, depth > 0u, &wc, &ovf);
         for (;;) {
             if (ovf) {
                 st = SUBD_ERR_RANGE;
                 break;
             }
             level_at(base, &lay, k, &p);
-            if (k == levels - 1u) {
-                if ((st = emit_children(&run, &p)) != 0) break;
+            if (k == depth) {
+                st = limit ? emit_limit(&run, &p, base, &lay, &ovf) : emit_children(&run, &p);
+                if (st != 0) break;
             } else if (p.h->child < 4u) {
                 uint32_t c = p.h->child++;
                 level_at(base, &lay, k + 1u, &q);
                 extract_child(&p, &q, c, smap, fmap);
-                fill_cache(&q, o->boundary, k + 2u < levels, &wc, &ovf);
+                if (k + 1u < depth || !limit) fill_cache(&q, o->boundary, k + 1u < depth, &wc, &ovf);
                 k++;
                 continue;
             }

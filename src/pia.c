@@ -210,6 +210,7 @@ static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
         (o->method != SUBD_PIA_PAPER && o->method != SUBD_PIA_FAST) || o->max_iter == 0u ||
         !pia_tol_ok(o->tol))
         return subd_fail(d, SUBD_ERR_PARAM);
+    if (loop_tags_public(in, d) != SUBD_OK) return subd_fail(d, SUBD_ERR_PARAM);
     return subd_require_triangles(in, d);
 }
 

@@ -76,6 +76,7 @@ static int make_shape(int id, subd_arena *a, subd_mesh *m)
 /* The sink of the comparison: triangle j against face j of subd_loop's output. */
 typedef struct cmp_sink {
     const subd_mesh *ref;
+    const subd_real *lpos, *lnrm; /* limit mode: subd_loop_limit of ref (else NULL)     */
     uint64_t *v2id;   /* ref vertex -> id seen for it, UINT64_MAX before */
     uint32_t j, bad_pos, bad_id, stop_after;
     uint32_t hash;
@@ -93,7 +94,10 @@ static int cmp_tri(void *ctx, const subd_loop_tri *t)
         uint32_t v = s->ref->corner_vert[3u * s->j + c];
         for (k = 0; k < 3u; k++) {
             uint32_t b = subd_real_bits(t->pos[c][k]);
-            if (!h_same(t->pos[c][k], s->ref->pos[3u * v + k])) s->bad_pos++;
+            const subd_real *want = s->lpos ? s->lpos : s->ref->pos;
+            if (!h_same(t->pos[c][k], want[3u * v + k])) s->bad_pos++;
+            if (s->lnrm && !h_same(t->normal[c][k], s->lnrm[3u * v + k])) s->bad_pos++;
+            if (!s->lnrm && !h_same(t->normal[c][k], 0)) s->bad_pos++;
             s->hash = h_fnv(s->hash, &b, 4);
         }
         if (s->v2id[v] == UINT64_MAX) s->v2id[v] = t->id[c];
@@ -130,9 +134,10 @@ static uint8_t big_arena[BIG_ARENA_BYTES] __attribute__((aligned(8)));
 
 /* Streams `in` at `levels` with rule b and compares with subd_loop. Returns 0 when the
  * arena cannot hold subd_loop's output (the case is skipped and counted). */
-static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loop_boundary b, uint32_t *hash)
+static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loop_boundary b, uint32_t flags,
+                       uint32_t *hash)
 {
-    subd_loop_opts o;
+    subd_loop_opts o, so;
     subd_mesh ref;
     subd_diag d;
     uint32_t plan, splan, mark = subd_arena_mark(a), v, nid = 0, used;
@@ -143,13 +148,29 @@ static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd
     subd_diag_clear(&d);
     o.levels = levels;
     o.boundary = b;
-    o.flags = 0;
-    if (!CHECK_OK(subd_loop_plan(in, &o, &plan), &d) || !CHECK_OK(subd_loop_stream_plan(in, &o, &splan), &d)) return 0;
+    o.flags = flags & SUBD_LOOP_STREAM_LIMIT ? SUBD_LOOP_ADJACENCY : 0u; /* the reference */
+    so = o;
+    so.flags = flags;
+    if (!CHECK_OK(subd_loop_plan(in, &o, &plan), &d) || !CHECK_OK(subd_loop_stream_plan(in, &so, &splan), &d)) return 0;
     if ((uint64_t)plan + splan + 16u * 1024u > subd_arena_free_bytes(a)) {
         g_skipped++;
         return 0;
     }
     if (!CHECK_OK(subd_loop(a, in, &o, &ref, &d), &d)) return 0;
+    s.lpos = s.lnrm = 0;
+    if (flags & SUBD_LOOP_STREAM_LIMIT) {
+        subd_real *lp = 0, *ln = 0;
+        uint32_t lplan;
+        if (!CHECK_OK(subd_loop_limit_plan(&ref, b, 1, &lplan), &d)) return 0;
+        if ((uint64_t)lplan + ref.num_verts * 8u + splan + 64u > subd_arena_free_bytes(a)) {
+            subd_arena_rewind(a, mark);
+            g_skipped++;
+            return 0;
+        }
+        if (!CHECK_OK(subd_loop_limit(a, &ref, b, &lp, &ln, &d), &d)) return 0;
+        s.lpos = lp;
+        s.lnrm = ln;
+    }
     if ((uint64_t)ref.num_verts * 8u + splan + 64u > subd_arena_free_bytes(a)) {
         subd_arena_rewind(a, mark);
         g_skipped++;
@@ -165,7 +186,7 @@ static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd
     sink.ctx = &s;
     used = subd_arena_mark(a);
     subd_arena_reset_peak(a);
-    st = subd_loop_stream(a, in, &o, &sink, &d);
+    st = subd_loop_stream(a, in, &so, &sink, &d);
     CHECK_OK(st, &d);
     CHECK_EQ(subd_arena_mark(a), used);          /* nothing left in the arena */
     CHECK(a->peak - used <= splan);                /* the plan holds */
@@ -191,7 +212,7 @@ static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd
 static void stream_equals_loop(void)
 {
     int id;
-    uint32_t hash = 2166136261u;
+    uint32_t hash = 2166136261u, lim;
     g_streams = g_skipped = 0;
     for (id = 0; id < (H_HOST ? S_COUNT : S_DEVICE); id++) {
         subd_arena a;
@@ -199,12 +220,13 @@ static void stream_equals_loop(void)
         uint32_t levels;
         subd_arena_init(&a, CMP_BUF, CMP_BYTES);
         if (!make_shape(id, &a, &in)) return;
-        for (levels = 1; levels <= 4u; levels++) {
-            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, &hash);
-            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, &hash);
-        }
+        for (lim = 0; lim < 2u; lim++)
+            for (levels = 1; levels <= (lim ? 3u : 4u); levels++) {
+                compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, lim ? SUBD_LOOP_STREAM_LIMIT : 0u, &hash);
+                compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, lim ? SUBD_LOOP_STREAM_LIMIT : 0u, &hash);
+            }
     }
-    CHECK(g_streams >= (H_HOST ? 72u : 40u)); /* the host runs every case; say how many */
+    CHECK(g_streams >= (H_HOST ? 126u : 60u)); /* the host runs every case; say how many */
     h_str("  streams compared ");
     h_u32(g_streams);
     h_str(", skipped (subd_loop's output too big for the test arena) ");
@@ -224,8 +246,9 @@ static void stream_hashes(void)
                                             "stream_fan64", "stream_grid_crease", "stream_iso"};
         subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
         if (!make_shape(id, &a, &in)) return;
-        compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_PAPER, &hash);
-        compare_one(&a, &in, 3, SUBD_LOOP_BOUNDARY_BSPLINE, &hash);
+        compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+        compare_one(&a, &in, 3, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &hash);
+        compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
         h_hash(names[id], hash);
     }
 }
@@ -253,6 +276,11 @@ static void stream_plan(void)
         CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2), &d0);
         CHECK_EQ(p1, p2);
         CHECK_EQ(p1, SUBD_LOOP_STREAM_BYTES(l, 6));
+        o.flags = SUBD_LOOP_STREAM_LIMIT;
+        CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2), &d0);
+        CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES_LIMIT(l, 6));
+        CHECK(p2 > p1);
+        o.flags = 0;
         CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2), &d0);
         CHECK_EQ(p2, p1);
         CHECK_OK(subd_loop_stream_plan(&fan, &o, &p2), &d0); /* centre valence 64 */
@@ -336,6 +364,7 @@ static void stream_sink_stop(void)
         if (!CHECK(v2id != 0)) return;
         for (v = 0; v < ref.num_verts; v++) v2id[v] = UINT64_MAX;
         s.ref = &ref;
+        s.lpos = s.lnrm = 0;
         s.v2id = v2id;
         s.j = s.bad_pos = s.bad_id = 0;
         s.stop_after = stops[k];

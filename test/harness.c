@@ -26,9 +26,9 @@ int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const ch
     if (got != want) {
         h_check(0, file, line, expr);
         h_str("    got ");
-        h_i32((int32_t)got);
+        h_i64(got);
         h_str(" want ");
-        h_i32((int32_t)want);
+        h_i64(want);
         h_nl();
         return 0;
     }

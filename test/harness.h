@@ -23,6 +23,8 @@ typedef struct test_case {
 #define h_str print_str
 #define h_u32 print_u32
 #define h_i32 print_i32
+#define h_u64 print_u64
+#define h_i64 print_i64
 #define h_hex32 print_hex32
 #define h_nl print_nl
 

@@ -14,15 +14,18 @@ B := build
 SHARED ?= ../shared
 
 SRC      := $(sort $(wildcard src/*.c))
-SRC_H    := $(wildcard include/*.h src/*.h)
 TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c
-TEST_H   := $(wildcard test/*.h)
 GEN      := $(B)/gen/corpus.h $(B)/gen/readme_example.c
 
 WARN := -std=c99 -Wall -Wextra -Werror -pedantic -Wshadow -Wvla -Wdouble-promotion \
         -Wstrict-prototypes -Wmissing-prototypes -ffp-contract=off
 SRC_WARN := -Wconversion -Wsign-conversion
 INC := -Iinclude -Itest -Iport -I$(B)/gen
+# Every object also writes its header dependencies (X.d next to X.o, included at the end), so a
+# header change rebuilds exactly what includes it; generated headers are built first (| $(GEN)).
+# Objects also depend on this Makefile, which holds their flags.
+DEP := -MMD -MP
+MK  := Makefile
 
 # ------------------------------------------------------------------ host variants
 HOST_CC ?= gcc
@@ -31,22 +34,26 @@ HOST_FLAGS_host-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O1 -g $(SAN)
 HOST_FLAGS_host-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O1 -g $(SAN)
 HOST_FLAGS_tool-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 -g
 HOST_FLAGS_tool-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O2 -g
+HOST_FLAGS_bench-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2
 HOST_TEST_PORT := port/host/test_port.c port/print.c port/host/png.c port/host/render.c
 TOOL_PORT      := port/host/subd_main.c port/host/subd_options.c port/host/subd_commands.c port/host/subd_info.c port/host/subd_write.c port/host/fileio.c port/host/png.c port/host/render.c
 
 define host_variant
-$(B)/$(1)/src/%.o: src/%.c $(SRC_H) | dirs
-	$(HOST_CC) $(WARN) $(SRC_WARN) $(INC) $(HOST_FLAGS_$(1)) -c $$< -o $$@
-$(B)/$(1)/test/%.o: test/%.c $(SRC_H) $(TEST_H) $(GEN) | dirs
-	$(HOST_CC) $(WARN) $(INC) $(HOST_FLAGS_$(1)) -c $$< -o $$@
-$(B)/$(1)/port/%.o: port/%.c $(SRC_H) $(TEST_H) $(wildcard port/*.h port/host/*.h) | dirs
-	$(HOST_CC) $(WARN) $(INC) -Iport/host $(HOST_FLAGS_$(1)) -c $$< -o $$@
-$(B)/$(1)/gen/%.o: $(B)/gen/%.c $(GEN) | dirs
-	$(HOST_CC) $(WARN) $(INC) $(HOST_FLAGS_$(1)) -c $$< -o $$@
-$(B)/$(1)/test-fail.o: test/test_harness.c $(SRC_H) $(TEST_H) | dirs
-	$(HOST_CC) $(WARN) $(INC) $(HOST_FLAGS_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
+$(B)/$(1)/src/%.o: src/%.c $(MK) | dirs
+	$(HOST_CC) $(WARN) $(SRC_WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/test/%.o: test/%.c $(MK) | dirs $(GEN)
+	$(HOST_CC) $(WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/port/%.o: port/%.c $(MK) | dirs
+	$(HOST_CC) $(WARN) $(INC) -Iport/host $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/bench/%.o: bench/%.c $(MK) | dirs
+	$(HOST_CC) $(WARN) $(INC) -Iport/host $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/gen/%.o: $(B)/gen/%.c $(MK) | dirs $(GEN)
+	$(HOST_CC) $(WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/test-fail.o: test/test_harness.c $(MK) | dirs $(GEN)
+	$(HOST_CC) $(WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
 endef
-$(foreach v,host-float host-fixed tool-float tool-fixed,$(eval $(call host_variant,$(v))))
+HOST_VARIANTS := host-float host-fixed tool-float tool-fixed bench-float
+$(foreach v,$(HOST_VARIANTS),$(eval $(call host_variant,$(v))))
 
 host_test_objs = $(SRC:%.c=$(B)/$(1)/%.o) $(TEST_SRC:%.c=$(B)/$(1)/%.o) \
                  $(HOST_TEST_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/gen/corpus.o
@@ -59,6 +66,9 @@ $(B)/bin/subd: $(SRC:%.c=$(B)/tool-float/%.o) $(TOOL_PORT:%.c=$(B)/tool-float/%.
 $(B)/bin/subd-fixed: $(SRC:%.c=$(B)/tool-fixed/%.o) $(TOOL_PORT:%.c=$(B)/tool-fixed/%.o)
 	$(HOST_CC) $^ -lm -o $@
 tool: $(B)/bin/subd $(B)/bin/subd-fixed
+# The benchmark: the library, bench/bench.c and the file reader at -O2 (variant bench-float).
+$(B)/bench/bench: $(B)/bench-float/bench/bench.o $(SRC:%.c=$(B)/bench-float/%.o) $(B)/bench-float/port/host/fileio.o
+	$(HOST_CC) $^ -lm -o $@
 
 # ------------------------------------------------------------------ Cortex-M variants
 CM_CC   := arm-none-eabi-gcc
@@ -78,18 +88,18 @@ MACHINE_m3-fixed  := mps2-an385
 CM_PORT := port/cortex-m/startup.c port/cortex-m/port_cm.c port/print.c
 
 define cm_variant
-CMF_$(1) := $(ARCH_$(1)) $(CM_FLAGS) -DSUBD_FIXED=$(FIXED_$(1)) $(INC) -Iport/cortex-m
-$(B)/$(1)/src/%.o: src/%.c $(SRC_H) | dirs
+CMF_$(1) := $(ARCH_$(1)) $(CM_FLAGS) -DSUBD_FIXED=$(FIXED_$(1)) $(INC) -Iport/cortex-m $(DEP)
+$(B)/$(1)/src/%.o: src/%.c $(MK) | dirs
 	$(CM_CC) $$(CMF_$(1)) $(SRC_WARN) -c $$< -o $$@
-$(B)/$(1)/test/%.o: test/%.c $(SRC_H) $(TEST_H) $(GEN) | dirs
+$(B)/$(1)/test/%.o: test/%.c $(MK) | dirs $(GEN)
 	$(CM_CC) $$(CMF_$(1)) -c $$< -o $$@
-$(B)/$(1)/port/%.o: port/%.c $(TEST_H) $(wildcard port/*.h port/cortex-m/*.h) | dirs
+$(B)/$(1)/port/%.o: port/%.c $(MK) | dirs
 	$(CM_CC) $$(CMF_$(1)) -c $$< -o $$@
-$(B)/$(1)/gen/%.o: $(B)/gen/%.c $(GEN) | dirs
+$(B)/$(1)/gen/%.o: $(B)/gen/%.c $(MK) | dirs $(GEN)
 	$(CM_CC) $$(CMF_$(1)) -c $$< -o $$@
-$(B)/$(1)/test-fail.o: test/test_harness.c $(SRC_H) $(TEST_H) | dirs
+$(B)/$(1)/test-fail.o: test/test_harness.c $(MK) | dirs $(GEN)
 	$(CM_CC) $$(CMF_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
-$(B)/$(1)/selftest%.o: test/selftest.c $(wildcard port/cortex-m/*.h) | dirs
+$(B)/$(1)/selftest%.o: test/selftest.c $(MK) | dirs
 	$(CM_CC) $$(CMF_$(1)) -DSELFTEST_MODE=$$* -c $$< -o $$@
 $(B)/$(1)/libsubd.a: $(SRC:%.c=$(B)/$(1)/%.o)
 	rm -f $$@ && $(CM_AR) rcs $$@ $$^
@@ -104,6 +114,8 @@ $(B)/$(1)/selftest%.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/selftest%.o
 	$$(CM_LINK_$(1)) $$^ -o $$@
 $(B)/$(1)/demo.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/port/cortex-m/demo.o $(B)/$(1)/libsubd.a
 	$$(CM_LINK_$(1)) $$^ -o $$@
+# Kept (not deleted as intermediates), so a build with nothing changed does nothing.
+.SECONDARY: $(foreach n,0 1 2 3,$(B)/$(1)/selftest$(n).o)
 $(1)-images: $(B)/$(1)/test.elf $(B)/$(1)/test-fail.elf $(foreach n,0 1 2 3,$(B)/$(1)/selftest$(n).elf)
 endef
 $(foreach v,m4f-float m3-fixed,$(eval $(call cm_variant,$(v))))
@@ -123,10 +135,10 @@ $(B)/gen/readme_example.c: README.md | dirs
 	awk '/^<!-- embed-example/{f=1;next} f&&/^```c/{g=1;next} g&&/^```/{exit} g{print}' $< > $@
 	@test -s $@ || { echo "README.md: embed-example block not found" >&2; exit 1; }
 
-VARIANTS := host-float host-fixed tool-float tool-fixed m4f-float m3-fixed
+VARIANTS := $(HOST_VARIANTS) m4f-float m3-fixed
 dirs:
-	@mkdir -p $(B)/gen $(B)/bin $(B)/logs $(foreach v,$(VARIANTS),$(B)/$(v)/src $(B)/$(v)/test \
-	    $(B)/$(v)/port/host $(B)/$(v)/port/cortex-m $(B)/$(v)/gen)
+	@mkdir -p $(B)/gen $(B)/bin $(B)/logs $(B)/bench $(foreach v,$(VARIANTS),$(B)/$(v)/src $(B)/$(v)/test \
+	    $(B)/$(v)/port/host $(B)/$(v)/port/cortex-m $(B)/$(v)/gen $(B)/$(v)/bench)
 
 # ------------------------------------------------------------------ toolchain
 # A fresh Debian machine may have only gcc and make: install what is missing.
@@ -178,10 +190,6 @@ demo-run: $(B)/m4f-float/demo.elf $(B)/m3-fixed/demo.elf tool
 	@echo "== host tool (pictures in $(B)/demo/)"
 	@demo/host_demo.sh $(B)/bin $(B)/demo
 
-$(B)/bench/bench: bench/bench.c $(SRC) $(SRC_H) port/host/fileio.c | dirs
-	@mkdir -p $(B)/bench
-	$(HOST_CC) $(WARN) $(INC) -Iport/host -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 bench/bench.c $(SRC) port/host/fileio.c -lm -o $@
-
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 
@@ -200,6 +208,9 @@ bench-peers:
 
 clean:
 	rm -rf $(B)
+
+# Header dependencies written by -MMD (none before the first build).
+-include $(wildcard $(foreach v,$(VARIANTS),$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
 .PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean \
         m4f-float-images m3-fixed-images

@@ -8,18 +8,28 @@ void print_str(const char *s)
     port_write(s, n);
 }
 
-void print_u32(uint32_t v)
+uint32_t print_fmt_u64(char *b, uint64_t v)
 {
-    char b[10];
-    uint32_t n = 0;
-    do { b[9 - n] = (char)('0' + v % 10u); v /= 10u; n++; } while (v);
-    port_write(b + 10 - n, n);
+    char r[20];
+    uint32_t n = 0, i;
+    do { r[n++] = (char)('0' + (uint32_t)(v % 10u)); v /= 10u; } while (v);
+    for (i = 0; i < n; i++) b[i] = r[n - 1u - i];
+    return n;
 }
 
-void print_i32(int32_t v)
+void print_u64(uint64_t v)
 {
-    if (v < 0) { print_str("-"); print_u32(0u - (uint32_t)v); } else print_u32((uint32_t)v);
+    char b[20];
+    port_write(b, print_fmt_u64(b, v));
 }
+
+void print_i64(int64_t v)
+{
+    if (v < 0) { print_str("-"); print_u64(0u - (uint64_t)v); } else print_u64((uint64_t)v);
+}
+
+void print_u32(uint32_t v) { print_u64(v); }
+void print_i32(int32_t v) { print_i64(v); }
 
 void print_hex32(uint32_t v)
 {

@@ -26,9 +26,9 @@ int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const ch
     if (got != want) {
         h_check(0, file, line, expr);
         h_str("    got ");
-        h_i32((int32_t)got);
+        h_i64(got);
         h_str(" want ");
-        h_i32((int32_t)want);
+        h_i64(want);
         h_nl();
         return 0;
     }
@@ -149,6 +149,137 @@ int h_guard_ok(const uint8_t *p, uint32_t n)
     uint32_t i;
     for (i = 0; i < n; i++) if (p[i] != (uint8_t)(0xA5u ^ i)) return 0;
     return 1;
+}
+
+h_sweep h_sweep_make(int (*run)(void *, subd_arena *, subd_diag *), void *ctx, uint8_t *buf,
+                     uint32_t buf_bytes, uint32_t plan)
+{
+    h_sweep s;
+    uint8_t *p = (uint8_t *)&s;
+    uint32_t i;
+    for (i = 0; i < sizeof s; i++) p[i] = 0;
+    s.run = run;
+    s.ctx = ctx;
+    s.buf = buf;
+    s.buf_bytes = buf_bytes;
+    s.plan = s.need_lo = s.need_hi = plan;
+    s.step = 1;
+    return s;
+}
+
+static void fill_out(uint8_t *p, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) p[i] = (uint8_t)(0x5au ^ i);
+}
+
+static int out_untouched(const uint8_t *p, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) if (p[i] != (uint8_t)(0x5au ^ i)) return 0;
+    return 1;
+}
+
+#define SWEEP_CHECK(c) h_check((c) ? 1 : 0, file, line, "arena sweep: " #c)
+
+/* The failing checks' size, status and bytes_needed; returns 0. */
+static int sweep_failed(const h_sweep *s, uint32_t size, int st, const subd_diag *d)
+{
+    h_str("    arena sweep failed at size ");
+    h_u32(size);
+    h_str(" of plan ");
+    h_u32(s->plan);
+    h_str(": status ");
+    h_i32(st);
+    h_str(" bytes_needed ");
+    h_u32(d->bytes_needed);
+    h_nl();
+    return 0;
+}
+
+/* One call of the sweep with an arena of size bytes after the prefix; 1 when its checks
+ * pass, 2 when it succeeded (the sweep ends), 0 when a check failed. */
+static int sweep_one(h_sweep *s, uint32_t size, const char *file, int line, uint32_t mh, uint32_t ih)
+{
+    subd_arena a;
+    subd_diag d;
+    uint8_t *end = s->buf + s->prefix + size;
+    int st, ok = 1;
+    if (s->out) fill_out((uint8_t *)s->out, s->out_bytes);
+    subd_arena_init(&a, s->buf, s->prefix + size);
+    subd_arena_alloc(&a, s->prefix);
+    h_guard_fill(end, 64);
+    st = s->run(s->ctx, &a, &d);
+    ok &= SWEEP_CHECK(h_guard_ok(end, 64));
+    if (s->in_mesh) ok &= SWEEP_CHECK(h_mesh_hash(s->in_mesh) == mh);
+    if (s->in) ok &= SWEEP_CHECK(h_fnv(2166136261u, s->in, s->in_bytes) == ih);
+    if (size < s->plan && !(s->plan_is_bound && st == SUBD_OK)) {
+        ok &= SWEEP_CHECK(st == SUBD_ERR_NOMEM);
+        ok &= h_check_eq_i(subd_arena_mark(&a), s->prefix, file, line, "arena sweep: mark == prefix");
+        if (s->keep_peak) ok &= h_check_eq_i(a.peak, s->prefix, file, line, "arena sweep: peak == prefix");
+        ok &= SWEEP_CHECK(d.bytes_needed > size);
+        ok &= SWEEP_CHECK(d.bytes_needed >= s->need_lo && d.bytes_needed <= s->need_hi);
+        if (s->out) ok &= SWEEP_CHECK(out_untouched((const uint8_t *)s->out, s->out_bytes));
+        return ok ? 1 : sweep_failed(s, size, st, &d);
+    }
+    if (!SWEEP_CHECK(st == SUBD_OK)) return sweep_failed(s, size, st, &d);
+    s->need = size;
+    s->peak = a.peak - s->prefix;
+    if (s->peak_le) ok &= SWEEP_CHECK(s->peak <= size);
+    else ok &= h_check_eq_i(s->peak, size, file, line, "arena sweep: peak - prefix == plan");
+    if (s->ok) s->ok(s->ctx, &a, &d);
+    return ok ? 2 : sweep_failed(s, size, st, &d);
+}
+
+int h_arena_sweep_at(h_sweep *s, const char *file, int line)
+{
+    uint32_t size, mh = s->in_mesh ? h_mesh_hash(s->in_mesh) : 0u;
+    uint32_t ih = s->in ? h_fnv(2166136261u, s->in, s->in_bytes) : 0u;
+    s->need = s->peak = 0;
+    if (!SWEEP_CHECK(s->prefix + s->plan + 64u <= s->buf_bytes)) return 0;
+    for (size = s->first; size <= s->plan; size += (size + 64u >= s->plan || !s->step) ? 1u : s->step) {
+        int r = sweep_one(s, size, file, line, mh, ih);
+        if (r != 1) return r == 2;
+    }
+    return SWEEP_CHECK(0); /* not reached: the plan itself ends the sweep */
+}
+
+h_sweep h_mesh_sweep(int (*run)(void *, subd_arena *, subd_diag *), h_mesh_call *c, uint8_t *buf,
+                     uint32_t buf_bytes, uint32_t plan)
+{
+    h_sweep s = h_sweep_make(run, c, buf, buf_bytes, plan);
+    s.out = &c->out;
+    s.out_bytes = sizeof c->out;
+    s.in_mesh = c->in;
+    return s;
+}
+
+typedef struct reader_call {
+    h_reader read;
+    const char *text;
+    uint32_t len;
+    subd_mesh m;
+} reader_call;
+
+static int reader_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    reader_call *c = (reader_call *)ctx;
+    return c->read(a, c->text, c->len, &c->m, d);
+}
+
+int h_reader_sweep_at(h_reader read, const char *text, uint32_t len, uint8_t *buf, uint32_t buf_bytes,
+                      uint32_t plan, const char *file, int line)
+{
+    reader_call c;
+    h_sweep s = h_sweep_make(reader_run, &c, buf, buf_bytes, plan);
+    c.read = read;
+    c.text = text;
+    c.len = len;
+    s.out = &c.m;
+    s.out_bytes = sizeof c.m;
+    s.in = text;
+    s.in_bytes = len;
+    return h_arena_sweep_at(&s, file, line);
 }
 
 static void run_suite(const test_case *t)

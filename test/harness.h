@@ -23,6 +23,8 @@ typedef struct test_case {
 #define h_str print_str
 #define h_u32 print_u32
 #define h_i32 print_i32
+#define h_u64 print_u64
+#define h_i64 print_i64
 #define h_hex32 print_hex32
 #define h_nl print_nl
 
@@ -68,6 +70,57 @@ uint32_t h_rand(uint32_t *state);
  * works on the target, where there is no AddressSanitizer). */
 void h_guard_fill(uint8_t *p, uint32_t n);
 int h_guard_ok(const uint8_t *p, uint32_t n);
+
+/* Every too-small arena: h_arena_sweep calls run() with an arena of prefix + size bytes, the
+ * first prefix of them allocated before the call (so the call does not start at offset 0),
+ * for every size from first to the plan, 64 guard bytes after the arena. Each size below the
+ * plan must fail with SUBD_ERR_NOMEM, bytes_needed in [need_lo, need_hi] and above size, the
+ * arena mark unchanged (and the peak too with keep_peak), the output bytes out[0..out_bytes)
+ * as filled before the call, the inputs (in_mesh's hash, in[0..in_bytes)) unchanged and the
+ * guard bytes intact. The plan itself must succeed with peak - prefix == plan (<= with
+ * peak_le), then ok() runs for the suite's own checks. With plan_is_bound the plan is only an
+ * upper bound: the first size that succeeds ends the sweep. need and peak report the size
+ * that succeeded and its peak (without the prefix). Stops at the first size that fails a
+ * check, printing it; returns whether every check passed. h_sweep_make sets the defaults:
+ * every size, prefix 0, need_lo = need_hi = plan, nothing else watched. */
+typedef struct h_sweep {
+    int (*run)(void *ctx, subd_arena *a, subd_diag *d);           /* the call; its status */
+    void (*ok)(void *ctx, const subd_arena *a, const subd_diag *d); /* 0 or after success */
+    void *ctx;
+    uint8_t *buf;         /* arena memory (8-aligned): prefix + plan + 64 bytes must fit */
+    uint32_t buf_bytes;
+    uint32_t plan, prefix, first, step; /* step > 1: every step-th size, the last 64 all */
+    uint32_t need_lo, need_hi;
+    void *out;            /* 0 or the output the failing calls must not write */
+    uint32_t out_bytes;
+    const subd_mesh *in_mesh; /* 0 or an input mesh the calls must not change */
+    const void *in;           /* 0 or input bytes the calls must not change */
+    uint32_t in_bytes;
+    int plan_is_bound, peak_le, keep_peak;
+    uint32_t need, peak;  /* results */
+} h_sweep;
+h_sweep h_sweep_make(int (*run)(void *, subd_arena *, subd_diag *), void *ctx, uint8_t *buf,
+                     uint32_t buf_bytes, uint32_t plan);
+int h_arena_sweep_at(h_sweep *s, const char *file, int line);
+#define h_arena_sweep(s) h_arena_sweep_at((s), __FILE__, __LINE__)
+
+/* The context of a call from one mesh to another (subd_loop, subd_quasi48, ...): the suite's
+ * run() casts opts back. h_mesh_sweep watches out and in. */
+typedef struct h_mesh_call {
+    const subd_mesh *in;
+    const void *opts;
+    subd_mesh out;
+} h_mesh_call;
+h_sweep h_mesh_sweep(int (*run)(void *, subd_arena *, subd_diag *), h_mesh_call *c, uint8_t *buf,
+                     uint32_t buf_bytes, uint32_t plan);
+
+/* The sweep of a mesh reader (subd_obj_read, subd_off_read) over text[0..len) with that plan:
+ * the output mesh and the text are watched. */
+typedef int (*h_reader)(subd_arena *, const char *, uint32_t, subd_mesh *, subd_diag *);
+int h_reader_sweep_at(h_reader read, const char *text, uint32_t len, uint8_t *buf, uint32_t buf_bytes,
+                      uint32_t plan, const char *file, int line);
+#define h_reader_sweep(read, text, len, buf, buf_bytes, plan) \
+    h_reader_sweep_at((read), (text), (len), (buf), (buf_bytes), (plan), __FILE__, __LINE__)
 
 /* A shared scratch arena buffer for tests (static, 8-aligned). */
 #define H_ARENA_BYTES (256u * 1024u)

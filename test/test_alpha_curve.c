@@ -732,41 +732,48 @@ static void alpha_per_vertex(void)
 /* ------------------------------------------------------------------------------------ */
 /* Plans, errors, hashes                                                                  */
 
+typedef struct curve_call {
+    uint32_t m, pts, plan;
+    int closed;
+    const subd_alpha_opts *o;
+    subd_alpha_curve_out out;
+} curve_call;
+
+static int curve_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    curve_call *c = (curve_call *)ctx;
+    return subd_alpha_curve(a, g_in, c->m, c->closed, c->o, &c->out, d);
+}
+
+static void curve_ok(void *ctx, const subd_arena *a, const subd_diag *d)
+{
+    curve_call *c = (curve_call *)ctx;
+    uint32_t kept = subd_arena_mark(a) - 8u;
+    (void)d;
+    CHECK_EQ(c->out.num_points, c->pts);
+    /* only the point buffer (sized for the largest level) stays allocated */
+    if (c->o->tag_num) CHECK(kept < c->plan);
+    else CHECK_EQ(kept, c->plan);
+    CHECK(c->pts * 3u * (uint32_t)sizeof(subd_real) <= kept);
+}
+
 static void check_plan_exhaustive(uint32_t m, int closed, const subd_alpha_opts *o)
 {
-    static uint8_t buf[24576 + 64] __attribute__((aligned(8)));
-    uint32_t plan, pts, s, i;
-    subd_alpha_curve_out out, sentinel;
-    uint8_t *po = (uint8_t *)&out, *ps = (uint8_t *)&sentinel;
-    if (!CHECK_EQ(subd_alpha_curve_plan(m, closed, o, &plan, &pts), SUBD_OK)) return;
-    if (!CHECK(plan <= 24576u)) return;
-    for (i = 0; i < sizeof out; i++) ps[i] = (uint8_t)(0xa5 ^ i);
-    for (s = 0; s <= plan; s++) {
-        subd_arena a;
-        subd_diag d;
-        int st;
-        for (i = 0; i < sizeof out; i++) po[i] = ps[i];
-        subd_arena_init(&a, buf, 8u + s);
-        subd_arena_alloc(&a, 8);
-        h_guard_fill(buf + 8u + s, 64);
-        st = subd_alpha_curve(&a, g_in, m, closed, o, &out, &d);
-        if (s < plan) {
-            int untouched = 1;
-            for (i = 0; i < sizeof out; i++) untouched &= (po[i] == ps[i]);
-            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&a), 8) || !CHECK(untouched) ||
-                !CHECK_EQ(d.bytes_needed, plan))
-                return;
-        } else {
-            CHECK_EQ(st, SUBD_OK);
-            CHECK_EQ(a.peak - 8u, plan);
-            CHECK_EQ(out.num_points, pts);
-            /* only the point buffer (sized for the largest level) stays allocated */
-            if (o->tag_num) CHECK(subd_arena_mark(&a) - 8u < plan);
-            else CHECK_EQ(subd_arena_mark(&a) - 8u, plan);
-            CHECK(pts * 3u * (uint32_t)sizeof(subd_real) <= subd_arena_mark(&a) - 8u);
-        }
-        if (!CHECK(h_guard_ok(buf + 8u + s, 64))) return;
-    }
+    static uint8_t buf[24576 + 8 + 64] __attribute__((aligned(8)));
+    curve_call c;
+    h_sweep s;
+    c.m = m;
+    c.closed = closed;
+    c.o = o;
+    if (!CHECK_EQ(subd_alpha_curve_plan(m, closed, o, &c.plan, &c.pts), SUBD_OK)) return;
+    s = h_sweep_make(curve_run, &c, buf, sizeof buf, c.plan);
+    s.prefix = 8;
+    s.out = &c.out;
+    s.out_bytes = sizeof c.out;
+    s.in = g_in;
+    s.in_bytes = 3u * m * (uint32_t)sizeof(subd_real);
+    s.ok = curve_ok;
+    (void)h_arena_sweep(&s);
 }
 
 static void alpha_plan_exact(void)

@@ -396,39 +396,25 @@ static void alpha_ds_levels(void)
         }
 }
 
+static int surface_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    h_mesh_call *c = (h_mesh_call *)ctx;
+    return subd_alpha_surface(a, c->in, (const subd_alpha_opts *)c->opts, &c->out, 0, d);
+}
+
 static void check_plan_exhaustive(const subd_mesh *in, const subd_alpha_opts *o)
 {
-    static uint8_t buf[40000 + 64] __attribute__((aligned(8)));
-    uint32_t plan, s, i;
-    subd_mesh out, sentinel;
-    uint8_t *po = (uint8_t *)&out, *ps = (uint8_t *)&sentinel;
-    uint32_t step;
+    static uint8_t buf[40000 + 8 + 64] __attribute__((aligned(8)));
+    uint32_t plan;
+    h_mesh_call c;
+    h_sweep s;
     if (!CHECK_EQ(subd_alpha_surface_plan(in, o, &plan), SUBD_OK)) return;
-    if (!CHECK(plan <= 40000u)) return;
-    for (i = 0; i < sizeof out; i++) ps[i] = (uint8_t)(0x3c ^ i);
-    /* every size on the host; every 8th (and the last 64) on the device */
-    step = H_HOST ? 1u : 8u;
-    for (s = 0; s <= plan; s += (s + 64u >= plan) ? 1u : step) {
-        subd_arena a;
-        subd_diag d;
-        int st;
-        for (i = 0; i < sizeof out; i++) po[i] = ps[i];
-        subd_arena_init(&a, buf, 8u + s);
-        subd_arena_alloc(&a, 8);
-        h_guard_fill(buf + 8u + s, 64);
-        st = subd_alpha_surface(&a, in, o, &out, 0, &d);
-        if (s < plan) {
-            int untouched = 1;
-            for (i = 0; i < sizeof out; i++) untouched &= (po[i] == ps[i]);
-            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&a), 8) || !CHECK(untouched) ||
-                !CHECK_EQ(d.bytes_needed, plan))
-                return;
-        } else {
-            if (!CHECK_EQ(st, SUBD_OK)) return;
-            CHECK_EQ(a.peak - 8u, plan);
-        }
-        if (!CHECK(h_guard_ok(buf + 8u + s, 64))) return;
-    }
+    c.in = in;
+    c.opts = o;
+    s = h_mesh_sweep(surface_run, &c, buf, sizeof buf, plan);
+    s.prefix = 8;
+    s.step = H_HOST ? 1u : 8u; /* every size on the host; every 8th (and the last 64) on the device */
+    (void)h_arena_sweep(&s);
 }
 
 static void alpha_ds_plan_exact(void)

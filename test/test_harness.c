@@ -3,8 +3,22 @@
  * with -DH_INJECT_FAILURE=1 to prove that a failing check fails the run (Makefile). */
 #include "harness.h"
 
+/* print_fmt_u64(v) is the decimal text want. */
+static int fmt_is(uint64_t v, const char *want)
+{
+    char b[20];
+    uint32_t n = print_fmt_u64(b, v), i;
+    for (i = 0; i < n; i++) if (want[i] != b[i]) return 0;
+    return want[n] == 0;
+}
+
 static void harness_known_values(void)
 {
+    /* the formatter: 0, 32-bit limits and past them, the 64-bit maximum */
+    CHECK(fmt_is(0u, "0"));
+    CHECK(fmt_is(4294967295u, "4294967295"));
+    CHECK(fmt_is(4294967296u, "4294967296"));
+    CHECK(fmt_is(UINT64_MAX, "18446744073709551615"));
     /* FNV-1a 32-bit of "a" and of "foobar" (published test vectors) */
     CHECK(h_fnv(2166136261u, "a", 1) == 0xe40c292cu);
     CHECK(h_fnv(2166136261u, "foobar", 6) == 0xbf9cf968u);

@@ -668,45 +668,39 @@ static void loop_isolated(void)
 /* ------------------------------------------------------------------------------------ */
 /* Planning, memory, errors                                                               */
 
+static int loop_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    h_mesh_call *c = (h_mesh_call *)ctx;
+    return subd_loop(a, c->in, (const subd_loop_opts *)c->opts, &c->out, d);
+}
+
+static void loop_ok(void *ctx, const subd_arena *a, const subd_diag *d)
+{
+    CHECK(subd_arena_mark(a) <= a->peak);
+    CHECK_EQ(d->bytes_needed, 0);
+    (void)ctx;
+}
+
 static void check_plan_exhaustive(const subd_mesh *in, uint32_t levels, uint32_t flags)
 {
     static uint8_t buf[65536 + 16 + 64] __attribute__((aligned(8)));
     subd_loop_opts o;
-    subd_mesh ref, out, sentinel;
-    uint32_t plan, s, href = 0;
-    subd_diag d;
-    uint8_t *pb = (uint8_t *)&sentinel;
+    subd_mesh out;
+    h_mesh_call c;
+    h_sweep s;
+    uint32_t plan, href;
     o.levels = levels;
     o.boundary = PAPER;
     o.flags = flags;
-    for (s = 0; s < sizeof sentinel; s++) pb[s] = (uint8_t)(0x5au ^ s);
     if (!CHECK_EQ(subd_loop_plan(in, &o, &plan), SUBD_OK)) return;
-    if (!CHECK(plan <= 65536u)) return;
-    for (s = 0; s <= plan; s++) {
-        subd_arena a;
-        uint32_t k;
-        int st;
-        subd_arena_init(&a, buf, 16u + s);
-        subd_arena_alloc(&a, 16);
-        h_guard_fill(buf + 16u + s, 64);
-        for (k = 0; k < sizeof out; k++) ((uint8_t *)&out)[k] = pb[k];
-        st = subd_loop(&a, in, &o, &out, &d);
-        if (s < plan) {
-            uint32_t same = 1;
-            for (k = 0; k < sizeof out; k++) same &= ((uint8_t *)&out)[k] == pb[k];
-            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&a), 16) || !CHECK(same) ||
-                !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(a.peak, 16))
-                return;
-        } else {
-            if (!CHECK_EQ(st, SUBD_OK)) return;
-            CHECK_EQ(a.peak - 16u, plan);
-            CHECK(subd_arena_mark(&a) <= a.peak);
-            CHECK_EQ(d.bytes_needed, 0);
-            ref = out;
-            href = out_hash(&ref);
-        }
-        if (!CHECK(h_guard_ok(buf + 16u + s, 64))) return;
-    }
+    c.in = in;
+    c.opts = &o;
+    s = h_mesh_sweep(loop_run, &c, buf, sizeof buf, plan);
+    s.prefix = 16;
+    s.keep_peak = 1;
+    s.ok = loop_ok;
+    if (!h_arena_sweep(&s)) return;
+    href = out_hash(&c.out);
     /* the same output from a roomy arena */
     {
         subd_arena a;

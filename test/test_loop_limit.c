@@ -960,6 +960,26 @@ static void refine_test(void)
     CHECK_EQ(badn, 0);
 }
 
+typedef struct limit_call {
+    const subd_mesh *m;
+    subd_real *out[2]; /* positions, normals */
+    int normals;
+} limit_call;
+
+static int limit_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    limit_call *c = (limit_call *)ctx;
+    return subd_loop_limit(a, c->m, SUBD_LOOP_BOUNDARY_PAPER, &c->out[0], c->normals ? &c->out[1] : 0, d);
+}
+
+/* only the results stay allocated: all of the plan */
+static void limit_ok(void *ctx, const subd_arena *a, const subd_diag *d)
+{
+    (void)ctx;
+    (void)d;
+    CHECK_EQ(a->used, a->peak);
+}
+
 /* Every arena size below the plan fails cleanly; the plan itself is enough and is the
  * measured peak; nothing is written past the arena. */
 static void arena_test(void)
@@ -967,8 +987,9 @@ static void arena_test(void)
     static uint8_t buf[8 + 4096 + 64] __attribute__((aligned(8)));
     subd_arena ma;
     subd_mesh m;
-    uint32_t plan, plan_np, s, with;
-    subd_diag d;
+    uint32_t plan, plan_np;
+    limit_call c;
+    h_sweep s;
     tm_torus(&g_tm, 10, 8, 5u);
     subd_arena_init(&ma, h_arena_buf, H_ARENA_BYTES);
     if (!CHECK(tm_build(&ma, &g_tm, &m))) return;
@@ -976,29 +997,15 @@ static void arena_test(void)
     CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &plan_np), SUBD_OK);
     CHECK_EQ(plan, 2u * SUBD_ALIGN_UP(3u * 80u * (uint32_t)sizeof(subd_real)));
     CHECK_EQ(plan_np, SUBD_ALIGN_UP(3u * 80u * (uint32_t)sizeof(subd_real)));
-    if (!CHECK(plan <= 4096u)) return;
-    for (with = 0; with < 2; with++) {
-        uint32_t p = with ? plan : plan_np;
-        for (s = 0; s <= p; s++) {
-            subd_arena a;
-            subd_real *pos = (subd_real *)(void *)buf, *nrm = (subd_real *)(void *)(buf + 4);
-            int st;
-            subd_arena_init(&a, buf, 8u + s);
-            subd_arena_alloc(&a, 8);
-            h_guard_fill(buf + 8u + s, 64);
-            st = subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, with ? &nrm : 0, &d);
-            if (s < p) {
-                if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&a), 8) ||
-                    !CHECK_EQ(d.bytes_needed, p) || !CHECK(pos == (subd_real *)(void *)buf) ||
-                    !CHECK(nrm == (subd_real *)(void *)(buf + 4)))
-                    return;
-            } else {
-                CHECK_EQ(st, SUBD_OK);
-                CHECK_EQ(a.peak - 8u, p);
-                CHECK_EQ(a.used - 8u, p);
-            }
-            if (!CHECK(h_guard_ok(buf + 8u + s, 64))) return;
-        }
+    c.m = &m;
+    for (c.normals = 0; c.normals < 2; c.normals++) {
+        s = h_sweep_make(limit_run, &c, buf, sizeof buf, c.normals ? plan : plan_np);
+        s.prefix = 8;
+        s.out = c.out;
+        s.out_bytes = sizeof c.out;
+        s.in_mesh = &m;
+        s.ok = limit_ok;
+        if (!h_arena_sweep(&s)) return;
     }
 }
 

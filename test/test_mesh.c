@@ -233,39 +233,34 @@ static void mesh_polygons_and_isolated(void)
     h_hash("mesh_poly", h_mesh_hash(&m));
 }
 
+typedef struct build_call {
+    const subd_face_list *fl;
+    subd_mesh m;
+} build_call;
+
+static int build_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    build_call *c = (build_call *)ctx;
+    return subd_mesh_build(a, c->fl, &c->m, d);
+}
+
 /* Every arena size below the plan fails with NOMEM and leaves mark, output and the bytes
  * after the buffer untouched; exactly the plan succeeds with peak = plan. */
 static void check_plan_exhaustive(const subd_face_list *fl)
 {
     static uint8_t buf[8192 + 64] __attribute__((aligned(8)));
-    uint32_t plan, s;
-    subd_mesh m, sentinel;
-    subd_arena a;
-    subd_diag d;
-    uint8_t *pm = (uint8_t *)&m, *ps = (uint8_t *)&sentinel;
-    uint32_t i;
+    uint32_t plan;
+    build_call c;
+    h_sweep s;
     if (!CHECK_EQ(subd_mesh_plan(fl, &plan), SUBD_OK)) return;
-    if (!CHECK(plan + 16u <= 8192u)) return;
-    for (i = 0; i < sizeof m; i++) ps[i] = (uint8_t)(0x5a ^ i);
-    for (s = 0; s <= plan; s++) {
-        int st;
-        for (i = 0; i < sizeof m; i++) pm[i] = ps[i];
-        subd_arena_init(&a, buf, 8u + s);
-        subd_arena_alloc(&a, 8);
-        h_guard_fill(buf + 8u + s, 64);
-        st = subd_mesh_build(&a, fl, &m, &d);
-        if (s < plan) {
-            int same = 1;
-            for (i = 0; i < sizeof m; i++) same &= (pm[i] == ps[i]);
-            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(subd_arena_mark(&a), 8) || !CHECK(same) ||
-                !CHECK_EQ(d.bytes_needed, plan))
-                return;
-        } else {
-            CHECK_EQ(st, SUBD_OK);
-            CHECK_EQ(a.peak - 8u, plan);
-        }
-        if (!CHECK(h_guard_ok(buf + 8u + s, 64))) return;
-    }
+    c.fl = fl;
+    s = h_sweep_make(build_run, &c, buf, sizeof buf, plan);
+    s.prefix = 8;
+    s.out = &c.m;
+    s.out_bytes = sizeof c.m;
+    s.in = fl->pos;
+    s.in_bytes = 3u * fl->num_verts * (uint32_t)sizeof(subd_real);
+    (void)h_arena_sweep(&s);
 }
 
 static void mesh_plan_exact(void)

@@ -804,35 +804,47 @@ static void pia_range(void)
     }
 }
 
-/* Every arena size below the plan fails cleanly; the plan succeeds with peak = plan. */
+typedef struct pia_call {
+    const subd_mesh *m;
+    const subd_pia_opts *o;
+    struct {
+        subd_real *V;
+        subd_pia_result r;
+    } out;
+} pia_call;
+
+static int pia_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    pia_call *c = (pia_call *)ctx;
+    return subd_pia(a, c->m, c->o, &c->out.V, &c->out.r, d);
+}
+
+static void pia_ok(void *ctx, const subd_arena *a, const subd_diag *d)
+{
+    pia_call *c = (pia_call *)ctx;
+    (void)d;
+    CHECK_EQ(a->used, 8u + SUBD_ALIGN_UP(3u * c->m->num_verts * (uint32_t)sizeof(subd_real))); /* only V stays */
+    CHECK(c->out.r.converged);
+}
+
+/* Every arena size below the plan fails cleanly (V and the result untouched, the input not
+ * modified); the plan succeeds with peak = plan. */
 static void nomem_case(const subd_mesh *m, subd_pia_method meth)
 {
     subd_pia_opts o = opts(meth, SUBD_LOOP_BOUNDARY_PAPER, tol_std(), 100);
-    subd_pia_result r;
-    subd_real *V;
-    subd_diag d;
-    subd_arena a;
-    uint32_t plan = 0, s, h0 = h_mesh_hash(m);
-    if (!CHECK_EQ(subd_pia_plan(m, &o, &plan), SUBD_OK) || !CHECK(plan + 64u <= sizeof g_buf)) return;
-    for (s = 0; s < plan; s++) {
-        subd_arena_init(&a, g_buf, s);
-        V = (subd_real *)&r;
-        r.iterations = 777u;
-        if (!CHECK_EQ(subd_pia(&a, m, &o, &V, &r, &d), SUBD_ERR_NOMEM)) break;
-        if (!CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(a.used, 0) || !CHECK(V == (subd_real *)&r) ||
-            !CHECK_EQ(r.iterations, 777u))
-            break;
-    }
-    /* exactly the plan, after an 8-byte allocation: peak = 8 + plan, guard bytes intact */
-    subd_arena_init(&a, g_buf, 8u + plan);
-    h_guard_fill(g_buf + 8u + plan, 64);
-    subd_arena_alloc(&a, 8);
-    CHECK_EQ(subd_pia(&a, m, &o, &V, &r, &d), SUBD_OK);
-    CHECK_EQ(a.peak, 8u + plan);
-    CHECK_EQ(a.used, 8u + SUBD_ALIGN_UP(3u * m->num_verts * (uint32_t)sizeof(subd_real))); /* only V stays */
-    CHECK(h_guard_ok(g_buf + 8u + plan, 64));
-    CHECK(r.converged);
-    CHECK_EQ(h_mesh_hash(m), h0); /* the input is not modified */
+    uint32_t plan = 0;
+    pia_call c;
+    h_sweep s;
+    if (!CHECK_EQ(subd_pia_plan(m, &o, &plan), SUBD_OK)) return;
+    c.m = m;
+    c.o = &o;
+    s = h_sweep_make(pia_run, &c, g_buf, (uint32_t)sizeof g_buf, plan);
+    s.prefix = 8;
+    s.out = &c.out;
+    s.out_bytes = sizeof c.out;
+    s.in_mesh = m;
+    s.ok = pia_ok;
+    (void)h_arena_sweep(&s);
 }
 
 static void pia_nomem(void)

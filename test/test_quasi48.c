@@ -599,34 +599,23 @@ static void q48_hexfan_file(void)
 /* Exact plan: every arena size below it fails cleanly (NOMEM, bytes_needed = plan, arena
  * mark unchanged, input untouched, guard bytes intact); at the plan it succeeds and the
  * peak stays within it; one step of a single triangle reaches the plan exactly. */
+static int q48_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    h_mesh_call *c = (h_mesh_call *)ctx;
+    return subd_quasi48(a, c->in, (const subd_q48_opts *)c->opts, &c->out, d);
+}
+
 static void plan_case(const subd_mesh *in, const subd_q48_opts *o, int exact)
 {
-    uint32_t plan, size, h0 = h_mesh_hash(in);
-    subd_mesh out;
-    subd_diag d;
+    uint32_t plan;
+    h_mesh_call c;
+    h_sweep s;
     if (!CHECK_EQ(subd_quasi48_plan(in, o, &plan), SUBD_OK)) return;
-    if (!CHECK(plan + 64u <= H_ARENA_BYTES)) return;
-    for (size = 0; size <= plan; size++) {
-        subd_arena a;
-        int st;
-        subd_arena_init(&a, h_arena_buf, size);
-        h_guard_fill(h_arena_buf + size, 64);
-        st = subd_quasi48(&a, in, o, &out, &d);
-        if (!h_guard_ok(h_arena_buf + size, 64)) { CHECK(0); return; }
-        if (size < plan) {
-            if (st != SUBD_ERR_NOMEM || a.used != 0 || d.bytes_needed != plan) {
-                CHECK_EQ(st, SUBD_ERR_NOMEM);
-                CHECK_EQ(a.used, 0);
-                CHECK_EQ(d.bytes_needed, plan);
-                return;
-            }
-        } else {
-            CHECK_EQ(st, SUBD_OK);
-            CHECK(a.peak <= plan);
-            if (exact) CHECK_EQ(a.peak, plan);
-        }
-    }
-    CHECK_EQ(h_mesh_hash(in), h0);
+    c.in = in;
+    c.opts = o;
+    s = h_mesh_sweep(q48_run, &c, h_arena_buf, H_ARENA_BYTES, plan);
+    s.peak_le = !exact;
+    (void)h_arena_sweep(&s);
 }
 
 static void q48_plan_exhaustive(void)

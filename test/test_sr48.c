@@ -773,12 +773,26 @@ static void sr48_refine_only(void)
 #define IN_BYTES (24u * 1024u)
 static uint8_t g_in_buf[IN_BYTES] __attribute__((aligned(8)));
 
+typedef struct build_call {
+    const subd_mesh *in;
+    const subd_sr48_opts *o;
+    subd_sr48 h;
+} build_call;
+
+static int build_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    build_call *c = (build_call *)ctx;
+    return subd_sr48_build(a, c->in, c->o, &c->h, d);
+}
+
 static void plan_case(const subd_mesh *in, const subd_sr48_opts *o, int exhaustive)
 {
-    uint32_t plan, bound, clusters, size, h0 = h_mesh_hash(in), first;
+    uint32_t plan, bound, clusters;
     subd_arena a;
     subd_sr48 h;
     subd_diag d;
+    build_call c;
+    h_sweep s;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     a.used = 40; /* not at the start: count_clusters must give everything back */
     if (!CHECK_EQ(subd_sr48_count_clusters(&a, in, &clusters, &d), SUBD_OK)) return;
@@ -793,29 +807,15 @@ static void plan_case(const subd_mesh *in, const subd_sr48_opts *o, int exhausti
     if (!sr48(&a, in, o, &h)) return;
     CHECK_EQ(a.peak, plan);
     CHECK_EQ(h.num_clusters, clusters);
-    first = exhaustive ? 0u : plan - 1u;
-    for (size = first; size <= plan; size++) {
-        int st;
-        subd_arena_init(&a, h_arena_buf, size);
-        h_guard_fill(h_arena_buf + size, 64);
-        h.steps = 0xdeadu;
-        st = subd_sr48_build(&a, in, o, &h, &d);
-        if (!h_guard_ok(h_arena_buf + size, 64)) { CHECK(0); return; }
-        if (size < plan) {
-            if (st != SUBD_ERR_NOMEM || a.used != 0 || d.bytes_needed < plan || d.bytes_needed > bound ||
-                h.steps != 0xdeadu) {
-                CHECK_EQ(st, SUBD_ERR_NOMEM);
-                CHECK_EQ(a.used, 0);
-                CHECK(d.bytes_needed >= plan && d.bytes_needed <= bound);
-                CHECK_EQ(h.steps, 0xdeadu);
-                return;
-            }
-        } else {
-            CHECK_EQ(st, SUBD_OK);
-            CHECK_EQ(a.peak, plan);
-        }
-    }
-    CHECK_EQ(h_mesh_hash(in), h0);
+    c.in = in;
+    c.o = o;
+    s = h_sweep_make(build_run, &c, h_arena_buf, H_ARENA_BYTES, plan);
+    s.first = exhaustive ? 0u : plan - 1u;
+    s.need_hi = bound; /* a failing call may ask for more than the exact plan */
+    s.out = &c.h;
+    s.out_bytes = sizeof c.h;
+    s.in_mesh = in;
+    if (!h_arena_sweep(&s)) return;
     if (exhaustive) {
         h_str("    plan ");
         h_u32(plan);

@@ -848,42 +848,58 @@ static void sr48x_chord(void)
 /* Every arena size below the need fails cleanly (NOMEM, arena mark unchanged, output
  * untouched, guard bytes intact, bytes_needed >= the need); at the need it succeeds with
  * the same mesh; UNIFORM's need is the plan and its peak. */
+typedef struct extract_call {
+    const subd_sr48 *h;
+    const subd_adapt *ad;
+    subd_mesh out;
+    subd_adapt_report rep;
+    uint32_t h0; /* the reference mesh's hash */
+} extract_call;
+
+static int extract_run(void *ctx, subd_arena *a, subd_diag *d)
+{
+    extract_call *c = (extract_call *)ctx;
+    return subd_sr48_extract(a, c->h, c->ad, &c->out, &c->rep, d);
+}
+
+static void extract_ok(void *ctx, const subd_arena *a, const subd_diag *d)
+{
+    extract_call *c = (extract_call *)ctx;
+    (void)a;
+    (void)d;
+    CHECK_EQ(h_mesh_hash(&c->out), c->h0);
+}
+
 static void plan_case(const subd_sr48 *h, const subd_adapt *ad)
 {
-    uint32_t plan, size, need = 0, h0 = 0, peak = 0, ref_used;
+    uint32_t plan, size, need, peak, h0, ref_used;
     subd_mesh out, ref;
     subd_adapt_report rep;
     subd_diag d;
     subd_arena a;
+    extract_call c;
+    h_sweep s;
     if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan), SUBD_OK)) return;
     if (!CHECK(plan + 64u <= H_ARENA_BYTES)) return;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (!extract(&a, h, ad, &ref, &rep)) return;
     h0 = h_mesh_hash(&ref);
     ref_used = a.used;
-    for (size = 0; size <= plan; size++) {
-        int st;
-        out.num_faces = 12345;
-        subd_arena_init(&a, h_arena_buf, size);
-        h_guard_fill(h_arena_buf + size, 64);
-        st = subd_sr48_extract(&a, h, ad, &out, &rep, &d);
-        if (!h_guard_ok(h_arena_buf + size, 64)) { CHECK(0); return; }
-        if (st == SUBD_OK) {
-            need = size;
-            peak = a.peak;
-            CHECK_EQ(h_mesh_hash(&out), h0);
-            break;
-        }
-        if (st != SUBD_ERR_NOMEM || a.used != 0 || out.num_faces != 12345 || d.bytes_needed > plan ||
-            d.bytes_needed <= size) {
-            CHECK_EQ(st, SUBD_ERR_NOMEM);
-            CHECK_EQ(a.used, 0);
-            CHECK_EQ(out.num_faces, 12345);
-            CHECK(d.bytes_needed <= plan);
-            CHECK(d.bytes_needed > size);
-            return;
-        }
-    }
+    c.h = h;
+    c.ad = ad;
+    c.h0 = h0;
+    s = h_sweep_make(extract_run, &c, h_arena_buf, H_ARENA_BYTES, plan);
+    s.plan_is_bound = 1; /* the first size that succeeds is the need */
+    s.peak_le = 1;
+    s.need_lo = 0;
+    s.out = &c.out;
+    s.out_bytes = sizeof c.out;
+    s.in = h;
+    s.in_bytes = sizeof *h;
+    s.ok = extract_ok;
+    if (!h_arena_sweep(&s)) return;
+    need = s.need;
+    peak = s.peak;
     CHECK(need > 0 && peak <= need);
     if (ad->mode == SUBD_ADAPT_UNIFORM) {
         CHECK_EQ(need, plan);

@@ -358,7 +358,7 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loo
         loop_rule_crease(out, pv, P(s, snb[0]), P(s, snb[1]), ovf);
         if (loop_regular_of(cls, n, (uint32_t)boundary, sidx[0], sidx[1])) tag |= VTAG_REGULAR;
     } else { /* smooth or dart: Loop's rule */
-        loop_weights w = loop_weights_of(bc, n, ovf);
+        loop_weights w = subd_loop_weights_of(bc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
         ring_begin(s, v, &it);
@@ -399,7 +399,7 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
         uint8_t st = s->made ? s->vtag[v] : (uint8_t)0u;
         if (st & VTAG_SMOOTH) {
             uint32_t n = s->val[v];
-            smooth_fast(s, t->pos + 3u * v, v, n, loop_weights_of(bc, n, ovf), ovf);
+            smooth_fast(s, t->pos + 3u * v, v, n, subd_loop_weights_of(bc, n, ovf), ovf);
             /* same class, same tags: interior, so only the caller bits and the class */
             t->vtag[v] = (uint8_t)(st & (VTAG_CALLER | keep));
             if (t->val) t->val[v] = (uint8_t)n;

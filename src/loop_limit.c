@@ -114,7 +114,7 @@
 
 /* Vertex classes: loop_rules.h (the one classification of loop.c, this file and pia.c). */
 typedef loop_vinfo lim_vert;
-#define lim_classify loop_classify
+#define lim_classify subd_loop_classify
 
 /* The class of neighbour v (regular or not, for the paper's curve rules): from its ring, or
  * given by LOOP_VTAG_KNOWN (loop_stream.c's patch views, where v's ring may be cut). */
@@ -175,7 +175,7 @@ static lim_w lim_w_from_q62(uint64_t q) { return subd_real_from_q62((int64_t)q);
  * the paper's beta_n of formula (3). Computed in Q62 and rounded once. */
 static lim_w lim_chi(uint32_t n)
 {
-    uint64_t bq = loop_nbeta_q62(n) >> 3;           /* B/8 in Q62 = B in Q59 */
+    uint64_t bq = subd_loop_nbeta_q62(n) >> 3;           /* B/8 in Q62 = B in Q59 */
     uint64_t r = lim_div_q62(bq, bq + ((uint64_t)3 << 56)); /* 8B / (8B + 3) < 1 */
     return lim_w_from_q62((r + n / 2u) / n);
 }
@@ -229,7 +229,7 @@ static uint64_t lim_dart_b(const lim_dart *s, uint32_t m)
  * midpoint on the first level (the sharp neighbour is not regular). */
 static void lim_dart_setup(lim_dart *s, uint32_t n, uint32_t w8, int first_mid)
 {
-    uint64_t b60 = loop_nbeta_q62(n) >> 2, beta = (b60 + n / 2u) / n, sq, sumb, bk;
+    uint64_t b60 = subd_loop_nbeta_q62(n) >> 2, beta = (b60 + n / 2u) / n, sq, sumb, bk;
     s->n = n;
     s->c83 = (8u * b60 + (3u * n) / 2u) / (3u * n);
     s->rn = lim_pow_q62(LIM_R_Q62, n);
@@ -652,7 +652,7 @@ static void lim_dart_sym_power(uint32_t n, int64_t *bv)
     /* bv[0] = weight of v, bv[1 + m] = b_m for m = 0..n/2 (b_0: the sharp neighbour); the
      * full ring has b_m = b_(n-m). One step bv <- bv S is done in place, keeping the old
      * b_(j-1) in prev. */
-    uint64_t bq = loop_nbeta_q62(n), beta30 = ((bq >> 32) + n / 2u) / n; /* beta in Q30 */
+    uint64_t bq = subd_loop_nbeta_q62(n), beta30 = ((bq >> 32) + n / 2u) / n; /* beta in Q30 */
     int64_t beta = (int64_t)beta30, cbeta = ((int64_t)1 << 30) - (int64_t)n * beta, big;
     uint32_t h = n / 2u, it, j;
     for (j = 0; j <= h; j++) /* start: the cos mask, in Q30 */
@@ -755,7 +755,7 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
     /* an interior corner: start the walk at its first sharp edge (a boundary one starts
      * at its boundary edge already) */
     if (!boundary)
-        for (h = first; h != SUBD_NONE && s0 < n && !loop_edge_sharp(m, h); h = subd_ring_next(m, first, h)) s0++;
+        for (h = first; h != SUBD_NONE && s0 < n && !subd_loop_edge_sharp(m, h); h = subd_ring_next(m, first, h)) s0++;
     h = first;
     for (i = 0; i < s0; i++) (void)lim_ring_step(m, first, &h, &last);
     /* faces (v, p_j, p_j+1) for j = s0 .. s0 + nfaces - 1; sector ends at sharp edges */
@@ -773,7 +773,7 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
             subd_real fn[3];
             lim_unit_cross(dp, d, fn);
             lim_add_unit(fan, fn);
-            if (he == SUBD_NONE || loop_edge_sharp(m, he) || i == nfaces) {
+            if (he == SUBD_NONE || subd_loop_edge_sharp(m, he) || i == nfaces) {
                 subd_real sn[3];
                 lim_wide sw[3];
                 lim_unit_cross(d0, d, sn);
@@ -847,7 +847,7 @@ static int lim_check(const subd_mesh *in, subd_loop_boundary b, subd_diag *d)
     if (in->num_faces > 0u && (!in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
                                !in->edge_tag))
         return SUBD_ERR_PARAM;
-    if ((st = loop_tags_public(in, d)) != SUBD_OK) return st;
+    if ((st = subd_loop_tags_public(in, d)) != SUBD_OK) return st;
     return subd_require_triangles(in, d);
 }
 

@@ -4,14 +4,14 @@
  * that walk a mesh or do 64-bit integer arithmetic. */
 #include "loop_rules.h"
 
-int loop_edge_sharp(const subd_mesh *m, uint32_t h)
+int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h)
 {
     uint32_t t = m->twin[h];
     if (t == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) return 1;
     return (m->edge_tag[t] & SUBD_ETAG_CREASE) != 0u;
 }
 
-int loop_tags_public(const subd_mesh *m, subd_diag *d)
+int subd_loop_tags_public(const subd_mesh *m, subd_diag *d)
 {
     uint32_t v;
     for (v = 0; v < m->num_verts; v++)
@@ -22,7 +22,7 @@ int loop_tags_public(const subd_mesh *m, subd_diag *d)
     return SUBD_OK;
 }
 
-void loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
+void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
 {
     uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
     o->valence = 0;
@@ -35,7 +35,7 @@ void loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
     }
     /* The walk visits each outgoing half-edge once; n <= num_corners bounds it. */
     for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
-        if (loop_edge_sharp(m, h)) {
+        if (subd_loop_edge_sharp(m, h)) {
             if (ns < 2u) {
                 s[ns] = subd_he_dest(m, h);
                 at[ns] = n;
@@ -77,7 +77,7 @@ static uint64_t sq_q66(uint64_t a)
 
 /* A = 4 (3/8 + c/4) = 3/2 + c lies in [1/2, 5/2] (as an unsigned value * 2^62 < 2^64),
  * (A/4)^2 = A^2 / 2^66 in Q62. */
-uint64_t loop_nbeta_q62(uint32_t n)
+uint64_t subd_loop_nbeta_q62(uint32_t n)
 {
     int64_t c = subd_cos_turns_q62(1, (int32_t)n);
     uint64_t a = ((uint64_t)3 << 61) + (uint64_t)c; /* c >= -2^62 > -3 * 2^61: no wrap */
@@ -87,14 +87,14 @@ uint64_t loop_nbeta_q62(uint32_t n)
 static loop_weights weights_calc(uint32_t n, uint32_t *ovf)
 {
     loop_weights w;
-    w.b = subd_real_from_q62((int64_t)((loop_nbeta_q62(n) + n / 2u) / n)); /* rounded quotient */
+    w.b = subd_real_from_q62((int64_t)((subd_loop_nbeta_q62(n) + n / 2u) / n)); /* rounded quotient */
     w.wc = SUBD_REAL_ONE;
     /* b rounds to 0 in Q16.16 from n ~ 30000 on, before n overflows subd_from_int */
     if (w.b != (subd_real)0) w.wc = subd_sub(w.wc, subd_mul(subd_from_int((int32_t)n, ovf), w.b, ovf), ovf);
     return w;
 }
 
-loop_weights loop_weights_of(loop_wcache *c, uint32_t n, uint32_t *ovf)
+loop_weights subd_loop_weights_of(loop_wcache *c, uint32_t n, uint32_t *ovf)
 {
     if (n >= LOOP_WCACHE) return weights_calc(n, ovf);
     if (!(c->have & (1u << n))) {

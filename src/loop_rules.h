@@ -38,7 +38,7 @@
 
 /* SUBD_OK when no vertex of m uses the library's private tag bits, else SUBD_ERR_PARAM with
  * d->vertex (d may be NULL). For the public calls that take a caller's mesh. */
-int loop_tags_public(const subd_mesh *m, subd_diag *d);
+int subd_loop_tags_public(const subd_mesh *m, subd_diag *d);
 
 /* Vertex classes. */
 enum { LOOP_ISOLATED, LOOP_SMOOTH, LOOP_DART, LOOP_CREASE, LOOP_CORNER };
@@ -70,18 +70,18 @@ static inline uint32_t loop_regular_of(uint32_t cls, uint32_t n, uint32_t bounda
 }
 
 /* 1 when half-edge h of m is sharp: a boundary edge, or tagged CREASE on either half. */
-int loop_edge_sharp(const subd_mesh *m, uint32_t h);
+int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h);
 
 /* Classifies vertex v of a triangle or polygon mesh with adjacency by walking its ring once
  * (bounded by num_corners whatever the input). */
-void loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o);
+void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o);
 
 /* ------------------------------------------------------------------------------------ */
 /* Weights                                                                                */
 
 /* n b(n) = 5/8 - (3/8 + 1/4 cos(2 pi / n))^2 in Q2.62 (Loop's beta times n), n >= 1, from
  * the deterministic cos of trig.c in 64-bit integers. In [15/64, 5/8]. */
-uint64_t loop_nbeta_q62(uint32_t n);
+uint64_t subd_loop_nbeta_q62(uint32_t n);
 
 /* Neighbour weight b and centre weight 1 - n b of the smooth rule for valence n. b is
  * n b(n) / n rounded once to subd_real; wc is ONE - n b in subd_real, so in Q16.16 the weights
@@ -98,7 +98,7 @@ typedef struct loop_wcache {
 
 /* The weights of valence n, cached for n < LOOP_WCACHE (no overflow is possible there, so
  * the cache drops no flag). */
-loop_weights loop_weights_of(loop_wcache *c, uint32_t n, uint32_t *ovf);
+loop_weights subd_loop_weights_of(loop_wcache *c, uint32_t n, uint32_t *ovf);
 
 /* ------------------------------------------------------------------------------------ */
 /* Position rules (each coordinate: the products in the order written, summed left to right)*/

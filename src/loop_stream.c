@@ -22,7 +22,7 @@
  * children) and each face's corners in that level's order, so comparing local half-edge
  * indices compares global ones; vert_out is derived exactly as loop.c derives it (half_first
  * for old vertices, the fixed corner of new_vout for new ones; at level 0 the input's
- * vert_out). Classes: a control vertex's "regular" bit comes from loop_classify on the input
+ * vert_out). Classes: a control vertex's "regular" bit comes from subd_loop_classify on the input
  * (its whole ring), a new vertex is regular exactly when it lies on a sharp edge.
  * Assumed, as the builder, the readers and subd_loop guarantee: vert_out of a boundary
  * vertex is its boundary half-edge, and SUBD_ETAG_BOUNDARY is set only on boundary edges.
@@ -258,7 +258,7 @@ static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
     p->pos[3u * nv] = in->pos[3u * v];
     p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
     p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
-    loop_classify(in, v, &c);
+    subd_loop_classify(in, v, &c);
     p->vflag[nv] = (uint8_t)((c.regular ? VF_REGULAR : 0u) | ((in->vert_tag[v] & SUBD_VTAG_CORNER) ? VF_CORNER : 0u));
     p->vout[nv] = TW_NONE;
     p->h->nv = nv + 1u;
@@ -393,7 +393,7 @@ static void vertex_point(const sp_level *p, uint32_t v, loop_wcache *wc, uint32_
     } else if (cls == LOOP_CREASE) {
         loop_rule_crease(out, pv, p->pos + 3u * snb[0], p->pos + 3u * snb[1], ovf);
     } else {
-        loop_weights w = loop_weights_of(wc, n, ovf);
+        loop_weights w = subd_loop_weights_of(wc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
         ring_begin(p, v, &it);

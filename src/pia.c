@@ -210,7 +210,7 @@ static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
         (o->method != SUBD_PIA_PAPER && o->method != SUBD_PIA_FAST) || o->max_iter == 0u ||
         !pia_tol_ok(o->tol))
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (loop_tags_public(in, d) != SUBD_OK) return subd_fail(d, SUBD_ERR_PARAM);
+    if (subd_loop_tags_public(in, d) != SUBD_OK) return subd_fail(d, SUBD_ERR_PARAM);
     return subd_require_triangles(in, d);
 }
 
@@ -379,7 +379,7 @@ static subd_real pia_weight_smooth(uint32_t n, uint32_t *ovf)
                     subd_div(subd_sub(SUBD_REAL_ONE, x2, ovf), subd_sub(SUBD_REAL_FRAC(5, 8), x2, ovf), ovf), ovf);
 }
 
-/* Class and CG weight of every vertex, by loop_classify (loop_rules.h, the classification of
+/* Class and CG weight of every vertex, by subd_loop_classify (loop_rules.h, the classification of
  * loop.c and loop_limit.c): a corner (tagged, or three or more sharp edges) or isolated
  * vertex is fixed; two sharp edges make a curve vertex (regular as loop_rules.h defines it:
  * valence 4 on a boundary, valence 6 with opposite sharp edges inside); fewer make a smooth
@@ -398,7 +398,7 @@ static void pia_classify(pia_state *s)
         s->cls[v] = PIA_CLS_FIXED;
         s->w[v] = 0;
         s->od[v] = 0;
-        loop_classify(m, v, &c);
+        subd_loop_classify(m, v, &c);
         if (c.cls == LOOP_ISOLATED || c.cls == LOOP_CORNER) continue;
         n = c.valence;
         ns = c.nsharp;

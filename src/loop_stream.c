@@ -337,18 +337,17 @@ static void ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
     it->tail = 0;
 }
 
-/* Next neighbour (SUBD_NONE at the end); *sharp: the edge to it is sharp. */
-static uint32_t ring_step(const sp_level *p, sp_ring *it, int *sharp)
+/* Next neighbour (SUBD_NONE at the end); *he: a half-edge of the edge to it. */
+static uint32_t ring_step(const sp_level *p, sp_ring *it, uint32_t *he)
 {
     uint32_t h = it->h, pr, t, nb;
     if (h == SUBD_NONE) return SUBD_NONE;
+    *he = h;
     if (it->tail) {
         it->h = SUBD_NONE;
-        *sharp = 1;
         return p->cv[h];
     }
     nb = p->cv[tri_next(h)];
-    *sharp = (p->sh[h] & SH_RULE) != 0u;
     pr = tri_prev(h);
     t = p->tw[pr];
     if (t == TW_NONE) {
@@ -364,22 +363,25 @@ static uint32_t ring_step(const sp_level *p, sp_ring *it, int *sharp)
 
 /* Vertex point of centre corner v (0..2): classify by the walk, then the class's rule; a
  * vertex known to be smooth of valence 6 takes the one walk of loop.c's smooth_fast.
- * *child gets the flags of v's child (the class is kept by refinement). */
-static void vertex_point(const sp_level *p, uint32_t v, loop_wcache *wc, uint32_t *ovf, subd_real *out,
+ * next = 0: of the patch's level, from its positions; *child gets the flags of v's child
+ * (the class is kept by refinement). next = 1: of the level below, from the cache (v's child
+ * has v's ring shape: its neighbours are the edge points of v's edges, in the same order
+ * from the same start), for the last two levels emitted at once. */
+static void vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
                          uint8_t *child)
 {
-    uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, cls = LOOP_SMOOTH;
-    const subd_real *pv = p->pos + 3u * v;
-    uint8_t f = p->vflag[v];
-    int sharp;
+    uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, he = 0, cls = LOOP_SMOOTH;
+    const subd_real *pv = next ? p->cpos + 3u * v : p->pos + 3u * v;
+    uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)SH_CHILD : (uint8_t)SH_RULE;
     sp_ring it;
+#define SP_NB() (next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb)
     if (f & VF_SMOOTH6) {
         n = 6;
     } else {
         ring_begin(p, v, &it);
-        while ((nb = ring_step(p, &it, &sharp)) != SUBD_NONE) {
-            if (sharp) {
-                if (ns < 2u) snb[ns] = nb;
+        while ((nb = ring_step(p, &it, &he)) != SUBD_NONE) {
+            if (p->sh[he] & sharp_bit) {
+                if (ns < 2u) snb[ns] = next ? p->slot[he] : nb;
                 ns++;
             }
             n++;
@@ -391,17 +393,19 @@ static void vertex_point(const sp_level *p, uint32_t v, loop_wcache *wc, uint32_
         out[1] = pv[1];
         out[2] = pv[2];
     } else if (cls == LOOP_CREASE) {
-        loop_rule_crease(out, pv, p->pos + 3u * snb[0], p->pos + 3u * snb[1], ovf);
+        const subd_real *base = next ? p->cpos : p->pos;
+        loop_rule_crease(out, pv, base + 3u * snb[0], base + 3u * snb[1], ovf);
     } else {
         loop_weights w = subd_loop_weights_of(wc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
         ring_begin(p, v, &it);
-        while ((nb = ring_step(p, &it, &sharp)) != SUBD_NONE) loop_smooth_add(acc, w, p->pos + 3u * nb);
+        while ((nb = ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
         loop_smooth_end(out, acc, ovf);
         if (n == 6u) f |= VF_SMOOTH6;
     }
-    *child = f;
+#undef SP_NB
+    if (child) *child = f;
 }
 
 /* The lower half-edge of h's edge (the one loop.c makes the edge's new vertex at). */
@@ -430,7 +434,7 @@ static void fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop
 {
     uint32_t h, v, nc = 3u, n3 = 3u * p->h->nf;
     for (h = 0; h < n3; h++) p->slot[h] = NO_SLOT;
-    for (v = 0; v < 3u; v++) vertex_point(p, v, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
+    for (v = 0; v < 3u; v++) vertex_point(p, v, 0, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
     if (!all) {
         for (v = 0; v < 3u; v++) {
             h = 3u * p->h->cf + v;
@@ -689,6 +693,157 @@ static int emit_children(const sp_run *r, const sp_level *p)
     return 0;
 }
 
+/* One emitted triangle from three level-L values and their lattice points. */
+static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint32_t a[3], const uint32_t b[3])
+{
+    subd_loop_tri t;
+    uint32_t j, k;
+    for (j = 0; j < 3u; j++) {
+        for (k = 0; k < 3u; k++) {
+            t.pos[j][k] = x[j][k];
+            t.normal[j][k] = 0;
+        }
+        t.id[j] = vertex_id(r->in, r->f, a[j], b[j], r->o->levels);
+    }
+    return r->sink->tri(r->sink->ctx, &t);
+}
+
+/* The last two levels at once: the 16 level-L triangles of the centre of level L-2 (p), from
+ * its cache (the level L-1 values of its children's 1-rings) and its topology, without
+ * building the four level L-1 patches. Level L-1 seen from here, centre edge j = a -> b
+ * (half-edge h in the centre face, twin t in face (b, a, d), third corner c):
+ *   - the child of corner i has corner i's ring shape (vertex_point, next = 1);
+ *   - the new vertex m of edge j has the ring b, m(b,c), m(c,a), a, m(a,d), m(d,b)
+ *     (counter-clockwise; a boundary edge has the first four), starting as loop.c's
+ *     new_vout starts it: at m(c,a) when h is the lower half-edge and not corner 2, at b
+ *     when it is corner 2; at m(d,b) or a likewise for t; at b on a boundary;
+ *   - the halves a -> m and m -> b keep the edge's lower side; the inner edge
+ *     m_j -> m_j-1 is lower in child j (opposite corner v_j) than in child 3 (m_j+1).
+ * Values: ve[i] corner i's child, vm[j] edge j's new vertex, h1[j] / h2[j] the points on the
+ * halves a - m / m - b, in[j] the point on the inner edge m_j - m_j-1. */
+static int emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
+{
+    const sp_head *ph = p->h;
+    const subd_real *cp = p->cpos;
+    subd_loop_boundary rule = r->o->boundary;
+    uint32_t cf = ph->cf, i, j, c, g, sm[3], ma[3], mb[3];
+    subd_real ve[3][3], vm[3][3], h1[3][3], h2[3][3], in[3][3];
+    uint32_t pa[5][3], pb[5][3]; /* lattice points: corners, m, h1, h2, in (index 0..4) */
+    for (i = 0; i < 3u; i++) {
+        vertex_point(p, i, 1, wc, ovf, ve[i], 0);
+        sm[i] = p->slot[3u * cf + i];
+    }
+    for (j = 0; j < 3u; j++) {
+        uint32_t h = 3u * cf + j, t = p->tw[h], j1 = (j + 1u) % 3u;
+        uint32_t ring[6], nr, start, k, lower_t = (t < TW_BORDER && t < h);
+        const subd_real *xm = cp + 3u * sm[j], *xa = cp + 3u * j, *xb = cp + 3u * j1;
+        const subd_real *xca = cp + 3u * sm[(j + 2u) % 3u], *xbc = cp + 3u * sm[j1];
+        int sharp = (p->sh[h] & SH_CHILD) != 0u;
+        uint32_t rm = sharp ? VF_REGULAR : 0u, ra = p->cflag[j] & VF_REGULAR, rb = p->cflag[j1] & VF_REGULAR;
+        ring[0] = j1; ring[1] = sm[j1]; ring[2] = sm[(j + 2u) % 3u]; ring[3] = j;
+        nr = 4;
+        if (t < TW_BORDER) {
+            ring[4] = p->slot[tri_next(t)]; /* m(a, d) */
+            ring[5] = p->slot[tri_prev(t)]; /* m(d, b) */
+            nr = 6;
+        }
+        if (t >= TW_BORDER) start = 0;
+        else if (!lower_t) start = (j == 2u) ? 0u : 2u;
+        else start = (t % 3u == 2u) ? 3u : 5u;
+        if (sharp) { /* crease or boundary: its two sharp neighbours b and a, in ring order */
+            int a_first = start == 2u || start == 3u;
+            loop_rule_crease(vm[j], xm, a_first ? xa : xb, a_first ? xb : xa, ovf);
+        } else {
+            loop_weights w = subd_loop_weights_of(wc, 6u, ovf);
+            subd_acc acc[3];
+            loop_smooth_begin(acc, w, xm);
+            for (k = 0; k < nr; k++) loop_smooth_add(acc, w, cp + 3u * ring[(start + k) % nr]);
+            loop_smooth_end(vm[j], acc, ovf);
+        }
+        /* the halves a - m and m - b */
+        if (sharp || t >= TW_BORDER) {
+            if (lower_t) {
+                loop_rule_sharp_edge(h1[j], xm, xa, rule, rm, ra, ovf);
+                loop_rule_sharp_edge(h2[j], xb, xm, rule, rb, rm, ovf);
+            } else {
+                loop_rule_sharp_edge(h1[j], xa, xm, rule, ra, rm, ovf);
+                loop_rule_sharp_edge(h2[j], xm, xb, rule, rm, rb, ovf);
+            }
+        } else {
+            const subd_real *xad = cp + 3u * ring[4], *xdb = cp + 3u * ring[5];
+            if (lower_t) {
+                loop_rule_edge(h1[j], xm, xa, xad, xca, ovf);
+                loop_rule_edge(h2[j], xb, xm, xdb, xbc, ovf);
+            } else {
+                loop_rule_edge(h1[j], xa, xm, xca, xad, ovf);
+                loop_rule_edge(h2[j], xm, xb, xbc, xdb, ovf);
+            }
+        }
+    }
+    for (j = 0; j < 3u; j++) /* inner edge m_j -> m_j-1 of child j, opposite v_j; child 3: m_j+1 */
+        loop_rule_edge(in[j], cp + 3u * sm[j], cp + 3u * sm[(j + 2u) % 3u], cp + 3u * j, cp + 3u * sm[(j + 1u) % 3u],
+                       ovf);
+    if (*ovf) return SUBD_ERR_RANGE;
+    for (i = 0; i < 3u; i++) {
+        uint32_t i1 = (i + 1u) % 3u;
+        pa[0][i] = ph->ca[i];
+        pb[0][i] = ph->cb[i];
+        ma[i] = (ph->ca[i] + ph->ca[i1]) / 2u;
+        mb[i] = (ph->cb[i] + ph->cb[i1]) / 2u;
+        pa[1][i] = ma[i];
+        pb[1][i] = mb[i];
+        pa[2][i] = (ph->ca[i] + ma[i]) / 2u;
+        pb[2][i] = (ph->cb[i] + mb[i]) / 2u;
+        pa[3][i] = (ma[i] + ph->ca[i1]) / 2u;
+        pb[3][i] = (mb[i] + ph->cb[i1]) / 2u;
+    }
+    for (i = 0; i < 3u; i++) {
+        uint32_t ip = (i + 2u) % 3u;
+        pa[4][i] = (ma[i] + ma[ip]) / 2u;
+        pb[4][i] = (mb[i] + mb[ip]) / 2u;
+    }
+    /* child c: corners x (level L-1) and the points e on its edges x_k -> x_k+1, each with
+     * its lattice point; then its children in subd_loop's order */
+    for (c = 0; c < 4u; c++) {
+        const subd_real *x[3], *e[3];
+        uint32_t xa_[3], xb_[3], ea[3], eb[3];
+        if (c < 3u) {
+            uint32_t cp_ = (c + 2u) % 3u;
+            x[0] = ve[c]; xa_[0] = pa[0][c]; xb_[0] = pb[0][c];
+            x[1] = vm[c]; xa_[1] = pa[1][c]; xb_[1] = pb[1][c];
+            x[2] = vm[cp_]; xa_[2] = pa[1][cp_]; xb_[2] = pb[1][cp_];
+            e[0] = h1[c]; ea[0] = pa[2][c]; eb[0] = pb[2][c];
+            e[1] = in[c]; ea[1] = pa[4][c]; eb[1] = pb[4][c];
+            e[2] = h2[cp_]; ea[2] = pa[3][cp_]; eb[2] = pb[3][cp_];
+        } else {
+            for (i = 0; i < 3u; i++) {
+                uint32_t i1 = (i + 1u) % 3u;
+                x[i] = vm[i]; xa_[i] = pa[1][i]; xb_[i] = pb[1][i];
+                e[i] = in[i1]; ea[i] = pa[4][i1]; eb[i] = pb[4][i1];
+            }
+        }
+        for (g = 0; g < 4u; g++) {
+            const subd_real *y[3];
+            uint32_t ya[3], yb[3];
+            int st;
+            if (g < 3u) {
+                uint32_t gp = (g + 2u) % 3u;
+                y[0] = x[g]; ya[0] = xa_[g]; yb[0] = xb_[g];
+                y[1] = e[g]; ya[1] = ea[g]; yb[1] = eb[g];
+                y[2] = e[gp]; ya[2] = ea[gp]; yb[2] = eb[gp];
+            } else {
+                for (i = 0; i < 3u; i++) {
+                    y[i] = e[i];
+                    ya[i] = ea[i];
+                    yb[i] = eb[i];
+                }
+            }
+            if ((st = emit_tri(r, y, ya, yb)) != 0) return st;
+        }
+    }
+    return 0;
+}
+
 /* Limit mode: the centre of level L's patch, each corner moved to its limit position with its
  * unit limit normal by loop_limit.c's masks on a subd_mesh view of the patch (the corners'
  * rings are whole; an outer vertex's class is given by LOOP_VTAG_KNOWN). */
@@ -764,7 +919,9 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
     wc.have = 0;
     levels = o->levels;
     limit = (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u;
-    depth = limit ? levels : levels - 1u; /* the level that emits */
+    /* the level that emits: level L (limit mode), L-2 (its centre's 16 grandchildren), or 0
+     * for one level (its centre's 4 children) */
+    depth = limit ? levels : levels >= 2u ? levels - 2u : 0u;
     run.in = in;
     run.o = o;
     run.sink = sink;
@@ -776,7 +933,7 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
         build_control(in, f, &p, levels);
         /* a level above the emitting one caches everything its children's 1-rings need;
          * the emitting level only its centre's six values (limit mode: none) */
-        fill_cache(&p, o->boundary, depth > 0u, &wc, &ovf);
+        fill_cache(&p, o->boundary, depth > 0u || levels >= 2u, &wc, &ovf);
         for (;;) {
             if (ovf) {
                 st = SUBD_ERR_RANGE;
@@ -784,13 +941,14 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
             }
             level_at(base, &lay, k, &p);
             if (k == depth) {
-                st = limit ? emit_limit(&run, &p, base, &lay, &ovf) : emit_children(&run, &p);
+                st = limit ? emit_limit(&run, &p, base, &lay, &ovf)
+                     : levels >= 2u ? emit_grandchildren(&run, &p, &wc, &ovf) : emit_children(&run, &p);
                 if (st != 0) break;
             } else if (p.h->child < 4u) {
                 uint32_t c = p.h->child++;
                 level_at(base, &lay, k + 1u, &q);
                 extract_child(&p, &q, c, smap, fmap);
-                if (k + 1u < depth || !limit) fill_cache(&q, o->boundary, k + 1u < depth, &wc, &ovf);
+                if (k + 1u < depth || !limit) fill_cache(&q, o->boundary, k + 1u < depth || levels >= 2u, &wc, &ovf);
                 k++;
                 continue;
             }

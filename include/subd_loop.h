@@ -162,9 +162,11 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
  * valence N; SUBD_LOOP_STREAM_BYTES_LIMIT for SUBD_LOOP_STREAM_LIMIT. A uint32_t constant
  * expression equal to subd_loop_stream_plan. Example:
  *     static uint8_t buf[SUBD_LOOP_STREAM_BYTES(6, 8)] __attribute__((aligned(8)));
- * Per level k < L (k = 0: the control face's 1-ring, corners of valence up to N; k >= 1:
- * at most one corner above valence 6): positions, flags, ring starts, corners, twins, sharp
- * bits and the refined values of the level; then the scratch of one extraction. */
+ * Per level k <= L-2 (limit mode: k <= L-1; k = 0: the control face's 1-ring, corners of
+ * valence up to N; k >= 1: at most one corner above valence 6): positions, flags, ring
+ * starts, corners, twins, sharp bits and the refined values of the level (the last two
+ * levels are emitted from level L-2's); limit mode adds level L and a subd_mesh view of it;
+ * then the scratch of one extraction. */
 #define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
 #define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
 #define SUBD_LOOP_SN_(N) ((uint32_t)(N) < 6u ? 6u : (uint32_t)(N))
@@ -185,7 +187,7 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
 #define SUBD_LOOP_SSCR_(S) (SUBD_LOOP_SA_(2u * SUBD_LOOP_SC_(S)) + SUBD_LOOP_SA_(2u * 4u * SUBD_LOOP_SF_(S)))
 #define SUBD_LOOP_STREAM_BYTES_(L, N, lim) \
     (SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
-     ((L) - 1u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+     ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
      ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)))
 
 /* ------------------------------------------------------------------------------------ */

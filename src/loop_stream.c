@@ -138,7 +138,9 @@ static void stream_layout(uint32_t levels, uint32_t valence, int limit, sp_layou
     t += level_layout(s0, 1, 1, l->off0);
     l->lev1 = t;
     l->size1 = level_layout(s1, 1, 0, l->off1);
-    for (k = 1; k < levels; k++) t += l->size1;
+    /* levels with a cache: 0..L-2 (the last two levels are emitted from L-2's), limit mode
+     * 0..L-1; then limit mode's level L */
+    for (k = 1; k + (limit ? 0u : 1u) < levels; k++) t += l->size1;
     if (limit) {
         t += level_layout(s1, 0, 0, l->off1);
         t = view_layout(s1, t, l->view);

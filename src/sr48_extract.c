@@ -69,6 +69,8 @@
  */
 #include "mesh_internal.h"
 #include "subd_semireg48.h"
+#include "layout.h"
+#include "entry.h"
 
 #define EX_SPLIT 0x1u
 #define EX_WANT 0x2u
@@ -113,14 +115,6 @@ typedef struct ex_ctx {
     subd_real lo[3], hi[3];
     subd_real radius;
 } ex_ctx;
-
-static void add_bytes(uint32_t *total, uint32_t b)
-{
-    if (b == UINT32_MAX || *total > UINT32_MAX - b) *total = UINT32_MAX;
-    else *total += b;
-}
-
-static uint32_t max_u32(uint32_t a, uint32_t b) { return a > b ? a : b; }
 
 /* ------------------------------------------------------------------------------------ */
 /* Parameters and the hierarchy's shape.                                                  */
@@ -211,29 +205,26 @@ static int ex_check_hierarchy(const subd_sr48 *h, uint32_t max)
     return SUBD_OK;
 }
 
-/* The one layout. With a == NULL it only counts; otherwise it allocates phase 1. */
+/* The one layout of phase 1 (layout.h). With a == NULL it only counts (c may be NULL). */
 static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_adapt *ad)
 {
-    uint32_t b = 0, mk = 0;
-    uint32_t nwork = L->uniform ? L->nvert : max_u32(L->ntri, L->nvert);
+    uint32_t nwork = (L->uniform || L->nvert > L->ntri) ? L->nvert : L->ntri;
     uint32_t nf = L->uniform ? 0u : L->max + 1u;
     uint32_t ncs = (!L->uniform && ad->mode == SUBD_ADAPT_CHORD) ? L->max + 1u : 0u;
-    subd_size_add(&mk, L->uniform ? 0u : L->ntri, 1u);
-    add_bytes(&b, mk);
-    subd_size_add(&b, nwork, 4u);
-    subd_size_add(&b, nf, 4u);
-    subd_size_add(&b, ncs, EX_CNODE_BYTES);
-    L->marks = mk;
-    L->phase1 = b;
+    subd_layout l;
+    ex_ctx tmp;
+    ex_ctx *p = c ? c : &tmp;
+    int st;
+    subd_layout_begin(&l, a);
+    p->mark = subd_layout_take(&l, L->uniform ? 0u : L->ntri, 1u);
+    L->marks = l.bytes;
+    p->work = subd_layout_take(&l, nwork, 4u);
+    p->fstack = subd_layout_take(&l, nf, 4u);
+    p->cstack = subd_layout_take(&l, ncs, EX_CNODE_BYTES);
+    st = subd_layout_end(&l, &L->phase1);
     L->vmap = 0;
     subd_size_add(&L->vmap, L->nvert, 4u);
-    if (!a) return b == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
-    c->mark = (uint8_t *)subd_arena_alloc(a, L->uniform ? 0u : L->ntri);
-    c->work = (uint32_t *)subd_arena_alloc(a, nwork * 4u);
-    c->fstack = (uint32_t *)subd_arena_alloc(a, nf * 4u);
-    c->cstack = (ex_cnode *)subd_arena_alloc(a, ncs * EX_CNODE_BYTES);
-    if (!c->mark || !c->work || !c->fstack || !c->cstack) return SUBD_ERR_NOMEM;
-    return SUBD_OK;
+    return st;
 }
 
 /* Bytes needed once the output counts are known (see the file comment). */
@@ -247,9 +238,9 @@ static uint32_t ex_need(const ex_layout *L, uint32_t nv, uint32_t nf)
     if (arrays == UINT32_MAX) return UINT32_MAX;
     scratch = subd_mesh_scratch_bytes(&mc);
     arrays -= scratch;
-    add_bytes(&b, arrays);
-    add_bytes(&b, max_u32(scratch, L->vmap));
-    return max_u32(b, L->phase1);
+    subd_bytes_add(&b, arrays);
+    subd_bytes_add(&b, subd_bytes_max(scratch, L->vmap));
+    return subd_bytes_max(b, L->phase1);
 }
 
 static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint32_t *bound)
@@ -756,27 +747,26 @@ static subd_real ex_default_radius(const ex_ctx *c)
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     ex_layout L;
     ex_ctx c;
     mesh_counts mc;
     subd_mesh m;
     subd_adapt_report r;
     uint32_t next[SUBD_SR48_MAX_STEPS + 1u];
-    uint32_t bound, need, mark0, arr0, arr1, nv, nf, v, k, t, f, nvert;
+    uint32_t bound = 0, need, mark0, arr0, arr1, nv, nf, v, k, t, f, nvert;
     uint32_t *vmap, *used;
     int st;
 
-    subd_diag_clear(d);
-    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = ex_plan(h, ad, &L, &bound)) != SUBD_OK) return subd_fail(d, st);
+    if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = ex_plan(h, ad, &L, &bound)) != SUBD_OK) return subd_entry_fail(&e, st);
     /* UNIFORM emits all of level max: validate levels 0..max up front (the adaptive modes
      * validate what they visit, ex_ok) */
-    if (L.uniform && (st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_fail(d, st);
+    if (L.uniform && (st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_entry_fail(&e, st);
     if (L.phase1 > subd_arena_free_bytes(a)) {
         d->bytes_needed = bound;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
     c.h = h;
     c.ad = ad;
@@ -785,7 +775,7 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     c.forced = 0;
     c.bad = 0;
     c.radius = ad->radius;
-    mark0 = subd_arena_mark(a);
+    mark0 = e.mark;
     if ((st = ex_layout_phase1(a, &L, &c, ad)) != SUBD_OK) goto fail;
 
     /* phase 1: the cut and its counts */
@@ -815,9 +805,8 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     need = ex_need(&L, nv, nf);
     if (need == UINT32_MAX) { st = SUBD_ERR_TOO_BIG; goto fail; }
     if (need > a->size - mark0) {
-        subd_arena_rewind(a, mark0);
         d->bytes_needed = need;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
 
     /* phase 2: arrays above the marks, the renumbering map above the arrays */
@@ -863,16 +852,11 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
         subd_mesh_move_down(&m, a->base + mark0, arr1 - arr0); /* m.pos is at arr0 */
         subd_arena_rewind(a, mark0 + (arr1 - arr0));
     }
-    if ((st = subd_mesh_finish(a, &m, d)) != SUBD_OK) {
-        subd_arena_rewind(a, mark0);
-        return st;
-    }
+    if ((st = subd_mesh_finish(a, &m, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     *out = m;
     if (rep) *rep = r;
-    d->bytes_needed = 0;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 fail:
-    subd_arena_rewind(a, mark0);
     if (st == SUBD_ERR_NOMEM) d->bytes_needed = bound;
-    return subd_fail(d, st);
+    return subd_entry_fail(&e, st);
 }

@@ -34,6 +34,7 @@
  */
 #include "sr48_internal.h"
 #include "mesh_internal.h"
+#include "entry.h"
 
 /* ------------------------------------------------------------------------------------ */
 /* Layout and plan                                                                        */
@@ -171,19 +172,42 @@ static int count_in_place(subd_arena *a, const subd_mesh *in, uint32_t *clusters
     return SUBD_OK;
 }
 
+/* The exact layout of a build. The output sizes depend on the cluster count, which only
+ * find_clusters gives, so find_clusters runs first in the free arena space (given back)
+ * and the layout is then computed with its count. On SUBD_ERR_NOMEM d->bytes_needed is the
+ * plan (the bound without clusters when not even find_clusters fits). */
+static int sr48_layout_exact(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, sr48_layout *L,
+                             subd_diag *d)
+{
+    uint32_t clusters;
+    int st;
+    if ((st = sr48_layout_calc(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, L, d)) != SUBD_OK) return st;
+    if (L->a_bytes > subd_arena_free_bytes(a)) {
+        d->bytes_needed = L->bytes; /* the bound: not even the cluster count fits */
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+    if ((st = count_in_place(a, in, &clusters, d)) != SUBD_OK) return st;
+    if ((st = sr48_layout_calc(in, o, clusters, L, d)) != SUBD_OK) return st;
+    d->bytes_needed = L->bytes;
+    if (L->bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
+    return SUBD_OK;
+}
+
 int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clusters, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     subd_sr48_opts o;
     sr48_layout L;
+    uint32_t n;
     int st;
-    subd_diag_clear(d);
-    if (!a || !clusters) return subd_fail(d, SUBD_ERR_PARAM);
+    if (!a || !clusters) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     o.steps = 0;
     o.flags = 0;
-    if ((st = sr48_layout_calc(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return st;
-    return count_in_place(a, in, clusters, d);
+    if ((st = sr48_layout_calc(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = count_in_place(a, in, &n, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    *clusters = n;
+    return subd_entry_ok(&e);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -295,28 +319,18 @@ int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pba
 
 int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     sr48_layout L;
     sr48_pre w;
     sr48_sums sums;
     subd_sr48 h;
-    uint32_t mark, clusters, bytes, k, cl2, base, keep, tmp;
+    uint32_t bytes, k, cl2, base, keep, tmp;
     int st;
 
-    subd_diag_clear(d);
-    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = sr48_layout_calc(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return st;
-    if (L.a_bytes > subd_arena_free_bytes(a)) {
-        d->bytes_needed = L.bytes; /* the bound: not even the cluster count fits */
-        return subd_fail(d, SUBD_ERR_NOMEM);
-    }
-    if ((st = count_in_place(a, in, &clusters, d)) != SUBD_OK) return st;
-    if ((st = sr48_layout_calc(in, o, clusters, &L, d)) != SUBD_OK) return st;
-    d->bytes_needed = L.bytes;
-    if (L.bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
+    if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = sr48_layout_exact(a, in, o, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
 
-    mark = subd_arena_mark(a);
     h.steps = o->steps;
     h.flags = o->flags;
     h.num_input_verts = in->num_verts;
@@ -326,21 +340,21 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
     for (k = 0; k <= SUBD_SR48_MAX_STEPS + 1u; k++) h.level_tri[k] = L.level_tri[k];
     h.num_clusters = L.clusters;
     h.num_isolated = L.isolated;
-    if ((st = out_layout(a, &L, &h, &bytes)) != SUBD_OK) goto fail;
+    if ((st = out_layout(a, &L, &h, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
 
     /* pre-processing: phase A (find_clusters again, above the output), phase B */
     base = subd_arena_mark(a);
     st = subd_sr48_pre_alloc_a(a, in, &w, &tmp, &keep);
     if (st == SUBD_OK) st = subd_sr48_find_clusters(in, &w, &cl2);
-    if (st == SUBD_OK && cl2 != clusters) st = SUBD_ERR_PARAM;
-    if (st != SUBD_OK) goto fail;
+    if (st == SUBD_OK && cl2 != L.clusters) st = SUBD_ERR_PARAM;
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
     subd_arena_rewind(a, base + keep);
     st = subd_sr48_pre_alloc_b(a, &L, &w, &tmp);
     if (st == SUBD_OK && L.smooth) st = sums_layout(a, L.nv_hyb, &sums, &tmp);
     if (st == SUBD_OK) st = subd_sr48_level0(in, &L, &w, &h);
     if (st == SUBD_OK && L.smooth) st = subd_sr48_smooth(&h, 0, w.hnb, 0, L.nv_hyb, &sums);
     if (st == SUBD_OK && o->steps >= 1u) st = subd_sr48_step(&h, 0, w.hnb, 0, (int)L.smooth);
-    if (st != SUBD_OK) goto fail;
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
     subd_arena_rewind(a, base);
 
     /* binary steps 1 .. steps-1 (step k makes level k+1), smoothing after even levels */
@@ -352,12 +366,8 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
             if (st == SUBD_OK) st = subd_sr48_smooth(&h, k + 1u, h.tri_base_nb + p1, p1, L.level_verts[k], &sums);
             subd_arena_rewind(a, base);
         }
-        if (st != SUBD_OK) goto fail;
+        if (st != SUBD_OK) return subd_entry_fail(&e, st);
     }
-    d->bytes_needed = 0;
     *out = h;
-    return SUBD_OK;
-fail:
-    subd_arena_rewind(a, mark);
-    return subd_fail(d, st);
+    return subd_entry_ok(&e);
 }

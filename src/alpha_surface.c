@@ -42,6 +42,7 @@
  * arrays before the validator fills them, so it needs no scratch of its own.
  */
 #include "alpha_internal.h"
+#include "entry.h"
 
 typedef struct ds_stats {
     uint32_t v, f, c, ei, vi, s;
@@ -284,28 +285,26 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, arena, diag);
     int64_t s_q32;
-    uint32_t mark, bytes, l, t, i, ovf = 0;
+    uint32_t mark = e.mark, bytes, l, t, i, ovf = 0;
     subd_mesh prev, cur;
     ds_stats st_in, st_cur;
     int st;
 
-    subd_diag_clear(d);
-    if (!arena || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = check_args(in, o, &s_q32)) != SUBD_OK) return subd_fail(d, st);
+    if (!arena || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = check_args(in, o, &s_q32)) != SUBD_OK) return subd_entry_fail(&e, st);
     for (i = 0; i < 3u * in->num_verts; i++)
         if (!subd_real_is_finite(in->pos[i])) {
             d->vertex = i / 3u;
-            return subd_fail(d, SUBD_ERR_NAN);
+            return subd_entry_fail(&e, SUBD_ERR_NAN);
         }
-    if ((st = surface_plan(in, o, &bytes, d)) != SUBD_OK) return subd_fail(d, st);
+    if ((st = surface_plan(in, o, &bytes, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(arena)) {
         d->bytes_needed = bytes;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    mark = subd_arena_mark(arena);
     input_stats(in, &st_in, &i);
     st_cur = st_in;
     prev = *in;
@@ -346,12 +345,8 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
         prev = cur;
         st_cur = nx;
     }
-    if (st != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        if (st != SUBD_ERR_NOMEM) d->bytes_needed = 0;
-        return subd_fail(d, st);
-    }
+    if (st != SUBD_OK) return subd_entry_fail(&e, st); /* d->bytes_needed is still 0 here */
     *out = cur;
     if (info) info->continuity = subd_alpha_continuity(s_q32, 1);
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

@@ -92,11 +92,24 @@ static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32
     return st;
 }
 
+/* The builder's scratch (layout.h): per-vertex bucket starts and the bucketed corners. */
+static int scratch_layout(subd_arena *a, uint32_t nv, uint32_t nc, uint32_t **vstart, uint32_t **vcorner,
+                          uint32_t *bytes)
+{
+    subd_layout l;
+    uint32_t *vs, *vc;
+    subd_layout_begin(&l, a);
+    vs = subd_layout_take(&l, nv + 1u, 4u);
+    vc = subd_layout_take(&l, nc, 4u);
+    if (vstart) *vstart = vs;
+    if (vcorner) *vcorner = vc;
+    return subd_layout_end(&l, bytes);
+}
+
 uint32_t subd_mesh_scratch_bytes(const mesh_counts *c)
 {
-    uint32_t b = 0; /* per-vertex bucket starts and the bucketed corners */
-    subd_size_add(&b, c->nv + 1u, 4u);
-    subd_size_add(&b, c->nc, 4u);
+    uint32_t b;
+    scratch_layout(0, c->nv, c->nc, 0, 0, &b);
     return b;
 }
 
@@ -282,9 +295,7 @@ int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
     for (f = 0; f < m->num_faces; f++)
         for (c = m->face_start[f]; c < m->face_start[f + 1u]; c++) m->corner_face[c] = f;
 
-    vstart = (uint32_t *)subd_arena_alloc(a, (m->num_verts + 1u) * 4u);
-    vcorner = (uint32_t *)subd_arena_alloc(a, m->num_corners * 4u);
-    if (!vstart || !vcorner) {
+    if (scratch_layout(a, m->num_verts, m->num_corners, &vstart, &vcorner, 0) != SUBD_OK) {
         subd_arena_rewind(a, mark);
         return subd_fail(d, SUBD_ERR_NOMEM);
     }

@@ -205,6 +205,17 @@ static int ex_check_hierarchy(const subd_sr48 *h, uint32_t max)
     return SUBD_OK;
 }
 
+/* Phase 2's renumbering map, one entry per vertex of levels <= max (layout.h). */
+static int ex_layout_vmap(subd_arena *a, const ex_layout *L, uint32_t **vmap, uint32_t *bytes)
+{
+    subd_layout l;
+    uint32_t *v;
+    subd_layout_begin(&l, a);
+    v = subd_layout_take(&l, L->nvert, 4u);
+    if (vmap) *vmap = v;
+    return subd_layout_end(&l, bytes);
+}
+
 /* The one layout of phase 1 (layout.h). With a == NULL it only counts (c may be NULL). */
 static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_adapt *ad)
 {
@@ -222,8 +233,7 @@ static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_a
     p->fstack = subd_layout_take(&l, nf, 4u);
     p->cstack = subd_layout_take(&l, ncs, EX_CNODE_BYTES);
     st = subd_layout_end(&l, &L->phase1);
-    L->vmap = 0;
-    subd_size_add(&L->vmap, L->nvert, 4u);
+    ex_layout_vmap(0, L, 0, &L->vmap);
     return st;
 }
 
@@ -815,8 +825,7 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     arr0 = subd_arena_mark(a);
     if ((st = subd_mesh_alloc_arrays(a, &mc, &m)) != SUBD_OK) goto fail;
     arr1 = subd_arena_mark(a);
-    vmap = (uint32_t *)subd_arena_alloc(a, nvert * 4u);
-    if (!vmap) { st = SUBD_ERR_NOMEM; goto fail; }
+    if ((st = ex_layout_vmap(a, &L, &vmap, 0)) != SUBD_OK) goto fail;
     /* faces by level, then index: a leaf goes after the earlier leaves of its level; the
      * corners get hierarchy vertex numbers first, renumbered once vmap is known */
     for (f = 0, k = 0; k < SUBD_SR48_MAX_STEPS + 1u; k++) {

@@ -71,6 +71,7 @@
 #include "subd_semireg48.h"
 #include "layout.h"
 #include "entry.h"
+#include "vec3w.h"
 
 #define EX_SPLIT 0x1u
 #define EX_WANT 0x2u
@@ -79,7 +80,7 @@
 /* A node of the chordal-deviation walk: the triangle, its level and the linear
  * interpolant of the walk's root at its three corners (apex, b0, b1). The arena reserves
  * EX_CNODE_BYTES per node in both arithmetics so the plan does not depend on the build. */
-#if SUBD_FIXED
+#if SUBD_FIXED /* the representation differs: Q16.16 keeps the interpolant in Q32.32 */
 typedef int64_t ex_lin; /* Q32.32 */
 #else
 typedef float ex_lin;
@@ -299,25 +300,10 @@ static int ex_ok(ex_ctx *c, uint32_t t, uint32_t k)
 
 static const subd_real *ex_pos(const ex_ctx *c, uint32_t v) { return c->h->pos + 3u * v; }
 
-#if SUBD_FIXED
-typedef int64_t ex_num;
-#else
-typedef float ex_num;
-#endif
+/* Distances use the wide 3-vectors of vec3w.h (ex_num: subd_wide). */
+typedef subd_wide ex_num;
 
-static ex_num ex_dot(const ex_num *a, const ex_num *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static void ex_cross(const ex_num *a, const ex_num *b, ex_num *r)
-{
-    r[0] = a[1] * b[2] - a[2] * b[1];
-    r[1] = a[2] * b[0] - a[0] * b[2];
-    r[2] = a[0] * b[1] - a[1] * b[0];
-}
-static void ex_sub3(const ex_num *a, const ex_num *b, ex_num *r)
-{
-    r[0] = a[0] - b[0]; r[1] = a[1] - b[1]; r[2] = a[2] - b[2];
-}
-
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: integer square roots in the scaled frame, unscaled by 2^s */
 /* Distances in the scaled frame come back as 16 * d (4 fraction bits) and are turned into
  * Q16.16 by the frame's power of two, saturating. */
 static subd_real ex_unscale(uint64_t d16, int32_t s)
@@ -334,40 +320,40 @@ static subd_real ex_unscale(uint64_t d16, int32_t s)
 }
 static subd_real ex_len(const ex_num *q, int32_t s)
 {
-    return ex_unscale(subd_isqrt64((uint64_t)ex_dot(q, q) << 8), s);
+    return ex_unscale(subd_isqrt64((uint64_t)subd_w3_dot(q, q) << 8), s);
 }
 /* Distance from q (relative to a point of the line) to the line along e: |q x e| / |e|. */
 static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
 {
     ex_num x[3];
     uint64_t num, den, d2;
-    ex_cross(q, e, x);
-    num = (uint64_t)ex_dot(x, x);
-    den = (uint64_t)ex_dot(e, e);
+    subd_w3_cross(q, e, x);
+    num = (uint64_t)subd_w3_dot(x, x);
+    den = (uint64_t)subd_w3_dot(e, e);
     if (den == 0u) return ex_len(q, s);
     d2 = ((num / den) << 8) + ((num % den) << 8) / den;
     return ex_unscale(subd_isqrt64(d2), s);
 }
 static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
 {
-    ex_num nq = ex_dot(n, q);
-    uint32_t nl = subd_isqrt64((uint64_t)ex_dot(n, n));
+    ex_num nq = subd_w3_dot(n, q);
+    uint32_t nl = subd_isqrt64((uint64_t)subd_w3_dot(n, n));
     if (nl == 0u) return ex_len(q, s);
     if (nq < 0) nq = -nq;
     return ex_unscale(((uint64_t)nq << 4) / nl, s);
 }
 #else
-static subd_real ex_len(const ex_num *q, int32_t s) { (void)s; return subd_sqrt(ex_dot(q, q)); }
+static subd_real ex_len(const ex_num *q, int32_t s) { (void)s; return subd_sqrt(subd_w3_dot(q, q)); }
 static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
 {
-    ex_num x[3], den = ex_dot(e, e);
+    ex_num x[3], den = subd_w3_dot(e, e);
     if (den == 0.0f) return ex_len(q, s);
-    ex_cross(q, e, x);
-    return subd_sqrt(ex_dot(x, x) / den);
+    subd_w3_cross(q, e, x);
+    return subd_sqrt(subd_w3_dot(x, x) / den);
 }
 static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
 {
-    ex_num nq = ex_dot(n, q), nl = subd_sqrt(ex_dot(n, n));
+    ex_num nq = subd_w3_dot(n, q), nl = subd_sqrt(subd_w3_dot(n, n));
     if (nl == 0.0f) return ex_len(q, s);
     if (nq < 0.0f) nq = -nq;
     return nq / nl;
@@ -382,57 +368,49 @@ static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const
     ex_num ab[3], ac[3], ap[3], bp[3], cp[3], bc[3], n[3];
     ex_num d1, d2, d3, d4, d5, d6, va, vb, vc;
     int32_t s = 0;
-    uint32_t i;
-#if SUBD_FIXED
+    subd_w3_diff(b, a, ab);
+    subd_w3_diff(c, a, ac);
+    subd_w3_diff(p, a, ap);
+#if SUBD_FIXED /* the algorithm differs: Q16.16 works in a frame scaled to 13 bits */
     /* Scale by 2^-s so every component is below 2^13: dot products stay below 2^29 and
-     * their products below 2^59 (int64). */
-    uint64_t mx = 0;
-    uint32_t bits = 0;
-    for (i = 0; i < 3u; i++) {
-        int64_t e[3];
-        uint32_t j;
-        e[0] = (int64_t)b[i] - a[i]; e[1] = (int64_t)c[i] - a[i]; e[2] = (int64_t)p[i] - a[i];
-        for (j = 0; j < 3u; j++) {
-            uint64_t m = (uint64_t)(e[j] < 0 ? -e[j] : e[j]);
-            if (m > mx) mx = m;
+     * their products below 2^59 (int64). Shrinking floors (>>), unlike subd_w3_shift's
+     * truncation: the distances' last bits, and so the adaptive cuts, depend on it. */
+    {
+        uint64_t mx = subd_w3_maxabs(ab);
+        uint32_t i;
+        if (subd_w3_maxabs(ac) > mx) mx = subd_w3_maxabs(ac);
+        if (subd_w3_maxabs(ap) > mx) mx = subd_w3_maxabs(ap);
+        if (mx == 0u) return 0;
+        s = (int32_t)subd_wide_bitlen(mx) - 13;
+        for (i = 0; i < 3u; i++) {
+            if (s > 0) {
+                ab[i] >>= s; ac[i] >>= s; ap[i] >>= s;
+            } else {
+                int64_t f = (int64_t)1 << (-s);
+                ab[i] *= f; ac[i] *= f; ap[i] *= f;
+            }
         }
-    }
-    if (mx == 0u) return 0;
-    while ((mx >> bits) != 0u) bits++;
-    s = (int32_t)bits - 13;
-    for (i = 0; i < 3u; i++) {
-        int64_t e0 = (int64_t)b[i] - a[i], e1 = (int64_t)c[i] - a[i], e2 = (int64_t)p[i] - a[i];
-        if (s > 0) {
-            ab[i] = e0 >> s; ac[i] = e1 >> s; ap[i] = e2 >> s;
-        } else {
-            int64_t f = (int64_t)1 << (-s);
-            ab[i] = e0 * f; ac[i] = e1 * f; ap[i] = e2 * f;
-        }
-    }
-#else
-    for (i = 0; i < 3u; i++) {
-        ab[i] = b[i] - a[i]; ac[i] = c[i] - a[i]; ap[i] = p[i] - a[i];
     }
 #endif
-    d1 = ex_dot(ab, ap);
-    d2 = ex_dot(ac, ap);
+    d1 = subd_w3_dot(ab, ap);
+    d2 = subd_w3_dot(ac, ap);
     if (d1 <= 0 && d2 <= 0) return ex_len(ap, s);
-    ex_sub3(ap, ab, bp);
-    d3 = ex_dot(ab, bp);
-    d4 = ex_dot(ac, bp);
+    subd_w3_sub(ap, ab, bp);
+    d3 = subd_w3_dot(ab, bp);
+    d4 = subd_w3_dot(ac, bp);
     if (d3 >= 0 && d4 <= d3) return ex_len(bp, s);
     vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) return ex_line_dist(ap, ab, s);
-    ex_sub3(ap, ac, cp);
-    d5 = ex_dot(ab, cp);
-    d6 = ex_dot(ac, cp);
+    subd_w3_sub(ap, ac, cp);
+    d5 = subd_w3_dot(ab, cp);
+    d6 = subd_w3_dot(ac, cp);
     if (d6 >= 0 && d5 <= d6) return ex_len(cp, s);
     vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) return ex_line_dist(ap, ac, s);
     va = d3 * d6 - d5 * d4;
-    ex_sub3(ac, ab, bc);
+    subd_w3_sub(ac, ab, bc);
     if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return ex_line_dist(bp, bc, s);
-    ex_cross(ab, ac, n);
+    subd_w3_cross(ab, ac, n);
     return ex_plane_dist(n, ap, s);
 }
 
@@ -440,11 +418,7 @@ static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const
 static int ex_point_wants(const ex_ctx *c, const uint32_t *v, uint32_t n)
 {
     subd_real d = ex_point_tri_dist(c->ad->point, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2]));
-#if SUBD_FIXED
-    return (int64_t)d < (int64_t)n * c->radius;
-#else
-    return d < (float)n * c->radius;
-#endif
+    return subd_wide_of(d) < subd_wide_mulu(n, subd_wide_of(c->radius));
 }
 
 /* (k + 1)(hi - lo) <= max (x - lo), x the largest coordinate on the axis. */
@@ -454,17 +428,13 @@ static int ex_ramp_wants(const ex_ctx *c, const uint32_t *v, uint32_t k)
     subd_real x = ex_pos(c, v[0])[ax], lo = c->lo[ax], hi = c->hi[ax];
     for (i = 1; i < 3u; i++)
         if (ex_pos(c, v[i])[ax] > x) x = ex_pos(c, v[i])[ax];
-#if SUBD_FIXED
-    return (int64_t)(k + 1u) * ((int64_t)hi - lo) <= (int64_t)c->max * ((int64_t)x - lo);
-#else
-    return (float)(k + 1u) * (hi - lo) <= (float)c->max * (x - lo);
-#endif
+    return subd_wide_mulu(k + 1u, subd_wide_diff(hi, lo)) <= subd_wide_mulu(c->max, subd_wide_diff(x, lo));
 }
 
 /* (q - point).normal >= 0. */
 static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_real *nrm)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: an exact sign of a sum of three 2^63 products */
     /* Each product is below 2^63 in magnitude; the sum of three is kept as hi * 2^32 + lo
      * with 0 <= lo < 2^32, so its sign is the sign of hi. */
     int64_t hi = 0, lo = 0;
@@ -482,7 +452,7 @@ static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_rea
 #endif
 }
 
-#if SUBD_FIXED
+#if SUBD_FIXED /* Q32.32 interpolant, see ex_lin */
 static ex_lin ex_lin_of(subd_real x) { return (int64_t)x * 65536; }
 static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) >> 1; }
 #else
@@ -493,7 +463,7 @@ static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) * 0.5f; }
 /* |P - L| > eps. */
 static int ex_beyond(const subd_real *p, const ex_lin *l, subd_real eps)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: Q32.32 differences, an early exit keeps the squares in 64 bits */
     uint64_t sum = 0, e = (uint64_t)eps;
     uint32_t i;
     for (i = 0; i < 3u; i++) {
@@ -732,7 +702,7 @@ static void ex_bbox(ex_ctx *c, uint32_t nvert)
  * last place so the level function stays defined. */
 static subd_real ex_default_radius(const ex_ctx *c)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: integer square root, pre-shift keeps the squares in 64 bits */
     uint64_t d[3], sum = 0, diag;
     uint32_t i, sh = 0;
     for (i = 0; i < 3u; i++) {

@@ -25,6 +25,7 @@
 #include "alpha_internal.h"
 #include "layout.h"
 #include "entry.h"
+#include "real_avg.h"
 
 typedef struct curve_ctx {
     const subd_alpha_opts *o;
@@ -149,15 +150,7 @@ static void lerp3(subd_real *out, const subd_real *a, const subd_real *b, subd_a
 static void mid3(subd_real *out, const subd_real *a, const subd_real *b, uint32_t *ovf)
 {
     uint32_t i;
-    for (i = 0; i < 3u; i++) {
-#if SUBD_FIXED
-        int64_t s = (int64_t)a[i] + b[i], h = s >> 1;
-        (void)ovf;
-        out[i] = (subd_real)(h + (s & h & 1));
-#else
-        out[i] = subd_mul(subd_add(a[i], b[i], ovf), 0.5f, ovf);
-#endif
-    }
+    for (i = 0; i < 3u; i++) out[i] = subd_mid_of_sum_even(a[i], b[i], ovf);
 }
 
 static void copy3(subd_real *out, const subd_real *a)

@@ -43,6 +43,7 @@
  */
 #include "alpha_internal.h"
 #include "entry.h"
+#include "real_avg.h"
 
 typedef struct ds_stats {
     uint32_t v, f, c, ei, vi, s;
@@ -166,17 +167,10 @@ int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint3
 /* Face centroid, rounded once (Q16.16: exact sum, one rounded division). */
 static subd_real centroid(const subd_mesh *m, uint32_t s, uint32_t e, uint32_t k, uint32_t *ovf)
 {
+    subd_sum sum = 0;
     uint32_t i;
-#if SUBD_FIXED
-    int64_t sum = 0, n = (int64_t)(e - s);
-    for (i = s; i < e; i++) sum += m->pos[3u * m->corner_vert[i] + k];
-    sum = (sum >= 0) ? (sum + n / 2) / n : -((-sum + n / 2) / n);
-    return subd_real_sat(sum, ovf);
-#else
-    float sum = 0.0f;
-    for (i = s; i < e; i++) sum = subd_add(sum, m->pos[3u * m->corner_vert[i] + k], ovf);
-    return subd_div(sum, (float)(e - s), ovf);
-#endif
+    for (i = s; i < e; i++) sum = subd_sum_add(sum, m->pos[3u * m->corner_vert[i] + k]);
+    return subd_avg(sum, e - s, ovf);
 }
 
 /* Formula (3) for every corner of every face of m, into pos (3 per corner). */
@@ -225,18 +219,6 @@ static void ds_faces(const subd_mesh *m, subd_mesh *out)
     out->line_start[0] = 0;
 }
 
-/* Midpoint of two coordinates, rounded once (Q16.16: half away from zero, as centroid). */
-static subd_real midpoint(subd_real a, subd_real b, uint32_t *ovf)
-{
-#if SUBD_FIXED
-    int64_t sum = (int64_t)a + b;
-    sum = (sum >= 0) ? (sum + 1) / 2 : -((-sum + 1) / 2);
-    return subd_real_sat(sum, ovf);
-#else
-    return subd_mul(0.5f, subd_add(a, b, ovf), ovf);
-#endif
-}
-
 /* The dual averaging operator C on m into out (counts already set): output vertices are
  * m's face centroids (face order), then the midpoints of m's boundary edges (half-edge
  * order), then m's boundary vertices (vertex order); one face per vertex of m (vertex
@@ -255,7 +237,7 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
         if (m->twin[h] != SUBD_NONE) continue;
         a = m->corner_vert[h];
         b = subd_he_dest(m, h);
-        for (k = 0; k < 3u; k++) out->pos[3u * n + k] = midpoint(m->pos[3u * a + k], m->pos[3u * b + k], ovf);
+        for (k = 0; k < 3u; k++) out->pos[3u * n + k] = subd_mid_of_sum(m->pos[3u * a + k], m->pos[3u * b + k], ovf);
         emap[h] = n++;
     }
     for (v = 0; v < m->num_verts; v++) {

@@ -17,12 +17,12 @@
 
 #define N_BITS 10 /* Q16.16: significant bits kept per normal component */
 
-/* Q16.16 only: the shift that brings the differences of face f's corners to p0 below 2^28
- * bits, so their cross products and the fan's sum stay in int64 (float32 needs no range
- * scaling: 0). The shift is shared by the whole face so the fan's terms add up exactly. */
+#if SUBD_FIXED /* the algorithm differs: Q16.16 differences are pre-shifted so products stay in int64 */
+/* The shift that brings the differences of the face's corners [s, e) to p0 below 2^28, so
+ * their cross products and the fan's sum stay in int64. One shift for the whole face, so
+ * the fan's terms add up exactly. */
 static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd_real *p0)
 {
-#if SUBD_FIXED /* the algorithm differs: float32 has the range and needs no shift */
     uint64_t big = 0;
     uint32_t c;
     for (c = s; c < e; c++) {
@@ -32,15 +32,29 @@ static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd
         x = subd_w3_maxabs(d);
         if (x > big) big = x;
     }
-    return big >= ((uint64_t)1 << 28) ? (int32_t)subd_wide_bitlen(big) - 28 : 0;
+    return big >= ((uint64_t)1 << 28) ? (int32_t)subd_bitlen64(big) - 28 : 0;
+}
+/* r = (p - p0) * 2^-sh */
+static void corner_diff(const subd_real *p, const subd_real *p0, int32_t sh, subd_wide *r)
+{
+    subd_w3_diff(p, p0, r);
+    subd_w3_shift(r, r, sh);
+}
 #else
+static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd_real *p0)
+{
     (void)m;
     (void)s;
     (void)e;
     (void)p0;
-    return 0;
-#endif
+    return 0; /* float32 has the range */
 }
+static void corner_diff(const subd_real *p, const subd_real *p0, int32_t sh, subd_wide *r)
+{
+    (void)sh;
+    subd_w3_diff(p, p0, r);
+}
+#endif
 
 /* Normal of face f by Newell's method over the fan from its first corner, rescaled by
  * subd_w3_fit (float32: largest component 1; Q16.16: at most N_BITS bits per component, so
@@ -52,14 +66,8 @@ static void face_normal(const subd_mesh *m, uint32_t f, subd_wide n[3])
     subd_wide acc[3] = {0, 0, 0}, a[3], b[3], x[3];
     int32_t sh = face_shift(m, s, e, p0);
     for (c = s + 1u; c + 1u < e; c++) {
-        subd_w3_diff(&m->pos[3u * m->corner_vert[c]], p0, a);
-        subd_w3_diff(&m->pos[3u * m->corner_vert[c + 1u]], p0, b);
-#if SUBD_FIXED /* see face_shift */
-        subd_w3_shift(a, a, sh);
-        subd_w3_shift(b, b, sh);
-#else
-        (void)sh;
-#endif
+        corner_diff(&m->pos[3u * m->corner_vert[c]], p0, sh, a);
+        corner_diff(&m->pos[3u * m->corner_vert[c + 1u]], p0, sh, b);
         subd_w3_cross(a, b, x);
         for (k = 0; k < 3u; k++) acc[k] += x[k];
     }

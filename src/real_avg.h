@@ -7,10 +7,17 @@
  * negation and a planar input stays exactly planar); the float32 forms are the plain
  * expressions, with the midpoint halving first so that a + b cannot overflow near FLT_MAX.
  *
+ * Two midpoints exist because two roundings are in use and the outputs must keep their bits:
+ * subd_mid halves first (float32), subd_mid_of_sum rounds the sum and halves it (float32:
+ * overflow of a + b is reported), subd_mid_of_sum_even is the same with Q16.16 ties to even
+ * (the alpha curve operator's unbiased rounding). In float32 the two sum-first forms agree;
+ * in Q16.16 subd_mid and subd_mid_of_sum agree.
+ *
  * Scaling and overflow contract (CMSIS-DSP style):
  *  - Q16.16: subd_sum is int64_t. A sum of at most 2^31 subd_reals is exact. subd_avg,
  *    subd_mid and subd_blend return a convex combination of in-range values, which is in
  *    range, so they never saturate and never set *ovf. k must be >= 1.
+ *    subd_mid_of_sum_even's h + (s & h & 1) is round-half-to-even of s / 2.
  *  - float32: subd_sum is float, summed in the caller's order (float sums depend on it).
  *    Each result goes through subd_chk, which sets *ovf when it is not finite.
  * All functions are static inline: callers in the scheme files get the same code as the
@@ -47,6 +54,14 @@ static inline subd_real subd_blend(subd_real p, subd_sum s, uint32_t k, uint32_t
     (void)ovf;
     return subd_div_round((int64_t)k * p + s, 2 * (int64_t)k);
 }
+static inline subd_real subd_mid_of_sum(subd_real a, subd_real b, uint32_t *ovf) { return subd_mid(a, b, ovf); }
+/* (a + b) / 2, ties to even. */
+static inline subd_real subd_mid_of_sum_even(subd_real a, subd_real b, uint32_t *ovf)
+{
+    int64_t s = (int64_t)a + b, h = s >> 1;
+    (void)ovf;
+    return (subd_real)(h + (s & h & 1));
+}
 #else
 typedef float subd_sum;
 
@@ -61,6 +76,15 @@ static inline subd_real subd_blend(subd_real p, subd_sum s, uint32_t k, uint32_t
 {
     subd_real avg = s / (float)k, hp = 0.5f * p, ha = 0.5f * avg;
     return subd_chk(hp + ha, ovf);
+}
+/* (a + b) * 1/2: the sum rounded (and checked), then halved exactly. */
+static inline subd_real subd_mid_of_sum(subd_real a, subd_real b, uint32_t *ovf)
+{
+    return subd_mul(subd_add(a, b, ovf), 0.5f, ovf);
+}
+static inline subd_real subd_mid_of_sum_even(subd_real a, subd_real b, uint32_t *ovf)
+{
+    return subd_mid_of_sum(a, b, ovf);
 }
 #endif
 

@@ -381,7 +381,7 @@ static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const
         if (subd_w3_maxabs(ac) > mx) mx = subd_w3_maxabs(ac);
         if (subd_w3_maxabs(ap) > mx) mx = subd_w3_maxabs(ap);
         if (mx == 0u) return 0;
-        s = (int32_t)subd_wide_bitlen(mx) - 13;
+        s = (int32_t)subd_bitlen64(mx) - 13;
         for (i = 0; i < 3u; i++) {
             if (s > 0) {
                 ab[i] >>= s; ac[i] >>= s; ap[i] >>= s;

@@ -51,8 +51,8 @@ typedef struct sr48_sums {
 } sr48_sums;
 
 /* Phase A (find_clusters) and phase B (hybrid subdivision) memory: layout functions
- * (layout.h), so with a == NULL only *bytes is computed (w may be NULL). Phase B allocates on top of phase A's first three
- * arrays (edge_of, edge_he, sel: *keep bytes), which stay. */
+ * (layout.h), so with a == NULL only *bytes is computed (w may be NULL). Phase B allocates
+ * on top of phase A's first three arrays (edge_of, edge_he, sel: *keep bytes), which stay. */
 int subd_sr48_pre_alloc_a(subd_arena *a, const subd_mesh *in, sr48_pre *w, uint32_t *bytes, uint32_t *keep);
 int subd_sr48_pre_alloc_b(subd_arena *a, const sr48_layout *L, sr48_pre *w, uint32_t *bytes);
 

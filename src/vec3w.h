@@ -21,9 +21,15 @@
  *    truncates toward zero, growing is exact. t = 0 gives o = 0. bits in 1..62.
  *  - subd_w3_fit(t, o, bits): as subd_w3_normalize but Q16.16 only shrinks (s >= 0), so
  *    small vectors keep their size: max|o_k| < 2^bits. float32: the same as normalize.
+ *  - subd_w3_unit(c, out) (vec3w.c): c / |c| as subd_reals, (0, 0, 0) for c = 0; c is first
+ *    rescaled by subd_w3_normalize(c, ., 30), so any c is accepted. Q16.16: rounded to
+ *    nearest (ties away from zero) in units of 2^-16; float32: n / sqrt(n . n).
+ *  - subd_wide_madd(acc, w, d) = acc + w * d for a subd_real weight: Q16.16 exact in int64
+ *    (acc in units of 2^-32) while the caller keeps |w d| and the sum below 2^63; float32
+ *    the product rounded into a temporary, then the sum.
  *  - subd_wide_mulu(n, x) = n * x: Q16.16 exact while |x| < 2^31 and n < 2^32; float32 one
  *    rounding. subd_wide_of(x): x widened (exact in both).
- * All functions are static inline and have no side effects; o may alias t. */
+ * All but subd_w3_unit are static inline; none has side effects; o may alias t. */
 #ifndef SUBD_VEC3W_H
 #define SUBD_VEC3W_H
 #include "subd.h"
@@ -37,6 +43,12 @@ typedef float subd_wide;
 static inline subd_wide subd_wide_of(subd_real x) { return (subd_wide)x; }
 static inline subd_wide subd_wide_diff(subd_real p, subd_real q) { return (subd_wide)p - (subd_wide)q; }
 static inline subd_wide subd_wide_mulu(uint32_t n, subd_wide x) { return (subd_wide)n * x; }
+
+static inline subd_wide subd_wide_madd(subd_wide acc, subd_real w, subd_wide d)
+{
+    subd_wide t = (subd_wide)w * d;
+    return acc + t;
+}
 
 /* r = p - q */
 static inline void subd_w3_diff(const subd_real *p, const subd_real *q, subd_wide *r)
@@ -136,5 +148,7 @@ static inline void subd_w3_normalize(const subd_wide *t, subd_wide *o, uint32_t 
 
 static inline void subd_w3_fit(const subd_wide *t, subd_wide *o, uint32_t bits) { subd_w3_normalize(t, o, bits); }
 #endif
+
+void subd_w3_unit(const subd_wide *c, subd_real *out);
 
 #endif

@@ -23,6 +23,9 @@
  * says why no unread point is overwritten).
  */
 #include "alpha_internal.h"
+#include "layout.h"
+#include "entry.h"
+#include "real_avg.h"
 
 typedef struct curve_ctx {
     const subd_alpha_opts *o;
@@ -70,14 +73,28 @@ static void curve_counts(uint32_t m, int closed, const subd_alpha_opts *o, uint3
     *final = n;
 }
 
+/* The one layout (layout.h): the points, and the tags when the caller gives them; both sized
+ * for the largest intermediate count. With a == NULL it only counts (p, t may be NULL). */
+static int curve_layout(subd_arena *a, uint32_t mx, const subd_alpha_opts *o, subd_real **p, int32_t **t,
+                        uint32_t *bytes)
+{
+    subd_layout l;
+    subd_real *pp;
+    int32_t *tt = 0;
+    subd_layout_begin(&l, a);
+    pp = subd_layout_take(&l, mx, 3u * (uint32_t)sizeof(subd_real));
+    if (o->tag_num) tt = subd_layout_take(&l, mx, 4u);
+    if (p) *p = pp;
+    if (t) *t = tt;
+    return subd_layout_end(&l, bytes);
+}
+
 static int curve_bytes(uint32_t m, int closed, const subd_alpha_opts *o, uint32_t *bytes, uint32_t *out_points)
 {
-    uint32_t mx, fin, total = 0;
+    uint32_t mx, fin, total;
     curve_counts(m, closed, o, &mx, &fin);
     if (mx == UINT32_MAX) return SUBD_ERR_TOO_BIG;
-    subd_size_add(&total, mx, 3u * (uint32_t)sizeof(subd_real));
-    if (o->tag_num) subd_size_add(&total, mx, 4u);
-    if (total == UINT32_MAX) return SUBD_ERR_TOO_BIG;
+    if (curve_layout(0, mx, o, 0, 0, &total) != SUBD_OK) return SUBD_ERR_TOO_BIG;
     *bytes = total;
     if (out_points) *out_points = fin;
     return SUBD_OK;
@@ -133,15 +150,7 @@ static void lerp3(subd_real *out, const subd_real *a, const subd_real *b, subd_a
 static void mid3(subd_real *out, const subd_real *a, const subd_real *b, uint32_t *ovf)
 {
     uint32_t i;
-    for (i = 0; i < 3u; i++) {
-#if SUBD_FIXED
-        int64_t s = (int64_t)a[i] + b[i], h = s >> 1;
-        (void)ovf;
-        out[i] = (subd_real)(h + (s & h & 1));
-#else
-        out[i] = subd_mul(subd_add(a[i], b[i], ovf), 0.5f, ovf);
-#endif
-    }
+    for (i = 0; i < 3u; i++) out[i] = subd_mid_of_sum_even(a[i], b[i], ovf);
 }
 
 static void copy3(subd_real *out, const subd_real *a)
@@ -322,39 +331,35 @@ static void shift_closed(subd_real *p, int32_t *t, uint32_t n, uint32_t r)
 int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
                      const subd_alpha_opts *o, subd_alpha_curve_out *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, arena, diag);
     curve_ctx c;
-    uint32_t mark, bytes, mx, fin, n, i, l, j;
+    uint32_t bytes, mx, fin, n, i, l, j;
     subd_real *p;
     int32_t *t = 0;
     int vc = 0, st;
 
-    subd_diag_clear(d);
-    if (!arena || !pos || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, &c.s_q32)) != SUBD_OK) return subd_fail(d, st);
-    if ((st = check_m(m, closed)) != SUBD_OK) return subd_fail(d, st);
+    if (!arena || !pos || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, &c.s_q32)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = check_m(m, closed)) != SUBD_OK) return subd_entry_fail(&e, st);
     for (i = 0; i < 3u * m; i++)
         if (!subd_real_is_finite(pos[i])) {
             d->vertex = i / 3u;
-            return subd_fail(d, SUBD_ERR_NAN);
+            return subd_entry_fail(&e, SUBD_ERR_NAN);
         }
-    if ((st = curve_bytes(m, closed, o, &bytes, &fin)) != SUBD_OK) return subd_fail(d, st);
+    if ((st = curve_bytes(m, closed, o, &bytes, &fin)) != SUBD_OK) return subd_entry_fail(&e, st);
     curve_counts(m, closed, o, &mx, &fin);
-    mark = subd_arena_mark(arena);
     if (bytes > subd_arena_free_bytes(arena)) {
         d->bytes_needed = bytes;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    p = (subd_real *)subd_arena_alloc(arena, mx * 3u * (uint32_t)sizeof(subd_real));
-    if (o->tag_num) t = (int32_t *)subd_arena_alloc(arena, mx * 4u);
+    if ((st = curve_layout(arena, mx, o, &p, &t, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
     for (i = 0; i < 3u * m; i++) p[i] = pos[i];
     if (t) {
         for (i = 0; i < m; i++) {
             if (o->tag_num[i] > SUBD_ALPHA_MAX_NUM || o->tag_num[i] < -SUBD_ALPHA_MAX_NUM) {
                 d->vertex = i;
-                subd_arena_rewind(arena, mark);
-                return subd_fail(d, SUBD_ERR_PARAM);
+                return subd_entry_fail(&e, SUBD_ERR_PARAM);
             }
             t[i] = o->tag_num[i];
         }
@@ -383,13 +388,10 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
         if (closed) shift_closed(p, t, n, (o->order - 2u) / 2u);
     }
     if (c.status == SUBD_OK && c.ovf) c.status = SUBD_ERR_RANGE;
-    if (c.status != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        return subd_fail(d, c.status);
-    }
-    if (t) subd_arena_rewind(arena, mark + (uint32_t)((uint8_t *)t - (uint8_t *)p));
+    if (c.status != SUBD_OK) return subd_entry_fail(&e, c.status);
+    if (t) subd_arena_rewind(arena, e.mark + (uint32_t)((uint8_t *)t - (uint8_t *)p)); /* the tags were scratch */
     out->num_points = n;
     out->pos = p;
     out->continuity = subd_alpha_continuity(c.s_q32, (int32_t)o->order - 1);
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

@@ -36,7 +36,7 @@ int subd_alpha_check_opts(const subd_alpha_opts *o, uint32_t max_order, int64_t 
 /* Table 1 / theorems 1-2: -1 for s <= 0, 0 for s <= 1/2, else smooth_class. */
 int32_t subd_alpha_continuity(int64_t s_q32, int32_t smooth_class);
 
-#if SUBD_FIXED
+#if SUBD_FIXED /* the weight type differs: Q32.32 integers, products formed in 128 bits (see above) */
 typedef int64_t subd_alpha_wt;
 static inline subd_alpha_wt subd_alpha_wt_from_q32(int64_t q, uint32_t *ovf) { (void)ovf; return q; }
 /* a + w (b - a), rounded once. */

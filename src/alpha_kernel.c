@@ -91,7 +91,7 @@ int64_t subd_alpha_divq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf)
     return signed_result(q, neg, ovf);
 }
 
-#if SUBD_FIXED
+#if SUBD_FIXED /* conversions between Q32.32 and subd_real: one per arithmetic */
 subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf)
 {
     if (q > INT64_MAX - 32768) {

@@ -42,6 +42,8 @@
  * arrays before the validator fills them, so it needs no scratch of its own.
  */
 #include "alpha_internal.h"
+#include "entry.h"
+#include "real_avg.h"
 
 typedef struct ds_stats {
     uint32_t v, f, c, ei, vi, s;
@@ -165,17 +167,10 @@ int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint3
 /* Face centroid, rounded once (Q16.16: exact sum, one rounded division). */
 static subd_real centroid(const subd_mesh *m, uint32_t s, uint32_t e, uint32_t k, uint32_t *ovf)
 {
+    subd_sum sum = 0;
     uint32_t i;
-#if SUBD_FIXED
-    int64_t sum = 0, n = (int64_t)(e - s);
-    for (i = s; i < e; i++) sum += m->pos[3u * m->corner_vert[i] + k];
-    sum = (sum >= 0) ? (sum + n / 2) / n : -((-sum + n / 2) / n);
-    return subd_real_sat(sum, ovf);
-#else
-    float sum = 0.0f;
-    for (i = s; i < e; i++) sum = subd_add(sum, m->pos[3u * m->corner_vert[i] + k], ovf);
-    return subd_div(sum, (float)(e - s), ovf);
-#endif
+    for (i = s; i < e; i++) sum = subd_sum_add(sum, m->pos[3u * m->corner_vert[i] + k]);
+    return subd_avg(sum, e - s, ovf);
 }
 
 /* Formula (3) for every corner of every face of m, into pos (3 per corner). */
@@ -224,18 +219,6 @@ static void ds_faces(const subd_mesh *m, subd_mesh *out)
     out->line_start[0] = 0;
 }
 
-/* Midpoint of two coordinates, rounded once (Q16.16: half away from zero, as centroid). */
-static subd_real midpoint(subd_real a, subd_real b, uint32_t *ovf)
-{
-#if SUBD_FIXED
-    int64_t sum = (int64_t)a + b;
-    sum = (sum >= 0) ? (sum + 1) / 2 : -((-sum + 1) / 2);
-    return subd_real_sat(sum, ovf);
-#else
-    return subd_mul(0.5f, subd_add(a, b, ovf), ovf);
-#endif
-}
-
 /* The dual averaging operator C on m into out (counts already set): output vertices are
  * m's face centroids (face order), then the midpoints of m's boundary edges (half-edge
  * order), then m's boundary vertices (vertex order); one face per vertex of m (vertex
@@ -254,7 +237,7 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
         if (m->twin[h] != SUBD_NONE) continue;
         a = m->corner_vert[h];
         b = subd_he_dest(m, h);
-        for (k = 0; k < 3u; k++) out->pos[3u * n + k] = midpoint(m->pos[3u * a + k], m->pos[3u * b + k], ovf);
+        for (k = 0; k < 3u; k++) out->pos[3u * n + k] = subd_mid_of_sum(m->pos[3u * a + k], m->pos[3u * b + k], ovf);
         emap[h] = n++;
     }
     for (v = 0; v < m->num_verts; v++) {
@@ -284,28 +267,26 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, arena, diag);
     int64_t s_q32;
-    uint32_t mark, bytes, l, t, i, ovf = 0;
+    uint32_t mark = e.mark, bytes, l, t, i, ovf = 0;
     subd_mesh prev, cur;
     ds_stats st_in, st_cur;
     int st;
 
-    subd_diag_clear(d);
-    if (!arena || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = check_args(in, o, &s_q32)) != SUBD_OK) return subd_fail(d, st);
+    if (!arena || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = check_args(in, o, &s_q32)) != SUBD_OK) return subd_entry_fail(&e, st);
     for (i = 0; i < 3u * in->num_verts; i++)
         if (!subd_real_is_finite(in->pos[i])) {
             d->vertex = i / 3u;
-            return subd_fail(d, SUBD_ERR_NAN);
+            return subd_entry_fail(&e, SUBD_ERR_NAN);
         }
-    if ((st = surface_plan(in, o, &bytes, d)) != SUBD_OK) return subd_fail(d, st);
+    if ((st = surface_plan(in, o, &bytes, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(arena)) {
         d->bytes_needed = bytes;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    mark = subd_arena_mark(arena);
     input_stats(in, &st_in, &i);
     st_cur = st_in;
     prev = *in;
@@ -346,12 +327,8 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
         prev = cur;
         st_cur = nx;
     }
-    if (st != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        if (st != SUBD_ERR_NOMEM) d->bytes_needed = 0;
-        return subd_fail(d, st);
-    }
+    if (st != SUBD_OK) return subd_entry_fail(&e, st); /* d->bytes_needed is still 0 here */
     *out = cur;
     if (info) info->continuity = subd_alpha_continuity(s_q32, 1);
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

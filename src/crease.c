@@ -13,75 +13,73 @@
  * resolved to about 1e-3 radians (0.06 degrees), which is ample for a feature threshold.
  */
 #include "subd.h"
+#include "vec3w.h"
 
-#if SUBD_FIXED
-typedef int64_t crease_n; /* components of a normal, |x| < 2^10 after face_normal */
-#define N_BITS 10
+#define N_BITS 10 /* Q16.16: significant bits kept per normal component */
+
+#if SUBD_FIXED /* the algorithm differs: Q16.16 differences are pre-shifted so products stay in int64 */
+/* The shift that brings the differences of the face's corners [s, e) to p0 below 2^28, so
+ * their cross products and the fan's sum stay in int64. One shift for the whole face, so
+ * the fan's terms add up exactly. */
+static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd_real *p0)
+{
+    uint64_t big = 0;
+    uint32_t c;
+    for (c = s; c < e; c++) {
+        subd_wide d[3];
+        uint64_t x;
+        subd_w3_diff(&m->pos[3u * m->corner_vert[c]], p0, d);
+        x = subd_w3_maxabs(d);
+        if (x > big) big = x;
+    }
+    return big >= ((uint64_t)1 << 28) ? (int32_t)subd_bitlen64(big) - 28 : 0;
+}
+/* r = (p - p0) * 2^-sh */
+static void corner_diff(const subd_real *p, const subd_real *p0, int32_t sh, subd_wide *r)
+{
+    subd_w3_diff(p, p0, r);
+    subd_w3_shift(r, r, sh);
+}
 #else
-typedef float crease_n;
+static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd_real *p0)
+{
+    (void)m;
+    (void)s;
+    (void)e;
+    (void)p0;
+    return 0; /* float32 has the range */
+}
+static void corner_diff(const subd_real *p, const subd_real *p0, int32_t sh, subd_wide *r)
+{
+    (void)sh;
+    subd_w3_diff(p, p0, r);
+}
 #endif
 
-/* Normal of face f by Newell's method over the fan from its first corner. */
-static void face_normal(const subd_mesh *m, uint32_t f, crease_n n[3])
+/* Normal of face f by Newell's method over the fan from its first corner, rescaled by
+ * subd_w3_fit (float32: largest component 1; Q16.16: at most N_BITS bits per component, so
+ * the squared comparison below fits 64 bits). */
+static void face_normal(const subd_mesh *m, uint32_t f, subd_wide n[3])
 {
     uint32_t s = m->face_start[f], e = m->face_start[f + 1u], c, k;
     const subd_real *p0 = &m->pos[3u * m->corner_vert[s]];
-#if SUBD_FIXED
-    int64_t acc[3] = {0, 0, 0}, big = 0, a[3], b[3];
-    uint32_t shift = 0;
-    for (c = s; c < e; c++)
-        for (k = 0; k < 3u; k++) {
-            int64_t x = (int64_t)m->pos[3u * m->corner_vert[c] + k] - p0[k];
-            if (x > big) big = x;
-            if (-x > big) big = -x;
-        }
-    while ((big >> shift) >= ((int64_t)1 << 28)) shift++;
+    subd_wide acc[3] = {0, 0, 0}, a[3], b[3], x[3];
+    int32_t sh = face_shift(m, s, e, p0);
     for (c = s + 1u; c + 1u < e; c++) {
-        for (k = 0; k < 3u; k++) {
-            a[k] = ((int64_t)m->pos[3u * m->corner_vert[c] + k] - p0[k]) / ((int64_t)1 << shift);
-            b[k] = ((int64_t)m->pos[3u * m->corner_vert[c + 1u] + k] - p0[k]) / ((int64_t)1 << shift);
-        }
-        acc[0] += a[1] * b[2] - a[2] * b[1];
-        acc[1] += a[2] * b[0] - a[0] * b[2];
-        acc[2] += a[0] * b[1] - a[1] * b[0];
+        corner_diff(&m->pos[3u * m->corner_vert[c]], p0, sh, a);
+        corner_diff(&m->pos[3u * m->corner_vert[c + 1u]], p0, sh, b);
+        subd_w3_cross(a, b, x);
+        for (k = 0; k < 3u; k++) acc[k] += x[k];
     }
-    big = 0;
-    for (k = 0; k < 3u; k++) {
-        if (acc[k] > big) big = acc[k];
-        if (-acc[k] > big) big = -acc[k];
-    }
-    shift = 0;
-    while ((big >> shift) >= ((int64_t)1 << N_BITS)) shift++;
-    for (k = 0; k < 3u; k++) n[k] = acc[k] / ((int64_t)1 << shift);
-#else
-    float acc[3] = {0.0f, 0.0f, 0.0f}, big = 0.0f;
-    for (c = s + 1u; c + 1u < e; c++) {
-        const subd_real *p1 = &m->pos[3u * m->corner_vert[c]], *p2 = &m->pos[3u * m->corner_vert[c + 1u]];
-        float a[3], b[3];
-        for (k = 0; k < 3u; k++) {
-            a[k] = p1[k] - p0[k];
-            b[k] = p2[k] - p0[k];
-        }
-        acc[0] += a[1] * b[2] - a[2] * b[1];
-        acc[1] += a[2] * b[0] - a[0] * b[2];
-        acc[2] += a[0] * b[1] - a[1] * b[0];
-    }
-    for (k = 0; k < 3u; k++) {
-        float x = acc[k] < 0.0f ? -acc[k] : acc[k];
-        if (x > big) big = x;
-    }
-    for (k = 0; k < 3u; k++) n[k] = big > 0.0f ? acc[k] / big : 0.0f;
-#endif
+    subd_w3_fit(acc, n, N_BITS);
 }
 
 /* True when the angle between a and b exceeds the angle whose cosine is c. A zero normal
  * (degenerate face) never makes a crease. */
-static int angle_exceeds(const crease_n a[3], const crease_n b[3], subd_real c)
+static int angle_exceeds(const subd_wide a[3], const subd_wide b[3], subd_real c)
 {
-    crease_n dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    crease_n aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-    crease_n bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-#if SUBD_FIXED
+    subd_wide dot = subd_w3_dot(a, b), aa = subd_w3_dot(a, a), bb = subd_w3_dot(b, b);
+#if SUBD_FIXED /* the algorithm differs: c^2 aa bb in fixed point, rescaled to stay in int64 */
     /* dot^2 and aa*bb < 2^44; with c^2 in Q30 the product below stays under 2^60 */
     int64_t c2 = ((int64_t)c * c) >> 2, lhs, rhs;
     if (aa == 0 || bb == 0) return 0;
@@ -101,7 +99,7 @@ static int angle_exceeds(const crease_n a[3], const crease_n b[3], subd_real c)
 uint32_t subd_mesh_tag_crease_angle(subd_mesh *m, subd_real cos_limit)
 {
     uint32_t h, tagged = 0;
-    crease_n a[3], b[3];
+    subd_wide a[3], b[3];
     for (h = 0; h < m->num_corners; h++) {
         uint32_t t = m->twin[h];
         if (t == SUBD_NONE || t < h) continue; /* each interior edge once */

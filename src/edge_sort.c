@@ -37,6 +37,7 @@
  *    on h instead of two dependent loads (corner_face, face_start) per ring step.
  */
 #include "edge_sort.h"
+#include "vec3w.h" /* subd_bitlen64 */
 
 #define ES_KEY_FRAC 52u
 /* With at most this many significant bits the shifted rounded key fits in 32 bits. */
@@ -52,26 +53,12 @@ static uint32_t es_tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1
 /* ------------------------------------------------------------------------------------ */
 /* sort_edges                                                                             */
 
-#if SUBD_FIXED
-/* Bit length of v (0 for 0), by halving instead of a loop over 64 bits. */
-static uint32_t es_bitlen64(uint64_t v)
-{
-    uint32_t n = 0;
-    if (v >> 32) { n += 32u; v >>= 32; }
-    if (v >> 16) { n += 16u; v >>= 16; }
-    if (v >> 8) { n += 8u; v >>= 8; }
-    if (v >> 4) { n += 4u; v >>= 4; }
-    if (v >> 2) { n += 2u; v >>= 2; }
-    if (v >> 1) { n += 1u; v >>= 1; }
-    return n + (uint32_t)v;
-}
-#endif
 
 /* Squared length of the edge from corner p to corner q as a monotonic key: (bit length of
  * the value in units of the arithmetic) << 52 | the 52 bits below its leading one. */
 static uint64_t es_len_key(const subd_real *p, const subd_real *q)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: the exact 66-bit squared length of Q16.16 differences; float32 keys the float sum's bit pattern */
     uint64_t lo = 0, hi = 0, top;
     uint32_t i, n = 0;
     for (i = 0; i < 3u; i++) {
@@ -84,7 +71,7 @@ static uint64_t es_len_key(const subd_real *p, const subd_real *q)
     if (hi == 0 && lo == 0) return 0;
     /* bit length n of hi:lo (hi <= 2) */
     if (hi) n = 64u + (hi > 1u ? 2u : 1u);
-    else n = es_bitlen64(lo);
+    else n = subd_bitlen64(lo);
     if (n <= ES_KEY_FRAC + 1u) {
         top = lo << (ES_KEY_FRAC + 1u - n);
     } else {

@@ -11,6 +11,8 @@
  * boundary, so one walk from it visits v's whole fan in order.
  */
 #include "mesh_internal.h"
+#include "layout.h"
+#include "entry.h"
 
 #define TAG_VISITED 0x80u /* temporary edge_tag bit while walking boundary loops */
 
@@ -62,48 +64,52 @@ void subd_mesh_move_down(subd_mesh *m, uint8_t *dst, uint32_t bytes)
 #undef MOVE
 }
 
-/* The one layout: with a == NULL it only counts bytes; otherwise it allocates the same
- * arrays in the same order, so plan and allocation cannot drift apart. */
+/* The one layout of the mesh arrays (layout.h): counts with a == NULL, carves otherwise;
+ * *bytes is the arrays plus the builder's scratch, UINT32_MAX when too big. */
 static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32_t *bytes)
 {
-    struct { void **slot; uint32_t count, elem; } arr[11];
-    uint32_t i, n = 0, total = 0;
-    void *dummy[11];
-#define ARR(ptr, cnt, sz) do { arr[n].slot = a ? (void **)(void *)&(ptr) : &dummy[n]; \
-                               arr[n].count = (cnt); arr[n].elem = (sz); n++; } while (0)
-    ARR(m->pos, c->nv, 3u * (uint32_t)sizeof(subd_real));
-    ARR(m->face_start, c->nf + 1u, 4u);
-    ARR(m->corner_vert, c->nc, 4u);
-    ARR(m->corner_face, c->nc, 4u);
-    ARR(m->twin, c->nc, 4u);
-    ARR(m->vert_out, c->nv, 4u);
-    ARR(m->vert_tag, c->nv, 1u);
-    ARR(m->edge_tag, c->nc, 1u);
-    ARR(m->line_start, c->nl + 1u, 4u);
-    ARR(m->line_vert, c->nlv, 4u);
-#undef ARR
-    for (i = 0; i < n; i++) subd_size_add(&total, arr[i].count, arr[i].elem);
-    {
-        uint32_t scratch = subd_mesh_scratch_bytes(c);
-        total = (scratch == UINT32_MAX || total > UINT32_MAX - scratch) ? UINT32_MAX : total + scratch;
-    }
+    subd_layout l;
+    subd_mesh tmp;
+    subd_mesh *p = m ? m : &tmp;
+    uint32_t total;
+    int st;
+    subd_layout_begin(&l, a);
+    p->pos = subd_layout_take(&l, c->nv, 3u * (uint32_t)sizeof(subd_real));
+    p->face_start = subd_layout_take(&l, c->nf + 1u, 4u);
+    p->corner_vert = subd_layout_take(&l, c->nc, 4u);
+    p->corner_face = subd_layout_take(&l, c->nc, 4u);
+    p->twin = subd_layout_take(&l, c->nc, 4u);
+    p->vert_out = subd_layout_take(&l, c->nv, 4u);
+    p->vert_tag = subd_layout_take(&l, c->nv, 1u);
+    p->edge_tag = subd_layout_take(&l, c->nc, 1u);
+    p->line_start = subd_layout_take(&l, c->nl + 1u, 4u);
+    p->line_vert = subd_layout_take(&l, c->nlv, 4u);
+    st = subd_layout_end(&l, &total);
+    subd_bytes_add(&total, subd_mesh_scratch_bytes(c));
     if (c->nv == UINT32_MAX || c->nf == UINT32_MAX || c->nl == UINT32_MAX) total = UINT32_MAX;
     *bytes = total;
     if (!a) return SUBD_OK;
-    if (total == UINT32_MAX) return SUBD_ERR_TOO_BIG;
-    for (i = 0; i < n; i++) {
-        void *p = subd_arena_alloc(a, arr[i].count * arr[i].elem);
-        if (!p) return SUBD_ERR_NOMEM;
-        *arr[i].slot = p;
-    }
-    return SUBD_OK;
+    return st;
+}
+
+/* The builder's scratch (layout.h): per-vertex bucket starts and the bucketed corners. */
+static int scratch_layout(subd_arena *a, uint32_t nv, uint32_t nc, uint32_t **vstart, uint32_t **vcorner,
+                          uint32_t *bytes)
+{
+    subd_layout l;
+    uint32_t *vs, *vc;
+    subd_layout_begin(&l, a);
+    vs = subd_layout_take(&l, nv + 1u, 4u);
+    vc = subd_layout_take(&l, nc, 4u);
+    if (vstart) *vstart = vs;
+    if (vcorner) *vcorner = vc;
+    return subd_layout_end(&l, bytes);
 }
 
 uint32_t subd_mesh_scratch_bytes(const mesh_counts *c)
 {
-    uint32_t b = 0; /* per-vertex bucket starts and the bucketed corners */
-    subd_size_add(&b, c->nv + 1u, 4u);
-    subd_size_add(&b, c->nc, 4u);
+    uint32_t b;
+    scratch_layout(0, c->nv, c->nc, 0, 0, &b);
     return b;
 }
 
@@ -125,7 +131,7 @@ int subd_mesh_alloc_arrays(subd_arena *a, const mesh_counts *c, subd_mesh *m)
     uint32_t bytes;
     int st;
     /* The whole plan (scratch included) must fit before anything is handed out. */
-    mesh_layout(0, c, m, &bytes);
+    mesh_layout(0, c, 0, &bytes);
     if (bytes == UINT32_MAX) return SUBD_ERR_TOO_BIG;
     if (bytes > subd_arena_free_bytes(a)) return SUBD_ERR_NOMEM;
     st = mesh_layout(a, c, m, &bytes);
@@ -289,9 +295,7 @@ int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
     for (f = 0; f < m->num_faces; f++)
         for (c = m->face_start[f]; c < m->face_start[f + 1u]; c++) m->corner_face[c] = f;
 
-    vstart = (uint32_t *)subd_arena_alloc(a, (m->num_verts + 1u) * 4u);
-    vcorner = (uint32_t *)subd_arena_alloc(a, m->num_corners * 4u);
-    if (!vstart || !vcorner) {
+    if (scratch_layout(a, m->num_verts, m->num_corners, &vstart, &vcorner, 0) != SUBD_OK) {
         subd_arena_rewind(a, mark);
         return subd_fail(d, SUBD_ERR_NOMEM);
     }
@@ -357,24 +361,18 @@ int subd_mesh_plan(const subd_face_list *fl, uint32_t *bytes)
 
 int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, arena, diag);
     subd_mesh m;
     mesh_counts c;
-    uint32_t mark, i, f, k;
+    uint32_t i, f;
     int st;
 
-    subd_diag_clear(d);
-    if (!arena || !out || !face_list_ok(fl)) return subd_fail(d, SUBD_ERR_PARAM);
-    if (fl->num_verts == 0) return subd_fail(d, SUBD_ERR_EMPTY);
-    if ((st = face_list_counts(fl, &c, d)) != SUBD_OK) return st;
+    if (!arena || !out || !face_list_ok(fl)) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if (fl->num_verts == 0) return subd_entry_fail(&e, SUBD_ERR_EMPTY);
+    if ((st = face_list_counts(fl, &c, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     d->bytes_needed = subd_mesh_counts_bytes(&c);
-    mark = subd_arena_mark(arena);
-    st = subd_mesh_alloc_arrays(arena, &c, &m);
-    if (st != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        return subd_fail(d, st);
-    }
+    if ((st = subd_mesh_alloc_arrays(arena, &c, &m)) != SUBD_OK) return subd_entry_fail(&e, st);
     for (i = 0; i < 3u * c.nv; i++) m.pos[i] = fl->pos[i];
     m.face_start[0] = 0;
     for (f = 0; f < c.nf; f++) m.face_start[f + 1u] = m.face_start[f] + (fl->face_size ? fl->face_size[f] : 3u);
@@ -382,15 +380,9 @@ int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out,
     m.line_start[0] = 0;
     for (f = 0; f < c.nl; f++) m.line_start[f + 1u] = m.line_start[f] + fl->line_size[f];
     for (i = 0; i < c.nlv; i++) m.line_vert[i] = fl->line_index[i];
-    st = subd_mesh_finish(arena, &m, d);
-    if (st != SUBD_OK) {
-        subd_arena_rewind(arena, mark);
-        return st;
-    }
-    d->bytes_needed = 0;
-    (void)k;
+    if ((st = subd_mesh_finish(arena, &m, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     *out = m;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }
 
 uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max)

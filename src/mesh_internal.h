@@ -16,8 +16,8 @@ uint32_t subd_mesh_counts_bytes(const mesh_counts *c);
 uint32_t subd_mesh_scratch_bytes(const mesh_counts *c);
 uint32_t subd_mesh_arrays_bytes(const mesh_counts *c);
 
-/* Allocates the mesh arrays (not the scratch) in the order subd_mesh_counts_bytes counts them and
- * sets every pointer and count of *m. Returns SUBD_OK or SUBD_ERR_NOMEM; on failure the
+/* Allocates the mesh arrays (not the scratch) by the layout function (layout.h) that
+ * subd_mesh_counts_bytes counts with, and sets every pointer and count of *m. Returns SUBD_OK or SUBD_ERR_NOMEM; on failure the
  * arena may have advanced (callers rewind to their own mark). */
 int subd_mesh_alloc_arrays(subd_arena *a, const mesh_counts *c, subd_mesh *m);
 
@@ -41,7 +41,8 @@ int subd_reader_plan(const subd_reader *r, const char *buf, uint32_t len, uint32
 int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint32_t len, subd_mesh *out,
                      subd_diag *diag);
 
-/* Sets diag fields for an error and returns the status (for one-line error returns). */
+/* Sets diag fields for an error and returns the status (for one-line error returns inside
+ * a call). Public entry points end through subd_entry_fail (entry.h), which also rewinds. */
 int subd_fail(subd_diag *d, int status);
 
 /* SUBD_OK when every face of m is a triangle; else SUBD_ERR_FACE_SIZE with d->face (when

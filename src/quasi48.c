@@ -47,6 +47,9 @@
 #include "mesh_internal.h"
 #include "subd_quasi48.h"
 #include "edge_sort.h"
+#include "real_avg.h"
+#include "layout.h"
+#include "entry.h"
 
 typedef struct q48_layout {
     mesh_counts out;  /* bound for the last step's output                                */
@@ -61,12 +64,6 @@ typedef struct q48_work {
     uint8_t *vkeep;     /* per output vertex: caller tags, then "pinned" during smoothing */
 } q48_work;
 
-static void add_bytes(uint32_t *total, uint32_t b)
-{
-    if (b == UINT32_MAX || *total > UINT32_MAX - b) *total = UINT32_MAX;
-    else *total += b;
-}
-
 /* Bytes from the start of mesh buffer c when `above` bytes are allocated after it.
  * subd_mesh_alloc_arrays hands out a buffer only when the builder's scratch would fit above
  * it as well; quasi 4-8 never runs the builder, but the plan must leave that room at each
@@ -74,7 +71,7 @@ static void add_bytes(uint32_t *total, uint32_t b)
 static uint32_t buffer_then(const mesh_counts *c, uint32_t above)
 {
     uint32_t b = subd_mesh_arrays_bytes(c), s = subd_mesh_scratch_bytes(c);
-    add_bytes(&b, above > s ? above : s);
+    subd_bytes_add(&b, subd_bytes_max(above, s));
     return b;
 }
 
@@ -91,37 +88,25 @@ static int counts_for(const subd_mesh *in, uint32_t s, mesh_counts *c)
     return SUBD_OK;
 }
 
-/* The one layout: plan and run both call it, so they cannot drift apart. With w == NULL
- * it only counts; otherwise it allocates the per-step arrays in the same order. */
+/* The one layout of the per-step arrays (layout.h): plan and run both call it, so they
+ * cannot drift apart. With a == NULL it only counts (w may be NULL). */
 static int q48_layout_work(subd_arena *a, const q48_layout *L, q48_work *w, uint32_t *bytes)
 {
-    struct { void **slot; uint32_t count, elem; } arr[10];
-    void *dummy[10];
-    uint32_t i, n = 0, total = 0;
-#define ARR(ptr, cnt, sz) do { arr[n].slot = w ? (void **)(void *)&(ptr) : &dummy[n]; \
-                               arr[n].count = (cnt); arr[n].elem = (sz); n++; } while (0)
+    subd_layout l;
     q48_work tmp;
     q48_work *p = w ? w : &tmp;
-    ARR(p->es.key[0], L->cs, 8u);
-    ARR(p->es.key[1], L->cs, 8u);
-    ARR(p->es.edge_of, L->cs, 4u);
-    ARR(p->es.edge_he, L->cs, 4u);
-    ARR(p->es.ord[0], L->cs, 4u);
-    ARR(p->es.ord[1], L->cs, 4u);
-    ARR(p->split, L->cs, 4u);
-    ARR(p->es.mark, L->cs, 1u);
-    ARR(p->es.cnt, 256u, 4u);
-    ARR(p->vkeep, L->out.nv, 1u);
-#undef ARR
-    for (i = 0; i < n; i++) subd_size_add(&total, arr[i].count, arr[i].elem);
-    *bytes = total;
-    if (!a) return SUBD_OK;
-    for (i = 0; i < n; i++) {
-        void *q = subd_arena_alloc(a, arr[i].count * arr[i].elem);
-        if (!q) return SUBD_ERR_NOMEM;
-        *arr[i].slot = q;
-    }
-    return SUBD_OK;
+    subd_layout_begin(&l, a);
+    p->es.key[0] = subd_layout_take(&l, L->cs, 8u);
+    p->es.key[1] = subd_layout_take(&l, L->cs, 8u);
+    p->es.edge_of = subd_layout_take(&l, L->cs, 4u);
+    p->es.edge_he = subd_layout_take(&l, L->cs, 4u);
+    p->es.ord[0] = subd_layout_take(&l, L->cs, 4u);
+    p->es.ord[1] = subd_layout_take(&l, L->cs, 4u);
+    p->split = subd_layout_take(&l, L->cs, 4u);
+    p->es.mark = subd_layout_take(&l, L->cs, 1u);
+    p->es.cnt = subd_layout_take(&l, 256u, 4u);
+    p->vkeep = subd_layout_take(&l, L->out.nv, 1u);
+    return subd_layout_end(&l, bytes);
 }
 
 static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
@@ -164,53 +149,6 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
     if (st == SUBD_OK) *bytes = L.bytes;
     return st;
 }
-
-/* ------------------------------------------------------------------------------------ */
-/* Arithmetic helpers: averages with exact weights in both arithmetics.                   */
-
-#if SUBD_FIXED
-typedef int64_t q48_sum;
-static q48_sum q48_sum_add(q48_sum s, subd_real v) { return s + v; }
-/* n / k rounded to nearest, ties away from zero (symmetric under negation). */
-static subd_real q48_div_round(int64_t n, int64_t k)
-{
-    int64_t q = (n >= 0) ? (n + k / 2) / k : -((-n + k / 2) / k);
-    return (subd_real)q; /* a convex combination of in-range values is in range */
-}
-static subd_real q48_avg(q48_sum s, uint32_t k, uint32_t *ovf)
-{
-    (void)ovf;
-    return q48_div_round(s, (int64_t)k);
-}
-static subd_real q48_mid(subd_real a, subd_real b, uint32_t *ovf)
-{
-    (void)ovf;
-    return q48_div_round((int64_t)a + b, 2);
-}
-/* 1/2 p + 1/2 (s / k) = (k p + s) / (2k), one rounding. */
-static subd_real q48_blend(subd_real p, q48_sum s, uint32_t k, uint32_t *ovf)
-{
-    (void)ovf;
-    return q48_div_round((int64_t)k * p + s, 2 * (int64_t)k);
-}
-#else
-typedef float q48_sum;
-static q48_sum q48_sum_add(q48_sum s, subd_real v) { return s + v; }
-static subd_real q48_avg(q48_sum s, uint32_t k, uint32_t *ovf)
-{
-    return subd_chk(s / (float)k, ovf);
-}
-static subd_real q48_mid(subd_real a, subd_real b, uint32_t *ovf)
-{
-    subd_real ha = 0.5f * a, hb = 0.5f * b; /* no overflow of a + b near FLT_MAX */
-    return subd_chk(ha + hb, ovf);
-}
-static subd_real q48_blend(subd_real p, q48_sum s, uint32_t k, uint32_t *ovf)
-{
-    subd_real avg = s / (float)k, hp = 0.5f * p, ha = 0.5f * avg;
-    return subd_chk(hp + ha, ovf);
-}
-#endif
 
 /* ------------------------------------------------------------------------------------ */
 /* Navigation in the child meshes, whose face f is corners 3f..3f+2 (q48_split_faces writes
@@ -384,7 +322,7 @@ static void q48_new_position(const subd_mesh *m, uint32_t h, int smooth, subd_re
 {
     const subd_real *p = m->pos + 3u * subd_he_origin(m, h), *q = m->pos + 3u * subd_he_dest(m, h);
     uint32_t t = m->twin[h], k;
-    for (k = 0; k < 3u; k++) out[k] = q48_mid(p[k], q[k], ovf);
+    for (k = 0; k < 3u; k++) out[k] = subd_mid(p[k], q[k], ovf);
     if (!smooth || t == SUBD_NONE || ((m->edge_tag[h] | m->edge_tag[t]) & SUBD_ETAG_CREASE)) return;
     if (m->corner_face[t] < m->corner_face[h]) {
         uint32_t x = h;
@@ -398,12 +336,12 @@ static void q48_new_position(const subd_mesh *m, uint32_t h, int smooth, subd_re
         r[2] = m->pos + 3u * m->corner_vert[subd_he_prev(m, t)];
         r[3] = m->pos + 3u * subd_he_dest(m, h);
         for (k = 0; k < 3u; k++) {
-            q48_sum s = 0;
-            s = q48_sum_add(s, r[0][k]);
-            s = q48_sum_add(s, r[1][k]);
-            s = q48_sum_add(s, r[2][k]);
-            s = q48_sum_add(s, r[3][k]);
-            out[k] = q48_avg(s, 4u, ovf);
+            subd_sum s = 0;
+            s = subd_sum_add(s, r[0][k]);
+            s = subd_sum_add(s, r[1][k]);
+            s = subd_sum_add(s, r[2][k]);
+            s = subd_sum_add(s, r[3][k]);
+            out[k] = subd_avg(s, 4u, ovf);
         }
     }
 }
@@ -463,7 +401,7 @@ static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, 
 static void q48_smooth_old(subd_mesh *o, uint32_t v, uint32_t nv_old, uint32_t *ovf)
 {
     uint32_t first = o->vert_out[v], n = 0, last = SUBD_NONE, steps = 0, h, k;
-    q48_sum s[3] = {0, 0, 0};
+    subd_sum s[3] = {0, 0, 0};
     if (o->twin[first] == SUBD_NONE) {
         uint32_t ends[2], j;
         for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++)
@@ -472,19 +410,19 @@ static void q48_smooth_old(subd_mesh *o, uint32_t v, uint32_t nv_old, uint32_t *
         ends[1] = o->corner_vert[tri_prev(last)];
         for (j = 0; j < 2u; j++) {
             if (ends[j] < nv_old) continue;
-            for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], o->pos[3u * ends[j] + k]);
+            for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * ends[j] + k]);
             n++;
         }
     } else {
         for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++) {
             uint32_t u = tri_dest(o, h);
             if (u < nv_old) continue;
-            for (k = 0; k < 3u; k++) s[k] = q48_sum_add(s[k], o->pos[3u * u + k]);
+            for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * u + k]);
             n++;
         }
     }
     if (n == 0) return;
-    for (k = 0; k < 3u; k++) o->pos[3u * v + k] = q48_blend(o->pos[3u * v + k], s[k], n, ovf);
+    for (k = 0; k < 3u; k++) o->pos[3u * v + k] = subd_blend(o->pos[3u * v + k], s[k], n, ovf);
 }
 
 static int q48_smooth(subd_mesh *o, uint32_t nv_old, subd_q48_boundary bmode, const q48_work *w, subd_diag *d)
@@ -521,29 +459,27 @@ static int q48_smooth(subd_mesh *o, uint32_t nv_old, subd_q48_boundary bmode, co
 
 int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     q48_layout L;
     q48_work w;
     subd_mesh buf[2];
     const subd_mesh *src = in;
-    uint32_t mark, keep, s, wb, bits;
+    uint32_t keep, s, wb, bits;
     int st, smooth;
 
-    subd_diag_clear(d);
-    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = q48_plan(in, o, &L, d)) != SUBD_OK) return st;
+    if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = q48_plan(in, o, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     d->bytes_needed = L.bytes;
-    if (L.bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
+    if (L.bytes > subd_arena_free_bytes(a)) return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     bits = o->len_bits ? o->len_bits : SUBD_Q48_LEN_BITS_DEFAULT;
     smooth = !(o->flags & SUBD_Q48_NO_SMOOTH);
 
-    mark = subd_arena_mark(a);
     st = subd_mesh_alloc_arrays(a, &L.out, &buf[0]);
     keep = subd_arena_mark(a);
     if (st == SUBD_OK && o->steps >= 2u) st = subd_mesh_alloc_arrays(a, &L.mid, &buf[1]);
     if (st == SUBD_OK) st = q48_layout_work(a, &L, &w, &wb);
-    if (st != SUBD_OK) goto fail;
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
 
     for (s = 1; s <= o->steps; s++) {
         /* the last step writes buf[0]; earlier steps alternate, never onto their input */
@@ -551,14 +487,10 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
         const mesh_counts *cap = ((o->steps - s) & 1u) ? &L.mid : &L.out;
         st = q48_refine(src, dst, cap, bits, smooth, &w, d);
         if (st == SUBD_OK && smooth) st = q48_smooth(dst, src->num_verts, o->boundary, &w, d);
-        if (st != SUBD_OK) goto fail;
+        if (st != SUBD_OK) return subd_entry_fail(&e, st);
         src = dst;
     }
     subd_arena_rewind(a, keep);
-    d->bytes_needed = 0;
     *out = buf[0];
-    return SUBD_OK;
-fail:
-    subd_arena_rewind(a, mark);
-    return subd_fail(d, st);
+    return subd_entry_ok(&e);
 }

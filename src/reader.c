@@ -4,6 +4,7 @@
  * peak at one mesh; a validation error names an element, which the format maps back to its
  * line by rescanning, so no per-element line table is ever stored. */
 #include "mesh_internal.h"
+#include "entry.h"
 
 static int reader_count(const subd_reader *r, const char *buf, uint32_t len, mesh_counts *c, subd_diag *d)
 {
@@ -30,21 +31,17 @@ int subd_reader_plan(const subd_reader *r, const char *buf, uint32_t len, uint32
 int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint32_t len, subd_mesh *out,
                      subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     mesh_counts c, counted;
     subd_mesh m;
-    uint32_t mark;
     int st;
 
-    subd_diag_clear(d);
-    if (!a || !out || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = reader_count(r, buf, len, &c, d)) != SUBD_OK) return st;
-    mark = subd_arena_mark(a);
+    if (!a || !out || (!buf && len)) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = reader_count(r, buf, len, &c, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if ((st = subd_mesh_alloc_arrays(a, &c, &m)) != SUBD_OK) {
-        subd_arena_rewind(a, mark);
         d->bytes_needed = subd_mesh_counts_bytes(&c);
-        return subd_fail(d, st);
+        return subd_entry_fail(&e, st);
     }
     m.face_start[0] = 0;
     m.line_start[0] = 0;
@@ -54,10 +51,7 @@ int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint3
         st = subd_mesh_finish(a, &m, d);
         if (st != SUBD_OK) d->line = r->line_of(buf, len, &counted, d);
     }
-    if (st != SUBD_OK) {
-        subd_arena_rewind(a, mark);
-        return st;
-    }
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
     *out = m;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

@@ -69,6 +69,9 @@
  */
 #include "mesh_internal.h"
 #include "subd_semireg48.h"
+#include "layout.h"
+#include "entry.h"
+#include "vec3w.h"
 
 #define EX_SPLIT 0x1u
 #define EX_WANT 0x2u
@@ -77,7 +80,7 @@
 /* A node of the chordal-deviation walk: the triangle, its level and the linear
  * interpolant of the walk's root at its three corners (apex, b0, b1). The arena reserves
  * EX_CNODE_BYTES per node in both arithmetics so the plan does not depend on the build. */
-#if SUBD_FIXED
+#if SUBD_FIXED /* the representation differs: Q16.16 keeps the interpolant in Q32.32 */
 typedef int64_t ex_lin; /* Q32.32 */
 #else
 typedef float ex_lin;
@@ -113,14 +116,6 @@ typedef struct ex_ctx {
     subd_real lo[3], hi[3];
     subd_real radius;
 } ex_ctx;
-
-static void add_bytes(uint32_t *total, uint32_t b)
-{
-    if (b == UINT32_MAX || *total > UINT32_MAX - b) *total = UINT32_MAX;
-    else *total += b;
-}
-
-static uint32_t max_u32(uint32_t a, uint32_t b) { return a > b ? a : b; }
 
 /* ------------------------------------------------------------------------------------ */
 /* Parameters and the hierarchy's shape.                                                  */
@@ -211,29 +206,36 @@ static int ex_check_hierarchy(const subd_sr48 *h, uint32_t max)
     return SUBD_OK;
 }
 
-/* The one layout. With a == NULL it only counts; otherwise it allocates phase 1. */
+/* Phase 2's renumbering map, one entry per vertex of levels <= max (layout.h). */
+static int ex_layout_vmap(subd_arena *a, const ex_layout *L, uint32_t **vmap, uint32_t *bytes)
+{
+    subd_layout l;
+    uint32_t *v;
+    subd_layout_begin(&l, a);
+    v = subd_layout_take(&l, L->nvert, 4u);
+    if (vmap) *vmap = v;
+    return subd_layout_end(&l, bytes);
+}
+
+/* The one layout of phase 1 (layout.h). With a == NULL it only counts (c may be NULL). */
 static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_adapt *ad)
 {
-    uint32_t b = 0, mk = 0;
-    uint32_t nwork = L->uniform ? L->nvert : max_u32(L->ntri, L->nvert);
+    uint32_t nwork = (L->uniform || L->nvert > L->ntri) ? L->nvert : L->ntri;
     uint32_t nf = L->uniform ? 0u : L->max + 1u;
     uint32_t ncs = (!L->uniform && ad->mode == SUBD_ADAPT_CHORD) ? L->max + 1u : 0u;
-    subd_size_add(&mk, L->uniform ? 0u : L->ntri, 1u);
-    add_bytes(&b, mk);
-    subd_size_add(&b, nwork, 4u);
-    subd_size_add(&b, nf, 4u);
-    subd_size_add(&b, ncs, EX_CNODE_BYTES);
-    L->marks = mk;
-    L->phase1 = b;
-    L->vmap = 0;
-    subd_size_add(&L->vmap, L->nvert, 4u);
-    if (!a) return b == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
-    c->mark = (uint8_t *)subd_arena_alloc(a, L->uniform ? 0u : L->ntri);
-    c->work = (uint32_t *)subd_arena_alloc(a, nwork * 4u);
-    c->fstack = (uint32_t *)subd_arena_alloc(a, nf * 4u);
-    c->cstack = (ex_cnode *)subd_arena_alloc(a, ncs * EX_CNODE_BYTES);
-    if (!c->mark || !c->work || !c->fstack || !c->cstack) return SUBD_ERR_NOMEM;
-    return SUBD_OK;
+    subd_layout l;
+    ex_ctx tmp;
+    ex_ctx *p = c ? c : &tmp;
+    int st;
+    subd_layout_begin(&l, a);
+    p->mark = subd_layout_take(&l, L->uniform ? 0u : L->ntri, 1u);
+    L->marks = l.bytes;
+    p->work = subd_layout_take(&l, nwork, 4u);
+    p->fstack = subd_layout_take(&l, nf, 4u);
+    p->cstack = subd_layout_take(&l, ncs, EX_CNODE_BYTES);
+    st = subd_layout_end(&l, &L->phase1);
+    ex_layout_vmap(0, L, 0, &L->vmap);
+    return st;
 }
 
 /* Bytes needed once the output counts are known (see the file comment). */
@@ -247,9 +249,9 @@ static uint32_t ex_need(const ex_layout *L, uint32_t nv, uint32_t nf)
     if (arrays == UINT32_MAX) return UINT32_MAX;
     scratch = subd_mesh_scratch_bytes(&mc);
     arrays -= scratch;
-    add_bytes(&b, arrays);
-    add_bytes(&b, max_u32(scratch, L->vmap));
-    return max_u32(b, L->phase1);
+    subd_bytes_add(&b, arrays);
+    subd_bytes_add(&b, subd_bytes_max(scratch, L->vmap));
+    return subd_bytes_max(b, L->phase1);
 }
 
 static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint32_t *bound)
@@ -298,25 +300,10 @@ static int ex_ok(ex_ctx *c, uint32_t t, uint32_t k)
 
 static const subd_real *ex_pos(const ex_ctx *c, uint32_t v) { return c->h->pos + 3u * v; }
 
-#if SUBD_FIXED
-typedef int64_t ex_num;
-#else
-typedef float ex_num;
-#endif
+/* Distances use the wide 3-vectors of vec3w.h (ex_num: subd_wide). */
+typedef subd_wide ex_num;
 
-static ex_num ex_dot(const ex_num *a, const ex_num *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static void ex_cross(const ex_num *a, const ex_num *b, ex_num *r)
-{
-    r[0] = a[1] * b[2] - a[2] * b[1];
-    r[1] = a[2] * b[0] - a[0] * b[2];
-    r[2] = a[0] * b[1] - a[1] * b[0];
-}
-static void ex_sub3(const ex_num *a, const ex_num *b, ex_num *r)
-{
-    r[0] = a[0] - b[0]; r[1] = a[1] - b[1]; r[2] = a[2] - b[2];
-}
-
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: integer square roots in the scaled frame, unscaled by 2^s */
 /* Distances in the scaled frame come back as 16 * d (4 fraction bits) and are turned into
  * Q16.16 by the frame's power of two, saturating. */
 static subd_real ex_unscale(uint64_t d16, int32_t s)
@@ -333,40 +320,40 @@ static subd_real ex_unscale(uint64_t d16, int32_t s)
 }
 static subd_real ex_len(const ex_num *q, int32_t s)
 {
-    return ex_unscale(subd_isqrt64((uint64_t)ex_dot(q, q) << 8), s);
+    return ex_unscale(subd_isqrt64((uint64_t)subd_w3_dot(q, q) << 8), s);
 }
 /* Distance from q (relative to a point of the line) to the line along e: |q x e| / |e|. */
 static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
 {
     ex_num x[3];
     uint64_t num, den, d2;
-    ex_cross(q, e, x);
-    num = (uint64_t)ex_dot(x, x);
-    den = (uint64_t)ex_dot(e, e);
+    subd_w3_cross(q, e, x);
+    num = (uint64_t)subd_w3_dot(x, x);
+    den = (uint64_t)subd_w3_dot(e, e);
     if (den == 0u) return ex_len(q, s);
     d2 = ((num / den) << 8) + ((num % den) << 8) / den;
     return ex_unscale(subd_isqrt64(d2), s);
 }
 static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
 {
-    ex_num nq = ex_dot(n, q);
-    uint32_t nl = subd_isqrt64((uint64_t)ex_dot(n, n));
+    ex_num nq = subd_w3_dot(n, q);
+    uint32_t nl = subd_isqrt64((uint64_t)subd_w3_dot(n, n));
     if (nl == 0u) return ex_len(q, s);
     if (nq < 0) nq = -nq;
     return ex_unscale(((uint64_t)nq << 4) / nl, s);
 }
 #else
-static subd_real ex_len(const ex_num *q, int32_t s) { (void)s; return subd_sqrt(ex_dot(q, q)); }
+static subd_real ex_len(const ex_num *q, int32_t s) { (void)s; return subd_sqrt(subd_w3_dot(q, q)); }
 static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
 {
-    ex_num x[3], den = ex_dot(e, e);
+    ex_num x[3], den = subd_w3_dot(e, e);
     if (den == 0.0f) return ex_len(q, s);
-    ex_cross(q, e, x);
-    return subd_sqrt(ex_dot(x, x) / den);
+    subd_w3_cross(q, e, x);
+    return subd_sqrt(subd_w3_dot(x, x) / den);
 }
 static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
 {
-    ex_num nq = ex_dot(n, q), nl = subd_sqrt(ex_dot(n, n));
+    ex_num nq = subd_w3_dot(n, q), nl = subd_sqrt(subd_w3_dot(n, n));
     if (nl == 0.0f) return ex_len(q, s);
     if (nq < 0.0f) nq = -nq;
     return nq / nl;
@@ -381,57 +368,49 @@ static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const
     ex_num ab[3], ac[3], ap[3], bp[3], cp[3], bc[3], n[3];
     ex_num d1, d2, d3, d4, d5, d6, va, vb, vc;
     int32_t s = 0;
-    uint32_t i;
-#if SUBD_FIXED
+    subd_w3_diff(b, a, ab);
+    subd_w3_diff(c, a, ac);
+    subd_w3_diff(p, a, ap);
+#if SUBD_FIXED /* the algorithm differs: Q16.16 works in a frame scaled to 13 bits */
     /* Scale by 2^-s so every component is below 2^13: dot products stay below 2^29 and
-     * their products below 2^59 (int64). */
-    uint64_t mx = 0;
-    uint32_t bits = 0;
-    for (i = 0; i < 3u; i++) {
-        int64_t e[3];
-        uint32_t j;
-        e[0] = (int64_t)b[i] - a[i]; e[1] = (int64_t)c[i] - a[i]; e[2] = (int64_t)p[i] - a[i];
-        for (j = 0; j < 3u; j++) {
-            uint64_t m = (uint64_t)(e[j] < 0 ? -e[j] : e[j]);
-            if (m > mx) mx = m;
+     * their products below 2^59 (int64). Shrinking floors (>>), unlike subd_w3_shift's
+     * truncation: the distances' last bits, and so the adaptive cuts, depend on it. */
+    {
+        uint64_t mx = subd_w3_maxabs(ab);
+        uint32_t i;
+        if (subd_w3_maxabs(ac) > mx) mx = subd_w3_maxabs(ac);
+        if (subd_w3_maxabs(ap) > mx) mx = subd_w3_maxabs(ap);
+        if (mx == 0u) return 0;
+        s = (int32_t)subd_bitlen64(mx) - 13;
+        for (i = 0; i < 3u; i++) {
+            if (s > 0) {
+                ab[i] >>= s; ac[i] >>= s; ap[i] >>= s;
+            } else {
+                int64_t f = (int64_t)1 << (-s);
+                ab[i] *= f; ac[i] *= f; ap[i] *= f;
+            }
         }
-    }
-    if (mx == 0u) return 0;
-    while ((mx >> bits) != 0u) bits++;
-    s = (int32_t)bits - 13;
-    for (i = 0; i < 3u; i++) {
-        int64_t e0 = (int64_t)b[i] - a[i], e1 = (int64_t)c[i] - a[i], e2 = (int64_t)p[i] - a[i];
-        if (s > 0) {
-            ab[i] = e0 >> s; ac[i] = e1 >> s; ap[i] = e2 >> s;
-        } else {
-            int64_t f = (int64_t)1 << (-s);
-            ab[i] = e0 * f; ac[i] = e1 * f; ap[i] = e2 * f;
-        }
-    }
-#else
-    for (i = 0; i < 3u; i++) {
-        ab[i] = b[i] - a[i]; ac[i] = c[i] - a[i]; ap[i] = p[i] - a[i];
     }
 #endif
-    d1 = ex_dot(ab, ap);
-    d2 = ex_dot(ac, ap);
+    d1 = subd_w3_dot(ab, ap);
+    d2 = subd_w3_dot(ac, ap);
     if (d1 <= 0 && d2 <= 0) return ex_len(ap, s);
-    ex_sub3(ap, ab, bp);
-    d3 = ex_dot(ab, bp);
-    d4 = ex_dot(ac, bp);
+    subd_w3_sub(ap, ab, bp);
+    d3 = subd_w3_dot(ab, bp);
+    d4 = subd_w3_dot(ac, bp);
     if (d3 >= 0 && d4 <= d3) return ex_len(bp, s);
     vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) return ex_line_dist(ap, ab, s);
-    ex_sub3(ap, ac, cp);
-    d5 = ex_dot(ab, cp);
-    d6 = ex_dot(ac, cp);
+    subd_w3_sub(ap, ac, cp);
+    d5 = subd_w3_dot(ab, cp);
+    d6 = subd_w3_dot(ac, cp);
     if (d6 >= 0 && d5 <= d6) return ex_len(cp, s);
     vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) return ex_line_dist(ap, ac, s);
     va = d3 * d6 - d5 * d4;
-    ex_sub3(ac, ab, bc);
+    subd_w3_sub(ac, ab, bc);
     if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return ex_line_dist(bp, bc, s);
-    ex_cross(ab, ac, n);
+    subd_w3_cross(ab, ac, n);
     return ex_plane_dist(n, ap, s);
 }
 
@@ -439,11 +418,7 @@ static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const
 static int ex_point_wants(const ex_ctx *c, const uint32_t *v, uint32_t n)
 {
     subd_real d = ex_point_tri_dist(c->ad->point, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2]));
-#if SUBD_FIXED
-    return (int64_t)d < (int64_t)n * c->radius;
-#else
-    return d < (float)n * c->radius;
-#endif
+    return subd_wide_of(d) < subd_wide_mulu(n, subd_wide_of(c->radius));
 }
 
 /* (k + 1)(hi - lo) <= max (x - lo), x the largest coordinate on the axis. */
@@ -453,17 +428,13 @@ static int ex_ramp_wants(const ex_ctx *c, const uint32_t *v, uint32_t k)
     subd_real x = ex_pos(c, v[0])[ax], lo = c->lo[ax], hi = c->hi[ax];
     for (i = 1; i < 3u; i++)
         if (ex_pos(c, v[i])[ax] > x) x = ex_pos(c, v[i])[ax];
-#if SUBD_FIXED
-    return (int64_t)(k + 1u) * ((int64_t)hi - lo) <= (int64_t)c->max * ((int64_t)x - lo);
-#else
-    return (float)(k + 1u) * (hi - lo) <= (float)c->max * (x - lo);
-#endif
+    return subd_wide_mulu(k + 1u, subd_wide_diff(hi, lo)) <= subd_wide_mulu(c->max, subd_wide_diff(x, lo));
 }
 
 /* (q - point).normal >= 0. */
 static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_real *nrm)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: an exact sign of a sum of three 2^63 products */
     /* Each product is below 2^63 in magnitude; the sum of three is kept as hi * 2^32 + lo
      * with 0 <= lo < 2^32, so its sign is the sign of hi. */
     int64_t hi = 0, lo = 0;
@@ -481,7 +452,7 @@ static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_rea
 #endif
 }
 
-#if SUBD_FIXED
+#if SUBD_FIXED /* Q32.32 interpolant, see ex_lin */
 static ex_lin ex_lin_of(subd_real x) { return (int64_t)x * 65536; }
 static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) >> 1; }
 #else
@@ -492,7 +463,7 @@ static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) * 0.5f; }
 /* |P - L| > eps. */
 static int ex_beyond(const subd_real *p, const ex_lin *l, subd_real eps)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: Q32.32 differences, an early exit keeps the squares in 64 bits */
     uint64_t sum = 0, e = (uint64_t)eps;
     uint32_t i;
     for (i = 0; i < 3u; i++) {
@@ -731,7 +702,7 @@ static void ex_bbox(ex_ctx *c, uint32_t nvert)
  * last place so the level function stays defined. */
 static subd_real ex_default_radius(const ex_ctx *c)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* the algorithm differs: integer square root, pre-shift keeps the squares in 64 bits */
     uint64_t d[3], sum = 0, diag;
     uint32_t i, sh = 0;
     for (i = 0; i < 3u; i++) {
@@ -756,27 +727,26 @@ static subd_real ex_default_radius(const ex_ctx *c)
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     ex_layout L;
     ex_ctx c;
     mesh_counts mc;
     subd_mesh m;
     subd_adapt_report r;
     uint32_t next[SUBD_SR48_MAX_STEPS + 1u];
-    uint32_t bound, need, mark0, arr0, arr1, nv, nf, v, k, t, f, nvert;
+    uint32_t bound = 0, need, mark0, arr0, arr1, nv, nf, v, k, t, f, nvert;
     uint32_t *vmap, *used;
     int st;
 
-    subd_diag_clear(d);
-    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = ex_plan(h, ad, &L, &bound)) != SUBD_OK) return subd_fail(d, st);
+    if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = ex_plan(h, ad, &L, &bound)) != SUBD_OK) return subd_entry_fail(&e, st);
     /* UNIFORM emits all of level max: validate levels 0..max up front (the adaptive modes
      * validate what they visit, ex_ok) */
-    if (L.uniform && (st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_fail(d, st);
+    if (L.uniform && (st = ex_check_hierarchy(h, L.max)) != SUBD_OK) return subd_entry_fail(&e, st);
     if (L.phase1 > subd_arena_free_bytes(a)) {
         d->bytes_needed = bound;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
     c.h = h;
     c.ad = ad;
@@ -785,7 +755,7 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     c.forced = 0;
     c.bad = 0;
     c.radius = ad->radius;
-    mark0 = subd_arena_mark(a);
+    mark0 = e.mark;
     if ((st = ex_layout_phase1(a, &L, &c, ad)) != SUBD_OK) goto fail;
 
     /* phase 1: the cut and its counts */
@@ -815,9 +785,8 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     need = ex_need(&L, nv, nf);
     if (need == UINT32_MAX) { st = SUBD_ERR_TOO_BIG; goto fail; }
     if (need > a->size - mark0) {
-        subd_arena_rewind(a, mark0);
         d->bytes_needed = need;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
 
     /* phase 2: arrays above the marks, the renumbering map above the arrays */
@@ -826,8 +795,7 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     arr0 = subd_arena_mark(a);
     if ((st = subd_mesh_alloc_arrays(a, &mc, &m)) != SUBD_OK) goto fail;
     arr1 = subd_arena_mark(a);
-    vmap = (uint32_t *)subd_arena_alloc(a, nvert * 4u);
-    if (!vmap) { st = SUBD_ERR_NOMEM; goto fail; }
+    if ((st = ex_layout_vmap(a, &L, &vmap, 0)) != SUBD_OK) goto fail;
     /* faces by level, then index: a leaf goes after the earlier leaves of its level; the
      * corners get hierarchy vertex numbers first, renumbered once vmap is known */
     for (f = 0, k = 0; k < SUBD_SR48_MAX_STEPS + 1u; k++) {
@@ -863,16 +831,11 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
         subd_mesh_move_down(&m, a->base + mark0, arr1 - arr0); /* m.pos is at arr0 */
         subd_arena_rewind(a, mark0 + (arr1 - arr0));
     }
-    if ((st = subd_mesh_finish(a, &m, d)) != SUBD_OK) {
-        subd_arena_rewind(a, mark0);
-        return st;
-    }
+    if ((st = subd_mesh_finish(a, &m, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     *out = m;
     if (rep) *rep = r;
-    d->bytes_needed = 0;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 fail:
-    subd_arena_rewind(a, mark0);
     if (st == SUBD_ERR_NOMEM) d->bytes_needed = bound;
-    return subd_fail(d, st);
+    return subd_entry_fail(&e, st);
 }

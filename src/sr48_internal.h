@@ -14,15 +14,11 @@
 #define SUBD_SR48_INTERNAL_H
 #include "subd.h"
 #include "edge_sort.h"
+#include "layout.h"   /* subd_layout: the count-or-carve walks below */
+#include "real_avg.h" /* subd_sum, subd_avg, subd_mid: the rounding averages */
 
 #define SR48_DIAG 0xfffffffeu  /* sel[e]: the edge is a cluster diagonal                  */
 #define SR48_BFLAG 0x80000000u /* sums count: the vertex is on the boundary of the step   */
-
-#if SUBD_FIXED
-typedef int64_t sr48_sum; /* exact sums of Q16.16 values */
-#else
-typedef float sr48_sum;
-#endif
 
 /* Counts and bytes of one build, from the input, the options and the cluster count. */
 typedef struct sr48_layout {
@@ -50,17 +46,13 @@ typedef struct sr48_pre {
 
 /* Per-vertex smoothing sums. */
 typedef struct sr48_sums {
-    sr48_sum *s;   /* 3 per vertex                                                         */
+    subd_sum *s;   /* 3 per vertex                                                         */
     uint32_t *cnt; /* per vertex: number of summed neighbours | SR48_BFLAG                 */
 } sr48_sums;
 
-/* Adds count * elem bytes to *total (subd_size_add) and, when a != NULL, allocates them
- * into *slot. Returns SUBD_OK or SUBD_ERR_NOMEM. */
-int subd_sr48_take(subd_arena *a, void **slot, uint32_t count, uint32_t elem, uint32_t *total);
-
-/* Phase A (find_clusters) and phase B (hybrid subdivision) memory, in allocation order;
- * with a == NULL only *bytes is computed. Phase B allocates on top of phase A's first three
- * arrays (edge_of, edge_he, sel: *keep bytes), which stay. */
+/* Phase A (find_clusters) and phase B (hybrid subdivision) memory: layout functions
+ * (layout.h), so with a == NULL only *bytes is computed (w may be NULL). Phase B allocates
+ * on top of phase A's first three arrays (edge_of, edge_he, sel: *keep bytes), which stay. */
 int subd_sr48_pre_alloc_a(subd_arena *a, const subd_mesh *in, sr48_pre *w, uint32_t *bytes, uint32_t *keep);
 int subd_sr48_pre_alloc_b(subd_arena *a, const sr48_layout *L, sr48_pre *w, uint32_t *bytes);
 
@@ -82,10 +74,5 @@ int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase
  * created; pnb/pbase as above for level k-1, nold the number of older vertices. */
 int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase, uint32_t nold,
                      const sr48_sums *s);
-
-/* Averages (Q16.16: one exact sum, one rounding to nearest, ties away from zero). */
-subd_real subd_sr48_avg(sr48_sum s, uint32_t k, uint32_t *ovf);
-subd_real subd_sr48_mid(subd_real a, subd_real b, uint32_t *ovf);
-static inline sr48_sum sr48_add(sr48_sum s, subd_real v) { return s + (sr48_sum)v; }
 
 #endif

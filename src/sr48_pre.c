@@ -24,37 +24,34 @@
 
 int subd_sr48_pre_alloc_a(subd_arena *a, const subd_mesh *in, sr48_pre *w, uint32_t *bytes, uint32_t *keep)
 {
-    uint32_t ne = in->num_edges, total = 0;
-    int st = SUBD_OK;
+    const uint32_t ne = in->num_edges;
+    subd_layout l;
     sr48_pre tmp;
     sr48_pre *p = w ? w : &tmp;
-#define TAKE(ptr, n, sz) do { if (st == SUBD_OK) st = subd_sr48_take(a, (void **)(void *)&(ptr), (n), (sz), &total); } while (0)
-    TAKE(p->es.edge_of, in->num_corners, 4u);
-    TAKE(p->es.edge_he, ne, 4u);
-    TAKE(p->sel, ne, 4u);
-    *keep = total;
-    TAKE(p->es.key[0], ne, 8u);
-    TAKE(p->es.key[1], ne, 8u);
-    TAKE(p->es.ord[0], ne, 4u);
-    TAKE(p->es.ord[1], ne, 4u);
-    TAKE(p->es.mark, ne, 1u);
-    TAKE(p->es.cnt, 256u, 4u);
-    *bytes = total;
-    return st;
+    subd_layout_begin(&l, a);
+    p->es.edge_of = subd_layout_take(&l, in->num_corners, 4u);
+    p->es.edge_he = subd_layout_take(&l, ne, 4u);
+    p->sel = subd_layout_take(&l, ne, 4u);
+    *keep = l.bytes;
+    p->es.key[0] = subd_layout_take(&l, ne, 8u);
+    p->es.key[1] = subd_layout_take(&l, ne, 8u);
+    p->es.ord[0] = subd_layout_take(&l, ne, 4u);
+    p->es.ord[1] = subd_layout_take(&l, ne, 4u);
+    p->es.mark = subd_layout_take(&l, ne, 1u);
+    p->es.cnt = subd_layout_take(&l, 256u, 4u);
+    return subd_layout_end(&l, bytes);
 }
 
 int subd_sr48_pre_alloc_b(subd_arena *a, const sr48_layout *L, sr48_pre *w, uint32_t *bytes)
 {
-    uint32_t total = 0;
-    int st = SUBD_OK;
+    subd_layout l;
     sr48_pre tmp;
     sr48_pre *p = w ? w : &tmp;
-    TAKE(p->fstart, L->nf, 4u);
-    TAKE(p->fpt, L->nf, 4u);
-    TAKE(p->hnb, L->nhyb, 4u);
-#undef TAKE
-    *bytes = total;
-    return st;
+    subd_layout_begin(&l, a);
+    p->fstart = subd_layout_take(&l, L->nf, 4u);
+    p->fpt = subd_layout_take(&l, L->nf, 4u);
+    p->hnb = subd_layout_take(&l, L->nhyb, 4u);
+    return subd_layout_end(&l, bytes);
 }
 
 int subd_sr48_find_clusters(const subd_mesh *in, sr48_pre *w, uint32_t *clusters)
@@ -130,7 +127,7 @@ int subd_sr48_level0(const subd_mesh *in, const sr48_layout *L, sr48_pre *w, sub
     for (i = 0; i < 3u * nv; i++) pos[i] = in->pos[i];
     for (f = 0; f < nf; f++) {
         uint32_t s = in->face_start[f], j = diag_corner(w, s), v[4], n = 3, q = w->fpt[f];
-        sr48_sum sum[3] = {0, 0, 0};
+        subd_sum sum[3] = {0, 0, 0};
         if (j == 3u) {
             v[0] = in->corner_vert[s]; v[1] = in->corner_vert[s + 1u]; v[2] = in->corner_vert[s + 2u];
         } else {
@@ -144,14 +141,14 @@ int subd_sr48_level0(const subd_mesh *in, const sr48_layout *L, sr48_pre *w, sub
         }
         for (k = 0; k < 3u; k++) {
             uint32_t c;
-            for (c = 0; c < n; c++) sum[k] = sr48_add(sum[k], pos[3u * v[c] + k]);
-            pos[3u * q + k] = subd_sr48_avg(sum[k], n, &ovf);
+            for (c = 0; c < n; c++) sum[k] = subd_sum_add(sum[k], pos[3u * v[c] + k]);
+            pos[3u * q + k] = subd_avg(sum[k], n, &ovf);
         }
     }
     for (e = 0; e < L->ne; e++) {
         uint32_t he = w->es.edge_he[e], q = w->sel[e], a = in->corner_vert[he], b = subd_he_dest(in, he);
         if (q == SR48_DIAG) continue;
-        for (k = 0; k < 3u; k++) pos[3u * q + k] = subd_sr48_mid(pos[3u * a + k], pos[3u * b + k], &ovf);
+        for (k = 0; k < 3u; k++) pos[3u * q + k] = subd_mid(pos[3u * a + k], pos[3u * b + k], &ovf);
     }
     if (ovf) return SUBD_ERR_RANGE;
 

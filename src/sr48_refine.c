@@ -34,48 +34,7 @@
  */
 #include "sr48_internal.h"
 #include "mesh_internal.h"
-
-int subd_sr48_take(subd_arena *a, void **slot, uint32_t count, uint32_t elem, uint32_t *total)
-{
-    void *p;
-    subd_size_add(total, count, elem);
-    if (!a) return SUBD_OK;
-    p = subd_arena_alloc(a, count * elem);
-    if (!p) return SUBD_ERR_NOMEM;
-    *slot = p;
-    return SUBD_OK;
-}
-
-/* ------------------------------------------------------------------------------------ */
-/* Arithmetic                                                                             */
-
-#if SUBD_FIXED
-static subd_real div_round(int64_t n, int64_t k)
-{
-    int64_t q = (n >= 0) ? (n + k / 2) / k : -((-n + k / 2) / k);
-    return (subd_real)q; /* an average of in-range values is in range */
-}
-subd_real subd_sr48_avg(sr48_sum s, uint32_t k, uint32_t *ovf)
-{
-    (void)ovf;
-    return div_round(s, (int64_t)k);
-}
-subd_real subd_sr48_mid(subd_real a, subd_real b, uint32_t *ovf)
-{
-    (void)ovf;
-    return div_round((int64_t)a + b, 2);
-}
-#else
-subd_real subd_sr48_avg(sr48_sum s, uint32_t k, uint32_t *ovf)
-{
-    return subd_chk(s / (float)k, ovf);
-}
-subd_real subd_sr48_mid(subd_real a, subd_real b, uint32_t *ovf)
-{
-    subd_real ha = 0.5f * a, hb = 0.5f * b; /* no overflow of a + b near FLT_MAX */
-    return subd_chk(ha + hb, ovf);
-}
-#endif
+#include "entry.h"
 
 /* ------------------------------------------------------------------------------------ */
 /* Layout and plan                                                                        */
@@ -92,26 +51,36 @@ static int sr48_check(const subd_mesh *in, const subd_sr48_opts *o, subd_diag *d
     return SUBD_OK;
 }
 
+/* Layouts (layout.h): the smoothing sums of n vertices, and the output arrays. */
+static int sums_layout(subd_arena *a, uint32_t n, sr48_sums *s, uint32_t *bytes)
+{
+    subd_layout l;
+    sr48_sums tmp;
+    sr48_sums *p = s ? s : &tmp;
+    subd_layout_begin(&l, a);
+    p->s = subd_layout_take(&l, 3u * n, (uint32_t)sizeof(subd_sum)); /* n < 2^28, checked by the caller */
+    p->cnt = subd_layout_take(&l, n, 4u);
+    return subd_layout_end(&l, bytes);
+}
+
 static uint32_t sums_bytes(uint32_t n)
 {
-    uint32_t b = 0;
-    subd_size_add(&b, 3u * n, (uint32_t)sizeof(sr48_sum)); /* n < 2^28, checked by the caller */
-    subd_size_add(&b, n, 4u);
+    uint32_t b;
+    sums_layout(0, n, 0, &b);
     return b;
 }
 
-static int sums_alloc(subd_arena *a, uint32_t n, sr48_sums *s)
+static int out_layout(subd_arena *a, const sr48_layout *L, subd_sr48 *h, uint32_t *bytes)
 {
-    uint32_t t = 0;
-    int st = subd_sr48_take(a, (void **)(void *)&s->s, 3u * n, (uint32_t)sizeof(sr48_sum), &t);
-    if (st == SUBD_OK) st = subd_sr48_take(a, (void **)(void *)&s->cnt, n, 4u, &t);
-    return st;
-}
-
-static uint32_t max3(uint32_t a, uint32_t b, uint32_t c)
-{
-    uint32_t m = a > b ? a : b;
-    return m > c ? m : c;
+    const uint32_t nv = L->level_verts[L->steps], nt = L->level_tri[L->steps + 1u];
+    subd_layout l;
+    subd_sr48 tmp;
+    subd_sr48 *p = h ? h : &tmp;
+    subd_layout_begin(&l, a);
+    p->pos = subd_layout_take(&l, 3u * nv, (uint32_t)sizeof(subd_real));
+    p->tri_vert = subd_layout_take(&l, 3u * nt, 4u);
+    p->tri_base_nb = subd_layout_take(&l, nt, 4u);
+    return subd_layout_end(&l, bytes);
 }
 
 /* Counts and bytes; clusters may be SUBD_SR48_CLUSTERS_UNKNOWN (bound: no clusters). */
@@ -152,17 +121,14 @@ static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32
     for (k = o->steps + 1u; k <= SUBD_SR48_MAX_STEPS; k++) L->level_verts[k] = L->level_verts[o->steps];
     for (k = o->steps + 2u; k <= SUBD_SR48_MAX_STEPS + 1u; k++) L->level_tri[k] = (uint32_t)tt;
 
-    L->out_bytes = 0;
-    subd_size_add(&L->out_bytes, 3u * L->level_verts[o->steps], (uint32_t)sizeof(subd_real));
-    subd_size_add(&L->out_bytes, 3u * (uint32_t)tt, 4u);
-    subd_size_add(&L->out_bytes, (uint32_t)tt, 4u);
+    out_layout(0, L, 0, &L->out_bytes);
     {
         uint32_t keep; /* phase A's edge_of, edge_he, sel stay in phase B */
         subd_sr48_pre_alloc_a(0, in, 0, &L->a_bytes, &keep);
         subd_sr48_pre_alloc_b(0, L, 0, &b);
         L->b_bytes = keep;
-        subd_size_add(&L->b_bytes, b, 1u);
-        if (L->smooth) subd_size_add(&L->b_bytes, sums_bytes(L->nv_hyb), 1u);
+        subd_bytes_add(&L->b_bytes, b);
+        if (L->smooth) subd_bytes_add(&L->b_bytes, sums_bytes(L->nv_hyb));
     }
     L->s_bytes = 0;
     if (L->smooth)
@@ -171,7 +137,7 @@ static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32
             if (sb > L->s_bytes) L->s_bytes = sb;
         }
     L->bytes = L->out_bytes;
-    subd_size_add(&L->bytes, max3(L->a_bytes, L->b_bytes, L->s_bytes), 1u);
+    subd_bytes_add(&L->bytes, subd_bytes_max(L->a_bytes, subd_bytes_max(L->b_bytes, L->s_bytes)));
     if (L->bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     return SUBD_OK;
 }
@@ -206,19 +172,42 @@ static int count_in_place(subd_arena *a, const subd_mesh *in, uint32_t *clusters
     return SUBD_OK;
 }
 
+/* The exact layout of a build. The output sizes depend on the cluster count, which only
+ * find_clusters gives, so find_clusters runs first in the free arena space (given back)
+ * and the layout is then computed with its count. On SUBD_ERR_NOMEM d->bytes_needed is the
+ * plan (the bound without clusters when not even find_clusters fits). */
+static int sr48_layout_exact(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, sr48_layout *L,
+                             subd_diag *d)
+{
+    uint32_t clusters;
+    int st;
+    if ((st = sr48_layout_calc(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, L, d)) != SUBD_OK) return st;
+    if (L->a_bytes > subd_arena_free_bytes(a)) {
+        d->bytes_needed = L->bytes; /* the bound: not even the cluster count fits */
+        return subd_fail(d, SUBD_ERR_NOMEM);
+    }
+    if ((st = count_in_place(a, in, &clusters, d)) != SUBD_OK) return st;
+    if ((st = sr48_layout_calc(in, o, clusters, L, d)) != SUBD_OK) return st;
+    d->bytes_needed = L->bytes;
+    if (L->bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
+    return SUBD_OK;
+}
+
 int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clusters, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     subd_sr48_opts o;
     sr48_layout L;
+    uint32_t n;
     int st;
-    subd_diag_clear(d);
-    if (!a || !clusters) return subd_fail(d, SUBD_ERR_PARAM);
+    if (!a || !clusters) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     o.steps = 0;
     o.flags = 0;
-    if ((st = sr48_layout_calc(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return st;
-    return count_in_place(a, in, clusters, d);
+    if ((st = sr48_layout_calc(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = count_in_place(a, in, &n, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    *clusters = n;
+    return subd_entry_ok(&e);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -250,9 +239,9 @@ int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase
             m = next++;
             if (nb != SUBD_NONE && smooth) {
                 const uint32_t c2 = tv[3u * nb];
-                for (q = 0; q < 3u; q++) pos[3u * m + q] = subd_sr48_mid(pos[3u * c + q], pos[3u * c2 + q], &ovf);
+                for (q = 0; q < 3u; q++) pos[3u * m + q] = subd_mid(pos[3u * c + q], pos[3u * c2 + q], &ovf);
             } else {
-                for (q = 0; q < 3u; q++) pos[3u * m + q] = subd_sr48_mid(pos[3u * a + q], pos[3u * b + q], &ovf);
+                for (q = 0; q < 3u; q++) pos[3u * m + q] = subd_mid(pos[3u * a + q], pos[3u * b + q], &ovf);
             }
         } else {
             m = tv[3u * (cb + 2u * (nb - t0))];
@@ -283,7 +272,7 @@ static void scatter(const sr48_sums *s, uint32_t v, const subd_real *p, int boun
 {
     uint32_t q;
     if ((s->cnt[v] & SR48_BFLAG) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s->s[3u * v + q] = sr48_add(s->s[3u * v + q], p[q]);
+    for (q = 0; q < 3u; q++) s->s[3u * v + q] = subd_sum_add(s->s[3u * v + q], p[q]);
     s->cnt[v]++;
 }
 
@@ -321,7 +310,7 @@ int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pba
     for (v = 0; v < nold; v++) {
         uint32_t n = s->cnt[v] & ~SR48_BFLAG;
         if (n == 0) continue;
-        for (q = 0; q < 3u; q++) pos[3u * v + q] = subd_sr48_avg(s->s[3u * v + q], n, &ovf);
+        for (q = 0; q < 3u; q++) pos[3u * v + q] = subd_avg(s->s[3u * v + q], n, &ovf);
     }
     return ovf ? SUBD_ERR_RANGE : SUBD_OK;
 }
@@ -330,28 +319,18 @@ int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pba
 
 int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     sr48_layout L;
     sr48_pre w;
     sr48_sums sums;
     subd_sr48 h;
-    uint32_t mark, clusters, bytes, k, cl2, base, keep, tmp;
+    uint32_t bytes, k, cl2, base, keep, tmp;
     int st;
 
-    subd_diag_clear(d);
-    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = sr48_layout_calc(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return st;
-    if (L.a_bytes > subd_arena_free_bytes(a)) {
-        d->bytes_needed = L.bytes; /* the bound: not even the cluster count fits */
-        return subd_fail(d, SUBD_ERR_NOMEM);
-    }
-    if ((st = count_in_place(a, in, &clusters, d)) != SUBD_OK) return st;
-    if ((st = sr48_layout_calc(in, o, clusters, &L, d)) != SUBD_OK) return st;
-    d->bytes_needed = L.bytes;
-    if (L.bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
+    if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = sr48_layout_exact(a, in, o, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
 
-    mark = subd_arena_mark(a);
     h.steps = o->steps;
     h.flags = o->flags;
     h.num_input_verts = in->num_verts;
@@ -361,25 +340,21 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
     for (k = 0; k <= SUBD_SR48_MAX_STEPS + 1u; k++) h.level_tri[k] = L.level_tri[k];
     h.num_clusters = L.clusters;
     h.num_isolated = L.isolated;
-    bytes = 0;
-    st = subd_sr48_take(a, (void **)(void *)&h.pos, 3u * h.num_verts, (uint32_t)sizeof(subd_real), &bytes);
-    if (st == SUBD_OK) st = subd_sr48_take(a, (void **)(void *)&h.tri_vert, 3u * h.num_tris, 4u, &bytes);
-    if (st == SUBD_OK) st = subd_sr48_take(a, (void **)(void *)&h.tri_base_nb, h.num_tris, 4u, &bytes);
-    if (st != SUBD_OK) goto fail;
+    if ((st = out_layout(a, &L, &h, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
 
     /* pre-processing: phase A (find_clusters again, above the output), phase B */
     base = subd_arena_mark(a);
     st = subd_sr48_pre_alloc_a(a, in, &w, &tmp, &keep);
     if (st == SUBD_OK) st = subd_sr48_find_clusters(in, &w, &cl2);
-    if (st == SUBD_OK && cl2 != clusters) st = SUBD_ERR_PARAM;
-    if (st != SUBD_OK) goto fail;
+    if (st == SUBD_OK && cl2 != L.clusters) st = SUBD_ERR_PARAM;
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
     subd_arena_rewind(a, base + keep);
     st = subd_sr48_pre_alloc_b(a, &L, &w, &tmp);
-    if (st == SUBD_OK && L.smooth) st = sums_alloc(a, L.nv_hyb, &sums);
+    if (st == SUBD_OK && L.smooth) st = sums_layout(a, L.nv_hyb, &sums, &tmp);
     if (st == SUBD_OK) st = subd_sr48_level0(in, &L, &w, &h);
     if (st == SUBD_OK && L.smooth) st = subd_sr48_smooth(&h, 0, w.hnb, 0, L.nv_hyb, &sums);
     if (st == SUBD_OK && o->steps >= 1u) st = subd_sr48_step(&h, 0, w.hnb, 0, (int)L.smooth);
-    if (st != SUBD_OK) goto fail;
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
     subd_arena_rewind(a, base);
 
     /* binary steps 1 .. steps-1 (step k makes level k+1), smoothing after even levels */
@@ -387,16 +362,12 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
         const uint32_t p0 = L.level_tri[k - 1u], p1 = L.level_tri[k];
         st = subd_sr48_step(&h, k, h.tri_base_nb + p0, p0, (int)L.smooth);
         if (st == SUBD_OK && L.smooth && ((k + 1u) & 1u) == 0u) {
-            st = sums_alloc(a, L.level_verts[k], &sums);
+            st = sums_layout(a, L.level_verts[k], &sums, &tmp);
             if (st == SUBD_OK) st = subd_sr48_smooth(&h, k + 1u, h.tri_base_nb + p1, p1, L.level_verts[k], &sums);
             subd_arena_rewind(a, base);
         }
-        if (st != SUBD_OK) goto fail;
+        if (st != SUBD_OK) return subd_entry_fail(&e, st);
     }
-    d->bytes_needed = 0;
     *out = h;
-    return SUBD_OK;
-fail:
-    subd_arena_rewind(a, mark);
-    return subd_fail(d, st);
+    return subd_entry_ok(&e);
 }

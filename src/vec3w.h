@@ -1,0 +1,154 @@
+/* SPDX-License-Identifier: MIT */
+/* Wide 3-vectors: differences, dot and cross products of subd_reals that must not lose
+ * bits (face normals, tangents, point-triangle distances), written once for both
+ * arithmetics. Used by crease.c and sr48_extract.c; loop_limit.c's lim_wide / lim_diff /
+ * lim_unit_cross / lim_dot_sign are the same ideas (subd_wide, subd_wide_diff,
+ * subd_w3_normalize + subd_w3_cross, subd_w3_dot).
+ *
+ * subd_wide is int64_t in the Q16.16 build (values in units of 2^-16, exact) and float in
+ * the float32 build.
+ *
+ * Scaling and overflow contract (CMSIS-DSP style):
+ *  - subd_wide_diff / subd_w3_diff: Q16.16 exact (|p - q| < 2^32). float32: one rounding.
+ *  - subd_w3_dot, subd_w3_cross: Q16.16 exact int64 arithmetic; the CALLER keeps every
+ *    component below 2^30 in magnitude (then |dot| < 3 * 2^60, |cross| < 2^61), usually
+ *    with subd_w3_normalize / subd_w3_fit first. float32: products rounded one at a time
+ *    into named temporaries and summed left to right, so the bits do not depend on the
+ *    compiler contracting a*b+c (DESIGN.md); no overflow guard: scale first if needed.
+ *  - subd_w3_normalize(t, o, bits): a direction-preserving rescale, for when only the
+ *    direction matters. float32: o = t / max|t_k| (so max|o_k| = 1). Q16.16: o = t * 2^-s
+ *    with s = bitlen(max|t_k|) - bits, so max|o_k| is in [2^(bits-1), 2^bits); shrinking
+ *    truncates toward zero, growing is exact. t = 0 gives o = 0. bits in 1..62.
+ *  - subd_w3_fit(t, o, bits): as subd_w3_normalize but Q16.16 only shrinks (s >= 0), so
+ *    small vectors keep their size: max|o_k| < 2^bits. float32: the same as normalize.
+ *  - subd_w3_unit(c, out) (vec3w.c): c / |c| as subd_reals, (0, 0, 0) for c = 0; c is first
+ *    rescaled by subd_w3_normalize(c, ., 30), so any c is accepted. Q16.16: rounded to
+ *    nearest (ties away from zero) in units of 2^-16; float32: n / sqrt(n . n).
+ *  - subd_wide_madd(acc, w, d) = acc + w * d for a subd_real weight: Q16.16 exact in int64
+ *    (acc in units of 2^-32) while the caller keeps |w d| and the sum below 2^63; float32
+ *    the product rounded into a temporary, then the sum.
+ *  - subd_wide_mulu(n, x) = n * x: Q16.16 exact while |x| < 2^31 and n < 2^32; float32 one
+ *    rounding. subd_wide_of(x): x widened (exact in both).
+ * All but subd_w3_unit are static inline; none has side effects; o may alias t. */
+#ifndef SUBD_VEC3W_H
+#define SUBD_VEC3W_H
+#include "subd.h"
+
+#if SUBD_FIXED
+typedef int64_t subd_wide;
+#else
+typedef float subd_wide;
+#endif
+
+static inline subd_wide subd_wide_of(subd_real x) { return (subd_wide)x; }
+static inline subd_wide subd_wide_diff(subd_real p, subd_real q) { return (subd_wide)p - (subd_wide)q; }
+static inline subd_wide subd_wide_mulu(uint32_t n, subd_wide x) { return (subd_wide)n * x; }
+
+static inline subd_wide subd_wide_madd(subd_wide acc, subd_real w, subd_wide d)
+{
+    subd_wide t = (subd_wide)w * d;
+    return acc + t;
+}
+
+/* r = p - q */
+static inline void subd_w3_diff(const subd_real *p, const subd_real *q, subd_wide *r)
+{
+    r[0] = subd_wide_diff(p[0], q[0]);
+    r[1] = subd_wide_diff(p[1], q[1]);
+    r[2] = subd_wide_diff(p[2], q[2]);
+}
+
+/* r = a - b */
+static inline void subd_w3_sub(const subd_wide *a, const subd_wide *b, subd_wide *r)
+{
+    r[0] = a[0] - b[0];
+    r[1] = a[1] - b[1];
+    r[2] = a[2] - b[2];
+}
+
+static inline subd_wide subd_w3_dot(const subd_wide *a, const subd_wide *b)
+{
+    subd_wide p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
+    return p0 + p1 + p2;
+}
+
+/* r = a x b; r must not alias a or b. */
+static inline void subd_w3_cross(const subd_wide *a, const subd_wide *b, subd_wide *r)
+{
+    subd_wide p0, p1;
+    p0 = a[1] * b[2];
+    p1 = a[2] * b[1];
+    r[0] = p0 - p1;
+    p0 = a[2] * b[0];
+    p1 = a[0] * b[2];
+    r[1] = p0 - p1;
+    p0 = a[0] * b[1];
+    p1 = a[1] * b[0];
+    r[2] = p0 - p1;
+}
+
+/* Number of significant bits of v (0 for 0), by halving instead of a loop over 64 bits.
+ * Integer only: available in both builds (edge_sort.c's length keys use it too). */
+static inline uint32_t subd_bitlen64(uint64_t v)
+{
+    uint32_t n = 0;
+    if (v >> 32) { n += 32u; v >>= 32; }
+    if (v >> 16) { n += 16u; v >>= 16; }
+    if (v >> 8) { n += 8u; v >>= 8; }
+    if (v >> 4) { n += 4u; v >>= 4; }
+    if (v >> 2) { n += 2u; v >>= 2; }
+    if (v >> 1) { n += 1u; v >>= 1; }
+    return n + (uint32_t)v;
+}
+
+#if SUBD_FIXED
+static inline uint64_t subd_w3_maxabs(const subd_wide *t)
+{
+    uint64_t big = 0;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        uint64_t a = (uint64_t)(t[k] < 0 ? -t[k] : t[k]);
+        if (a > big) big = a;
+    }
+    return big;
+}
+
+/* o = t * 2^-s: truncating division for s > 0, exact product for s <= 0. */
+static inline void subd_w3_shift(const subd_wide *t, subd_wide *o, int32_t s)
+{
+    uint32_t k;
+    if (s > 0)
+        for (k = 0; k < 3u; k++) o[k] = t[k] / ((int64_t)1 << s);
+    else
+        for (k = 0; k < 3u; k++) o[k] = t[k] * ((int64_t)1 << -s);
+}
+
+static inline void subd_w3_normalize(const subd_wide *t, subd_wide *o, uint32_t bits)
+{
+    subd_w3_shift(t, o, (int32_t)subd_bitlen64(subd_w3_maxabs(t)) - (int32_t)bits);
+}
+
+static inline void subd_w3_fit(const subd_wide *t, subd_wide *o, uint32_t bits)
+{
+    int32_t s = (int32_t)subd_bitlen64(subd_w3_maxabs(t)) - (int32_t)bits;
+    subd_w3_shift(t, o, s > 0 ? s : 0);
+}
+#else
+static inline void subd_w3_normalize(const subd_wide *t, subd_wide *o, uint32_t bits)
+{
+    float big = 0.0f;
+    uint32_t k;
+    (void)bits;
+    for (k = 0; k < 3u; k++) {
+        float a = t[k] < 0.0f ? -t[k] : t[k];
+        if (a > big) big = a;
+    }
+    for (k = 0; k < 3u; k++) o[k] = big > 0.0f ? t[k] / big : 0.0f;
+}
+
+static inline void subd_w3_fit(const subd_wide *t, subd_wide *o, uint32_t bits) { subd_w3_normalize(t, o, bits); }
+#endif
+
+void subd_w3_unit(const subd_wide *c, subd_real *out);
+
+#endif

@@ -36,7 +36,7 @@ HOST_FLAGS_tool-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 -g
 HOST_FLAGS_tool-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O2 -g
 HOST_FLAGS_bench-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2
 HOST_TEST_PORT := port/host/test_port.c port/print.c port/host/png.c port/host/render.c
-TOOL_PORT      := port/host/subd_main.c port/host/subd_options.c port/host/subd_commands.c port/host/subd_info.c port/host/subd_write.c port/host/fileio.c port/host/png.c port/host/render.c
+TOOL_PORT      := port/host/subd_main.c port/host/subd_options.c port/host/subd_commands.c port/host/subd_info.c port/host/subd_write.c port/host/subd_stream.c port/host/fileio.c port/host/png.c port/host/render.c
 
 define host_variant
 $(B)/$(1)/src/%.o: src/%.c $(MK) | dirs

@@ -1,8 +1,9 @@
 #!/bin/sh
 # Tests of the subd host tool (port/host/subd_*.c): exit codes, FILE:LINE messages for
 # every row of test/bad/EXPECT, info topology on test/data, convert round trips, render,
-# --stats JSON, --arena budget, --tags files, the option table behind --help, usage and I/O errors.
-# Needs only sh, coreutils, grep, sed, awk, od. Prints one "ok - ..." / "not ok - ..." line per
+# --stats JSON, --arena budget, --tags files, loop --stream (.stl/.obj/.off against loop's output),
+# the option table behind --help, usage and I/O errors.
+# Needs only sh, coreutils, grep, sed, awk, od and a C compiler ($CC or cc, for test/tools/tri_dump.c). Prints one "ok - ..." / "not ok - ..." line per
 # check (details of a failure follow, indented) and ends with "N passed, M failed".
 # usage: test/tool_test.sh BIN_DIR      (BIN_DIR holds subd and subd-fixed)
 if [ $# -ne 1 ]; then
@@ -357,6 +358,130 @@ run "$FIXED" pia --tol 1e-6 test/data/icosahedron.obj -o "$T/x.obj"
 is 1 && grep -q "below what Q16.16 can resolve" "$T/err"; check $? "subd-fixed pia --tol 1e-6: exit 1, says Q16.16 cannot resolve it"
 usage_case_pre loop --tol 1 test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --tol (not its option): exit 1"
 
+# ---------------------------------------------------------------- loop --stream
+# The stream (subd_loop_stream) against subd_loop through the tool: test/tools/tri_dump.c prints
+# every corner of a .stl/.obj/.off in face order as float32 bits, so the stream's triangles must
+# be subd_loop's, in the same order, with bit-identical coordinates, whatever the format.
+TRI_DUMP=$T/tri_dump
+CC_TEST=${CC:-cc}
+command -v "$CC_TEST" > /dev/null 2>&1 || CC_TEST=gcc
+"$CC_TEST" -std=c99 -O1 -o "$TRI_DUMP" test/tools/tri_dump.c -lm > "$T/cc.log" 2>&1
+rc=$?; : > "$T/out"; cp "$T/cc.log" "$T/err"
+is 0; check $? "test/tools/tri_dump.c compiles with $CC_TEST"
+dump() { "$TRI_DUMP" "$@" 2>> "$T/err"; }
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    # mesh, options, faces: closed, open (both boundary rules), creases
+    for case in "test/data/icosahedron.obj||20" "test/data/hexfan.obj|--boundary bspline|6" \
+        "test/data/grid_tri_8x8.obj||128" "demo/cube_tri.obj|--crease-angle 60|12"; do
+        m=${case%%|*} rest=${case#*|}
+        opts=${rest%|*} f=${rest##*|}
+        mb=$(basename "$m" .obj)
+        "$b" loop -l 2 $opts "$m" -o "$T/ref.obj" < /dev/null > /dev/null 2>&1
+        "$b" loop -l 2 $opts "$m" -o "$T/ref.off" < /dev/null > /dev/null 2>&1
+        run "$b" loop -l 2 $opts --stream "$m" -o "$T/s.stl"
+        is 0 && [ "$(wc -c < "$T/s.stl")" -eq $((84 + 50 * 16 * f)) ]
+        check $? "$name loop -l 2 --stream $mb -o .stl: 84 + 50 x 4^2 x $f bytes"
+        dump "$T/s.stl" > "$T/s.tri" && dump "$T/ref.obj" > "$T/ref.tri" && cmp -s "$T/s.tri" "$T/ref.tri" &&
+            sort -u "$T/s.tri" > "$T/s.set" && dump -v "$T/ref.obj" | sort -u > "$T/ref.set" && cmp -s "$T/s.set" "$T/ref.set"
+        check $? "$name --stream $mb .stl: subd_loop's triangles in order, float32 bit for bit; vertex set = ref v lines"
+        run "$b" loop -l 2 $opts --stream "$m" -o "$T/s.obj"
+        is 0 && [ "$(grep -c '^v ' "$T/s.obj")" = "$(grep -c '^v ' "$T/ref.obj")" ] &&
+            [ "$(grep -c '^f ' "$T/s.obj")" = "$(grep -c '^f ' "$T/ref.obj")" ] &&
+            dump "$T/s.obj" > "$T/so.tri" && cmp -s "$T/so.tri" "$T/ref.tri"
+        check $? "$name --stream $mb .obj: as many v and f lines as loop's .obj, same triangles and bits"
+        run "$b" loop -l 2 $opts --stream "$m" -o "$T/s.off"
+        is 0 && [ "$(sed -n 2p "$T/s.off")" = "$(sed -n 2p "$T/ref.off")" ] && dump "$T/s.off" > "$T/sf.tri" &&
+            cmp -s "$T/sf.tri" "$T/ref.tri"
+        check $? "$name --stream $mb .off: loop's counts line, same triangles and bits"
+    done
+    m=test/data/hexfan.obj
+    # --limit: limit positions and normals = 'limit --normals' of loop's level-2 output
+    "$b" loop -l 2 "$m" -o "$T/ref.obj" < /dev/null > /dev/null 2>&1
+    "$b" limit --normals "$T/ref.obj" -o "$T/lim.obj" < /dev/null > /dev/null 2>&1
+    run "$b" loop -l 2 --stream --limit "$m" -o "$T/sl.obj"
+    is 0 && [ "$(grep -c '^vn ' "$T/sl.obj")" = "$(grep -c '^v ' "$T/sl.obj")" ] && [ "$(grep -c '^vn ' "$T/sl.obj")" -gt 0 ] &&
+        grep -q '^f [0-9]*//[0-9]* ' "$T/sl.obj" && dump "$T/sl.obj" > "$T/sl.tri" && dump "$T/lim.obj" > "$T/lim.tri" &&
+        cmp -s "$T/sl.tri" "$T/lim.tri"
+    check $? "$name loop --stream --limit -o .obj: a vn per v, f a//a, = limit --normals of loop's output bit for bit"
+    run "$b" loop -l 2 --stream --limit "$m" -o "$T/sl.stl"
+    is 0 && [ "$(wc -c < "$T/sl.stl")" -eq $((84 + 50 * 16 * 6)) ] && dump "$T/sl.stl" > "$T/sls.tri" &&
+        sed 's/ [0-9a-f]* [0-9a-f]* [0-9a-f]*$//' "$T/lim.tri" | cmp -s - "$T/sls.tri"
+    check $? "$name loop --stream --limit -o .stl: limit positions, facet normals of the triangles"
+    # --stats: with no -o a counting sink; the same stream gives the same checksum with -o
+    run "$b" loop -l 3 --stream --stats test/data/icosahedron.obj -o "$T/s3.stl"
+    sum=$(sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/\1/p' "$T/out")
+    planned=$(json_num arena_planned)
+    is 0 && json_ok "$T/out" && grep -q '"output":{"file":"[^"]*s3.stl","format":"stl","bytes":64084,' "$T/out" &&
+        [ "$(json_num triangles)" = 1280 ] && [ "$(json_num arena_used)" -le "$planned" ]
+    check $? "$name loop --stream --stats -o .stl: output described (64084 bytes), 1280 triangles, used <= planned"
+    run "$b" loop -l 3 --stream --stats test/data/icosahedron.obj
+    keys=0
+    for k in command scheme levels arithmetic input output arena_budget arena_planned arena_used time_ms; do
+        grep -q "\"$k\":" "$T/out" || keys=1
+    done
+    is 0 && [ "$(wc -l < "$T/out")" -eq 1 ] && json_ok "$T/out" && [ $keys -eq 0 ] && grep -q '"output":null' "$T/out" &&
+        grep -q '"stream":true' "$T/out" && grep -q '"limit":false' "$T/out" && [ "$(json_num triangles)" = $((64 * 20)) ] &&
+        [ -n "$sum" ] && grep -q "\"checksum\":\"$sum\"" "$T/out" && [ "$(json_num arena_planned)" = "$planned" ]
+    check $? "$name loop -l 3 --stream --stats, no -o: JSON with every key, triangles 4^3 x 20, same checksum and plan"
+    run "$b" loop -l 2 --stream --limit --stats test/data/hexfan.obj
+    is 0 && json_ok "$T/out" && grep -q '"limit":true' "$T/out" && [ "$(json_num triangles)" = 96 ]
+    check $? "$name loop --stream --limit --stats: \"limit\":true, 96 triangles"
+    # --arena: the input mesh plus the stream's plan, exactly
+    rm -f "$T/a.stl"
+    run "$b" loop -l 3 --stream --arena $((planned - 1)) test/data/icosahedron.obj -o "$T/a.stl"
+    is 3 && err_starts "subd: arena too small: needs $planned bytes, have $((planned - 1))" && [ ! -e "$T/a.stl" ]
+    check $? "$name loop --stream --arena $((planned - 1)): exit 3, needs $planned bytes, no output"
+    run "$b" loop -l 3 --stream --arena "$planned" --stats test/data/icosahedron.obj -o "$T/a.stl"
+    is 0 && cmp -s "$T/a.stl" "$T/s3.stl" && [ "$(json_num arena_used)" -le "$planned" ]
+    check $? "$name loop --stream --arena $planned (the plan): exit 0, the same file"
+done
+# The stream's plan grows with the level only a little: level 6 (524288 triangles) in less than
+# 16 KiB more than level 3 (8192 triangles).
+run "$FLOAT" loop -l 3 --stream --stats test/data/grid_tri_8x8.obj
+p1=$(json_num arena_planned)
+run "$FLOAT" loop -l 6 --stream --stats test/data/grid_tri_8x8.obj
+p2=$(json_num arena_planned)
+is 0 && [ "$(json_num triangles)" = $((4096 * 128)) ] && [ "$p2" -gt "$p1" ] && [ "$p2" -lt $((p1 + 16384)) ]
+check $? "loop -l 6 --stream --stats grid: 4^6 x 128 triangles, plan $p1 -> $p2 bytes (levels 3 -> 6)"
+# .stl needs no seek: it can be a pipe
+if mkfifo "$T/fifo.stl" 2> /dev/null; then
+    cat "$T/fifo.stl" > "$T/from_fifo" &
+    reader=$!
+    run "$FLOAT" loop -l 3 --stream test/data/icosahedron.obj -o "$T/fifo.stl"
+    is 0 || kill "$reader" 2> /dev/null # a run that never opened the FIFO leaves cat waiting
+    wait "$reader"
+    is 0 && "$FLOAT" loop -l 3 --stream test/data/icosahedron.obj -o "$T/p.stl" && cmp -s "$T/from_fifo" "$T/p.stl"
+    check $? "loop --stream -o a FIFO named .stl: the same bytes as the file"
+fi
+# output errors: exit 4
+run "$FLOAT" loop --stream test/data/icosahedron.obj -o "$T/no/such/dir/x.stl"
+is 4 && err_starts "subd: cannot write"; check $? "loop --stream to an unwritable .stl: exit 4"
+if [ -w /dev/full ]; then
+    for e in stl obj off; do
+        ln -s /dev/full "$T/full.$e"
+        run "$FIXED" loop -l 4 --stream test/data/icosahedron.obj -o "$T/full.$e"
+        is 4 && err_starts "subd: cannot write '$T/full.$e'" && [ -c /dev/full ]
+        check $? "subd-fixed loop --stream -o .$e on a full disk (/dev/full): exit 4"
+    done
+fi
+usage_case_pre loop --limit test/data/icosahedron.obj -o "$T/x.obj"
+grep -q -- '--limit needs --stream' "$T/err"; check $? "loop --limit without --stream: exit 1, says so"
+usage_case_pre convert --stream test/data/icosahedron.obj -o "$T/x.obj"
+grep -q -- "--stream applies to 'loop' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's"
+usage_case_pre limit --stream --limit test/data/icosahedron.obj -o "$T/x.obj"; check $? "limit --stream: exit 1"
+for e in png xyz; do
+    usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.$e"
+    grep -q -- '--stream writes .stl, .obj or .off' "$T/err"; check $? "loop --stream -o .$e: exit 1, names the formats"
+done
+usage_case_pre loop test/data/icosahedron.obj -o "$T/x.stl"
+grep -q "written by 'loop --stream' only" "$T/err"; check $? "loop -o .stl without --stream: exit 1"
+usage_case_pre loop --stream test/data/icosahedron.obj
+grep -q "needs an output file" "$T/err"; check $? "loop --stream without -o and without --stats: exit 1"
+run "$FLOAT" --help
+is 0 && grep -q '^  --stream  ' "$T/out" && grep -q '^  --limit  ' "$T/out" && grep -q 'gathered on the host' "$T/out"
+check $? "--help lists --stream and --limit"
+
 # ---------------------------------------------------------------- usage errors (exit 1)
 usage_case() { # DESCRIPTION ARGS...
     d=$1
@@ -372,7 +497,8 @@ usage_case "missing input" info
 usage_case "two inputs" info test/data/hexfan.obj test/data/cube_quad.obj
 usage_case "convert without -o" convert test/data/hexfan.obj
 usage_case "-o without value" convert test/data/hexfan.obj -o
-usage_case "unknown output extension" convert test/data/hexfan.obj -o "$T/x.stl"
+usage_case "unknown output extension" convert test/data/hexfan.obj -o "$T/x.ply"
+usage_case ".stl without loop --stream" convert test/data/hexfan.obj -o "$T/x.stl"
 usage_case "unknown input extension" info test/data/hexfan.stl
 usage_case "render to .obj" render test/data/hexfan.obj -o "$T/x.obj"
 usage_case "bad --size" render test/data/hexfan.obj -o "$T/x.png" --size 12by3

@@ -99,6 +99,7 @@ host_format host_format_of(const char *path)
     if (ends_with_ci(path, ".off")) return HOST_FMT_OFF;
     if (ends_with_ci(path, ".png")) return HOST_FMT_PNG;
     if (ends_with_ci(path, ".xyz")) return HOST_FMT_XYZ;
+    if (ends_with_ci(path, ".stl")) return HOST_FMT_STL;
     return HOST_FMT_UNKNOWN;
 }
 
@@ -109,6 +110,7 @@ const char *host_format_name(host_format f)
     case HOST_FMT_OFF: return "off";
     case HOST_FMT_PNG: return "png";
     case HOST_FMT_XYZ: return "xyz";
+    case HOST_FMT_STL: return "stl";
     default: return "unknown";
     }
 }

@@ -21,11 +21,12 @@ typedef enum host_format {
     HOST_FMT_OBJ,
     HOST_FMT_OFF,
     HOST_FMT_PNG,
-    HOST_FMT_XYZ /* output only: "x y z" per line, a blank line between polylines (CNC) */
+    HOST_FMT_XYZ, /* output only: "x y z" per line, a blank line between polylines (CNC) */
+    HOST_FMT_STL  /* output only, binary STL, written by loop --stream (subd_stream.c)     */
 } host_format;
 
 host_format host_format_of(const char *path);
-const char *host_format_name(host_format f); /* "obj", "off", "png", "xyz" or "unknown" */
+const char *host_format_name(host_format f); /* "obj", "off", "png", "xyz", "stl" or "unknown" */
 
 /* Statuses of host_read_mesh besides the library's subd_status values (which are 0 or
  * negative): I/O failure (errno set) and an extension that is not .obj/.off. */

@@ -11,26 +11,26 @@
 #include "subd_tool.h"
 #include "host_real.h"
 
-static subd_loop_opts loop_opts_of(const tool_opts *o)
+subd_loop_opts tool_loop_opts(const tool_opts *o)
 {
     subd_loop_opts lo;
     lo.levels = o->levels;
     lo.boundary = o->boundary;
-    lo.flags = 0;
+    lo.flags = o->limit ? SUBD_LOOP_STREAM_LIMIT : 0u;
     return lo;
 }
 
 static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
-    subd_loop_opts lo = loop_opts_of(o);
+    subd_loop_opts lo = tool_loop_opts(o);
     (void)d;
-    return subd_loop_plan(in, &lo, bytes);
+    return o->stream ? subd_loop_stream_plan(in, &lo, bytes) : subd_loop_plan(in, &lo, bytes);
 }
 
 static int loop_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
                     subd_diag *d)
 {
-    subd_loop_opts lo = loop_opts_of(o);
+    subd_loop_opts lo = tool_loop_opts(o);
     (void)x;
     return subd_loop(a, in, &lo, out, d);
 }
@@ -326,8 +326,10 @@ const command tool_commands[] = {
     {"render", "INPUT -o OUTPUT.png", "draw the mesh (shaded, with edges) as a PNG",
      CMD_OUTPUT_REQUIRED | CMD_PNG_ONLY, NULL, 0, 0, 0, NULL, NULL, NULL},
     {"loop", "[-l N] INPUT -o OUTPUT", "Loop subdivision of a triangle mesh (default 1 level);\n"
-                                       "--boundary paper|bspline, --crease-angle DEG",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "loop", 1, SUBD_MAX_LEVELS, LOOP_OPTS, loop_plan, loop_run, NULL},
+                                       "--boundary paper|bspline, --crease-angle DEG;\n"
+                                       "--stream [--limit]: one triangle at a time (.stl)",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "loop", 1, SUBD_MAX_LEVELS, LOOP_OPTS | OPT_STREAM, loop_plan, loop_run,
+     NULL},
     {"limit", "INPUT -o OUTPUT", "control vertices moved to their Loop limit positions;\n"
                                  "--normals adds limit normals (OBJ vn)",
      CMD_OUTPUT_REQUIRED, "limit", 0, 0, LOOP_OPTS | OPT_NORMALS, limit_plan, limit_run, NULL},

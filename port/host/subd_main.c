@@ -6,7 +6,8 @@
  * sized by the reader's plan call -> apply tags (--tag-boundary, --crease-angle, --tags through
  * the library's tag-file parser) -> plan and run the command's operation (scheme commands)
  * -> write OUTPUT by extension (.obj/.off via the library writers, .png via the renderer) ->
- * human report and/or --stats JSON. A scheme command is one row in the command table
+ * human report and/or --stats JSON. loop --stream replaces run and write by subd_loop_stream into
+ * a sink that writes OUTPUT (subd_stream.c). A scheme command is one row in the command table
  * (subd_commands.c) with a plan and a run function; everything else (options, arena budget,
  * errors, exit codes, output, stats) is shared. subd_tool.h says which file owns what.
  *
@@ -151,9 +152,16 @@ static int run_command(tool_run *r)
             if (!r->work_mem) return tool_out_of_memory();
             a = &r->work;
         }
-        t0 = host_now_ns();
-        st = cmd->run(a, &r->in.mesh, &r->o, &r->out, &r->extra, &d);
-        r->lib_ns += host_now_ns() - t0;
+        if (r->o.stream) {
+            /* loop --stream: the triangles go straight to OUTPUT's sink (subd_stream.c),
+             * which also times the library call */
+            st = tool_stream_run(r, a, &d);
+            if (st > 0) return st;
+        } else {
+            t0 = host_now_ns();
+            st = cmd->run(a, &r->in.mesh, &r->o, &r->out, &r->extra, &d);
+            r->lib_ns += host_now_ns() - t0;
+        }
         if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
         if (r->o.has_budget) {
             r->used = r->in.arena.peak;
@@ -162,7 +170,7 @@ static int run_command(tool_run *r)
         }
     }
 
-    if (r->o.output) {
+    if (r->o.output && !r->o.stream) {
         st = tool_write_output(r);
         if (st != EXIT_OK) return st;
     }

@@ -161,6 +161,8 @@ static int set_flag(const opt_ctx *c)
     else if (strcmp(c->name, "--normals") == 0) o->normals = 1;
     else if (strcmp(c->name, "--no-smooth") == 0) o->no_smooth = 1;
     else if (strcmp(c->name, "--tag-boundary") == 0) o->tag_boundary = 1;
+    else if (strcmp(c->name, "--stream") == 0) o->stream = 1;
+    else if (strcmp(c->name, "--limit") == 0) o->limit = 1;
     else { /* --no-edges */
         o->ropt.edges = 0;
         o->render_opt_given = 1;
@@ -347,8 +349,9 @@ static const tool_option options[] = {
     {"--stats", NULL, NULL, 0, 0, set_flag,
      "print exactly one JSON object on stdout (keys: command, scheme,\n"
      "levels, arithmetic, input, output, arena_budget, arena_planned,\n"
-     "arena_used, time_ms = milliseconds in library calls); the\n"
-     "human report of 'info' then goes to stderr"},
+     "arena_used, time_ms = milliseconds in library calls; --stream adds\n"
+     "stream, limit, triangles, checksum); the human report of 'info'\n"
+     "then goes to stderr"},
     {"--arena", NULL, "BYTES", 0, 0, set_arena,
      "simulate a device arena of BYTES bytes (suffix k = 1024,\n"
      "m = 1048576): exit 3 when the command needs more"},
@@ -368,6 +371,15 @@ static const tool_option options[] = {
      "'fixed I'; vertex numbers 1-based as in OBJ, '#' comments"},
     {"--normals", NULL, NULL, 0, OPT_NORMALS, set_flag,
      "(limit) also write unit limit normals as OBJ vn records"},
+    {"--stream", NULL, NULL, 0, OPT_STREAM, set_flag,
+     "(loop) stream the triangles one at a time (subd_loop_stream), in an\n"
+     "arena set by the level and largest valence only: .stl is written as\n"
+     "they come (memory independent of the output; may be a pipe);\n"
+     ".obj/.off are gathered on the host by vertex id; with --stats, -o\n"
+     "may be left out (a counting sink, for timing)"},
+    {"--limit", NULL, NULL, 0, OPT_STREAM, set_flag,
+     "(loop --stream) limit positions and unit limit normals: OBJ vn\n"
+     "records; STL facets keep the unit normal of the triangle"},
     {"--tol", NULL, "T", 0, OPT_TOL, set_tol,
      "(pia) stop when every limit point is within T of its input vertex"},
     {"--max-iter", NULL, "K", 0, OPT_MAX_ITER, set_max_iter, "(pia) at most K iterations (default 100)"},
@@ -465,17 +477,29 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         o->given |= t->given;
     }
     if (!o->input) return tool_usage_error("'%s' needs an input file", cmd->name);
+    /* --stream and --limit: before the output checks, which depend on them */
+    if (o->stream && !(cmd->options & OPT_STREAM))
+        return tool_usage_error("--stream applies to 'loop' only (not '%s')", cmd->name);
+    if (o->limit && !o->stream)
+        return tool_usage_error("--limit needs --stream (for the limit of a mesh's own vertices: 'subd limit')");
     if (host_format_of(o->input) != HOST_FMT_OBJ && host_format_of(o->input) != HOST_FMT_OFF)
         return tool_usage_error("cannot read '%s': input must be .obj or .off", o->input);
     if (o->output) {
         if (cmd->flags & CMD_OUTPUT_NONE) return tool_usage_error("'%s' writes no output file (no -o)", cmd->name);
         o->out_format = host_format_of(o->output);
         if (o->out_format == HOST_FMT_UNKNOWN)
-            return tool_usage_error("cannot write '%s': output must be .obj, .off, .png or .xyz", o->output);
+            return tool_usage_error("cannot write '%s': output must be .obj, .off, .png, .xyz or .stl", o->output);
         if ((cmd->flags & CMD_PNG_ONLY) && o->out_format != HOST_FMT_PNG)
             return tool_usage_error("'%s' writes a .png picture", cmd->name);
+        if (o->out_format == HOST_FMT_STL && !o->stream)
+            return tool_usage_error("cannot write '%s': .stl is written by 'loop --stream' only", o->output);
+        if (o->stream && (o->out_format == HOST_FMT_PNG || o->out_format == HOST_FMT_XYZ))
+            return tool_usage_error("cannot write '%s': --stream writes .stl, .obj or .off", o->output);
+    } else if (o->stream && o->stats) {
+        /* loop --stream --stats without -o: the counting sink */
     } else if (cmd->flags & CMD_OUTPUT_REQUIRED) {
-        return tool_usage_error("'%s' needs an output file (-o OUTPUT)", cmd->name);
+        return tool_usage_error("'%s' needs an output file (-o OUTPUT%s)", cmd->name,
+                                o->stream ? "; with --stats, --stream may leave it out" : "");
     }
     if (o->render_opt_given && o->out_format != HOST_FMT_PNG)
         return tool_usage_error("picture options (--size, --yaw, --pitch, --no-edges) need a .png output");
@@ -546,7 +570,8 @@ void tool_usage(FILE *f)
     }
     fprintf(f, "\nformats, by extension (any case): .obj and .off are read and written;\n"
                ".png is written (a rendering of the result); .xyz is written as plain 'x y z'\n"
-               "lines, polylines separated by a blank line (for CNC use).\n"
+               "lines, polylines separated by a blank line (for CNC use); .stl (binary STL,\n"
+               "one facet per triangle with its unit normal) is written by loop --stream.\n"
                "\noptions:\n");
     for (i = 0; i < NUM_OPTIONS; i++) {
         const tool_option *t = &options[i];

@@ -6,6 +6,8 @@
  *   subd_commands.c  the command table and the scheme commands' plan and run functions
  *   subd_info.c      the `info` report (topology, valences, bounding box)
  *   subd_write.c     the output writers (.obj/.off, .png, .xyz) and the --stats JSON
+ *   subd_stream.c    loop --stream: the triangle sinks (binary .stl, .obj/.off gathered by
+ *                    vertex id, a counting sink for --stats without -o)
  * Host only (stdio, malloc); never linked into device images.
  */
 #ifndef SUBD_TOOL_H
@@ -59,6 +61,8 @@ typedef struct tool_opts {
     double adapt_val[6];         /* the point (and plane normal), or the chord tolerance  */
     uint32_t adapt_axis;         /* --ramp x|y|z                                          */
     double radius;               /* --radius R (adapt --point)                            */
+    int stream;                  /* --stream (loop): subd_loop_stream, triangles to a sink */
+    int limit;                   /* --limit (loop --stream): limit positions and normals   */
     unsigned given;              /* OPT_* bits of the scheme options given                */
 } tool_opts;
 
@@ -73,6 +77,7 @@ typedef struct tool_opts {
 #define OPT_ALPHA 0x80u /* --order, --kernel, --alpha, --stiffness */
 #define OPT_NO_SMOOTH 0x100u /* --no-smooth */
 #define OPT_ADAPT 0x200u /* --point, --ramp, --plane, --chord, --radius */
+#define OPT_STREAM 0x400u /* --stream, --limit */
 
 /* What a scheme produced besides the output mesh: optional per-vertex normals (written as
  * OBJ vn) and extra --stats members (a JSON fragment without braces, e.g. "iterations":9). */
@@ -142,6 +147,15 @@ int tool_usage_error(const char *fmt, ...);
 int tool_info_report(FILE *f, const tool_run *r);
 int tool_write_output(tool_run *r);
 void tool_print_stats(FILE *f, const tool_run *r);
+
+/* loop --stream (subd_stream.c): streams the input into the sink OUTPUT's format needs (or a
+ * counting sink without -o) in arena a, which holds the plan of tool_loop_opts(o). Returns
+ * SUBD_OK, a subd_status < 0 with *d filled, or an EXIT_* > 0 already reported. */
+int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d);
+
+/* The subd_loop_opts of the loop command (subd_commands.c): --stream --limit sets
+ * SUBD_LOOP_STREAM_LIMIT. */
+subd_loop_opts tool_loop_opts(const tool_opts *o);
 
 /* Errors (subd_main.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);

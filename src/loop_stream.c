@@ -528,13 +528,41 @@ static uint16_t child_vout(const sp_level *p, const uint16_t *fmap, uint32_t s, 
     return map_cc(fmap, f, smallest[i] / 3u, smallest[i] % 3u);
 }
 
-/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. */
+/* The parent faces whose children can touch child c, ascending: c < 3, the faces around
+ * corner c (every face of the child's 1-ring descends from a face at the child's old corner
+ * or at one of its two edges, and both lie at corner c); c = 3, the centre and its edge
+ * neighbours. Returns their number. */
+static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
+{
+    uint32_t n = 0, i, j, cf = p->h->cf;
+    if (c == 3u) {
+        cand[n++] = (uint16_t)cf;
+        for (j = 0; j < 3u; j++)
+            if (p->tw[3u * cf + j] < TW_BORDER) cand[n++] = (uint16_t)(p->tw[3u * cf + j] / 3u);
+    } else {
+        uint32_t he = 0;
+        sp_ring it;
+        ring_begin(p, c, &it);
+        while (ring_step(p, &it, &he) != SUBD_NONE) /* the tail step repeats the last face */
+            if (n == 0u || cand[n - 1u] != he / 3u) cand[n++] = (uint16_t)(he / 3u);
+    }
+    for (i = 1; i < n; i++) { /* insertion sort: a few entries */
+        uint16_t f = cand[i];
+        for (j = i; j > 0u && cand[j - 1u] > f; j--) cand[j] = cand[j - 1u];
+        cand[j] = f;
+    }
+    return n;
+}
+
+/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds NO_SLOT on entry
+ * and on return (only the entries set here are reset); q's slot array, which fill_cache
+ * rewrites afterwards, holds the parent faces and the list of children taken meanwhile. */
 SUBD_NOINLINE static void extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
 {
     const sp_head *ph = p->h;
-    uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0;
+    uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0, ncand, ci;
+    uint16_t *cand = q->slot, *taken;
     for (j = 0; j < ph->nc; j++) smap[j] = NO_SLOT;
-    for (j = 0; j < 4u * ph->nf; j++) fmap[j] = NO_SLOT;
     /* the child's corners, in its corner order: (v_c, m_c, m_c-1) or (m0, m1, m2) */
     if (c < 3u) {
         s[0] = c;
@@ -557,13 +585,18 @@ SUBD_NOINLINE static void extract_child(const sp_level *p, const sp_level *q, ui
         q->vflag[j] = p->cflag[s[j]];
     }
     nv = 3;
-    for (pf = 0; pf < ph->nf; pf++) {
-        uint32_t mask = child_mask(p, pf, c, s);
+    ncand = parent_faces(p, c, cand);
+    taken = cand + ncand;
+    for (ci = 0; ci < ncand; ci++) {
+        uint32_t mask;
+        pf = cand[ci];
+        mask = child_mask(p, pf, c, s);
         for (k = 0; mask != 0u; k++, mask >>= 1) {
             uint32_t x[3];
             if (!(mask & 1u)) continue;
             child_slots(p, pf, k, x);
             fmap[4u * pf + k] = (uint16_t)nf;
+            taken[nf] = (uint16_t)(4u * pf + k);
             for (j = 0; j < 3u; j++) {
                 uint32_t sl = x[j];
                 if (smap[sl] == NO_SLOT) { /* sl is a valid slot: see child_slots */
@@ -580,12 +613,10 @@ SUBD_NOINLINE static void extract_child(const sp_level *p, const sp_level *q, ui
         }
     }
     /* twins and sharp bits (loop.c's refine_level, mapped to the child's faces) */
-    for (pf = 0; pf < ph->nf; pf++)
-        for (k = 0; k < 4u; k++) {
-            uint16_t qf = fmap[4u * pf + k];
-            uint32_t l;
-            if (qf == NO_SLOT) continue;
-            l = 3u * qf;
+    for (ci = 0; ci < nf; ci++) {
+            uint32_t l = 3u * ci;
+            pf = taken[ci] / 4u;
+            k = taken[ci] % 4u;
             if (k == 3u) {
                 for (j = 0; j < 3u; j++) {
                     q->tw[l + j] = map_cc(fmap, pf, (j + 1u) % 3u, 1u);
@@ -600,11 +631,12 @@ SUBD_NOINLINE static void extract_child(const sp_level *p, const sp_level *q, ui
                 q->sh[l + 1u] = 0;
                 q->sh[l + 2u] = (p->sh[h2] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
             }
-        }
+    }
     for (j = 0; j < 3u; j++) q->vout[j] = child_vout(p, fmap, s[j], e[j]);
     q->h->nv = nv;
     q->h->nf = nf;
     q->h->cf = fmap[4u * cf + c];
+    for (ci = 0; ci < nf; ci++) fmap[taken[ci]] = NO_SLOT;
     q->h->child = 0;
     /* lattice coordinates: a corner stays, a new vertex is the midpoint of edge i */
     for (j = 0; j < 3u; j++) {
@@ -655,48 +687,8 @@ typedef struct sp_run {
     uint32_t f;
 } sp_run;
 
-/* The centre's four children at the last level, from the cache. */
-SUBD_NOINLINE static int emit_children(const sp_run *r, const sp_level *p)
-{
-    const sp_head *ph = p->h;
-    uint32_t cf = ph->cf, c, j, e[3], ea[3], eb[3];
-    subd_loop_tri t;
-    for (j = 0; j < 3u; j++) {
-        uint32_t j1 = (j + 1u) % 3u;
-        e[j] = p->slot[3u * cf + j];
-        ea[j] = (ph->ca[j] + ph->ca[j1]) / 2u;
-        eb[j] = (ph->cb[j] + ph->cb[j1]) / 2u;
-    }
-    for (j = 0; j < 9u; j++) t.normal[j / 3u][j % 3u] = 0;
-    for (c = 0; c < 4u; c++) {
-        uint32_t sl[3], a[3], b[3];
-        int st;
-        if (c < 3u) {
-            uint32_t cp = (c + 2u) % 3u;
-            sl[0] = c; a[0] = ph->ca[c]; b[0] = ph->cb[c];
-            sl[1] = e[c]; a[1] = ea[c]; b[1] = eb[c];
-            sl[2] = e[cp]; a[2] = ea[cp]; b[2] = eb[cp];
-        } else {
-            for (j = 0; j < 3u; j++) {
-                sl[j] = e[j];
-                a[j] = ea[j];
-                b[j] = eb[j];
-            }
-        }
-        for (j = 0; j < 3u; j++) {
-            t.pos[j][0] = p->cpos[3u * sl[j]];
-            t.pos[j][1] = p->cpos[3u * sl[j] + 1u];
-            t.pos[j][2] = p->cpos[3u * sl[j] + 2u];
-            t.id[j] = vertex_id(r->in, r->f, a[j], b[j], r->o->levels);
-        }
-        st = r->sink->tri(r->sink->ctx, &t);
-        if (st != 0) return st;
-    }
-    return 0;
-}
-
-/* One emitted triangle from three level-L values and their lattice points. */
-static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint32_t a[3], const uint32_t b[3])
+/* One emitted triangle from three level-L values and their ids. */
+static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint64_t id[3])
 {
     subd_loop_tri t;
     uint32_t j, k;
@@ -705,9 +697,42 @@ static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint32_t
             t.pos[j][k] = x[j][k];
             t.normal[j][k] = 0;
         }
-        t.id[j] = vertex_id(r->in, r->f, a[j], b[j], r->o->levels);
+        t.id[j] = id[j];
     }
     return r->sink->tri(r->sink->ctx, &t);
+}
+
+/* The corners of child k of a triangle whose corners are points 0..2 and whose edge j -> j+1
+ * has point 3 + j: child k < 3 is (v_k, m_k, m_k-1), child 3 is (m0, m1, m2) (loop.c's order). */
+static const uint8_t child_corner[4][3] = {{0, 3, 5}, {1, 4, 3}, {2, 5, 4}, {3, 4, 5}};
+
+/* The centre's four children at the last level (one level in all), from the cache: points
+ * 0..2 the corners' vertex points, 3..5 the edges' new vertices. */
+SUBD_NOINLINE static int emit_children(const sp_run *r, const sp_level *p)
+{
+    const sp_head *ph = p->h;
+    const subd_real *pt[6];
+    uint64_t id[6];
+    uint32_t c, j;
+    for (j = 0; j < 3u; j++) {
+        uint32_t j1 = (j + 1u) % 3u;
+        pt[j] = p->cpos + 3u * j;
+        pt[3u + j] = p->cpos + 3u * p->slot[3u * ph->cf + j];
+        id[j] = vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
+        id[3u + j] = vertex_id(r->in, r->f, (ph->ca[j] + ph->ca[j1]) / 2u, (ph->cb[j] + ph->cb[j1]) / 2u,
+                               r->o->levels);
+    }
+    for (c = 0; c < 4u; c++) {
+        const subd_real *x[3];
+        uint64_t xi[3];
+        int st;
+        for (j = 0; j < 3u; j++) {
+            x[j] = pt[child_corner[c][j]];
+            xi[j] = id[child_corner[c][j]];
+        }
+        if ((st = emit_tri(r, x, xi)) != 0) return st;
+    }
+    return 0;
 }
 
 /* The last two levels at once: the 16 level-L triangles of the centre of level L-2 (p), from
@@ -728,9 +753,10 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
     const sp_head *ph = p->h;
     const subd_real *cp = p->cpos;
     subd_loop_boundary rule = r->o->boundary;
-    uint32_t cf = ph->cf, i, j, c, g, sm[3], ma[3], mb[3];
+    uint32_t cf = ph->cf, i, j, c, sm[3];
     subd_real ve[3][3], vm[3][3], h1[3][3], h2[3][3], in[3][3];
-    uint32_t pa[5][3], pb[5][3]; /* lattice points: corners, m, h1, h2, in (index 0..4) */
+    const subd_real *pt[15];
+    uint64_t id[15];
     for (i = 0; i < 3u; i++) {
         vertex_point(p, i, 1, wc, ovf, ve[i], 0);
         sm[i] = p->slot[3u * cf + i];
@@ -786,61 +812,42 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
         loop_rule_edge(in[j], cp + 3u * sm[j], cp + 3u * sm[(j + 2u) % 3u], cp + 3u * j, cp + 3u * sm[(j + 1u) % 3u],
                        ovf);
     if (*ovf) return SUBD_ERR_RANGE;
+    /* the 15 points and their ids, once: 0..2 corners, 3..5 m, 6..8 h1, 9..11 h2, 12..14 in */
     for (i = 0; i < 3u; i++) {
-        uint32_t i1 = (i + 1u) % 3u;
-        pa[0][i] = ph->ca[i];
-        pb[0][i] = ph->cb[i];
-        ma[i] = (ph->ca[i] + ph->ca[i1]) / 2u;
-        mb[i] = (ph->cb[i] + ph->cb[i1]) / 2u;
-        pa[1][i] = ma[i];
-        pb[1][i] = mb[i];
-        pa[2][i] = (ph->ca[i] + ma[i]) / 2u;
-        pb[2][i] = (ph->cb[i] + mb[i]) / 2u;
-        pa[3][i] = (ma[i] + ph->ca[i1]) / 2u;
-        pb[3][i] = (mb[i] + ph->cb[i1]) / 2u;
+        uint32_t i1 = (i + 1u) % 3u, ip = (i + 2u) % 3u, lv = r->o->levels;
+        uint32_t mai = (ph->ca[i] + ph->ca[i1]) / 2u, mbi = (ph->cb[i] + ph->cb[i1]) / 2u;
+        uint32_t map = (ph->ca[ip] + ph->ca[i]) / 2u, mbp = (ph->cb[ip] + ph->cb[i]) / 2u;
+        pt[i] = ve[i];
+        pt[3u + i] = vm[i];
+        pt[6u + i] = h1[i];
+        pt[9u + i] = h2[i];
+        pt[12u + i] = in[i];
+        id[i] = vertex_id(r->in, r->f, ph->ca[i], ph->cb[i], lv);
+        id[3u + i] = vertex_id(r->in, r->f, mai, mbi, lv);
+        id[6u + i] = vertex_id(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv);
+        id[9u + i] = vertex_id(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv);
+        id[12u + i] = vertex_id(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv);
     }
-    for (i = 0; i < 3u; i++) {
-        uint32_t ip = (i + 2u) % 3u;
-        pa[4][i] = (ma[i] + ma[ip]) / 2u;
-        pb[4][i] = (mb[i] + mb[ip]) / 2u;
-    }
-    /* child c: corners x (level L-1) and the points e on its edges x_k -> x_k+1, each with
-     * its lattice point; then its children in subd_loop's order */
+    /* child c of the centre as points: its corners and, on its edges j -> j+1, the new
+     * points; then its children in subd_loop's order (child_corner) */
     for (c = 0; c < 4u; c++) {
-        const subd_real *x[3], *e[3];
-        uint32_t xa_[3], xb_[3], ea[3], eb[3];
+        uint32_t cpr = (c + 2u) % 3u, g, six[6];
         if (c < 3u) {
-            uint32_t cp_ = (c + 2u) % 3u;
-            x[0] = ve[c]; xa_[0] = pa[0][c]; xb_[0] = pb[0][c];
-            x[1] = vm[c]; xa_[1] = pa[1][c]; xb_[1] = pb[1][c];
-            x[2] = vm[cp_]; xa_[2] = pa[1][cp_]; xb_[2] = pb[1][cp_];
-            e[0] = h1[c]; ea[0] = pa[2][c]; eb[0] = pb[2][c];
-            e[1] = in[c]; ea[1] = pa[4][c]; eb[1] = pb[4][c];
-            e[2] = h2[cp_]; ea[2] = pa[3][cp_]; eb[2] = pb[3][cp_];
+            six[0] = c; six[1] = 3u + c; six[2] = 3u + cpr;
+            six[3] = 6u + c; six[4] = 12u + c; six[5] = 9u + cpr;
         } else {
-            for (i = 0; i < 3u; i++) {
-                uint32_t i1 = (i + 1u) % 3u;
-                x[i] = vm[i]; xa_[i] = pa[1][i]; xb_[i] = pb[1][i];
-                e[i] = in[i1]; ea[i] = pa[4][i1]; eb[i] = pb[4][i1];
-            }
+            six[0] = 3u; six[1] = 4u; six[2] = 5u;
+            six[3] = 13u; six[4] = 14u; six[5] = 12u;
         }
         for (g = 0; g < 4u; g++) {
             const subd_real *y[3];
-            uint32_t ya[3], yb[3];
+            uint64_t yi[3];
             int st;
-            if (g < 3u) {
-                uint32_t gp = (g + 2u) % 3u;
-                y[0] = x[g]; ya[0] = xa_[g]; yb[0] = xb_[g];
-                y[1] = e[g]; ya[1] = ea[g]; yb[1] = eb[g];
-                y[2] = e[gp]; ya[2] = ea[gp]; yb[2] = eb[gp];
-            } else {
-                for (i = 0; i < 3u; i++) {
-                    y[i] = e[i];
-                    ya[i] = ea[i];
-                    yb[i] = eb[i];
-                }
+            for (j = 0; j < 3u; j++) {
+                y[j] = pt[six[child_corner[g][j]]];
+                yi[j] = id[six[child_corner[g][j]]];
             }
-            if ((st = emit_tri(r, y, ya, yb)) != 0) return st;
+            if ((st = emit_tri(r, y, yi)) != 0) return st;
         }
     }
     return 0;
@@ -918,6 +925,7 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
     }
     smap = (uint16_t *)(void *)(base + lay.smap);
     fmap = (uint16_t *)(void *)(base + lay.fmap);
+    for (f = 0; f < 4u * cap_f(3u * lay.n); f++) fmap[f] = NO_SLOT; /* extract_child keeps it so */
     wc.have = 0;
     levels = o->levels;
     limit = (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u;

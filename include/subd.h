@@ -15,7 +15,22 @@
 #include "subd_config.h"
 #include "subd_real.h"
 
-#define SUBD_VERSION "0.1.0"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Version (semantic versioning; CHANGELOG.md). Before 1.0 a minor release may change the API
+ * and the arena layout (plans may grow or shrink) and golden output only where the changelog
+ * says so; a patch release changes neither API, plans nor output bits. From 1.0 on, output
+ * bits and plans change only in a major release. */
+#define SUBD_VERSION_MAJOR 0
+#define SUBD_VERSION_MINOR 2
+#define SUBD_VERSION_PATCH 0
+#define SUBD_VERSION_NUMBER (SUBD_VERSION_MAJOR * 10000 + SUBD_VERSION_MINOR * 100 + SUBD_VERSION_PATCH)
+#define SUBD_VERSION "0.2.0"
+
+/* SUBD_VERSION_NUMBER of the library linked (compare with the header's to catch a mismatch). */
+uint32_t subd_version(void);
 
 /* ------------------------------------------------------------------------------------ */
 /* Status codes. 0 is success; every error is negative and specific.                     */
@@ -254,6 +269,10 @@ int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 /* OBJ with one normal per vertex (3 * num_verts; `vn` records, faces as `f a//a ...`). */
 int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len);
+
+#ifdef __cplusplus
+}
+#endif
 
 #include "subd_loop.h"
 #include "subd_quasi48.h"

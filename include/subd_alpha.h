@@ -37,6 +37,10 @@
 #include <stdint.h>
 #include "subd.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum subd_alpha_kernel {
     SUBD_ALPHA_BSPLINE = 0,
     SUBD_ALPHA_COS = 1,
@@ -180,5 +184,9 @@ int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint3
  * SUBD_ERR_TOO_BIG. Stack: about 400 bytes. Work: O(output corners) per level. */
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

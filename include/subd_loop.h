@@ -5,6 +5,10 @@
 #ifndef SUBD_LOOP_H
 #define SUBD_LOOP_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Boundary (and crease) rules, named after where they come from. */
 typedef enum subd_loop_boundary {
     /* Paper, section 4: boundary vertex 3/4 v + 1/8 (c0 + c1); boundary edge midpoint when
@@ -259,5 +263,9 @@ int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
  * on success only V stays in the arena. */
 int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_real **pos,
              subd_pia_result *result, subd_diag *d);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,10 @@
 
 #include "subd.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Largest number of binary steps one call accepts. Two binary steps make one 4-8
  * refinement (face count x4, like one Loop level), hence twice SUBD_MAX_LEVELS. */
 #define SUBD_Q48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
@@ -100,5 +104,9 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
  * 440 / 456 bytes on Cortex-M4F / M3, plus at most 72 in the edge sort). */
 int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out,
                  subd_diag *d);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -21,6 +21,10 @@
 #include <stdint.h>
 #include "subd_config.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #if SUBD_FIXED
 
 typedef int32_t subd_real;
@@ -194,5 +198,9 @@ subd_real subd_sqrt(subd_real x);
 
 /* Integer square root of x rounded to nearest (saturating at 2^32 - 1), digit by digit. */
 uint32_t subd_isqrt64(uint64_t x);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -26,6 +26,10 @@
 
 #include "subd.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Binary levels above level 0 one hierarchy can hold (two per 4-8 refinement). */
 #define SUBD_SR48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
 
@@ -216,5 +220,9 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * arena is rewound and *out and *rep untouched. */
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

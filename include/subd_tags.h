@@ -21,6 +21,10 @@
 
 #include "subd.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* What a tag file holds (or, on failure, what the failing line named). */
 typedef struct subd_tags_report {
     uint32_t creases;     /* crease lines (an edge named twice counts twice)              */
@@ -46,5 +50,9 @@ int subd_tags_check(const char *buf, uint32_t len, const subd_mesh *m, subd_tags
  * the tag bits in m (existing tags are kept; tags are only ever added). Same returns; on
  * any failure m is unchanged. */
 int subd_tags_apply(const char *buf, uint32_t len, subd_mesh *m, subd_tags_report *report, subd_diag *diag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,5 +1,8 @@
-/* Status codes as text, for messages. */
+/* SPDX-License-Identifier: MIT */
+/* Status codes as text, for messages; the library's version. */
 #include "subd.h"
+
+uint32_t subd_version(void) { return (uint32_t)SUBD_VERSION_NUMBER; }
 
 const char *subd_status_str(int status)
 {

@@ -34,7 +34,9 @@ typedef enum subd_status {
     SUBD_ERR_ORIENTATION = -10,   /* two faces traverse a shared edge in the same direction */
     SUBD_ERR_NONMANIFOLD_VERTEX = -11, /* a vertex's faces form more than one fan (bow-tie) */
     SUBD_ERR_TOO_BIG = -12,       /* counts whose sizes do not fit 32-bit arithmetic       */
-    SUBD_ERR_EMPTY = -13          /* the input has no vertices or no faces where needed   */
+    SUBD_ERR_EMPTY = -13,         /* the input has no vertices or no faces where needed   */
+    SUBD_ERR_NOT_TRIANGLES = -14, /* a triangle-only scheme got a polygon (diag.face: the first) */
+    SUBD_ERR_ARITH = -15          /* subd_selfcheck: float arithmetic is not the reference's  */
 } subd_status;
 
 /* A short, constant English description of a status ("non-manifold edge"). */
@@ -246,6 +248,14 @@ int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *dia
 int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
 int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
 int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
+
+/* The 1-based line, in the buffer a mesh was read from, of the input element a later call
+ * names in diag (diag.face, else diag.polyline (OBJ), else diag.vertex, numbered as the reader
+ * numbers them), e.g. the face of a SUBD_ERR_NOT_TRIANGLES from a triangle scheme. 0 when the
+ * diag names no element, the buffer has no such element or does not parse. No arena; one
+ * scan of the buffer (two for OFF). */
+uint32_t subd_obj_line_of(const char *buf, uint32_t len, const subd_diag *diag);
+uint32_t subd_off_line_of(const char *buf, uint32_t len, const subd_diag *diag);
 
 /* Writers: write the mesh as text into buf[0..cap). *len receives the number of bytes
  * written. With buf == NULL (or cap too small) nothing is written, *len receives the exact

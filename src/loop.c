@@ -178,6 +178,7 @@ static int mesh_ok(const subd_mesh *m)
 
 int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d)
 {
+    int st;
     if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
@@ -185,7 +186,7 @@ int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags
     if (o->flags & ~flags) return subd_fail(d, SUBD_ERR_PARAM);
     if (in->face_start[0] != 0u || in->face_start[in->num_faces] != in->num_corners)
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
+    if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     return SUBD_OK;
 }
 

@@ -37,9 +37,9 @@ int subd_require_triangles(const subd_mesh *m, subd_diag *d)
     uint32_t f;
     for (f = 0; f < m->num_faces; f++) {
         if (subd_face_size(m, f) != 3u) {
-            if (!d) return SUBD_ERR_FACE_SIZE;
+            if (!d) return SUBD_ERR_NOT_TRIANGLES;
             d->face = f;
-            return subd_fail(d, SUBD_ERR_FACE_SIZE);
+            return subd_fail(d, SUBD_ERR_NOT_TRIANGLES);
         }
     }
     return SUBD_OK;

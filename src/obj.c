@@ -183,6 +183,11 @@ int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     return subd_reader_read(&obj_reader, arena, buf, len, out, diag);
 }
 
+uint32_t subd_obj_line_of(const char *buf, uint32_t len, const subd_diag *diag)
+{
+    return subd_reader_line_of(&obj_reader, buf, len, diag);
+}
+
 static void obj_xyz(text_sink *k, const char *kw, const subd_real *p)
 {
     subd_sink_str(k, kw);

@@ -145,6 +145,11 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
     return subd_reader_read(&off_reader, arena, buf, len, out, diag);
 }
 
+uint32_t subd_off_line_of(const char *buf, uint32_t len, const subd_diag *diag)
+{
+    return subd_reader_line_of(&off_reader, buf, len, diag);
+}
+
 static void off_emit(const subd_mesh *m, const subd_real *normals, text_sink *k)
 {
     (void)normals;

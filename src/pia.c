@@ -200,7 +200,7 @@ static int pia_tol_ok(subd_real tol)
 #endif
 }
 
-/* PARAM (pointers, options, a mesh without adjacency), then FACE_SIZE (diag.face). */
+/* PARAM (pointers, options, a mesh without adjacency), then NOT_TRIANGLES (diag.face). */
 static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
 {
     if (!in || !o || !in->pos || !in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||

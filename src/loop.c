@@ -67,6 +67,7 @@
  * output arrays. No other scratch: the per-vertex class is a private tag bit plus a
  * valence byte of the intermediate levels.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"

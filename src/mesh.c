@@ -10,6 +10,7 @@
  * corner's vertex in the same face; vert_out[v] is v's boundary half-edge when v is on a
  * boundary, so one walk from it visits v's whole fan in order.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "layout.h"
 #include "entry.h"

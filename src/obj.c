@@ -11,6 +11,7 @@
  * Validation errors found after parsing (repeated vertex, non-manifold, orientation) name a
  * face or vertex; the reader turns that back into a line by rescanning, which costs no memory.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "text.h"
 

@@ -9,6 +9,7 @@
  * 8) are rejected on the header line before anything is allocated.
  * As in obj.c, one scan serves plan and read (reader.c).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "text.h"
 

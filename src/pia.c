@@ -141,6 +141,7 @@
  * subd_loop_limit_apply's. Work per iteration: one application of L, O(corners), plus
  * O(vertices); an SGS step does 1.5 applications' worth (three half-row passes).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"

@@ -44,6 +44,7 @@
  * parent's (q48_link_twins) and its fans from its corners (q48_fans); both give exactly the
  * arrays, tags and counts the builder would give, in O(C).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "subd_quasi48.h"
 #include "edge_sort.h"

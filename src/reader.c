@@ -3,6 +3,7 @@
  * mesh builder's validation runs on them. Parsing straight into the final arrays keeps the
  * peak at one mesh; a validation error names an element, which the format maps back to its
  * line by rescanning, so no per-element line table is ever stored. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "entry.h"
 

@@ -32,6 +32,7 @@
  * once to count the clusters (the output sizes depend on them; same memory as
  * subd_sr48_count_clusters), once above the allocated output.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_internal.h"
 #include "mesh_internal.h"
 #include "entry.h"

@@ -1,4 +1,5 @@
 /* Status codes as text, for messages. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 
 const char *subd_status_str(int status)

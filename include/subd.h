@@ -42,6 +42,16 @@ typedef enum subd_status {
 /* A short, constant English description of a status ("non-manifold edge"). */
 const char *subd_status_str(int status);
 
+/* Run-time check that this build, on this machine, computes the arithmetic every other build
+ * computes, so its output is bit-identical to the host's; for firmware to call at start-up
+ * (src/selfcheck.c). Float32: every product rounded before it is added (no fused multiply-add
+ * from contraction, which the library's sources turn off whatever the compiler flags, see
+ * src/fp_contract.h; no excess precision), round to nearest with ties to even (the FPU's
+ * rounding mode), subnormals kept (no flush-to-zero, e.g. FPSCR.FZ on Cortex-M). Q16.16:
+ * products round ties towards +infinity, >> on negative values is arithmetic. Returns SUBD_OK
+ * or SUBD_ERR_ARITH. A few dozen operations; no memory, no state. */
+int subd_selfcheck(void);
+
 /* Diagnostics filled by every call that can fail. Fields that do not apply are 0 or
  * SUBD_NONE. line is 1-based and set by the text readers; face/vertex name the offending
  * element (0-based) for validation errors; bytes_needed is set on SUBD_ERR_NOMEM. */

@@ -35,24 +35,34 @@ HOST_FLAGS_host-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O1 -g $(SAN)
 HOST_FLAGS_tool-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 -g
 HOST_FLAGS_tool-fixed := -DSUBD_HOST=1 -DSUBD_FIXED=1 -O2 -g
 HOST_FLAGS_bench-float := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2
+# host-gnu: the library and the host tests built as an integrator might: gcc's default
+# -std=gnu11 (which means -ffp-contract=fast), no -ffp-contract=off, and FMA instructions
+# available (-march=haswell on x86). Its hashes must equal host-float's (src/fp_contract.h).
+GNU_WARN := -std=gnu11 -Wall -Wextra -Werror -Wshadow -Wvla -Wdouble-promotion -Wstrict-prototypes \
+            -Wmissing-prototypes
+GNU_MARCH := $(if $(filter x86_64 i686 i386,$(shell uname -m)),-march=haswell,)
+WARN_host-gnu := $(GNU_WARN)
+HOST_FLAGS_host-gnu := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 $(GNU_MARCH)
+# Runs host-gnu's tests only where the CPU can execute them.
+GNU_RUNS := [ -z "$(GNU_MARCH)" ] || { grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; } 2>/dev/null
 HOST_TEST_PORT := port/host/test_port.c port/print.c port/host/png.c port/host/render.c
 TOOL_PORT      := port/host/subd_main.c port/host/subd_options.c port/host/subd_commands.c port/host/subd_info.c port/host/subd_write.c port/host/subd_stream.c port/host/fileio.c port/host/png.c port/host/render.c
 
 define host_variant
 $(B)/$(1)/src/%.o: src/%.c $(MK) | dirs
-	$(HOST_CC) $(WARN) $(SRC_WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+	$(HOST_CC) $(if $(WARN_$(1)),$(WARN_$(1)),$(WARN)) $(SRC_WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
 $(B)/$(1)/test/%.o: test/%.c $(MK) | dirs $(GEN)
-	$(HOST_CC) $(WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+	$(HOST_CC) $(if $(WARN_$(1)),$(WARN_$(1)),$(WARN)) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
 $(B)/$(1)/port/%.o: port/%.c $(MK) | dirs
-	$(HOST_CC) $(WARN) $(INC) -Iport/host $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+	$(HOST_CC) $(if $(WARN_$(1)),$(WARN_$(1)),$(WARN)) $(INC) -Iport/host $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
 $(B)/$(1)/bench/%.o: bench/%.c $(MK) | dirs
-	$(HOST_CC) $(WARN) $(INC) -Iport/host $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+	$(HOST_CC) $(if $(WARN_$(1)),$(WARN_$(1)),$(WARN)) $(INC) -Iport/host $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
 $(B)/$(1)/gen/%.o: $(B)/gen/%.c $(MK) | dirs $(GEN)
-	$(HOST_CC) $(WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+	$(HOST_CC) $(if $(WARN_$(1)),$(WARN_$(1)),$(WARN)) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
 $(B)/$(1)/test-fail.o: test/test_harness.c $(MK) | dirs $(GEN)
-	$(HOST_CC) $(WARN) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
+	$(HOST_CC) $(if $(WARN_$(1)),$(WARN_$(1)),$(WARN)) $(INC) $(DEP) $(HOST_FLAGS_$(1)) -DH_INJECT_FAILURE=1 -c $$< -o $$@
 endef
-HOST_VARIANTS := host-float host-fixed tool-float tool-fixed bench-float
+HOST_VARIANTS := host-float host-fixed tool-float tool-fixed bench-float host-gnu
 $(foreach v,$(HOST_VARIANTS),$(eval $(call host_variant,$(v))))
 
 host_test_objs = $(SRC:%.c=$(B)/$(1)/%.o) $(TEST_SRC:%.c=$(B)/$(1)/%.o) \
@@ -61,6 +71,8 @@ $(B)/host-float/test.elf: $(call host_test_objs,host-float)
 	$(HOST_CC) $(SAN) $^ -lm -o $@
 $(B)/host-fixed/test.elf: $(call host_test_objs,host-fixed)
 	$(HOST_CC) $(SAN) $^ -lm -o $@
+$(B)/host-gnu/test.elf: $(call host_test_objs,host-gnu)
+	$(HOST_CC) $^ -lm -o $@
 $(B)/bin/subd: $(SRC:%.c=$(B)/tool-float/%.o) $(TOOL_PORT:%.c=$(B)/tool-float/%.o)
 	$(HOST_CC) $^ -lm -o $@
 $(B)/bin/subd-fixed: $(SRC:%.c=$(B)/tool-fixed/%.o) $(TOOL_PORT:%.c=$(B)/tool-fixed/%.o)
@@ -75,6 +87,7 @@ CM_CC   := arm-none-eabi-gcc
 CM_AR   := arm-none-eabi-ar
 CM_NM   := arm-none-eabi-nm
 CM_SIZE := arm-none-eabi-size
+CM_OBJDUMP := arm-none-eabi-objdump
 # Stack use per function is bounded at compile time (-Wstack-usage) on the device.
 CM_FLAGS := $(WARN) -O2 -g -ffunction-sections -fdata-sections -fstack-usage -Wstack-usage=1024
 ARCH_m4f-float  := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
@@ -120,6 +133,13 @@ $(1)-images: $(B)/$(1)/test.elf $(B)/$(1)/test-fail.elf $(foreach n,0 1 2 3,$(B)
 endef
 $(foreach v,m4f-float m3-fixed,$(eval $(call cm_variant,$(v))))
 
+# m4f-gnu: the M4F library as an integrator might build it (-std=gnu11 -O2, no
+# -ffp-contract=off); test/contract_proofs.sh requires zero fused multiply-adds in it.
+$(B)/m4f-gnu/src/%.o: src/%.c $(MK) | dirs
+	$(CM_CC) $(ARCH_m4f-float) $(GNU_WARN) $(SRC_WARN) -O2 -DSUBD_FIXED=0 $(INC) $(DEP) -c $< -o $@
+$(B)/m4f-gnu/libsubd.a: $(SRC:%.c=$(B)/m4f-gnu/%.o)
+	rm -f $@ && $(CM_AR) rcs $@ $^
+
 $(B)/host-float/test-fail.elf: $(filter-out $(B)/host-float/test/test_harness.o,$(call host_test_objs,host-float)) $(B)/host-float/test-fail.o
 	$(HOST_CC) $(SAN) $^ -lm -o $@
 
@@ -135,7 +155,7 @@ $(B)/gen/readme_example.c: README.md | dirs
 	awk '/^<!-- embed-example/{f=1;next} f&&/^```c/{g=1;next} g&&/^```/{exit} g{print}' $< > $@
 	@test -s $@ || { echo "README.md: embed-example block not found" >&2; exit 1; }
 
-VARIANTS := $(HOST_VARIANTS) m4f-float m3-fixed
+VARIANTS := $(HOST_VARIANTS) m4f-float m3-fixed m4f-gnu
 dirs:
 	@mkdir -p $(B)/gen $(B)/bin $(B)/logs $(B)/bench $(foreach v,$(VARIANTS),$(B)/$(v)/src $(B)/$(v)/test \
 	    $(B)/$(v)/port/host $(B)/$(v)/port/cortex-m $(B)/$(v)/gen $(B)/$(v)/bench)
@@ -161,7 +181,8 @@ test: deps
 	@$(MAKE) --no-print-directory test-run
 
 test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/test-fail.elf \
-            m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool
+            m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool \
+            $(B)/host-gnu/test.elf $(B)/m4f-gnu/libsubd.a
 
 test-run:
 	@rm -rf $(L) && mkdir -p $(L)
@@ -171,6 +192,13 @@ test-run:
 	@test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf 600
 	@test/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
 	@test/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
+	@if $(GNU_RUNS); then \
+	    test/run_suite.sh "host-gnu tests (gnu11 -O2 $(GNU_MARCH))" $(L)/host-gnu.log $(B)/host-gnu/test.elf; \
+	    test/run_suite.sh "hashes host-float = host-gnu" $(L)/hash-gnu.log test/compare_hashes.sh \
+	        $(L)/host-float.log $(L)/host-gnu.log float32; \
+	else echo "== host-gnu tests: skipped (this CPU cannot run $(GNU_MARCH) code: no AVX2/FMA)"; fi
+	@test/run_suite.sh "contraction proofs (gnu11 builds)" $(L)/contract.log test/contract_proofs.sh \
+	    $(CM_OBJDUMP) $(B)/m4f-gnu/libsubd.a $(B)/host-gnu/src
 	@test/run_suite.sh "link proofs m4f-float" $(L)/link-m4f.log test/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
 	@test/run_suite.sh "link proofs m3-fixed" $(L)/link-m3.log test/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
 	@test/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/harness_selftest.sh mps2-an386 $(B)/m4f-float

@@ -49,11 +49,23 @@ typedef enum subd_status {
     SUBD_ERR_ORIENTATION = -10,   /* two faces traverse a shared edge in the same direction */
     SUBD_ERR_NONMANIFOLD_VERTEX = -11, /* a vertex's faces form more than one fan (bow-tie) */
     SUBD_ERR_TOO_BIG = -12,       /* counts whose sizes do not fit 32-bit arithmetic       */
-    SUBD_ERR_EMPTY = -13          /* the input has no vertices or no faces where needed   */
+    SUBD_ERR_EMPTY = -13,         /* the input has no vertices or no faces where needed   */
+    SUBD_ERR_NOT_TRIANGLES = -14, /* a triangle-only scheme got a polygon (diag.face: the first) */
+    SUBD_ERR_ARITH = -15          /* subd_selfcheck: float arithmetic is not the reference's  */
 } subd_status;
 
 /* A short, constant English description of a status ("non-manifold edge"). */
 const char *subd_status_str(int status);
+
+/* Run-time check that this build, on this machine, computes the arithmetic every other build
+ * computes, so its output is bit-identical to the host's; for firmware to call at start-up
+ * (src/selfcheck.c). Float32: every product rounded before it is added (no fused multiply-add
+ * from contraction, which the library's sources turn off whatever the compiler flags, see
+ * src/fp_contract.h; no excess precision), round to nearest with ties to even (the FPU's
+ * rounding mode), subnormals kept (no flush-to-zero, e.g. FPSCR.FZ on Cortex-M). Q16.16:
+ * products round ties towards +infinity, >> on negative values is arithmetic. Returns SUBD_OK
+ * or SUBD_ERR_ARITH. A few dozen operations; no memory, no state. */
+int subd_selfcheck(void);
 
 /* Diagnostics filled by every call that can fail. Fields that do not apply are 0 or
  * SUBD_NONE. line is 1-based and set by the text readers; face/vertex name the offending
@@ -261,6 +273,14 @@ int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *dia
 int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
 int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
 int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
+
+/* The 1-based line, in the buffer a mesh was read from, of the input element a later call
+ * names in diag (diag.face, else diag.polyline (OBJ), else diag.vertex, numbered as the reader
+ * numbers them), e.g. the face of a SUBD_ERR_NOT_TRIANGLES from a triangle scheme. 0 when the
+ * diag names no element, the buffer has no such element or does not parse. No arena; one
+ * scan of the buffer (two for OFF). */
+uint32_t subd_obj_line_of(const char *buf, uint32_t len, const subd_diag *diag);
+uint32_t subd_off_line_of(const char *buf, uint32_t len, const subd_diag *diag);
 
 /* Writers: write the mesh as text into buf[0..cap). *len receives the number of bytes
  * written. With buf == NULL (or cap too small) nothing is written, *len receives the exact

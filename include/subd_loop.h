@@ -29,7 +29,7 @@ typedef struct subd_loop_opts {
 } subd_loop_opts;
 
 /* Exact arena bytes subd_loop needs for this input and options. The input must be an
- * all-triangle mesh (SUBD_ERR_FACE_SIZE otherwise) with adjacency (twin, vert_out: a mesh
+ * all-triangle mesh (SUBD_ERR_NOT_TRIANGLES otherwise) with adjacency (twin, vert_out: a mesh
  * from the builder or readers, or a subd_loop output made with SUBD_LOOP_ADJACENCY;
  * SUBD_ERR_PARAM otherwise). The intermediate levels live inside the output block (level
  * L-1 where face_start and corner_face go, which are written last), so the plan is the
@@ -93,7 +93,7 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
  * face_start, corner_vert, corner_face, vert_tag and edge_tag, and twin/vert_out are NULL;
  * with it the output equals subd_mesh_build of its own face list (plus the crease and
  * corner tags). Rules, regular/extraordinary classification and memory layout: src/loop.c.
- * Errors: SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE, SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM
+ * Errors: SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM
  * (diag.bytes_needed), SUBD_ERR_RANGE (fixed-point overflow). On failure the arena is back
  * where it was and *out is untouched. Every rule is a convex combination whose Q16.16
  * weights sum to exactly 1, so RANGE cannot occur in Q16.16; in float32 it means a sum
@@ -125,7 +125,7 @@ typedef struct subd_loop_sink {
 /* Exact arena bytes subd_loop_stream needs: a function of the level count, the largest
  * valence of the input (neighbours per vertex, at least 6 is assumed) and the LIMIT flag
  * only, never of the number of faces; SUBD_LOOP_STREAM_BYTES gives the same number at compile
- * time. Validates like subd_loop (SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE); SUBD_ERR_TOO_BIG when
+ * time. Validates like subd_loop (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES); SUBD_ERR_TOO_BIG when
  * a valence exceeds SUBD_LOOP_STREAM_MAX_VALENCE. Work O(corners), no arena use. */
 int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
 
@@ -235,7 +235,7 @@ typedef struct subd_pia_result {
  * subd_reals (V, L V); FAST 6 such arrays (V, L V, search direction, L of it, two for the
  * preconditioner) plus two subd_reals and one byte per vertex, each rounded up to
  * SUBD_ARENA_ALIGN. Validates like
- * subd_pia (SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE, SUBD_ERR_TOO_BIG). */
+ * subd_pia (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG). */
 int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
 
 /* Control positions V (3 * num_verts, in the arena) whose Loop limit surface passes through
@@ -256,7 +256,7 @@ int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
  * tol: float32 any positive finite value; Q16.16 at least 2 LSB (2^-15): L's rounding floor
  * is about 1 LSB per coordinate, sqrt(3) LSB in norm.
  * Errors: SUBD_ERR_PARAM (NULL pointer, mesh without adjacency, bad boundary or method,
- * max_iter == 0, tol not positive, NaN/inf or below the Q16.16 minimum), SUBD_ERR_FACE_SIZE
+ * max_iter == 0, tol not positive, NaN/inf or below the Q16.16 minimum), SUBD_ERR_NOT_TRIANGLES
  * (diag.face: the first non-triangle), SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM (diag.bytes_needed),
  * SUBD_ERR_RANGE (a control point or error leaves the Q16.16 range, or is not finite in
  * float32). On failure the arena is back where it was and *pos and *result are untouched;

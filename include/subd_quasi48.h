@@ -68,7 +68,7 @@ typedef struct subd_q48_opts {
  * step, so the measured peak equals the plan except in that case. subd_quasi48 refuses to
  * start unless that many bytes are free, so the run can never exceed the plan. Returns
  * SUBD_OK, SUBD_ERR_PARAM (NULL, steps or len_bits out of range, input without adjacency),
- * SUBD_ERR_FACE_SIZE (a non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG (the
+ * SUBD_ERR_NOT_TRIANGLES (a non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG (the
  * bound does not fit 32-bit sizes). */
 int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes);
 

@@ -1,8 +1,9 @@
 /* tinysubd scalar layer: subd_real is IEEE float32 or signed Q16.16, chosen by SUBD_FIXED.
  *
  * One algorithm source is written against these operations; both builds give the same
- * results on a PC and on a Cortex-M (float: IEEE single with -ffp-contract=off, so no fused
- * multiply-add; fixed: integer arithmetic only).
+ * results on a PC and on a Cortex-M (float: IEEE single, every product rounded: no fused
+ * multiply-add, whatever the compiler flags, by src/fp_contract.h's pragmas; fixed: integer
+ * arithmetic only). subd_selfcheck() (subd.h) tests this at run time.
  *
  * Scaling and overflow contract (Q16.16):
  *   - a subd_real r stands for r / 65536; range [-32768, 32768 - 2^-16].

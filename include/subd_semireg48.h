@@ -92,7 +92,7 @@ typedef struct subd_sr48 {
  * and a count: 28 bytes in Q16.16, whose sums are exact 64-bit integers, 16 in float32; so
  * the two arithmetics have different plans).
  * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps out of range, unknown flag bits, input
- * without adjacency, clusters more than half the faces), SUBD_ERR_FACE_SIZE (a
+ * without adjacency, clusters more than half the faces), SUBD_ERR_NOT_TRIANGLES (a
  * non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG. */
 int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes);
 

@@ -22,6 +22,7 @@
  * the ones that grow the sequence go backwards, the others forwards (each loop's comment
  * says why no unread point is overwritten).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "alpha_internal.h"
 #include "layout.h"
 #include "entry.h"

@@ -13,6 +13,7 @@
  * Everything is integer arithmetic: the same bits on every target, and no float code at all
  * in the Q16.16 build (the float conversion below builds the IEEE bit pattern by hand).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "alpha_internal.h"
 
 #define TWOPI_Q60 INT64_C(0x6487ed5110b4611a) /* round(2 pi 2^60) */

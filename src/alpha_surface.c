@@ -41,6 +41,7 @@
  * last step's arrays remain. C keeps its index maps in the new mesh's twin and corner_face
  * arrays before the validator fills them, so it needs no scratch of its own.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "alpha_internal.h"
 #include "entry.h"
 #include "real_avg.h"

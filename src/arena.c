@@ -4,6 +4,7 @@
  * bytes, so the bytes an operation uses depend only on its input, never on where the
  * buffer lives. That is what makes a plan computed on a PC valid on the device.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 
 #define ALIGN_MASK ((uint32_t)SUBD_ARENA_ALIGN - 1u)

@@ -12,6 +12,7 @@
  * per component; with that the squared comparison fits in 64 bits. The angle is then
  * resolved to about 1e-3 radians (0.06 degrees), which is ample for a feature threshold.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 #include "vec3w.h"
 

@@ -36,6 +36,7 @@
  *  - Triangles: a face's corners are 3f..3f+2, so next/previous half-edge is arithmetic
  *    on h instead of two dependent loads (corner_face, face_start) per ring step.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "edge_sort.h"
 #include "vec3w.h" /* subd_bitlen64 */
 

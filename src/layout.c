@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* subd_layout_take: count-or-carve for the one-walk layout functions (see layout.h). Kept
  * out of line: it is called once per array, never in an inner loop. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h"
 
 void *subd_layout_take(subd_layout *l, uint32_t count, uint32_t elem)

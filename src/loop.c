@@ -67,6 +67,7 @@
  * output arrays. No other scratch: the per-vertex class is a private tag bit plus a
  * valence byte of the intermediate levels.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
@@ -178,6 +179,7 @@ static int mesh_ok(const subd_mesh *m)
 
 int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d)
 {
+    int st;
     if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
@@ -185,7 +187,7 @@ int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags
     if (o->flags & ~flags) return subd_fail(d, SUBD_ERR_PARAM);
     if (in->face_start[0] != 0u || in->face_start[in->num_faces] != in->num_corners)
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
+    if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     return SUBD_OK;
 }
 

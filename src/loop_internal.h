@@ -26,7 +26,7 @@ void subd_loop_limit_vertex(const subd_mesh *m, subd_loop_boundary b, const subd
                             subd_real *pos, subd_real *normal, uint32_t *ovf);
 
 /* The checks subd_loop and subd_loop_stream share: arguments, levels, boundary rule, flags
- * (only those in `flags` allowed), a mesh with adjacency, triangles only (SUBD_ERR_FACE_SIZE
+ * (only those in `flags` allowed), a mesh with adjacency, triangles only (SUBD_ERR_NOT_TRIANGLES
  * with diag.face). Returns SUBD_OK or the status (diag set). Written by loop.c. */
 int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d);
 #endif

@@ -108,6 +108,7 @@
  * O(1) times per call for them instead of twice per neighbour. No recursion; the largest
  * frame (subd_loop_limit with the normal code inlined) is below 1 KB on Cortex-M.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"

@@ -2,6 +2,7 @@
 /* Loop subdivision's vertex classification and smooth-rule weights (the rules themselves are
  * inline in loop_rules.h). See loop_rules.h for the definitions; this file holds the parts
  * that walk a mesh or do 64-bit integer arithmetic. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_rules.h"
 
 int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h)

@@ -36,6 +36,7 @@
  * limit mode's level L, and one extraction's scratch (a slot map and a child-face map).
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"

@@ -10,6 +10,7 @@
  * corner's vertex in the same face; vert_out[v] is v's boundary half-edge when v is on a
  * boundary, so one walk from it visits v's whole fan in order.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "layout.h"
 #include "entry.h"
@@ -37,9 +38,9 @@ int subd_require_triangles(const subd_mesh *m, subd_diag *d)
     uint32_t f;
     for (f = 0; f < m->num_faces; f++) {
         if (subd_face_size(m, f) != 3u) {
-            if (!d) return SUBD_ERR_FACE_SIZE;
+            if (!d) return SUBD_ERR_NOT_TRIANGLES;
             d->face = f;
-            return subd_fail(d, SUBD_ERR_FACE_SIZE);
+            return subd_fail(d, SUBD_ERR_NOT_TRIANGLES);
         }
     }
     return SUBD_OK;

@@ -40,12 +40,14 @@ typedef struct subd_reader {
 int subd_reader_plan(const subd_reader *r, const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
 int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint32_t len, subd_mesh *out,
                      subd_diag *diag);
+/* The line of the element d names (counting scan, then line_of); 0 when none or unparsable. */
+uint32_t subd_reader_line_of(const subd_reader *r, const char *buf, uint32_t len, const subd_diag *d);
 
 /* Sets diag fields for an error and returns the status (for one-line error returns inside
  * a call). Public entry points end through subd_entry_fail (entry.h), which also rewinds. */
 int subd_fail(subd_diag *d, int status);
 
-/* SUBD_OK when every face of m is a triangle; else SUBD_ERR_FACE_SIZE with d->face (when
+/* SUBD_OK when every face of m is a triangle; else SUBD_ERR_NOT_TRIANGLES with d->face (when
  * d != NULL) set to the first other face. For the schemes defined on triangles only. */
 int subd_require_triangles(const subd_mesh *m, subd_diag *d);
 

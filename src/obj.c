@@ -11,6 +11,7 @@
  * Validation errors found after parsing (repeated vertex, non-manifold, orientation) name a
  * face or vertex; the reader turns that back into a line by rescanning, which costs no memory.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "text.h"
 
@@ -181,6 +182,11 @@ int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *dia
 int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag)
 {
     return subd_reader_read(&obj_reader, arena, buf, len, out, diag);
+}
+
+uint32_t subd_obj_line_of(const char *buf, uint32_t len, const subd_diag *diag)
+{
+    return subd_reader_line_of(&obj_reader, buf, len, diag);
 }
 
 static void obj_xyz(text_sink *k, const char *kw, const subd_real *p)

@@ -9,6 +9,7 @@
  * 8) are rejected on the header line before anything is allocated.
  * As in obj.c, one scan serves plan and read (reader.c).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "text.h"
 
@@ -143,6 +144,11 @@ int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *dia
 int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag)
 {
     return subd_reader_read(&off_reader, arena, buf, len, out, diag);
+}
+
+uint32_t subd_off_line_of(const char *buf, uint32_t len, const subd_diag *diag)
+{
+    return subd_reader_line_of(&off_reader, buf, len, diag);
 }
 
 static void off_emit(const subd_mesh *m, const subd_real *normals, text_sink *k)

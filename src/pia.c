@@ -141,6 +141,7 @@
  * subd_loop_limit_apply's. Work per iteration: one application of L, O(corners), plus
  * O(vertices); an SGS step does 1.5 applications' worth (three half-row passes).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
@@ -200,7 +201,7 @@ static int pia_tol_ok(subd_real tol)
 #endif
 }
 
-/* PARAM (pointers, options, a mesh without adjacency), then FACE_SIZE (diag.face). */
+/* PARAM (pointers, options, a mesh without adjacency), then NOT_TRIANGLES (diag.face). */
 static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
 {
     if (!in || !o || !in->pos || !in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||

@@ -44,6 +44,7 @@
  * parent's (q48_link_twins) and its fans from its corners (q48_fans); both give exactly the
  * arrays, tags and counts the builder would give, in O(C).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "subd_quasi48.h"
 #include "edge_sort.h"
@@ -111,12 +112,13 @@ static int q48_layout_work(subd_arena *a, const q48_layout *L, q48_work *w, uint
 
 static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
 {
+    int st;
     if (!in || !o || o->steps < 1u || o->steps > SUBD_Q48_MAX_STEPS || o->len_bits > SUBD_Q48_LEN_BITS_EXACT ||
         (o->boundary != SUBD_Q48_BOUNDARY_FIXED && o->boundary != SUBD_Q48_BOUNDARY_SMOOTH))
         return subd_fail(d, SUBD_ERR_PARAM);
     if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->edge_tag))
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
+    if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     if (in->num_faces == 0) return subd_fail(d, SUBD_ERR_EMPTY);
     return SUBD_OK;
 }

@@ -3,6 +3,7 @@
  * mesh builder's validation runs on them. Parsing straight into the final arrays keeps the
  * peak at one mesh; a validation error names an element, which the format maps back to its
  * line by rescanning, so no per-element line table is ever stored. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "entry.h"
 
@@ -54,4 +55,19 @@ int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint3
     if (st != SUBD_OK) return subd_entry_fail(&e, st);
     *out = m;
     return subd_entry_ok(&e);
+}
+
+uint32_t subd_reader_line_of(const subd_reader *r, const char *buf, uint32_t len, const subd_diag *d)
+{
+    subd_diag scratch;
+    mesh_counts c;
+    if (!d || (!buf && len)) return 0;
+    if (d->face == SUBD_NONE && d->polyline == SUBD_NONE && d->vertex == SUBD_NONE) return 0;
+    subd_diag_clear(&scratch);
+    if (reader_count(r, buf, len, &c, &scratch) != SUBD_OK) return 0;
+    if ((d->face != SUBD_NONE && d->face >= c.nf) ||
+        (d->face == SUBD_NONE && d->polyline != SUBD_NONE && d->polyline >= c.nl) ||
+        (d->face == SUBD_NONE && d->polyline == SUBD_NONE && d->vertex >= c.nv))
+        return 0;
+    return r->line_of(buf, len, &c, d);
 }

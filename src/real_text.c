@@ -32,6 +32,7 @@
  *
  * Stack: the largest frame holds five bn (5 * 44 bytes).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 
 #define BN_CAP 10u /* 320 bits: the bounds below never need more than 256 */

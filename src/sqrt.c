@@ -20,6 +20,7 @@
  * subd_sqrt, Q16.16: the nearest Q16.16 value to sqrt(x / 2^16), i.e. the rounded integer
  * square root of x * 2^16 (< 2^47, result < 2^24); negative inputs give 0.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 
 /* floor(sqrt(x)) and the remainder x - floor(sqrt(x))^2. */

@@ -67,6 +67,7 @@
  * which the plan bounds with the uniform max_level counts (and which is exact for UNIFORM,
  * where there are no marks, whenever every input vertex is used by a face).
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
 #include "subd_semireg48.h"
 #include "layout.h"

@@ -20,6 +20,7 @@
  *    the diagonal), isolated face point = barycentre, edge point = edge midpoint; the
  *    smoothing of input vertices and face points is done by sr48_refine.c.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_internal.h"
 
 int subd_sr48_pre_alloc_a(subd_arena *a, const subd_mesh *in, sr48_pre *w, uint32_t *bytes, uint32_t *keep)

@@ -32,6 +32,7 @@
  * once to count the clusters (the output sizes depend on them; same memory as
  * subd_sr48_count_clusters), once above the allocated output.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_internal.h"
 #include "mesh_internal.h"
 #include "entry.h"
@@ -41,12 +42,13 @@
 
 static int sr48_check(const subd_mesh *in, const subd_sr48_opts *o, subd_diag *d)
 {
+    int st;
     if (!in || !o || o->steps > SUBD_SR48_MAX_STEPS || (o->flags & ~SUBD_SR48_NO_SMOOTH) != 0u)
         return subd_fail(d, SUBD_ERR_PARAM);
     if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->face_start || !in->corner_vert ||
                           !in->pos))
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (subd_require_triangles(in, d) != SUBD_OK) return SUBD_ERR_FACE_SIZE;
+    if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     if (in->num_faces == 0) return subd_fail(d, SUBD_ERR_EMPTY);
     return SUBD_OK;
 }

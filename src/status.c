@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Status codes as text, for messages; the library's version. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 
 uint32_t subd_version(void) { return (uint32_t)SUBD_VERSION_NUMBER; }
@@ -21,6 +22,8 @@ const char *subd_status_str(int status)
     case SUBD_ERR_NONMANIFOLD_VERTEX: return "non-manifold vertex (faces form several fans)";
     case SUBD_ERR_TOO_BIG: return "counts too large";
     case SUBD_ERR_EMPTY: return "empty input";
+    case SUBD_ERR_NOT_TRIANGLES: return "not a triangle mesh";
+    case SUBD_ERR_ARITH: return "arithmetic differs from the reference (contraction, rounding or flush-to-zero)";
     default: return "unknown status";
     }
 }

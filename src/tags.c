@@ -18,6 +18,7 @@
  * - A crease pair is looked up by walking the one-ring of I and then of J (a boundary edge
  *   exists as one half-edge only, in either direction): O(valence), no edge table.
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include <stddef.h>
 #include "mesh_internal.h"
 #include "text.h"

@@ -1,4 +1,5 @@
 /* Text cursor, token helpers and output sink shared by the OBJ and OFF readers/writers. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "text.h"
 
 void subd_text_init(text_cursor *t, const char *buf, uint32_t len)

@@ -33,6 +33,7 @@
  *   PIO2_Q63   = round(pi/2 * 2^63)      = 0xc90fdaa22168c235
  *   SQRT12_Q63 = round(sqrt(1/2) * 2^63) = 0x5a827999fcef3242 (= isqrt(2^125))
  */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 
 #define ONE_Q63 ((uint64_t)1 << 63)

@@ -867,6 +867,56 @@ static void expect_error(const subd_mesh *in, const subd_loop_opts *o, int statu
     }
 }
 
+/* Four triangles, then a quad (face 4, on line 13; OFF: line 14): the triangle schemes name
+ * the quad, and the readers map it back to its line. */
+static const char k_tri4_quad_obj[] =
+    "# four triangles and a quad\n"
+    "v 0 0 0\nv 1 0 0\nv 0.5 0.875 0\nv -0.5 0.875 0\nv -1 0 0\nv -0.5 -0.875 0\nv 0.5 -0.875 0\n"
+    "f 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 6\nf 1 6 7 2\n";
+static const char k_tri4_quad_off[] =
+    "OFF\n7 5 0\n"
+    "0 0 0\n1 0 0\n0.5 0.875 0\n-0.5 0.875 0\n-1 0 0\n-0.5 -0.875 0\n0.5 -0.875 0\n"
+    "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n4 0 5 6 1\n";
+
+static void loop_not_triangles(void)
+{
+    subd_arena a;
+    subd_mesh m, out;
+    subd_loop_opts o;
+    subd_diag d, none;
+    uint32_t bytes, mark, n = (uint32_t)sizeof k_tri4_quad_obj - 1u;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    o.levels = 2;
+    o.boundary = PAPER;
+    o.flags = 0;
+    if (!CHECK_EQ(subd_obj_read(&a, k_tri4_quad_obj, n, &m, &d), SUBD_OK)) return;
+    mark = subd_arena_mark(&a);
+    CHECK_EQ(subd_loop_plan(&m, &o, &bytes), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_loop(&a, &m, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(d.face, 4);
+    CHECK_EQ(d.line, 0);
+    CHECK_EQ(subd_arena_mark(&a), mark);
+    CHECK_EQ(subd_obj_line_of(k_tri4_quad_obj, n, &d), 13);
+    CHECK_EQ(subd_off_line_of(k_tri4_quad_off, (uint32_t)sizeof k_tri4_quad_off - 1u, &d), 14);
+    d.face = 5; /* no such face */
+    CHECK_EQ(subd_obj_line_of(k_tri4_quad_obj, n, &d), 0);
+    d.face = SUBD_NONE;
+    d.vertex = 6;
+    CHECK_EQ(subd_obj_line_of(k_tri4_quad_obj, n, &d), 8);
+    CHECK_EQ(subd_off_line_of(k_tri4_quad_off, (uint32_t)sizeof k_tri4_quad_off - 1u, &d), 9);
+    subd_diag_clear(&none);
+    CHECK_EQ(subd_obj_line_of(k_tri4_quad_obj, n, &none), 0);
+    CHECK_EQ(subd_obj_line_of(k_tri4_quad_obj, n, 0), 0);
+    CHECK_EQ(subd_obj_line_of("f 1 2", 5u, &d), 0); /* does not parse */
+    CHECK_EQ(subd_obj_line_of(0, 0, &d), 0);
+    CHECK_EQ(subd_off_line_of(0, 0, &d), 0);
+    if (!CHECK_EQ(subd_off_read(&a, k_tri4_quad_off, (uint32_t)sizeof k_tri4_quad_off - 1u, &m, &d), SUBD_OK))
+        return;
+    CHECK_EQ(subd_loop(&a, &m, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(d.face, 4);
+}
+
 static void loop_errors(void)
 {
     subd_arena a, a2;
@@ -888,9 +938,9 @@ static void loop_errors(void)
     o.levels = 1;
     o.boundary = PAPER;
     o.flags = 0;
-    expect_error(&quad, &o, SUBD_ERR_FACE_SIZE);
+    expect_error(&quad, &o, SUBD_ERR_NOT_TRIANGLES);
     subd_arena_init(&a2, WORK_BUF + (WORK_BYTES / 2u), WORK_BYTES / 2u);
-    CHECK_EQ(subd_loop(&a2, &mixed, &o, &plain, &d), SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(subd_loop(&a2, &mixed, &o, &plain, &d), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 1);
     o.levels = 0;
     expect_error(&tri, &o, SUBD_ERR_PARAM);
@@ -1265,6 +1315,7 @@ const test_case suite_loop[] = {
     {"loop_memory", loop_memory},
     {"loop_bytes_macro", loop_bytes_macro},
     {"loop_errors", loop_errors},
+    {"loop_not_triangles", loop_not_triangles},
     {"loop_range", loop_range},
 #if H_HOST
     {"loop_reference", loop_reference},

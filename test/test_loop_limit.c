@@ -1019,9 +1019,9 @@ static void errors_test(void)
     /* a quad mesh */
     if (!CHECK(read_corpus("test/data/cube_quad.obj", &a, &m))) return;
     mark = subd_arena_mark(&a);
-    CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan), SUBD_ERR_FACE_SIZE);
-    CHECK_EQ(subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d), SUBD_ERR_FACE_SIZE);
-    CHECK_EQ(d.status, SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     CHECK_EQ(subd_arena_mark(&a), mark);
     CHECK(pos == 0 && nrm == 0);

@@ -418,7 +418,7 @@ static void stream_errors(void)
     o.flags = SUBD_LOOP_ADJACENCY;
     CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
     o.flags = 0;
-    CHECK_EQ(subd_loop_stream(&a, &quad, &o, &sink, &d), SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(subd_loop_stream(&a, &quad, &o, &sink, &d), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     noadj = in;
     noadj.twin = 0;

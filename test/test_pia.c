@@ -33,7 +33,7 @@
  *   most a quarter at 1e-4 (the plain CG of earlier versions: 8 or 9 against 26 or 25).
  * - Creases (closed loop: CG with a curve block; open polyline with darts: Chebyshev) and a
  *   corner: both methods interpolate (checked with subd_loop_limit).
- * - Parameters, errors (PARAM, FACE_SIZE, RANGE), every too-small arena, exact plan and
+ * - Parameters, errors (PARAM, NOT_TRIANGLES, RANGE), every too-small arena, exact plan and
  *   peak, guard bytes, input unchanged, max_iter and the stall guard, output hashes.
  */
 #include "harness.h"
@@ -757,12 +757,12 @@ static void pia_params(void)
     CHECK_EQ(subd_pia(&pa, &bad, &o, &V, &r, &d), SUBD_ERR_PARAM);
     CHECK_EQ(pa.used, 0);
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, 0), SUBD_OK); /* diag is optional */
-    /* quads: FACE_SIZE naming the first face */
+    /* quads: NOT_TRIANGLES naming the first face */
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
     if (load_obj(&a, "test/data/cube_quad.obj", &m)) {
-        CHECK_EQ(subd_pia_plan(&m, &o, &plan), SUBD_ERR_FACE_SIZE);
-        CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_FACE_SIZE);
+        CHECK_EQ(subd_pia_plan(&m, &o, &plan), SUBD_ERR_NOT_TRIANGLES);
+        CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_NOT_TRIANGLES);
         CHECK_EQ(d.face, 0);
         CHECK_EQ(pa.used, 0);
     }

@@ -678,10 +678,22 @@ static void q48_errors(void)
     qpos[3] = qpos[6] = qpos[7] = qpos[10] = subd_from_int(1, &ovf);
     fl.num_verts = 4; fl.pos = qpos; fl.num_faces = 1; fl.face_size = quad_size; fl.index = quad_idx;
     if (!h_build(&a, &fl, &q)) return;
-    CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_FACE_SIZE);
-    CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_FACE_SIZE);
+    CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     CHECK_EQ(ovf, 0);
+    {
+        const corpus_file *cf = corpus_find("test/data/cube_quad.obj");
+        uint32_t mark;
+        if (CHECK(cf != 0) && CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &q, &d), SUBD_OK)) {
+            mark = subd_arena_mark(&a);
+            CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(d.face, 0);
+            CHECK_EQ(subd_arena_mark(&a), mark);
+        }
+    }
 }
 
 /* len_bits: with exact comparison the fixed build's rounded hexagon rim makes the spokes

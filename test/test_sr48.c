@@ -901,10 +901,10 @@ static void sr48_errors(void)
     {
         const corpus_file *cf = corpus_find("test/data/cube_quad.obj");
         if (CHECK(cf != 0) && CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &q, &d), SUBD_OK)) {
-            CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan), SUBD_ERR_FACE_SIZE);
-            CHECK_EQ(subd_sr48_build(&a, &q, &o, &h, &d), SUBD_ERR_FACE_SIZE);
+            CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(subd_sr48_build(&a, &q, &o, &h, &d), SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.face, 0);
-            CHECK_EQ(subd_sr48_count_clusters(&a, &q, &c, &d), SUBD_ERR_FACE_SIZE);
+            CHECK_EQ(subd_sr48_count_clusters(&a, &q, &c, &d), SUBD_ERR_NOT_TRIANGLES);
         }
     }
     /* points only: no faces */

@@ -294,7 +294,19 @@ is 2 && err_starts "subd: cannot read tag file"; check $? "--tags with a missing
 run "$FLOAT" semireg48 --tags "$T/c1.tags" test/data/icosahedron.obj -o "$T/x.obj"
 is 1; check $? "--tags on a command that does not use tags (semireg48): exit 1"
 run "$FLOAT" loop test/data/cube_quad.obj -o "$T/x.obj"
-is 2 && err_starts "test/data/cube_quad.obj"; check $? "loop on quads: exit 2 naming the input"
+is 2 && err_starts "test/data/cube_quad.obj:11: not a triangle mesh (face 0)"; check $? "loop on quads: exit 2, FILE:LINE of the first quad"
+# every triangle scheme (and the stream) names the first polygon, face 4 on line 13 (OFF: 14)
+printf '# four triangles and a quad\nv 0 0 0\nv 1 0 0\nv 0.5 0.875 0\nv -0.5 0.875 0\nv -1 0 0\nv -0.5 -0.875 0\nv 0.5 -0.875 0\nf 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 6\nf 1 6 7 2\n' > "$T/tri4q.obj"
+printf 'OFF\n7 5 0\n0 0 0\n1 0 0\n0.5 0.875 0\n-0.5 0.875 0\n-1 0 0\n-0.5 -0.875 0\n0.5 -0.875 0\n3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n4 0 5 6 1\n' > "$T/tri4q.off"
+for args in "loop" "loop --stream" "limit" "pia --tol 0.01" "quasi48" "semireg48 -l 2"; do
+    for b in "$FLOAT" "$FIXED"; do
+        # shellcheck disable=SC2086
+        run "$b" $args "$T/tri4q.obj" -o "$T/x.obj"
+        is 2 && err_starts "$T/tri4q.obj:13: not a triangle mesh (face 4)"; check $? "$(basename "$b") $args on 4 triangles + a quad: exit 2, FILE:13 (face 4)"
+    done
+done
+run "$FLOAT" loop "$T/tri4q.off" -o "$T/x.off"
+is 2 && err_starts "$T/tri4q.off:14: not a triangle mesh (face 4)"; check $? "loop on an OFF with a quad: exit 2, FILE:14 (face 4)"
 run "$FLOAT" quasi48 -l 2 demo/torus_12x6.obj -o "$T/q.obj" --stats
 is 0 && json_ok "$T/out" && [ "$(json_num faces)" = 576 ]; check $? "quasi48 -l 2 on the 12x6 torus: every face split twice (576)"
 usage_case_pre() { run "$FLOAT" "$@"; is 1; }

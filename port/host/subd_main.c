@@ -58,6 +58,27 @@ static int library_error(const char *file, int st, const subd_diag *d, int have_
     return EXIT_INPUT;
 }
 
+/* A scheme's failure on the input mesh: a triangle-only scheme names the first polygon (the
+ * plan calls take no diag, so the tool finds it then), which the reader maps back to its line
+ * in the input file (subd_obj_line_of / subd_off_line_of). */
+static int scheme_error(const tool_run *r, int st, subd_diag *d)
+{
+    const subd_mesh *m = &r->in.mesh;
+    uint32_t f;
+    if (st == SUBD_ERR_NOT_TRIANGLES && d->face == SUBD_NONE)
+        for (f = 0; f < m->num_faces && d->face == SUBD_NONE; f++)
+            if (m->face_start[f + 1u] - m->face_start[f] != 3u) d->face = f;
+    if (st == SUBD_ERR_NOT_TRIANGLES && d->line == 0u && d->face != SUBD_NONE) {
+        char *buf = NULL;
+        uint32_t len = 0;
+        if (host_read_file(r->o.input, &buf, &len) == 0) {
+            d->line = r->in.format == HOST_FMT_OFF ? subd_off_line_of(buf, len, d) : subd_obj_line_of(buf, len, d);
+            free(buf);
+        }
+    }
+    return library_error(r->o.input, st, d, r->o.has_budget, r->o.budget);
+}
+
 int tool_out_of_memory(void)
 {
     fprintf(stderr, "subd: out of memory\n");
@@ -141,7 +162,7 @@ static int run_command(tool_run *r)
         t0 = host_now_ns();
         st = cmd->plan(&r->in.mesh, &r->o, &bytes, &d);
         r->lib_ns += host_now_ns() - t0;
-        if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
+        if (st != SUBD_OK) return scheme_error(r, st, &d);
         need = (bytes > UINT32_MAX - base) ? UINT32_MAX : base + bytes;
         if (need > r->planned) r->planned = need;
         if (r->o.has_budget) {
@@ -162,7 +183,7 @@ static int run_command(tool_run *r)
             st = cmd->run(a, &r->in.mesh, &r->o, &r->out, &r->extra, &d);
             r->lib_ns += host_now_ns() - t0;
         }
-        if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
+        if (st != SUBD_OK) return scheme_error(r, st, &d);
         if (r->o.has_budget) {
             r->used = r->in.arena.peak;
         } else if (base + r->work.peak > r->used) {

@@ -1,8 +1,9 @@
 /* Host benchmark (`make bench`): OBJ parsing and mesh building, then every scheme on real
  * meshes: Loop (levels 1-5), Loop limit positions + normals, quasi 4-8 (1, 2, 4, 8 binary
  * steps), alpha-subdivision curves (S_2, S_3, S_4) and Doo-Sabin type surfaces (levels 1-3),
- * a quality comparison quasi 4-8 vs Loop (volume shrinkage, maximum dihedral angle) and
- * progressive interpolation (PIA, method PAPER vs FAST).
+ * a quality comparison quasi 4-8 vs Loop (volume shrinkage, maximum dihedral angle),
+ * progressive interpolation (PIA, method PAPER vs FAST) and streaming Loop (levels 3-5,
+ * subd_loop_stream into a checksum sink next to subd_loop in the same run).
  *
  *   bench [-t SECONDS] [-s SECTIONS] [FILE.obj ...]
  *
@@ -13,8 +14,11 @@
  * plan calls, and reused across the repeats. Without files it takes every .obj in
  * ../shared/data/meshes/bench/ (relative to the working directory, i.e. the repository when
  * run by `make bench`) and says so when there is none. SECTIONS is a comma list of
- * parse,loop,limit,q48,alpha,quality,pia,sr48 (default: all) and valence48 (only when
- * named: the semi-regular 4-8 valence transition table). Build with -O2, no sanitizers.
+ * parse,loop,limit,q48,alpha,quality,pia,sr48,stream (default: all), valence48 (only when
+ * named: the semi-regular 4-8 valence transition table) and demostream (only when named,
+ * alone, no files read: the firmware demo's streaming step on the host, the same lines and
+ * hash as port/cortex-m/demo.c prints under QEMU; compile with -DSUBD_FIXED=1 for the
+ * Q16.16 hash). Build with -O2, no sanitizers.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -25,6 +29,7 @@
 #include <sys/stat.h>
 #include "subd.h"
 #include "fileio.h"
+#include "cortex-m/demo_mesh.h" /* the firmware demo's streaming mesh and checksum */
 
 #define DEFAULT_DIR "../shared/data/meshes/bench"
 #define MIN_RUNS 5
@@ -206,7 +211,7 @@ done:
 /* ==================================================================================== */
 /* Scheme runs: one context, one op, for every scheme                                   */
 
-typedef enum run_kind { RUN_LOOP, RUN_LIMIT, RUN_Q48, RUN_CURVE, RUN_SURF, RUN_PIA, RUN_SR48, RUN_SR48X } run_kind;
+typedef enum run_kind { RUN_LOOP, RUN_LIMIT, RUN_Q48, RUN_CURVE, RUN_SURF, RUN_PIA, RUN_SR48, RUN_SR48X, RUN_STREAM } run_kind;
 
 typedef struct run_ctx {
     run_kind kind;
@@ -230,6 +235,8 @@ typedef struct run_ctx {
     subd_adapt ad;
     subd_adapt_report rep;
     uint32_t xmark;        /* RUN_SR48X: arena mark above the hierarchy                    */
+    subd_loop_sink sink;   /* RUN_STREAM: subd_loop_stream with lo into the checksum sink  */
+    demo_hash hash;
 } run_ctx;
 
 static int op_run(void *p)
@@ -245,6 +252,11 @@ static int op_run(void *p)
     case RUN_PIA: return subd_pia(&c->arena, c->in, &c->po, &c->ppos, &c->pr, &c->diag);
     case RUN_SR48: return subd_sr48_build(&c->arena, c->in, &c->so, &c->h, &c->diag);
     case RUN_SR48X: return subd_sr48_extract(&c->arena, &c->h, &c->ad, &c->out, &c->rep, &c->diag);
+    case RUN_STREAM:
+        demo_hash_init(&c->hash);
+        c->sink.tri = demo_hash_tri;
+        c->sink.ctx = &c->hash;
+        return subd_loop_stream(&c->arena, c->in, &c->lo, &c->sink, &c->diag);
     }
     return SUBD_ERR_PARAM;
 }
@@ -273,6 +285,7 @@ static int run_plan(run_ctx *c)
         return st == SUBD_OK ? subd_sr48_plan(c->in, &c->so, clusters, &c->plan) : st;
     }
     case RUN_SR48X: return SUBD_ERR_PARAM; /* planned by section_sr48 (needs the hierarchy) */
+    case RUN_STREAM: return subd_loop_stream_plan(c->in, &c->lo, &c->plan);
     }
     return SUBD_ERR_PARAM;
 }
@@ -447,6 +460,179 @@ static void section_loop(void)
             run_free(&c);
         }
     }
+}
+
+/* ==================================================================================== */
+/* Section 1b: streaming Loop (subd_loop_stream into a checksum sink) next to subd_loop     */
+
+/* The checksum of demo_mesh.h over subd_loop's output faces in order: equal to the stream's
+ * when the j-th emitted triangle is output face j with the same bits (subd_loop_stream's
+ * contract). */
+static uint32_t loop_output_hash(const subd_mesh *m)
+{
+    uint32_t h = DEMO_FNV_BASIS, f, c;
+    for (f = 0; f < m->num_faces; f++) {
+        const subd_real *p[3];
+        for (c = 0; c < 3u; c++) p[c] = m->pos + 3u * m->corner_vert[m->face_start[f] + c];
+        h = demo_hash_pos(h, p);
+    }
+    return h;
+}
+
+static uint32_t max_valence(const subd_mesh *m);
+
+static void section_stream(void)
+{
+    int i;
+    uint32_t level;
+    printf("\n== Streaming Loop (subd_loop_stream, boundary PAPER, into a checksum sink: FNV-1a of every emitted "
+           "position)\nnext to subd_loop (flags 0) in the same run, levels 3-5; speed = stream triangles/s / subd_loop "
+           "output faces/s;\nmem = subd_loop plan / stream plan; check = stream hash vs the same hash over subd_loop's "
+           "output faces; reproduce: " REPRO "\n");
+    printf("%-24s %2s %10s %4s | %9s %8s %10s %6s %4s | %9s %8s %12s %4s | %6s %9s %6s\n", "mesh", "L", "triangles",
+           "maxv", "stream ms", "Mtri/s", "plan bytes", "peak", "runs", "loop ms", "Mf/s", "plan bytes", "runs", "speed",
+           "mem", "check");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        if (!m->tri) {
+            printf("%-24s skipped: not all triangles (Loop needs triangles)\n", m->name);
+            continue;
+        }
+        for (level = 3; level <= 5; level++) {
+            run_ctx sc, lc;
+            double sns = 0.0, lns = 0.0, first, faces_est, out_est;
+            int sruns = 0, lruns = 0, st, have_loop = 0;
+            uint32_t lhash = 0;
+            char pk[16], lms[16], lmf[16], lplan[16], lr[8], sp[16], mr[16];
+            const char *check = "-";
+            memset(&sc, 0, sizeof sc);
+            memset(&lc, 0, sizeof lc);
+            sc.kind = RUN_STREAM;
+            lc.kind = RUN_LOOP;
+            sc.in = lc.in = &m->hm.mesh;
+            sc.lo.levels = lc.lo.levels = level;
+            sc.lo.boundary = lc.lo.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+            sc.lo.flags = lc.lo.flags = 0;
+            if ((st = run_plan(&sc)) != SUBD_OK) {
+                printf("%-24s %2lu stream plan FAILED: %s\n", m->name, (unsigned long)level, subd_status_str(st));
+                continue;
+            }
+            /* subd_loop in the same run, when its output fits the host (as section_loop) */
+            faces_est = (double)m->hm.mesh.num_faces * pow(4.0, (double)level);
+            out_est = faces_est * (4.0 + 3.0 * 9.0) + 0.5 * faces_est * 13.0;
+            if (run_plan(&lc) == SUBD_OK && (double)lc.plan <= PLAN_LIMIT && out_est <= OUT_LIMIT &&
+                run_first(&lc, m->name, &first) == SUBD_OK) {
+                lns = time_run(&lc, first, &lruns);
+                if (lns > 0.0) {
+                    have_loop = 1;
+                    lhash = loop_output_hash(&lc.out);
+                }
+            }
+            run_free(&lc);
+            if (run_first(&sc, m->name, &first) != SUBD_OK) { run_free(&sc); continue; }
+            sns = time_run(&sc, first, &sruns);
+            if (sns <= 0.0) {
+                printf("%-24s %2lu stream: a repeated run failed\n", m->name, (unsigned long)level);
+                run_free(&sc);
+                continue;
+            }
+            snprintf(lms, sizeof lms, "-");
+            snprintf(lmf, sizeof lmf, "-");
+            snprintf(lplan, sizeof lplan, have_loop ? "%lu" : "skipped", (unsigned long)lc.plan);
+            snprintf(lr, sizeof lr, "-");
+            snprintf(sp, sizeof sp, "-");
+            snprintf(mr, sizeof mr, "-");
+            if (have_loop) {
+                snprintf(lms, sizeof lms, "%.2f", lns / 1e6);
+                snprintf(lmf, sizeof lmf, "%.2f", (double)lc.out.num_faces / 1e6 / (lns / 1e9));
+                snprintf(lr, sizeof lr, "%d", lruns);
+                snprintf(sp, sizeof sp, "%.2f", ((double)sc.hash.tris / sns) / ((double)lc.out.num_faces / lns));
+                snprintf(mr, sizeof mr, "%.0f", (double)lc.plan / (double)sc.plan);
+                check = (lhash == sc.hash.h && lc.out.num_faces == sc.hash.tris) ? "=loop" : "DIFFERS";
+            }
+            printf("%-24s %2lu %10lu %4lu | %9.2f %8.2f %10lu %6s %4d | %9s %8s %12s %4s | %6s %9s %6s\n", m->name,
+                   (unsigned long)level, (unsigned long)sc.hash.tris, (unsigned long)max_valence(&m->hm.mesh), sns / 1e6,
+                   (double)sc.hash.tris / 1e6 / (sns / 1e9), (unsigned long)sc.plan, peak_str(&sc, pk, sizeof pk),
+                   sruns, lms, lmf, lplan, lr, sp, mr, check);
+            fflush(stdout);
+            run_free(&sc);
+        }
+    }
+}
+
+/* The firmware demo's streaming step (port/cortex-m/demo.c) on the host: the same mesh, plan,
+ * stream and checksum lines, to compare with the QEMU output. */
+static int section_demostream(void)
+{
+    static demo_geo geo;
+    static uint8_t stream_arena[SUBD_LOOP_STREAM_BYTES(DEMO_STREAM_LEVELS, DEMO_GEO_MAX_VALENCE)];
+    subd_face_list fl;
+    subd_mesh m;
+    subd_arena ma, sa;
+    subd_loop_opts o;
+    subd_loop_sink sink;
+    subd_diag d;
+    demo_hash hs;
+    uint32_t plan, v, maxval = 0;
+    void *mem;
+    double t0, t1;
+    int st;
+    printf("tinysubd %s firmware demo streaming step on the host, arithmetic %s\n", SUBD_VERSION,
+           SUBD_FIXED ? "Q16.16" : "float32");
+    printf("streaming Loop, level 6, geodesic sphere built in code:\n");
+    if ((st = demo_geo_build(&geo, &fl)) != SUBD_OK || (st = subd_mesh_plan(&fl, &plan)) != SUBD_OK) goto fail;
+    if (!(mem = host_arena_alloc(&ma, plan))) return 1;
+    if ((st = subd_mesh_build(&ma, &fl, &m, &d)) != SUBD_OK) goto fail;
+    for (v = 0; v < m.num_verts; v++)
+        if (subd_vertex_valence(&m, v) > maxval) maxval = subd_vertex_valence(&m, v);
+    printf("  control vertices %lu\n  control faces %lu\n  max valence %lu\n", (unsigned long)m.num_verts,
+           (unsigned long)m.num_faces, (unsigned long)maxval);
+    o.levels = DEMO_STREAM_LEVELS;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    if ((st = subd_loop_stream_plan(&m, &o, &plan)) != SUBD_OK) goto fail;
+    printf("  stream arena bytes (static) %lu\n  stream arena bytes planned %lu\n", (unsigned long)sizeof stream_arena,
+           (unsigned long)plan);
+    subd_arena_init(&sa, stream_arena, sizeof stream_arena);
+    demo_hash_init(&hs);
+    sink.tri = demo_hash_tri;
+    sink.ctx = &hs;
+    t0 = host_now_ns();
+    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
+    t1 = host_now_ns();
+    if (st != SUBD_OK) goto fail;
+    printf("  stream arena bytes used (peak) %lu\n  triangles %lu\n  position hash (FNV-1a) 0x%08lx\n",
+           (unsigned long)sa.peak, (unsigned long)hs.tris, (unsigned long)hs.h);
+    printf("  host: %.3f s, %.2f M triangles/s (stream + checksum sink, one run)\n", (t1 - t0) / 1e9,
+           (double)hs.tris / 1e6 / ((t1 - t0) / 1e9));
+    v = 0;
+    sink.tri = demo_count_tri;
+    sink.ctx = &v;
+    t0 = host_now_ns();
+    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
+    t1 = host_now_ns();
+    if (st != SUBD_OK) goto fail;
+    printf("  host: %.3f s, %.2f M triangles/s (stream + counting sink, one run)\n", (t1 - t0) / 1e9,
+           (double)v / 1e6 / ((t1 - t0) / 1e9));
+    { /* the same hash over subd_loop's level-6 output faces (the stream's contract) */
+        subd_arena la;
+        subd_mesh out;
+        void *lmem;
+        uint32_t lh;
+        if ((st = subd_loop_plan(&m, &o, &plan)) != SUBD_OK) goto fail;
+        if (!(lmem = host_arena_alloc(&la, plan))) return 1;
+        if ((st = subd_loop(&la, &m, &o, &out, &d)) != SUBD_OK) goto fail;
+        lh = loop_output_hash(&out);
+        printf("  host: subd_loop level 6: %lu faces, hash over its faces 0x%08lx (%s the stream's)\n",
+               (unsigned long)out.num_faces, (unsigned long)lh,
+               lh == hs.h && out.num_faces == hs.tris ? "equal to" : "DIFFERS from");
+        free(lmem);
+    }
+    free(mem);
+    return 0;
+fail:
+    printf("demostream FAILED: %s\n", subd_status_str(st));
+    return 1;
 }
 
 /* ==================================================================================== */
@@ -1189,7 +1375,8 @@ static int section_on(const char *sections, const char *name)
 static int usage(int rc)
 {
     fprintf(rc ? stderr : stdout,
-            "usage: bench [-t SECONDS] [-s parse,loop,limit,q48,alpha,quality,pia,sr48,valence48] [FILE.obj ...]\n");
+            "usage: bench [-t SECONDS] [-s parse,loop,limit,q48,alpha,quality,pia,sr48,stream,valence48] [FILE.obj ...]\n"
+            "       bench -s demostream\n");
     return rc;
 }
 
@@ -1213,6 +1400,7 @@ int main(int argc, char **argv)
             return usage(argv[i][1] == 'h' || strcmp(argv[i], "--help") == 0 ? 0 : 1);
         }
     }
+    if (sections && strcmp(sections, "demostream") == 0) return section_demostream();
     nfiles = argc - i;
     files = argv + i;
     if (nfiles == 0) {
@@ -1239,6 +1427,7 @@ int main(int argc, char **argv)
     }
     failed += load_meshes(files, nfiles);
     if (section_on(sections, "loop")) section_loop();
+    if (section_on(sections, "stream")) section_stream();
     if (section_on(sections, "limit")) section_limit();
     if (section_on(sections, "q48")) section_q48();
     if (section_on(sections, "alpha")) section_alpha();

@@ -7,7 +7,11 @@
 # the timed call, robust on a shared machine; both are in the raw lines), REPS (runs per case, default 3), LONG (s; a first run longer than this is not
 # repeated, default 5), CASE_LIMIT (s; skip a mesh/level whose predicted total over all
 # implementations exceeds it, default 60), MEM_LIMIT_MB (skip an implementation whose
-# predicted max RSS exceeds it, default 8192), PEERS_NO_INSTALL=1 (never call apt-get).
+# predicted max RSS exceeds it, default 8192), PEERS_NO_INSTALL=1 (never call apt-get),
+# LOOP_LEVELS (the Loop levels to run, default "1 2 3 4 5"; e.g. "3 4 5" for the targets only),
+# PEERS_OUT (build directory of the drivers and results, default build/peers).
+# Loop runs five implementations: tinysubd (subd_loop), stream (tinysubd's subd_loop_stream into
+# a checksum sink, reported as tinysubd-stream), osd, cgal, openmesh.
 #
 # Installs libosd-dev libcgal-dev libopenmesh-dev with apt-get when missing, builds the four
 # drivers into build/peers/, runs every case in its own process (so max RSS is per case),
@@ -22,13 +26,13 @@ SHARED=${SHARED:-../shared}
 MESH_DIR=${MESH_DIR:-$SHARED/data/meshes/bench}
 TIME=${TIME:-cpu}
 case $TIME in cpu|wall) ;; *) echo "TIME must be cpu or wall" >&2; exit 2 ;; esac
-OUT=build/peers
+OUT=${PEERS_OUT:-build/peers}  # PEERS_OUT: where the drivers and results go
 REPS=${REPS:-3}
 LONG=${LONG:-5}
 CASE_LIMIT=${CASE_LIMIT:-60}
 MEM_LIMIT_MB=${MEM_LIMIT_MB:-8192}
 MESHES="spot_triangulated nefertiti stanford-bunny-open"
-IMPLS="tinysubd osd cgal openmesh"
+IMPLS="tinysubd stream osd cgal openmesh"  # stream = tinysubd's subd_loop_stream (Loop only)
 
 # ------------------------------------------------------------------ packages
 PKGS="libosd-dev libcgal-dev libopenmesh-dev"
@@ -83,10 +87,12 @@ start=$(date +%s)
 # run IMPL SCHEME MESH LEVEL -> appends result lines; prints the first run's "seconds maxrss_kb"
 run_case() {
     drv="$OUT/$1_driver"
+    arg=$2
+    if [ "$1" = stream ]; then drv="$OUT/tinysubd_driver"; arg=stream; fi
     n=0
     first=
     while [ $n -lt "$REPS" ]; do
-        if ! line=$(timeout 300 "$drv" "$2" "$MESH_DIR/$3.obj" "$4" 2>"$OUT/last-stderr.txt"); then
+        if ! line=$(timeout 300 "$drv" "$arg" "$MESH_DIR/$3.obj" "$4" 2>"$OUT/last-stderr.txt"); then
             echo "$3 L$4 $2 $1: failed: $(tail -n 1 "$OUT/last-stderr.txt")" >>"$SKIPS"
             echo "fail"
             return 0
@@ -104,7 +110,7 @@ run_case() {
 
 echo "== running (time = $TIME; each case in its own process; REPS=$REPS, runs over ${LONG}s not repeated)"
 for scheme in loop doosabin; do
-    if [ $scheme = loop ]; then levels="1 2 3 4 5"; impls=$IMPLS; else levels=3; impls="tinysubd cgal"; fi
+    if [ $scheme = loop ]; then levels=${LOOP_LEVELS:-1 2 3 4 5}; impls=$IMPLS; else levels=3; impls="tinysubd cgal"; fi
     for m in $MESHES; do
         # per implementation: last level's seconds and max RSS, for the skip prediction
         for i in $impls; do eval "t_$i=0; r_$i=0"; done
@@ -164,12 +170,13 @@ function maxrss(key,    n, i, a, t) {  # median of the runs max RSS
 {
     delete kv
     for (i = 1; i <= NF; i++) { split($i, p, "="); kv[p[1]] = p[2] }
-    peer = kv["peer"]; if (peer == "opensubdiv") peer = "osd"
+    peer = kv["peer"]; if (peer == "opensubdiv") peer = "osd"; if (peer == "tinysubd-stream") peer = "stream"
     key = kv["scheme"] SUBSEP kv["mesh"] SUBSEP kv["level"] SUBSEP peer
     n = ++cnt[key]
     sec[key, n] = kv[tfield]; rss[key, n] = kv["maxrss_kb"]
     faces[key] = kv["faces"]
     if ("arena_bytes" in kv) arena[key] = kv["arena_bytes"]
+    if ("plan_bytes" in kv) plan[key] = kv["plan_bytes"]
     row = kv["scheme"] SUBSEP kv["mesh"] SUBSEP kv["level"]
     if (!(row in seen)) { seen[row] = 1; rows[++nrows] = row }
 }
@@ -241,6 +248,48 @@ END {
     else if (met == tested) printf "TARGET MET in all %d Loop L3-5 cases (>= 6x OpenSubdiv output faces/s, <= 1/3 its max RSS)\n", tested
     else printf "TARGET NOT MET: %d of %d Loop L3-5 cases meet >= 6x OpenSubdiv output faces/s with <= 1/3 its max RSS\n", met, tested
     print "(n) = runs behind the median; * = this implementation output a different face count."
+
+    # streaming (issue 12, item 9): subd_loop_stream into a checksum sink vs OpenSubdiv
+    print ""
+    print "Streaming Loop: tinysubd-stream = subd_loop_stream (boundary PAPER) into a checksum sink (FNV-1a of every"
+    print "emitted position), triangles/s; OpenSubdiv = its uniform refinement above, output faces/s; same run."
+    print "speed = stream triangles/s / OpenSubdiv output faces/s; plan = stream arena bytes (subd_loop_stream_plan);"
+    print "plan/osd = plan / OpenSubdiv max RSS; in+plan/osd = (input mesh arena + plan) / OpenSubdiv max RSS;"
+    print "stream MB = the stream process max RSS (program, libc, file buffer freed, input mesh)."
+    print "Target (issue 12, item 9): Loop L3-5, speed >= 6 and plan < 1/1000 of OpenSubdiv peak (max RSS)."
+    printf "%-20s %2s %10s | %7s %6s %8s %8s | %7s %6s %7s | %6s %9s %11s | %s\n", "mesh", "L", "triangles",
+           "s", "Mtri/s", "plan B", "MB(n)", "osd s", "Mf/s", "MB(n)", "speed", "plan/osd", "in+plan/osd", "target"
+    stested = 0; smet = 0
+    for (r = 1; r <= nr; r++) {
+        split(order[r], k, SUBSEP)
+        sk = order[r] SUBSEP "stream"; ok_key = order[r] SUBSEP "osd"
+        if (k[1] != "loop" || !(sk in cnt)) continue
+        st = median(sk); sf = faces[sk]
+        printf "%-20s %2s %10s | %7.3f %6.2f %8d %5.0f(%d)", k[2], k[3], sf, st, sf / st / 1e6, plan[sk], maxrss(sk) / 1024, cnt[sk]
+        if (!(ok_key in cnt)) { printf " | %-22s | %-28s |\n", "-", "-"; continue }
+        ot = median(ok_key); of = faces[ok_key]; orss = maxrss(ok_key) * 1024
+        sp = (sf / st) / (of / ot); mr = plan[sk] / orss; ar = arena[sk] / orss
+        printf " | %7.3f %6.2f %4.0f(%d)%s | %6.2f %9.2e %11.2e", ot, of / ot / 1e6, orss / 1048576, cnt[ok_key],
+               (of != sf ? "*" : " "), sp, mr, ar
+        ok = ""
+        if (k[3] >= 3) {
+            stested++
+            if (sp >= 6 && mr < 1 / 1000) { ok = "met"; smet++ }
+            else ok = "NOT met (" (sp >= 6 ? "" : "speed " sprintf("%.2f", sp) "x < 6x") (sp < 6 && mr >= 1 / 1000 ? ", " : "") (mr < 1 / 1000 ? "" : "memory") ")"
+        }
+        printf " | %s\n", ok
+    }
+    print ""
+    if (stested == 0) print "STREAM TARGET: not evaluated (no Loop L3-5 case with both tinysubd-stream and OpenSubdiv)"
+    else if (smet == stested) printf "STREAM TARGET MET in all %d Loop L3-5 cases (>= 6x OpenSubdiv output faces/s, plan < 1/1000 of its max RSS)\n", stested
+    else {
+        nmem = 0
+        for (r = 1; r <= nr; r++) {
+            split(order[r], k, SUBSEP); sk = order[r] SUBSEP "stream"; ok_key = order[r] SUBSEP "osd"
+            if (k[1] == "loop" && k[3] >= 3 && (sk in cnt) && (ok_key in cnt) && plan[sk] / (maxrss(ok_key) * 1024) < 1 / 1000) nmem++
+        }
+        printf "STREAM TARGET NOT MET: %d of %d Loop L3-5 cases meet both (memory part: %d of %d; speed part: see the speed column)\n", smet, stested, nmem, stested
+    }
 }' "$RES"
 if [ -s "$SKIPS" ]; then echo "skipped / failed:"; sed 's/^/  /' "$SKIPS"; fi
 echo "raw lines: $RES"

@@ -1,9 +1,13 @@
-/* tinysubd driver for the peer comparison (bench/peers): DRIVER loop|doosabin MESH.obj LEVELS
+/* tinysubd driver for the peer comparison (bench/peers): DRIVER loop|doosabin|stream MESH.obj LEVELS
  * Reads the OBJ with subd_obj_plan + subd_obj_read into an arena of exactly the plan (untimed),
- * then times one call: subd_loop (boundary PAPER, flags 0) or subd_alpha_surface
- * (subd_alpha_opts_default: B-spline kernel, stiffness 1 = Doo-Sabin type, order 2) into a
- * second arena of exactly subd_loop_plan / subd_alpha_surface_plan bytes. Prints one
- * machine-readable line like the C++ peer drivers; arena_bytes = input mesh + plan. */
+ * then times one call: subd_loop (boundary PAPER, flags 0), subd_alpha_surface
+ * (subd_alpha_opts_default: B-spline kernel, stiffness 1 = Doo-Sabin type, order 2) or
+ * subd_loop_stream (boundary PAPER, flags 0) into a checksum sink (32-bit FNV-1a over the
+ * little-endian bytes of every emitted position coordinate, as port/cortex-m/demo_mesh.h), in a
+ * second arena of exactly subd_loop_plan / subd_alpha_surface_plan / subd_loop_stream_plan
+ * bytes. Prints one machine-readable line like the C++ peer drivers; arena_bytes = input mesh
+ * + plan. The stream's line says peer=tinysubd-stream scheme=loop, faces = triangles emitted,
+ * verts=0 (the stream stores none), and adds hash=. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -45,6 +49,28 @@ static void *xmalloc(size_t n)
     return p;
 }
 
+typedef struct hash_sink {
+    uint32_t h;
+    unsigned long tris;
+} hash_sink;
+
+static int hash_tri(void *ctx, const subd_loop_tri *t)
+{
+    hash_sink *s = (hash_sink *)ctx;
+    uint32_t h = s->h, c, k, b;
+    for (c = 0; c < 3u; c++)
+        for (k = 0; k < 3u; k++) {
+            uint32_t w = subd_real_bits(t->pos[c][k]);
+            for (b = 0; b < 4u; b++) {
+                h ^= (w >> (8u * b)) & 0xffu;
+                h *= 16777619u;
+            }
+        }
+    s->h = h;
+    s->tris++;
+    return 0;
+}
+
 static void fail(const char *what, int st, const subd_diag *d)
 {
     fprintf(stderr, "%s: %s (%d), line %lu, bytes_needed %lu\n", what, subd_status_str(st), st,
@@ -54,7 +80,8 @@ static void fail(const char *what, int st, const subd_diag *d)
 
 int main(int argc, char **argv)
 {
-    int loop, levels;
+    int loop, stream, levels;
+    hash_sink hs;
     FILE *f;
     long len;
     char *text;
@@ -68,9 +95,12 @@ int main(int argc, char **argv)
     double t0, t1, c0 = 0.0, c1 = 0.0;
     struct rusage ru;
 
-    if (argc != 4) { fprintf(stderr, "usage: %s loop|doosabin MESH.obj LEVELS\n", argv[0]); return 2; }
+    if (argc != 4) { fprintf(stderr, "usage: %s loop|doosabin|stream MESH.obj LEVELS\n", argv[0]); return 2; }
     loop = strcmp(argv[1], "loop") == 0;
-    if (!loop && strcmp(argv[1], "doosabin") != 0) { fprintf(stderr, "unknown scheme %s\n", argv[1]); return 2; }
+    stream = strcmp(argv[1], "stream") == 0;
+    if (!loop && !stream && strcmp(argv[1], "doosabin") != 0) { fprintf(stderr, "unknown scheme %s\n", argv[1]); return 2; }
+    hs.h = 2166136261u;
+    hs.tris = 0;
     levels = atoi(argv[3]);
     f = fopen(argv[2], "rb");
     if (!f) { fprintf(stderr, "cannot open %s\n", argv[2]); return 1; }
@@ -89,7 +119,27 @@ int main(int argc, char **argv)
     if (st != SUBD_OK) fail("subd_obj_read", st, &d);
     free(text);
 
-    if (loop) {
+    if (stream) {
+        subd_loop_opts o;
+        subd_loop_sink sink;
+        o.levels = (uint32_t)levels;
+        o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+        o.flags = 0;
+        sink.tri = hash_tri;
+        sink.ctx = &hs;
+        st = subd_loop_stream_plan(&in, &o, &plan);
+        if (st != SUBD_OK) fail("subd_loop_stream_plan", st, &d);
+        subd_arena_init(&out_arena, xmalloc((size_t)plan + SUBD_ARENA_ALIGN), plan + SUBD_ARENA_ALIGN);
+        rss_before = rss_kb();
+        c0 = cpu_s();
+        t0 = now_s();
+        st = subd_loop_stream(&out_arena, &in, &o, &sink, &d);
+        t1 = now_s();
+        c1 = cpu_s();
+        if (st != SUBD_OK) fail("subd_loop_stream", st, &d);
+        out.num_faces = (uint32_t)hs.tris;
+        out.num_verts = 0;
+    } else if (loop) {
         subd_loop_opts o;
         o.levels = (uint32_t)levels;
         o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
@@ -127,10 +177,12 @@ int main(int argc, char **argv)
     dot = strrchr(name, '.');
     name_len = dot ? (int)(dot - name) : (int)strlen(name);
     getrusage(RUSAGE_SELF, &ru);
-    printf("peer=tinysubd scheme=%s mesh=%.*s level=%d faces=%lu verts=%lu wall_seconds=%.6f "
-           "cpu_seconds=%.6f maxrss_kb=%ld rss_before_kb=%ld arena_bytes=%lu plan_bytes=%lu\n",
-           loop ? "loop" : "doosabin", name_len, name, levels, (unsigned long)out.num_faces,
-           (unsigned long)out.num_verts, t1 - t0, c1 - c0, ru.ru_maxrss, rss_before,
-           (unsigned long)in_arena.used + (unsigned long)plan, (unsigned long)plan);
+    printf("peer=%s scheme=%s mesh=%.*s level=%d faces=%lu verts=%lu wall_seconds=%.6f "
+           "cpu_seconds=%.6f maxrss_kb=%ld rss_before_kb=%ld arena_bytes=%lu plan_bytes=%lu",
+           stream ? "tinysubd-stream" : "tinysubd", loop || stream ? "loop" : "doosabin", name_len, name, levels,
+           stream ? hs.tris : (unsigned long)out.num_faces, (unsigned long)out.num_verts, t1 - t0, c1 - c0,
+           ru.ru_maxrss, rss_before, (unsigned long)in_arena.used + (unsigned long)plan, (unsigned long)plan);
+    if (stream) printf(" hash=0x%08lx", (unsigned long)hs.h);
+    printf("\n");
     return 0;
 }

@@ -1,15 +1,26 @@
 /* Firmware demo: what a device build of tinysubd does, inside one static arena: read a mesh
  * from OBJ text, then Loop subdivision (3 levels), Loop limit positions and normals, quasi
  * 4-8 subdivision, and a semi-regular 4-8 hierarchy with a chordal-tolerance extraction of
- * it, printing counts, arena bytes and instruction counts. Run by `make demo` under QEMU on
- * both targets (Cortex-M4F float32, Cortex-M3 Q16.16). */
+ * it, printing counts, arena bytes and instruction counts. Then streaming Loop: level 6 of a
+ * 500-face geodesic sphere built in code (demo_mesh.h), triangle by triangle through a sink,
+ * in a static arena of SUBD_LOOP_STREAM_BYTES(6, 6) bytes, with a checksum of every emitted
+ * position that the host reproduces (`bench -s demostream`). Run by `make demo` under QEMU
+ * on both targets (Cortex-M4F float32, Cortex-M3 Q16.16). */
 #include "subd.h"
 #include "print.h"
 #include "port_cm.h"
+#include "demo_mesh.h"
 
 /* The whole memory budget of the demo. The plan calls below say exactly how much of it
  * each step needs; the demo checks before it builds. */
 static uint8_t arena_buf[96 * 1024] __attribute__((aligned(8)));
+
+/* The streaming step's own arena, sized at compile time for level 6 and valence 6: the
+ * control mesh lives in arena_buf, the stream needs only this, whatever the level. */
+static uint8_t stream_arena[SUBD_LOOP_STREAM_BYTES(DEMO_STREAM_LEVELS, DEMO_GEO_MAX_VALENCE)]
+    __attribute__((aligned(8)));
+typedef char stream_arena_within_16k[sizeof stream_arena <= 16u * 1024u ? 1 : -1];
+static demo_geo geo; /* the generator's face list (copied into arena_buf by the builder) */
 
 static const char icosahedron_obj[] =
     "# regular icosahedron (vertices (0, +-1, +-p) cyclically, p = golden ratio)\n"
@@ -220,6 +231,86 @@ static int demo_icosahedron(subd_arena *arena)
     return SUBD_OK;
 }
 
+static void kv64(const char *key, uint64_t v)
+{
+    print_str("  ");
+    print_str(key);
+    print_str(" ");
+    print_u64(v);
+    print_nl();
+}
+
+static void kv_hex(const char *key, uint32_t v)
+{
+    print_str("  ");
+    print_str(key);
+    print_str(" ");
+    print_hex32(v);
+    print_nl();
+}
+
+/* Streaming Loop, level 6, of the geodesic sphere: build the control mesh in the main arena,
+ * plan the stream and check it against the static stream arena, then stream twice: into the
+ * checksum sink (the hash the host reproduces) and into a counting sink (the stream's own
+ * instructions per triangle, without the checksum's). */
+static int demo_stream(subd_arena *arena)
+{
+    subd_face_list fl;
+    subd_mesh m;
+    subd_arena sa;
+    subd_loop_opts o;
+    subd_loop_sink sink;
+    subd_diag d;
+    demo_hash hs;
+    uint32_t plan, t0, t1, mark = start_measure(arena), count = 0, v, maxval = 0;
+    uint64_t insns_hash, insns_count;
+    int st;
+    print_str("streaming Loop, level 6, geodesic sphere built in code:\n");
+    if ((st = demo_geo_build(&geo, &fl)) != SUBD_OK) return st;
+    if ((st = subd_mesh_plan(&fl, &plan)) != SUBD_OK) return st;
+    if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
+    if ((st = subd_mesh_build(arena, &fl, &m, &d)) != SUBD_OK) return report_error(st, &d);
+    for (v = 0; v < m.num_verts; v++)
+        if (subd_vertex_valence(&m, v) > maxval) maxval = subd_vertex_valence(&m, v);
+    kv("control vertices", m.num_verts);
+    kv("control faces", m.num_faces);
+    kv("max valence", maxval);
+    kv("control mesh arena bytes (in the main arena)", arena->used - mark);
+    o.levels = DEMO_STREAM_LEVELS;
+    o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o.flags = 0;
+    if ((st = subd_loop_stream_plan(&m, &o, &plan)) != SUBD_OK) return st;
+    kv("stream arena bytes (static)", (uint32_t)sizeof stream_arena);
+    kv("stream arena bytes planned", plan);
+    if (plan > sizeof stream_arena) return SUBD_ERR_NOMEM;
+    subd_arena_init(&sa, stream_arena, sizeof stream_arena);
+    demo_hash_init(&hs);
+    sink.tri = demo_hash_tri;
+    sink.ctx = &hs;
+    t0 = port_cycles();
+    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns_hash = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    kv("stream arena bytes used (peak)", sa.peak);
+    kv("triangles", hs.tris);
+    kv_hex("position hash (FNV-1a)", hs.h);
+    kv64("instructions, stream + checksum sink", insns_hash);
+    kv("instructions per triangle, stream + checksum sink", (uint32_t)(insns_hash / hs.tris));
+    sink.tri = demo_count_tri;
+    sink.ctx = &count;
+    t0 = port_cycles();
+    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns_count = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    if (count != hs.tris) return SUBD_ERR_PARAM;
+    kv64("instructions, stream + counting sink", insns_count);
+    kv("instructions per triangle, stream + counting sink", (uint32_t)(insns_count / count));
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}
+
 int main(void);
 int main(void)
 {
@@ -233,6 +324,7 @@ int main(void)
     (void)port_cycles(); /* starts the counter */
     subd_arena_init(&arena, arena_buf, sizeof arena_buf);
     st = demo_icosahedron(&arena);
+    if (st == SUBD_OK) st = demo_stream(&arena);
     kv("stack bytes used", port_stack_used());
     if (st != SUBD_OK) {
         print_str("demo failed: ");

@@ -205,7 +205,67 @@ test-run:
 	@test/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/harness_selftest.sh mps2-an385 $(B)/m3-fixed
 	@test/run_suite.sh "subd tool" $(L)/tool.log test/tool_test.sh $(B)/bin
 	@test/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/cpp_test.sh $(B)
+	@test/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS)
+	@test/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS)
 	@test/summary.sh $(L)/*.log
+
+# ------------------------------------------------------------------ fuzzing (make fuzz)
+# make fuzz [FUZZ_SECONDS=N]: libFuzzer targets (clang, ASan+UBSan, no recovery) for the OBJ
+# reader, the OFF reader (+ tags) and every scheme on decoded small meshes (fuzz/*.c), in
+# float32 and Q16.16, each run N seconds by fuzz/run.sh. Installs clang when missing. Not part
+# of make test; make test replays the committed corpus fuzz/corpus/<target>/ through the same
+# checks built with gcc and the host sanitizers ("fuzz corpus replay" suites).
+FUZZ_SECONDS ?= 60
+CLANG ?= clang
+FUZZ_TARGETS := obj off schemes
+FUZZ_COMMON  := fuzz/fuzz_check.c fuzz/fuzz_reader.c
+FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_CFLAGS   = $(filter-out -Werror,$(WARN)) $(INC) -Ifuzz $(DEP) -DSUBD_HOST=1 -O1 -g $(FUZZ_SAN)
+FIXED_fuzz-float := 0
+FIXED_fuzz-fixed := 1
+
+define fuzz_variant
+$(B)/$(1)/src/%.o: src/%.c $(MK)
+	@mkdir -p $$(@D)
+	$(CLANG) $$(FUZZ_CFLAGS) -DSUBD_FIXED=$(FIXED_$(1)) -fsanitize=fuzzer-no-link -c $$< -o $$@
+$(B)/$(1)/fuzz/%.o: fuzz/%.c $(MK)
+	@mkdir -p $$(@D)
+	$(CLANG) $$(FUZZ_CFLAGS) -DSUBD_FIXED=$(FIXED_$(1)) -fsanitize=fuzzer-no-link -c $$< -o $$@
+$(B)/$(1)/fuzz_%: $(B)/$(1)/fuzz/fuzz_%.o $(FUZZ_COMMON:%.c=$(B)/$(1)/%.o) $(SRC:%.c=$(B)/$(1)/%.o)
+	$(CLANG) -fsanitize=fuzzer $(FUZZ_SAN) $$^ -lm -o $$@
+endef
+$(foreach v,fuzz-float fuzz-fixed,$(eval $(call fuzz_variant,$(v))))
+FUZZ_BINS := $(foreach v,fuzz-float fuzz-fixed,$(FUZZ_TARGETS:%=$(B)/$(v)/fuzz_%))
+.SECONDARY: $(foreach v,fuzz-float fuzz-fixed,$(FUZZ_TARGETS:%=$(B)/$(v)/fuzz/fuzz_%.o) \
+            $(FUZZ_COMMON:%.c=$(B)/$(v)/%.o) $(SRC:%.c=$(B)/$(v)/%.o))
+
+fuzz:
+	@if ! command -v $(CLANG) >/dev/null 2>&1; then \
+	    echo "installing clang"; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	    $$SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -q clang \
+	        || { echo "could not install clang" >&2; exit 1; }; \
+	fi
+	@$(MAKE) --no-print-directory fuzz-build
+	@fuzz/run.sh $(FUZZ_SECONDS) $(B)/fuzz-float $(B)/fuzz-fixed
+fuzz-build: $(FUZZ_BINS)
+
+# The corpus replay (fuzz/replay.c) with gcc and the host-float / host-fixed flags; each
+# target's entry is renamed so that one program holds all three.
+define fuzz_replay
+$(B)/$(1)/fuzz/%.o: fuzz/%.c $(MK) | dirs
+	@mkdir -p $$(@D)
+	$(HOST_CC) $(WARN) $(INC) -Ifuzz $(DEP) $(HOST_FLAGS_$(1)) -c $$< -o $$@
+$(B)/$(1)/fuzz/entry_%.o: fuzz/fuzz_%.c $(MK) | dirs
+	@mkdir -p $$(@D)
+	$(HOST_CC) $(WARN) $(INC) -Ifuzz $(DEP) $(HOST_FLAGS_$(1)) -DFUZZ_ENTRY=fz_$$*_entry -c $$< -o $$@
+$(B)/$(1)/fuzz-replay: $(B)/$(1)/fuzz/replay.o $(FUZZ_TARGETS:%=$(B)/$(1)/fuzz/entry_%.o) \
+        $(FUZZ_COMMON:%.c=$(B)/$(1)/%.o) $(SRC:%.c=$(B)/$(1)/%.o)
+	$(HOST_CC) $(SAN) $$^ -lm -o $$@
+endef
+$(foreach v,host-float host-fixed,$(eval $(call fuzz_replay,$(v))))
+FUZZ_REPLAY_ARGS := $(foreach t,$(FUZZ_TARGETS),$(t) fuzz/corpus/$(t))
+test-build: $(B)/host-float/fuzz-replay $(B)/host-fixed/fuzz-replay
+.PHONY: fuzz fuzz-build
 
 # ------------------------------------------------------------------ make demo / bench
 demo: deps
@@ -240,7 +300,7 @@ clean:
 	rm -rf $(B)
 
 # Header dependencies written by -MMD (none before the first build).
--include $(wildcard $(foreach v,$(VARIANTS),$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
+-include $(wildcard $(foreach v,$(VARIANTS) fuzz-float fuzz-fixed,$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
 .PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean \
         m4f-float-images m3-fixed-images

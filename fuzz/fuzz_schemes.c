@@ -1,0 +1,749 @@
+/* SPDX-License-Identifier: MIT */
+/* libFuzzer target: every scheme on a small mesh decoded from the input bytes.
+ *
+ * The bytes choose a mesh (a template - tetrahedron, octahedron, grid, quad cube, fan, strip -
+ * with perturbed positions, or a random face list that is often invalid), tags (creases,
+ * corners, fixed vertices, reserved bits, crease angle) and the parameters of every scheme
+ * (levels 1..3, boundary rule, flags, PIA, quasi 4-8, semi-regular 4-8 and an extraction,
+ * alpha order / kernel / angle / stiffness), including out-of-range values. Each scheme runs
+ * with an arena of exactly its plan, of plan - 1 and of a smaller size chosen by the input,
+ * and fuzz_check.c's checks apply: known status; on failure arena mark, input mesh and input
+ * bytes unchanged; on success peak <= plan, guard bytes intact, outputs validated. Also: an
+ * arena of the plan never gives SUBD_ERR_NOMEM; the stream emits subd_loop's triangles bit
+ * for bit and nothing stays in its arena.
+ *
+ * FZ_AVOID_KNOWN (default 1) keeps the decoder away from bugs already reported and being
+ * fixed elsewhere (issue 13): the cosh kernel's overflow at large angles. */
+#include "fuzz_check.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef FZ_AVOID_KNOWN
+#define FZ_AVOID_KNOWN 1
+#endif
+
+typedef struct cur {
+    const uint8_t *p;
+    size_t n, i;
+} cur;
+static uint8_t u8(cur *c) { return c->i < c->n ? c->p[c->i++] : 0u; }
+static int8_t s8(cur *c) { return (int8_t)u8(c); }
+
+/* base integer coordinate plus a perturbation byte (1/64 units); 0x7f = a special value */
+static subd_real coord(int base, uint8_t b, uint8_t sel)
+{
+#if SUBD_FIXED
+    if (b == 0x7fu) {
+        static const subd_real sp[4] = {INT32_MAX, INT32_MIN, 30000 * 65536, -(1 << 30)};
+        return sp[sel & 3u];
+    }
+    return (subd_real)(base * 65536 + (int32_t)(int8_t)b * 1024);
+#else
+    if (b == 0x7fu) {
+        static const float sp[4] = {1e30f, -3e38f, 1e-30f, 0.0f};
+        float z = 0.0f;
+        if (sel == 0xffu)
+            return z / z; /* NaN */
+        if (sel == 0xfeu)
+            return 1.0f / z; /* inf */
+        return sp[sel & 3u];
+    }
+    return (float)base + (float)(int8_t)b / 64.0f;
+#endif
+}
+
+#define MAXV 16
+#define MAXF 24
+typedef struct decoded {
+    uint32_t nv, nf;
+    subd_real pos[3 * MAXV];
+    uint32_t fsize[MAXF];
+    uint32_t idx[4 * MAXF];
+} decoded;
+
+static void put_tri(decoded *m, uint32_t a, uint32_t b, uint32_t c)
+{
+    if (m->nf >= MAXF)
+        return;
+    uint32_t k = 0;
+    for (uint32_t f = 0; f < m->nf; f++)
+        k += m->fsize[f];
+    m->fsize[m->nf++] = 3;
+    m->idx[k] = a, m->idx[k + 1] = b, m->idx[k + 2] = c;
+}
+static void put_quad(decoded *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+    put_tri(m, a, b, c);
+    uint32_t k = 0;
+    for (uint32_t f = 0; f < m->nf; f++)
+        k += m->fsize[f];
+    m->fsize[m->nf - 1] = 4;
+    m->idx[k] = d;
+}
+
+static void decode_mesh(cur *c, decoded *m)
+{
+    static const int tet[4][3] = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}};
+    static const int oct[6][3] = {{2, 0, 0}, {-2, 0, 0}, {0, 2, 0}, {0, -2, 0}, {0, 0, 2}, {0, 0, -2}};
+    int base[MAXV][3];
+    memset(base, 0, sizeof base);
+    memset(m, 0, sizeof *m);
+    uint8_t t = u8(c) % 8u;
+    switch (t) {
+    case 1: /* tetrahedron */
+        m->nv = 4;
+        memcpy(base, tet, sizeof tet);
+        put_tri(m, 0, 2, 1), put_tri(m, 0, 1, 3), put_tri(m, 0, 3, 2), put_tri(m, 1, 2, 3);
+        break;
+    case 2: /* octahedron */
+        m->nv = 6;
+        memcpy(base, oct, sizeof oct);
+        put_tri(m, 0, 2, 4), put_tri(m, 2, 1, 4), put_tri(m, 1, 3, 4), put_tri(m, 3, 0, 4);
+        put_tri(m, 2, 0, 5), put_tri(m, 1, 2, 5), put_tri(m, 3, 1, 5), put_tri(m, 0, 3, 5);
+        break;
+    case 3: { /* 3x3 grid of vertices, 8 triangles, open */
+        m->nv = 9;
+        for (int v = 0; v < 9; v++)
+            base[v][0] = v % 3, base[v][1] = v / 3;
+        uint8_t diag = u8(c);
+        for (uint32_t j = 0; j < 2; j++)
+            for (uint32_t i = 0; i < 2; i++) {
+                uint32_t a = j * 3 + i, b = a + 1, d = a + 3, e = a + 4;
+                if ((diag >> (j * 2 + i)) & 1u)
+                    put_tri(m, a, b, e), put_tri(m, a, e, d);
+                else
+                    put_tri(m, a, b, d), put_tri(m, b, e, d);
+            }
+        break;
+    }
+    case 4: /* cube of quads (closed) */
+        m->nv = 8;
+        for (int v = 0; v < 8; v++)
+            base[v][0] = v & 1, base[v][1] = (v >> 1) & 1, base[v][2] = (v >> 2) & 1;
+        put_quad(m, 0, 2, 3, 1), put_quad(m, 4, 5, 7, 6), put_quad(m, 0, 1, 5, 4);
+        put_quad(m, 2, 6, 7, 3), put_quad(m, 0, 4, 6, 2), put_quad(m, 1, 3, 7, 5);
+        break;
+    case 5: { /* fan around vertex 0 of valence k (open or closed with a cap vertex) */
+        uint8_t b = u8(c);
+        uint32_t k = 2u + b % 12u, closed = (b >> 4) & 1u;
+        m->nv = 1 + k + closed;
+        static const int ring[12][2] = {{4, 0}, {3, 2}, {2, 3}, {0, 4}, {-2, 3}, {-3, 2},
+                                        {-4, 0}, {-3, -2}, {-2, -3}, {0, -4}, {2, -3}, {3, -2}};
+        for (uint32_t i = 0; i < k; i++)
+            base[1 + i][0] = ring[(i * 12u) / k][0], base[1 + i][1] = ring[(i * 12u) / k][1];
+        base[0][2] = 1;
+        for (uint32_t i = 0; i < k; i++) {
+            uint32_t a = 1 + i, n = 1 + (i + 1) % k;
+            if (i + 1 < k || k > 2)
+                put_tri(m, 0, a, n);
+            if (closed && (i + 1 < k || k > 2))
+                put_tri(m, k + 1, n, a);
+        }
+        if (closed)
+            base[k + 1][2] = -1;
+        break;
+    }
+    case 6: /* two triangles sharing an edge, or one */
+        m->nv = 4;
+        base[1][0] = 1, base[2][1] = 1, base[3][0] = 1, base[3][1] = 1;
+        put_tri(m, 0, 1, 2);
+        if (u8(c) & 1u)
+            put_tri(m, 1, 3, 2);
+        break;
+    case 7: /* cube, triangulated (closed, valences 4 and 5) */
+        m->nv = 8;
+        for (int v = 0; v < 8; v++)
+            base[v][0] = v & 1, base[v][1] = (v >> 1) & 1, base[v][2] = (v >> 2) & 1;
+        {
+            static const uint32_t q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+            uint8_t diag = u8(c);
+            for (uint32_t f = 0; f < 6; f++) {
+                const uint32_t *a = q[f];
+                if ((diag >> f) & 1u)
+                    put_tri(m, a[0], a[1], a[2]), put_tri(m, a[0], a[2], a[3]);
+                else
+                    put_tri(m, a[0], a[1], a[3]), put_tri(m, a[1], a[2], a[3]);
+            }
+        }
+        break;
+    default: { /* random face list: often invalid */
+        m->nv = 3u + u8(c) % (MAXV - 2u);
+        uint32_t nf = 1u + u8(c) % 12u;
+        for (uint32_t v = 0; v < m->nv; v++)
+            for (int k = 0; k < 3; k++)
+                base[v][k] = s8(c) / 32;
+        uint32_t k = 0;
+        for (uint32_t f = 0; f < nf; f++) {
+            uint8_t sz = u8(c);
+            uint32_t n = sz < 24u ? 4u : sz < 28u ? 2u : sz < 30u ? 5u : 3u;
+            m->fsize[m->nf++] = n;
+            for (uint32_t i = 0; i < n; i++) {
+                uint8_t x = u8(c);
+                m->idx[k++] = x >= 252u ? m->nv + (x & 3u) : x % m->nv;
+            }
+        }
+        break;
+    }
+    }
+    for (uint32_t v = 0; v < m->nv; v++)
+        for (int k = 0; k < 3; k++) {
+            uint8_t b = u8(c);
+            m->pos[3 * v + (uint32_t)k] = coord(base[v][k], b == 0x7fu ? 0x7fu : (uint8_t)(b & 0x9fu), b == 0x7fu ? u8(c) : 0);
+        }
+    if (u8(c) & 1u) /* flip one face */
+        if (m->nf && m->fsize[0] >= 3) {
+            uint32_t tmp = m->idx[0];
+            m->idx[0] = m->idx[1];
+            m->idx[1] = tmp;
+        }
+}
+
+/* ---------------------------------------------------------------- the input mesh */
+static subd_mesh g_in;
+static fz_snap g_in_snap, g_desc_snap, g_data_snap;
+
+static void check_inputs(const char *call)
+{
+    fz_snap_check(&g_in_snap, call);
+    fz_snap_check(&g_desc_snap, call);
+    fz_snap_check(&g_data_snap, call);
+}
+
+/* Runs one call with arenas of plan, plan - 1 and plan * r / 256 bytes. run returns the
+ * status; ok (may be NULL) validates the outputs after a success. */
+typedef int (*run_fn)(void *ctx, subd_arena *a, subd_diag *d);
+typedef void (*ok_fn)(void *ctx, subd_arena *a, int first);
+static void run_sized(const char *call, uint32_t plan, run_fn run, ok_fn ok, void *ctx, uint8_t r, int extra)
+{
+    if (plan > FZ_MAX_ARENA)
+        return;
+    uint32_t sizes[3] = {plan, plan ? plan - 1u : 0u, (uint32_t)(((uint64_t)plan * r) >> 8)};
+    uint32_t n = plan ? 3u : 1u;
+    for (uint32_t i = 0; i < n; i++) {
+        fz_arena fa;
+        fz_arena_open(&fa, sizes[i]);
+        subd_diag d;
+        subd_diag_clear(&d);
+        int st = run(ctx, &fa.a, &d);
+        fz_status_known(st, extra, call);
+        fz_arena_after(&fa, st, 0, plan, call);
+        check_inputs(call);
+        if (i == 0)
+            FZ_CHECK(st != SUBD_ERR_NOMEM, call, st, plan); /* the plan is enough */
+        if (st == SUBD_ERR_NOMEM)
+            FZ_CHECK(d.bytes_needed > sizes[i] || d.bytes_needed == 0, call, d.bytes_needed, sizes[i]);
+        if (st == SUBD_OK && ok)
+            ok(ctx, &fa.a, i == 0);
+        fz_arena_close(&fa);
+    }
+}
+
+/* ---------------------------------------------------------------- Loop, stream, limit */
+typedef struct loop_ctx {
+    subd_loop_opts o;
+    subd_mesh out;
+    /* a copy of the plan-sized run's output, for the stream comparison */
+    int have;
+    uint32_t nf;
+    subd_real *pos;
+    uint32_t *cv;
+} loop_ctx;
+
+static int loop_run(void *x, subd_arena *a, subd_diag *d)
+{
+    loop_ctx *c = (loop_ctx *)x;
+    return subd_loop(a, &g_in, &c->o, &c->out, d);
+}
+static void loop_ok(void *x, subd_arena *a, int first)
+{
+    loop_ctx *c = (loop_ctx *)x;
+    (void)a;
+    fz_validate_mesh(&c->out, (c->o.flags & SUBD_LOOP_ADJACENCY) != 0, "subd_loop output");
+    FZ_CHECK(c->out.num_faces == g_in.num_faces << (2u * c->o.levels), "subd_loop faces", c->out.num_faces, 0);
+    if (first) {
+        c->have = 1;
+        c->nf = c->out.num_faces;
+        c->pos = (subd_real *)malloc((size_t)c->out.num_verts * 3u * sizeof(subd_real));
+        c->cv = (uint32_t *)malloc((size_t)c->out.num_corners * 4u);
+        memcpy(c->pos, c->out.pos, (size_t)c->out.num_verts * 3u * sizeof(subd_real));
+        memcpy(c->cv, c->out.corner_vert, (size_t)c->out.num_corners * 4u);
+    }
+}
+
+typedef struct stream_ctx {
+    subd_loop_opts o;
+    const loop_ctx *loop; /* subd_loop's output with the same levels and rule, or NULL */
+    uint32_t count, stop_at;
+} stream_ctx;
+
+static int stream_tri(void *x, const subd_loop_tri *t)
+{
+    stream_ctx *c = (stream_ctx *)x;
+    fz_check_finite(&t->pos[0][0], 9, "stream triangle");
+    fz_check_finite(&t->normal[0][0], 9, "stream normal");
+    if (c->loop) {
+        FZ_CHECK(c->count < c->loop->nf, "stream: more triangles than subd_loop", c->count, c->loop->nf);
+        for (uint32_t k = 0; k < 3; k++) {
+            uint32_t v = c->loop->cv[3u * c->count + k];
+            FZ_CHECK(memcmp(t->pos[k], c->loop->pos + 3u * v, 3u * sizeof(subd_real)) == 0,
+                     "stream = subd_loop bit for bit", c->count, k);
+        }
+    }
+    c->count++;
+    return c->count == c->stop_at ? 7 : 0;
+}
+static int stream_run(void *x, subd_arena *a, subd_diag *d)
+{
+    stream_ctx *c = (stream_ctx *)x;
+    subd_loop_sink s = {stream_tri, c};
+    c->count = 0;
+    int st = subd_loop_stream(a, &g_in, &c->o, &s, d);
+    FZ_CHECK(a->used == 0, "subd_loop_stream leaves nothing in the arena", a->used, st);
+    if (st == 7)
+        FZ_CHECK(c->count == c->stop_at, "stream stop", c->count, c->stop_at);
+    else if (st != SUBD_OK)
+        FZ_CHECK(st < 0, "stream status", st, 0);
+    return st;
+}
+static void stream_ok(void *x, subd_arena *a, int first)
+{
+    stream_ctx *c = (stream_ctx *)x;
+    (void)a, (void)first;
+    FZ_CHECK(c->count == g_in.num_faces << (2u * c->o.levels), "stream triangle count", c->count, g_in.num_faces);
+}
+
+typedef struct limit_ctx {
+    subd_loop_boundary b;
+    int normals;
+    subd_real *pos, *nrm;
+} limit_ctx;
+static int limit_run(void *x, subd_arena *a, subd_diag *d)
+{
+    limit_ctx *c = (limit_ctx *)x;
+    return subd_loop_limit(a, &g_in, c->b, &c->pos, c->normals ? &c->nrm : NULL, d);
+}
+static void limit_ok(void *x, subd_arena *a, int first)
+{
+    limit_ctx *c = (limit_ctx *)x;
+    (void)a, (void)first;
+    fz_check_finite(c->pos, 3u * g_in.num_verts, "subd_loop_limit pos");
+    if (c->normals)
+        fz_check_finite(c->nrm, 3u * g_in.num_verts, "subd_loop_limit normals");
+}
+
+/* ---------------------------------------------------------------- PIA */
+typedef struct pia_ctx {
+    subd_pia_opts o;
+    subd_real *pos;
+    subd_pia_result r;
+} pia_ctx;
+static int pia_run(void *x, subd_arena *a, subd_diag *d)
+{
+    pia_ctx *c = (pia_ctx *)x;
+    return subd_pia(a, &g_in, &c->o, &c->pos, &c->r, d);
+}
+static void pia_ok(void *x, subd_arena *a, int first)
+{
+    pia_ctx *c = (pia_ctx *)x;
+    (void)a, (void)first;
+    fz_check_finite(c->pos, 3u * g_in.num_verts, "subd_pia pos");
+    FZ_CHECK(c->r.iterations <= c->o.max_iter, "subd_pia iterations", c->r.iterations, c->o.max_iter);
+}
+
+/* ---------------------------------------------------------------- quasi 4-8 */
+typedef struct q48_ctx {
+    subd_q48_opts o;
+    subd_mesh out;
+} q48_ctx;
+static int q48_run(void *x, subd_arena *a, subd_diag *d)
+{
+    q48_ctx *c = (q48_ctx *)x;
+    return subd_quasi48(a, &g_in, &c->o, &c->out, d);
+}
+static void q48_ok(void *x, subd_arena *a, int first)
+{
+    q48_ctx *c = (q48_ctx *)x;
+    (void)a, (void)first;
+    fz_validate_mesh(&c->out, 1, "subd_quasi48 output");
+}
+
+/* ---------------------------------------------------------------- semi-regular 4-8 */
+static uint8_t g_cb_level;
+static uint32_t adapt_cb(void *ctx, const subd_real *p0, const subd_real *p1, const subd_real *p2)
+{
+    (void)ctx;
+    uint32_t h = subd_real_bits(p0[0]) ^ subd_real_bits(p1[1]) * 3u ^ subd_real_bits(p2[2]) * 7u;
+    return (h + g_cb_level) % 6u;
+}
+
+typedef struct ext_ctx {
+    const subd_sr48 *h;
+    subd_adapt ad;
+    subd_mesh out;
+    subd_adapt_report rep;
+} ext_ctx;
+static int ext_run(void *x, subd_arena *a, subd_diag *d)
+{
+    ext_ctx *c = (ext_ctx *)x;
+    return subd_sr48_extract(a, c->h, &c->ad, &c->out, &c->rep, d);
+}
+static void ext_ok(void *x, subd_arena *a, int first)
+{
+    ext_ctx *c = (ext_ctx *)x;
+    (void)a, (void)first;
+    fz_validate_mesh(&c->out, 1, "subd_sr48_extract output");
+    FZ_CHECK(c->rep.faces == c->out.num_faces, "extract report", c->rep.faces, c->out.num_faces);
+}
+
+typedef struct sr48_ctx {
+    subd_sr48_opts o;
+    subd_sr48 out;
+    ext_ctx ext;
+    uint8_t r;
+} sr48_ctx;
+static int sr48_run(void *x, subd_arena *a, subd_diag *d)
+{
+    sr48_ctx *c = (sr48_ctx *)x;
+    return subd_sr48_build(a, &g_in, &c->o, &c->out, d);
+}
+static void sr48_ok(void *x, subd_arena *a, int first)
+{
+    sr48_ctx *c = (sr48_ctx *)x;
+    (void)a;
+    const subd_sr48 *h = &c->out;
+    FZ_CHECK(h->num_tris == h->level_tri[h->steps + 1u], "sr48 counts", h->num_tris, 0);
+    for (uint32_t i = 0; i < 3u * h->num_tris; i++)
+        FZ_CHECK(h->tri_vert[i] < h->num_verts, "sr48 tri_vert", i, h->tri_vert[i]);
+    fz_check_finite(h->pos, 3u * h->num_verts, "sr48 pos");
+    if (!first)
+        return;
+    c->ext.h = h;
+    uint32_t plan = 0;
+    int st = subd_sr48_extract_plan(h, &c->ext.ad, &plan);
+    fz_status_known(st, 0, "subd_sr48_extract_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_sr48_extract", plan, ext_run, ext_ok, &c->ext, c->r, 0);
+}
+
+/* ---------------------------------------------------------------- alpha */
+typedef struct curve_ctx {
+    uint32_t m;
+    int closed;
+    subd_alpha_opts o;
+    uint32_t points;
+    subd_alpha_curve_out out;
+} curve_ctx;
+static int curve_run(void *x, subd_arena *a, subd_diag *d)
+{
+    curve_ctx *c = (curve_ctx *)x;
+    return subd_alpha_curve(a, g_in.pos, c->m, c->closed, &c->o, &c->out, d);
+}
+static void curve_ok(void *x, subd_arena *a, int first)
+{
+    curve_ctx *c = (curve_ctx *)x;
+    (void)a, (void)first;
+    FZ_CHECK(c->out.num_points == c->points, "alpha curve points", c->out.num_points, c->points);
+    fz_check_finite(c->out.pos, 3u * c->out.num_points, "alpha curve pos");
+}
+
+typedef struct surf_ctx {
+    subd_alpha_opts o;
+    subd_mesh out;
+    subd_alpha_surface_info info;
+} surf_ctx;
+static int surf_run(void *x, subd_arena *a, subd_diag *d)
+{
+    surf_ctx *c = (surf_ctx *)x;
+    return subd_alpha_surface(a, &g_in, &c->o, &c->out, &c->info, d);
+}
+static void surf_ok(void *x, subd_arena *a, int first)
+{
+    surf_ctx *c = (surf_ctx *)x;
+    (void)a, (void)first;
+    fz_validate_mesh(&c->out, 1, "subd_alpha_surface output");
+}
+
+static void alpha_params(cur *c, subd_alpha_opts *o, int32_t *tags, uint32_t ntags)
+{
+    subd_alpha_opts_default(o);
+    uint8_t b = u8(c);
+    o->order = 2u + b % 8u;
+    if (b >= 248u)
+        o->order = b & 1u ? 1u : SUBD_ALPHA_MAX_ORDER + 1u;
+    o->levels = u8(c) % 4u;
+    o->kernel = u8(c) % 5u;
+    o->alpha_num = s8(c);
+    o->alpha_den = 1 + (int32_t)(u8(c) % 24u);
+    uint8_t e = u8(c);
+    if (e == 0xffu)
+        o->alpha_num = SUBD_ALPHA_MAX_NUM;
+    else if (e == 0xfeu)
+        o->alpha_den = 0;
+    else if (e == 0xfdu)
+        o->alpha_den = INT32_MAX >> 2;
+#if FZ_AVOID_KNOWN
+    /* known (issue 13): cosh of a large angle overflows int64 instead of SUBD_ERR_RANGE */
+    if (o->kernel == SUBD_ALPHA_COSH) {
+        o->alpha_num %= 2;
+        if (o->alpha_den < 4)
+            o->alpha_den = 4;
+    }
+#endif
+    int8_t s = s8(c);
+#if SUBD_FIXED
+    o->stiffness = (subd_real)s * 2048; /* -4 .. 4 in steps of 1/32 */
+#else
+    o->stiffness = (float)s / 32.0f;
+#endif
+    if (u8(c) < 64u && ntags) {
+        for (uint32_t i = 0; i < ntags; i++)
+            tags[i] = s8(c);
+        o->tag_num = tags;
+    }
+}
+
+/* ---------------------------------------------------------------- the entry */
+int FUZZ_ENTRY(const uint8_t *data, size_t size)
+{
+    if (size > 4096)
+        return 0;
+    cur c = {data, size, 0};
+    fz_snap_take(&g_data_snap, data, size);
+    decoded dm;
+    decode_mesh(&c, &dm);
+    subd_face_list fl;
+    memset(&fl, 0, sizeof fl);
+    fl.num_verts = dm.nv;
+    fl.pos = dm.pos;
+    fl.num_faces = dm.nf;
+    fl.face_size = dm.fsize;
+    fl.index = dm.idx;
+
+    /* the builder itself, with arenas of plan, plan - 1 and smaller */
+    uint32_t plan = 0;
+    int st = subd_mesh_plan(&fl, &plan);
+    fz_status_known(st, 0, "subd_mesh_plan");
+    if (st != SUBD_OK || plan > FZ_MAX_ARENA) {
+        fz_snap_free(&g_data_snap);
+        return 0;
+    }
+    uint8_t r = u8(&c);
+    fz_arena in_arena;
+    int built = 0;
+    for (uint32_t i = 0; i < 3u && !built; i++) {
+        uint32_t sz = i == 0 ? plan : i == 1 ? (plan ? plan - 1u : 0u) : (uint32_t)(((uint64_t)plan * r) >> 8);
+        fz_arena fa;
+        fz_arena_open(&fa, sz);
+        subd_diag d;
+        memset(&g_in, 0x5A, sizeof g_in);
+        subd_mesh m0 = g_in;
+        st = subd_mesh_build(&fa.a, &fl, &g_in, &d);
+        fz_status_known(st, 0, "subd_mesh_build");
+        fz_arena_after(&fa, st, 0, plan, "subd_mesh_build");
+        fz_snap_check(&g_data_snap, "subd_mesh_build");
+        if (st != SUBD_OK) {
+            FZ_CHECK(memcmp(&g_in, &m0, sizeof m0) == 0, "subd_mesh_build: *out untouched", st, 0);
+            FZ_CHECK(i > 0 || st != SUBD_ERR_NOMEM, "subd_mesh_build plan", st, plan);
+            fz_arena_close(&fa);
+            if (i == 0)
+                break; /* invalid input: every size fails the same way */
+            continue;
+        }
+        fz_validate_mesh(&g_in, 1, "subd_mesh_build");
+        if (i == 0) {
+            in_arena = fa; /* keep the plan-sized build as the schemes' input */
+            built = 1;
+        } else {
+            fz_arena_close(&fa);
+        }
+    }
+    if (!built) {
+        fz_snap_free(&g_data_snap);
+        return 0;
+    }
+
+    /* tags */
+    uint32_t ntag = u8(&c) % 8u;
+    for (uint32_t i = 0; i < ntag; i++) {
+        uint8_t k = u8(&c), x = u8(&c);
+        switch (k % 6u) {
+        case 0:
+        case 1:
+            if (g_in.num_corners)
+                subd_edge_tag_set(&g_in, x % g_in.num_corners, SUBD_ETAG_CREASE);
+            break;
+        case 2:
+            g_in.vert_tag[x % g_in.num_verts] |= SUBD_VTAG_CORNER;
+            break;
+        case 3:
+            g_in.vert_tag[x % g_in.num_verts] |= SUBD_VTAG_FIXED;
+            break;
+        case 4:
+            if (x < 16u)
+                g_in.vert_tag[x % g_in.num_verts] |= 0x40u; /* reserved: limit and PIA refuse it */
+            else if (g_in.num_corners)
+                subd_edge_tag_clear(&g_in, x % g_in.num_corners, SUBD_ETAG_CREASE);
+            break;
+        default:
+            (void)subd_mesh_tag_crease_angle(&g_in, subd_cos_turns((int32_t)(x % 64u), 64));
+            break;
+        }
+    }
+    fz_snap_take(&g_in_snap, in_arena.block, in_arena.a.used);
+    fz_snap_take(&g_desc_snap, &g_in, sizeof g_in);
+
+    /* Loop */
+    loop_ctx lc;
+    memset(&lc, 0, sizeof lc);
+    lc.o.levels = 1u + u8(&c) % 3u;
+    uint8_t b = u8(&c);
+    lc.o.boundary = (subd_loop_boundary)(b < 250u ? b % 2u : 2u + (b & 1u));
+    uint8_t fb = u8(&c);
+    lc.o.flags = fb < 240u ? fb % 2u : fb;
+    if (u8(&c) == 0xffu)
+        lc.o.levels = u8(&c) & 1u ? 0u : SUBD_MAX_LEVELS + 1u;
+    st = subd_loop_plan(&g_in, &lc.o, &plan);
+    fz_status_known(st, 0, "subd_loop_plan");
+    check_inputs("subd_loop_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_loop", plan, loop_run, loop_ok, &lc, u8(&c), 0);
+
+    /* Loop stream (same levels and rule) */
+    stream_ctx sc;
+    memset(&sc, 0, sizeof sc);
+    sc.o = lc.o;
+    uint8_t sf = u8(&c);
+    sc.o.flags = sf < 240u ? (sf & 1u) * SUBD_LOOP_STREAM_LIMIT : sf;
+    sc.stop_at = u8(&c) < 32u ? 1u + u8(&c) : 0u;
+    sc.loop = (lc.have && sc.o.flags == 0) ? &lc : NULL;
+    st = subd_loop_stream_plan(&g_in, &sc.o, &plan);
+    fz_status_known(st, 0, "subd_loop_stream_plan");
+    check_inputs("subd_loop_stream_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_loop_stream", plan, stream_run, stream_ok, &sc, u8(&c), 7);
+    free(lc.pos);
+    free(lc.cv);
+
+    /* Loop limit */
+    limit_ctx lim;
+    memset(&lim, 0, sizeof lim);
+    lim.b = lc.o.boundary;
+    lim.normals = u8(&c) & 1u;
+    st = subd_loop_limit_plan(&g_in, lim.b, lim.normals, &plan);
+    fz_status_known(st, 0, "subd_loop_limit_plan");
+    check_inputs("subd_loop_limit_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_loop_limit", plan, limit_run, limit_ok, &lim, u8(&c), 0);
+
+    /* PIA */
+    pia_ctx pc;
+    memset(&pc, 0, sizeof pc);
+    pc.o.boundary = lc.o.boundary;
+    uint8_t tb = u8(&c);
+#if SUBD_FIXED
+    pc.o.tol = (subd_real)tb * 64;
+#else
+    pc.o.tol = (float)tb / 256.0f;
+#endif
+    pc.o.max_iter = u8(&c) % 9u;
+    pc.o.method = (subd_pia_method)(u8(&c) % 3u);
+    st = subd_pia_plan(&g_in, &pc.o, &plan);
+    fz_status_known(st, 0, "subd_pia_plan");
+    check_inputs("subd_pia_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_pia", plan, pia_run, pia_ok, &pc, u8(&c), 0);
+
+    /* quasi 4-8 */
+    q48_ctx qc;
+    memset(&qc, 0, sizeof qc);
+    qc.o.steps = u8(&c) % 5u;
+    qc.o.boundary = (subd_q48_boundary)(u8(&c) % 3u);
+    qc.o.flags = u8(&c) % 3u;
+    qc.o.len_bits = u8(&c) % 56u;
+    st = subd_quasi48_plan(&g_in, &qc.o, &plan);
+    fz_status_known(st, 0, "subd_quasi48_plan");
+    check_inputs("subd_quasi48_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_quasi48", plan, q48_run, q48_ok, &qc, u8(&c), 0);
+
+    /* semi-regular 4-8 and one extraction */
+    sr48_ctx rc;
+    memset(&rc, 0, sizeof rc);
+    rc.o.steps = u8(&c) % 5u;
+    rc.o.flags = u8(&c) % 3u;
+    rc.r = u8(&c);
+    {
+        subd_adapt *ad = &rc.ext.ad;
+        ad->mode = (subd_adapt_mode)(u8(&c) % 7u);
+        ad->max_level = u8(&c) % (rc.o.steps + 2u);
+        for (int k = 0; k < 3; k++) {
+            ad->point[k] = coord(0, u8(&c), 0);
+            ad->normal[k] = coord(0, u8(&c), 0);
+        }
+        ad->radius = coord(0, u8(&c), 0);
+        ad->axis = u8(&c) % 4u;
+        ad->eps = coord(0, u8(&c), 0);
+        ad->fn = u8(&c) < 8u ? NULL : adapt_cb;
+        g_cb_level = u8(&c);
+    }
+    uint32_t bound = 0;
+    int stb = subd_sr48_plan(&g_in, &rc.o, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    fz_status_known(stb, 0, "subd_sr48_plan (bound)");
+    uint32_t clusters = SUBD_SR48_CLUSTERS_UNKNOWN;
+    if (stb == SUBD_OK && bound <= FZ_MAX_ARENA) {
+        fz_arena fa;
+        fz_arena_open(&fa, bound); /* the bound covers the cluster sort */
+        subd_diag d;
+        st = subd_sr48_count_clusters(&fa.a, &g_in, &clusters, &d);
+        fz_status_known(st, 0, "subd_sr48_count_clusters");
+        FZ_CHECK(fa.a.used == 0, "subd_sr48_count_clusters leaves the arena", fa.a.used, st);
+        fz_arena_after(&fa, SUBD_ERR_NOMEM, 0, 0, "subd_sr48_count_clusters");
+        check_inputs("subd_sr48_count_clusters");
+        fz_arena_close(&fa);
+        FZ_CHECK(st != SUBD_ERR_NOMEM, "subd_sr48_count_clusters in the plan bound", st, bound);
+        if (st != SUBD_OK)
+            clusters = SUBD_SR48_CLUSTERS_UNKNOWN;
+    }
+    st = subd_sr48_plan(&g_in, &rc.o, clusters, &plan);
+    fz_status_known(st, 0, "subd_sr48_plan");
+    check_inputs("subd_sr48_plan");
+    if (st == SUBD_OK && stb == SUBD_OK)
+        FZ_CHECK(plan <= bound, "sr48 exact plan <= bound", plan, bound);
+    if (st == SUBD_OK)
+        run_sized("subd_sr48_build", plan, sr48_run, sr48_ok, &rc, rc.r, 0);
+
+    /* alpha curve through the first m vertices */
+    curve_ctx cc;
+    memset(&cc, 0, sizeof cc);
+    int32_t ctags[MAXV];
+    cc.m = u8(&c) % (g_in.num_verts + 1u);
+    cc.closed = u8(&c) & 1u;
+    alpha_params(&c, &cc.o, ctags, cc.m);
+    st = subd_alpha_curve_plan(cc.m, cc.closed, &cc.o, &plan, &cc.points);
+    fz_status_known(st, 0, "subd_alpha_curve_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_alpha_curve", plan, curve_run, curve_ok, &cc, u8(&c), 0);
+
+    /* alpha surface */
+    surf_ctx uc;
+    memset(&uc, 0, sizeof uc);
+    int32_t stags[MAXV];
+    alpha_params(&c, &uc.o, stags, g_in.num_verts);
+    if (uc.o.levels == 0u && (u8(&c) & 1u))
+        uc.o.levels = 1u;
+    if (uc.o.order > 4u && uc.o.levels > 1u && uc.o.order <= SUBD_ALPHA_MAX_ORDER)
+        uc.o.levels = 1u; /* keeps the outputs (and the O(valence^2) builds) small: speed */
+    st = subd_alpha_surface_plan(&g_in, &uc.o, &plan);
+    fz_status_known(st, 0, "subd_alpha_surface_plan");
+    check_inputs("subd_alpha_surface_plan");
+    if (st == SUBD_OK)
+        run_sized("subd_alpha_surface", plan, surf_run, surf_ok, &uc, u8(&c), 0);
+
+    fz_snap_free(&g_in_snap);
+    fz_snap_free(&g_desc_snap);
+    fz_snap_free(&g_data_snap);
+    fz_arena_close(&in_arena);
+    return 0;
+}

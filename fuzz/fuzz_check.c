@@ -16,7 +16,7 @@ void fz_status_known(int st, int extra, const char *call)
 {
     if (st == SUBD_OK || (extra != 0 && st == extra))
         return;
-    FZ_CHECK(st <= SUBD_ERR_NOMEM && st >= SUBD_ERR_EMPTY, call, st, extra);
+    FZ_CHECK(st <= SUBD_ERR_NOMEM && st >= SUBD_STATUS_LOWEST, call, st, extra);
 }
 
 void fz_arena_open(fz_arena *fa, uint32_t size)

@@ -53,6 +53,8 @@ typedef enum subd_status {
     SUBD_ERR_NOT_TRIANGLES = -14, /* a triangle-only scheme got a polygon (diag.face: the first) */
     SUBD_ERR_ARITH = -15          /* subd_selfcheck: float arithmetic is not the reference's  */
 } subd_status;
+/* The most negative status (every status is in SUBD_STATUS_LOWEST..0); moves with the enum. */
+#define SUBD_STATUS_LOWEST SUBD_ERR_ARITH
 
 /* A short, constant English description of a status ("non-manifold edge"). */
 const char *subd_status_str(int status);

@@ -587,6 +587,9 @@ check $? "loop --stats with a usage error: exit 1, JSON with the message"
 run "$FLOAT" loop -l 2 --stats --arena 1k test/data/icosahedron.obj -o "$T/x.obj"
 is 3 && json_ok "$T/out" && grep -q '"message":"arena too small: needs [0-9]* bytes, have 1024"' "$T/out"
 check $? "--stats with a too small --arena: exit 3, JSON says how much is needed"
+run "$FLOAT" convert --stats test/data/hexfan.obj -o "$T/no/such/dir/x.obj"
+is 4 && json_ok "$T/out" && grep -q '"exit":4' "$T/out" && grep -q '"message":"cannot write ' "$T/out"
+check $? "convert --stats to an unwritable output: exit 4, JSON with the message"
 # pia that does not reach --tol: exit 5, the error reached on stderr, output written
 run "$FLOAT" pia --tol 1e-12 --max-iter 2 test/data/icosahedron.obj -o "$T/pia5.obj"
 is 5 && grep -q "tolerance 1e-12 not reached: max error [0-9.e+-]* after --max-iter 2" "$T/err" && [ -s "$T/pia5.obj" ]

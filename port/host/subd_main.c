@@ -38,6 +38,15 @@ void tool_error_record(const char *fmt, ...)
     va_end(ap);
 }
 
+void tool_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(g_error, sizeof g_error, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "subd: %s\n", g_error);
+}
+
 static void element_str(const subd_diag *d, char *buf, size_t n)
 {
     buf[0] = '\0';

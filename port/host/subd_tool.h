@@ -165,4 +165,6 @@ int tool_out_of_memory(void);
 /* Records an error message (printf format) for the --stats JSON of a failed run; the
  * caller prints it to stderr as well. The last one recorded is reported. */
 void tool_error_record(const char *fmt, ...);
+/* Prints "subd: MESSAGE" on stderr and records it (tool_error_record). */
+void tool_error(const char *fmt, ...);
 #endif

@@ -14,7 +14,7 @@
  * plan calls, and reused across the repeats. Without files it takes every .obj in
  * ../shared/data/meshes/bench/ (relative to the working directory, i.e. the repository when
  * run by `make bench`) and says so when there is none. SECTIONS is a comma list of
- * parse,loop,limit,q48,alpha,quality,pia,sr48,stream (default: all), valence48 (only when
+ * parse,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild (default: all), valence48 (only when
  * named: the semi-regular 4-8 valence transition table) and demostream (only when named,
  * alone, no files read: the firmware demo's streaming step on the host, the same lines and
  * hash as port/cortex-m/demo.c prints under QEMU; compile with -DSUBD_FIXED=1 for the
@@ -206,6 +206,92 @@ done:
     free(bmem);
     free(text);
     return rc;
+}
+
+/* ==================================================================================== */
+/* Mesh build at high valence: one vertex of valence 65 536 against a grid                */
+
+/* A closed fan (centre 0, ring 1..n, triangles (0, i, i+1)) with n = 65 536, and a
+ * 128 x 256 quad grid split into the same number of triangles (65 536, so the same corner
+ * count). The builder is O(corners), so the two build times should be about equal (the
+ * ratio fan/grid near 1); an O(valence^2) builder takes seconds on the fan. */
+#define FAN_VALENCE 65536u
+#define GRID_NX 128u
+#define GRID_NY 256u
+
+static int fan_build_case(const char *what, build_ctx *bc, double *ns)
+{
+    uint32_t plan = 0;
+    void *mem = NULL;
+    int runs = 0, st = subd_mesh_plan(&bc->fl, &plan);
+    if (st == SUBD_OK) {
+        mem = host_arena_alloc(&bc->arena, plan);
+        if (!mem) st = SUBD_ERR_NOMEM;
+    }
+    if (st == SUBD_OK) st = op_build(bc);
+    if (st == SUBD_OK && bc->arena.peak > plan) st = SUBD_ERR_NOMEM;
+    if (st != SUBD_OK) {
+        fprintf(stderr, "fanbuild: %s: %s\n", what, subd_status_str(st));
+        free(mem);
+        return 1;
+    }
+    *ns = measure(op_build, bc, &runs);
+    printf("%-28s %8lu %8lu %8lu %10.2f %9.3f %11lu %6d\n", what, (unsigned long)bc->fl.num_verts,
+           (unsigned long)bc->fl.num_faces, (unsigned long)(3u * bc->fl.num_faces),
+           (3.0 * bc->fl.num_faces / 1e6) / (*ns / 1e9), *ns / 1e6, (unsigned long)plan, runs);
+    fflush(stdout);
+    free(mem);
+    return *ns > 0.0 ? 0 : 1;
+}
+
+static int section_fanbuild(void)
+{
+    const uint32_t n = FAN_VALENCE, gv = (GRID_NX + 1u) * (GRID_NY + 1u), gf = 2u * GRID_NX * GRID_NY;
+    subd_real *pos = (subd_real *)calloc(3u * (size_t)(gv > n + 1u ? gv : n + 1u), sizeof *pos);
+    uint32_t *idx = (uint32_t *)malloc(3u * (size_t)(gf > n ? gf : n) * sizeof *idx);
+    build_ctx bc;
+    double fan_ns = 0.0, grid_ns = 0.0;
+    uint32_t i, x, y, t = 0;
+    int failed = 0;
+    printf("\n== mesh build at high valence; reproduce: " REPRO "\n"
+           "subd_mesh_build of a closed fan (one vertex of valence %lu) and of a %lux%lu grid of split quads with the\n"
+           "same corner count; ratio = fan ms / grid ms (an O(corners) builder gives about 1).\n",
+           (unsigned long)n, (unsigned long)GRID_NX, (unsigned long)GRID_NY);
+    printf("%-28s %8s %8s %8s %10s %9s %11s %6s\n", "mesh", "verts", "faces", "corners", "build Mc/s", "build ms",
+           "arena bytes", "runs");
+    if (!pos || !idx) {
+        fprintf(stderr, "fanbuild: out of memory\n");
+        free(pos);
+        free(idx);
+        return 1;
+    }
+    memset(&bc, 0, sizeof bc);
+    for (i = 0; i < n; i++) {
+        idx[3u * i] = 0;
+        idx[3u * i + 1u] = 1u + i;
+        idx[3u * i + 2u] = 1u + (i + 1u) % n;
+    }
+    bc.fl.num_verts = n + 1u;
+    bc.fl.pos = pos;
+    bc.fl.num_faces = n;
+    bc.fl.index = idx;
+    failed += fan_build_case("fan (valence 65536)", &bc, &fan_ns);
+    for (y = 0; y < GRID_NY; y++)
+        for (x = 0; x < GRID_NX; x++) {
+            uint32_t a = y * (GRID_NX + 1u) + x, b = a + 1u, c = a + GRID_NX + 1u, d = c + 1u;
+            idx[t++] = a; idx[t++] = b; idx[t++] = d;
+            idx[t++] = a; idx[t++] = d; idx[t++] = c;
+        }
+    memset(&bc, 0, sizeof bc);
+    bc.fl.num_verts = gv;
+    bc.fl.pos = pos;
+    bc.fl.num_faces = gf;
+    bc.fl.index = idx;
+    failed += fan_build_case("grid (128x256, split quads)", &bc, &grid_ns);
+    if (!failed) printf("ratio fan/grid: %.2f\n", fan_ns / grid_ns);
+    free(pos);
+    free(idx);
+    return failed;
 }
 
 /* ==================================================================================== */
@@ -1375,7 +1461,7 @@ static int section_on(const char *sections, const char *name)
 static int usage(int rc)
 {
     fprintf(rc ? stderr : stdout,
-            "usage: bench [-t SECONDS] [-s parse,loop,limit,q48,alpha,quality,pia,sr48,stream,valence48] [FILE.obj ...]\n"
+            "usage: bench [-t SECONDS] [-s parse,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild,valence48] [FILE.obj ...]\n"
             "       bench -s demostream\n");
     return rc;
 }
@@ -1434,6 +1520,7 @@ int main(int argc, char **argv)
     if (section_on(sections, "quality")) section_quality();
     if (section_on(sections, "pia")) section_pia();
     if (section_on(sections, "sr48")) section_sr48();
+    if (section_on(sections, "fanbuild")) failed += section_fanbuild();
     if (sections && section_on(sections, "valence48")) section_valence48();
     for (k = 0; k < g_nmesh; k++) host_mesh_free(&g_mesh[k].hm);
     for (k = 0; k < ndef; k++) free(def[k]);

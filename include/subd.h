@@ -192,9 +192,9 @@ int subd_mesh_plan(const subd_face_list *fl, uint32_t *bytes);
      + SUBD_ALIGN_UP(((V) + 1u) * 4u) + SUBD_ALIGN_UP((C) * 4u)) /* build scratch */
 
 /* Builds and validates a mesh. Copies positions and indices into the arena, builds adjacency
- * by counting and prefix sums, tags boundary vertices and edges, counts boundary loops and
- * isolated vertices. Work is O(C + sum over vertices of valence^2); no recursion; stack use
- * is a few dozen bytes.
+ * by counting sorts and prefix sums, tags boundary vertices and edges, counts boundary loops
+ * and isolated vertices. Work is O(V + C), independent of the valences; no recursion; stack
+ * use is a few dozen bytes.
  * Checks, in this order, and returns the first failure found:
  *   SUBD_ERR_PARAM (NULL pointers), SUBD_ERR_EMPTY (no vertices), SUBD_ERR_FACE_SIZE
  *   (diag.face), SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM (diag.bytes_needed = the plan),

@@ -1,10 +1,16 @@
 /* Index mesh: validation and adjacency from a plain face list.
  *
- * Adjacency is built the meshoptimizer way, by counting and prefix sums: the corners of
- * each vertex are bucketed (count, prefix sum, scatter in corner order), and the twin of
- * half-edge a->b is looked up in b's bucket. Buckets keep corner order, so every result
- * is independent of memory addresses and of the platform; there is no hashing and no sort.
- * Cost: O(C + sum of valence^2), no recursion, constant stack.
+ * Adjacency is built the meshoptimizer way, by counting and prefix sums: the half-edges are
+ * sorted by undirected edge (smaller end vertex, then larger) with two stable counting-sort
+ * passes over the vertex indices (LSD radix sort with one digit per vertex index), so the
+ * half-edges of one edge are adjacent and twins, non-manifold edges and flipped faces show in
+ * one scan; per-vertex fans come from one more pass over the corners. Every pass keeps
+ * corner order among equal keys, so every result is independent of memory addresses and of
+ * the platform; there is no hashing and no comparison sort. Cost: O(V + C) whatever the
+ * valences (one vertex of valence 65 536 builds as fast as a grid with as many corners; the
+ * bucket-scan builder before it was O(C + sum of valence^2)), no recursion, constant stack.
+ * (edge_sort.c's radix sort is not reused: it sorts 64-bit keys descending and would need
+ * two 64-bit key arrays, three times this scratch.)
  *
  * Conventions (see subd.h): corner c is also the half-edge from corner_vert[c] to the next
  * corner's vertex in the same face; vert_out[v] is v's boundary half-edge when v is on a
@@ -93,7 +99,8 @@ static int mesh_layout(subd_arena *a, const mesh_counts *c, subd_mesh *m, uint32
     return st;
 }
 
-/* The builder's scratch (layout.h): per-vertex bucket starts and the bucketed corners. */
+/* The builder's scratch (layout.h): per-vertex counts (nv + 1 slots, nv used; the +1 keeps
+ * the plan and SUBD_MESH_BYTES as they were) and the half-edges sorted by edge. */
 static int scratch_layout(subd_arena *a, uint32_t nv, uint32_t nc, uint32_t **vstart, uint32_t **vcorner,
                           uint32_t *bytes)
 {
@@ -183,78 +190,159 @@ static int check_positions(const subd_mesh *m, subd_diag *d)
     return SUBD_OK;
 }
 
-/* Twins: for half-edge a->b, the half-edges b->a are in b's bucket and any duplicate a->b
- * in a's. More than two half-edges on one edge is a non-manifold edge; two in the same
- * direction (and none opposite) means one of the faces is flipped. */
-static int build_twins(subd_mesh *m, const uint32_t *vstart, const uint32_t *vcorner, subd_diag *d)
+/* The arrays the adjacency passes read, copied to locals: the passes store into uint32_t
+ * arrays, which the compiler must otherwise assume may alias the mesh's pointers and counts. */
+typedef struct mesh_view {
+    const uint32_t *cv, *cf, *fs;
+    uint32_t nv, nf, nc;
+} mesh_view;
+
+static mesh_view view_of(const subd_mesh *m)
 {
-    uint32_t h, k;
-    for (h = 0; h < m->num_corners; h++) m->twin[h] = SUBD_NONE;
-    for (h = 0; h < m->num_corners; h++) {
-        uint32_t a = m->corner_vert[h], b = subd_he_dest(m, h);
-        uint32_t same = 0, rev = 0, other = SUBD_NONE, last_face = m->corner_face[h];
-        for (k = vstart[a]; k < vstart[a + 1u]; k++) {
-            uint32_t g = vcorner[k];
-            if (subd_he_dest(m, g) == b) {
-                same++;
-                if (m->corner_face[g] > last_face) last_face = m->corner_face[g];
-            }
-        }
-        for (k = vstart[b]; k < vstart[b + 1u]; k++) {
-            uint32_t g = vcorner[k];
-            if (subd_he_dest(m, g) == a) {
-                rev++;
-                other = g;
-                if (m->corner_face[g] > last_face) last_face = m->corner_face[g];
-            }
-        }
-        if (same + rev > 2u) {
-            d->face = last_face;
-            return subd_fail(d, SUBD_ERR_NONMANIFOLD_EDGE);
-        }
-        if (same == 2u) {
-            d->face = last_face;
-            return subd_fail(d, SUBD_ERR_ORIENTATION);
-        }
-        if (rev == 1u) m->twin[h] = other;
+    mesh_view w;
+    w.cv = m->corner_vert;
+    w.cf = m->corner_face;
+    w.fs = m->face_start;
+    w.nv = m->num_verts;
+    w.nf = m->num_faces;
+    w.nc = m->num_corners;
+    return w;
+}
+
+/* The two end vertices of half-edge h, smaller first: its undirected edge. */
+static inline void edge_ends(const mesh_view *w, uint32_t h, uint32_t *lo, uint32_t *hi)
+{
+    uint32_t f = w->cf[h], a = w->cv[h], b = w->cv[(h + 1u == w->fs[f + 1u]) ? w->fs[f] : h + 1u];
+    *lo = a < b ? a : b;
+    *hi = a < b ? b : a;
+}
+
+/* Prefix sum over cnt[0..n): each slot becomes the first index of its key. */
+static void counts_to_starts(uint32_t *cnt, uint32_t n)
+{
+    uint32_t v, sum = 0;
+    for (v = 0; v < n; v++) {
+        uint32_t c = cnt[v];
+        cnt[v] = sum;
+        sum += c;
     }
-    return SUBD_OK;
+}
+
+/* The half-edges sorted by undirected edge, smaller end then larger end, equal edges in
+ * corner order: an LSD radix sort with one digit per end vertex, two stable counting passes
+ * (cnt: num_verts slots). The first pass runs face by face in corner order, so its end
+ * vertices come without the face lookups of subd_he_dest, into tmp; the second into out. */
+static void sort_by_edge(const mesh_view *w, uint32_t *cnt, uint32_t *tmp, uint32_t *out)
+{
+    const uint32_t *cv = w->cv, *fs = w->fs;
+    const uint32_t nv = w->nv, nf = w->nf, nc = w->nc;
+    uint32_t v, f, c, i, lo, hi;
+    for (v = 0; v < nv; v++) cnt[v] = 0;
+    for (f = 0; f < nf; f++) {
+        uint32_t s = fs[f], e = fs[f + 1u];
+        for (c = s; c < e; c++) {
+            uint32_t a = cv[c], b = cv[c + 1u < e ? c + 1u : s];
+            cnt[a < b ? b : a]++;
+        }
+    }
+    counts_to_starts(cnt, nv);
+    for (f = 0; f < nf; f++) {
+        uint32_t s = fs[f], e = fs[f + 1u];
+        for (c = s; c < e; c++) {
+            uint32_t a = cv[c], b = cv[c + 1u < e ? c + 1u : s];
+            tmp[cnt[a < b ? b : a]++] = c;
+        }
+    }
+    for (v = 0; v < nv; v++) cnt[v] = 0;
+    for (i = 0; i < nc; i++) {
+        edge_ends(w, tmp[i], &lo, &hi);
+        cnt[lo]++;
+    }
+    counts_to_starts(cnt, nv);
+    for (i = 0; i < nc; i++) {
+        edge_ends(w, tmp[i], &lo, &hi);
+        out[cnt[lo]++] = tmp[i];
+    }
+}
+
+/* Twins: the half-edges are sorted by undirected edge (sort_by_edge, with twin[] as its
+ * temporary), so the half-edges of one edge form a run whose first entry is its smallest
+ * corner. More than two half-edges on one edge is a non-manifold edge; two in the same
+ * direction means one of the faces is flipped. The error reported is that of the bad edge
+ * with the smallest corner (the first one a scan of the corners in order meets), naming the
+ * largest face on that edge. */
+static int build_twins(subd_mesh *m, uint32_t *cnt, uint32_t *sorted, subd_diag *d)
+{
+    const mesh_view w = view_of(m);
+    const uint32_t nc = w.nc, *cv = w.cv, *cf = w.cf;
+    uint32_t *twin = m->twin;
+    uint32_t i, j, h, bad_head = SUBD_NONE, bad_face = 0;
+    int bad_st = SUBD_OK;
+    sort_by_edge(&w, cnt, twin, sorted);
+    for (h = 0; h < nc; h++) twin[h] = SUBD_NONE;
+    for (i = 0; i < nc; i = j) {
+        uint32_t head = sorted[i], lo, hi, glo, ghi, last_face = cf[head];
+        edge_ends(&w, head, &lo, &hi);
+        for (j = i + 1u; j < nc; j++) {
+            uint32_t g = sorted[j];
+            edge_ends(&w, g, &glo, &ghi);
+            if (glo != lo || ghi != hi) break;
+            if (cf[g] > last_face) last_face = cf[g];
+        }
+        if (j - i == 2u && cv[sorted[i + 1u]] != cv[head]) {
+            twin[head] = sorted[i + 1u];
+            twin[sorted[i + 1u]] = head;
+        } else if (j - i >= 2u && head < bad_head) {
+            bad_head = head;
+            bad_face = last_face;
+            bad_st = (j - i > 2u) ? SUBD_ERR_NONMANIFOLD_EDGE : SUBD_ERR_ORIENTATION;
+        }
+    }
+    if (bad_st == SUBD_OK) return SUBD_OK;
+    d->face = bad_face;
+    return subd_fail(d, bad_st);
 }
 
 /* Fans: a manifold vertex has at most one boundary half-edge going out, and one walk
- * around it from there (or from any half-edge if interior) reaches all of its corners. */
-static int build_fans(subd_mesh *m, const uint32_t *vstart, const uint32_t *vcorner, subd_diag *d)
+ * around it from there (or from its smallest corner if interior) reaches all of its
+ * corners. One pass over the corners gathers, per vertex, the valence (in deg), the start
+ * (in vert_out) and the number of boundary half-edges (in vert_tag, saturating at 2). */
+static int build_fans(subd_mesh *m, uint32_t *deg, subd_diag *d)
 {
-    uint32_t v, k;
+    uint32_t v, h;
     for (v = 0; v < m->num_verts; v++) {
-        uint32_t deg = vstart[v + 1u] - vstart[v], start = SUBD_NONE, nb = 0, steps, h;
-        m->vert_tag[v] = 0;
+        deg[v] = 0;
         m->vert_out[v] = SUBD_NONE;
-        if (deg == 0) {
+        m->vert_tag[v] = 0;
+    }
+    for (h = 0; h < m->num_corners; h++) {
+        v = m->corner_vert[h];
+        deg[v]++;
+        if (m->vert_out[v] == SUBD_NONE) m->vert_out[v] = h;
+        if (m->twin[h] == SUBD_NONE) {
+            if (m->vert_tag[v] == 0) m->vert_out[v] = h;
+            if (m->vert_tag[v] < 2u) m->vert_tag[v]++;
+        }
+    }
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t start = m->vert_out[v], nb = m->vert_tag[v], steps;
+        if (deg[v] == 0) {
             m->vert_tag[v] = SUBD_VTAG_ISOLATED;
             m->num_isolated++;
             continue;
-        }
-        for (k = vstart[v]; k < vstart[v + 1u]; k++) {
-            if (m->twin[vcorner[k]] == SUBD_NONE) {
-                nb++;
-                start = vcorner[k];
-            }
         }
         if (nb > 1u) {
             d->vertex = v;
             return subd_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
         }
-        if (nb == 0) start = vcorner[vstart[v]];
         steps = 1;
-        for (h = subd_ring_next(m, start, start); h != SUBD_NONE && steps <= deg; h = subd_ring_next(m, start, h))
+        for (h = subd_ring_next(m, start, start); h != SUBD_NONE && steps <= deg[v]; h = subd_ring_next(m, start, h))
             steps++;
-        if (steps != deg) {
+        if (steps != deg[v]) {
             d->vertex = v;
             return subd_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
         }
-        m->vert_out[v] = start;
-        if (nb) m->vert_tag[v] = SUBD_VTAG_BOUNDARY;
+        m->vert_tag[v] = nb ? SUBD_VTAG_BOUNDARY : 0u;
     }
     return SUBD_OK;
 }
@@ -287,7 +375,7 @@ static void count_boundary_loops(subd_mesh *m)
 int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
 {
     uint32_t mark = subd_arena_mark(a);
-    uint32_t *vstart, *vcorner, v, f, c;
+    uint32_t *vstart, *vcorner, f, c;
     int st;
 
     if ((st = check_faces(m, d)) != SUBD_OK) return st;
@@ -300,17 +388,9 @@ int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
         subd_arena_rewind(a, mark);
         return subd_fail(d, SUBD_ERR_NOMEM);
     }
-    /* count -> prefix sum -> scatter; vstart[v] ends as the first bucket slot of v */
-    for (v = 0; v <= m->num_verts; v++) vstart[v] = 0;
-    for (c = 0; c < m->num_corners; c++) vstart[m->corner_vert[c] + 1u]++;
-    for (v = 0; v < m->num_verts; v++) vstart[v + 1u] += vstart[v];
-    for (c = 0; c < m->num_corners; c++) vcorner[vstart[m->corner_vert[c]]++] = c;
-    for (v = m->num_verts; v > 0; v--) vstart[v] = vstart[v - 1u];
-    vstart[0] = 0;
-
     m->num_isolated = 0;
     st = build_twins(m, vstart, vcorner, d);
-    if (st == SUBD_OK) st = build_fans(m, vstart, vcorner, d);
+    if (st == SUBD_OK) st = build_fans(m, vstart, d);
     subd_arena_rewind(a, mark);
     if (st != SUBD_OK) return st;
     count_boundary_loops(m);

@@ -3,8 +3,12 @@
  *   OFF                      keyword line (counts may follow on the same line)
  *   nv nf ne                 counts; ne is read and ignored
  *   x y z [...]              nv vertex lines; anything after z (colours) is ignored
- *   k i0 ... i(k-1) [...]    nf face lines, 0-based indices; anything after them is ignored
+ *   k i0 ... i(k-1) [...]    nf faces, 0-based indices; anything after them on the line of the
+ *                            last index is ignored (colours)
  * Blank lines and `#` comments may appear anywhere. Text after the last face is an error.
+ * OFF is whitespace-separated, so a face's indices may continue on the following lines (as
+ * some exporters wrap long faces): when a line ends before k indices, the next content line
+ * goes on. A face starts on a new line; an error in a face names the line it starts on.
  * Counts larger than the file could possibly hold (a vertex needs at least 6 bytes, a face
  * 8) are rejected on the header line before anything is allocated.
  * As in obj.c, one scan serves plan and read (reader.c).
@@ -37,7 +41,10 @@ static int off_uint(const char **s, const char *e, uint32_t *out)
     return SUBD_OK;
 }
 
-static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m, subd_diag *d)
+/* The scan behind plan, read and line_of: with target != SUBD_NONE it stops at the start of
+ * element `target` (vertex i, or face nv + i) and returns its line in *target_line. */
+static int off_walk(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m, subd_diag *d, uint32_t target,
+                    uint32_t *target_line)
 {
     text_cursor t;
     const char *s, *e;
@@ -68,6 +75,10 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
         d->line = t.lineno + (s ? 0u : 1u);
         if (!s) return subd_fail(d, SUBD_ERR_PARSE);
         e = t.line_end;
+        if (i == target) {
+            *target_line = t.lineno;
+            return SUBD_OK;
+        }
         if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
         for (k = 0; k < 3u; k++) {
             subd_real x;
@@ -81,14 +92,28 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
         d->line = t.lineno + (s ? 0u : 1u);
         if (!s) return subd_fail(d, SUBD_ERR_PARSE);
         e = t.line_end;
+        if (target != SUBD_NONE && nv + i == target) {
+            *target_line = t.lineno;
+            return SUBD_OK;
+        }
         if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
         if (off_uint(&s, e, &fs)) return subd_fail(d, SUBD_ERR_PARSE);
         if (fs < 3u || fs > SUBD_MAX_FACE_SIZE) return subd_fail(d, SUBD_ERR_FACE_SIZE);
         for (j = 0; j < fs; j++) {
             uint32_t vi;
-            const char *p = subd_text_skip_ws(s, e), *te = subd_text_token_end(p, e);
+            const char *p = subd_text_skip_ws(s, e), *te;
             int32_t v;
-            if (p == e) return subd_fail(d, SUBD_ERR_PARSE);
+            if (p == e || *p == '#') { /* the face goes on on the next content line */
+                uint32_t first = d->line;
+                s = off_next(&t);
+                d->line = s ? t.lineno : t.lineno + 1u;
+                if (!s) return subd_fail(d, SUBD_ERR_PARSE);
+                e = t.line_end;
+                if (!subd_text_line_is_text(t.line, e)) return subd_fail(d, SUBD_ERR_PARSE);
+                d->line = first; /* errors in the face name the line it starts on */
+                p = s;
+            }
+            te = subd_text_token_end(p, e);
             st = subd_text_parse_int(p, te, &v);
             if (st != SUBD_OK) return subd_fail(d, st);
             if (v < 0 || (uint32_t)v >= nv) return subd_fail(d, SUBD_ERR_INDEX);
@@ -112,19 +137,21 @@ static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m,
     return SUBD_OK;
 }
 
-/* Line of vertex or face n, counting only content lines after the header. */
+static int off_scan(const char *buf, uint32_t len, mesh_counts *c, subd_mesh *m, subd_diag *d)
+{
+    return off_walk(buf, len, c, m, d, SUBD_NONE, 0);
+}
+
+/* Line on which vertex or face n (faces numbered after the vertices) starts: the same walk
+ * as the scan, so faces spread over several lines are counted as the scan reads them. */
 static uint32_t off_element_line(const char *buf, uint32_t len, uint32_t n)
 {
-    text_cursor t;
-    uint32_t seen = 0;
-    const char *s;
-    subd_text_init(&t, buf, len);
-    s = off_next(&t);
-    if (s) s = subd_text_skip_ws(subd_text_token_end(s, t.line_end), t.line_end);
-    if (s && (s == t.line_end || *s == '#')) off_next(&t); /* counts on their own line */
-    while (off_next(&t))
-        if (seen++ == n) return t.lineno;
-    return 0;
+    mesh_counts c;
+    subd_diag d;
+    uint32_t line = 0;
+    subd_diag_clear(&d);
+    if (off_walk(buf, len, &c, 0, &d, n, &line) != SUBD_OK) return 0;
+    return line;
 }
 
 static uint32_t off_line_of(const char *buf, uint32_t len, const mesh_counts *c, const subd_diag *d)

@@ -403,6 +403,85 @@ static void mesh_edge_tags(void)
     CHECK(!(m.edge_tag[m.twin[0]] & SUBD_ETAG_CREASE));
 }
 
+/* One vertex of valence FAN_N (the builder is O(corners); the bucket-scan builder before it
+ * was O(valence^2) here). Fan faces i = (0, 1+i, 1+(i+1)%n), corners 3i..3i+2: the twin of
+ * spoke 0 -> 1+i (corner 3i) is 1+i -> 0 in face i-1 (corner 3(i-1)+2); the rim edges 3i+1
+ * are the boundary; vert_out is the smallest corner of the interior centre and the outgoing
+ * rim edge of each rim vertex. Checked against these closed forms, then with every corner's
+ * twin found by a search over all corners of its two vertices, then with one extra face
+ * (non-manifold spoke, named by the extra face) and with a second fan on the centre
+ * (bow-tie centre). */
+#define FAN_N 4096u
+static uint32_t g_fan_idx[3u * (FAN_N + 1u)];
+static uint8_t g_fan_arena[SUBD_MESH_BYTES(FAN_N + 1u, FAN_N + 1u, 3u * (FAN_N + 1u), 0u, 0u)]
+    __attribute__((aligned(8)));
+static subd_real g_fan_pos[3u * (FAN_N + 1u)];
+
+static int fan_build(uint32_t nf, subd_mesh *m, subd_diag *d)
+{
+    subd_face_list fl = {0, 0, 0, 0, 0, 0, 0, 0};
+    subd_arena a;
+    fl.num_verts = FAN_N + 1u;
+    fl.pos = g_fan_pos;
+    fl.num_faces = nf;
+    fl.index = g_fan_idx;
+    subd_arena_init(&a, g_fan_arena, (uint32_t)sizeof g_fan_arena);
+    return subd_mesh_build(&a, &fl, m, d);
+}
+
+static void mesh_high_valence_fan(void)
+{
+    const uint32_t n = FAN_N;
+    subd_mesh m;
+    subd_diag d;
+    uint32_t i, h, g, bad = 0;
+    for (i = 0; i < 3u * (n + 1u); i++) g_fan_pos[i] = 0;
+    for (i = 0; i < n; i++) {
+        g_fan_idx[3u * i] = 0;
+        g_fan_idx[3u * i + 1u] = 1u + i;
+        g_fan_idx[3u * i + 2u] = 1u + (i + 1u) % n;
+    }
+    if (!CHECK_EQ(fan_build(n, &m, &d), SUBD_OK)) return;
+    CHECK_EQ(m.num_edges, 2u * n);
+    CHECK_EQ(m.num_boundary_edges, n);
+    CHECK_EQ(m.num_boundary_loops, 1);
+    CHECK_EQ(m.num_isolated, 0);
+    CHECK_EQ(subd_vertex_valence(&m, 0), n);
+    CHECK_EQ(m.vert_out[0], 0);
+    CHECK_EQ(m.vert_tag[0], 0);
+    for (i = 0; i < n && !bad; i++) {
+        bad |= m.twin[3u * i] != 3u * ((i + n - 1u) % n) + 2u;
+        bad |= m.twin[3u * i + 1u] != SUBD_NONE;
+        bad |= m.twin[3u * i + 2u] != 3u * ((i + 1u) % n);
+        bad |= m.vert_out[1u + i] != 3u * i + 1u;
+        bad |= m.vert_tag[1u + i] != SUBD_VTAG_BOUNDARY;
+        bad |= m.edge_tag[3u * i + 1u] != SUBD_ETAG_BOUNDARY || m.edge_tag[3u * i] != 0;
+    }
+    CHECK_EQ(bad, 0);
+    /* the twins of a sample of corners by a search over all corners */
+    for (h = 0; h < m.num_corners && !bad; h += 61u) {
+        uint32_t a = subd_he_origin(&m, h), b = subd_he_dest(&m, h), want = SUBD_NONE;
+        for (g = 0; g < m.num_corners; g++)
+            if (subd_he_origin(&m, g) == b && subd_he_dest(&m, g) == a) want = g;
+        bad |= m.twin[h] != want;
+    }
+    CHECK_EQ(bad, 0);
+    /* a second face on spoke 0 -> 1: non-manifold edge, named by the extra face */
+    g_fan_idx[3u * n] = 0;
+    g_fan_idx[3u * n + 1u] = 1;
+    g_fan_idx[3u * n + 2u] = n / 2u;
+    CHECK_EQ(fan_build(n + 1u, &m, &d), SUBD_ERR_NONMANIFOLD_EDGE);
+    CHECK_EQ(d.face, n);
+    /* two open fans on the centre (drop faces n/2 - 1 and n - 1): a bow-tie at vertex 0 */
+    for (i = n / 2u - 1u; i < n - 2u; i++) {
+        g_fan_idx[3u * i] = 0;
+        g_fan_idx[3u * i + 1u] = 2u + i;
+        g_fan_idx[3u * i + 2u] = 3u + i;
+    }
+    CHECK_EQ(fan_build(n - 2u, &m, &d), SUBD_ERR_NONMANIFOLD_VERTEX);
+    CHECK_EQ(d.vertex, 0);
+}
+
 const test_case suite_mesh[] = {
     {"mesh_closed", mesh_closed},
     {"mesh_open", mesh_open},
@@ -411,5 +490,6 @@ const test_case suite_mesh[] = {
     {"mesh_errors", mesh_errors},
     {"mesh_relabel_property", mesh_relabel_property},
     {"mesh_edge_tags", mesh_edge_tags},
+    {"mesh_high_valence_fan", mesh_high_valence_fan},
     {0, 0}
 };

@@ -74,7 +74,54 @@ static void off_from_obj(void)
     (void)h_reader_sweep(subd_off_read, buf, len, abuf, sizeof abuf, plan);
 }
 
+/* OFF is whitespace-separated: a face's indices may go on over the following lines (with
+ * blank and comment lines between); errors in a later face still name the line it starts on. */
+static void off_multiline_faces(void)
+{
+    static const char text[] =
+        "OFF\n"
+        "5 3 0\n"
+        "0 0 0\n"
+        "1 0 0\n"
+        "1 1 0\n"
+        "0 1 0\n"
+        "0.5 0.5 7\n"
+        "4 0 1\n"    /* line 8: face 0 starts */
+        "  2 3\n"
+        "3\n"        /* line 10: face 1, the count alone */
+        "# a comment inside the face\n"
+        "1 0 4\n"
+        "3 2 1 4 # line 13: face 2 on one line\n";
+    static const char bad[] = /* face 1 (line 8) uses an edge in the same direction as face 0 */
+        "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n"
+        "3 0 1\n2\n"
+        "3 0\n1 2\n";
+    static const char cut[] = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n";
+    subd_arena a;
+    subd_mesh m;
+    subd_diag d;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!CHECK_EQ(subd_off_read(&a, text, slen(text), &m, &d), SUBD_OK)) {
+        h_str("    line "); h_u32(d.line); h_nl();
+        return;
+    }
+    CHECK_EQ(m.num_faces, 3);
+    CHECK_EQ(subd_face_size(&m, 0), 4);
+    CHECK_EQ(m.corner_vert[2], 2);
+    CHECK_EQ(m.corner_vert[3], 3);
+    CHECK_EQ(m.corner_vert[4], 1);
+    CHECK_EQ(m.corner_vert[6], 4);
+    CHECK_EQ(m.corner_vert[7], 2);
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    CHECK_EQ(subd_off_read(&a, bad, slen(bad), &m, &d), SUBD_ERR_ORIENTATION);
+    CHECK_EQ(d.line, 8);
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    CHECK_EQ(subd_off_read(&a, cut, slen(cut), &m, &d), SUBD_ERR_PARSE);
+    CHECK_EQ(d.line, 7);
+}
+
 const test_case suite_off[] = {
+    {"off_multiline_faces", off_multiline_faces},
     {"off_syntax", off_syntax},
     {"off_from_obj", off_from_obj},
     {0, 0}

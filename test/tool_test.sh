@@ -563,5 +563,58 @@ is 2 && grep -q "cannot read" "$T/err"; check $? "input is a directory: exit 2"
 run "$FLOAT" convert test/data/hexfan.obj -o "$T/no/such/dir/x.obj"
 is 4 && grep -q "cannot write" "$T/err"; check $? "unwritable output: exit 4"
 
+# ---------------------------------------------------------------- robustness (issue 13, item 8)
+# non-regular inputs are refused unread (a FIFO with no writer would block, a device never ends)
+if mkfifo "$T/in_fifo.obj" 2> /dev/null; then
+    # (a reader that opened it would block: bounded by timeout(1) when there is one)
+    if command -v timeout > /dev/null 2>&1; then run timeout 20 "$FLOAT" info "$T/in_fifo.obj"
+    else run "$FLOAT" info "$T/in_fifo.obj"; fi
+    is 2 && grep -q "not a regular file" "$T/err"; check $? "FIFO input: exit 2, 'not a regular file', nothing read"
+fi
+ln -s /dev/urandom "$T/urandom.obj"
+run "$FLOAT" info "$T/urandom.obj"
+is 2 && grep -q "not a regular file" "$T/err"; check $? "/dev/urandom as input: exit 2, 'not a regular file'"
+ln -s /dev/zero "$T/zero.tags"
+run "$FLOAT" loop --tags "$T/zero.tags" test/data/icosahedron.obj -o "$T/x.obj"
+is 2 && grep -q "tag file .*not a regular file" "$T/err"; check $? "a device as --tags file: exit 2, 'not a regular file'"
+# over the 2 GiB input cap (a sparse file: no disk used)
+if dd if=/dev/null of="$T/huge.obj" bs=1 seek=2147483649 2> /dev/null && [ -s "$T/huge.obj" ]; then
+    run "$FLOAT" info "$T/huge.obj"
+    is 2 && grep -q "larger than the input cap of 2147483648 bytes" "$T/err"; check $? "input over 2 GiB: exit 2, names the cap"
+fi
+# a failed write to a non-regular output leaves the path alone
+if [ -w /dev/full ]; then
+    ln -s /dev/full "$T/full.obj"
+    run "$FLOAT" convert test/data/hexfan.obj -o "$T/full.obj"
+    is 4 && [ -L "$T/full.obj" ] && [ -c /dev/full ]; check $? "write to /dev/full fails with exit 4, the path and device are kept"
+fi
+# --stats on failure: one JSON object with the exit status and the message
+run "$FLOAT" info --stats test/bad/absurd_counts.off
+is 2 && json_ok "$T/out" && grep -q '"status":"error"' "$T/out" && grep -q '"exit":2' "$T/out" &&
+    grep -q '"message":"test/bad/absurd_counts.off:3: syntax error"' "$T/out"
+check $? "info --stats on a bad file: exit 2, JSON with status, exit and the FILE:LINE message"
+run "$FLOAT" loop --stats --tol 1 test/data/icosahedron.obj -o "$T/x.obj"
+is 1 && json_ok "$T/out" && grep -q '"exit":1' "$T/out" && grep -q "not accepted by 'loop'" "$T/out"
+check $? "loop --stats with a usage error: exit 1, JSON with the message"
+run "$FLOAT" loop -l 2 --stats --arena 1k test/data/icosahedron.obj -o "$T/x.obj"
+is 3 && json_ok "$T/out" && grep -q '"message":"arena too small: needs [0-9]* bytes, have 1024"' "$T/out"
+check $? "--stats with a too small --arena: exit 3, JSON says how much is needed"
+run "$FLOAT" convert --stats test/data/hexfan.obj -o "$T/no/such/dir/x.obj"
+is 4 && json_ok "$T/out" && grep -q '"exit":4' "$T/out" && grep -q '"message":"cannot write ' "$T/out"
+check $? "convert --stats to an unwritable output: exit 4, JSON with the message"
+# pia that does not reach --tol: exit 5, the error reached on stderr, output written
+run "$FLOAT" pia --tol 1e-12 --max-iter 2 test/data/icosahedron.obj -o "$T/pia5.obj"
+is 5 && grep -q "tolerance 1e-12 not reached: max error [0-9.e+-]* after --max-iter 2" "$T/err" && [ -s "$T/pia5.obj" ]
+check $? "pia not reaching --tol: exit 5, says the error reached, output written"
+run "$FLOAT" pia --tol 1e-12 --max-iter 2 --stats test/data/icosahedron.obj -o "$T/pia5.obj"
+is 5 && json_ok "$T/out" && grep -q '"converged":false' "$T/out"; check $? "pia --stats not converged: exit 5, one JSON object"
+# "not accepted" names the option and the command
+run "$FLOAT" alpha --method fast test/data/cube_quad.obj -o "$T/x.obj"
+is 1 && grep -q "option '--method' is not accepted by 'alpha'" "$T/err"; check $? "an option the command does not take: named with the command"
+# OFF faces spread over several lines are read
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1\n2\n3\n0 2 3\n' > "$T/multi.off"
+run "$FLOAT" info "$T/multi.off"
+is 0 && grep -q "^faces: 2$" "$T/out"; check $? "OFF with faces over several lines: read (2 faces)"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -5,10 +5,18 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 #include "fileio.h"
 
-/* Largest buffer (file + terminator): lengths are uint32_t. */
-#define HOST_FILE_MAX ((size_t)UINT32_MAX)
+/* Largest buffer: the input cap plus the terminator (a file that grows past the cap while
+ * it is read is refused like one that was too big at the start). */
+#define HOST_FILE_MAX ((size_t)HOST_INPUT_MAX + 1u)
+
+static int is_regular(const char *path)
+{
+    struct stat sb;
+    return stat(path, &sb) == 0 && S_ISREG(sb.st_mode);
+}
 
 int host_read_file(const char *path, char **buf, uint32_t *len)
 {
@@ -16,12 +24,22 @@ int host_read_file(const char *path, char **buf, uint32_t *len)
     char *p = NULL;
     size_t cap = 0, n = 0;
     int err = 0;
+    struct stat sb;
 
     *buf = NULL;
     *len = 0;
     if (!path) { errno = EINVAL; return -1; }
+    /* Checked before opening: fopen on a FIFO blocks until a writer comes, and a device
+     * such as /dev/urandom never ends. */
+    if (stat(path, &sb) != 0) return -1;
+    if (!S_ISREG(sb.st_mode)) return HOST_READ_NOT_REGULAR;
+    if ((unsigned long long)sb.st_size > HOST_INPUT_MAX) return HOST_READ_TOO_BIG;
     f = fopen(path, "rb");
     if (!f) return -1;
+    if (fstat(fileno(f), &sb) != 0 || !S_ISREG(sb.st_mode)) { /* replaced since the stat */
+        fclose(f);
+        return HOST_READ_NOT_REGULAR;
+    }
     for (;;) {
         size_t got;
         if (cap - n < 65536u && cap < HOST_FILE_MAX) {
@@ -34,7 +52,7 @@ int host_read_file(const char *path, char **buf, uint32_t *len)
             cap = ncap;
         }
         if (cap - n - 1u == 0) { /* full: only fine if the file ends exactly here */
-            if (fgetc(f) != EOF) err = EFBIG;
+            if (fgetc(f) != EOF) err = -1; /* grew past the cap */
             else if (ferror(f)) err = errno ? errno : EIO;
             break;
         }
@@ -47,6 +65,10 @@ int host_read_file(const char *path, char **buf, uint32_t *len)
         }
     }
     fclose(f);
+    if (err == -1) {
+        free(p);
+        return HOST_READ_TOO_BIG;
+    }
     if (err) {
         free(p);
         errno = err;
@@ -74,11 +96,20 @@ int host_write_file(const char *path, const void *buf, uint32_t len)
     errno = 0;
     if (fclose(f) != 0 && !err) err = errno ? errno : EIO;
     if (err) {
-        remove(path);
+        /* a partial regular file goes; a device or FIFO named as output is left alone */
+        if (is_regular(path)) remove(path);
         errno = err;
         return -1;
     }
     return 0;
+}
+
+const char *host_read_error_str(int rc)
+{
+    if (rc == HOST_READ_NOT_REGULAR)
+        return "not a regular file (FIFOs, devices and directories are refused: inputs are read whole)";
+    if (rc == HOST_READ_TOO_BIG) return "larger than the input cap of " HOST_INPUT_MAX_STR " bytes (2 GiB)";
+    return strerror(errno);
 }
 
 static int lower(int c) { return (c >= 'A' && c <= 'Z') ? c - 'A' + 'a' : c; }
@@ -159,7 +190,8 @@ int host_read_mesh(const char *path, const uint32_t *budget, host_mesh *hm, subd
     } else {
         return HOST_ERR_FORMAT;
     }
-    if (host_read_file(path, &text, &len) != 0) return errno == ENOMEM ? HOST_ERR_OOM : HOST_ERR_IO;
+    hm->read_rc = host_read_file(path, &text, &len);
+    if (hm->read_rc != 0) return (hm->read_rc == -1 && errno == ENOMEM) ? HOST_ERR_OOM : HOST_ERR_IO;
     hm->file_bytes = len;
 
     t0 = host_now_ns();

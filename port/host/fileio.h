@@ -6,13 +6,26 @@
 #include <stdint.h>
 #include "subd.h"
 
-/* Reads the whole file into a malloc'd buffer (*buf, *len bytes, plus a NUL terminator that
- * is not counted). Works on pipes too. Returns 0, or -1 with errno set (EFBIG when the file
- * does not fit 32-bit lengths, ENOMEM when out of memory); *buf is NULL on failure. */
+/* Inputs larger than this are refused before anything is read (the tool reads an input
+ * whole into memory; lengths are uint32_t). */
+#define HOST_INPUT_MAX 2147483648ull
+#define HOST_INPUT_MAX_STR "2147483648"
+
+/* host_read_file's failures besides -1 (errno set). */
+#define HOST_READ_NOT_REGULAR (-2) /* a FIFO, device, socket or directory: refused unread */
+#define HOST_READ_TOO_BIG (-3)     /* more than HOST_INPUT_MAX bytes                         */
+
+/* Reads the whole regular file into a malloc'd buffer (*buf, *len bytes, plus a NUL
+ * terminator that is not counted). Returns 0; -1 with errno set (ENOMEM when out of memory);
+ * HOST_READ_NOT_REGULAR without opening a FIFO or device (which would block or never end);
+ * HOST_READ_TOO_BIG for a file over HOST_INPUT_MAX bytes. *buf is NULL on failure. */
 int host_read_file(const char *path, char **buf, uint32_t *len);
 
+/* The reason for a failed host_read_file (its return value; errno for -1), for messages. */
+const char *host_read_error_str(int rc);
+
 /* Writes buf[0..len) to path (created or truncated). Returns 0, or -1 with errno set; a
- * partially written file is removed. */
+ * partially written regular file is removed (a device or FIFO path is left alone). */
 int host_write_file(const char *path, const void *buf, uint32_t len);
 
 /* File formats known by extension (case-insensitive). */
@@ -42,6 +55,7 @@ typedef struct host_mesh {
     uint32_t planned;   /* bytes the reader's plan call asked for                         */
     uint32_t file_bytes;
     host_format format;
+    int read_rc;        /* host_read_file's return value (for host_read_error_str)        */
 } host_mesh;
 
 /* Reads an .obj or .off file. The arena is sized from the reader's plan call: exactly the plan
@@ -50,7 +64,8 @@ typedef struct host_mesh {
  *   SUBD_OK              hm filled; hm->arena.peak is the bytes the read used
  *   a subd_status < 0    diag filled by the library (diag->line for input errors). When the
  *                        plan exceeds *budget: SUBD_ERR_NOMEM with diag->bytes_needed = plan
- *   HOST_ERR_IO          the file cannot be read (errno set)
+ *   HOST_ERR_IO          the file cannot be read (errno set), is not a regular file or is
+ *                        over HOST_INPUT_MAX (host_mesh.read_rc says which)
  *   HOST_ERR_FORMAT      the extension is not .obj or .off
  *   HOST_ERR_OOM         the host is out of memory
  * parse_ns, when not NULL, receives the nanoseconds spent in the library (plan + read). */

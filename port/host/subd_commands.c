@@ -85,6 +85,8 @@ static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_
              "\"method\":\"%s\",\"tol\":%.9g,\"iterations\":%lu,\"max_err\":%.9g,\"mean_err\":%.9g,\"converged\":%s",
              o->method == SUBD_PIA_FAST ? "fast" : "paper", o->tol, (unsigned long)res.iterations,
              host_real_to_double(res.max_err), host_real_to_double(res.mean_err), res.converged ? "true" : "false");
+    x->not_converged = !res.converged;
+    x->max_err = host_real_to_double(res.max_err);
     if (!o->stats)
         fprintf(stderr, "pia: %lu iterations, max error %.6g, mean error %.6g, %s\n", (unsigned long)res.iterations,
                 host_real_to_double(res.max_err), host_real_to_double(res.mean_err),

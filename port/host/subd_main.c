@@ -11,13 +11,15 @@
  * (subd_commands.c) with a plan and a run function; everything else (options, arena budget,
  * errors, exit codes, output, stats) is shared. subd_tool.h says which file owns what.
  *
- * Exit status: 0 ok, 1 usage, 2 bad input, 3 resource limit, 4 output not writable.
+ * Exit status: 0 ok, 1 usage, 2 bad input, 3 resource limit, 4 output not writable, 5 pia
+ * did not reach --tol (output written). With --stats a failure still prints one JSON object.
  *
  * The tool is built once per arithmetic (subd = float32, subd-fixed = Q16.16), so tool users
  * see exactly what a device build of that arithmetic produces.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,33 +28,69 @@
 /* ------------------------------------------------------------------------------------ */
 /* Errors                                                                                 */
 
-static void print_element(const subd_diag *d)
+static char g_error[512]; /* the last error message, for --stats on failure */
+
+void tool_error_record(const char *fmt, ...)
 {
-    if (d->face != SUBD_NONE) fprintf(stderr, " (face %lu)", (unsigned long)d->face);
-    else if (d->polyline != SUBD_NONE) fprintf(stderr, " (polyline %lu)", (unsigned long)d->polyline);
-    else if (d->vertex != SUBD_NONE) fprintf(stderr, " (vertex %lu)", (unsigned long)d->vertex);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(g_error, sizeof g_error, fmt, ap);
+    va_end(ap);
+}
+
+void tool_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(g_error, sizeof g_error, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "subd: %s\n", g_error);
+}
+
+static void element_str(const subd_diag *d, char *buf, size_t n)
+{
+    buf[0] = '\0';
+    if (d->face != SUBD_NONE) snprintf(buf, n, " (face %lu)", (unsigned long)d->face);
+    else if (d->polyline != SUBD_NONE) snprintf(buf, n, " (polyline %lu)", (unsigned long)d->polyline);
+    else if (d->vertex != SUBD_NONE) snprintf(buf, n, " (vertex %lu)", (unsigned long)d->vertex);
+}
+
+/* --stats of a failed run: one JSON object with the exit status and the message. */
+static void print_failure_json(const command *cmd, int rc)
+{
+    const char *m = g_error[0] ? g_error : "failed (see stderr)";
+    printf("{\"command\":\"%s\",\"status\":\"error\",\"exit\":%d,\"message\":\"", cmd->name, rc);
+    for (; *m; m++) {
+        unsigned char c = (unsigned char)*m;
+        if (c == '"' || c == '\\') printf("\\%c", c);
+        else if (c < 0x20u) printf("\\u%04x", c);
+        else putchar(c);
+    }
+    printf("\"}\n");
 }
 
 static int arena_too_small(uint32_t needed, uint32_t have)
 {
-    fprintf(stderr, "subd: arena too small: needs %lu bytes, have %lu\n", (unsigned long)needed,
-            (unsigned long)have);
+    tool_error_record("arena too small: needs %lu bytes, have %lu", (unsigned long)needed, (unsigned long)have);
+    fprintf(stderr, "subd: %s\n", g_error);
     return EXIT_LIMIT;
 }
 
 /* Maps a library failure on `file` to a message and an exit status. */
 static int library_error(const char *file, int st, const subd_diag *d, int have_budget, uint32_t budget)
 {
+    char el[64];
     if (st == SUBD_ERR_NOMEM) {
         if (have_budget) return arena_too_small(d->bytes_needed, budget);
-        fprintf(stderr, "subd: %s: internal error: arena planned too small (needs %lu bytes)\n", file,
-                (unsigned long)d->bytes_needed);
+        tool_error_record("%s: internal error: arena planned too small (needs %lu bytes)", file,
+                          (unsigned long)d->bytes_needed);
+        fprintf(stderr, "subd: %s\n", g_error);
         return EXIT_LIMIT;
     }
-    if (d->line) fprintf(stderr, "%s:%lu: %s", file, (unsigned long)d->line, subd_status_str(st));
-    else fprintf(stderr, "%s: %s", file, subd_status_str(st));
-    print_element(d);
-    fputc('\n', stderr);
+    element_str(d, el, sizeof el);
+    if (d->line) tool_error_record("%s:%lu: %s%s", file, (unsigned long)d->line, subd_status_str(st), el);
+    else tool_error_record("%s: %s%s", file, subd_status_str(st), el);
+    fprintf(stderr, "%s\n", g_error);
     if (st == SUBD_ERR_TOO_BIG) return EXIT_LIMIT;
     if (st == SUBD_ERR_PARAM) return EXIT_USAGE;
     return EXIT_INPUT;
@@ -81,6 +119,7 @@ static int scheme_error(const tool_run *r, int st, subd_diag *d)
 
 int tool_out_of_memory(void)
 {
+    tool_error_record("out of memory");
     fprintf(stderr, "subd: out of memory\n");
     return EXIT_LIMIT;
 }
@@ -97,8 +136,9 @@ static int apply_tag_file(const char *path, subd_mesh *m, int quiet)
     subd_tags_report rep;
     subd_diag d;
     int st;
-    if (host_read_file(path, &buf, &len) != 0) {
-        fprintf(stderr, "subd: cannot read tag file '%s': %s\n", path, strerror(errno));
+    if ((st = host_read_file(path, &buf, &len)) != 0) {
+        tool_error_record("cannot read tag file '%s': %s", path, host_read_error_str(st));
+        fprintf(stderr, "subd: %s\n", g_error);
         return EXIT_INPUT;
     }
     st = subd_tags_apply(buf, len, m, &rep, &d);
@@ -133,7 +173,8 @@ static int run_command(tool_run *r)
     st = host_read_mesh(r->o.input, r->o.has_budget ? &r->o.budget : NULL, &r->in, &d, &ns);
     r->lib_ns += ns;
     if (st == HOST_ERR_IO) {
-        fprintf(stderr, "subd: cannot read '%s': %s\n", r->o.input, strerror(errno));
+        tool_error_record("cannot read '%s': %s", r->o.input, host_read_error_str(r->in.read_rc));
+        fprintf(stderr, "subd: %s\n", g_error);
         return EXIT_INPUT;
     }
     if (st == HOST_ERR_OOM) return tool_out_of_memory();
@@ -200,6 +241,11 @@ static int run_command(tool_run *r)
         if (st != EXIT_OK) return st;
     }
     if (r->o.stats) tool_print_stats(stdout, r);
+    if (r->extra.not_converged) {
+        fprintf(stderr, "subd: pia: tolerance %.9g not reached: max error %.9g after --max-iter %lu iterations\n",
+                r->o.tol, r->extra.max_err, (unsigned long)r->o.max_iter);
+        return EXIT_NOT_CONVERGED; /* the --stats object above says "converged":false */
+    }
     return EXIT_OK;
 }
 
@@ -227,8 +273,12 @@ int main(int argc, char **argv)
     memset(&r, 0, sizeof r);
     r.cmd = cmd;
     rc = tool_parse_args(cmd, argc, argv, &r.o);
-    if (rc != EXIT_OK) return rc;
+    if (rc != EXIT_OK) {
+        if (r.o.stats) print_failure_json(cmd, rc);
+        return rc;
+    }
     rc = run_command(&r);
+    if (rc != EXIT_OK && rc != EXIT_NOT_CONVERGED && r.o.stats) print_failure_json(cmd, rc);
     host_mesh_free(&r.in);
     free(r.work_mem);
     free(r.extra.host_mem);

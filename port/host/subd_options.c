@@ -469,6 +469,10 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             if (i + 1 >= argc) return tool_usage_error("option '%s' needs a value", name);
             val = argv[++i];
         }
+        /* named here, where the option is known (several share one bit); --stream and
+         * --limit get their own messages below */
+        if (t->given & ~cmd->options & ~OPT_STREAM)
+            return tool_usage_error("option '%s' is not accepted by '%s' (see subd --help)", name, cmd->name);
         c.cmd = cmd;
         c.o = o;
         c.name = name;
@@ -517,7 +521,6 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             return tool_usage_error("option --boundary does not apply to '%s'", cmd->name);
         }
     }
-    if (o->given & ~cmd->options) return tool_usage_error("option not accepted by '%s' (see subd --help)", cmd->name);
     if ((cmd->options & OPT_TOL) && !(o->given & OPT_TOL)) return tool_usage_error("'%s' needs --tol T", cmd->name);
     if (o->normals && o->out_format != HOST_FMT_OBJ) return tool_usage_error("--normals needs an .obj output");
     if (!(o->given & OPT_MAX_ITER)) o->max_iter = 100;
@@ -590,17 +593,23 @@ void tool_usage(FILE *f)
                "     (elements named in parentheses are 0-based, as in subd_diag)\n"
                "  3  resource limit: arena too small (says how many bytes are needed),\n"
                "     counts too large for 32-bit sizes, or host out of memory\n"
-               "  4  OUTPUT cannot be written\n");
+               "  4  OUTPUT cannot be written\n"
+               "  5  pia: --tol not reached within --max-iter (OUTPUT is written; the\n"
+               "     error reached is on stderr)\n"
+               "With --stats a failed run still prints one JSON object on stdout:\n"
+               "{\"command\", \"status\":\"error\", \"exit\", \"message\"}.\n"
+               "Inputs must be regular files of at most 2 GiB (FIFOs and devices are refused).\n");
 }
 
 int tool_usage_error(const char *fmt, ...)
 {
     va_list ap;
+    char msg[512];
     va_start(ap, fmt);
-    fprintf(stderr, "subd: ");
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "\n");
+    fprintf(stderr, "subd: %s\n", msg);
+    tool_error_record("%s", msg);
     tool_usage_short(stderr);
     return EXIT_USAGE;
 }

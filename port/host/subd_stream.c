@@ -286,7 +286,7 @@ static int out_close(stream_sink *s, const char *path, int regular, int ok)
 
 static int stream_limit(const char *what, const char *path)
 {
-    fprintf(stderr, "subd: %s: %s\n", path, what);
+    tool_error("%s: %s", path, what);
     return EXIT_LIMIT;
 }
 
@@ -329,7 +329,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     if ((fmt == HOST_FMT_OBJ || fmt == HOST_FMT_OFF) && (st = gather_alloc(r, s, c)) != EXIT_OK) return st;
     if (fmt == HOST_FMT_STL || fmt == HOST_FMT_OBJ) {
         if (!(s->f = fopen(o->output, "wb"))) {
-            fprintf(stderr, "subd: cannot write '%s': %s\n", o->output, strerror(errno));
+            tool_error("cannot write '%s': %s", o->output, strerror(errno));
             return EXIT_OUTPUT;
         }
         regular = fstat(fileno(s->f), &sb) == 0 && S_ISREG(sb.st_mode);
@@ -350,7 +350,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     if (out_close(s, o->output, regular, st == 0) != 0 && st == 0) st = SINK_WRITE;
     if (st < 0) return st; /* the library's status: subd_main.c reports it */
     if (st == SINK_WRITE) {
-        fprintf(stderr, "subd: cannot write '%s': %s\n", o->output, strerror(s->err));
+        tool_error("cannot write '%s': %s", o->output, strerror(s->err));
         return EXIT_OUTPUT;
     }
     if (st != 0) {

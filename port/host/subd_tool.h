@@ -23,7 +23,8 @@ enum {
     EXIT_USAGE = 1,
     EXIT_INPUT = 2,
     EXIT_LIMIT = 3,
-    EXIT_OUTPUT = 4
+    EXIT_OUTPUT = 4,
+    EXIT_NOT_CONVERGED = 5 /* pia: output written, but --tol not reached in --max-iter */
 };
 
 #if SUBD_FIXED
@@ -85,6 +86,8 @@ typedef struct scheme_extra {
     subd_real *normals;
     char json[256];
     void *host_mem; /* output arrays a scheme built in host memory (freed at exit) */
+    int not_converged; /* pia: the tolerance was not reached (exit EXIT_NOT_CONVERGED)   */
+    double max_err;    /* pia: the error reached                                        */
 } scheme_extra;
 
 /* Command flags. */
@@ -159,4 +162,9 @@ subd_loop_opts tool_loop_opts(const tool_opts *o);
 
 /* Errors (subd_main.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);
+/* Records an error message (printf format) for the --stats JSON of a failed run; the
+ * caller prints it to stderr as well. The last one recorded is reported. */
+void tool_error_record(const char *fmt, ...);
+/* Prints "subd: MESSAGE" on stderr and records it (tool_error_record). */
+void tool_error(const char *fmt, ...);
 #endif

@@ -12,7 +12,7 @@
 
 static int write_failed(const char *path)
 {
-    fprintf(stderr, "subd: cannot write '%s': %s\n", path, strerror(errno));
+    tool_error("cannot write '%s': %s", path, strerror(errno));
     return EXIT_OUTPUT;
 }
 
@@ -90,7 +90,7 @@ static int write_mesh(tool_run *r)
     int st = r->extra.normals ? subd_obj_write_normals(&r->out, r->extra.normals, NULL, 0, &len)
                               : writer(&r->out, NULL, 0, &len);
     if (st != SUBD_OK) {
-        fprintf(stderr, "subd: %s: %s\n", r->o.output, subd_status_str(st));
+        tool_error("%s: %s", r->o.output, subd_status_str(st));
         return st == SUBD_ERR_TOO_BIG ? EXIT_LIMIT : EXIT_OUTPUT;
     }
     if (r->o.out_format == HOST_FMT_OFF && r->out.num_lines)
@@ -102,7 +102,7 @@ static int write_mesh(tool_run *r)
                           : writer(&r->out, buf, len, &len);
     if (st != SUBD_OK) {
         free(buf);
-        fprintf(stderr, "subd: %s: %s\n", r->o.output, subd_status_str(st));
+        tool_error("%s: %s", r->o.output, subd_status_str(st));
         return EXIT_OUTPUT;
     }
     st = host_write_file(r->o.output, buf, len);

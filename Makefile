@@ -163,14 +163,14 @@ dirs:
 # ------------------------------------------------------------------ toolchain
 # A fresh Debian machine may have only gcc and make: install what is missing.
 CM_OK = command -v $(CM_CC) >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1 && \
-        command -v g++ >/dev/null 2>&1 && \
+        command -v g++ >/dev/null 2>&1 && command -v cmake >/dev/null 2>&1 && \
         test -f /usr/lib/arm-none-eabi/lib/libc_nano.a
 deps:
 	@if ! ( $(CM_OK) ); then \
-	    echo "installing gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm g++"; \
+	    echo "installing gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm g++ cmake"; \
 	    SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
 	    $$SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -q \
-	        --no-install-recommends gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm g++ \
+	        --no-install-recommends gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm g++ cmake \
 	        || { echo "could not install the ARM toolchain / QEMU" >&2; exit 1; }; \
 	fi
 
@@ -207,6 +207,7 @@ test-run:
 	@test/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/cpp_test.sh $(B)
 	@test/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS)
 	@test/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS)
+	@test/run_suite.sh "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/cmake_test.sh $(B)
 	@test/summary.sh $(L)/*.log
 
 # ------------------------------------------------------------------ fuzzing (make fuzz)
@@ -266,6 +267,14 @@ $(foreach v,host-float host-fixed,$(eval $(call fuzz_replay,$(v))))
 FUZZ_REPLAY_ARGS := $(foreach t,$(FUZZ_TARGETS),$(t) fuzz/corpus/$(t))
 test-build: $(B)/host-float/fuzz-replay $(B)/host-fixed/fuzz-replay
 .PHONY: fuzz fuzz-build
+
+# ------------------------------------------------------------------ CMake integration
+# CMakeLists.txt, cmake/ and examples/ as a consumer uses them (test/cmake_test.sh): the example
+# via add_subdirectory and via cmake --install + find_package, both arithmetics, and the library
+# cross-built for Cortex-M4F with cmake/arm-none-eabi.cmake. Build trees in $(B)/cmake.
+cmake-test: deps
+	@test/cmake_test.sh $(B)
+.PHONY: cmake-test
 
 # ------------------------------------------------------------------ make demo / bench
 demo: deps

@@ -10,6 +10,14 @@
  * Written by loop_limit.c; used by subd_loop_limit and by progressive interpolation. */
 void subd_loop_limit_apply(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl,
                            subd_real *lim, uint32_t *ovf);
+/* Keeps a function out of its caller's frame, so the stack of a call is the deepest path, not
+ * the sum of every helper inlined into it (-Wstack-usage on the device builds checks it). */
+#if defined(__GNUC__)
+#define SUBD_NOINLINE __attribute__((noinline))
+#else
+#define SUBD_NOINLINE
+#endif
+
 /* Limit position (and, when normal != NULL, unit limit normal) of vertex v alone, bit-identical
  * to what subd_loop_limit computes for v in a call on the whole mesh (the per-call caches only
  * memoise). Only v's own ring is walked; a neighbour's regular bit comes from LOOP_VTAG_KNOWN /

@@ -287,7 +287,7 @@ static uint8_t input_sharp(const subd_mesh *in, uint32_t h)
 
 /* Builds level 0 for input face f: every face around its corners (walked both ways from
  * vert_out, so an unusual vert_out loses no face), sorted; corners 0..2 are f's. */
-static void build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels)
+SUBD_NOINLINE static void build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels)
 {
     uint32_t j, nf = 0, lf, n1 = (uint32_t)1 << levels;
     p->h->nv = 0;
@@ -537,7 +537,7 @@ static uint16_t child_vout(const sp_level *p, const uint16_t *fmap, uint32_t s, 
 }
 
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. */
-static void extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
+SUBD_NOINLINE static void extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
 {
     const sp_head *ph = p->h;
     uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0;
@@ -664,7 +664,7 @@ typedef struct sp_run {
 } sp_run;
 
 /* The centre's four children at the last level, from the cache. */
-static int emit_children(const sp_run *r, const sp_level *p)
+SUBD_NOINLINE static int emit_children(const sp_run *r, const sp_level *p)
 {
     const sp_head *ph = p->h;
     uint32_t cf = ph->cf, c, j, e[3], ea[3], eb[3];
@@ -731,7 +731,7 @@ static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint32_t
  *     m_j -> m_j-1 is lower in child j (opposite corner v_j) than in child 3 (m_j+1).
  * Values: ve[i] corner i's child, vm[j] edge j's new vertex, h1[j] / h2[j] the points on the
  * halves a - m / m - b, in[j] the point on the inner edge m_j - m_j-1. */
-static int emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
+SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
 {
     const sp_head *ph = p->h;
     const subd_real *cp = p->cpos;
@@ -857,7 +857,7 @@ static int emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *w
 /* Limit mode: the centre of level L's patch, each corner moved to its limit position with its
  * unit limit normal by loop_limit.c's masks on a subd_mesh view of the patch (the corners'
  * rings are whole; an outer vertex's class is given by LOOP_VTAG_KNOWN). */
-static int emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, uint32_t *ovf)
+SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, uint32_t *ovf)
 {
     const sp_head *ph = p->h;
     uint32_t nf = ph->nf, nv = ph->nv, c, v, j;

@@ -54,7 +54,7 @@
  *     weighted sums is the same in both paths (bit-identical output).
  *   - Loop's weights b(n), 1 - n b(n) are cached per valence during a call.
  *
- * Memory (one block, plan = its size; all offsets from loop_layout_of, used by plan and run):
+ * Memory (one block, plan = its size; laid out by loop_layout_of, used by plan and run):
  *   [ output: pos corners tags (twins vert_out) | face_start corner_face ]
  *   [ = level L-2, L-4, ... while alive          | level L-1, L-3, ...    ]
  * face_start and corner_face are filled last, after level L is complete, so level L-1 (read
@@ -69,6 +69,8 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
+#include "entry.h"
+#include "layout.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
 
@@ -106,16 +108,9 @@ typedef struct loop_dst {
     uint8_t *vtag, *val, *etag;
 } loop_dst;
 
-/* Array offsets inside the block. Intermediate levels: pos, cv, twin, vout, vtag, val, etag.
- * Output: the front arrays (written while level L is refined) and then face_start and
- * corner_face (written last, over level L-1). */
-enum { LV_POS, LV_CV, LV_TWIN, LV_VOUT, LV_VTAG, LV_VAL, LV_ETAG, LV_N };
-enum { OUT_POS, OUT_CV, OUT_VTAG, OUT_ETAG, OUT_TWIN, OUT_VOUT, OUT_FS, OUT_CF, OUT_N };
-
 typedef struct loop_layout {
     loop_counts c0;          /* the input                                           */
     loop_counts cl;          /* level L                                             */
-    uint32_t out_off[OUT_N];
     uint32_t out_bytes;      /* the output arrays                                   */
     uint32_t a_off;          /* region A (levels L-1, L-3, ...); region B is at 0   */
     uint32_t total;          /* the plan                                            */
@@ -138,35 +133,55 @@ static int counts_next(const loop_counts *p, loop_counts *c)
     return 1;
 }
 
-/* Offsets of an intermediate level's arrays; returns its bytes (UINT32_MAX: too big).
- * SUBD_LOOP_LEVEL_BYTES_ in subd_loop.h is the same sum. */
-static uint32_t level_layout(const loop_counts *c, uint32_t off[LV_N])
+/* The arrays of the one block, laid out by layout.h's one walk: given no arena it counts,
+ * given one it carves. The block is one allocation (so a too-small arena fails before
+ * anything is taken); its regions are carved through an arena over the region's bytes
+ * (block_region), and plan and run call the same two functions below. */
+
+/* An intermediate level's arrays (val and the private tag bits included). The
+ * SUBD_LOOP_LEVEL_BYTES_ sum in subd_loop.h is the same walk. */
+static int level_layout(subd_arena *a, const loop_counts *c, loop_dst *t, uint32_t *bytes)
 {
-    uint32_t t = 0, nc = 3u * c->nf;
-    off[LV_POS] = t;  subd_size_add(&t, c->nv, 3u * (uint32_t)sizeof(subd_real));
-    off[LV_CV] = t;   subd_size_add(&t, nc, 4u);
-    off[LV_TWIN] = t; subd_size_add(&t, nc, 4u);
-    off[LV_VOUT] = t; subd_size_add(&t, c->nv, 4u);
-    off[LV_VTAG] = t; subd_size_add(&t, c->nv, 1u);
-    off[LV_VAL] = t;  subd_size_add(&t, c->nv, 1u);
-    off[LV_ETAG] = t; subd_size_add(&t, nc, 1u);
-    return t;
+    subd_layout l;
+    uint32_t nc = 3u * c->nf;
+    subd_layout_begin(&l, a);
+    t->pos = subd_layout_take(&l, c->nv, 3u * (uint32_t)sizeof(subd_real));
+    t->cv = subd_layout_take(&l, nc, 4u);
+    t->twin = subd_layout_take(&l, nc, 4u);
+    t->vout = subd_layout_take(&l, c->nv, 4u);
+    t->vtag = subd_layout_take(&l, c->nv, 1u);
+    t->val = subd_layout_take(&l, c->nv, 1u);
+    t->etag = subd_layout_take(&l, nc, 1u);
+    return subd_layout_end(&l, bytes);
 }
 
-/* Offsets of the output arrays; returns their bytes. off[OUT_FS] is the size of the
- * front arrays. SUBD_LOOP_OUT_BYTES_ / SUBD_LOOP_FRONT_BYTES_ in subd_loop.h are the same. */
-static uint32_t out_layout(const loop_counts *c, int adjacency, uint32_t off[OUT_N])
+/* The output arrays: first the front arrays that level L is refined into (t; *front = their
+ * bytes), then face_start (*fs) and corner_face (*cf), filled last over level L-1.
+ * SUBD_LOOP_OUT_BYTES_ / SUBD_LOOP_FRONT_BYTES_ in subd_loop.h are the same walk. */
+static int out_layout(subd_arena *a, const loop_counts *c, int adjacency, loop_dst *t, uint32_t **fs,
+                      uint32_t **cf, uint32_t *front, uint32_t *bytes)
 {
-    uint32_t t = 0, nc = 3u * c->nf;
-    off[OUT_POS] = t;  subd_size_add(&t, c->nv, 3u * (uint32_t)sizeof(subd_real));
-    off[OUT_CV] = t;   subd_size_add(&t, nc, 4u);
-    off[OUT_VTAG] = t; subd_size_add(&t, c->nv, 1u);
-    off[OUT_ETAG] = t; subd_size_add(&t, nc, 1u);
-    off[OUT_TWIN] = t; if (adjacency) subd_size_add(&t, nc, 4u);
-    off[OUT_VOUT] = t; if (adjacency) subd_size_add(&t, c->nv, 4u);
-    off[OUT_FS] = t;   subd_size_add(&t, c->nf + 1u, 4u);
-    off[OUT_CF] = t;   subd_size_add(&t, nc, 4u);
-    return t;
+    subd_layout l;
+    uint32_t nc = 3u * c->nf;
+    subd_layout_begin(&l, a);
+    t->pos = subd_layout_take(&l, c->nv, 3u * (uint32_t)sizeof(subd_real));
+    t->cv = subd_layout_take(&l, nc, 4u);
+    t->vtag = subd_layout_take(&l, c->nv, 1u);
+    t->etag = subd_layout_take(&l, nc, 1u);
+    t->twin = adjacency ? subd_layout_take(&l, nc, 4u) : 0;
+    t->vout = adjacency ? subd_layout_take(&l, c->nv, 4u) : 0;
+    t->val = 0;
+    (void)subd_layout_end(&l, front);
+    *fs = subd_layout_take(&l, c->nf + 1u, 4u);
+    *cf = subd_layout_take(&l, nc, 4u);
+    return subd_layout_end(&l, bytes);
+}
+
+/* An arena over the block's bytes [off, total): what a region's layout carves from. The
+ * block and every offset are SUBD_ARENA_ALIGN-aligned, so the region arena skips nothing. */
+static void block_region(subd_arena *r, uint8_t *base, uint32_t off, uint32_t total)
+{
+    subd_arena_init(r, base + off, total - off);
 }
 
 static int mesh_ok(const subd_mesh *m)
@@ -195,7 +210,9 @@ int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags
 static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_layout *lay, subd_diag *d)
 {
     loop_counts prev2, prev1, cur;
-    uint32_t h, nbe = 0, k, lv_off[LV_N], b1 = 0, b2 = 0, front;
+    loop_dst scratch;
+    uint32_t *fs, *cf;
+    uint32_t h, nbe = 0, k, b1 = 0, b2 = 0, front;
     int st = subd_loop_check(in, o, SUBD_LOOP_ADJACENCY, d);
     if (st != SUBD_OK) return st;
     for (h = 0; h < in->num_corners; h++)
@@ -212,12 +229,10 @@ static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_lay
         if (!counts_next(&prev1, &cur)) return subd_fail(d, SUBD_ERR_TOO_BIG);
     }
     lay->cl = cur;
-    lay->out_bytes = out_layout(&cur, (o->flags & SUBD_LOOP_ADJACENCY) != 0u, lay->out_off);
-    if (lay->out_bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
-    if (o->levels >= 2u) b1 = level_layout(&prev1, lv_off);
-    if (o->levels >= 3u) b2 = level_layout(&prev2, lv_off);
-    if (b1 == UINT32_MAX || b2 == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
-    front = lay->out_off[OUT_FS];
+    st = out_layout(0, &cur, (o->flags & SUBD_LOOP_ADJACENCY) != 0u, &scratch, &fs, &cf, &front, &lay->out_bytes);
+    if (st == SUBD_OK && o->levels >= 2u) st = level_layout(0, &prev1, &scratch, &b1);
+    if (st == SUBD_OK && o->levels >= 3u) st = level_layout(0, &prev2, &scratch, &b2);
+    if (st != SUBD_OK) return subd_fail(d, st); /* counting fails only with SUBD_ERR_TOO_BIG */
     lay->a_off = front > b2 ? front : b2;
     if (b1 >= UINT32_MAX - lay->a_off) return subd_fail(d, SUBD_ERR_TOO_BIG);
     lay->total = lay->a_off + b1 > lay->out_bytes ? lay->a_off + b1 : lay->out_bytes;
@@ -485,17 +500,13 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
 
 /* ------------------------------------------------------------------------------------ */
 
-static void carve_level(uint8_t *base, const loop_counts *c, loop_dst *t, loop_src *next)
+/* Carves level c into the region of the block at off and makes it the next source. */
+static void carve_level(uint8_t *base, uint32_t off, uint32_t total, const loop_counts *c, loop_dst *t,
+                        loop_src *next)
 {
-    uint32_t off[LV_N];
-    (void)level_layout(c, off);
-    t->pos = (subd_real *)(void *)(base + off[LV_POS]);
-    t->cv = (uint32_t *)(void *)(base + off[LV_CV]);
-    t->twin = (uint32_t *)(void *)(base + off[LV_TWIN]);
-    t->vout = (uint32_t *)(void *)(base + off[LV_VOUT]);
-    t->vtag = base + off[LV_VTAG];
-    t->val = base + off[LV_VAL];
-    t->etag = base + off[LV_ETAG];
+    subd_arena r;
+    block_region(&r, base, off, total);
+    (void)level_layout(&r, c, t, 0); /* cannot fail: the plan fitted the level here */
     next->nv = c->nv;
     next->nf = c->nf;
     next->pos = t->pos;
@@ -510,8 +521,9 @@ static void carve_level(uint8_t *base, const loop_counts *c, loop_dst *t, loop_s
 
 int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
+    subd_arena whole;
     loop_layout lay;
     loop_counts cur;
     loop_src src;
@@ -519,18 +531,16 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     loop_wcache bc;
     subd_mesh m;
     uint8_t *base;
-    uint32_t mark, k, ovf = 0, f, c, v, isolated = 0;
-    int st, adjacency;
+    uint32_t *fs, *cf;
+    uint32_t k, ovf = 0, f, c, v, isolated = 0, front;
+    int st;
 
-    subd_diag_clear(d);
-    if (!a || !out) return subd_fail(d, SUBD_ERR_PARAM);
+    if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     st = loop_layout_of(in, o, &lay, d);
-    if (st != SUBD_OK) return st;
+    if (st != SUBD_OK) return subd_entry_fail(&e, st);
     d->bytes_needed = lay.total;
-    mark = subd_arena_mark(a);
     base = (uint8_t *)subd_arena_alloc(a, lay.total);
-    if (!base) return subd_fail(d, SUBD_ERR_NOMEM);
-    adjacency = (o->flags & SUBD_LOOP_ADJACENCY) != 0u;
+    if (!base) return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     bc.have = 0;
 
     src.nv = in->num_verts;
@@ -544,13 +554,8 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     src.etag = in->edge_tag;
     src.made = 0;
     /* the final level goes straight into the output's front arrays */
-    fin.pos = (subd_real *)(void *)(base + lay.out_off[OUT_POS]);
-    fin.cv = (uint32_t *)(void *)(base + lay.out_off[OUT_CV]);
-    fin.vtag = base + lay.out_off[OUT_VTAG];
-    fin.val = 0;
-    fin.etag = base + lay.out_off[OUT_ETAG];
-    fin.twin = adjacency ? (uint32_t *)(void *)(base + lay.out_off[OUT_TWIN]) : 0;
-    fin.vout = adjacency ? (uint32_t *)(void *)(base + lay.out_off[OUT_VOUT]) : 0;
+    block_region(&whole, base, 0, lay.total);
+    (void)out_layout(&whole, &lay.cl, (o->flags & SUBD_LOOP_ADJACENCY) != 0u, &fin, &fs, &cf, &front, 0);
     cur = lay.c0;
     for (k = 1; k <= o->levels; k++) {
         loop_counts child;
@@ -559,12 +564,11 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
         (void)counts_next(&cur, &child); /* cannot fail: the layout checked every level */
         /* levels L-1, L-3, ... in region A; L-2, L-4, ... in region B (the front arrays) */
         if (k < o->levels)
-            carve_level(base + (((o->levels - 1u - k) % 2u == 0u) ? lay.a_off : 0u), &child, &dst, &next);
+            carve_level(base, ((o->levels - 1u - k) % 2u == 0u) ? lay.a_off : 0u, lay.total, &child, &dst, &next);
         refine_level(&src, &dst, o->boundary, &bc, &ovf);
         if (ovf) {
-            subd_arena_rewind(a, mark);
             d->bytes_needed = 0;
-            return subd_fail(d, SUBD_ERR_RANGE);
+            return subd_entry_fail(&e, SUBD_ERR_RANGE);
         }
         if (k < o->levels) src = next;
         cur = child;
@@ -575,9 +579,9 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     m.num_faces = cur.nf;
     m.num_corners = 3u * cur.nf;
     m.pos = fin.pos;
-    m.face_start = (uint32_t *)(void *)(base + lay.out_off[OUT_FS]);
+    m.face_start = fs;
     m.corner_vert = fin.cv;
-    m.corner_face = (uint32_t *)(void *)(base + lay.out_off[OUT_CF]);
+    m.corner_face = cf;
     m.twin = fin.twin;
     m.vert_out = fin.vout;
     m.vert_tag = fin.vtag;
@@ -596,8 +600,7 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     for (v = 0; v < in->num_verts; v++)
         if (in->vert_out[v] == SUBD_NONE) isolated++;
     m.num_isolated = isolated;
-    subd_arena_rewind(a, mark + lay.out_bytes);
-    d->bytes_needed = 0;
+    subd_arena_rewind(a, e.mark + lay.out_bytes); /* only the output arrays stay */
     *out = m;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

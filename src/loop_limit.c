@@ -109,9 +109,12 @@
  * frame (subd_loop_limit with the normal code inlined) is below 1 KB on Cortex-M.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "entry.h"
+#include "layout.h"
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
+#include "vec3w.h"
 
 /* Vertex classes: loop_rules.h (the one classification of loop.c, this file and pia.c). */
 typedef loop_vinfo lim_vert;
@@ -157,18 +160,31 @@ static uint64_t lim_div_q62(uint64_t num, uint64_t den)
     return q + (r >= den ? 1u : 0u);
 }
 
-/* Position weights. Q16.16: Q28 in an int64 (16 bits finer than subd_real, so the weight
- * rounding costs at most |p_i - v| * 2^-29 instead of 2^-17 - several LSB at high valence -
- * while w * (p_i - v) < 2^28 * 2^32 and any sum of them with sum |w_i| <= 1 stay below 2^61).
- * Float32: subd_real. */
+/* Position weights and the affine combinations v + sum w_i (p_i - v) they weight.
+ * Float32: the difference form keeps a constant mesh exactly constant and the error relative
+ * to the local spread; weights are subd_reals, so lim_madd_w is vec3w.h's subd_wide_madd.
+ * Q16.16 (why the #if: the algorithm's own precision, not a scalar twin): the weights are
+ * Q28 in an int64 (16 bits finer than subd_real, so the weight rounding costs at most
+ * |p_i - v| * 2^-29 instead of 2^-17 - several LSB at high valence - while w * (p_i - v) <
+ * 2^28 * 2^32 and any sum of them with sum |w_i| <= 1 stay below 2^61); the differences
+ * and products are exact in 64 bits and lim_finish rounds once at 2^-28, which equals
+ * rounding (1 - sum w_i) v + sum w_i p_i exactly. */
 #if SUBD_FIXED
 typedef int64_t lim_w;
 #define LIM_W_FRAC(num, den) ((lim_w)((((int64_t)(num) << 29) + (den)) / (2 * (int64_t)(den)))) /* num >= 0 */
 static lim_w lim_w_from_q62(uint64_t q) { return (lim_w)((q + ((uint64_t)1 << 33)) >> 34); }
+static subd_wide lim_madd_w(subd_wide acc, lim_w w, subd_wide d) { return acc + w * d; }
+/* v + acc / 2^28, rounded to nearest (ties up, as subd_round16) */
+static subd_real lim_finish(subd_real v, subd_wide acc, uint32_t *ovf)
+{
+    return subd_real_sat((int64_t)v + ((acc + ((int64_t)1 << 27)) >> 28), ovf);
+}
 #else
 typedef float lim_w;
 #define LIM_W_FRAC(num, den) SUBD_REAL_FRAC(num, den)
 static lim_w lim_w_from_q62(uint64_t q) { return subd_real_from_q62((int64_t)q); }
+#define lim_madd_w subd_wide_madd
+static subd_real lim_finish(subd_real v, subd_wide acc, uint32_t *ovf) { return subd_chk(v + acc, ovf); }
 #endif
 
 /* chi(n) = 1 / (n + 3 / (8 beta)) with Loop's beta = (5/8 - (3/8 + 1/4 cos(2 pi/n))^2) / n.
@@ -251,34 +267,6 @@ static lim_w lim_dart_weight(const lim_dart *s, uint32_t m)
 }
 
 /* ------------------------------------------------------------------------------------ */
-/* Affine combinations v + sum w_i (p_i - v).                                             */
-/* Float32: the difference form keeps a constant mesh exactly constant and the error       */
-/* relative to the local spread. Q16.16: the differences and products are exact in 64      */
-/* bits and rounded once, which equals rounding (1 - sum w_i) v + sum w_i p_i exactly.    */
-
-#if SUBD_FIXED
-typedef int64_t lim_wide;
-static lim_wide lim_diff(subd_real p, subd_real v) { return (int64_t)p - v; }
-static lim_wide lim_madd(lim_wide acc, subd_real w, lim_wide d) { return acc + (int64_t)w * d; }
-static lim_wide lim_madd_w(lim_wide acc, lim_w w, lim_wide d) { return acc + w * d; }
-/* v + acc / 2^28, rounded to nearest (ties up, as subd_round16) */
-static subd_real lim_finish(subd_real v, lim_wide acc, uint32_t *ovf)
-{
-    return subd_real_sat((int64_t)v + ((acc + ((int64_t)1 << 27)) >> 28), ovf);
-}
-#else
-typedef float lim_wide;
-static lim_wide lim_diff(subd_real p, subd_real v) { return p - v; }
-static lim_wide lim_madd(lim_wide acc, subd_real w, lim_wide d)
-{
-    float t = w * d;
-    return acc + t;
-}
-#define lim_madd_w lim_madd
-static subd_real lim_finish(subd_real v, lim_wide acc, uint32_t *ovf) { return subd_chk(v + acc, ovf); }
-#endif
-
-/* ------------------------------------------------------------------------------------ */
 /* Boundary-curve limit weights (see the derivation at the top).                          */
 
 static void lim_curve_weights(const subd_mesh *m, subd_loop_boundary b, const lim_vert *c,
@@ -308,32 +296,26 @@ static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_re
     uint32_t k;
     if (c->cls == LOOP_SMOOTH) {
         uint32_t first = m->vert_out[v], h, n = 0;
-        lim_wide s[3];
+        subd_wide s[3];
         lim_w w = lim_chi_cached(cache, c->valence);
-        for (k = 0; k < 3u; k++) s[k] = (lim_wide)0;
+        for (k = 0; k < 3u; k++) s[k] = (subd_wide)0;
         for (h = first; h != SUBD_NONE && n < c->valence; h = subd_ring_next(m, first, h), n++) {
             const subd_real *p = &ctrl[3u * subd_he_dest(m, h)];
-            for (k = 0; k < 3u; k++) s[k] += lim_diff(p[k], pv[k]);
+            for (k = 0; k < 3u; k++) s[k] += subd_wide_diff(p[k], pv[k]);
         }
-#if SUBD_FIXED
-        for (k = 0; k < 3u; k++) out[k] = lim_finish(pv[k], w * s[k], ovf); /* n chi <= 1: < 2^61 */
-#else
-        for (k = 0; k < 3u; k++) {
-            float t = w * s[k];
-            out[k] = lim_finish(pv[k], t, ovf);
-        }
-#endif
+        /* Q16.16: n chi <= 1, so w s < 2^61; float32: the product rounded once */
+        for (k = 0; k < 3u; k++) out[k] = lim_finish(pv[k], w * s[k], ovf);
     } else if (c->cls == LOOP_DART) {
         uint32_t first = m->vert_out[v], h, i = 0, n = c->valence;
-        lim_wide acc[3];
+        subd_wide acc[3];
         lim_dart ds;
         int paper = b == SUBD_LOOP_BOUNDARY_PAPER;
         lim_dart_setup(&ds, n, paper ? 3u : 4u, paper && !lim_regular(m, c->c0));
-        for (k = 0; k < 3u; k++) acc[k] = (lim_wide)0;
+        for (k = 0; k < 3u; k++) acc[k] = (subd_wide)0;
         for (h = first; h != SUBD_NONE && i < n; h = subd_ring_next(m, first, h), i++) {
             const subd_real *p = &ctrl[3u * subd_he_dest(m, h)];
             lim_w w = lim_dart_weight(&ds, (i + n - c->i0) % n);
-            for (k = 0; k < 3u; k++) acc[k] = lim_madd_w(acc[k], w, lim_diff(p[k], pv[k]));
+            for (k = 0; k < 3u; k++) acc[k] = lim_madd_w(acc[k], w, subd_wide_diff(p[k], pv[k]));
         }
         for (k = 0; k < 3u; k++) out[k] = lim_finish(pv[k], acc[k], ovf);
     } else if (c->cls == LOOP_CREASE) {
@@ -341,8 +323,8 @@ static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_re
         lim_w w0, w1;
         lim_curve_weights(m, b, c, &w0, &w1);
         for (k = 0; k < 3u; k++) {
-            lim_wide acc = lim_madd_w((lim_wide)0, w0, lim_diff(p0[k], pv[k]));
-            acc = lim_madd_w(acc, w1, lim_diff(p1[k], pv[k]));
+            subd_wide acc = lim_madd_w((subd_wide)0, w0, subd_wide_diff(p0[k], pv[k]));
+            acc = lim_madd_w(acc, w1, subd_wide_diff(p1[k], pv[k]));
             out[k] = lim_finish(pv[k], acc, ovf);
         }
     } else {
@@ -366,120 +348,33 @@ void subd_loop_limit_apply(const subd_mesh *m, subd_loop_boundary b, const subd_
 /* ------------------------------------------------------------------------------------ */
 /* Limit normals                                                                          */
 
-/* lim_unit: c / |c|, or (0, 0, 0) for c = 0. lim_unit_cross: unit vector along t1 x t2.
- * Vectors are first scaled by their largest component (float) or shifted to 30 bits
- * (Q16.16; the cross product's 64-bit terms then stay below 2^61), so neither overflow nor
- * underflow can occur; only the direction matters. */
-#if SUBD_FIXED
-static void lim_scale30(const int64_t *t, int64_t *o)
+/* Unit vectors by vec3w.h: subd_w3_unit(c) is c / |c|, or (0, 0, 0) for c = 0.
+ * lim_unit_cross: the unit vector along t1 x t2; lim_dot_sign: the sign of a . b. Both
+ * first rescale their operands with subd_w3_normalize to 30 bits (float32: largest
+ * component 1), so the cross and dot products cannot overflow (Q16.16: below 2^61 and
+ * 3 * 2^60) or underflow; only the directions matter. */
+static void lim_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out)
 {
-    int64_t big = 0;
-    uint32_t k, sh = 0;
-    for (k = 0; k < 3u; k++) {
-        int64_t a = t[k] < 0 ? -t[k] : t[k];
-        if (a > big) big = a;
-    }
-    for (k = 0; k < 3u; k++) o[k] = 0;
-    if (big == 0) return;
-    if (big >= ((int64_t)1 << 30)) {
-        while ((big >> sh) >= ((int64_t)1 << 30)) sh++;
-        for (k = 0; k < 3u; k++) o[k] = t[k] / ((int64_t)1 << sh);
-    } else {
-        while ((big << sh) < ((int64_t)1 << 29)) sh++;
-        for (k = 0; k < 3u; k++) o[k] = t[k] * ((int64_t)1 << sh);
-    }
+    subd_wide a[3], b[3], c[3];
+    subd_w3_normalize(t1, a, 30u);
+    subd_w3_normalize(t2, b, 30u);
+    subd_w3_cross(a, b, c);
+    subd_w3_unit(c, out);
 }
 
-static void lim_unit(const lim_wide *c, subd_real *out)
+static subd_wide lim_dot_sign(const subd_wide *a, const subd_wide *b)
 {
-    int64_t n[3];
-    uint64_t len2;
-    uint32_t k, len;
-    lim_scale30(c, n);
-    len2 = (uint64_t)(n[0] * n[0]) + (uint64_t)(n[1] * n[1]) + (uint64_t)(n[2] * n[2]);
-    len = subd_isqrt64(len2);
-    for (k = 0; k < 3u; k++) {
-        int64_t q = n[k] * 65536, h = (int64_t)(len / 2u);
-        out[k] = len == 0u ? 0 : (subd_real)(q < 0 ? (q - h) / (int64_t)len : (q + h) / (int64_t)len);
-    }
+    subd_wide x[3], y[3];
+    subd_w3_normalize(a, x, 30u);
+    subd_w3_normalize(b, y, 30u);
+    return subd_w3_dot(x, y);
 }
-
-static void lim_unit_cross(const lim_wide *t1, const lim_wide *t2, subd_real *out)
-{
-    int64_t a[3], b[3], c[3];
-    lim_scale30(t1, a);
-    lim_scale30(t2, b);
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-    lim_unit(c, out);
-}
-
-static lim_wide lim_dot_sign(const lim_wide *a, const lim_wide *b)
-{
-    int64_t x[3], y[3];
-    lim_scale30(a, x);
-    lim_scale30(b, y);
-    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; /* < 3 * 2^60 */
-}
-#else
-static void lim_scale1(const float *t, float *o)
-{
-    float big = 0.0f;
-    uint32_t k;
-    for (k = 0; k < 3u; k++) {
-        float a = t[k] < 0.0f ? -t[k] : t[k];
-        if (a > big) big = a;
-    }
-    for (k = 0; k < 3u; k++) o[k] = big > 0.0f ? t[k] / big : 0.0f;
-}
-
-static void lim_unit(const lim_wide *c, subd_real *out)
-{
-    float n[3], p0, p1, p2, len;
-    uint32_t k;
-    lim_scale1(c, n);
-    p0 = n[0] * n[0];
-    p1 = n[1] * n[1];
-    p2 = n[2] * n[2];
-    len = subd_sqrt(p0 + p1 + p2);
-    for (k = 0; k < 3u; k++) out[k] = len > 0.0f ? n[k] / len : 0.0f;
-}
-
-static void lim_unit_cross(const lim_wide *t1, const lim_wide *t2, subd_real *out)
-{
-    float a[3], b[3], c[3], p0, p1;
-    lim_scale1(t1, a);
-    lim_scale1(t2, b);
-    p0 = a[1] * b[2];
-    p1 = a[2] * b[1];
-    c[0] = p0 - p1;
-    p0 = a[2] * b[0];
-    p1 = a[0] * b[2];
-    c[1] = p0 - p1;
-    p0 = a[0] * b[1];
-    p1 = a[1] * b[0];
-    c[2] = p0 - p1;
-    lim_unit(c, out);
-}
-
-static lim_wide lim_dot_sign(const lim_wide *a, const lim_wide *b)
-{
-    float x[3], y[3], p0, p1, p2;
-    lim_scale1(a, x);
-    lim_scale1(b, y);
-    p0 = x[0] * y[0];
-    p1 = x[1] * y[1];
-    p2 = x[2] * y[2];
-    return p0 + p1 + p2;
-}
-#endif
 
 /* acc += u for a unit vector u (in subd_real). */
-static void lim_add_unit(lim_wide *acc, const subd_real *u)
+static void lim_add_unit(subd_wide *acc, const subd_real *u)
 {
     uint32_t k;
-    for (k = 0; k < 3u; k++) acc[k] += (lim_wide)u[k];
+    for (k = 0; k < 3u; k++) acc[k] += subd_wide_of(u[k]);
 }
 
 /* The ring walk with the boundary's last neighbour: neighbour number i (in order) of v,
@@ -542,20 +437,20 @@ static void lim_sincos(lim_trig *t, uint32_t j, uint32_t n, subd_real *wc, subd_
 /* Interior tangents t1 = sum cos(2 pi i/n) (p_i - v), t2 = sum sin(2 pi i/n) (p_i - v),
  * with i counted from ring position i0. */
 static void lim_smooth_tangents(const subd_mesh *m, const subd_real *ctrl, uint32_t v, uint32_t n,
-                                uint32_t i0, lim_trig *tab, lim_wide *t1, lim_wide *t2)
+                                uint32_t i0, lim_trig *tab, subd_wide *t1, subd_wide *t2)
 {
     const subd_real *pv = &ctrl[3u * v];
     uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, k;
-    for (k = 0; k < 3u; k++) t1[k] = t2[k] = (lim_wide)0;
+    for (k = 0; k < 3u; k++) t1[k] = t2[k] = (subd_wide)0;
     for (i = 0; i < n; i++) {
         const subd_real *p = &ctrl[3u * lim_ring_step(m, first, &h, &last)];
         uint32_t j = (i + n - i0) % n;
         subd_real wc, ws;
         lim_sincos(tab, j, n, &wc, &ws);
         for (k = 0; k < 3u; k++) {
-            lim_wide d = lim_diff(p[k], pv[k]);
-            t1[k] = lim_madd(t1[k], wc, d);
-            t2[k] = lim_madd(t2[k], ws, d);
+            subd_wide d = subd_wide_diff(p[k], pv[k]);
+            t1[k] = subd_wide_madd(t1[k], wc, d);
+            t2[k] = subd_wide_madd(t2[k], ws, d);
         }
     }
 }
@@ -569,11 +464,11 @@ static void lim_side_normal(const subd_mesh *m, const subd_real *ctrl, uint32_t 
 {
     const subd_real *pv = &ctrl[3u * v];
     uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, c, ovf = 0;
-    lim_wide along[3], across[3];
+    subd_wide along[3], across[3];
     subd_real bend = 0, wa_a, wa_b, wc_a, wc_b, sn = 0;
     int32_t den = 2 * (int32_t)(k - 1u);
     int two = 0;
-    for (c = 0; c < 3u; c++) along[c] = across[c] = (lim_wide)0;
+    for (c = 0; c < 3u; c++) along[c] = across[c] = (subd_wide)0;
     /* along: (1 - w_b) (p_last - v) - (1 - w_a) (p_first - v) */
     wa_a = SUBD_REAL_FRAC(w8a - 8, 8);
     wa_b = SUBD_REAL_FRAC(8 - w8b, 8);
@@ -624,9 +519,9 @@ static void lim_side_normal(const subd_mesh *m, const subd_real *ctrl, uint32_t 
             if (two) wl = subd_sin_turns(2 * (int32_t)j, den);
         }
         for (c = 0; c < 3u; c++) {
-            lim_wide d = lim_diff(p[c], pv[c]);
-            along[c] = lim_madd(along[c], wl, d);
-            across[c] = lim_madd(across[c], wx, d);
+            subd_wide d = subd_wide_diff(p[c], pv[c]);
+            along[c] = subd_wide_madd(along[c], wl, d);
+            across[c] = subd_wide_madd(across[c], wx, d);
         }
     }
     if (two) lim_unit_cross(along, across, out);
@@ -697,7 +592,7 @@ static void lim_dart_normal(const subd_mesh *m, subd_loop_boundary b, const subd
 {
     const subd_real *pv = &ctrl[3u * v];
     uint32_t n = c->valence, first = m->vert_out[v], h = first, last = SUBD_NONE, i, k, ovf = 0;
-    lim_wide ta[3], ts[3];
+    subd_wide ta[3], ts[3];
     int64_t bv[DART_MAXN / 2u + 2u];
     subd_real bs = 0;
     int power = 0;
@@ -713,7 +608,7 @@ static void lim_dart_normal(const subd_mesh *m, subd_loop_boundary b, const subd
         lim_dart_sym_power(n, bv);
         power = 1;
     }
-    for (k = 0; k < 3u; k++) ta[k] = ts[k] = (lim_wide)0;
+    for (k = 0; k < 3u; k++) ta[k] = ts[k] = (subd_wide)0;
     for (i = 0; i < n; i++) {
         const subd_real *p = &ctrl[3u * lim_ring_step(m, first, &h, &last)];
         uint32_t j = (i + n - c->i0) % n;
@@ -727,9 +622,9 @@ static void lim_dart_normal(const subd_mesh *m, subd_loop_boundary b, const subd
             ws = subd_cos_turns((int32_t)j, (int32_t)n);
         }
         for (k = 0; k < 3u; k++) {
-            lim_wide d = lim_diff(p[k], pv[k]);
-            ta[k] = lim_madd(ta[k], wa, d);
-            ts[k] = lim_madd(ts[k], ws, d);
+            subd_wide d = subd_wide_diff(p[k], pv[k]);
+            ta[k] = subd_wide_madd(ta[k], wa, d);
+            ts[k] = subd_wide_madd(ts[k], ws, d);
         }
     }
     if (b == SUBD_LOOP_BOUNDARY_PAPER) lim_unit_cross(ta, ts, out);
@@ -751,8 +646,8 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
     const subd_real *pv = &ctrl[3u * v];
     uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, k, s0 = 0;
     uint32_t nfaces = boundary ? n - 1u : n;
-    lim_wide acc[3], fan[3], d0[3], dp[3];
-    for (k = 0; k < 3u; k++) acc[k] = fan[k] = d0[k] = dp[k] = (lim_wide)0;
+    subd_wide acc[3], fan[3], d0[3], dp[3];
+    for (k = 0; k < 3u; k++) acc[k] = fan[k] = d0[k] = dp[k] = (subd_wide)0;
     /* an interior corner: start the walk at its first sharp edge (a boundary one starts
      * at its boundary edge already) */
     if (!boundary)
@@ -762,28 +657,28 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
     /* faces (v, p_j, p_j+1) for j = s0 .. s0 + nfaces - 1; sector ends at sharp edges */
     for (i = 0; i <= nfaces; i++) {
         uint32_t he, u;
-        lim_wide d[3];
+        subd_wide d[3];
         if (s0 + i == n) { /* wrap around an interior corner */
             h = first;
             last = SUBD_NONE;
         }
         he = h;
         u = lim_ring_step(m, first, &h, &last);
-        for (k = 0; k < 3u; k++) d[k] = lim_diff(ctrl[3u * u + k], pv[k]);
+        for (k = 0; k < 3u; k++) d[k] = subd_wide_diff(ctrl[3u * u + k], pv[k]);
         if (i > 0u) {
             subd_real fn[3];
             lim_unit_cross(dp, d, fn);
             lim_add_unit(fan, fn);
             if (he == SUBD_NONE || subd_loop_edge_sharp(m, he) || i == nfaces) {
                 subd_real sn[3];
-                lim_wide sw[3];
+                subd_wide sw[3];
                 lim_unit_cross(d0, d, sn);
-                for (k = 0; k < 3u; k++) sw[k] = (lim_wide)sn[k];
+                for (k = 0; k < 3u; k++) sw[k] = (subd_wide)sn[k];
                 if (lim_dot_sign(fan, sw) < 0)
                     for (k = 0; k < 3u; k++) sn[k] = -sn[k];
                 lim_add_unit(acc, sn);
                 for (k = 0; k < 3u; k++) {
-                    fan[k] = (lim_wide)0;
+                    fan[k] = (subd_wide)0;
                     d0[k] = d[k];
                 }
             }
@@ -792,7 +687,7 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
         }
         for (k = 0; k < 3u; k++) dp[k] = d[k];
     }
-    lim_unit(acc, out);
+    subd_w3_unit(acc, out);
 }
 
 /* 8 w for the paper's rule on sharp edge (v, c): 4 when both are regular or both are not,
@@ -806,7 +701,7 @@ static int32_t lim_w8(subd_loop_boundary b, int rv, int rc)
 static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
                        const lim_vert *c, lim_trig *tab, subd_real *out)
 {
-    lim_wide t1[3], t2[3];
+    subd_wide t1[3], t2[3];
     uint32_t k, n = c->valence;
     for (k = 0; k < 3u; k++) out[k] = (subd_real)0;
     if (c->cls == LOOP_SMOOTH || (c->cls == LOOP_CORNER && c->nsharp <= 1u)) {
@@ -826,13 +721,13 @@ static void lim_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real
             lim_side_normal(m, ctrl, v, n, 0u, n, w8v, w80, w81, out);
         } else {
             subd_real u0[3], u1[3];
-            lim_wide acc[3];
+            subd_wide acc[3];
             lim_side_normal(m, ctrl, v, n, c->i0, c->i1 - c->i0 + 1u, w8v, w80, w81, u0);
             lim_side_normal(m, ctrl, v, n, c->i1, n - (c->i1 - c->i0) + 1u, w8v, w81, w80, u1);
-            for (k = 0; k < 3u; k++) acc[k] = (lim_wide)0;
+            for (k = 0; k < 3u; k++) acc[k] = (subd_wide)0;
             lim_add_unit(acc, u0);
             lim_add_unit(acc, u1);
-            lim_unit(acc, out);
+            subd_w3_unit(acc, out);
         }
     }
 }
@@ -866,54 +761,47 @@ void subd_loop_limit_vertex(const subd_mesh *m, subd_loop_boundary b, const subd
     if (normal) lim_normal(m, b, ctrl, v, &c, &tab, normal);
 }
 
-/* The one layout: positions, then normals; no working memory. */
-static uint32_t lim_bytes(const subd_mesh *in, int normals)
+/* The one layout (layout.h's walk: counts with a == NULL, carves otherwise): positions,
+ * then normals when asked for; no working memory. */
+static int lim_layout(subd_arena *a, const subd_mesh *in, int normals, subd_real **pos, subd_real **nrm,
+                      uint32_t *bytes)
 {
-    uint32_t total = 0;
-    if (in->num_verts > UINT32_MAX / 3u) return UINT32_MAX;
-    subd_size_add(&total, 3u * in->num_verts, (uint32_t)sizeof(subd_real));
-    if (normals) subd_size_add(&total, 3u * in->num_verts, (uint32_t)sizeof(subd_real));
-    return total;
+    subd_layout l;
+    subd_layout_begin(&l, a);
+    *pos = subd_layout_take(&l, in->num_verts, 3u * (uint32_t)sizeof(subd_real));
+    *nrm = normals ? subd_layout_take(&l, in->num_verts, 3u * (uint32_t)sizeof(subd_real)) : 0;
+    return subd_layout_end(&l, bytes);
 }
 
 int subd_loop_limit_plan(const subd_mesh *in, subd_loop_boundary b, int normals, uint32_t *bytes)
 {
+    subd_real *p, *nrm;
     int st;
     if (!bytes) return SUBD_ERR_PARAM;
     if ((st = lim_check(in, b, 0)) != SUBD_OK) return st;
-    *bytes = lim_bytes(in, normals);
-    return *bytes == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
+    return lim_layout(0, in, normals, &p, &nrm, bytes);
 }
 
 int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, subd_real **pos,
                     subd_real **normals, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
-    subd_real *p, *nrm = 0;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
+    subd_real *p, *nrm;
     lim_w cache[LIM_CACHE];
     lim_trig tab;
-    uint32_t bytes, mark, v, k, ovf = 0;
+    uint32_t bytes, v, k, ovf = 0;
     lim_vert c;
     int st;
 
-    subd_diag_clear(d);
-    if (!a || !pos) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = lim_check(in, b, d)) != SUBD_OK) return subd_fail(d, st);
-    bytes = lim_bytes(in, normals != 0);
-    if (bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
-    if (bytes > subd_arena_free_bytes(a)) {
+    if (!a || !pos) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = lim_check(in, b, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = lim_layout(0, in, normals != 0, &p, &nrm, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if (bytes > subd_arena_free_bytes(a)) { /* checked first: a failed call leaves the peak */
         d->bytes_needed = bytes;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    mark = subd_arena_mark(a);
-    p = (subd_real *)subd_arena_alloc(a, 3u * in->num_verts * (uint32_t)sizeof(subd_real));
-    if (normals) nrm = (subd_real *)subd_arena_alloc(a, 3u * in->num_verts * (uint32_t)sizeof(subd_real));
-    if (!p || (normals && !nrm)) { /* cannot happen after the check above */
-        subd_arena_rewind(a, mark);
-        d->bytes_needed = bytes;
-        return subd_fail(d, SUBD_ERR_NOMEM);
-    }
+    (void)lim_layout(a, in, normals != 0, &p, &nrm, 0); /* cannot fail: it fits */
     for (k = 0; k < LIM_CACHE; k++) cache[k] = (lim_w)0;
     tab.filled = 0;
     for (v = 0; v < in->num_verts; v++) {
@@ -922,11 +810,10 @@ int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, su
         if (nrm) lim_normal(in, b, in->pos, v, &c, &tab, &nrm[3u * v]);
     }
     if (ovf) {
-        subd_arena_rewind(a, mark);
         d->vertex = SUBD_NONE;
-        return subd_fail(d, SUBD_ERR_RANGE);
+        return subd_entry_fail(&e, SUBD_ERR_RANGE);
     }
     *pos = p;
     if (normals) *normals = nrm;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

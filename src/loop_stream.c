@@ -30,13 +30,15 @@
  * Emission order: control face by control face; inside a face depth first with children
  * 0..3, so the j-th triangle of face f is subd_loop's face 4^L f + j, corners in its order.
  *
- * Memory (the one layout of plan and run: stream_layout): L + 1 level headers, level 0's
+ * Memory (the one layout of plan and run: stream_layout, layout.h's walk): L + 1 level headers, level 0's
  * patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3 vertices, 3N cached
  * values), levels 1..L-1 (at most one corner above valence 6: N + 12 in place of 3N), the
  * limit mode's level L, and one extraction's scratch (a slot map and a child-face map).
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "entry.h"
+#include "layout.h"
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
@@ -78,15 +80,23 @@ typedef struct sp_level {
     uint32_t *cvert; /* level 0: the input vertex of each local vertex                  */
 } sp_level;
 
-/* Limit mode: level L's patch as a subd_mesh (32-bit arrays) for loop_limit.c's masks. */
-enum { W_FS, W_CV, W_CF, W_TW, W_VOUT, W_VTAG, W_ETAG, W_N };
-
+/* The blocks stream_layout takes (NULL when it only counts). A level's own arrays are an
+ * offset table inside its block (off0, off1 from level_layout) rather than carved: the
+ * same table addresses every level block of its size, and level_at re-addresses a level
+ * at each visit of the depth-first walk (several times per emitted batch), so the offsets
+ * are computed once. It is the same idea as a carving walk: one function (level_layout)
+ * computes every offset, and plan and run both get them from stream_layout. */
 typedef struct sp_layout {
     uint32_t n;         /* the largest valence, at least 6                                */
-    uint32_t off0[A_N]; /* level 0's arrays                                                */
-    uint32_t off1[A_N]; /* a later level's arrays                                          */
-    uint32_t view[W_N]; /* limit mode: the view's arrays (absolute offsets)                 */
-    uint32_t lev0, lev1, size1, smap, fmap, total;
+    uint32_t off0[A_N]; /* level 0's arrays, inside lev0                                   */
+    uint32_t off1[A_N]; /* a later level's arrays, inside its block of size1               */
+    sp_head *head;      /* L + 1 level headers                                             */
+    uint8_t *lev0;      /* level 0's block                                                 */
+    uint8_t *lev1;      /* levels 1, 2, ...: blocks of size1 bytes, one after the other     */
+    subd_mesh view;     /* limit mode: level L's patch as a subd_mesh (arrays only) for
+                         * loop_limit.c's masks                                             */
+    uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
+    uint32_t size1, total;
 } sp_layout;
 
 /* Faces, vertices and cached values of a level whose three corner valences sum to s. */
@@ -112,53 +122,52 @@ static uint32_t level_layout(uint32_t s, int cache, int control, uint32_t off[A_
     return t;
 }
 
-/* The limit mode's mesh view of a level with corner valence sum s, from offset t on
- * (SUBD_LOOP_SVIEW_ is the same sum). */
-static uint32_t view_layout(uint32_t s, uint32_t t, uint32_t off[W_N])
+/* The limit mode's mesh view of a level with corner valence sum s (SUBD_LOOP_SVIEW_ is
+ * the same sum): 32-bit arrays, as subd_mesh has them. */
+static void view_layout(subd_layout *y, uint32_t s, subd_mesh *w)
 {
     uint32_t nv = cap_v(s), nf = cap_f(s);
-    off[W_FS] = t;   subd_size_add(&t, nf + 1u, 4u);
-    off[W_CV] = t;   subd_size_add(&t, nf, 12u);
-    off[W_CF] = t;   subd_size_add(&t, nf, 12u);
-    off[W_TW] = t;   subd_size_add(&t, nf, 12u);
-    off[W_VOUT] = t; subd_size_add(&t, nv, 4u);
-    off[W_VTAG] = t; subd_size_add(&t, nv, 1u);
-    off[W_ETAG] = t; subd_size_add(&t, nf, 3u);
-    return t;
+    w->face_start = subd_layout_take(y, nf + 1u, 4u);
+    w->corner_vert = subd_layout_take(y, nf, 12u);
+    w->corner_face = subd_layout_take(y, nf, 12u);
+    w->twin = subd_layout_take(y, nf, 12u);
+    w->vert_out = subd_layout_take(y, nv, 4u);
+    w->vert_tag = subd_layout_take(y, nv, 1u);
+    w->edge_tag = subd_layout_take(y, nf, 3u);
 }
 
-/* The one layout (SUBD_LOOP_STREAM_BYTES_ is the same sum). */
-static void stream_layout(uint32_t levels, uint32_t valence, int limit, sp_layout *l)
+/* The one layout (layout.h's walk: counts with a == NULL, carves otherwise;
+ * SUBD_LOOP_STREAM_BYTES_ is the same sum). */
+static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
-    uint32_t t = 0, s0, s1, k;
+    subd_layout y;
+    uint32_t s0, s1, cached;
     l->n = valence < 6u ? 6u : valence;
     s0 = 3u * l->n;
     s1 = l->n + 12u;
-    subd_size_add(&t, levels + 1u, (uint32_t)sizeof(sp_head));
-    l->lev0 = t;
-    t += level_layout(s0, 1, 1, l->off0);
-    l->lev1 = t;
+    subd_layout_begin(&y, a);
+    l->head = subd_layout_take(&y, levels + 1u, (uint32_t)sizeof(sp_head));
+    l->lev0 = subd_layout_take(&y, 1u, level_layout(s0, 1, 1, l->off0));
     l->size1 = level_layout(s1, 1, 0, l->off1);
-    /* levels with a cache: 0..L-2 (the last two levels are emitted from L-2's), limit mode
-     * 0..L-1; then limit mode's level L */
-    for (k = 1; k + (limit ? 0u : 1u) < levels; k++) t += l->size1;
+    /* levels with a cache: 1..L-2 (the last two levels are emitted from L-2's), limit mode
+     * 1..L-1; then limit mode's level L and its mesh view */
+    cached = limit ? levels - 1u : levels >= 2u ? levels - 2u : 0u;
+    l->lev1 = subd_layout_take(&y, cached, l->size1);
     if (limit) {
-        t += level_layout(s1, 0, 0, l->off1);
-        t = view_layout(s1, t, l->view);
+        (void)subd_layout_take(&y, 1u, level_layout(s1, 0, 0, l->off1)); /* at lev1 + cached * size1 */
+        view_layout(&y, s1, &l->view);
     }
     (void)level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
-    l->smap = t;
-    subd_size_add(&t, s0, 2u);
-    l->fmap = t;
-    subd_size_add(&t, 4u * cap_f(s0), 2u);
-    l->total = t;
+    l->smap = subd_layout_take(&y, s0, 2u);
+    l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
+    return subd_layout_end(&y, &l->total);
 }
 
-static void level_at(uint8_t *base, const sp_layout *l, uint32_t k, sp_level *lv)
+static void level_at(const sp_layout *l, uint32_t k, sp_level *lv)
 {
     const uint32_t *off = k == 0u ? l->off0 : l->off1;
-    uint8_t *b = base + (k == 0u ? l->lev0 : l->lev1 + (k - 1u) * l->size1);
-    lv->h = (sp_head *)(void *)(base + k * (uint32_t)sizeof(sp_head));
+    uint8_t *b = k == 0u ? l->lev0 : l->lev1 + (k - 1u) * l->size1;
+    lv->h = l->head + k;
     lv->pos = (subd_real *)(void *)(b + off[A_POS]);
     lv->vflag = b + off[A_VFLAG];
     lv->vout = (uint16_t *)(void *)(b + off[A_VOUT]);
@@ -208,8 +217,7 @@ static int stream_check(const subd_mesh *in, const subd_loop_opts *o, sp_layout 
     if (st != SUBD_OK) return st;
     n = max_valence(in);
     if (n > SUBD_LOOP_STREAM_MAX_VALENCE) return subd_fail(d, SUBD_ERR_TOO_BIG);
-    stream_layout(o->levels, n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, l);
-    return SUBD_OK;
+    return stream_layout(0, o->levels, n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, l);
 }
 
 int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes)
@@ -857,23 +865,16 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
 /* Limit mode: the centre of level L's patch, each corner moved to its limit position with its
  * unit limit normal by loop_limit.c's masks on a subd_mesh view of the patch (the corners'
  * rings are whole; an outer vertex's class is given by LOOP_VTAG_KNOWN). */
-SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, uint8_t *base, const sp_layout *lay, uint32_t *ovf)
+SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, uint32_t *ovf)
 {
     const sp_head *ph = p->h;
     uint32_t nf = ph->nf, nv = ph->nv, c, v, j;
-    subd_mesh m;
+    subd_mesh m = lay->view;
     subd_loop_tri t;
     m.num_verts = nv;
     m.num_faces = nf;
     m.num_corners = 3u * nf;
     m.pos = p->pos;
-    m.face_start = (uint32_t *)(void *)(base + lay->view[W_FS]);
-    m.corner_vert = (uint32_t *)(void *)(base + lay->view[W_CV]);
-    m.corner_face = (uint32_t *)(void *)(base + lay->view[W_CF]);
-    m.twin = (uint32_t *)(void *)(base + lay->view[W_TW]);
-    m.vert_out = (uint32_t *)(void *)(base + lay->view[W_VOUT]);
-    m.vert_tag = base + lay->view[W_VTAG];
-    m.edge_tag = base + lay->view[W_ETAG];
     m.num_lines = m.num_line_verts = 0;
     m.line_start = m.line_vert = 0;
     m.num_edges = m.num_boundary_edges = m.num_boundary_loops = m.num_isolated = 0;
@@ -904,28 +905,25 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, uint8_t 
 int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
                      subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     sp_layout lay;
     sp_run run;
     loop_wcache wc;
-    uint8_t *base;
     uint16_t *smap, *fmap;
-    uint32_t mark, f, ovf = 0, levels, depth;
+    uint32_t f, ovf = 0, levels, depth;
     int limit;
     int st = SUBD_OK;
 
-    subd_diag_clear(d);
-    if (!a || !sink || !sink->tri) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = stream_check(in, o, &lay, d)) != SUBD_OK) return st;
-    mark = subd_arena_mark(a);
-    base = (uint8_t *)subd_arena_alloc(a, lay.total);
-    if (!base) {
+    if (!a || !sink || !sink->tri) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = stream_check(in, o, &lay, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if (lay.total > subd_arena_free_bytes(a)) { /* checked first: nothing is taken on failure */
         d->bytes_needed = lay.total;
-        return subd_fail(d, SUBD_ERR_NOMEM);
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    smap = (uint16_t *)(void *)(base + lay.smap);
-    fmap = (uint16_t *)(void *)(base + lay.fmap);
+    (void)stream_layout(a, o->levels, lay.n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, &lay); /* fits */
+    smap = lay.smap;
+    fmap = lay.fmap;
     for (f = 0; f < 4u * cap_f(3u * lay.n); f++) fmap[f] = NO_SLOT; /* extract_child keeps it so */
     wc.have = 0;
     levels = o->levels;
@@ -940,7 +938,7 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
         sp_level p, q;
         uint32_t k = 0;
         run.f = f;
-        level_at(base, &lay, 0, &p);
+        level_at(&lay, 0, &p);
         build_control(in, f, &p, levels);
         /* a level above the emitting one caches everything its children's 1-rings need;
          * the emitting level only its centre's six values (limit mode: none) */
@@ -950,14 +948,14 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
                 st = SUBD_ERR_RANGE;
                 break;
             }
-            level_at(base, &lay, k, &p);
+            level_at(&lay, k, &p);
             if (k == depth) {
-                st = limit ? emit_limit(&run, &p, base, &lay, &ovf)
+                st = limit ? emit_limit(&run, &p, &lay, &ovf)
                      : levels >= 2u ? emit_grandchildren(&run, &p, &wc, &ovf) : emit_children(&run, &p);
                 if (st != 0) break;
             } else if (p.h->child < 4u) {
                 uint32_t c = p.h->child++;
-                level_at(base, &lay, k + 1u, &q);
+                level_at(&lay, k + 1u, &q);
                 extract_child(&p, &q, c, smap, fmap);
                 if (k + 1u < depth || !limit) fill_cache(&q, o->boundary, k + 1u < depth || levels >= 2u, &wc, &ovf);
                 k++;
@@ -967,10 +965,10 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
             k--;
         }
     }
-    subd_arena_rewind(a, mark);
     if (st != SUBD_OK) {
         d->face = f - 1u;
-        d->status = st;
+        return subd_entry_fail(&e, st);
     }
-    return st;
+    subd_arena_rewind(a, e.mark); /* a stream keeps nothing */
+    return subd_entry_ok(&e);
 }

@@ -142,9 +142,12 @@
  * O(vertices); an SGS step does 1.5 applications' worth (three half-row passes).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "entry.h"
+#include "layout.h"
 #include "loop_internal.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
+#include "real_avg.h"
 
 #define PIA_STALL 10u         /* iterations without a new minimum that end a phase        */
 #define PIA_TOL_MIN_LSB 2     /* Q16.16: smallest accepted tol, in units of 2^-16         */
@@ -157,6 +160,8 @@ enum { PIA_CLS_FIXED = 0, PIA_CLS_CURVE = 1, PIA_CLS_SMOOTH = 2 };
 /* Vertex sets a phase moves and measures. */
 enum { PIA_SET_ALL, PIA_SET_BOUNDARY, PIA_SET_INTERIOR, PIA_SET_CURVE, PIA_SET_SMOOTH, PIA_SET_MOVABLE };
 
+/* Why the #if: the errors and the CG inner products are computed exactly in integers in
+ * Q16.16 (no float in the fixed build; see "Arithmetic" above), in float32 as plain sums. */
 #if SUBD_FIXED
 typedef uint64_t pia_sq; /* squared distance in LSB^2: 3 * (2^31)^2 < 2^64 */
 /* A weighted dot product: the 128-bit two's complement integer (hi, lo) times 2^e. */
@@ -194,7 +199,7 @@ typedef struct pia_state {
 
 static int pia_tol_ok(subd_real tol)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* why: Q16.16 has a floor of about 1.73 LSB, below which tol cannot be met */
     return tol >= PIA_TOL_MIN_LSB;
 #else
     return subd_real_is_finite(tol) && tol > 0.0f;
@@ -215,30 +220,38 @@ static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
     return subd_require_triangles(in, d);
 }
 
-/* Bytes of the arrays subd_pia allocates, in its order; UINT32_MAX if too big. */
-static uint32_t pia_bytes(const subd_mesh *in, const subd_pia_opts *o)
+/* The one layout (layout.h's walk: counts with a == NULL, carves otherwise): V, L V, and
+ * for FAST p, q, pt, z, w, od, cls. *keep = the bytes of V, the part that stays. */
+static int pia_layout(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, pia_state *s, uint32_t *keep,
+                      uint32_t *bytes)
 {
-    uint32_t total = 0, nv = in->num_verts, n, i, arrays = (o->method == SUBD_PIA_FAST) ? 6u : 2u;
-    if (nv > UINT32_MAX / 3u) return UINT32_MAX;
-    n = 3u * nv;
-    for (i = 0; i < arrays; i++) subd_size_add(&total, n, (uint32_t)sizeof(subd_real)); /* V, LV, p, q, pt, z */
-    if (o->method == SUBD_PIA_FAST) {
-        subd_size_add(&total, nv, (uint32_t)sizeof(subd_real)); /* w   */
-        subd_size_add(&total, nv, (uint32_t)sizeof(subd_real)); /* od  */
-        subd_size_add(&total, nv, 1u);                          /* cls */
-    }
-    return total;
+    subd_layout l;
+    uint32_t nv = in->num_verts, vb = 3u * (uint32_t)sizeof(subd_real);
+    int fast = o->method == SUBD_PIA_FAST;
+    subd_layout_begin(&l, a);
+    s->v = subd_layout_take(&l, nv, vb);
+    (void)subd_layout_end(&l, keep);
+    s->lv = subd_layout_take(&l, nv, vb);
+    s->p = fast ? subd_layout_take(&l, nv, vb) : 0;
+    s->q = fast ? subd_layout_take(&l, nv, vb) : 0;
+    s->pt = fast ? subd_layout_take(&l, nv, vb) : 0;
+    s->z = fast ? subd_layout_take(&l, nv, vb) : 0;
+    s->w = fast ? subd_layout_take(&l, nv, (uint32_t)sizeof(subd_real)) : 0;
+    s->od = fast ? subd_layout_take(&l, nv, (uint32_t)sizeof(subd_real)) : 0;
+    s->cls = fast ? subd_layout_take(&l, nv, 1u) : 0;
+    return subd_layout_end(&l, bytes);
 }
 
 int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes)
 {
     subd_diag d;
+    pia_state s;
+    uint32_t keep;
     int st;
     subd_diag_clear(&d);
     if (!bytes) return SUBD_ERR_PARAM;
     if ((st = pia_check(in, o, &d)) != SUBD_OK) return st;
-    *bytes = pia_bytes(in, o);
-    return (*bytes == UINT32_MAX) ? SUBD_ERR_TOO_BIG : SUBD_OK;
+    return pia_layout(0, in, o, &s, &keep, bytes);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -261,7 +274,8 @@ static int pia_in_set(const pia_state *s, uint32_t v, uint32_t set)
 static pia_sq pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
 {
     uint32_t k;
-#if SUBD_FIXED
+#if SUBD_FIXED /* why: the saturated differences squared exactly in 64 bits (vec3w.h's exact
+                * differences would need 33 bits and its dot product 30-bit components) */
     uint64_t s = 0;
     for (k = 0; k < 3u; k++) {
         int64_t r = subd_sub(p[k], l[k], ovf); /* |r| <= 2^31 after saturation */
@@ -281,7 +295,7 @@ static pia_sq pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
 
 static subd_real pia_root(pia_sq s, uint32_t *ovf)
 {
-#if SUBD_FIXED
+#if SUBD_FIXED /* why: the integer square root of pia_dist2's exact 64-bit square */
     uint32_t r = subd_isqrt64(s);
     if (r > (uint32_t)INT32_MAX) {
         *ovf |= 1u;
@@ -432,6 +446,8 @@ static void pia_classify(pia_state *s)
     }
 }
 
+/* Why the #if: the fixed build's CG dot products are exact 128-bit integer sums and their
+ * ratio an integer division (the algorithm of the fixed build, not a scalar twin). */
 #if SUBD_FIXED
 
 /* Component k of a - as (as may be NULL), exactly. */
@@ -910,46 +926,30 @@ static void pia_phase_cheb(pia_state *s, uint32_t set)
 int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_real **pos,
              subd_pia_result *result, subd_diag *diag)
 {
-    subd_diag dummy;
-    subd_diag *d = diag ? diag : &dummy;
+    subd_entry e;
+    subd_diag *d = subd_entry_begin(&e, a, diag);
     pia_state s;
     subd_pia_result res;
-    uint32_t mark, keep, bytes, i, n, vb;
-    int st, fast;
+    uint32_t keep, bytes, i;
+    int st;
 
-    subd_diag_clear(d);
-    if (!a || !pos || !result) return subd_fail(d, SUBD_ERR_PARAM);
-    if ((st = pia_check(in, o, d)) != SUBD_OK) return st;
-    bytes = pia_bytes(in, o);
-    if (bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
-    fast = o->method == SUBD_PIA_FAST;
-    n = 3u * in->num_verts;
-    vb = n * (uint32_t)sizeof(subd_real);
-    mark = subd_arena_mark(a);
+    if (!a || !pos || !result) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if ((st = pia_check(in, o, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = pia_layout(0, in, o, &s, &keep, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if (bytes > subd_arena_free_bytes(a)) { /* checked first: nothing is taken on failure */
+        d->bytes_needed = bytes;
+        return subd_entry_fail(&e, SUBD_ERR_NOMEM);
+    }
+    (void)pia_layout(a, in, o, &s, &keep, 0); /* cannot fail: it fits */
     s.m = in;
     s.o = o;
     s.half = 0;
     s.ovf = 0;
     s.lv_true = 0;
-    s.v = (subd_real *)subd_arena_alloc(a, vb);
-    keep = subd_arena_mark(a);
-    s.lv = (subd_real *)subd_arena_alloc(a, vb);
-    s.p = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
-    s.q = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
-    s.pt = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
-    s.z = fast ? (subd_real *)subd_arena_alloc(a, vb) : 0;
-    s.w = fast ? (subd_real *)subd_arena_alloc(a, in->num_verts * (uint32_t)sizeof(subd_real)) : 0;
-    s.od = fast ? (subd_real *)subd_arena_alloc(a, in->num_verts * (uint32_t)sizeof(subd_real)) : 0;
-    s.cls = fast ? (uint8_t *)subd_arena_alloc(a, in->num_verts) : 0;
-    if (!s.v || !s.lv || (fast && (!s.p || !s.q || !s.pt || !s.z || !s.w || !s.od || !s.cls))) {
-        subd_arena_rewind(a, mark);
-        d->bytes_needed = bytes;
-        return subd_fail(d, SUBD_ERR_NOMEM);
-    }
 
-    for (i = 0; i < n; i++) s.v[i] = in->pos[i]; /* V^0 = P */
+    for (i = 0; i < 3u * in->num_verts; i++) s.v[i] = in->pos[i]; /* V^0 = P */
     pia_limit(&s);
-    if (fast) {
+    if (o->method == SUBD_PIA_FAST) {
         pia_classify(&s);
         if (!s.ovf && s.darts) pia_phase_cheb(&s, PIA_SET_MOVABLE);
         if (!s.ovf && !s.darts) pia_phase_sym(&s, PIA_SET_CURVE);
@@ -963,34 +963,17 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
 
     /* final statistics over all vertices, from the exact L V of the returned V */
     if (!s.ovf) {
-#if SUBD_FIXED
-        uint64_t sum = 0;
-#else
-        float sum = 0.0f;
-#endif
+        subd_sum sum = 0;
         res.max_err = pia_max_err(&s, PIA_SET_ALL);
-        for (i = 0; i < in->num_verts; i++) {
-            subd_real e = pia_root(pia_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf);
-#if SUBD_FIXED
-            sum += (uint64_t)e;
-#else
-            sum = sum + e;
-#endif
-        }
-#if SUBD_FIXED
-        res.mean_err = (subd_real)((sum + in->num_verts / 2u) / in->num_verts);
-#else
-        res.mean_err = sum / (float)in->num_verts;
-#endif
+        for (i = 0; i < in->num_verts; i++)
+            sum = subd_sum_add(sum, pia_root(pia_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf));
+        res.mean_err = subd_avg(sum, in->num_verts, &s.ovf); /* num_verts >= 1 (pia_check) */
         res.iterations = (uint32_t)((s.half + 1u) / 2u); /* <= max_iter (pia_budget) */
         res.converged = res.max_err <= o->tol;
     }
-    if (s.ovf) {
-        subd_arena_rewind(a, mark);
-        return subd_fail(d, SUBD_ERR_RANGE);
-    }
-    subd_arena_rewind(a, keep); /* give back everything but V */
+    if (s.ovf) return subd_entry_fail(&e, SUBD_ERR_RANGE);
+    subd_arena_rewind(a, e.mark + keep); /* give back everything but V */
     *pos = s.v;
     *result = res;
-    return SUBD_OK;
+    return subd_entry_ok(&e);
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* subd_w3_unit: the unit vector along a wide 3-vector (see vec3w.h for the contract). Out
- * of line because it needs the square roots of sqrt.c; the same steps as loop_limit.c's
- * lim_unit, so the Loop limit normals can move onto it without changing a bit. */
+ * of line because it needs the square roots of sqrt.c. loop_limit.c's limit normals use it
+ * (it replaced that file's own lim_unit without changing a bit). */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "vec3w.h"
 

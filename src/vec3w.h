@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Wide 3-vectors: differences, dot and cross products of subd_reals that must not lose
  * bits (face normals, tangents, point-triangle distances), written once for both
- * arithmetics. Used by crease.c and sr48_extract.c; loop_limit.c's lim_wide / lim_diff /
- * lim_unit_cross / lim_dot_sign are the same ideas (subd_wide, subd_wide_diff,
- * subd_w3_normalize + subd_w3_cross, subd_w3_dot).
+ * arithmetics. Used by crease.c, sr48_extract.c and loop_limit.c (limit tangents and
+ * normals: subd_w3_normalize + subd_w3_cross + subd_w3_unit).
  *
  * subd_wide is int64_t in the Q16.16 build (values in units of 2^-16, exact) and float in
  * the float32 build.

@@ -18,6 +18,7 @@ const char *subd_status_str(int status)
     case SUBD_ERR_NONMANIFOLD_VERTEX: return "non-manifold vertex (faces form several fans)";
     case SUBD_ERR_TOO_BIG: return "counts too large";
     case SUBD_ERR_EMPTY: return "empty input";
+    case SUBD_ERR_DIVERGENT: return "parameter makes the subdivision diverge";
     default: return "unknown status";
     }
 }

@@ -51,10 +51,12 @@ typedef enum subd_status {
     SUBD_ERR_TOO_BIG = -12,       /* counts whose sizes do not fit 32-bit arithmetic       */
     SUBD_ERR_EMPTY = -13,         /* the input has no vertices or no faces where needed   */
     SUBD_ERR_NOT_TRIANGLES = -14, /* a triangle-only scheme got a polygon (diag.face: the first) */
-    SUBD_ERR_ARITH = -15          /* subd_selfcheck: float arithmetic is not the reference's  */
+    SUBD_ERR_ARITH = -15,         /* subd_selfcheck: float arithmetic is not the reference's  */
+    SUBD_ERR_DIVERGENT = -16      /* a parameter for which the scheme diverges (alpha: a
+                                   * stiffness s <= -1/2, theorem 1)                       */
 } subd_status;
 /* The most negative status (every status is in SUBD_STATUS_LOWEST..0); moves with the enum. */
-#define SUBD_STATUS_LOWEST SUBD_ERR_ARITH
+#define SUBD_STATUS_LOWEST SUBD_ERR_DIVERGENT
 
 /* A short, constant English description of a status ("non-manifold edge"). */
 const char *subd_status_str(int status);
@@ -241,11 +243,13 @@ static inline uint32_t subd_ring_next(const subd_mesh *m, uint32_t first, uint32
 
 /* Writes the one-ring neighbours of v in order into nbr[0..max) and returns their number
  * (the valence). For a boundary vertex the first and last are its boundary neighbours and
- * the count is faces + 1. Returns 0 for an isolated vertex. If the valence exceeds max only
- * max are written, but the full valence is returned. */
+ * the count is faces + 1. Returns 0 for an isolated vertex, and (writing nothing) for a NULL
+ * mesh, v >= num_verts or a mesh without adjacency (twin, vert_out or corner_face NULL, e.g.
+ * subd_loop output without SUBD_LOOP_ADJACENCY). If the valence exceeds max only max are
+ * written, but the full valence is returned. */
 uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max);
 
-/* Valence (number of edges at v). */
+/* Valence (number of edges at v); 0 where subd_vertex_ring returns 0. */
 uint32_t subd_vertex_valence(const subd_mesh *m, uint32_t v);
 
 /* Sets or clears tag bits on an edge (both half-edges). */
@@ -255,7 +259,10 @@ void subd_edge_tag_clear(subd_mesh *m, uint32_t h, uint8_t bits);
 /* Tags as SUBD_ETAG_CREASE every interior edge whose dihedral angle (the angle between the
  * normals of its two faces) is larger than the angle whose cosine is cos_limit; e.g.
  * subd_cos_turns(30, 360) for 30 degrees. Returns the number of edges tagged. Work O(C * face
- * size); no memory. Q16.16 resolves the angle to about 0.06 degrees. */
+ * size); no memory. Q16.16 resolves the angle to about 0.06 degrees. Any cos_limit: above 1
+ * every interior edge is tagged, below -1 none. A NULL mesh or one without adjacency (twin
+ * or corner_face NULL, e.g. subd_loop output without SUBD_LOOP_ADJACENCY) is not touched
+ * and 0 is returned. */
 uint32_t subd_mesh_tag_crease_angle(subd_mesh *m, subd_real cos_limit);
 
 /* Euler characteristic V - E + F (isolated vertices included). */

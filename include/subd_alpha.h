@@ -22,11 +22,17 @@
  * the weights in Q32.32 integers, then rounded once to subd_real: identical bits on every
  * target, no libm, no float in the fixed-point build.
  *
- * Table 1 as behaviour: s <= -1 diverges and is rejected with SUBD_ERR_PARAM; s in (-1, 0]
- * is accepted and reported as not smooth (continuity = -1); s in (0, 1/2] gives GC0
- * (continuity 0); s > 1/2 gives GC^(k-1) for curves (theorem 1) and GC1 for the Doo-Sabin
- * type surface (theorem 2). A level whose own f_n <= -1 (possible when s > 1 and the kernel
- * is negative at a large alpha) would divide by 1 + f_n <= 0 and is rejected the same way.
+ * Stiffness. The paper is inconsistent: its table 1 lists s in (-inf, -1] as "diverge" and
+ * (-1, 0) as "fractal", but theorem 1 proves convergence only for s in (-1/2, inf) (and for
+ * s in (-1, -1/2] the output does diverge: edge lengths grow level by level). We follow
+ * theorem 1: s <= -1/2 is rejected with SUBD_ERR_DIVERGENT; s in (-1/2, 0] is accepted and
+ * reported as not smooth (continuity = -1); s in (0, 1/2] gives GC0 (continuity 0); s > 1/2
+ * gives GC^(k-1) for curves (theorem 1) and GC1 for the Doo-Sabin type surface (theorem 2).
+ * A stiffness outside the internal Q32.32 range (|s| >= 2^31, float build) or not finite is
+ * SUBD_ERR_PARAM. A level whose own f_n <= -1 (possible when s > 1 and the kernel is
+ * negative at a large alpha) would divide by 1 + f_n <= 0 and is rejected with
+ * SUBD_ERR_PARAM; a level with f_n in (-1, -1/2] is accepted (finitely many such levels do
+ * not change convergence, which depends on s = lim f_n) but amplifies the points.
  *
  * Memory: every call has a plan that is exactly the arena peak of the run. On any failure
  * the arena is rewound to where it was and the outputs are not touched.
@@ -60,7 +66,7 @@ typedef struct subd_alpha_opts {
     uint32_t kernel;      /* subd_alpha_kernel                                            */
     int32_t alpha_num;    /* alpha = 2 pi alpha_num / alpha_den radians                   */
     int32_t alpha_den;    /* > 0                                                          */
-    subd_real stiffness;  /* s = f(0); must be > -1                                       */
+    subd_real stiffness;  /* s = f(0); must be > -1/2 (theorem 1)                         */
     /* Optional per-vertex alpha numerators (curves only, section 3; shared alpha_den), one
      * per input point; NULL = alpha_num everywhere. See the curve section for how they
      * travel. Surfaces: must be NULL. */
@@ -71,9 +77,11 @@ typedef struct subd_alpha_opts {
 void subd_alpha_opts_default(subd_alpha_opts *o);
 
 /* The kernel value f(alpha; n) = s g(2^-(n+1) alpha) for alpha = 2 pi num / den, rounded to
- * subd_real. Any int32 num. Returns SUBD_OK, SUBD_ERR_PARAM (bad kernel, den <= 0,
- * den << (n + 1) not an int32, s <= -1 or not finite) or SUBD_ERR_RANGE (the value
- * does not fit: cosh of a large angle). Pure computation, no arena; stack < 200 bytes. */
+ * subd_real. Any int32 num. Returns SUBD_OK, SUBD_ERR_PARAM (f NULL, bad kernel, den <= 0,
+ * den << (n + 1) not an int32, s <= -1, |s| >= 2^31 or not finite; the kernel itself
+ * accepts s in (-1, -1/2], only the operators refuse it) or SUBD_ERR_RANGE (the value does
+ * not fit: cosh (or poly) of a large angle, e.g. num = SUBD_ALPHA_MAX_NUM at level 0).
+ * Pure computation, no arena; stack < 200 bytes. */
 int subd_alpha_kernel_value(uint32_t kernel, int32_t num, int32_t den, uint32_t level, subd_real s,
                             subd_real *f);
 
@@ -107,18 +115,21 @@ typedef struct subd_alpha_curve_out {
 } subd_alpha_curve_out;
 
 /* Exact arena bytes and output point count of subd_alpha_curve for m input points.
- * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, bad order / levels / kernel) or SUBD_ERR_EMPTY
- * (m < 2 open, m < 3 closed) or SUBD_ERR_TOO_BIG. */
+ * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, bad order / levels / kernel / alpha, |s| >= 2^31
+ * or s not finite), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (m < 2 open, m < 3
+ * closed) or SUBD_ERR_TOO_BIG (m or a level's count > 2^26). */
 int subd_alpha_curve_plan(uint32_t m, int closed, const subd_alpha_opts *o, uint32_t *bytes,
                           uint32_t *out_points);
 
 /* Refines one curve by opts->levels applications of S_k(f; n), n = 0 .. levels - 1.
  * Uses one arena buffer of the largest intermediate size (each operator runs in place)
  * plus, with tags, one int32 tag per point that is given back at the end: after success
- * the arena holds only out->pos. Errors: SUBD_ERR_PARAM (NULL, options, s <= -1, a level
- * with f_n <= -1), SUBD_ERR_EMPTY, SUBD_ERR_NAN (a non-finite input point, diag.vertex),
- * SUBD_ERR_RANGE (overflow: a kernel value or a point outside the Q16.16 range),
- * SUBD_ERR_NOMEM (diag.bytes_needed = the plan), SUBD_ERR_TOO_BIG.
+ * the arena holds only out->pos. Errors, in this order: SUBD_ERR_PARAM (NULL, options,
+ * |s| >= 2^31 or not finite), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY,
+ * SUBD_ERR_TOO_BIG (m or a level's count > 2^26; checked before any point is read),
+ * SUBD_ERR_NAN (a non-finite input point, diag.vertex), SUBD_ERR_NOMEM (diag.bytes_needed =
+ * the plan), SUBD_ERR_PARAM (a tag outside +-SUBD_ALPHA_MAX_NUM, diag.vertex; a level with
+ * f_n <= -1), SUBD_ERR_RANGE (overflow: a kernel value or a point outside the range).
  * Stack: about 200 bytes. Work: O(points of the last level * k). */
 int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
                      const subd_alpha_opts *o, subd_alpha_curve_out *out, subd_diag *diag);
@@ -135,7 +146,13 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
 /* corners in ring order). Boundary rule: boundary edges and boundary vertices make no      */
 /* face, so the boundary recedes by half a face per level (the classical Doo-Sabin         */
 /* behaviour without boundary rules); faces on the boundary use formula (3) unchanged.     */
-/* Isolated vertices and polylines are dropped. The output is built with the library's     */
+/* Isolated vertices and polylines are dropped. An interior vertex of valence 2 (two faces  */
+/* sharing two consecutive edges, e.g. a split edge) would make a digon: it makes no face;  */
+/* the digon is collapsed to the edge the two neighbouring edge quads share, so each of its */
+/* two corners becomes an interior output vertex of valence 3 (with D2 such vertices:      */
+/* F' -= D2, C' -= 2 D2, E_int' -= D2, S' -= 2 D2; only the input can have them). So every  */
+/* manifold input works at every order; an error never names an intermediate mesh's element.*/
+/* The output is built with the library's                                                 */
 /* validator (subd_mesh_finish), so every adjacency array and tag is set.                  */
 /* Counts per S_2 step: V' = C, F' = F + E_int + V_int, C' = C + 4 E_int + S (S = the sum  */
 /* of the valences of the interior vertices); then E_int' = 2 E_int + S, V_int' = S,       */
@@ -167,7 +184,9 @@ typedef struct subd_alpha_surface_info {
  * N = 4 it would give 0 instead of Doo-Sabin's 1/4). The code follows formula (3).       */
 
 /* Exact arena bytes of subd_alpha_surface (the peak: after the first step two consecutive
- * steps' meshes coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM, SUBD_ERR_EMPTY (no faces),
+ * steps' meshes coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM (NULL, options,
+ * |s| >= 2^31, a mesh without adjacency: twin, vert_out or corner_face NULL, e.g. subd_loop
+ * output without SUBD_LOOP_ADJACENCY), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (no faces),
  * SUBD_ERR_FACE_SIZE (an interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face
  * that large), SUBD_ERR_TOO_BIG. */
 int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes);
@@ -178,7 +197,8 @@ int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint3
  * The input is not modified; the result's arrays are in the arena (the only memory left
  * in use after success). info (may be NULL) receives the continuity class (the S_2 class
  * for every order: the paper proves GC^(k-1) only away from extraordinary points).
- * Errors: SUBD_ERR_PARAM (NULL, options, s <= -1, a level with f_n <= -1), SUBD_ERR_EMPTY,
+ * Errors: SUBD_ERR_PARAM (NULL, options, |s| >= 2^31, a mesh without adjacency, a level
+ * with f_n <= -1), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY,
  * SUBD_ERR_FACE_SIZE (diag.vertex), SUBD_ERR_NAN (diag.vertex), SUBD_ERR_RANGE (a kernel
  * value or a position overflows), SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
  * SUBD_ERR_TOO_BIG. Stack: about 400 bytes. Work: O(output corners) per level. */

@@ -56,6 +56,10 @@ static void curve_counts(uint32_t m, int closed, const subd_alpha_opts *o, uint3
 {
     uint32_t n = m, mx = m, l, j;
     int vc = 0;
+    if (m > (1u << 26)) { /* also with levels = 0 */
+        *max = *final = UINT32_MAX;
+        return;
+    }
     for (l = 0; l < o->levels; l++) {
         n = s2_count(n, closed, vc);
         vc = 0;
@@ -343,12 +347,13 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
     if (!arena || !pos || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, &c.s_q32)) != SUBD_OK) return subd_entry_fail(&e, st);
     if ((st = check_m(m, closed)) != SUBD_OK) return subd_entry_fail(&e, st);
+    /* the size check first: it bounds m (< 2^26), so 3 m below cannot wrap */
+    if ((st = curve_bytes(m, closed, o, &bytes, &fin)) != SUBD_OK) return subd_entry_fail(&e, st);
     for (i = 0; i < 3u * m; i++)
         if (!subd_real_is_finite(pos[i])) {
             d->vertex = i / 3u;
             return subd_entry_fail(&e, SUBD_ERR_NAN);
         }
-    if ((st = curve_bytes(m, closed, o, &bytes, &fin)) != SUBD_OK) return subd_entry_fail(&e, st);
     curve_counts(m, closed, o, &mx, &fin);
     if (bytes > subd_arena_free_bytes(arena)) {
         d->bytes_needed = bytes;

@@ -207,8 +207,11 @@ int subd_alpha_kernel_q32(uint32_t kernel, int32_t num, int32_t den, uint32_t le
         if (kernel == SUBD_ALPHA_POLY) {
             g = SUBD_Q32_ONE - subd_alpha_mulq(x, x, 33, &ovf);
         } else {
-            int64_t ln2 = round_shift(LN2_Q62, 30), k = (x + ln2 / 2) / ln2; /* round(x / ln 2) */
-            int64_t r, ep, em;
+            int64_t ln2 = round_shift(LN2_Q62, 30), k, r, ep, em;
+            /* cosh x >= 2^30 long before x = 2^8 (Q32: 2^40); this also keeps a saturated
+             * x (ovf) away from the sum below */
+            if (ovf || x > ((int64_t)1 << 40)) return SUBD_ERR_RANGE;
+            k = (x + ln2 / 2) / ln2; /* round(x / ln 2) */
             if (k > 30) return SUBD_ERR_RANGE;
             r = x - subd_alpha_mulq(k, LN2_Q62, 30, &ovf); /* |r| <= ln2 / 2, Q32 */
             ep = exp_q62(r * ((int64_t)1 << 30), &ovf);
@@ -264,7 +267,8 @@ int subd_alpha_check_opts(const subd_alpha_opts *o, uint32_t max_order, int64_t 
         o->alpha_num < -SUBD_ALPHA_MAX_NUM)
         return SUBD_ERR_PARAM;
     s = subd_alpha_real_to_q32(o->stiffness, &ovf);
-    if (ovf || s <= -SUBD_Q32_ONE) return SUBD_ERR_PARAM; /* table 1: s <= -1 diverges */
+    if (ovf) return SUBD_ERR_PARAM;                             /* |s| >= 2^31 or not finite */
+    if (s <= -SUBD_Q32_ONE / 2) return SUBD_ERR_DIVERGENT;       /* theorem 1: s > -1/2      */
     *s_q32 = s;
     return SUBD_OK;
 }

@@ -15,6 +15,13 @@
  * (h < t = twin(h)), and per interior vertex the face of its corners in ring order. The
  * arrays go through subd_mesh_finish, the builder's own validator.
  *
+ * Valence 2 (the paper is silent): an interior vertex with two faces would give a digon
+ * [h1, h2] whose two edges are also edges of the two neighbouring edge quads (a
+ * non-manifold edge). We collapse the digon to an edge: the vertex makes no face, and the
+ * two edge quads share the edge h1 h2 (opposite orientations), so h1 and h2 are interior
+ * output vertices of valence 3. Only the input can have such vertices (every interior
+ * vertex of an S_2 or C output has valence >= 3); the counts below subtract D2 of them.
+ *
  * Boundary (the paper is silent): boundary edges and vertices make no face; boundary faces
  * use formula (3) unchanged. The surface therefore recedes from the boundary polygon, as
  * Doo-Sabin without boundary rules does; it stays a valid manifold with boundary and keeps
@@ -48,6 +55,7 @@
 
 typedef struct ds_stats {
     uint32_t v, f, c, ei, vi, s;
+    uint32_t d2; /* interior vertices of valence 2 (their digons collapse; input only)  */
     uint32_t b; /* boundary vertices = boundary edges (after a step; not used for the input) */
 } ds_stats;
 
@@ -57,7 +65,7 @@ static int input_stats(const subd_mesh *m, ds_stats *st, uint32_t *bad_vertex)
     st->v = m->num_verts;
     st->f = m->num_faces;
     st->c = m->num_corners;
-    st->ei = st->vi = st->s = st->b = 0;
+    st->ei = st->vi = st->s = st->b = st->d2 = 0;
     *bad_vertex = SUBD_NONE;
     for (h = 0; h < m->num_corners; h++)
         if (m->twin[h] != SUBD_NONE && h < m->twin[h]) st->ei++;
@@ -71,6 +79,7 @@ static int input_stats(const subd_mesh *m, ds_stats *st, uint32_t *bad_vertex)
         }
         st->vi++;
         st->s += k;
+        if (k == 2u) st->d2++;
     }
     return SUBD_OK;
 }
@@ -81,12 +90,14 @@ static int next_stats(const ds_stats *a, int dual, ds_stats *b)
 {
     uint64_t v, f, c, ei, vi, s, nb;
     if (!dual) {
+        /* a valence-2 vertex makes no face (its digon collapses to an edge): one face, two
+         * corners and one interior edge fewer, and its two corners get valence 3 */
         v = a->c;
-        f = (uint64_t)a->f + a->ei + a->vi;
-        c = (uint64_t)a->c + 4u * (uint64_t)a->ei + a->s;
-        ei = 2u * (uint64_t)a->ei + a->s;
+        f = (uint64_t)a->f + a->ei + a->vi - a->d2;
+        c = (uint64_t)a->c + 4u * (uint64_t)a->ei + a->s - 2u * (uint64_t)a->d2;
+        ei = 2u * (uint64_t)a->ei + a->s - a->d2;
         vi = a->s;
-        s = 4u * (uint64_t)a->s;
+        s = 4u * (uint64_t)a->s - 2u * (uint64_t)a->d2;
         nb = a->c - a->s;
     } else {
         v = (uint64_t)a->f + 2u * (uint64_t)a->b;
@@ -107,6 +118,7 @@ static int next_stats(const ds_stats *a, int dual, ds_stats *b)
     b->vi = (uint32_t)vi;
     b->s = (uint32_t)s;
     b->b = (uint32_t)nb;
+    b->d2 = 0; /* every interior vertex of an S_2 or C output has valence >= 3 */
     return 1;
 }
 
@@ -144,10 +156,20 @@ static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t 
     return SUBD_OK;
 }
 
+/* The arrays the steps read; a mesh without adjacency (e.g. subd_loop output without
+ * SUBD_LOOP_ADJACENCY: twin and vert_out NULL) is refused. */
+static int mesh_ok(const subd_mesh *m)
+{
+    if (!m->face_start) return 0;
+    if (m->num_verts && (!m->pos || !m->vert_out || !m->vert_tag)) return 0;
+    if (m->num_corners && (!m->corner_vert || !m->corner_face || !m->twin)) return 0;
+    return 1;
+}
+
 static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_q32)
 {
     int st;
-    if (!in) return SUBD_ERR_PARAM;
+    if (!in || !mesh_ok(in)) return SUBD_ERR_PARAM;
     if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, s_q32)) != SUBD_OK) return st;
     if (o->levels < 1u || o->tag_num) return SUBD_ERR_PARAM;
     if (in->num_faces == 0) return SUBD_ERR_EMPTY;
@@ -212,8 +234,10 @@ static void ds_faces(const subd_mesh *m, subd_mesh *out)
         out->face_start[++nf] = nc;
     }
     for (v = 0; v < m->num_verts; v++) {
-        uint32_t first = m->vert_out[v];
+        uint32_t first = m->vert_out[v], second;
         if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        second = subd_ring_next(m, first, first);
+        if (second == SUBD_NONE || subd_ring_next(m, first, second) == SUBD_NONE) continue; /* digon */
         for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) out->corner_vert[nc++] = h;
         out->face_start[++nf] = nc;
     }
@@ -318,7 +342,13 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
             break;
         }
         st = subd_mesh_finish(arena, &cur, d);
-        if (st != SUBD_OK) break;
+        if (st != SUBD_OK) {
+            /* (not expected: every step of a valid input is valid) an intermediate mesh's
+             * element means nothing to the caller: name none */
+            d->face = d->vertex = d->polyline = SUBD_NONE;
+            d->line = 0;
+            break;
+        }
         if (t > 0u) {
             /* drop the previous mesh: move this one down to where it started */
             subd_arena_rewind(arena, mark);

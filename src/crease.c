@@ -11,6 +11,11 @@
  * from coordinate differences shifted down to 28 bits, then rounded to 10 significant bits
  * per component; with that the squared comparison fits in 64 bits. The angle is then
  * resolved to about 1e-3 radians (0.06 degrees), which is ample for a feature threshold.
+ *
+ * Range: cos_limit is clamped to [-1, 1] in meaning: above 1 every interior edge is tagged
+ * (even one next to a degenerate face), below -1 none (and the Q16.16 squares never see a
+ * value outside [-1, 1], which keeps them inside int64). A mesh without adjacency (twin or
+ * corner_face NULL) is left alone and 0 returned.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
@@ -100,13 +105,19 @@ static int angle_exceeds(const subd_wide a[3], const subd_wide b[3], subd_real c
 uint32_t subd_mesh_tag_crease_angle(subd_mesh *m, subd_real cos_limit)
 {
     uint32_t h, tagged = 0;
+    int all;
     subd_wide a[3], b[3];
+    if (!m || !m->num_corners || !m->twin || !m->corner_face || !m->face_start || !m->corner_vert || !m->pos ||
+        !m->edge_tag)
+        return 0; /* no mesh or no adjacency: nothing tagged */
+    if (cos_limit < -SUBD_REAL_ONE) return 0; /* < -1: no angle exceeds it */
+    all = cos_limit > SUBD_REAL_ONE;          /* > 1: every angle does     */
     for (h = 0; h < m->num_corners; h++) {
         uint32_t t = m->twin[h];
         if (t == SUBD_NONE || t < h) continue; /* each interior edge once */
         face_normal(m, m->corner_face[h], a);
         face_normal(m, m->corner_face[t], b);
-        if (angle_exceeds(a, b, cos_limit)) {
+        if (all || angle_exceeds(a, b, cos_limit)) {
             subd_edge_tag_set(m, h, SUBD_ETAG_CREASE);
             tagged++;
         }

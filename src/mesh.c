@@ -468,7 +468,9 @@ int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out,
 
 uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max)
 {
-    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0;
+    uint32_t first, h, last = SUBD_NONE, n = 0;
+    if (!m || v >= m->num_verts || !m->vert_out || !m->twin || !m->corner_face || !m->vert_tag) return 0;
+    first = m->vert_out[v];
     if (first == SUBD_NONE) return 0;
     for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) {
         if (n < max) nbr[n] = subd_he_dest(m, h);

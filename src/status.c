@@ -24,6 +24,7 @@ const char *subd_status_str(int status)
     case SUBD_ERR_EMPTY: return "empty input";
     case SUBD_ERR_NOT_TRIANGLES: return "not a triangle mesh";
     case SUBD_ERR_ARITH: return "arithmetic differs from the reference (contraction, rounding or flush-to-zero)";
+    case SUBD_ERR_DIVERGENT: return "parameter makes the subdivision diverge";
     default: return "unknown status";
     }
 }

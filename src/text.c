@@ -5,7 +5,7 @@
 void subd_text_init(text_cursor *t, const char *buf, uint32_t len)
 {
     t->p = buf;
-    t->end = buf + len;
+    t->end = len ? buf + len : buf; /* (NULL, 0) is accepted: no arithmetic on NULL */
     t->line = t->line_end = buf;
     t->lineno = 0;
 }

@@ -94,6 +94,8 @@ static void alpha_kernel_values(void)
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, 0, 0, SUBD_REAL_ONE, &f), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_kernel_value(4, 1, 3, 0, SUBD_REAL_ONE, &f), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, 3, 0, h_int(-1), &f), SUBD_ERR_PARAM);
+    /* the kernel alone accepts s in (-1, -1/2] (only the operators need theorem 1) */
+    CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 0, 3, 0, SUBD_REAL_FRAC(-3, 4), &f), SUBD_OK);
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COS, 1, INT32_MAX, 0, SUBD_REAL_ONE, &f), SUBD_ERR_PARAM);
     /* cosh(10 turns * pi) is about 2^44: too big */
     CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, 20, 1, 0, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
@@ -605,15 +607,15 @@ static void alpha_stiffness(void)
     rand_poly(9);
     opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    /* table 1: s <= -1 diverges -> SUBD_ERR_PARAM, arena untouched */
+    /* theorem 1: s <= -1/2 diverges -> SUBD_ERR_DIVERGENT, arena untouched */
     o.stiffness = h_int(-1);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
     o.stiffness = SUBD_REAL_FRAC(-3, 2);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve_plan(9, 1, &o, &si, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_alpha_curve_plan(9, 1, &o, &si, 0), SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_arena_mark(&a), 0);
-    /* s in (-1, 0]: accepted, reported as not smooth */
-    o.stiffness = SUBD_REAL_FRAC(-1, 2);
+    /* s in (-1/2, 0]: accepted, reported as not smooth */
+    o.stiffness = SUBD_REAL_FRAC(-49, 100);
     if (run(&a, g_in, 9, 1, &o, &out)) CHECK_EQ(out.continuity, -1);
     o.stiffness = 0;
     if (run(&a, g_in, 9, 1, &o, &out)) CHECK_EQ(out.continuity, -1);
@@ -659,11 +661,11 @@ static void alpha_stiffness(void)
             }
         }
 #if H_HOST
-    /* s in (-1, 0): not contracting in general; report the same ratio for s = -1/2 */
+    /* s in (-1/2, 0): not contracting every level; report the same ratio for s = -0.49 */
     {
         sq_t e3, e4;
         opts(&o, 2, 3, SUBD_ALPHA_BSPLINE, 0, 1);
-        o.stiffness = SUBD_REAL_FRAC(-1, 2);
+        o.stiffness = SUBD_REAL_FRAC(-49, 100);
         rand_poly(9);
         subd_arena_init(&a, WORK_BUF, WORK_BYTES);
         if (!run(&a, g_in, 9, 1, &o, &out)) return;
@@ -671,7 +673,7 @@ static void alpha_stiffness(void)
         o.levels = 4;
         if (!run(&a, g_in, 9, 1, &o, &out)) return;
         e4 = max_edge(&out);
-        note("S_2 longest-edge ratio level 3->4, s = -0.5 (not smooth)", sqrt((double)e4 / (double)e3));
+        note("S_2 longest-edge ratio level 3->4, s = -0.49 (not smooth)", sqrt((double)e4 / (double)e3));
     }
 #endif
 }
@@ -823,9 +825,10 @@ static void alpha_curve_errors(void)
     /* cosh of a large angle does not fit */
     opts(&o, 2, 1, SUBD_ALPHA_COSH, 40, 1);
     CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
-    /* overflow of the positions: s = -0.96 gives w = 1/(2 - 1.92) = 12.5 */
-    opts(&o, 2, 3, SUBD_ALPHA_BSPLINE, 0, 1);
-    o.stiffness = SUBD_REAL_FRAC(-24, 25);
+    /* overflow of the positions: s = 2, cos kernel, alpha = 0.6 turn: f_0 = 2 cos(0.3 turn)
+     * = -0.62 gives w = 1/(2 + 2 f_0) = 1.31 */
+    opts(&o, 2, 3, SUBD_ALPHA_COS, 3, 5);
+    o.stiffness = h_int(2);
     g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
     CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
 #if !SUBD_FIXED
@@ -872,6 +875,121 @@ static void alpha_curve_hashes(void)
             }
 }
 
+
+/* ------------------------------------------------------------------------------------ */
+/* Robustness (issue 13)                                                                  */
+
+/* The cosh kernel at the largest allowed angle returns SUBD_ERR_RANGE (it used to overflow
+ * int64 rounding x / ln 2); a stiffness outside the internal Q32.32 range (|s| >= 2^31,
+ * float build only) is SUBD_ERR_PARAM. */
+static void alpha_kernel_range(void)
+{
+    subd_real f = 0;
+    uint32_t n;
+    for (n = 0; n < 3u; n++) {
+        CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, SUBD_ALPHA_MAX_NUM, 1, n, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
+        CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, -SUBD_ALPHA_MAX_NUM, 1, n, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
+        CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, INT32_MAX, 1, n, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
+        CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, INT32_MIN, 1, n, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
+        CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_POLY, INT32_MIN, 1, n, SUBD_REAL_ONE, &f), SUBD_ERR_RANGE);
+    }
+    /* level 0 evaluates at alpha / 2: cosh(pi 33 / 20) = 89.17 */
+    CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_COSH, 33, 20, 0, SUBD_REAL_ONE, &f), SUBD_OK);
+    CHECK(h_dbl(f) > 89.1 && h_dbl(f) < 89.2);
+#if !SUBD_FIXED
+    CHECK_EQ(subd_alpha_kernel_value(SUBD_ALPHA_BSPLINE, 0, 1, 0, 3e9f, &f), SUBD_ERR_PARAM);
+    {
+        subd_alpha_opts o;
+        subd_alpha_curve_out out;
+        subd_arena a;
+        subd_diag d;
+        uint32_t plan;
+        rand_poly(5);
+        subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+        opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
+        o.stiffness = 3e9f;
+        CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_alpha_curve_plan(5, 1, &o, &plan, 0), SUBD_ERR_PARAM);
+    }
+#endif
+}
+
+/* A point count whose 3 m wraps 32 bits is refused (SUBD_ERR_TOO_BIG) before any point is
+ * read: the NaN scan used to run over 3 m mod 2^32 values first. */
+static void alpha_curve_huge_m(void)
+{
+    subd_alpha_opts o;
+    subd_alpha_curve_out out;
+    subd_arena a;
+    subd_diag d;
+    uint32_t plan;
+    subd_real p[6];
+    uint32_t i, m = 0x55555556u; /* 3 m = 2^32 + 2 */
+    for (i = 0; i < 6u; i++) p[i] = 0;
+#if !SUBD_FIXED
+    {
+        union { uint32_t u; float f; } nan;
+        nan.u = 0x7fc00000u;
+        p[0] = nan.f;
+    }
+#endif
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
+    CHECK_EQ(subd_alpha_curve(&a, p, m, 1, &o, &out, &d), SUBD_ERR_TOO_BIG);
+    CHECK_EQ(subd_alpha_curve(&a, p, m, 0, &o, &out, &d), SUBD_ERR_TOO_BIG);
+    CHECK_EQ(subd_alpha_curve_plan(m, 1, &o, &plan, 0), SUBD_ERR_TOO_BIG);
+    o.levels = 0; /* no level to grow: the input count alone is checked */
+    CHECK_EQ(subd_alpha_curve(&a, p, m, 1, &o, &out, &d), SUBD_ERR_TOO_BIG);
+    CHECK_EQ(subd_arena_mark(&a), 0);
+}
+
+/* Theorem 1 (convergence for s > -1/2): s <= -1/2 is refused with SUBD_ERR_DIVERGENT (table
+ * 1's s <= -1 was the old limit); s = -0.49 is accepted and contracts, slowly and not
+ * every level (the first level makes the longest edge up to 2 / 1.02 times longer): the
+ * longest edge after six levels is shorter than after one. A level with f_n <= -1/2 (s = 2, cos kernel,
+ * f_0 = 2 cos(0.3 turn) = -0.62) is accepted (finitely many such levels do not affect
+ * convergence) and amplifies: positions near the range overflow (SUBD_ERR_RANGE). */
+static void alpha_divergent(void)
+{
+    subd_alpha_opts o;
+    subd_alpha_curve_out out;
+    subd_arena a;
+    subd_diag d;
+    uint32_t plan, k, closed;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    rand_poly(9);
+    opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
+    o.stiffness = SUBD_REAL_FRAC(-1, 2);
+    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_alpha_curve_plan(9, 1, &o, &plan, 0), SUBD_ERR_DIVERGENT);
+    o.stiffness = SUBD_REAL_FRAC(-9, 10);
+    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 0, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    o.stiffness = h_int(-1);
+    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_arena_mark(&a), 0);
+    for (k = 2; k <= 4u; k++)
+        for (closed = 1; closed < 2u; closed++) { /* closed: max_edge also measures p[m-1] p[0] */
+            sq_t e0, e5;
+            rand_poly(9);
+            opts(&o, k, 1, SUBD_ALPHA_BSPLINE, 0, 1);
+            o.stiffness = SUBD_REAL_FRAC(-49, 100);
+            if (!run(&a, g_in, 9, (int)closed, &o, &out)) return;
+            e0 = max_edge(&out);
+            o.levels = 6;
+            subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+            if (!run(&a, g_in, 9, (int)closed, &o, &out)) return;
+            e5 = max_edge(&out);
+            CHECK(e5 < e0);
+            subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+        }
+    rand_poly(5);
+    opts(&o, 2, 1, SUBD_ALPHA_COS, 3, 5);
+    o.stiffness = h_int(2);
+    g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
+    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
+    CHECK_EQ(subd_arena_mark(&a), 0);
+}
+
 const test_case suite_alpha_curve[] = {
     {"alpha_kernel_values", alpha_kernel_values},
     {"alpha_bspline_masks", alpha_bspline_masks},
@@ -887,5 +1005,8 @@ const test_case suite_alpha_curve[] = {
     {"alpha_plan_exact", alpha_plan_exact},
     {"alpha_curve_errors", alpha_curve_errors},
     {"alpha_curve_hashes", alpha_curve_hashes},
+    {"alpha_kernel_range", alpha_kernel_range},
+    {"alpha_curve_huge_m", alpha_curve_huge_m},
+    {"alpha_divergent", alpha_divergent},
     {0, 0}
 };

@@ -9,6 +9,7 @@
 #include "harness.h"
 #include "corpus.h"
 #include "subd_alpha.h"
+#include "subd_loop.h"
 #if H_HOST
 #include <math.h>
 #include <stdio.h>
@@ -156,7 +157,7 @@ static void alpha_ds_quad_weights(void)
  * p_opposite; f from the kernel, for several kernels and stiffnesses. */
 static void alpha_ds_tensor(void)
 {
-    static const int32_t s8[4] = {3, 8, 20, -4};
+    static const int32_t s8[4] = {3, 8, 20, 1}; /* s = -1/2 (was here) is refused now */
     uint32_t si, kern;
     double worst = 0;
     for (kern = 0; kern < 2u; kern++)
@@ -301,10 +302,10 @@ static void alpha_ds_centroid(void)
 {
     /* stiffness * 8 and the allowed shift: 2 units (LSB, or 1e-7 in float where the
      * coordinates are within 1) for s > 0, where the weights f/(1+f) + f/(1+f)^2 of the
-     * centroid's own rounding error are < 1; for s = -3/4 (not smooth) f/(1+f) = -3 and
-     * f/(2(1+f)^2) = -6 magnify that 1/2-unit error 15 times (and in float the rounding
-     * of every weighted difference as well: 20 units) */
-    static const int32_t s8[5] = {2, 8, 40, -6, 8}, bound[5] = {2, 2, 2, SUBD_FIXED ? 10 : 20, 2};
+     * centroid's own rounding error are < 1; for s = -3/8 (not smooth; theorem 1 refuses
+     * s <= -1/2) f/(1+f) = -0.6 and f/(2(1+f)^2) = -0.48 magnify that 1/2-unit error (and
+     * in float the rounding of every weighted difference as well) */
+    static const int32_t s8[5] = {2, 8, 40, -3, 8}, bound[5] = {2, 2, 2, SUBD_FIXED ? 10 : 20, 2};
     uint32_t si, f, k;
     for (si = 0; si < 5u; si++) {
         subd_arena a;
@@ -466,13 +467,22 @@ static void alpha_ds_errors(void)
     o.order = 2;
     CHECK_EQ(subd_arena_mark(&a), m0);
     o.tag_num = 0;
-    o.stiffness = h_int(-1); /* table 1: diverges */
+    o.stiffness = h_int(-1); /* table 1 and theorem 1: diverges */
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_DIVERGENT);
+#if !SUBD_FIXED
+    o.stiffness = 3e9f; /* outside the internal Q32.32 range */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_PARAM);
-    /* s in (-1, 0]: accepted, not smooth; s in (0, 1/2]: GC0; above: GC1 */
+#endif
+    /* a level with f_n <= -1: s = 2, cos kernel, f_0 = 2 cos(0.45 turn) */
+    sopts(&o, 1, SUBD_ALPHA_COS, 9, 10, h_int(2));
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
+    /* s in (-1/2, 0]: accepted, not smooth; s in (0, 1/2]: GC0; above: GC1 */
     {
         subd_alpha_surface_info info;
-        o.stiffness = SUBD_REAL_FRAC(-1, 2);
+        o.stiffness = SUBD_REAL_FRAC(-49, 100);
         if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, &info, &d), SUBD_OK)) CHECK_EQ(info.continuity, -1);
         subd_arena_rewind(&a, m0);
         o.stiffness = SUBD_REAL_FRAC(1, 2);
@@ -482,8 +492,8 @@ static void alpha_ds_errors(void)
         if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, &info, &d), SUBD_OK)) CHECK_EQ(info.continuity, 1);
         subd_arena_rewind(&a, m0);
     }
-    /* overflow: s = -0.9 makes f/(1+f) = -9 */
-    o.stiffness = SUBD_REAL_FRAC(-9, 10);
+    /* overflow: s = 2, cos kernel, f_0 = 2 cos(0.3 turn) = -0.62 makes f/(1+f) = -1.6 */
+    sopts(&o, 1, SUBD_ALPHA_COS, 3, 5, h_int(2));
     for (i = 0; i < in.num_verts; i++) in.pos[3u * i] = SUBD_FIXED ? h_int((int32_t)(i * 4000u)) : (float)i * 4e37f;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_RANGE);
     CHECK_EQ(subd_arena_mark(&a), m0);
@@ -764,6 +774,198 @@ static void alpha_sk_plan_exact(void)
     check_plan_exhaustive(&grid, &o);
 }
 
+
+/* ------------------------------------------------------------------------------------ */
+/* Robustness (issue 13).                                                                 */
+
+/* A mesh without adjacency (subd_loop output without SUBD_LOOP_ADJACENCY: twin and
+ * vert_out are NULL) is refused with SUBD_ERR_PARAM by the plan and the call (it used to be
+ * dereferenced), the arena untouched. */
+static void alpha_ds_no_adjacency(void)
+{
+    subd_arena a;
+    subd_mesh ico, tri, out;
+    subd_loop_opts lo = {1, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    subd_alpha_opts o;
+    subd_diag d;
+    uint32_t plan = 7, m0;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!read_obj(&a, "test/data/icosahedron.obj", &ico)) return;
+    if (!CHECK_EQ(subd_loop(&a, &ico, &lo, &tri, &d), SUBD_OK)) return;
+    CHECK(tri.twin == 0 || tri.vert_out == 0);
+    m0 = subd_arena_mark(&a);
+    sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
+    CHECK_EQ(subd_alpha_surface_plan(&tri, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(plan, 7);
+    CHECK_EQ(subd_alpha_surface(&a, &tri, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_arena_mark(&a), m0);
+}
+
+/* The cube with edge (0, 1) split at its midpoint (vertex 8): its two faces become
+ * pentagons and vertex 8 is an interior vertex of valence 2, whose Doo-Sabin vertex face
+ * would be a digon. Coordinates +-2, the split edge along x through x = 0. */
+static subd_face_list split_cube(void)
+{
+    static const uint32_t idx[] = {0, 4, 6, 2, 1, 3, 7, 5, 0, 8, 1, 5, 4, 2, 6, 7, 3, 0, 2, 3, 1, 8, 4, 5, 7, 6};
+    static const uint32_t size[] = {4, 4, 5, 4, 5, 4};
+    subd_face_list fl = {0, 0, 0, 0, 0, 0, 0, 0};
+    uint32_t i;
+    for (i = 0; i < 8u; i++) {
+        g_pos[3u * i] = h_int((i & 1u) ? 2 : -2);
+        g_pos[3u * i + 1u] = h_int((i & 2u) ? 2 : -2);
+        g_pos[3u * i + 2u] = h_int((i & 4u) ? 2 : -2);
+    }
+    g_pos[24] = 0;
+    g_pos[25] = h_int(-2);
+    g_pos[26] = h_int(-2);
+    for (i = 0; i < 26u; i++) g_idx[i] = idx[i];
+    for (i = 0; i < 6u; i++) g_size[i] = size[i];
+    fl.num_verts = 9;
+    fl.pos = g_pos;
+    fl.num_faces = 6;
+    fl.face_size = g_size;
+    fl.index = g_idx;
+    return fl;
+}
+
+/* A mesh rebuilt from its own face list by the validator (subd_mesh_build). */
+static int rebuilds(const subd_mesh *m)
+{
+    static uint32_t sz[16384];
+    static uint8_t buf[1u << 20] __attribute__((aligned(8)));
+    subd_face_list fl = {0, 0, 0, 0, 0, 0, 0, 0};
+    subd_arena b;
+    subd_mesh r;
+    subd_diag d;
+    uint32_t f;
+    if (!CHECK(m->num_faces <= 16384u)) return 0;
+    for (f = 0; f < m->num_faces; f++) sz[f] = m->face_start[f + 1u] - m->face_start[f];
+    fl.num_verts = m->num_verts;
+    fl.pos = m->pos;
+    fl.num_faces = m->num_faces;
+    fl.face_size = sz;
+    fl.index = m->corner_vert;
+    subd_arena_init(&b, buf, H_HOST ? sizeof buf : 0u);
+    if (!H_HOST) return 1;
+    return CHECK_EQ(subd_mesh_build(&b, &fl, &r, &d), SUBD_OK) && CHECK_EQ(r.num_corners, m->num_corners);
+}
+
+/* Every output vertex has a mirror image (x -> -x) among the output vertices, within a
+ * rounding tolerance (the mirrored faces are traversed in the other order). */
+static int mirror_symmetric(const subd_mesh *m)
+{
+    uint32_t i, j, bad = 0;
+    double tol = SUBD_FIXED ? 8.0 / 65536.0 : 1e-5;
+    for (i = 0; i < m->num_verts; i++) {
+        const subd_real *p = &m->pos[3u * i];
+        int found = 0;
+        for (j = 0; j < m->num_verts && !found; j++) {
+            const subd_real *q = &m->pos[3u * j];
+            double dx = h_dbl(p[0]) + h_dbl(q[0]), dy = h_dbl(p[1]) - h_dbl(q[1]), dz = h_dbl(p[2]) - h_dbl(q[2]);
+            found = dx <= tol && dx >= -tol && dy <= tol && dy >= -tol && dz <= tol && dz >= -tol;
+        }
+        if (!found) bad++;
+    }
+    return CHECK_EQ(bad, 0);
+}
+
+/* Issue 13, item 3: a mesh with an interior vertex of valence 2 works at every order (the
+ * digon collapses to an edge): success, closed-form counts, the output validates, mirror
+ * symmetry kept, plan = peak (and every smaller arena fails cleanly at one level). */
+static void alpha_ds_valence2(void)
+{
+    subd_arena a;
+    subd_mesh in, out;
+    subd_alpha_opts o;
+    subd_diag d;
+    subd_face_list fl = split_cube();
+    uint32_t order, lev, plan, m0;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!h_build(&a, &fl, &in)) return;
+    m0 = subd_arena_mark(&a);
+    for (order = 2; order <= 5u; order++)
+        for (lev = 1; lev <= 2u; lev++) {
+            sopts(&o, lev, SUBD_ALPHA_COS, 1, 5, SUBD_REAL_ONE);
+            o.order = order;
+            if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_OK)) return;
+            subd_diag_clear(&d);
+            a.peak = a.used;
+            if (!CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_OK)) {
+                CHECK_EQ(d.face, SUBD_NONE); /* never an element of an intermediate mesh */
+                return;
+            }
+            CHECK_EQ(a.peak - m0, plan);
+            CHECK_EQ(out.num_boundary_loops, 0);
+            CHECK_EQ(subd_mesh_euler(&out), 2);
+            if (order == 2u && lev == 1u) {
+                /* 9 vertices, 26 corners, 13 edges (all interior); vertex 8 makes no face */
+                CHECK_EQ(out.num_verts, 26);
+                CHECK_EQ(out.num_faces, 6 + 13 + 8);
+                CHECK_EQ(out.num_corners, 26 + 4 * 13 + 24);
+            }
+            rebuilds(&out);
+            mirror_symmetric(&out);
+            subd_arena_rewind(&a, m0);
+        }
+    for (order = 2; order <= 5u; order++) {
+        sopts(&o, 1, SUBD_ALPHA_POLY, 1, 3, SUBD_REAL_FRAC(3, 4));
+        o.order = order;
+        check_plan_exhaustive(&in, &o);
+    }
+}
+
+static double max_edge_len(const subd_mesh *m)
+{
+    uint32_t h, k;
+    double best = 0;
+    for (h = 0; h < m->num_corners; h++) {
+        const subd_real *p = &m->pos[3u * m->corner_vert[h]], *q = &m->pos[3u * subd_he_dest(m, h)];
+        double s = 0;
+        for (k = 0; k < 3u; k++) s += (h_dbl(p[k]) - h_dbl(q[k])) * (h_dbl(p[k]) - h_dbl(q[k]));
+        if (s > best) best = s;
+    }
+    return best;
+}
+
+/* Issue 13, item 4 (theorem 1: convergence for s > -1/2): s = -1/2 and below are refused
+ * with SUBD_ERR_DIVERGENT; s = -0.49 is accepted and contracts (the longest edge of the
+ * cube shrinks from level 1 to level 5; 1 to 3 on the device). */
+static void alpha_ds_divergent(void)
+{
+    subd_arena a;
+    subd_mesh in, out;
+    subd_alpha_opts o;
+    subd_diag d;
+    uint32_t plan, m0;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!read_obj(&a, "test/data/cube_quad.obj", &in)) return;
+    m0 = subd_arena_mark(&a);
+    sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_FRAC(-1, 2));
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_DIVERGENT);
+    o.stiffness = SUBD_REAL_FRAC(-3, 5);
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_arena_mark(&a), m0);
+    o.stiffness = SUBD_REAL_FRAC(-49, 100);
+    {
+        double e1 = 0, en = 0;
+        if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_OK)) e1 = max_edge_len(&out);
+        subd_arena_rewind(&a, m0);
+        o.levels = H_HOST ? 5u : 3u;
+        if (CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_OK)) en = max_edge_len(&out);
+        subd_arena_rewind(&a, m0);
+#if H_HOST
+        {
+            char buf[120];
+            snprintf(buf, sizeof buf, "  note: DS s = -0.49 cube: longest edge level 1 -> 5: %.4g -> %.4g\n", sqrt(e1),
+                     sqrt(en));
+            h_str(buf);
+        }
+#endif
+        CHECK(en < e1);
+    }
+}
+
 const test_case suite_alpha_surface[] = {
     {"alpha_ds_quad_weights", alpha_ds_quad_weights},
 #if H_HOST
@@ -779,5 +981,8 @@ const test_case suite_alpha_surface[] = {
     {"alpha_s3_boundary", alpha_s3_boundary},
     {"alpha_sk_levels", alpha_sk_levels},
     {"alpha_sk_plan_exact", alpha_sk_plan_exact},
+    {"alpha_ds_no_adjacency", alpha_ds_no_adjacency},
+    {"alpha_ds_valence2", alpha_ds_valence2},
+    {"alpha_ds_divergent", alpha_ds_divergent},
     {0, 0}
 };

@@ -1,5 +1,6 @@
 /* Crease tagging by dihedral angle, against angles known by construction. */
 #include "harness.h"
+#include "subd_loop.h"
 #include "corpus.h"
 
 static uint32_t count_crease_edges(const subd_mesh *m)
@@ -74,9 +75,47 @@ static void crease_fold_angles(void)
     }
 }
 
+
+/* Issue 13: a mesh without adjacency tags nothing and returns 0 (it used to dereference
+ * twin); a cosine limit outside [-1, 1] is clamped: > 1 tags every interior edge, < -1 none
+ * (Q16.16 used to overflow int64 squaring it). */
+static void crease_robust(void)
+{
+    static const uint32_t idx[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
+    subd_real pos[12];
+    subd_face_list fl = {4, 0, 4, 0, idx, 0, 0, 0};
+    subd_loop_opts lo = {1, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    subd_arena a;
+    subd_mesh m, tri;
+    subd_diag d;
+    uint32_t k;
+    for (k = 0; k < 12u; k++) pos[k] = h_int((int32_t)((k * 7u) % 5u));
+    pos[0] = h_int(9);
+    fl.pos = pos;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!h_build(&a, &fl, &m)) return;
+    CHECK_EQ(subd_mesh_tag_crease_angle(&m, h_int(2)), 6);
+    clear_creases(&m);
+#if SUBD_FIXED
+    CHECK_EQ(subd_mesh_tag_crease_angle(&m, INT32_MAX), 6);
+    clear_creases(&m);
+    CHECK_EQ(subd_mesh_tag_crease_angle(&m, INT32_MIN), 0);
+#else
+    CHECK_EQ(subd_mesh_tag_crease_angle(&m, 3e38f), 6);
+    clear_creases(&m);
+    CHECK_EQ(subd_mesh_tag_crease_angle(&m, -3e38f), 0);
+#endif
+    CHECK_EQ(subd_mesh_tag_crease_angle(&m, h_int(-2)), 0);
+    CHECK_EQ(subd_mesh_tag_crease_angle(0, 0), 0);
+    if (!CHECK_EQ(subd_loop(&a, &m, &lo, &tri, &d), SUBD_OK)) return;
+    CHECK(tri.twin == 0);
+    CHECK_EQ(subd_mesh_tag_crease_angle(&tri, 0), 0);
+}
+
 const test_case suite_crease[] = {
     {"crease_cube", crease_cube},
     {"crease_flat_grid", crease_flat_grid},
     {"crease_fold_angles", crease_fold_angles},
+    {"crease_robust", crease_robust},
     {0, 0}
 };

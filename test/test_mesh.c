@@ -1,6 +1,7 @@
 /* Index mesh builder: adjacency checked against brute-force searches written here, exact
  * planning (every too-small arena fails cleanly), each validation error, ring traversal. */
 #include "harness.h"
+#include "subd_loop.h"
 
 #define MAXV 400
 #define MAXC 2400
@@ -482,6 +483,41 @@ static void mesh_high_valence_fan(void)
     CHECK_EQ(d.vertex, 0);
 }
 
+/* Issue 13: subd_vertex_ring / subd_vertex_valence on a mesh without adjacency (subd_loop
+ * output without SUBD_LOOP_ADJACENCY) or with an out-of-range vertex return 0 (they used to
+ * dereference the missing arrays); the readers take the empty (NULL, 0) buffer without
+ * pointer arithmetic on NULL (clang's UBSan flags NULL + 0). */
+static void mesh_no_adjacency(void)
+{
+    static const uint32_t idx[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
+    subd_real pos[12];
+    subd_face_list fl = {4, 0, 4, 0, idx, 0, 0, 0};
+    subd_loop_opts lo = {1, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    subd_arena a;
+    subd_mesh m, tri;
+    subd_diag d;
+    uint32_t nbr[8] = {0}, k, bytes = 5;
+    for (k = 0; k < 12u; k++) pos[k] = h_int((int32_t)((k * 7u) % 5u));
+    pos[0] = h_int(9);
+    fl.pos = pos;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!h_build(&a, &fl, &m)) return;
+    CHECK_EQ(subd_vertex_valence(&m, 0), 3);
+    CHECK_EQ(subd_vertex_valence(&m, 4), 0);
+    CHECK_EQ(subd_vertex_ring(&m, SUBD_NONE, nbr, 8), 0);
+    CHECK_EQ(subd_vertex_valence(0, 0), 0);
+    if (!CHECK_EQ(subd_loop(&a, &m, &lo, &tri, &d), SUBD_OK)) return;
+    CHECK(tri.twin == 0 || tri.vert_out == 0);
+    CHECK_EQ(subd_vertex_valence(&tri, 0), 0);
+    CHECK_EQ(subd_vertex_ring(&tri, 1, nbr, 8), 0);
+    CHECK_EQ(nbr[0], 0);
+    /* the empty buffer */
+    CHECK_EQ(subd_obj_plan(0, 0, &bytes, &d), subd_obj_plan("", 0, &bytes, &d));
+    CHECK_EQ(subd_off_plan(0, 0, &bytes, &d), subd_off_plan("", 0, &bytes, &d));
+    CHECK_EQ(subd_obj_read(&a, 0, 0, &m, &d), subd_obj_read(&a, "", 0, &m, &d));
+    CHECK_EQ(subd_off_read(&a, 0, 0, &m, &d), subd_off_read(&a, "", 0, &m, &d));
+}
+
 const test_case suite_mesh[] = {
     {"mesh_closed", mesh_closed},
     {"mesh_open", mesh_open},
@@ -491,5 +527,6 @@ const test_case suite_mesh[] = {
     {"mesh_relabel_property", mesh_relabel_property},
     {"mesh_edge_tags", mesh_edge_tags},
     {"mesh_high_valence_fan", mesh_high_valence_fan},
+    {"mesh_no_adjacency", mesh_no_adjacency},
     {0, 0}
 };

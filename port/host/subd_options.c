@@ -277,7 +277,9 @@ static int set_stiffness(const opt_ctx *c)
 {
     double sv;
     if (parse_double(c->val, -1e4, 1e4, &sv)) return tool_usage_error("bad stiffness '%s'", c->val);
-    if (sv <= -1.0) return tool_usage_error("stiffness %s <= -1: the subdivision diverges (paper, table 1)", c->val);
+    if (sv <= -0.5)
+        return tool_usage_error("stiffness %s <= -1/2: the subdivision diverges (paper, theorem 1: convergent for s > -1/2)",
+                                c->val);
     c->o->alpha.stiffness = host_real_from_double(sv);
     return EXIT_OK;
 }

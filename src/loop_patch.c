@@ -1,0 +1,456 @@
+/* SPDX-License-Identifier: MIT */
+/* The patches of streaming Loop (loop_patch.h): a control face's 1-ring, its refined values
+ * and its children's 1-rings, bit-identical to subd_loop because every rule is loop_rules.h's
+ * and every ring and stencil is summed in loop.c's order (see loop_stream.c's header for the
+ * argument). Paper: loop-progressive-interpolation.txt, sections 1 and 4. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "loop_internal.h"
+#include "loop_patch.h"
+#include "mesh_internal.h"
+
+/* A level's arrays for corner valence sum s; `cache`: with the refined values; `control`:
+ * with the input face and vertex of each local element. SUBD_LOOP_SLEV_ is the same sum. */
+uint32_t subd_lp_level_layout(uint32_t s, int cache, int control, uint32_t off[A_N])
+{
+    uint32_t t = 0, nv = cap_v(s), nf = cap_f(s);
+    off[A_POS] = t;   subd_size_add(&t, nv, 3u * (uint32_t)sizeof(subd_real));
+    off[A_VFLAG] = t; subd_size_add(&t, nv, 1u);
+    off[A_VOUT] = t;  subd_size_add(&t, nv, 2u);
+    off[A_CV] = t;    subd_size_add(&t, nf, 6u);
+    off[A_TW] = t;    subd_size_add(&t, nf, 6u);
+    off[A_SLOT] = t;  subd_size_add(&t, nf, 6u);
+    off[A_SH] = t;    subd_size_add(&t, nf, 3u);
+    off[A_CPOS] = t;  if (cache) subd_size_add(&t, s, 3u * (uint32_t)sizeof(subd_real));
+    off[A_CFLAG] = t; if (cache) subd_size_add(&t, s, 1u);
+    off[A_CFACE] = t; if (control) subd_size_add(&t, nf, 4u);
+    off[A_CVERT] = t; if (control) subd_size_add(&t, nv, 4u);
+    return t;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Level 0: the control face's 1-ring                                                     */
+
+/* Position of input face f in the sorted local face list, or nf. */
+static uint32_t find_face(const sp_level *p, uint32_t nf, uint32_t f)
+{
+    uint32_t lo = 0, hi = nf;
+    while (lo < hi) {
+        uint32_t mid = (lo + hi) / 2u;
+        if (p->cface[mid] < f) lo = mid + 1u;
+        else hi = mid;
+    }
+    return (lo < nf && p->cface[lo] == f) ? lo : nf;
+}
+
+/* Inserts input face f into the sorted list (no duplicates). */
+static void add_face(const sp_level *p, uint32_t *nf, uint32_t f)
+{
+    uint32_t i = find_face(p, *nf, f), j;
+    if (i < *nf) return;
+    for (i = *nf; i > 0u && p->cface[i - 1u] > f; i--) {}
+    for (j = *nf; j > i; j--) p->cface[j] = p->cface[j - 1u];
+    p->cface[i] = f;
+    (*nf)++;
+}
+
+/* Local index of input vertex v (appended when new). */
+static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
+{
+    uint32_t i, nv = p->h->nv;
+    loop_vinfo c;
+    for (i = 0; i < nv; i++)
+        if (p->cvert[i] == v) return (uint16_t)i;
+    p->cvert[nv] = v;
+    p->pos[3u * nv] = in->pos[3u * v];
+    p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
+    p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
+    subd_loop_classify(in, v, &c);
+    p->vflag[nv] = (uint8_t)((c.regular ? VF_REGULAR : 0u) | ((in->vert_tag[v] & SUBD_VTAG_CORNER) ? VF_CORNER : 0u));
+    p->vout[nv] = TW_NONE;
+    p->h->nv = nv + 1u;
+    return (uint16_t)nv;
+}
+
+/* loop.c's sharpness of input half-edge h at level 0 (SH_RULE) and of its children. */
+static uint8_t input_sharp(const subd_mesh *in, uint32_t h)
+{
+    uint32_t t = in->twin[h];
+    uint8_t tg = in->edge_tag[h];
+    if (t == SUBD_NONE) return SH_RULE | SH_CHILD;
+    if (tg & SUBD_ETAG_CREASE || (in->edge_tag[t] & SUBD_ETAG_CREASE)) return SH_RULE | SH_CHILD;
+    return (tg & SUBD_ETAG_BOUNDARY) ? SH_RULE : 0u;
+}
+
+/* Builds level 0 for input face f: every face around its corners (walked both ways from
+ * vert_out, so an unusual vert_out loses no face), sorted; corners 0..2 are f's. */
+void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels)
+{
+    uint32_t j, nf = 0, lf, n1 = (uint32_t)1 << levels;
+    p->h->nv = 0;
+    for (j = 0; j < 3u; j++) {
+        uint32_t u = in->corner_vert[3u * f + j], h0 = in->vert_out[u], h = h0, steps = 0, t;
+        (void)local_vertex(in, p, u);
+        for (;;) { /* counter-clockwise: twin(prev(h)) */
+            add_face(p, &nf, h / 3u);
+            t = in->twin[tri_prev(h)];
+            if (t == SUBD_NONE || t == h0 || ++steps > in->num_corners) break;
+            h = t;
+        }
+        if (t == SUBD_NONE) /* clockwise from vert_out: next(twin(h)) */
+            for (h = h0; in->twin[h] != SUBD_NONE && steps++ <= in->num_corners;) {
+                h = tri_next(in->twin[h]);
+                add_face(p, &nf, h / 3u);
+            }
+    }
+    for (lf = 0; lf < nf; lf++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t h = 3u * p->cface[lf] + j, t = in->twin[h], l = 3u * lf + j;
+            p->cv[l] = local_vertex(in, p, in->corner_vert[h]);
+            p->sh[l] = input_sharp(in, h);
+            if (t == SUBD_NONE) {
+                p->tw[l] = TW_NONE;
+            } else {
+                uint32_t tf = find_face(p, nf, t / 3u);
+                p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)TW_BORDER;
+            }
+        }
+    for (j = 0; j < 3u; j++) { /* the input's vert_out, as loop.c's first level walks it */
+        uint32_t h = in->vert_out[in->corner_vert[3u * f + j]];
+        p->vout[j] = (uint16_t)(3u * find_face(p, nf, h / 3u) + h % 3u);
+    }
+    p->h->nf = nf;
+    p->h->cf = find_face(p, nf, f);
+    p->h->child = 0;
+    p->h->ca[0] = 0; p->h->cb[0] = 0;
+    p->h->ca[1] = n1; p->h->cb[1] = 0;
+    p->h->ca[2] = 0; p->h->cb[2] = n1;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Refined values of a level (the cache)                                                  */
+
+/* One-ring iterator of a complete vertex of a patch, loop.c's walk: from vout
+ * counter-clockwise (twin of prev); on a boundary the last neighbour is the origin of the
+ * incoming boundary half-edge. Bounded by the patch's half-edges whatever the patch holds. */
+typedef struct sp_ring {
+    uint32_t h0, h, steps, tail;
+} sp_ring;
+
+static void ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
+{
+    it->h0 = it->h = p->vout[v];
+    it->steps = 0;
+    it->tail = 0;
+}
+
+/* Next neighbour (SUBD_NONE at the end); *he: a half-edge of the edge to it. */
+static uint32_t ring_step(const sp_level *p, sp_ring *it, uint32_t *he)
+{
+    uint32_t h = it->h, pr, t, nb;
+    if (h == SUBD_NONE) return SUBD_NONE;
+    *he = h;
+    if (it->tail) {
+        it->h = SUBD_NONE;
+        return p->cv[h];
+    }
+    nb = p->cv[tri_next(h)];
+    pr = tri_prev(h);
+    t = p->tw[pr];
+    if (t == TW_NONE) {
+        it->h = pr;
+        it->tail = 1;
+    } else if (t == it->h0 || t == TW_BORDER || ++it->steps >= 3u * p->h->nf) {
+        it->h = SUBD_NONE; /* a border cannot occur at a centre corner: the bound is a guard */
+    } else {
+        it->h = t;
+    }
+    return nb;
+}
+
+/* Vertex point of centre corner v (0..2): classify by the walk, then the class's rule; a
+ * vertex known to be smooth of valence 6 takes the one walk of loop.c's smooth_fast.
+ * next = 0: of the patch's level, from its positions; *child gets the flags of v's child
+ * (the class is kept by refinement). next = 1: of the level below, from the cache (v's child
+ * has v's ring shape: its neighbours are the edge points of v's edges, in the same order
+ * from the same start), for the last two levels emitted at once. */
+void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
+                         uint8_t *child)
+{
+    uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, he = 0, cls = LOOP_SMOOTH;
+    const subd_real *pv = next ? p->cpos + 3u * v : p->pos + 3u * v;
+    uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)SH_CHILD : (uint8_t)SH_RULE;
+    sp_ring it;
+#define SP_NB() (next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb)
+    if (f & VF_SMOOTH6) {
+        n = 6;
+    } else {
+        ring_begin(p, v, &it);
+        while ((nb = ring_step(p, &it, &he)) != SUBD_NONE) {
+            if (p->sh[he] & sharp_bit) {
+                if (ns < 2u) snb[ns] = next ? p->slot[he] : nb;
+                ns++;
+            }
+            n++;
+        }
+        cls = loop_class_of(ns, (f & VF_CORNER) != 0u);
+    }
+    if (cls == LOOP_CORNER) {
+        out[0] = pv[0];
+        out[1] = pv[1];
+        out[2] = pv[2];
+    } else if (cls == LOOP_CREASE) {
+        const subd_real *base = next ? p->cpos : p->pos;
+        loop_rule_crease(out, pv, base + 3u * snb[0], base + 3u * snb[1], ovf);
+    } else {
+        loop_weights w = subd_loop_weights_of(wc, n, ovf);
+        subd_acc acc[3];
+        loop_smooth_begin(acc, w, pv);
+        ring_begin(p, v, &it);
+        while ((nb = ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
+        loop_smooth_end(out, acc, ovf);
+        if (n == 6u) f |= VF_SMOOTH6;
+    }
+#undef SP_NB
+    if (child) *child = f;
+}
+
+/* The lower half-edge of h's edge (the one loop.c makes the edge's new vertex at). */
+static uint32_t lower_of(const sp_level *p, uint32_t h)
+{
+    uint32_t t = p->tw[h];
+    return (t < TW_BORDER && t < h) ? t : h;
+}
+
+/* Edge point of the edge of lower half-edge hl. */
+static void edge_point(const sp_level *p, uint32_t hl, subd_loop_boundary rule, uint32_t *ovf, subd_real *out)
+{
+    uint32_t a = p->cv[hl], b = p->cv[tri_next(hl)], t = p->tw[hl];
+    if (!(p->sh[hl] & SH_RULE) && t < TW_BORDER)
+        loop_rule_edge(out, p->pos + 3u * a, p->pos + 3u * b, p->pos + 3u * p->cv[tri_prev(hl)],
+                       p->pos + 3u * p->cv[tri_prev(t)], ovf);
+    else
+        loop_rule_sharp_edge(out, p->pos + 3u * a, p->pos + 3u * b, rule, p->vflag[a] & VF_REGULAR,
+                             p->vflag[b] & VF_REGULAR, ovf);
+}
+
+/* Fills the cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
+ * (`all`), or only the centre's three edges (the last level, which emits the centre's
+ * children and refines nothing further). */
+void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf)
+{
+    uint32_t h, v, nc = 3u, n3 = 3u * p->h->nf;
+    for (h = 0; h < n3; h++) p->slot[h] = NO_SLOT;
+    for (v = 0; v < 3u; v++) subd_lp_vertex_point(p, v, 0, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
+    if (!all) {
+        for (v = 0; v < 3u; v++) {
+            h = 3u * p->h->cf + v;
+            p->slot[h] = (uint16_t)(3u + v);
+            edge_point(p, lower_of(p, h), rule, ovf, p->cpos + 3u * (3u + v));
+        }
+        p->h->nc = 6;
+        return;
+    }
+    for (h = 0; h < n3; h++) {
+        uint32_t hl;
+        if (p->slot[h] != NO_SLOT || (p->cv[h] >= 3u && p->cv[tri_next(h)] >= 3u)) continue;
+        hl = lower_of(p, h);
+        p->slot[h] = (uint16_t)nc;
+        if (p->tw[h] < TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
+        edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
+        p->cflag[nc] = (p->sh[hl] & SH_CHILD) ? (uint8_t)VF_REGULAR : (uint8_t)VF_SMOOTH6;
+        nc++;
+    }
+    p->h->nc = nc;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* A child's 1-ring                                                                       */
+
+/* Slot of each corner of child k of local face pf (NO_SLOT: a vertex this level cannot
+ * compute; such a child never touches the centre's children). */
+static void child_slots(const sp_level *p, uint32_t pf, uint32_t k, uint32_t x[3])
+{
+    uint32_t h = 3u * pf;
+    if (k == 3u) {
+        x[0] = p->slot[h];
+        x[1] = p->slot[h + 1u];
+        x[2] = p->slot[h + 2u];
+    } else {
+        x[0] = p->cv[h + k] < 3u ? p->cv[h + k] : NO_SLOT;
+        x[1] = p->slot[h + k];
+        x[2] = p->slot[h + (k + 2u) % 3u];
+    }
+}
+
+/* Which children of local face pf (bit k: child k) touch a corner of the centre's child c,
+ * whose corners are the cached values s[0..2]: child i of a face holds its corner i, and the
+ * new vertex of its edge j lies in children j, j+1 and 3. Every face of the child's 1-ring
+ * descends from a face at the child's old corner or at one of its two edges. */
+static uint32_t child_mask(const sp_level *p, uint32_t pf, uint32_t c, const uint32_t s[3])
+{
+    uint32_t j, m = 0, h = 3u * pf;
+    for (j = 0; j < 3u; j++) {
+        uint32_t sl = p->slot[h + j];
+        if (c < 3u && p->cv[h + j] == c) m |= 1u << j;
+        if (sl != NO_SLOT && ((c == 3u && sl == s[0]) || sl == s[1] || sl == s[2]))
+            m |= (1u << j) | (1u << ((j + 1u) % 3u)) | 8u;
+    }
+    return m;
+}
+
+/* Child corner (f, k, j) of the parent numbering -> child-local half-edge or TW_BORDER. */
+static uint16_t map_cc(const uint16_t *fmap, uint32_t f, uint32_t k, uint32_t j)
+{
+    uint16_t q = fmap[4u * f + k];
+    return q == NO_SLOT ? (uint16_t)TW_BORDER : (uint16_t)(3u * q + j);
+}
+
+/* Twin of an outer child half-edge: child kk, corner jj of the parent twin t's face. */
+static uint16_t outer_twin(const uint16_t *fmap, uint32_t t, int second)
+{
+    if (t == TW_NONE) return (uint16_t)TW_NONE;
+    if (t == TW_BORDER) return (uint16_t)TW_BORDER;
+    /* v_i -> m_i pairs with the twin's second half (child i+1 of its face, corner 2),
+     * m_i -> v_i+1 with its first (child i, corner 0) */
+    return second ? map_cc(fmap, t / 3u, (t % 3u + 1u) % 3u, 2u) : map_cc(fmap, t / 3u, t % 3u, 0u);
+}
+
+/* vert_out of the child's corner that descends from slot s of the centre (loop.c: half_first
+ * for an old vertex, new_vout for a new one). */
+static uint16_t child_vout(const sp_level *p, const uint16_t *fmap, uint32_t s, uint32_t h)
+{
+    static const uint8_t smallest[3] = {1u, 4u, 2u};
+    uint32_t hl, f, i;
+    if (s < 3u) {
+        uint32_t hv = p->vout[s];
+        return map_cc(fmap, hv / 3u, hv % 3u, 0u);
+    }
+    hl = lower_of(p, h);
+    f = hl / 3u;
+    i = hl % 3u;
+    if (p->tw[hl] == TW_NONE) return map_cc(fmap, f, (i + 1u) % 3u, 2u);
+    return map_cc(fmap, f, smallest[i] / 3u, smallest[i] % 3u);
+}
+
+/* The parent faces whose children can touch child c, ascending: c < 3, the faces around
+ * corner c (every face of the child's 1-ring descends from a face at the child's old corner
+ * or at one of its two edges, and both lie at corner c); c = 3, the centre and its edge
+ * neighbours. Returns their number. */
+static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
+{
+    uint32_t n = 0, i, j, cf = p->h->cf;
+    if (c == 3u) {
+        cand[n++] = (uint16_t)cf;
+        for (j = 0; j < 3u; j++)
+            if (p->tw[3u * cf + j] < TW_BORDER) cand[n++] = (uint16_t)(p->tw[3u * cf + j] / 3u);
+    } else {
+        uint32_t he = 0;
+        sp_ring it;
+        ring_begin(p, c, &it);
+        while (ring_step(p, &it, &he) != SUBD_NONE) /* the tail step repeats the last face */
+            if (n == 0u || cand[n - 1u] != he / 3u) cand[n++] = (uint16_t)(he / 3u);
+    }
+    for (i = 1; i < n; i++) { /* insertion sort: a few entries */
+        uint16_t f = cand[i];
+        for (j = i; j > 0u && cand[j - 1u] > f; j--) cand[j] = cand[j - 1u];
+        cand[j] = f;
+    }
+    return n;
+}
+
+/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds NO_SLOT on entry
+ * and on return (only the entries set here are reset); q's slot array, which fill_cache
+ * rewrites afterwards, holds the parent faces and the list of children taken meanwhile. */
+void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
+{
+    const sp_head *ph = p->h;
+    uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0, ncand, ci;
+    uint16_t *cand = q->slot, *taken;
+    for (j = 0; j < ph->nc; j++) smap[j] = NO_SLOT;
+    /* the child's corners, in its corner order: (v_c, m_c, m_c-1) or (m0, m1, m2) */
+    if (c < 3u) {
+        s[0] = c;
+        s[1] = p->slot[3u * cf + c];
+        s[2] = p->slot[3u * cf + (c + 2u) % 3u];
+        e[0] = 0;
+        e[1] = 3u * cf + c;
+        e[2] = 3u * cf + (c + 2u) % 3u;
+    } else {
+        for (j = 0; j < 3u; j++) {
+            s[j] = p->slot[3u * cf + j];
+            e[j] = 3u * cf + j;
+        }
+    }
+    for (j = 0; j < 3u; j++) {
+        smap[s[j]] = (uint16_t)j;
+        q->pos[3u * j] = p->cpos[3u * s[j]];
+        q->pos[3u * j + 1u] = p->cpos[3u * s[j] + 1u];
+        q->pos[3u * j + 2u] = p->cpos[3u * s[j] + 2u];
+        q->vflag[j] = p->cflag[s[j]];
+    }
+    nv = 3;
+    ncand = parent_faces(p, c, cand);
+    taken = cand + ncand;
+    for (ci = 0; ci < ncand; ci++) {
+        uint32_t mask;
+        pf = cand[ci];
+        mask = child_mask(p, pf, c, s);
+        for (k = 0; mask != 0u; k++, mask >>= 1) {
+            uint32_t x[3];
+            if (!(mask & 1u)) continue;
+            child_slots(p, pf, k, x);
+            fmap[4u * pf + k] = (uint16_t)nf;
+            taken[nf] = (uint16_t)(4u * pf + k);
+            for (j = 0; j < 3u; j++) {
+                uint32_t sl = x[j];
+                if (smap[sl] == NO_SLOT) { /* sl is a valid slot: see child_slots */
+                    smap[sl] = (uint16_t)nv;
+                    q->pos[3u * nv] = p->cpos[3u * sl];
+                    q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
+                    q->pos[3u * nv + 2u] = p->cpos[3u * sl + 2u];
+                    q->vflag[nv] = p->cflag[sl];
+                    nv++;
+                }
+                q->cv[3u * nf + j] = smap[sl];
+            }
+            nf++;
+        }
+    }
+    /* twins and sharp bits (loop.c's refine_level, mapped to the child's faces) */
+    for (ci = 0; ci < nf; ci++) {
+            uint32_t l = 3u * ci;
+            pf = taken[ci] / 4u;
+            k = taken[ci] % 4u;
+            if (k == 3u) {
+                for (j = 0; j < 3u; j++) {
+                    q->tw[l + j] = map_cc(fmap, pf, (j + 1u) % 3u, 1u);
+                    q->sh[l + j] = 0;
+                }
+            } else {
+                uint32_t h0 = 3u * pf + k, h2 = 3u * pf + (k + 2u) % 3u;
+                q->tw[l] = outer_twin(fmap, p->tw[h0], 1);
+                q->tw[l + 1u] = map_cc(fmap, pf, 3u, (k + 2u) % 3u);
+                q->tw[l + 2u] = outer_twin(fmap, p->tw[h2], 0);
+                q->sh[l] = (p->sh[h0] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
+                q->sh[l + 1u] = 0;
+                q->sh[l + 2u] = (p->sh[h2] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
+            }
+    }
+    for (j = 0; j < 3u; j++) q->vout[j] = child_vout(p, fmap, s[j], e[j]);
+    q->h->nv = nv;
+    q->h->nf = nf;
+    q->h->cf = fmap[4u * cf + c];
+    for (ci = 0; ci < nf; ci++) fmap[taken[ci]] = NO_SLOT;
+    q->h->child = 0;
+    /* lattice coordinates: a corner stays, a new vertex is the midpoint of edge i */
+    for (j = 0; j < 3u; j++) {
+        uint32_t i = (c == 3u) ? j : (j == 1u) ? c : (c + 2u) % 3u, i1 = (i + 1u) % 3u;
+        if (c < 3u && j == 0u) {
+            q->h->ca[0] = ph->ca[c];
+            q->h->cb[0] = ph->cb[c];
+        } else {
+            q->h->ca[j] = (ph->ca[i] + ph->ca[i1]) / 2u;
+            q->h->cb[j] = (ph->cb[i] + ph->cb[i1]) / 2u;
+        }
+    }
+}

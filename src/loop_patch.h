@@ -1,0 +1,80 @@
+/* SPDX-License-Identifier: MIT */
+/* Private interface of the streaming Loop files: a patch is one level of a control face's
+ * depth-first refinement, the 1-ring of its current face (the "centre") with local 16-bit
+ * indices, its faces sorted by their index in subd_loop's level and each face's corners in
+ * that level's order (so local half-edge comparisons are global ones). loop_patch.c builds
+ * the control level's patch, computes a patch's refined values (its corners' vertex points
+ * and the edge points of every edge at them: the cache, by loop_rules.h's rules) and
+ * extracts a child's 1-ring; loop_stream.c lays the levels out, walks them depth first and
+ * emits triangles. */
+#ifndef SUBD_LOOP_PATCH_H
+#define SUBD_LOOP_PATCH_H
+#include "loop_rules.h"
+
+#define TW_NONE 0xffffu   /* no twin: a boundary edge                        */
+#define TW_BORDER 0xfffeu /* the twin face is outside the patch              */
+#define NO_SLOT 0xffffu
+#define SH_RULE 1u  /* sharp for this level's rules (loop.c's edge_sharp)            */
+#define SH_CHILD 2u /* sharp for its children (boundary, or CREASE on either half)   */
+#define VF_REGULAR 1u /* a regular crease vertex (the paper's sharp-edge rule)          */
+#define VF_CORNER 2u  /* the caller's CORNER tag                                       */
+#define VF_SMOOTH6 4u /* levels >= 1: smooth (or dart) of valence 6, the class inherited as
+                       * loop.c's VTAG_SMOOTH: one walk of six steps, no classification   */
+
+/* Level header, in the arena (32-bit fields only: the same plan on host and device). */
+typedef struct sp_head {
+    uint32_t nv, nf, nc; /* vertices, faces, cached values                              */
+    uint32_t cf;         /* the centre face (its corners are local vertices 0, 1, 2)     */
+    uint32_t child;      /* next child of the centre to visit                            */
+    uint32_t ca[3], cb[3]; /* lattice coordinates of the centre's corners (units 1/2^L)   */
+    uint32_t pad;
+} sp_head;
+
+enum { A_POS, A_VFLAG, A_VOUT, A_CV, A_TW, A_SLOT, A_SH, A_CPOS, A_CFLAG, A_CFACE, A_CVERT, A_N };
+
+/* One level's arrays. */
+typedef struct sp_level {
+    sp_head *h;
+    subd_real *pos;  /* 3 nv                                                          */
+    uint8_t *vflag;  /* nv: VF_*                                                      */
+    uint16_t *vout;  /* nv: ring start (only the centre's corners are used)            */
+    uint16_t *cv;    /* 3 nf: local vertex of each corner                              */
+    uint16_t *tw;    /* 3 nf: local twin, TW_NONE or TW_BORDER                         */
+    uint16_t *slot;  /* 3 nf: the cached value of the half-edge's new vertex, or NO_SLOT */
+    uint8_t *sh;     /* 3 nf: SH_*                                                     */
+    subd_real *cpos; /* 3 nc: slots 0..2 the corners' vertex points, then edge points  */
+    uint8_t *cflag;  /* nc: the VF_* of each cached vertex at the next level           */
+    uint32_t *cface; /* level 0: the input face of each local face                      */
+    uint32_t *cvert; /* level 0: the input vertex of each local vertex                  */
+} sp_level;
+
+/* Faces, vertices and cached values of a level whose three corner valences sum to s. */
+static inline uint32_t cap_f(uint32_t s) { return s - 2u; }
+static inline uint32_t cap_v(uint32_t s) { return s - 3u; }
+
+/* Next and previous corner of a triangle. */
+static inline uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
+static inline uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
+
+/* A level's arrays for corner valence sum s (offsets into its block; returns its bytes);
+ * `cache`: with the refined values; `control`: with the input face and vertex of each local
+ * element. SUBD_LOOP_SLEV_ in subd_loop.h is the same sum. */
+uint32_t subd_lp_level_layout(uint32_t s, int cache, int control, uint32_t off[A_N]);
+
+/* Level 0 for input face f: every face around its corners, sorted; corners 0..2 are f's. */
+void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels);
+
+/* Vertex point of centre corner v (0..2), by loop.c's walk and rules. next = 0: of the
+ * patch's level (from its positions; *child, if not NULL, gets the flags of v's child);
+ * next = 1: of the level below, from the cache (v's child keeps v's ring shape). */
+void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
+                          uint8_t *child);
+
+/* The cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
+ * (`all`), or only the centre's three edges. */
+void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf);
+
+/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre; smap (one entry per cached
+ * value) is scratch, fmap (4 per parent face) holds NO_SLOT on entry and on return. */
+void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap);
+#endif

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tinysubd — every entry point. See README.md.
 #   make test    everything a change must pass: host float/fixed tests with ASan+UBSan, the
 #                same tests under QEMU on Cortex-M4F (float) and Cortex-M3 (Q16.16), host =

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host benchmark (`make bench`): OBJ parsing and mesh building, then every scheme on real
  * meshes: Loop (levels 1-5), Loop limit positions + normals, quasi 4-8 (1, 2, 4, 8 binary
  * steps), alpha-subdivision curves (S_2, S_3, S_4) and Doo-Sabin type surfaces (levels 1-3),

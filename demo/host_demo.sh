@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Host half of `make demo`: runs the subd tool on the demo meshes, one picture per result.
 # usage: demo/host_demo.sh BIN_DIR OUT_DIR
 bin=$1 out=$2

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tinysubd — subdivision surfaces and curves for devices without a heap.
  *
  * Everything the library needs comes from a caller-owned arena (a byte buffer, usually a

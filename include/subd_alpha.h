@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tinysubd — semi-stationary alpha-subdivision (Zhang & Wang, "Semi-stationary subdivision
  * operators in geometric modeling", 2002; ../shared/papers/semi-stationary-subdivision.txt).
  *

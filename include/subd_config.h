@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tinysubd build-time configuration.
  *
  * Every option has a default here. A firmware build overrides options by defining

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Quasi 4-8 subdivision (paper: quasi-4-8-subdivision.txt, Velho): geometry-sensitive
  * longest-edge binary refinement with edge-cluster marking (Algorithm 1) followed by the
  * two-pass convolution smoothing (Algorithm 2), with the section 4.3 feature control

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tinysubd scalar layer: subd_real is IEEE float32 or signed Q16.16, chosen by SUBD_FIXED.
  *
  * One algorithm source is written against these operations; both builds give the same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Semi-regular 4-8 refinement with four-direction (Zwart-Powell) box-spline smoothing and
  * variable-resolution extraction (paper: semi-regular-4-8-refinement-box-splines.txt,
  * Velho). Included by subd.h.

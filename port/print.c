@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Integer and string output over port_write (see print.h). */
 #include "print.h"
 

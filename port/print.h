@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text output shared by the test harness and the demos on every platform: an own integer
  * formatter over the port's write function, so host and target print the same bytes. */
 #ifndef PORT_PRINT_H

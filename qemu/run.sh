@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Boots one Cortex-M test or demo image in QEMU and returns the image's own exit status.
 #
 #   qemu/run.sh MACHINE ELF [TIMEOUT_SECONDS]      e.g. qemu/run.sh mps2-an386 build/x.elf

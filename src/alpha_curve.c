@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* alpha-subdivision curves S_k(f; n) (Zhang & Wang 2002, section 1, definitions 2 and 3).
  *
  * One level of S_k is S_2 of formula (2) followed by k - 2 averaging steps C (definition 3;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private interface of the alpha-subdivision files (alpha_kernel.c, alpha_curve.c,
  * alpha_surface.c): exact integer helpers, the kernel in Q32.32, and the weight type.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Kernel functions of semi-stationary alpha-subdivision (Zhang & Wang 2002, section 1,
  * definition 2 and the kernels listed after theorem 1), evaluated without libm.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Doo-Sabin type alpha-subdivision surface S_2(f; n) (Zhang & Wang 2002, section 2.1,
  * formula (3), theorem 2) and the higher orders S_k = C^(k-2) S_2 (section 2.2, figure 3;
  * C is the dual averaging step dual_step below, see subd_alpha.h for its boundary rule).

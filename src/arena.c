@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Arena: a bump allocator over a caller-owned buffer, with mark/rewind and a peak counter.
  *
  * Offsets, not addresses, are aligned: every allocation is rounded up to SUBD_ARENA_ALIGN

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Feature tagging: mark as creases the edges whose dihedral angle exceeds a limit.
  *
  * The schemes treat SUBD_ETAG_CREASE edges like boundaries (Hoppe et al. 1994); this is how

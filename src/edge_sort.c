@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Edge sort and cluster marking: quasi 4-8 subdivision's sort_edges and mark_cluster
  * (paper: quasi-4-8-subdivision.txt, section 3.1, Algorithm 1), shared with the
  * semi-regular 4-8 pre-processing's find_clusters (semi-regular-4-8-refinement-box-splines.txt,

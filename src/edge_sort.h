@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Edge sort and cluster marking shared by quasi 4-8 subdivision (quasi48.c, Algorithm 1:
  * sort_edges, mark_cluster) and semi-regular 4-8 pre-processing (sr48_pre.c, section 5,
  * find_clusters). One implementation, so both schemes number, sort and mark edges the same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Index mesh: validation and adjacency from a plain face list.
  *
  * Adjacency is built the meshoptimizer way, by counting and prefix sums: the half-edges are

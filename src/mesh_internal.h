@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private mesh construction interface shared by the builder (mesh.c) and the readers
  * (obj.c, off.c): the readers parse straight into the mesh arrays and then run the same
  * validation and adjacency pass, so there is one layout and one validator. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Wavefront OBJ reader and writer on memory buffers.
  *
  * Read: `v x y z [w | r g b]`, `f` with `v`, `v/vt`, `v//vn`, `v/vt/vn` corners (1-based or

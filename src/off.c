@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* OFF (Object File Format, ASCII) reader and writer on memory buffers.
  *
  *   OFF                      keyword line (counts may follow on the same line)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Quasi 4-8 subdivision.
  *
  * Paper: L. Velho, "Quasi 4-8 Subdivision" (quasi-4-8-subdivision.txt): section 3.1,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The two-pass reader driver shared by the OBJ and OFF readers: a counting scan gives the
  * exact arena plan, a second scan of the same routine fills the arrays in place, and the
  * mesh builder's validation runs on them. Parsing straight into the final arrays keeps the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Decimal text <-> subd_real, in integer arithmetic only.
  *
  * The OBJ/OFF readers and writers go through these two functions, so a file gives the same

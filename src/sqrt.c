@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Deterministic square roots in integer arithmetic (no libm: sqrtf would pull libm into the
  * device image, and the link proofs forbid it).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Variable-resolution extraction from the semi-regular 4-8 hierarchy of right triangles.
  *
  * Paper: L. Velho, "Semi-regular 4-8 refinement and box spline surfaces"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Semi-regular 4-8 refinement, private interface between the pre-processing
  * (sr48_pre.c, paper section 5) and the binary steps, smoothing and planning
  * (sr48_refine.c, sections 4 and 6). Paper: semi-regular-4-8-refinement-box-splines.txt.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Semi-regular 4-8 refinement: pre-processing (paper: semi-regular-4-8-refinement-box-splines.txt,
  * section 5): find_clusters (Algorithm 1), the hybrid binary subdivision (cluster diagonals
  * split, isolated triangles split barycentrically) and the first regular binary step that

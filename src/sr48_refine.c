@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Semi-regular 4-8 refinement: regular 4-8 binary steps as a hierarchy of right triangles
  * (paper: semi-regular-4-8-refinement-box-splines.txt, section 4), the factored
  * four-direction (Zwart-Powell) box-spline smoothing (section 6), planning and the build

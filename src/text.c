@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text cursor, token helpers and output sink shared by the OBJ and OFF readers/writers. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "text.h"

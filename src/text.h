@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private helpers shared by the text readers and writers (obj.c, off.c): a line cursor over
  * a memory buffer that understands LF, CRLF and lone CR, token scanning, integer parsing,
  * and an output sink that either writes into a buffer or only counts bytes. */

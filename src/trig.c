@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Deterministic cos and sin of 2*pi*num/den in integer arithmetic.
  *
  * The schemes' weights are cosines of rational fractions of a turn (Loop's

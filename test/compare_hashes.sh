@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Bit-exactness check: the HASH lines printed by the host test run and by the QEMU run of
 # the same arithmetic must be identical (same names, same values, same order).
 # usage: compare_hashes.sh HOST_LOG TARGET_LOG LABEL

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Test harness implementation: counting, printing, hashing, guard bytes, PRNG. */
 #include "harness.h"
 

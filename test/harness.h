@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Test harness shared by the host and QEMU builds: explicit test tables, CHECK macros that
  * report file:line and keep going, and output through one port write function with an own
  * integer formatter so host and target print the same bytes. */

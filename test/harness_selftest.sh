@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Proves the test machinery can fail: on each target, an image whose check fails, one that
 # HardFaults and one that hangs must each make the run fail (non-zero / timeout), and a
 # passing image must pass. The injected-failure test image must end "N passed, 1 failed"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Link-time proofs on a Cortex-M library archive (DESIGN.md hard rules, checked with nm):
 #   - no heap, stdio or qsort: no reference to malloc, calloc, realloc, free, printf & co, qsort;
 #   - m3-fixed: no soft-float helper at all (the fixed build never touches float);

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Runs one test image (host binary or QEMU), keeps its whole output in LOG, and prints a
 # one-line result (or the whole log when something failed). A non-zero exit status with no
 # failure counted (a sanitizer report, a fault, a timeout) is recorded as one failure, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Self-test of the Cortex-M test machinery (startup, port, linker script, qemu/run.sh).
  * Built once per mode with -DSELFTEST_MODE=n; the Makefile runs every image and requires:
  *   0  passes: checks startup did its job (.data, .bss, FPU), prints, exits 0

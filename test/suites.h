@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The list of test suites, in run order. Each is defined in test/test_<name>.c. */
 SUITE(suite_harness)
 SUITE(suite_arena)

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Sums the final "N passed, M failed" line of every suite log into one line and fails when
 # any suite failed or a log has no summary line (a crash or hang before the end).
 # usage: summary.sh LOG...

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* alpha-subdivision curves (src/alpha_curve.c, src/alpha_kernel.c): f == 1 gives Chaikin and
  * the uniform cubic and quartic B-spline masks written here; C-curves (cos kernel) keep a
  * regular N-gon regular with every edge midpoint on the circle (N = 3..12, S_2, S_3, S_4);

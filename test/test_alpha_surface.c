@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Doo-Sabin type alpha-subdivision surface (src/alpha_surface.c, formula (3)): f = 1 on a
  * quad gives 9/16, 3/16, 3/16, 1/16; on a regular quad grid the operator is the tensor
  * product of the curve operator S_2 for any f; theorem 2 (each face's centroid is kept;

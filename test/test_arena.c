@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Arena: alignment, mark/rewind, peak, failure leaves state unchanged, size arithmetic. */
 #include "harness.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The bad-input corpus (test/bad): every file gives its specific status and line, leaves
  * the arena mark where it was and the output descriptor untouched. Expectations come from
  * test/bad/EXPECT, which the tool check in the Makefile reads too. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Crease tagging by dihedral angle, against angles known by construction. */
 #include "harness.h"
 #include "subd_loop.h"

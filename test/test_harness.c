@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The harness itself: its formatter, hash and PRNG against known values, and target
  * assumptions the library relies on (arithmetic right shift, type sizes). Built once more
  * with -DH_INJECT_FAILURE=1 to prove that a failing check fails the run (Makefile). */

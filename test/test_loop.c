@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loop subdivision (src/loop.c): closed-form counts and mesh invariants per level, the
  * documented vertex/face order, adjacency equal to the builder's, composition of levels,
  * Loop's weight b(n), an independent slow double-precision reference (host only),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loop limit positions and normals (src/loop_limit.c) and the deterministic square root
  * (src/sqrt.c).
  *

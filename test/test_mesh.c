@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Index mesh builder: adjacency checked against brute-force searches written here, exact
  * planning (every too-small arena fails cleanly), each validation error, ring traversal. */
 #include "harness.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* OBJ reader/writer: every supported syntax against hand-written expectations, round trip,
  * exact plan, writer buffer contract, and the bundled test meshes (hashes for host = QEMU). */
 #include "harness.h"

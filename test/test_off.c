@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* OFF reader/writer: syntax against hand-written expectations, OBJ -> OFF -> mesh equality,
  * exact plan. */
 #include "harness.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Progressive interpolation (src/pia.c).
  *
  * - Interpolation, checked independently (host only): the limit positions of the result,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host-only tests of the PNG writer and the software renderer (port/host/png.c, render.c).
  * The PNG output is checked by an independent minimal reader written here (chunk CRCs with
  * a bitwise CRC-32, zlib header and Adler-32, inflate of stored and fixed-Huffman blocks,

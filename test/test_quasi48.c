@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Quasi 4-8 subdivision: the paper's stated results (figures 5-9), per-step invariants
  * checked by brute force against the step's input, smoothing properties (planarity,
  * affine invariance, tags and boundaries), exact planning (every too-small arena fails

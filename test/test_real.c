@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tests of subd_real_parse / subd_real_format (src/real_text.c).
  *
  * Device-capable tests use integer references only: edge tables, exact float32 halfway

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Semi-regular 4-8 refinement (subd_sr48_build): section 5's pre-processing claims
  * (valence parity and bound, the valence transition table), the hierarchy's structure level
  * by level checked against meshes rebuilt by the validator (diamond counts, base

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Variable-resolution extraction from the semi-regular 4-8 hierarchy (src/sr48_extract.c,
  * paper section 3 and 7). Hierarchies are built here by an independent routine that
  * follows the index rules of subd_semireg48.h (a square = one diamond, a cube = six

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tests of the deterministic cos/sin of 2*pi*num/den (src/trig.c).
  *
  * Device-capable: exact values, symmetries that must hold bit for bit, monotonicity,

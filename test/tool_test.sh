@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Tests of the subd host tool (port/host/subd_*.c): exit codes, FILE:LINE messages for
 # every row of test/bad/EXPECT, info topology on test/data, convert round trips, render,
 # --stats JSON, --arena budget, --tags files, loop --stream (.stl/.obj/.off against loop's output),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // CGAL (5.5, Subdivision_method_3) driver: DRIVER loop|doosabin MESH.obj LEVELS
 // Surface_mesh<Simple_cartesian<double>::Point_3> built from the OBJ (untimed); timed: one call
 // of Loop_subdivision / DooSabin_subdivision with number_of_iterations(LEVELS).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // OpenMesh (9.0) Loop driver: DRIVER loop MESH.obj LEVELS
 // TriMesh_ArrayKernelT<> (float Vec3f points) built from the OBJ (untimed); timed:
 // Subdivider::Uniform::LoopT attach + operator()(mesh, LEVELS) + detach.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // OpenSubdiv (3.5, Far API) Loop driver: DRIVER loop MESH.obj LEVELS
 // The standard uniform-refinement path of the Far tutorials: TopologyDescriptor ->
 // TopologyRefinerFactory::Create (untimed, like building tinysubd's input mesh), then timed:

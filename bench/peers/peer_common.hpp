@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shared helpers of the peer drivers (bench/peers): a minimal OBJ reader (v and f records;
 // f accepts v, v/vt, v//vn, v/vt/vn and negative indices), a monotonic clock, peak RSS, and
 // the machine-readable result line. Not part of tinysubd.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # tinysubd vs OpenSubdiv, CGAL and OpenMesh (make bench-peers). See bench/peers/README.md.
 #
 #   bench/peers/run.sh [MESH_DIR]        (run from anywhere; MESH_DIR defaults to

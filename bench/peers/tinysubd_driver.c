@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tinysubd driver for the peer comparison (bench/peers): DRIVER loop|doosabin|stream MESH.obj LEVELS
  * Reads the OBJ with subd_obj_plan + subd_obj_read into an arena of exactly the plan (untimed),
  * then times one call: subd_loop (boundary PAPER, flags 0), subd_alpha_surface

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Firmware demo: what a device build of tinysubd does, inside one static arena: read a mesh
  * from OBJ text, then Loop subdivision (3 levels), Loop limit positions and normals, quasi
  * 4-8 subdivision, and a semi-regular 4-8 hierarchy with a chordal-tolerance extraction of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cortex-M port for QEMU's MPS2 boards: output and exit through Arm semihosting (`bkpt
  * 0xab`), a SysTick tick counter, and stack-use measurement. See port_cm.h.
  *

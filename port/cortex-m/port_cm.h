@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cortex-M port for QEMU's MPS2 boards (mps2-an385 Cortex-M3, mps2-an386 Cortex-M4F):
  * semihosting output and exit, a tick counter, and stack-use measurement. The startup code
  * (startup.c) and the test harness are the users. Nothing here allocates or uses stdio. */

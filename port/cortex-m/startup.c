@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Startup for the Cortex-M builds on QEMU's MPS2 boards (mps2-an385 Cortex-M3, mps2-an386
  * Cortex-M4F): the vector table, the reset handler that prepares memory and the FPU before
  * calling main(), and fault handlers that report over semihosting and end the run with a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host file wrappers: whole-file I/O and mesh reading by extension (see fileio.h). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>

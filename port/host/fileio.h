@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host-only file wrappers for the subd tool and the benchmarks: whole-file read/write and
  * "read a mesh file by its extension into an exactly planned arena". Uses malloc and stdio;
  * never linked into device images. */

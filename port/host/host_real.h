@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host-only conversions between subd_real and double (tool, tests, benchmarks). Never used
  * by src/: the core does not touch double. */
 #ifndef HOST_REAL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Own PNG writer (host only, no zlib): 8-bit RGB, per-row filter None or Sub (whichever has
  * the smaller sum of absolute residuals), one IDAT holding a zlib stream. The deflate data is
  * a single fixed-Huffman block with greedy LZ77 (hash chains, 32 KiB window) -- rendered

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host-only software rasteriser: automatic framing, orthographic view (yaw about y, then
  * pitch about x), z-buffer, flat Lambert shading with a headlight plus ambient, back faces
  * in a different tint, depth-tested dark edges, polylines on top. Deterministic: plain

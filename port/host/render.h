@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host-only picture output: a software rasteriser (flat shading, visible edges, automatic
  * framing) and an own PNG writer (no external library). */
 #ifndef RENDER_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* subd — the tinysubd host command-line tool.
  *
  *   subd COMMAND [options] INPUT [-o OUTPUT]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host port for the test harness (test images only; the subd tool has its own I/O): output to stdout, exit with the code. */
 #include <stdio.h>
 #include <stdlib.h>

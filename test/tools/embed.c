@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Build tool: embeds test input files as C arrays so the QEMU images see the same bytes as
  * the host tests. Usage: embed OUT.c OUT.h FILE... (names are kept as given). */
 #include <stdio.h>

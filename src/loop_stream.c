@@ -12,7 +12,11 @@
  * depth first: level k keeps the 1-ring patch of its current face ("centre"), the refined
  * values of that patch (the three corners' vertex points and the edge points of every edge
  * at them: the "cache", shared by the four children) and which child comes next. An explicit
- * stack of L such levels replaces recursion; level L-1 emits its centre's four children.
+ * stack of such levels replaces recursion. The last two levels are emitted at once from level
+ * L-2's cache (emit_grandchildren: the centre's 16 grandchildren, whose level L-1 rings and
+ * stencils are read off L-2's topology without building the four level L-1 patches); one
+ * level in all emits from level 0 (emit_children); limit mode goes down to level L and moves
+ * the centre's corners to the limit with loop_limit.c's masks (emit_limit).
  *
  * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
  * in the same order. loop.c sums a vertex's ring from vert_out (the boundary half-edge, else
@@ -33,10 +37,11 @@
  * The patches (the 1-ring of one face per level, its cache, its children's 1-rings) are
  * loop_patch.c's; this file lays the levels out, walks them and emits.
  *
- * Memory (the one layout of plan and run: stream_layout, layout.h's walk): L + 1 level headers, level 0's
- * patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3 vertices, 3N cached
- * values), levels 1..L-1 (at most one corner above valence 6: N + 12 in place of 3N), the
- * limit mode's level L, and one extraction's scratch (a slot map and a child-face map).
+ * Memory (the one layout of plan and run: stream_layout, layout.h's walk): L + 1 level
+ * headers, level 0's patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3
+ * vertices, 3N cached values), levels 1..L-2 (limit mode: 1..L-1; at most one corner above
+ * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, and one
+ * extraction's scratch (a slot map and a child-face map).
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */

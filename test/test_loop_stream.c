@@ -427,6 +427,43 @@ static void stream_errors(void)
     CHECK_EQ(subd_arena_mark(&a), mark);
 }
 
+/* A sum that rounds above the float range: a closed bipyramid (apex valence 7) with every
+ * coordinate at SUBD_REAL_MAX. The stream must fail where subd_loop fails (float32:
+ * SUBD_ERR_RANGE, diag.face set; Q16.16: both succeed, the weights sum to one exactly), with
+ * the arena mark unchanged. */
+static void stream_range(void)
+{
+    static uint32_t idx[6u * 7u];
+    subd_real pos[3u * 9u];
+    subd_face_list fl = {9, 0, 14, 0, idx, 0, 0, 0};
+    subd_arena a;
+    subd_mesh in, out;
+    subd_loop_opts o = {1, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    subd_loop_sink sink;
+    subd_diag d;
+    uint32_t k, count = 0, mark;
+    int want;
+    for (k = 0; k < 7u; k++) {
+        uint32_t e = 2u + k, e1 = 2u + (k + 1u) % 7u;
+        idx[6u * k] = 0; idx[6u * k + 1u] = e; idx[6u * k + 2u] = e1;
+        idx[6u * k + 3u] = 1; idx[6u * k + 4u] = e1; idx[6u * k + 5u] = e;
+    }
+    for (k = 0; k < 27u; k++) pos[k] = SUBD_REAL_MAX;
+    fl.pos = pos;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (!h_build(&a, &fl, &in)) return;
+    mark = subd_arena_mark(&a);
+    want = subd_loop(&a, &in, &o, &out, &d);
+    CHECK_EQ(want, SUBD_FIXED ? SUBD_OK : SUBD_ERR_RANGE);
+    subd_arena_rewind(&a, mark);
+    sink.tri = count_tri;
+    sink.ctx = &count;
+    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), want);
+    CHECK_EQ(subd_arena_mark(&a), mark);
+    if (want != SUBD_OK) CHECK(d.face < in.num_faces);
+    else CHECK_EQ(count, 4u * in.num_faces);
+}
+
 const test_case suite_loop_stream[] = {
     {"stream_equals_loop", stream_equals_loop},
     {"stream_hashes", stream_hashes},
@@ -434,5 +471,6 @@ const test_case suite_loop_stream[] = {
     {"stream_small_arenas", stream_small_arenas},
     {"stream_sink_stop", stream_sink_stop},
     {"stream_errors", stream_errors},
+    {"stream_range", stream_range},
     {0, 0},
 };

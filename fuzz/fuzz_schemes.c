@@ -12,15 +12,15 @@
  * arena of the plan never gives SUBD_ERR_NOMEM; the stream emits subd_loop's triangles bit
  * for bit and nothing stays in its arena.
  *
- * FZ_AVOID_KNOWN (default 1) keeps the decoder away from bugs already reported and being
- * fixed elsewhere (issue 13): the cosh kernel's overflow at large angles. */
+ * FZ_AVOID_KNOWN (default 0) keeps the decoder away from bugs reported but not yet fixed; it
+ * kept the cosh kernel's large angles out while their int64 overflow (issue 13) was open. */
 #include "fuzz_check.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 #ifndef FZ_AVOID_KNOWN
-#define FZ_AVOID_KNOWN 1
+#define FZ_AVOID_KNOWN 0
 #endif
 
 typedef struct cur {
@@ -484,7 +484,7 @@ static void alpha_params(cur *c, subd_alpha_opts *o, int32_t *tags, uint32_t nta
     else if (e == 0xfdu)
         o->alpha_den = INT32_MAX >> 2;
 #if FZ_AVOID_KNOWN
-    /* known (issue 13): cosh of a large angle overflows int64 instead of SUBD_ERR_RANGE */
+    /* was known (issue 13, fixed): cosh of a large angle overflowed int64 */
     if (o->kernel == SUBD_ALPHA_COSH) {
         o->alpha_num %= 2;
         if (o->alpha_den < 4)

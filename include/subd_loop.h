@@ -1,7 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Loop subdivision, Loop limit positions and normals, and progressive interpolation
- * (paper: loop-progressive-interpolation.txt; formulas and traps in REFERENCE.md).
- * Included by subd.h. */
+/* Loop subdivision (C. Loop, "Smooth subdivision surfaces based on triangles", M.S. thesis,
+ * University of Utah, 1987), materialised and streamed; Loop limit positions and normals; and
+ * progressive interpolation (F. Cheng, F. Fan, S. Lai, C. Huang, J. Wang, J. Yong, "Loop
+ * subdivision surface based progressive interpolation", Journal of Computer Science and
+ * Technology 24(1), 2009). Included by subd.h.
+ * Each call's comment follows one template: a summary, then Memory (arena and stack),
+ * Errors (every status the call can return), Cost, and Notes. */
 #ifndef SUBD_LOOP_H
 #define SUBD_LOOP_H
 
@@ -28,14 +32,19 @@ typedef struct subd_loop_opts {
     uint32_t flags;
 } subd_loop_opts;
 
-/* Exact arena bytes subd_loop needs for this input and options. The input must be an
- * all-triangle mesh (SUBD_ERR_NOT_TRIANGLES otherwise) with adjacency (twin, vert_out: a mesh
- * from the builder or readers, or a subd_loop output made with SUBD_LOOP_ADJACENCY;
- * SUBD_ERR_PARAM otherwise). The intermediate levels live inside the output block (level
- * L-1 where face_start and corner_face go, which are written last), so the plan is the
- * output arrays alone unless isolated vertices dominate the mesh: peak = input + output.
- * SUBD_LOOP_BYTES below gives the same number at compile time. O(corners) work, no arena
- * use. */
+/* subd_loop_plan: the exact arena bytes subd_loop needs for this input and options, in
+ * *bytes (subd_loop's peak arena use equals it).
+ * Memory: no arena use; SUBD_LOOP_BYTES below gives the same number at compile time.
+ * Errors: SUBD_ERR_PARAM (NULL pointer, levels outside 1..SUBD_MAX_LEVELS, unknown boundary
+ *   rule or flag, a mesh without adjacency: twin and vert_out are needed, as the builder, the
+ *   readers and subd_loop with SUBD_LOOP_ADJACENCY make them; a face_start that does not
+ *   run from 0 to num_corners),
+ *   SUBD_ERR_NOT_TRIANGLES (diag.face: the first face that is not a triangle),
+ *   SUBD_ERR_TOO_BIG (the output does not fit 32-bit counts or the plan exceeds UINT32_MAX).
+ * Cost: O(corners).
+ * Notes: the intermediate levels live inside the output block (level L-1 where face_start
+ *   and corner_face go, which are written last), so the plan is the output arrays alone
+ *   unless isolated vertices dominate the mesh. */
 int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
 
 /* The plan as a compile-time constant, for sizing a static buffer: subd_loop_plan of an
@@ -79,8 +88,17 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
                                   (L) < 3u ? 0u : SUBD_LOOP_LV_(V, F, E, (L) < 3u ? 0u : (L) - 2u)) + \
                    SUBD_LOOP_LV_(V, F, E, (L) < 2u ? 0u : (L) - 1u))
 
-/* `levels` steps of Loop subdivision (Loop's original weights) of an all-triangle mesh.
- * Edges tagged SUBD_ETAG_CREASE follow the boundary rules; vertices tagged
+/* subd_loop: `levels` steps of Loop subdivision (Loop's original weights) of an
+ * all-triangle mesh, into *out.
+ * Memory: exactly subd_loop_plan's bytes at the peak; after the call the arena holds only
+ *   *out's arrays. Stack about 650 bytes (Cortex-M4, gcc -O2).
+ * Errors: as subd_loop_plan (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG), and
+ *   SUBD_ERR_NOMEM (diag.bytes_needed = the plan), SUBD_ERR_RANGE (float32 only: a sum
+ *   rounded to infinity near FLT_MAX; every rule is a convex combination whose Q16.16
+ *   weights sum to exactly 1, so it cannot occur in Q16.16). On failure the arena is back
+ *   where it was and *out is untouched.
+ * Cost: O(4^levels * corners).
+ * Notes: edges tagged SUBD_ETAG_CREASE follow the boundary rules; vertices tagged
  * SUBD_VTAG_CORNER (and vertices with three or more sharp edges, Hoppe et al. 1994) stay
  * where they are; isolated vertices are copied. Vertices keep their indices (vertex i of the
  * input is vertex i of the output), new vertices follow, one per edge in the order of the
@@ -92,12 +110,7 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
  * call the arena holds only them. Without SUBD_LOOP_ADJACENCY the output has pos,
  * face_start, corner_vert, corner_face, vert_tag and edge_tag, and twin/vert_out are NULL;
  * with it the output equals subd_mesh_build of its own face list (plus the crease and
- * corner tags). Rules, regular/extraordinary classification and memory layout: src/loop.c.
- * Errors: SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM
- * (diag.bytes_needed), SUBD_ERR_RANGE (fixed-point overflow). On failure the arena is back
- * where it was and *out is untouched. Every rule is a convex combination whose Q16.16
- * weights sum to exactly 1, so RANGE cannot occur in Q16.16; in float32 it means a sum
- * near FLT_MAX rounded to infinity. Work O(4^levels * corners); stack about 650 bytes (Cortex-M4). */
+ * corner tags). Rules and classification: src/loop_rules.c; memory layout: src/loop.c. */
 int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_mesh *out, subd_diag *d);
 
 /* ------------------------------------------------------------------------------------ */
@@ -122,18 +135,33 @@ typedef struct subd_loop_sink {
 /* subd_loop_opts.flags for the stream (SUBD_LOOP_ADJACENCY does not apply) */
 #define SUBD_LOOP_STREAM_LIMIT 0x2u /* emit limit positions and unit limit normals */
 
-/* Exact arena bytes subd_loop_stream needs: a function of the level count, the largest
- * valence of the input (neighbours per vertex, at least 6 is assumed) and the LIMIT flag
- * only, never of the number of faces; SUBD_LOOP_STREAM_BYTES gives the same number at compile
- * time. Validates like subd_loop (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES); SUBD_ERR_TOO_BIG when
- * a valence exceeds SUBD_LOOP_STREAM_MAX_VALENCE. Work O(corners), no arena use. */
+/* subd_loop_stream_plan: the exact arena bytes subd_loop_stream needs, in *bytes: a
+ * function of the level count, the largest valence of the input (neighbours per vertex, at
+ * least 6 is assumed) and the LIMIT flag only, never of the number of faces.
+ * Memory: no arena use; SUBD_LOOP_STREAM_BYTES(_LIMIT) gives the same number at compile time.
+ * Errors: SUBD_ERR_PARAM (as subd_loop_plan, and SUBD_LOOP_ADJACENCY, which does not apply
+ *   to a stream), SUBD_ERR_NOT_TRIANGLES (diag.face), SUBD_ERR_TOO_BIG (a valence above
+ *   SUBD_LOOP_STREAM_MAX_VALENCE).
+ * Cost: O(corners). */
 int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
 
 /* Largest valence the stream takes (local indices are 16-bit). */
 #define SUBD_LOOP_STREAM_MAX_VALENCE 2000u
 
-/* `levels` steps of Loop subdivision of `in`, exactly as subd_loop computes them, handed to
- * sink->tri one triangle at a time instead of stored. Emission order: control face by
+/* subd_loop_stream: `levels` steps of Loop subdivision of `in`, exactly as subd_loop
+ * computes them, handed to sink->tri one triangle at a time instead of stored.
+ * Memory: exactly subd_loop_stream_plan's bytes at the peak, independent of the mesh; the
+ *   arena holds one control face's 1-ring per level, refined depth first (an explicit stack,
+ *   no recursion); nothing stays in it after the call. Stack (Cortex-M, -fstack-usage,
+ *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
+ *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.
+ * Errors: as subd_loop_stream_plan (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES,
+ *   SUBD_ERR_TOO_BIG), and SUBD_ERR_NOMEM (diag.bytes_needed) before anything is emitted;
+ *   SUBD_ERR_RANGE (float32: a position overflowed; diag.face the control face) before the
+ *   triangle that holds it is emitted; or the sink's non-zero value unchanged (diag.face:
+ *   the control face being streamed). The arena is always back where it was.
+ * Cost: O(4^levels * faces), about a constant times subd_loop's.
+ * Notes: emission order: control face by
  * control face; inside face f its 4^L triangles in subd_loop's order, so the j-th triangle
  * emitted is subd_loop's output face j, with the same corners in the same order.
  * Same surface: every position is bit-identical to the same vertex of subd_loop's level-L
@@ -151,15 +179,7 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  * uses, but not dense: an interior edge's upper half-edge h names no vertices, so
  * (C - E)(N - 1) ids are unused (a host that wants dense indices numbers edges itself).
  * With SUBD_LOOP_STREAM_LIMIT each corner is moved to its limit position and gets its unit
- * limit normal, as subd_loop_limit of subd_loop's level-L output.
- * Memory: the arena holds one control face's 1-ring per level, refined depth first (an
- * explicit stack, no recursion); nothing stays in the arena after the call. Stack (Cortex-M,
- * -fstack-usage, gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes +
- * the two-level emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's. Errors: as subd_loop_stream_plan, SUBD_ERR_NOMEM
- * (diag.bytes_needed) before anything is emitted; SUBD_ERR_RANGE (float32: a position
- * overflowed; diag.face the control face) before the triangle that holds it is emitted;
- * or the sink's non-zero value (diag.face: the control face being streamed). The arena is
- * always back where it was. Work O(4^levels * faces), about a constant times subd_loop's. */
+ * limit normal, as subd_loop_limit of subd_loop's level-L output. */
 int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
                      subd_diag *d);
 
@@ -198,14 +218,29 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */
 
-/* Exact arena bytes of subd_loop_limit (3 * num_verts subd_reals per requested array plus
- * working memory). */
+/* subd_loop_limit_plan: the exact arena bytes of subd_loop_limit, in *bytes: 3 * num_verts
+ * subd_reals for the positions and, when normals != 0, as many again for the normals, each
+ * rounded up to SUBD_ARENA_ALIGN (no working memory).
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL pointer, unknown boundary rule, a mesh without adjacency,
+ *   vertex tag bits 0x40/0x80 set, which are reserved: diag.vertex), SUBD_ERR_NOT_TRIANGLES
+ *   (diag.face), SUBD_ERR_TOO_BIG.
+ * Cost: O(corners). */
 int subd_loop_limit_plan(const subd_mesh *in, subd_loop_boundary b, int normals, uint32_t *bytes);
 
-/* Limit-surface positions of every control vertex (3 * num_verts, in the arena) and, when
- * normals != NULL, unit limit normals (3 * num_verts; a vertex where the tangents vanish
- * gets (0, 0, 0)). Interior: the paper's formula (3); boundary: the rule set b; creases
- * follow the boundary rules; corners and isolated vertices stay. Errors as subd_loop. */
+/* subd_loop_limit: limit-surface positions of every control vertex (*pos, 3 * num_verts,
+ * in the arena) and, when normals != NULL, unit limit normals (*normals, 3 * num_verts; a
+ * vertex where the tangents vanish gets (0, 0, 0)).
+ * Memory: exactly subd_loop_limit_plan's bytes, which stay in the arena; stack about
+ *   0.9 KB on Cortex-M4 (376 bytes + the normal's 480: masks of valences 2..17 are cached
+ *   per call).
+ * Errors: as subd_loop_limit_plan (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG),
+ *   and SUBD_ERR_NOMEM (diag.bytes_needed), SUBD_ERR_RANGE (float32: a position rounded to
+ *   infinity). On failure the arena is back where it was and *pos, *normals are untouched.
+ * Cost: O(corners).
+ * Notes: interior vertices use the progressive-interpolation paper's formula (3); boundary
+ *   vertices the rule set b; creases follow the boundary rules; corners and isolated vertices
+ *   stay. */
 int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, subd_real **pos,
                     subd_real **normals, subd_diag *d);
 

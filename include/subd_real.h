@@ -169,36 +169,50 @@ int subd_real_parse(const char **p, const char *end, subd_real *out);
  * "3", "-0.5", "0.0000152587890625", at most 23 characters. Stack: about 330 bytes (float). */
 uint32_t subd_real_format(subd_real x, char *buf);
 
-/* Deterministic cos and sin of the angle 2*pi*num/den (src/trig.c), the form every weight of
- * the schemes takes. The range reduction (num mod den, quadrant, octant) is exact integer
+/* subd_cos_turns, subd_sin_turns: deterministic cos and sin of the angle 2*pi*num/den
+ * (src/trig.c), the form every weight of the schemes takes.
+ * Memory: no arena; stack about 100 bytes.
+ * Errors: none (den <= 0 is invalid and gives 0).
+ * Cost: O(1) (exact range reduction, then a Taylor series of 11-12 terms in 64-bit integers).
+ * Notes: the range reduction (num mod den, quadrant, octant) is exact integer
  * arithmetic; the Taylor series runs in Q63 fixed point (error < 2^-61 before the final
  * rounding), then one rounding to subd_real, so the result is the same on every target and
  * within 1 ulp (float32: correctly rounded in every case tested) or 1 LSB (Q16.16) of the
  * true value. Exact: cos and sin are +-1, +-1/2 or +0 at multiples of 1/12 turn where the
  * true value is; cos(-t) == cos(t), sin(-t) == -sin(t), and the values depend only on the
- * rational num/den (2/6 gives the same bits as 1/3). Any int32 num; den <= 0 is invalid
- * and gives 0. */
+ * rational num/den (2/6 gives the same bits as 1/3). Any int32 num. */
 subd_real subd_cos_turns(int32_t num, int32_t den);
 subd_real subd_sin_turns(int32_t num, int32_t den);
 
-/* Q2.62 versions of the above (value * 2^62, in [-2^62, 2^62]), for callers that build
- * weights at higher precision than subd_real before one final rounding. Within 2^-61 of the
- * true value (measured; the Q62 rounding alone is 2^-63). */
+/* subd_cos_turns_q62, subd_sin_turns_q62: Q2.62 versions of the above (value * 2^62, in
+ * [-2^62, 2^62]), for callers that build weights at higher precision than subd_real before
+ * one final rounding. Within 2^-61 of the true value (measured; the Q62 rounding alone is
+ * 2^-63).
+ * Memory: no arena; stack as subd_cos_turns.
+ * Errors: none (den <= 0 gives 0).
+ * Cost: O(1). */
 int64_t subd_cos_turns_q62(int32_t num, int32_t den);
 int64_t subd_sin_turns_q62(int32_t num, int32_t den);
 
-/* Rounds a Q2.62 value (any int64, i.e. [-2, 2)) to the nearest subd_real: float32
- * correctly rounded, ties to even; Q16.16 ties away from zero. */
+/* subd_real_from_q62: rounds a Q2.62 value (any int64, i.e. [-2, 2)) to the nearest
+ * subd_real: float32 correctly rounded, ties to even; Q16.16 ties away from zero.
+ * Memory: none. Errors: none (every int64 is a valid input). Cost: O(1). */
 subd_real subd_real_from_q62(int64_t q);
 
-/* Deterministic square root (src/sqrt.c; no libm). Float32: correctly rounded, so
+/* subd_sqrt: deterministic square root (src/sqrt.c; no libm).
+ * Memory: none (a few words of stack).
+ * Errors: none: a negative input gives NaN (float32) or 0 (Q16.16), see below.
+ * Cost: O(1), integer arithmetic only, about 32 loop steps.
+ * Notes: float32: correctly rounded, so
  * bit-identical to IEEE sqrt for every input >= 0 (-0 gives -0, +inf gives +inf,
  * subnormals included); a negative input or -inf gives the quiet NaN 0x7fc00000 and a NaN
  * is returned quieted. Q16.16: the nearest Q16.16 value to the square root (ties cannot
- * occur); a negative input gives 0. Integer arithmetic only, about 32 loop steps. */
+ * occur); a negative input gives 0. */
 subd_real subd_sqrt(subd_real x);
 
-/* Integer square root of x rounded to nearest (saturating at 2^32 - 1), digit by digit. */
+/* subd_isqrt64: integer square root of x rounded to nearest (saturating at 2^32 - 1),
+ * digit by digit.
+ * Memory: none. Errors: none (every uint64 is a valid input). Cost: O(1), 32 loop steps. */
 uint32_t subd_isqrt64(uint64_t x);
 
 #ifdef __cplusplus

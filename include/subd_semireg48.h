@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Semi-regular 4-8 refinement with four-direction (Zwart-Powell) box-spline smoothing and
- * variable-resolution extraction (paper: semi-regular-4-8-refinement-box-splines.txt,
- * Velho). Included by subd.h.
+ * variable-resolution extraction (L. Velho, "Semi-regular 4-8 refinement and box spline
+ * surfaces", SIBGRAPI 2000). Included by subd.h. Each call's comment follows one template:
+ * a summary, then Memory, Errors (every status), Cost and Notes.
  *
  * Three stages:
  *  1. Pre-processing (section 5): find_clusters picks an independent set of two-face
@@ -82,29 +83,44 @@ typedef struct subd_sr48 {
 /* Cluster count argument of subd_sr48_plan when it is not known. */
 #define SUBD_SR48_CLUSTERS_UNKNOWN 0xFFFFFFFFu
 
-/* Arena bytes subd_sr48_build uses. The pre-processed size depends on how many two-face
- * clusters find_clusters picks (level 0 has 8 triangles per cluster and 6 per isolated
- * triangle), which needs the edge sort. With clusters = SUBD_SR48_CLUSTERS_UNKNOWN the
- * result is an upper bound (no clusters: the largest level 0); with the count from
- * subd_sr48_count_clusters it is exact: the build's peak arena use equals it. The bytes are:
- * the output arrays (pos, tri_vert, tri_base_nb), plus the largest of find_clusters' edge
+/* subd_sr48_plan: the arena bytes subd_sr48_build uses, in *bytes: exact with the cluster
+ * count of subd_sr48_count_clusters (the build's peak equals it), an upper bound with
+ * clusters = SUBD_SR48_CLUSTERS_UNKNOWN (no clusters: the largest level 0).
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL, steps out of range, unknown flag bits, input without
+ *   adjacency, clusters more than half the faces), SUBD_ERR_NOT_TRIANGLES (diag.face: a
+ *   non-triangle), SUBD_ERR_EMPTY (no faces), SUBD_ERR_TOO_BIG.
+ * Cost: O(corners).
+ * Notes: the pre-processed size depends on how many two-face clusters find_clusters picks
+ * (level 0 has 8 triangles per cluster and 6 per isolated triangle), which needs the edge
+ * sort. The bytes are: the output arrays (pos, tri_vert, tri_base_nb), plus the largest of find_clusters' edge
  * sort (33 bytes per edge + 12 per face + 1 KiB), the pre-processing arrays with the level-0
  * smoothing sums, and the smoothing sums of the largest later even level (per vertex 3 sums
  * and a count: 28 bytes in Q16.16, whose sums are exact 64-bit integers, 16 in float32; so
- * the two arithmetics have different plans).
- * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, steps out of range, unknown flag bits, input
- * without adjacency, clusters more than half the faces), SUBD_ERR_NOT_TRIANGLES (a
- * non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG. */
+ * the two arithmetics have different plans). */
 int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes);
 
-/* Runs find_clusters in the arena's free space and gives the space back: the arena is
- * unchanged afterwards. Returns SUBD_OK, the errors of subd_sr48_plan, or SUBD_ERR_NOMEM
- * (diag->bytes_needed says how much the sort needs). */
+/* subd_sr48_count_clusters: the number of two-face clusters find_clusters picks for `in`
+ * (section 5), in *clusters, for an exact subd_sr48_plan.
+ * Memory: the edge sort (33 bytes per edge + 12 per face + 1 KiB) in the arena's free
+ *   space, given back: the arena is unchanged afterwards.
+ * Errors: SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_EMPTY, SUBD_ERR_TOO_BIG (as
+ *   subd_sr48_plan), SUBD_ERR_NOMEM (diag->bytes_needed: what the sort needs).
+ * Cost: O(edges) (a radix sort of the edge lengths, then one pass). */
 int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clusters, subd_diag *diag);
 
-/* Pre-processes `in` and refines it `o->steps` binary steps into *out.
- *
- * Smoothing (the factored Zwart-Powell rule of section 6). The paper's "the values at new
+/* subd_sr48_build: pre-processes `in` and refines it `o->steps` binary steps into the
+ * hierarchy *out.
+ * Memory: exactly subd_sr48_plan(in, o, subd_sr48_count_clusters(in)) at the peak; *out's
+ *   arrays stay in the arena.
+ * Errors: those of subd_sr48_plan, SUBD_ERR_PARAM also when the input's summary counts
+ *   (num_edges, num_boundary_edges) do not match its faces; SUBD_ERR_NOMEM (bytes_needed =
+ *   the exact plan when the arena holds the cluster count's sort, otherwise the
+ *   SUBD_SR48_CLUSTERS_UNKNOWN bound), SUBD_ERR_RANGE (float32: a position overflowed;
+ *   Q16.16 averages cannot leave the range). On failure the arena is rewound and *out
+ *   untouched.
+ * Cost: O(corners * 2^steps) (each binary step doubles the triangles).
+ * Notes: smoothing (the factored Zwart-Powell rule of section 6). The paper's "the values at new
  * grid points are the average of their two neighbours" is ambiguous on a 4-8 mesh (a new
  * vertex has four neighbours); the choice made here reproduces the ZP dual quad scheme
  * exactly on regular grids (test_sr48 checks it against an independent ZP):
@@ -126,12 +142,7 @@ int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clust
  * Q16.16: each average is one exact integer sum divided once, rounded to nearest.
  *
  * The build first counts the clusters in the free arena (as subd_sr48_count_clusters), then
- * allocates the output and runs find_clusters again above it.
- * On failure the arena is rewound and *out untouched. Errors: those of subd_sr48_plan,
- * SUBD_ERR_NOMEM (bytes_needed = the exact plan when the arena holds the cluster count's
- * sort, otherwise the SUBD_SR48_CLUSTERS_UNKNOWN bound), SUBD_ERR_RANGE (float32: a
- * position overflowed; Q16.16 averages cannot leave the range), SUBD_ERR_PARAM also when
- * the input's summary counts (num_edges, num_boundary_edges) do not match its faces. */
+ * allocates the output and runs find_clusters again above it. */
 int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out,
                     subd_diag *diag);
 
@@ -177,18 +188,29 @@ typedef struct subd_adapt_report {
     uint32_t level_faces[SUBD_SR48_MAX_STEPS + 1]; /* output triangles per level            */
 } subd_adapt_report;
 
-/* Arena bytes subd_sr48_extract may use: exact for SUBD_ADAPT_UNIFORM (when every input
+/* subd_sr48_extract_plan: the arena bytes subd_sr48_extract may use, in *bytes.
+ * Memory: no arena use.
+ * Errors: the parameter errors of subd_sr48_extract (SUBD_ERR_PARAM, SUBD_ERR_EMPTY,
+ *   SUBD_ERR_TOO_BIG).
+ * Cost: O(levels).
+ * Notes: exact for SUBD_ADAPT_UNIFORM (when every input
  * vertex is used by a face; unused input vertices are dropped, so the mesh is then smaller);
  * for the other modes the bound of the uniform max_level mesh (an adaptive mesh never has
  * more triangles or vertices) plus the marking memory (1 byte and 4 bytes per triangle of
  * levels < max_level, 80 bytes per level for CHORD). An adaptive extraction needs only the
  * bytes it uses: it fails with SUBD_ERR_NOMEM only when they are not free, and then
- * diag->bytes_needed is the exact need when the marking memory fit (else the plan).
- * Returns SUBD_OK or the parameter errors of subd_sr48_extract. Work O(levels). */
+ * diag->bytes_needed is the exact need when the marking memory fit (else the plan). */
 int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes);
 
-/* Extracts a conforming triangle mesh (validated, with adjacency) from the hierarchy.
- * A triangle t of level k is split when k < max_level and the adaptation function asks for
+/* subd_sr48_extract: a conforming triangle mesh (validated, with adjacency) cut out of the
+ * hierarchy, into *out; what was cut into *rep.
+ * Memory: at most subd_sr48_extract_plan's bytes (UNIFORM: exactly); *out's arrays stay in
+ *   the arena, the marking memory is given back.
+ * Errors: SUBD_ERR_PARAM (see below), SUBD_ERR_EMPTY (no level-0 triangle),
+ *   SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM (see subd_sr48_extract_plan). rep and diag may be NULL.
+ *   On failure the arena is rewound and *out and *rep untouched.
+ * Cost: see Work below.
+ * Notes: a triangle t of level k is split when k < max_level and the adaptation function asks for
  * a level above k (CHORD: when its chordal deviation exceeds eps), or when a finer
  * neighbour needs it (forced). The result is the least such cut, so it does not depend on
  * evaluation order; each triangle that becomes part of the cut below max_level is
@@ -210,15 +232,13 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * streaming passes of 1 byte per triangle of levels < max_level (clearing the marks) and a
  * few words per vertex of levels <= max_level (used flags, renumbering; RAMP and POINT's
  * default radius: the bounding box).
- * Errors: SUBD_ERR_PARAM (a NULL pointer; mode out of range; max_level > h->steps; RAMP
+ * SUBD_ERR_PARAM: a NULL pointer; mode out of range; max_level > h->steps; RAMP
  * axis > 2; CHORD eps not > 0; CALLBACK fn NULL; POINT radius < 0; PLANE normal zero;
  * float: a non-finite point, normal, radius or eps; a hierarchy that breaks the index rules
  * above: UNIFORM on any triangle of levels 0..max_level, the other modes on a triangle the
  * extraction visits - each is checked before its indices are used, a damaged part the cut
  * never reaches goes unnoticed, and an arena too small for the marks gives SUBD_ERR_NOMEM
- * first), SUBD_ERR_EMPTY (no level-0 triangle), SUBD_ERR_TOO_BIG,
- * SUBD_ERR_NOMEM (see subd_sr48_extract_plan). rep and diag may be NULL. On failure the
- * arena is rewound and *out and *rep untouched. */
+ * first. */
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag);
 

@@ -30,7 +30,8 @@ extern "C" {
 #define SUBD_VERSION_NUMBER (SUBD_VERSION_MAJOR * 10000 + SUBD_VERSION_MINOR * 100 + SUBD_VERSION_PATCH)
 #define SUBD_VERSION "0.2.0"
 
-/* SUBD_VERSION_NUMBER of the library linked (compare with the header's to catch a mismatch). */
+/* subd_version: SUBD_VERSION_NUMBER of the library linked (compare with the header's to
+ * catch a mismatch). Memory: none. Errors: none. Cost: O(1). */
 uint32_t subd_version(void);
 
 /* ------------------------------------------------------------------------------------ */
@@ -59,17 +60,23 @@ typedef enum subd_status {
 /* The most negative status (every status is in SUBD_STATUS_LOWEST..0); moves with the enum. */
 #define SUBD_STATUS_LOWEST SUBD_ERR_DIVERGENT
 
-/* A short, constant English description of a status ("non-manifold edge"). */
+/* subd_status_str: a short, constant English description of a status ("non-manifold
+ * edge"); "unknown status" for a value outside SUBD_STATUS_LOWEST..0 and positive values.
+ * Memory: none (static strings). Errors: none. Cost: O(1). */
 const char *subd_status_str(int status);
 
-/* Run-time check that this build, on this machine, computes the arithmetic every other build
- * computes, so its output is bit-identical to the host's; for firmware to call at start-up
- * (src/selfcheck.c). Float32: every product rounded before it is added (no fused multiply-add
+/* subd_selfcheck: run-time check that this build, on this machine, computes the arithmetic
+ * every other build computes, so its output is bit-identical to the host's; for firmware to
+ * call at start-up (src/selfcheck.c).
+ * Memory: no arena, no state; a few words of stack.
+ * Errors: SUBD_ERR_ARITH (the arithmetic differs; the library's output would not be the
+ *   host's bits). Otherwise SUBD_OK.
+ * Cost: a few dozen arithmetic operations.
+ * Notes: float32: every product rounded before it is added (no fused multiply-add
  * from contraction, which the library's sources turn off whatever the compiler flags, see
  * src/fp_contract.h; no excess precision), round to nearest with ties to even (the FPU's
  * rounding mode), subnormals kept (no flush-to-zero, e.g. FPSCR.FZ on Cortex-M). Q16.16:
- * products round ties towards +infinity, >> on negative values is arithmetic. Returns SUBD_OK
- * or SUBD_ERR_ARITH. A few dozen operations; no memory, no state. */
+ * products round ties towards +infinity, >> on negative values is arithmetic. */
 int subd_selfcheck(void);
 
 /* Diagnostics filled by every call that can fail. Fields that do not apply are 0 or
@@ -84,7 +91,9 @@ typedef struct subd_diag {
     uint32_t bytes_needed;
 } subd_diag;
 
-/* Sets every field to "not applicable" (status SUBD_OK, elements SUBD_NONE, line 0). */
+/* subd_diag_clear: sets every field to "not applicable" (status SUBD_OK, elements
+ * SUBD_NONE, line 0). Every call that takes a diag clears it itself first.
+ * Memory: none. Errors: none (d must not be NULL). Cost: O(1). */
 void subd_diag_clear(subd_diag *d);
 
 #define SUBD_NONE 0xffffffffu
@@ -99,23 +108,36 @@ typedef struct subd_arena {
     uint32_t peak;
 } subd_arena;
 
-/* Uses buf[0..size) as the arena. If buf is not aligned to SUBD_ARENA_ALIGN the first bytes
- * are skipped (declare the buffer with that alignment to use all of it). */
+/* subd_arena_init: uses buf[0..size) as the arena (used = peak = 0). If buf is not aligned
+ * to SUBD_ARENA_ALIGN the first bytes are skipped (declare the buffer with that alignment to
+ * use all of it).
+ * Memory: the caller's buffer; the library never allocates otherwise.
+ * Errors: none (a NULL buf or a size below the alignment gives an empty arena).
+ * Cost: O(1). */
 void subd_arena_init(subd_arena *a, void *buf, uint32_t size);
-/* Returns `bytes` bytes (rounded up to SUBD_ARENA_ALIGN) aligned to SUBD_ARENA_ALIGN, or
- * NULL when the arena is too small; a failed call changes nothing. */
+/* subd_arena_alloc: `bytes` bytes (rounded up to SUBD_ARENA_ALIGN) aligned to
+ * SUBD_ARENA_ALIGN, not cleared.
+ * Memory: the rounded bytes of the arena; the peak follows.
+ * Errors: NULL when the arena is too small (a failed call changes nothing).
+ * Cost: O(1). */
 void *subd_arena_alloc(subd_arena *a, uint32_t bytes);
-/* Current position; rewinding to a mark frees everything allocated after it. */
+/* subd_arena_mark, subd_arena_rewind: the current position; rewinding to a mark frees
+ * everything allocated after it (a mark beyond the current position is ignored).
+ * Memory: none. Errors: none. Cost: O(1). */
 uint32_t subd_arena_mark(const subd_arena *a);
 void subd_arena_rewind(subd_arena *a, uint32_t mark);
-/* Bytes still free. */
+/* subd_arena_free_bytes: bytes still free.
+ * Memory: none. Errors: none. Cost: O(1). */
 uint32_t subd_arena_free_bytes(const subd_arena *a);
-/* Starts a new peak measurement at the current position (peak = used), so the peak of the
- * next call can be compared with its plan. */
+/* subd_arena_reset_peak: starts a new peak measurement at the current position (peak =
+ * used), so the peak of the next call can be compared with its plan.
+ * Memory: none. Errors: none. Cost: O(1). */
 void subd_arena_reset_peak(subd_arena *a);
 
-/* Size arithmetic that cannot wrap: a * b + c rounded up to SUBD_ARENA_ALIGN, accumulated into
- * *total. Any overflow of 32 bits sets *total to UINT32_MAX and stays there (sticky). */
+/* subd_size_add: size arithmetic that cannot wrap: count * elem_bytes rounded up to
+ * SUBD_ARENA_ALIGN, added to *total. Any overflow of 32 bits sets *total to UINT32_MAX and
+ * it stays there (sticky), which the plans report as SUBD_ERR_TOO_BIG.
+ * Memory: none. Errors: none (overflow is the sticky UINT32_MAX). Cost: O(1). */
 void subd_size_add(uint32_t *total, uint32_t count, uint32_t elem_bytes);
 
 /* ------------------------------------------------------------------------------------ */
@@ -176,9 +198,12 @@ typedef struct subd_face_list {
     const uint32_t *line_index;  /* sum of line sizes */
 } subd_face_list;
 
-/* Exact arena bytes subd_mesh_build needs for this face list (arrays plus temporary
- * working memory). Returns SUBD_OK, SUBD_ERR_PARAM, SUBD_ERR_FACE_SIZE (a size outside
- * 3..SUBD_MAX_FACE_SIZE, so the corner count is unknown) or SUBD_ERR_TOO_BIG. */
+/* subd_mesh_plan: the exact arena bytes subd_mesh_build needs for this face list (arrays
+ * plus temporary working memory), in *bytes.
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL pointers), SUBD_ERR_FACE_SIZE (a size outside
+ *   3..SUBD_MAX_FACE_SIZE, so the corner count is unknown), SUBD_ERR_TOO_BIG.
+ * Cost: O(faces). */
 int subd_mesh_plan(const subd_face_list *fl, uint32_t *bytes);
 
 /* Closed-form plan for compile-time buffer sizing: bytes for a mesh with at most V vertices,
@@ -194,22 +219,24 @@ int subd_mesh_plan(const subd_face_list *fl, uint32_t *bytes);
      + SUBD_ALIGN_UP(((L) + 1u) * 4u) + SUBD_ALIGN_UP((LV) * 4u) /* polylines */              \
      + SUBD_ALIGN_UP(((V) + 1u) * 4u) + SUBD_ALIGN_UP((C) * 4u)) /* build scratch */
 
-/* Builds and validates a mesh. Copies positions and indices into the arena, builds adjacency
- * by counting sorts and prefix sums, tags boundary vertices and edges, counts boundary loops
- * and isolated vertices. Work is O(V + C), independent of the valences; no recursion; stack
- * use is a few dozen bytes.
- * Checks, in this order, and returns the first failure found:
+/* subd_mesh_build: builds and validates a mesh into *out. Copies positions and indices
+ * into the arena, builds adjacency by counting sorts and prefix sums, tags boundary vertices
+ * and edges, counts boundary loops and isolated vertices.
+ * Memory: exactly subd_mesh_plan's bytes at the peak; the scratch is given back, *out's
+ *   arrays stay. Stack a few dozen bytes; no recursion.
+ * Errors: checks, in this order, and returns the first failure found:
  *   SUBD_ERR_PARAM (NULL pointers), SUBD_ERR_EMPTY (no vertices), SUBD_ERR_FACE_SIZE
  *   (diag.face), SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
  *   then per face in order SUBD_ERR_INDEX and SUBD_ERR_DEGENERATE (diag.face), per polyline
  *   SUBD_ERR_INDEX (diag.polyline), per vertex SUBD_ERR_NAN (diag.vertex; float build),
  *   then SUBD_ERR_NONMANIFOLD_EDGE and SUBD_ERR_ORIENTATION (diag.face: the latest face
  *   using the edge) and SUBD_ERR_NONMANIFOLD_VERTEX (diag.vertex).
- * Vertices used by no face are accepted (a scanned mesh often has them, and rejecting them
+ *   On failure the arena is rewound to where it was and *out is not touched.
+ * Cost: O(V + C), independent of the valences.
+ * Notes: vertices used by no face are accepted (a scanned mesh often has them, and rejecting them
  * would force every user to clean files first): they are counted in num_isolated, tagged
  * SUBD_VTAG_ISOLATED, have vert_out = SUBD_NONE, and schemes leave them where they are.
- * A mesh with vertices but no faces (points or polylines only) is valid.
- * On failure the arena is rewound to where it was and *out is not touched. */
+ * A mesh with vertices but no faces (points or polylines only) is valid. */
 int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out, subd_diag *diag);
 
 /* Half-edge navigation (all O(1) except prev, which is O(1) as well via face_start). */
@@ -242,31 +269,44 @@ static inline uint32_t subd_ring_next(const subd_mesh *m, uint32_t first, uint32
     return (t == first) ? SUBD_NONE : t;
 }
 
-/* Writes the one-ring neighbours of v in order into nbr[0..max) and returns their number
- * (the valence). For a boundary vertex the first and last are its boundary neighbours and
+/* subd_vertex_ring: writes the one-ring neighbours of v in order into nbr[0..max) and
+ * returns their number (the valence).
+ * Memory: none. Errors: none; 0 for the cases below. Cost: O(valence).
+ * Notes: For a boundary vertex the first and last are its boundary neighbours and
  * the count is faces + 1. Returns 0 for an isolated vertex, and (writing nothing) for a NULL
  * mesh, v >= num_verts or a mesh without adjacency (twin, vert_out or corner_face NULL, e.g.
  * subd_loop output without SUBD_LOOP_ADJACENCY). If the valence exceeds max only max are
  * written, but the full valence is returned. */
 uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max);
 
-/* Valence (number of edges at v); 0 where subd_vertex_ring returns 0. */
+/* subd_vertex_valence: the valence (number of edges at v); 0 where subd_vertex_ring
+ * returns 0.
+ * Memory: none. Errors: none (0 as subd_vertex_ring). Cost: O(valence). */
 uint32_t subd_vertex_valence(const subd_mesh *m, uint32_t v);
 
-/* Sets or clears tag bits on an edge (both half-edges). */
+/* subd_edge_tag_set, subd_edge_tag_clear: set or clear tag bits on an edge (both
+ * half-edges).
+ * Memory: none. Errors: none (a NULL mesh, h >= num_corners or a mesh without edge tags is
+ *   left alone). Cost: O(1). */
 void subd_edge_tag_set(subd_mesh *m, uint32_t h, uint8_t bits);
 void subd_edge_tag_clear(subd_mesh *m, uint32_t h, uint8_t bits);
 
-/* Tags as SUBD_ETAG_CREASE every interior edge whose dihedral angle (the angle between the
- * normals of its two faces) is larger than the angle whose cosine is cos_limit; e.g.
- * subd_cos_turns(30, 360) for 30 degrees. Returns the number of edges tagged. Work O(C * face
- * size); no memory. Q16.16 resolves the angle to about 0.06 degrees. Any cos_limit: above 1
+/* subd_mesh_tag_crease_angle: tags as SUBD_ETAG_CREASE every interior edge whose dihedral
+ * angle (the angle between the normals of its two faces) is larger than the angle whose
+ * cosine is cos_limit; e.g. subd_cos_turns(30, 360) for 30 degrees. Returns the number of
+ * edges tagged.
+ * Memory: none.
+ * Errors: none (no status: the cases below return 0 and change nothing).
+ * Cost: O(corners * face size).
+ * Notes: Q16.16 resolves the angle to about 0.06 degrees. Any cos_limit: above 1
  * every interior edge is tagged, below -1 none. A NULL mesh or one without adjacency (twin
  * or corner_face NULL, e.g. subd_loop output without SUBD_LOOP_ADJACENCY) is not touched
  * and 0 is returned. */
 uint32_t subd_mesh_tag_crease_angle(subd_mesh *m, subd_real cos_limit);
 
-/* Euler characteristic V - E + F (isolated vertices included). */
+/* subd_mesh_euler: the Euler characteristic V - E + F (isolated vertices included), from
+ * the builder's summary counts.
+ * Memory: none. Errors: none (0 for a NULL mesh). Cost: O(1). */
 int32_t subd_mesh_euler(const subd_mesh *m);
 
 /* ------------------------------------------------------------------------------------ */

@@ -171,7 +171,7 @@ uint32_t subd_real_format(subd_real x, char *buf);
 
 /* subd_cos_turns, subd_sin_turns: deterministic cos and sin of the angle 2*pi*num/den
  * (src/trig.c), the form every weight of the schemes takes.
- * Memory: no arena; stack about 100 bytes.
+ * Memory: no arena; stack about 130 bytes (Cortex-M4).
  * Errors: none (den <= 0 is invalid and gives 0).
  * Cost: O(1) (exact range reduction, then a Taylor series of 11-12 terms in 64-bit integers).
  * Notes: the range reduction (num mod den, quadrant, octant) is exact integer

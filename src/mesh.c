@@ -492,19 +492,24 @@ uint32_t subd_vertex_valence(const subd_mesh *m, uint32_t v)
     return subd_vertex_ring(m, v, 0, 0);
 }
 
-void subd_edge_tag_set(subd_mesh *m, uint32_t h, uint8_t bits)
+/* Guarded so that no input crashes: a NULL mesh, an out-of-range half-edge or a mesh without
+ * edge tags is left alone; without twins (subd_loop output without SUBD_LOOP_ADJACENCY) only h
+ * itself changes, as there is no other half-edge to keep equal. */
+static void edge_tag_update(subd_mesh *m, uint32_t h, uint8_t set, uint8_t keep)
 {
-    m->edge_tag[h] = (uint8_t)(m->edge_tag[h] | bits);
-    if (m->twin[h] != SUBD_NONE) m->edge_tag[m->twin[h]] = (uint8_t)(m->edge_tag[m->twin[h]] | bits);
+    uint32_t t;
+    if (!m || !m->edge_tag || h >= m->num_corners) return;
+    m->edge_tag[h] = (uint8_t)((m->edge_tag[h] & keep) | set);
+    t = m->twin ? m->twin[h] : SUBD_NONE;
+    if (t < m->num_corners) m->edge_tag[t] = (uint8_t)((m->edge_tag[t] & keep) | set);
 }
 
-void subd_edge_tag_clear(subd_mesh *m, uint32_t h, uint8_t bits)
-{
-    m->edge_tag[h] = (uint8_t)(m->edge_tag[h] & ~bits);
-    if (m->twin[h] != SUBD_NONE) m->edge_tag[m->twin[h]] = (uint8_t)(m->edge_tag[m->twin[h]] & ~bits);
-}
+void subd_edge_tag_set(subd_mesh *m, uint32_t h, uint8_t bits) { edge_tag_update(m, h, bits, 0xffu); }
+
+void subd_edge_tag_clear(subd_mesh *m, uint32_t h, uint8_t bits) { edge_tag_update(m, h, 0u, (uint8_t)~bits); }
 
 int32_t subd_mesh_euler(const subd_mesh *m)
 {
+    if (!m) return 0;
     return (int32_t)m->num_verts - (int32_t)m->num_edges + (int32_t)m->num_faces;
 }

@@ -512,6 +512,26 @@ static void mesh_no_adjacency(void)
     CHECK_EQ(subd_vertex_valence(&tri, 0), 0);
     CHECK_EQ(subd_vertex_ring(&tri, 1, nbr, 8), 0);
     CHECK_EQ(nbr[0], 0);
+    /* edge tags without twins: only the half-edge itself changes (it used to read twin[h]);
+     * out-of-range half-edges, a NULL mesh and a mesh without edge tags are left alone */
+    {
+        uint8_t before[64];
+        uint32_t h, n = tri.num_corners < 64u ? tri.num_corners : 64u;
+        for (h = 0; h < n; h++) before[h] = tri.edge_tag[h];
+        subd_edge_tag_set(&tri, 5, SUBD_ETAG_CREASE);
+        for (h = 0; h < n; h++)
+            CHECK_EQ(tri.edge_tag[h], h == 5u ? (uint8_t)(before[h] | SUBD_ETAG_CREASE) : before[h]);
+        subd_edge_tag_clear(&tri, 5, SUBD_ETAG_CREASE);
+        for (h = 0; h < n; h++) CHECK_EQ(tri.edge_tag[h], (h == 5u ? (uint8_t)(before[h] & ~SUBD_ETAG_CREASE) : before[h]));
+        subd_edge_tag_set(&tri, tri.num_corners, SUBD_ETAG_CREASE);
+        subd_edge_tag_set(&tri, SUBD_NONE, SUBD_ETAG_CREASE);
+        subd_edge_tag_set(0, 0, SUBD_ETAG_CREASE);
+        subd_edge_tag_clear(0, 0, SUBD_ETAG_CREASE);
+        for (h = 0; h < n; h++) CHECK_EQ(tri.edge_tag[h], (h == 5u ? (uint8_t)(before[h] & ~SUBD_ETAG_CREASE) : before[h]));
+        tri.edge_tag = 0;
+        subd_edge_tag_set(&tri, 0, SUBD_ETAG_CREASE);
+        CHECK_EQ(subd_mesh_euler(0), 0);
+    }
     /* the empty buffer */
     CHECK_EQ(subd_obj_plan(0, 0, &bytes, &d), subd_obj_plan("", 0, &bytes, &d));
     CHECK_EQ(subd_off_plan(0, 0, &bytes, &d), subd_off_plan("", 0, &bytes, &d));

@@ -317,18 +317,31 @@ int32_t subd_mesh_euler(const subd_mesh *m);
 /* so every validation error applies; diag.line names the offending line (for validation  */
 /* errors: the face's `f` line or the vertex's `v` line).                                  */
 
-/* Exact arena bytes subd_obj_read needs for this buffer. Returns SUBD_OK or a parse error
- * (with diag) found while counting. */
+/* subd_obj_plan, subd_off_plan: the exact arena bytes subd_obj_read / subd_off_read need
+ * for this buffer, in *bytes. subd_obj_read, subd_off_read: parse the buffer and build the
+ * mesh into *out.
+ * Memory: the plans use no arena; the readers use exactly the plan at the peak and leave
+ *   *out's arrays (subd_mesh_build's) in the arena.
+ * Errors: SUBD_ERR_PARAM (NULL pointers other than the empty (NULL, 0) buffer),
+ *   SUBD_ERR_PARSE (diag.line: a record that is not in the format), SUBD_ERR_NAN and
+ *   SUBD_ERR_RANGE (diag.line: a coordinate that is nan/inf text or does not fit subd_real),
+ *   SUBD_ERR_INDEX (diag.line: an index out of range, or 0 in OBJ), SUBD_ERR_FACE_SIZE,
+ *   SUBD_ERR_EMPTY (no vertices), SUBD_ERR_TOO_BIG (counts beyond 32 bits); the readers also
+ *   SUBD_ERR_NOMEM (diag.bytes_needed) and every error of subd_mesh_build, with diag.line the
+ *   line of the element it names. On failure the arena is back where it was and *out
+ *   untouched.
+ * Cost: O(length of the buffer) (two passes: count, then fill), then subd_mesh_build. */
 int subd_obj_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
 int subd_obj_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
 int subd_off_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
 int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
 
-/* The 1-based line, in the buffer a mesh was read from, of the input element a later call
- * names in diag (diag.face, else diag.polyline (OBJ), else diag.vertex, numbered as the reader
- * numbers them), e.g. the face of a SUBD_ERR_NOT_TRIANGLES from a triangle scheme. 0 when the
- * diag names no element, the buffer has no such element or does not parse. No arena; one
- * scan of the buffer (two for OFF). */
+/* subd_obj_line_of, subd_off_line_of: the 1-based line, in the buffer a mesh was read
+ * from, of the input element a later call names in diag (diag.face, else diag.polyline
+ * (OBJ), else diag.vertex, numbered as the reader numbers them), e.g. the face of a
+ * SUBD_ERR_NOT_TRIANGLES from a triangle scheme.
+ * Memory: no arena. Errors: none: 0 when the diag names no element, the buffer has no such
+ *   element or does not parse. Cost: one scan of the buffer (two for OFF). */
 uint32_t subd_obj_line_of(const char *buf, uint32_t len, const subd_diag *diag);
 uint32_t subd_off_line_of(const char *buf, uint32_t len, const subd_diag *diag);
 

@@ -5,10 +5,19 @@
 bin=$1 out=$2
 set -e
 mkdir -p "$out"
-run() { # picture name, then the subd arguments
+# run NAME SUBD_ARGS...: writes $out/NAME.png. A scheme command's picture shows its INPUT
+# (the first .obj/.off argument) over the result: --with-input INPUT, in orange, with both
+# named in the caption. `render` pictures show one mesh. To add a picture, add a run line.
+run() {
     name=$1; shift
-    "$bin/subd" "$@" -o "$out/$name.png"
-    echo "wrote $out/$name.png  (subd $*)"
+    overlay=
+    if [ "$1" != render ]; then
+        for a in "$@"; do
+            case $a in *.obj | *.off) overlay=$a; break ;; esac
+        done
+    fi
+    "$bin/subd" "$@" ${overlay:+--with-input "$overlay"} -o "$out/$name.png"
+    echo "wrote $out/$name.png  (subd $*${overlay:+ --with-input $overlay})"
 }
 top="--pitch 0 --yaw 0 --size 400x400"
 

@@ -528,10 +528,10 @@ is 0 && grep -q '^subd [0-9].*q16\.16' "$T/out"; check $? "subd-fixed --version 
 # The help's option list is generated from the parser's option table: every option it lists
 # is known to the parser (a misspelt row would say "unknown option").
 "$FLOAT" --help 2> /dev/null | awk '/^options:/ { o = 1; next } /^Long options/ { o = 0 }
-    o && /^  -/ { col = substr($0, 3, 16); sub(/ +$/, "", col); print col }' > "$T/opts"
+    o && /^  -/ { col = substr($0, 3, 17); sub(/ +$/, "", col); print col }' > "$T/opts"
 unknown=""
 while read -r name meta; do
-    case $name in -h, | --version) continue ;; esac
+    case $name in -h, | --version) continue ;; *,) name=$meta meta="" ;; esac
     if [ -n "$meta" ]; then run "$FLOAT" info "$name" 1 test/data/hexfan.obj; else run "$FLOAT" info "$name" test/data/hexfan.obj; fi
     grep -q "unknown option" "$T/err" && unknown="$unknown $name"
 done < "$T/opts"

@@ -58,4 +58,4 @@ run semireg48_spot_2steps semireg48 -l 2 demo/spot_triangulated.obj
 run adapt_torus_point adapt -l 6 --point 1.4,0,0 demo/torus_12x6.obj --pitch 60
 run adapt_torus_ramp adapt -l 6 --ramp x demo/torus_12x6.obj --pitch 60
 run adapt_torus_plane adapt -l 6 --plane 0,0,0,1,0,0 demo/torus_12x6.obj --pitch 60
-run adapt_spot_chord adapt -l 6 --chord 0.002 demo/spot_triangulated.obj
+run adapt_spot_chord adapt -l 6 --chord 0.002 demo/spot_triangulated.obj --edges --size 1200x700

@@ -664,7 +664,12 @@ labels:
     {
         static const uint8_t tcol[3] = {40, 40, 40};
         static const uint8_t icol[3] = {RENDER_INPUT_R, RENDER_INPUT_G, RENDER_INPUT_B};
-        int sc = label_scale(c.w), y = 3 * sc;
+        int sc = label_scale(c.w), y;
+        /* the small font when a caption would not fit the large one */
+        if ((opt.label && text_width(opt.label, sc) + 8 * sc > c.w) ||
+            (in && opt.input_label && text_width(opt.input_label, sc) + 8 * sc > c.w))
+            sc = 1;
+        y = 3 * sc;
         if (opt.label && opt.label[0] && c.h >= 3 * GLYPH_H * sc) {
             draw_text(&c, 4 * sc, y, sc, opt.label, tcol);
             y += (GLYPH_H + 2) * sc;

@@ -202,7 +202,8 @@ static void describe_command(const tool_run *r, char *buf, size_t n)
     if (o->has_crease_angle) ADD(" --crease-angle %g", o->crease_deg);
     if (cmd->options & OPT_ALPHA) {
         if (o->alpha.order != 2u) ADD(" --order %lu", (unsigned long)o->alpha.order);
-        if ((unsigned)o->alpha.kernel < 4u) ADD(" --kernel %s", kernel[o->alpha.kernel]);
+        if (o->alpha.kernel != SUBD_ALPHA_BSPLINE && (unsigned)o->alpha.kernel < 4u)
+            ADD(" --kernel %s", kernel[o->alpha.kernel]);
         if (o->alpha.kernel != SUBD_ALPHA_BSPLINE)
             ADD(" --alpha %ld/%ld", (long)o->alpha.alpha_num, (long)o->alpha.alpha_den);
     }

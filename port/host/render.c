@@ -374,7 +374,8 @@ static double mean_edge_px(const render_mesh *m, const pv *p)
 /* The input over the result                                                              */
 
 /* A line of the input: 2 px where it is in front of the result (within the edge bias),
- * 1 px dashed (4 on, 4 off) where the result hides it. */
+ * 1 px dashed where the result hides it (4 on, 4 off along x + y, so that the two faces'
+ * copies of an edge dash alike). */
 static void overlay_line(canvas *c, const pv *a, const pv *b, double bias)
 {
     static const uint8_t col[3] = {RENDER_INPUT_R, RENDER_INPUT_G, RENDER_INPUT_B};
@@ -390,7 +391,7 @@ static void overlay_line(canvas *c, const pv *a, const pv *b, double bias)
         if (x < 0 || y < 0 || x >= c->w || y >= c->h) continue;
         hidden = z + bias < c->z[(size_t)y * (size_t)c->w + (size_t)x];
         if (hidden) {
-            if ((k >> 2) & 1) continue;
+            if (((x + y) >> 2) & 1) continue; /* by position: overlapping lines dash alike */
             put_px(c, x, y, col);
             continue;
         }

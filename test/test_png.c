@@ -1064,6 +1064,51 @@ static void t_render_labels(void)
     free(img);
 }
 
+/* The caption font (render_text.c): widths in closed form; '-' is one 5-pixel bar and '.'
+ * a 2x2 block; lower case draws as upper case and an unknown character as '?'; the 36
+ * letters and digits are pairwise distinct glyphs; scale 2 has 4 times the pixels. */
+static uint32_t text_px(const char *s, int scale, uint8_t *img, int w, int h)
+{
+    static const uint8_t white[3] = {255, 255, 255}, black[3] = {0, 0, 0};
+    uint32_t n = 0;
+    int i;
+    memset(img, 255, (size_t)w * (size_t)h * 3u);
+    render_text(img, w, h, 2, 2, scale, s, black, white);
+    for (i = 0; i < w * h; i++) n += img[3 * i] == 0;
+    return n;
+}
+
+static void t_render_text_font(void)
+{
+    enum { W = 40, H = 24 };
+    static uint8_t a[W * H * 3], b[W * H * 3];
+    static const char set[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    int i, j, distinct = 1;
+    CHECK_EQ(render_text_width("ABC", 1), 3 * RENDER_GLYPH_W);
+    CHECK_EQ(render_text_width("ABC", 2), 6 * RENDER_GLYPH_W);
+    CHECK_EQ(render_text_width("", 3), 0);
+    CHECK_EQ(text_px("-", 1, a, W, H), 5);
+    CHECK_EQ(text_px(".", 1, a, W, H), 4);
+    CHECK_EQ(text_px(" ", 1, a, W, H), 0);
+    CHECK_EQ(text_px("H", 2, a, W, H), 4u * text_px("H", 1, b, W, H));
+    (void)text_px("spot", 1, a, W, H);
+    (void)text_px("SPOT", 1, b, W, H);
+    CHECK(memcmp(a, b, sizeof a) == 0);
+    (void)text_px("~", 1, a, W, H);
+    (void)text_px("?", 1, b, W, H);
+    CHECK(memcmp(a, b, sizeof a) == 0);
+    for (i = 0; set[i]; i++)
+        for (j = i + 1; set[j]; j++) {
+            char s1[2] = {set[i], 0}, s2[2] = {set[j], 0};
+            (void)text_px(s1, 1, a, W, H);
+            (void)text_px(s2, 1, b, W, H);
+            if (memcmp(a, b, sizeof a) == 0) distinct = 0;
+        }
+    CHECK(distinct);
+    /* clipped at the image border: no write outside the 4 x 4 image (ASan watches) */
+    render_text(a, 4, 4, -3, -3, 2, "WWWW", a, b);
+}
+
 const test_case suite_png[] = {
     {"png_crc32_check_value", t_crc32_check_value},
     {"png_adler32_check_value", t_adler32_check_value},
@@ -1087,6 +1132,7 @@ const test_case suite_png[] = {
     {"render_auto_edges", t_render_auto_edges},
     {"render_input_side_by_side", t_render_input_side_by_side},
     {"render_labels", t_render_labels},
+    {"render_text_font", t_render_text_font},
     {0, 0}
 };
 

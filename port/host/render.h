@@ -70,6 +70,16 @@ int png_encode_rgb(const uint8_t *rgb, int width, int height, uint8_t **png, uin
 /* render_rgb + png_encode_rgb + write file. Returns 0, or -1 (errno set) on failure. */
 int render_png_file(const char *path, const render_mesh *m, const render_opts *o);
 
+/* Captions (render_text.c): a built-in 5x7 font, upper case, each font pixel a scale x
+ * scale block, glyphs RENDER_GLYPH_W x RENDER_GLYPH_H pixels (gaps included) before
+ * scaling. render_text draws s with its top left at (x, y) over a box of colour `box` one
+ * font pixel larger than the text, clipped to the w x h image. */
+#define RENDER_GLYPH_W 6
+#define RENDER_GLYPH_H 9
+int render_text_width(const char *s, int scale);
+void render_text(uint8_t *rgb, int w, int h, int x, int y, int scale, const char *s, const uint8_t col[3],
+                 const uint8_t box[3]);
+
 uint32_t png_crc32(const uint8_t *p, uint32_t n);
 uint32_t png_adler32(const uint8_t *p, uint32_t n);
 #endif

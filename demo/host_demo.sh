@@ -5,10 +5,19 @@
 bin=$1 out=$2
 set -e
 mkdir -p "$out"
-run() { # picture name, then the subd arguments
+# run NAME SUBD_ARGS...: writes $out/NAME.png. A scheme command's picture shows its INPUT
+# (the first .obj/.off argument) over the result: --with-input INPUT, in orange, with both
+# named in the caption. `render` pictures show one mesh. To add a picture, add a run line.
+run() {
     name=$1; shift
-    "$bin/subd" "$@" -o "$out/$name.png"
-    echo "wrote $out/$name.png  (subd $*)"
+    overlay=
+    if [ "$1" != render ]; then
+        for a in "$@"; do
+            case $a in *.obj | *.off) overlay=$a; break ;; esac
+        done
+    fi
+    "$bin/subd" "$@" ${overlay:+--with-input "$overlay"} -o "$out/$name.png"
+    echo "wrote $out/$name.png  (subd $*${overlay:+ --with-input $overlay})"
 }
 top="--pitch 0 --yaw 0 --size 400x400"
 
@@ -49,4 +58,4 @@ run semireg48_spot_2steps semireg48 -l 2 demo/spot_triangulated.obj
 run adapt_torus_point adapt -l 6 --point 1.4,0,0 demo/torus_12x6.obj --pitch 60
 run adapt_torus_ramp adapt -l 6 --ramp x demo/torus_12x6.obj --pitch 60
 run adapt_torus_plane adapt -l 6 --plane 0,0,0,1,0,0 demo/torus_12x6.obj --pitch 60
-run adapt_spot_chord adapt -l 6 --chord 0.002 demo/spot_triangulated.obj
+run adapt_spot_chord adapt -l 6 --chord 0.002 demo/spot_triangulated.obj --edges --size 1200x700

@@ -823,6 +823,292 @@ static void t_render_png_file(void)
     CHECK(errno != 0);
 }
 
+/* ---- pictures that show input and result (render_opts.input, labels, auto edges) ---- */
+
+static int is_input_col(const uint8_t *p)
+{
+    return p[0] == RENDER_INPUT_R && p[1] == RENDER_INPUT_G && p[2] == RENDER_INPUT_B;
+}
+
+/* An input-coloured pixel within 1 px of (x, y). */
+static int input_near(const uint8_t *img, int x, int y)
+{
+    int i, j;
+    for (j = -1; j <= 1; j++)
+        for (i = -1; i <= 1; i++)
+            if (x + i >= 0 && y + j >= 0 && x + i < RW && y + j < RH && is_input_col(pix(img, x + i, y + j)))
+                return 1;
+    return 0;
+}
+
+static uint32_t count_input_col(const uint8_t *img)
+{
+    uint32_t n = 0;
+    int x, y;
+    for (y = 0; y < RH; y++)
+        for (x = 0; x < RW; x++) n += is_input_col(pix(img, x, y));
+    return n;
+}
+
+/* The cube scaled by k. */
+static void scaled_cube(double k, double *pos)
+{
+    int i;
+    for (i = 0; i < 24; i++) pos[i] = k * cube_pos[i];
+}
+
+/* Looking down -z (yaw 0, pitch 0), both meshes are framed together: the union's extent is
+ * the larger cube's [-1, 1]^2, so scale = min(0.9 RW, 0.9 RH) / 2 and the centre is the
+ * picture's; a point (x, y) lands at (RW/2 + s x, RH/2 - s y). The input (the unit cube)
+ * around a half-size result: its outline's edge midpoints are input-coloured, the result's
+ * own area is not covered, and without the input none of those pixels is. */
+static void t_render_input_overlay(void)
+{
+    double small[24];
+    render_mesh res, in = mk_mesh(cube_pos, 8, cube_fs, cube_cv, 6);
+    render_opts o = mk_opts(0, 0, 1);
+    double sc = fmin(0.9 * RW, 0.9 * RH) / 2.0;
+    const double mid[4][2] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}};
+    uint8_t *img, *plain;
+    int k;
+    scaled_cube(0.5, small);
+    res = mk_mesh(small, 8, cube_fs, cube_cv, 6);
+    o.input = &in;
+    img = rend(&res, &o);
+    o.input = 0;
+    plain = rend(&res, &o);
+    if (img && plain) {
+        for (k = 0; k < 4; k++) {
+            int x = (int)floor(RW / 2.0 + sc * mid[k][0]), y = (int)floor(RH / 2.0 - sc * mid[k][1]);
+            CHECK(input_near(img, x, y));
+            CHECK(!input_near(plain, x, y));
+        }
+        CHECK_EQ(count_input_col(plain), 0);
+        /* the result's face centre shows the result, not the input */
+        CHECK(!is_input_col(pix(img, RW / 2 + (int)(0.25 * sc), RH / 2 + (int)(0.25 * sc))));
+        CHECK(memcmp(img, plain, (size_t)RW * RH * 3u) != 0);
+    }
+    free(img);
+    free(plain);
+}
+
+/* The input inside the result (a pia-like picture): its lines are hidden, so they are
+ * dashed: along the input's lower outline edge (y = -1/2), in the middle of the edge, some
+ * columns have the input colour and some do not. And the picture differs from the one with
+ * the roles swapped (limit-like), which the demo's two icosahedron pictures rely on. */
+static void t_render_input_hidden_dashed(void)
+{
+    double small[24];
+    render_mesh big = mk_mesh(cube_pos, 8, cube_fs, cube_cv, 6), in;
+    render_opts o = mk_opts(0, 0, 1);
+    double sc = fmin(0.9 * RW, 0.9 * RH) / 2.0;
+    uint8_t *img, *swapped;
+    int x, y = (int)floor(RH / 2.0 + 0.5 * sc), on = 0, cols = 0;
+    scaled_cube(0.5, small);
+    in = mk_mesh(small, 8, cube_fs, cube_cv, 6);
+    o.input = &in;
+    img = rend(&big, &o);
+    o.input = &big;
+    swapped = rend(&in, &o);
+    if (img && swapped) {
+        for (x = (int)(RW / 2.0 - 0.4 * sc); x <= (int)(RW / 2.0 + 0.4 * sc); x++, cols++) {
+            int j, hit = 0;
+            for (j = -1; j <= 1; j++) hit |= is_input_col(pix(img, x, y + j));
+            on += hit;
+        }
+        CHECK(cols > 20);
+        CHECK(on * 4 > cols);     /* drawn ...            */
+        CHECK(on * 4 < 3 * cols); /* ... but dashed       */
+        CHECK(memcmp(img, swapped, (size_t)RW * RH * 3u) != 0);
+    }
+    free(img);
+    free(swapped);
+}
+
+/* An n x n grid of quads over [-1, 1]^2 in the z = 0 plane. */
+static render_mesh grid_mesh(uint32_t n, double *pos, uint32_t *fs, uint32_t *cv)
+{
+    uint32_t i, j, f = 0;
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++) {
+            double *p = pos + 3u * (j * (n + 1u) + i);
+            p[0] = -1.0 + 2.0 * (double)i / (double)n;
+            p[1] = -1.0 + 2.0 * (double)j / (double)n;
+            p[2] = 0.0;
+        }
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++, f++) {
+            uint32_t v = j * (n + 1u) + i;
+            fs[f] = 4u * f;
+            cv[4u * f] = v;
+            cv[4u * f + 1u] = v + 1u;
+            cv[4u * f + 2u] = v + n + 2u;
+            cv[4u * f + 3u] = v + n + 1u;
+        }
+    fs[f] = 4u * f;
+    return mk_mesh(pos, (n + 1u) * (n + 1u), fs, cv, n * n);
+}
+
+/* Auto edges: the mean projected edge of an n x n grid seen face on is 2 s / n pixels
+ * (closed form); edges are drawn exactly when that is at least RENDER_DENSE_PX, and --edges
+ * (1) and --no-edges (0) override. */
+static void t_render_auto_edges(void)
+{
+    static double pos[3 * 41 * 41];
+    static uint32_t fs[40 * 40 + 1], cv[4 * 40 * 40];
+    static const uint32_t ns[] = {4, 16, 17, 18, 19, 40};
+    double sc = fmin(0.9 * RW, 0.9 * RH) / 2.0;
+    size_t t;
+    for (t = 0; t < sizeof ns / sizeof ns[0]; t++) {
+        uint32_t n = ns[t];
+        render_mesh m = grid_mesh(n, pos, fs, cv);
+        render_opts o = mk_opts(0, 0, RENDER_EDGES_AUTO);
+        render_info info;
+        uint8_t *img = 0;
+        int w = 0, h = 0;
+        double expect = 2.0 * sc / (double)n;
+        if (!CHECK_EQ(render_rgb_info(&m, &o, &img, &w, &h, &info), 0)) continue;
+        CHECK(fabs(info.mean_edge_px - expect) < 1e-9);
+        CHECK_EQ(info.edges_drawn, expect >= RENDER_DENSE_PX);
+        CHECK_EQ(count_dark(img) > 0u, expect >= RENDER_DENSE_PX);
+        free(img);
+        o.edges = 1;
+        img = 0;
+        if (CHECK_EQ(render_rgb_info(&m, &o, &img, &w, &h, &info), 0)) {
+            CHECK_EQ(info.edges_drawn, 1);
+            CHECK(count_dark(img) > 0u);
+        }
+        free(img);
+        o.edges = 0;
+        img = 0;
+        if (CHECK_EQ(render_rgb_info(&m, &o, &img, &w, &h, &info), 0)) {
+            CHECK_EQ(info.edges_drawn, 0);
+            CHECK_EQ(count_dark(img), 0);
+        }
+        free(img);
+    }
+    /* the threshold falls between the n tried: both sides were seen */
+    CHECK(2.0 * sc / 17.0 >= RENDER_DENSE_PX && 2.0 * sc / 19.0 < RENDER_DENSE_PX);
+}
+
+/* A dense input (mean projected edge under RENDER_INPUT_DENSE_PX) goes beside the result:
+ * a grey separator down the middle, shaded pixels in both halves, and no input-coloured
+ * lines. A coarse input stays an overlay (input-coloured pixels, no separator). */
+static void t_render_input_side_by_side(void)
+{
+    static double pos[3 * 41 * 41];
+    static uint32_t fs[40 * 40 + 1], cv[4 * 40 * 40];
+    render_mesh dense = grid_mesh(40, pos, fs, cv), cube = mk_mesh(cube_pos, 8, cube_fs, cube_cv, 6);
+    render_opts o = mk_opts(30, 20, RENDER_EDGES_AUTO);
+    uint8_t *img;
+    int y, sep = 1, left = 0, right = 0, x;
+    o.input = &dense;
+    img = rend(&cube, &o);
+    if (img) {
+        for (y = 0; y < RH; y++) {
+            const uint8_t *p = pix(img, RW / 2, y);
+            sep &= p[0] == 150 && p[1] == 150 && p[2] == 150;
+        }
+        CHECK(sep);
+        for (y = 0; y < RH; y++)
+            for (x = 0; x < RW; x++)
+                if (!is_bg(pix(img, x, y)) && x != RW / 2 && x != RW / 2 - 1) {
+                    if (x < RW / 2) left++;
+                    else right++;
+                }
+        CHECK(left > 500 && right > 500);
+        CHECK_EQ(count_input_col(img), 0);
+    }
+    free(img);
+    o.input = &cube;
+    img = rend(&dense, &o);
+    if (img) {
+        CHECK(count_input_col(img) > 100u);
+        CHECK(!(pix(img, RW / 2, 0)[0] == 150 && pix(img, RW / 2, RH - 1)[0] == 150));
+    }
+    free(img);
+}
+
+/* Captions: the result's in dark grey and the input's in the input colour, at the top left,
+ * and the model is framed below them (the rows they take show no shaded face). */
+static void t_render_labels(void)
+{
+    double small[24];
+    render_mesh res, in = mk_mesh(cube_pos, 8, cube_fs, cube_cv, 6);
+    render_opts o = mk_opts(0, 0, 1);
+    uint8_t *img;
+    int x, y, dark_top = 0, input_row2 = 0, face_top = 0;
+    scaled_cube(0.5, small);
+    res = mk_mesh(small, 8, cube_fs, cube_cv, 6);
+    o.input = &in;
+    o.label = "RESULT 1";
+    o.input_label = "INPUT 2";
+    img = rend(&res, &o);
+    if (img) {
+        for (y = 0; y < 12; y++)
+            for (x = 0; x < 60; x++) {
+                const uint8_t *p = pix(img, x, y);
+                dark_top += p[0] == 40 && p[1] == 40 && p[2] == 40;
+            }
+        for (y = 14; y < 23; y++)
+            for (x = 0; x < 60; x++) input_row2 += is_input_col(pix(img, x, y));
+        for (y = 0; y < 23; y++)
+            for (x = 0; x < RW; x++) {
+                const uint8_t *p = pix(img, x, y);
+                face_top += !is_bg(p) && !is_input_col(p) && !(p[0] == 40 && p[1] == 40 && p[2] == 40);
+            }
+        CHECK(dark_top > 20);    /* "RESULT 1": 8 glyphs of a few pixels each */
+        CHECK(input_row2 > 20);  /* "INPUT 2" */
+        CHECK_EQ(face_top, 0);
+    }
+    free(img);
+}
+
+/* The caption font (render_text.c): widths in closed form; '-' is one 5-pixel bar and '.'
+ * a 2x2 block; lower case draws as upper case and an unknown character as '?'; the 36
+ * letters and digits are pairwise distinct glyphs; scale 2 has 4 times the pixels. */
+static uint32_t text_px(const char *s, int scale, uint8_t *img, int w, int h)
+{
+    static const uint8_t white[3] = {255, 255, 255}, black[3] = {0, 0, 0};
+    uint32_t n = 0;
+    int i;
+    memset(img, 255, (size_t)w * (size_t)h * 3u);
+    render_text(img, w, h, 2, 2, scale, s, black, white);
+    for (i = 0; i < w * h; i++) n += img[3 * i] == 0;
+    return n;
+}
+
+static void t_render_text_font(void)
+{
+    enum { W = 40, H = 24 };
+    static uint8_t a[W * H * 3], b[W * H * 3];
+    static const char set[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    int i, j, distinct = 1;
+    CHECK_EQ(render_text_width("ABC", 1), 3 * RENDER_GLYPH_W);
+    CHECK_EQ(render_text_width("ABC", 2), 6 * RENDER_GLYPH_W);
+    CHECK_EQ(render_text_width("", 3), 0);
+    CHECK_EQ(text_px("-", 1, a, W, H), 5);
+    CHECK_EQ(text_px(".", 1, a, W, H), 4);
+    CHECK_EQ(text_px(" ", 1, a, W, H), 0);
+    CHECK_EQ(text_px("H", 2, a, W, H), 4u * text_px("H", 1, b, W, H));
+    (void)text_px("spot", 1, a, W, H);
+    (void)text_px("SPOT", 1, b, W, H);
+    CHECK(memcmp(a, b, sizeof a) == 0);
+    (void)text_px("~", 1, a, W, H);
+    (void)text_px("?", 1, b, W, H);
+    CHECK(memcmp(a, b, sizeof a) == 0);
+    for (i = 0; set[i]; i++)
+        for (j = i + 1; set[j]; j++) {
+            char s1[2] = {set[i], 0}, s2[2] = {set[j], 0};
+            (void)text_px(s1, 1, a, W, H);
+            (void)text_px(s2, 1, b, W, H);
+            if (memcmp(a, b, sizeof a) == 0) distinct = 0;
+        }
+    CHECK(distinct);
+    /* clipped at the image border: no write outside the 4 x 4 image (ASan watches) */
+    render_text(a, 4, 4, -3, -3, 2, "WWWW", a, b);
+}
+
 const test_case suite_png[] = {
     {"png_crc32_check_value", t_crc32_check_value},
     {"png_adler32_check_value", t_adler32_check_value},
@@ -841,6 +1127,12 @@ const test_case suite_png[] = {
     {"render_huge_coordinates", t_render_huge_coordinates},
     {"render_polylines", t_render_polylines},
     {"render_png_file", t_render_png_file},
+    {"render_input_overlay", t_render_input_overlay},
+    {"render_input_hidden_dashed", t_render_input_hidden_dashed},
+    {"render_auto_edges", t_render_auto_edges},
+    {"render_input_side_by_side", t_render_input_side_by_side},
+    {"render_labels", t_render_labels},
+    {"render_text_font", t_render_text_font},
     {0, 0}
 };
 

@@ -206,6 +206,64 @@ run "$FLOAT" convert test/data/icosahedron.obj -o "$T/i.png"
 is 0 && [ "$(od -An -tx1 -N8 "$T/i.png" | tr -d ' \n')" = 89504e470d0a1a0a ]
 check $? "convert to .png renders a PNG"
 
+# --with-input: the input drawn over the result. The limit and pia pictures of the
+# icosahedron were byte-identical plain icosahedra; with the input they must differ (the
+# limit points lie inside the control net, pia's control net outside the points), and the
+# overlay changes the picture. Errors: not a mesh file (1), unreadable (2), no .png (1).
+run "$FLOAT" limit test/data/icosahedron.obj --with-input test/data/icosahedron.obj --size 160x120 -o "$T/lim.png"
+is 0; check $? "limit --with-input writes a picture"
+run "$FLOAT" pia --tol 1e-5 test/data/icosahedron.obj --with-input test/data/icosahedron.obj --size 160x120 -q -o "$T/pia.png"
+is 0 && [ ! -s "$T/err" ]; check $? "pia --with-input -q writes a picture, nothing on stderr"
+run "$FLOAT" limit test/data/icosahedron.obj --size 160x120 -o "$T/lim0.png"
+run cmp -s "$T/lim.png" "$T/pia.png"
+is 1; check $? "limit and pia pictures with their input differ"
+run cmp -s "$T/lim.png" "$T/lim0.png"
+is 1; check $? "--with-input changes the picture"
+run "$FLOAT" limit test/data/icosahedron.obj --no-labels --size 160x120 -o "$T/lim1.png"
+run cmp -s "$T/lim0.png" "$T/lim1.png"
+is 1; check $? "--no-labels changes the picture (captions are drawn by default)"
+run "$FLOAT" render test/data/hexfan.obj --with-input "$T/x.txt" -o "$T/x.png"
+is 1 && grep -q '^usage: subd' "$T/err"; check $? "--with-input not .obj/.off: usage error, exit 1"
+run "$FLOAT" loop test/data/icosahedron.obj --with-input test/data/icosahedron.obj -o "$T/x.obj"
+is 1 && grep -q 'need a .png output' "$T/err"; check $? "--with-input without a .png output: usage error, exit 1"
+run "$FLOAT" render test/data/hexfan.obj --with-input "$T/missing.obj" -o "$T/x.png"
+is 2 && err_starts "subd: cannot read '$T/missing.obj'"; check $? "--with-input unreadable: exit 2"
+run "$FLOAT" render test/data/hexfan.obj --with-input test/bad/nan.obj -o "$T/x.png"
+is 2 && err_starts "test/bad/nan.obj:"; check $? "--with-input bad mesh: FILE:LINE, exit 2"
+
+# ---------------------------------------------------------------- progress and --quiet
+# Progress goes to stderr only when it is a terminal. Redirected to a file, a long-ish run
+# (about a second or more; the delay before the first line set to 0) prints nothing at all.
+: > "$T/empty"
+SUBD_PROGRESS_DELAY_MS=0 "$FLOAT" loop -l 5 --stream --stats demo/spot_triangulated.obj < /dev/null > "$T/out" 2> "$T/err"
+rc=$?
+is 0 && cmp -s "$T/err" "$T/empty"; check $? "progress: stderr redirected to a file stays empty (loop -l 5 --stream)"
+"$FLOAT" loop -l 5 --stream --stats demo/spot_triangulated.obj < /dev/null > "$T/out" 2> "$T/err"
+rc=$?
+is 0 && cmp -s "$T/err" "$T/empty"; check $? "progress: stderr redirected, default delay: empty"
+# Under a pseudo-terminal (script from util-linux) the line appears: phase, percent, done.
+if command -v script > /dev/null 2>&1 && script -qec true /dev/null > /dev/null 2>&1; then
+    SUBD_PROGRESS_DELAY_MS=0 script -qec "'$FLOAT' loop -l 4 --stream --stats test/data/icosahedron.obj" /dev/null \
+        < /dev/null > "$T/out" 2> "$T/err"
+    rc=$?
+    is 0 && grep -q 'subd loop: ' "$T/out" && grep -q '100%' "$T/out" && grep -q '"command":"loop"' "$T/out"
+    check $? "progress: under a terminal the progress line appears, ending at 100%"
+    SUBD_PROGRESS_DELAY_MS=0 script -qec "'$FLOAT' loop -l 4 test/data/icosahedron.obj -o '$T/p.obj'" /dev/null \
+        < /dev/null > "$T/out" 2> "$T/err"
+    rc=$?
+    is 0 && grep -q 'subd loop: ' "$T/out" && grep -q 'done' "$T/out"; check $? "progress: loop to .obj under a terminal"
+    SUBD_PROGRESS_DELAY_MS=0 script -qec "'$FLOAT' loop -l 4 --stream --stats --quiet test/data/icosahedron.obj" \
+        /dev/null < /dev/null > "$T/out" 2> "$T/err"
+    rc=$?
+    is 0 && ! grep -q 'subd loop: ' "$T/out" && grep -q '"command":"loop"' "$T/out"
+    check $? "progress: --quiet removes it under a terminal"
+else
+    echo "ok - progress under a terminal: skipped (no working 'script' from util-linux)"
+fi
+run "$FLOAT" --help
+is 0 && grep -q '^  -q, --quiet ' "$T/out" && grep -q '^  --with-input FILE ' "$T/out" && grep -q '^  --edges ' "$T/out"
+check $? "--help lists --quiet, --with-input and --edges"
+
 # ---------------------------------------------------------------- --stats
 for b in "$FLOAT" "$FIXED"; do
     name=$(basename "$b")
@@ -528,10 +586,10 @@ is 0 && grep -q '^subd [0-9].*q16\.16' "$T/out"; check $? "subd-fixed --version 
 # The help's option list is generated from the parser's option table: every option it lists
 # is known to the parser (a misspelt row would say "unknown option").
 "$FLOAT" --help 2> /dev/null | awk '/^options:/ { o = 1; next } /^Long options/ { o = 0 }
-    o && /^  -/ { col = substr($0, 3, 16); sub(/ +$/, "", col); print col }' > "$T/opts"
+    o && /^  -/ { col = substr($0, 3, 17); sub(/ +$/, "", col); print col }' > "$T/opts"
 unknown=""
 while read -r name meta; do
-    case $name in -h, | --version) continue ;; esac
+    case $name in -h, | --version) continue ;; *,) name=$meta meta="" ;; esac
     if [ -n "$meta" ]; then run "$FLOAT" info "$name" 1 test/data/hexfan.obj; else run "$FLOAT" info "$name" test/data/hexfan.obj; fi
     grep -q "unknown option" "$T/err" && unknown="$unknown $name"
 done < "$T/opts"

@@ -87,10 +87,12 @@ static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_
              host_real_to_double(res.max_err), host_real_to_double(res.mean_err), res.converged ? "true" : "false");
     x->not_converged = !res.converged;
     x->max_err = host_real_to_double(res.max_err);
-    if (!o->stats)
+    if (!o->stats && !o->quiet) {
+        progress_pause();
         fprintf(stderr, "pia: %lu iterations, max error %.6g, mean error %.6g, %s\n", (unsigned long)res.iterations,
                 host_real_to_double(res.max_err), host_real_to_double(res.mean_err),
                 res.converged ? "converged" : "NOT converged (raise --max-iter or --tol)");
+    }
     return SUBD_OK;
 }
 
@@ -215,10 +217,12 @@ static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
              (unsigned long)h.num_clusters, (unsigned long)h.num_isolated, (unsigned long)h.num_tris,
              (unsigned long)rep.faces, (unsigned long)rep.uniform_faces,
              (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
-    if (!o->stats && ad.mode != SUBD_ADAPT_UNIFORM)
+    if (!o->stats && !o->quiet && ad.mode != SUBD_ADAPT_UNIFORM) {
+        progress_pause();
         fprintf(stderr, "adapt: %lu triangles (uniform level %lu: %lu, saved %lu), %lu forced splits\n",
                 (unsigned long)rep.faces, (unsigned long)o->levels, (unsigned long)rep.uniform_faces,
                 (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
+    }
     return SUBD_OK;
 }
 

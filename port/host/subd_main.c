@@ -20,11 +20,13 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <unistd.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "subd_tool.h"
+#include "host_real.h"
 
 /* ------------------------------------------------------------------------------------ */
 /* Errors                                                                                 */
@@ -34,6 +36,7 @@ static char g_error[512]; /* the last error message, for --stats on failure */
 void tool_error_record(const char *fmt, ...)
 {
     va_list ap;
+    progress_pause(); /* every caller prints the message on stderr next */
     va_start(ap, fmt);
     vsnprintf(g_error, sizeof g_error, fmt, ap);
     va_end(ap);
@@ -42,6 +45,7 @@ void tool_error_record(const char *fmt, ...)
 void tool_error(const char *fmt, ...)
 {
     va_list ap;
+    progress_pause();
     va_start(ap, fmt);
     vsnprintf(g_error, sizeof g_error, fmt, ap);
     va_end(ap);
@@ -155,10 +159,118 @@ static int apply_tag_file(const char *path, subd_mesh *m, int quiet)
         return EXIT_INPUT;
     }
     if (st != SUBD_OK) return library_error(path, st, &d, 0, 0);
-    if (!quiet)
+    if (!quiet) {
+        progress_pause();
         fprintf(stderr, "subd: %s: %lu crease edge(s), %lu vertex tag(s)\n", path, (unsigned long)rep.creases,
                 (unsigned long)rep.vertex_tags);
+    }
     return EXIT_OK;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Progress phases and pictures                                                           */
+
+static const char *base_name(const char *path)
+{
+    const char *s = strrchr(path, '/');
+    return s ? s + 1 : path;
+}
+
+static void progress_phase_file(const char *verb, const char *path)
+{
+    char what[96];
+    snprintf(what, sizeof what, "%s %s", verb, base_name(path));
+    progress_phase(what);
+}
+
+/* The command with the options that change its result, e.g. "alpha -l 5 --kernel cos
+ * --alpha 1/4": the progress phase and the picture's caption. */
+static void describe_command(const tool_run *r, char *buf, size_t n)
+{
+    static const char *const kernel[] = {"bspline", "cos", "poly", "cosh"};
+    static const char *const adapt[] = {"", "--point", "--ramp", "--plane", "", "--chord"};
+    const tool_opts *o = &r->o;
+    const command *cmd = r->cmd;
+    size_t k = 0;
+#define ADD(...) (k += (size_t)snprintf(buf + k, k < n ? n - k : 0u, __VA_ARGS__), k = k < n ? k : n)
+    ADD("%s", cmd->name);
+    if (cmd->flags & CMD_LEVELS) ADD(" -l %lu", (unsigned long)o->levels);
+    if (o->stream) ADD(" --stream%s", o->limit ? " --limit" : "");
+    if (o->no_smooth) ADD(" --no-smooth");
+    if ((o->given & OPT_TOL) && (cmd->options & OPT_TOL)) ADD(" --tol %g", o->tol);
+    if ((cmd->options & OPT_BOUNDARY) && o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) ADD(" --boundary bspline");
+    if (o->has_crease_angle) ADD(" --crease-angle %g", o->crease_deg);
+    if (cmd->options & OPT_ALPHA) {
+        if (o->alpha.order != 2u) ADD(" --order %lu", (unsigned long)o->alpha.order);
+        if (o->alpha.kernel != SUBD_ALPHA_BSPLINE && (unsigned)o->alpha.kernel < 4u)
+            ADD(" --kernel %s", kernel[o->alpha.kernel]);
+        if (o->alpha.kernel != SUBD_ALPHA_BSPLINE)
+            ADD(" --alpha %ld/%ld", (long)o->alpha.alpha_num, (long)o->alpha.alpha_den);
+    }
+    if ((cmd->options & OPT_ADAPT) && (unsigned)o->adapt_mode < 6u) ADD(" %s", adapt[o->adapt_mode]);
+#undef ADD
+}
+
+/* "642 vertices, 1280 faces" or, for polylines, "129 points, 1 curve". */
+static void mesh_counts(const subd_mesh *m, char *buf, size_t n)
+{
+    if (!m->num_faces && m->num_lines)
+        snprintf(buf, n, "%lu points, %lu curve%s", (unsigned long)m->num_verts, (unsigned long)m->num_lines,
+                 m->num_lines == 1u ? "" : "s");
+    else
+        snprintf(buf, n, "%lu vertices, %lu faces", (unsigned long)m->num_verts, (unsigned long)m->num_faces);
+}
+
+/* --with-input FILE: read like INPUT (its own arena), positions as doubles for the picture. */
+static int read_overlay(tool_run *r)
+{
+    host_mesh *h = &r->overlay;
+    render_mesh *rm = &r->overlay_rm;
+    subd_diag d;
+    uint32_t i;
+    int st = host_read_mesh(r->o.with_input, NULL, h, &d, NULL);
+    if (st == HOST_ERR_IO) {
+        tool_error("cannot read '%s': %s", r->o.with_input, host_read_error_str(h->read_rc));
+        return EXIT_INPUT;
+    }
+    if (st == HOST_ERR_OOM) return tool_out_of_memory();
+    if (st != SUBD_OK) return library_error(r->o.with_input, st, &d, 0, 0);
+    r->overlay_pos = (double *)malloc(3u * (size_t)h->mesh.num_verts * sizeof(double) + 1u);
+    if (!r->overlay_pos) return tool_out_of_memory();
+    for (i = 0; i < 3u * h->mesh.num_verts; i++) r->overlay_pos[i] = host_real_to_double(h->mesh.pos[i]);
+    memset(rm, 0, sizeof *rm);
+    rm->num_verts = h->mesh.num_verts;
+    rm->pos = r->overlay_pos;
+    rm->num_faces = h->mesh.num_faces;
+    rm->face_start = h->mesh.face_start;
+    rm->corner_vert = h->mesh.corner_vert;
+    rm->num_lines = h->mesh.num_lines;
+    rm->line_start = h->mesh.line_start;
+    rm->line_vert = h->mesh.line_vert;
+    r->o.ropt.input = rm;
+    return EXIT_OK;
+}
+
+/* The captions of a picture: what the result is (the command, or the file for render and
+ * convert) with its counts, and the --with-input file with its counts. */
+static void picture_captions(tool_run *r)
+{
+    char what[96], counts[64];
+    if (r->o.no_labels) return;
+    if (r->cmd->run) {
+        describe_command(r, what, sizeof what);
+        mesh_counts(&r->out, counts, sizeof counts);
+        snprintf(r->label[0], sizeof r->label[0], "result of %s: %s", what, counts);
+    } else {
+        mesh_counts(&r->out, counts, sizeof counts);
+        snprintf(r->label[0], sizeof r->label[0], "%s: %s", base_name(r->o.input), counts);
+    }
+    r->o.ropt.label = r->label[0];
+    if (r->o.with_input) {
+        mesh_counts(&r->overlay.mesh, counts, sizeof counts);
+        snprintf(r->label[1], sizeof r->label[1], "input %s: %s", base_name(r->o.with_input), counts);
+        r->o.ropt.input_label = r->label[1];
+    }
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -171,6 +283,7 @@ static int run_command(tool_run *r)
     double ns = 0.0, t0;
     int st;
 
+    progress_phase_file("reading", r->o.input);
     st = host_read_mesh(r->o.input, r->o.has_budget ? &r->o.budget : NULL, &r->in, &d, &ns);
     r->lib_ns += ns;
     if (st == HOST_ERR_IO) {
@@ -194,13 +307,20 @@ static int run_command(tool_run *r)
         /* cos of the angle in whole hundredths of a degree, by the library's own cos */
         int32_t hundredths = (int32_t)(r->o.crease_deg * 100.0 + 0.5);
         uint32_t n = subd_mesh_tag_crease_angle(&r->in.mesh, subd_cos_turns(hundredths, 36000));
-        if (!r->o.stats) fprintf(stderr, "subd: %lu crease edge(s) tagged\n", (unsigned long)n);
+        if (!r->o.stats && !r->o.quiet) {
+            progress_pause();
+            fprintf(stderr, "subd: %lu crease edge(s) tagged\n", (unsigned long)n);
+        }
     }
-    if (r->o.tags && (st = apply_tag_file(r->o.tags, &r->in.mesh, r->o.stats)) != EXIT_OK) return st;
+    if (r->o.tags && (st = apply_tag_file(r->o.tags, &r->in.mesh, r->o.stats || r->o.quiet)) != EXIT_OK) return st;
+    if (r->o.with_input && (st = read_overlay(r)) != EXIT_OK) return st;
 
     if (cmd->run) {
         uint32_t bytes = 0, base = r->in.arena.used, need;
         subd_arena *a;
+        char what[96];
+        describe_command(r, what, sizeof what);
+        progress_phase(what);
         t0 = host_now_ns();
         st = cmd->plan(&r->in.mesh, &r->o, &bytes, &d);
         r->lib_ns += host_now_ns() - t0;
@@ -234,15 +354,19 @@ static int run_command(tool_run *r)
     }
 
     if (r->o.output && !r->o.stream) {
+        progress_phase_file("writing", r->o.output);
+        if (r->o.out_format == HOST_FMT_PNG) picture_captions(r);
         st = tool_write_output(r);
         if (st != EXIT_OK) return st;
     }
+    progress_end(1); /* the final line, before reports and notes */
     if (cmd->report) {
         st = cmd->report(r->o.stats ? stderr : stdout, r);
         if (st != EXIT_OK) return st;
     }
     if (r->o.stats) tool_print_stats(stdout, r);
     if (r->extra.not_converged) {
+        progress_pause();
         fprintf(stderr, "subd: pia: tolerance %.9g not reached: max error %.9g after --max-iter %lu iterations\n",
                 r->o.tol, r->extra.max_err, (unsigned long)r->o.max_iter);
         return EXIT_NOT_CONVERGED; /* the --stats object above says "converged":false */
@@ -278,9 +402,15 @@ int main(int argc, char **argv)
         if (r.o.stats) print_failure_json(cmd, rc);
         return rc;
     }
+    /* phases: read, run (scheme commands), write (unless --stream writes as it runs) */
+    progress_begin(cmd->name, !r.o.quiet && isatty(2),
+                   1u + (cmd->run ? 1u : 0u) + (r.o.output && !r.o.stream ? 1u : 0u));
     rc = run_command(&r);
+    progress_end(rc == EXIT_OK || rc == EXIT_NOT_CONVERGED);
     if (rc != EXIT_OK && rc != EXIT_NOT_CONVERGED && r.o.stats) print_failure_json(cmd, rc);
     host_mesh_free(&r.in);
+    host_mesh_free(&r.overlay);
+    free(r.overlay_pos);
     free(r.work_mem);
     free(r.extra.host_mem);
     if (fflush(stdout) != 0 && rc == EXIT_OK) {

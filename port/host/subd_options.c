@@ -163,8 +163,12 @@ static int set_flag(const opt_ctx *c)
     else if (strcmp(c->name, "--tag-boundary") == 0) o->tag_boundary = 1;
     else if (strcmp(c->name, "--stream") == 0) o->stream = 1;
     else if (strcmp(c->name, "--limit") == 0) o->limit = 1;
-    else { /* --no-edges */
-        o->ropt.edges = 0;
+    else if (strcmp(c->name, "--quiet") == 0 || strcmp(c->name, "-q") == 0) o->quiet = 1;
+    else if (strcmp(c->name, "--no-labels") == 0) {
+        o->no_labels = 1;
+        o->render_opt_given = 1;
+    } else { /* --no-edges, --edges */
+        o->ropt.edges = strcmp(c->name, "--edges") == 0;
         o->render_opt_given = 1;
     }
     return EXIT_OK;
@@ -207,6 +211,16 @@ static int set_crease_angle(const opt_ctx *c)
     if (parse_double(c->val, 0.0, 180.0, &c->o->crease_deg))
         return tool_usage_error("bad crease angle '%s' (degrees, 0..180)", c->val);
     c->o->has_crease_angle = 1;
+    return EXIT_OK;
+}
+
+static int set_with_input(const opt_ctx *c)
+{
+    if (c->o->with_input) return tool_usage_error("more than one --with-input file ('%s')", c->val);
+    if (host_format_of(c->val) != HOST_FMT_OBJ && host_format_of(c->val) != HOST_FMT_OFF)
+        return tool_usage_error("cannot read '%s': --with-input must be .obj or .off", c->val);
+    c->o->with_input = c->val;
+    c->o->render_opt_given = 1;
     return EXIT_OK;
 }
 
@@ -412,6 +426,18 @@ static const tool_option options[] = {
     {"--yaw", NULL, "DEG", 0, 0, set_yaw, "view rotation about the up axis (default 30)"},
     {"--pitch", NULL, "DEG", 0, 0, set_pitch, "view elevation, -90..90 (default 20)"},
     {"--no-edges", NULL, NULL, 0, 0, set_flag, "do not draw polygon edges"},
+    {"--edges", NULL, NULL, 0, 0, set_flag,
+     "draw polygon edges even when the mesh is dense (by default they are\n"
+     "left out when the mean edge is under 6 pixels: a black silhouette)"},
+    {"--with-input", NULL, "FILE", 0, 0, set_with_input,
+     "draw FILE (.obj/.off, e.g. the INPUT of a scheme command: its control\n"
+     "net or polylines) over the picture in orange, dashed where hidden,\n"
+     "framed together with the result, and name it in the caption"},
+    {"--no-labels", NULL, NULL, 0, 0, set_flag, "no captions in the picture (what is drawn, its counts)"},
+    {"--quiet", "-q", NULL, 0, 0, set_flag,
+     "no progress line and no notes on stderr (errors and warnings stay);\n"
+     "progress is shown only when stderr is a terminal and the command\n"
+     "runs longer than about a second"},
     {"--help", "-h", NULL, OPTF_HELP, 0, set_none, "print this text"},
     {"--version", NULL, NULL, OPTF_FIRST, 0, set_none, "print the version and the arithmetic of this build"},
 };
@@ -508,7 +534,8 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
                                 o->stream ? "; with --stats, --stream may leave it out" : "");
     }
     if (o->render_opt_given && o->out_format != HOST_FMT_PNG)
-        return tool_usage_error("picture options (--size, --yaw, --pitch, --no-edges) need a .png output");
+        return tool_usage_error("picture options (--size, --yaw, --pitch, --no-edges, --edges, --with-input, "
+                                "--no-labels) need a .png output");
     if (o->boundary_name) {
         const char *b = o->boundary_name;
         if (cmd->options & OPT_BOUNDARY) {
@@ -584,8 +611,8 @@ void tool_usage(FILE *f)
         if (t->alias) snprintf(col, sizeof col, "%s, %s", t->alias, t->name);
         else snprintf(col, sizeof col, "%s%s%s", t->name, t->meta ? " " : "", t->meta ? t->meta : "");
         snprintf(text, sizeof text, t->help, 2 * SUBD_MAX_LEVELS, SUBD_MAX_LEVELS);
-        fprintf(f, "  %-16s ", col);
-        print_continued(f, text, 2 + 16 + 1);
+        fprintf(f, "  %-17s ", col);
+        print_continued(f, text, 2 + 17 + 1);
     }
     fprintf(f, "Long options also take the form --name=VALUE. Picture options need a .png output.\n"
                "\nexit status:\n"

@@ -99,6 +99,7 @@ static void hash_tri(stream_sink *s, const subd_loop_tri *t)
         }
     s->hash = h;
     s->tris++;
+    if (!(s->tris & 0xfffu)) progress_update(s->tris, s->max_t); /* progress.h: stores a number */
 }
 
 static int count_tri(void *ctx, const subd_loop_tri *t)

@@ -8,6 +8,7 @@
  *   subd_write.c     the output writers (.obj/.off, .png, .xyz) and the --stats JSON
  *   subd_stream.c    loop --stream: the triangle sinks (binary .stl, .obj/.off gathered by
  *                    vertex id, a counting sink for --stats without -o)
+ *   progress.c       the progress line on stderr (a terminal only; --quiet)
  * Host only (stdio, malloc); never linked into device images.
  */
 #ifndef SUBD_TOOL_H
@@ -17,6 +18,7 @@
 #include "subd.h"
 #include "fileio.h"
 #include "render.h"
+#include "progress.h"
 
 enum {
     EXIT_OK = 0,
@@ -42,8 +44,11 @@ typedef struct tool_opts {
     uint32_t budget;
     int has_levels;
     uint32_t levels;
-    int render_opt_given; /* any of --size/--yaw/--pitch/--no-edges */
+    int render_opt_given; /* any of --size/--yaw/--pitch/--no-edges/--edges/--with-input/--no-labels */
     render_opts ropt;
+    const char *with_input; /* --with-input FILE: drawn over the picture (render.h)        */
+    int no_labels;        /* --no-labels: no captions in the picture                      */
+    int quiet;            /* --quiet: no progress line, no informational notes on stderr  */
     /* scheme options */
     const char *boundary_name;   /* --boundary, interpreted by the command               */
     subd_loop_boundary boundary; /* loop/limit/pia: paper (default) | bspline             */
@@ -132,6 +137,10 @@ typedef struct tool_run {
     uint32_t out_bytes;    /* bytes written to OUTPUT                                     */
     scheme_extra extra;
     int out_width, out_height;
+    host_mesh overlay;     /* --with-input FILE, read before the command runs             */
+    double *overlay_pos;   /* its positions as doubles, for render_opts.input             */
+    render_mesh overlay_rm;
+    char label[2][192];    /* the picture's captions: result, input                       */
 } tool_run;
 
 /* The command table (subd_commands.c). */

@@ -22,14 +22,16 @@
  * Tables (generated, Python 3, exact integers; bitlen = int.bit_length):
  *   k_pow5_inv[i] = (1 << (bitlen(5**i) - 1 + 59)) // 5**i + 1          i = 0..30
  *   k_pow5[i]     = 5**i >> (bitlen(5**i) - 61)  (<< when negative)      i = 0..47
- * test/test_format.c recomputes both with its own big integers.
+ * A wrong entry shows as a mismatch against test/ref_format.h: make test samples every
+ * exponent, make check-format-exhaustive every bit pattern.
  * Text layout (unchanged): positional for decimal exponents -4..8 ("0.0001", "123456790"),
  * else d.ddde+XX with a sign and at least two exponent digits ("1e-05", "3.4028235e+38");
  * "-0" for negative zero, "inf", "-inf", and "nan" for every NaN (no sign).
  *
  * Q16.16: the exact value x / 65536 (at most 16 fraction digits), trailing zeros removed.
  *
- * Stack: a few words; no loops beyond 10 digit removals and 16 fraction digits.
+ * Stack: about 120 bytes (Cortex-M4F, -fstack-usage); every loop is bounded by the digit
+ * count (at most 10 removals, 11 divisions by 5, 16 fraction digits).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "text.h" /* subd_q16_format */

@@ -306,11 +306,21 @@ bench-run: $(B)/bench/bench $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a
 bench-peers:
 	@bench/peers/run.sh $(SHARED)/data/meshes/bench
 
+# Every float32 and Q16.16 bit pattern through subd_real_format against the bignum reference
+# (test/ref_format.h) and back through subd_real_parse; host -O2, not part of make test (about
+# an hour of CPU). FMT_RANGE="FIRST COUNT" checks a slice, e.g. FMT_RANGE="0x3f800000 1000000".
+$(B)/bin/format_exhaustive-%: test/tools/format_exhaustive.c src/real_format.c src/real_text.c $(MK) | dirs
+	$(HOST_CC) $(WARN) $(INC) -O2 -DSUBD_HOST=1 -DSUBD_FIXED=$(if $(filter fixed,$*),1,0) \
+	    test/tools/format_exhaustive.c src/real_format.c src/real_text.c -o $@
+check-format-exhaustive: $(B)/bin/format_exhaustive-float $(B)/bin/format_exhaustive-fixed
+	$(B)/bin/format_exhaustive-float float $(FMT_RANGE)
+	$(B)/bin/format_exhaustive-fixed q16 $(FMT_RANGE)
+
 clean:
 	rm -rf $(B)
 
 # Header dependencies written by -MMD (none before the first build).
 -include $(wildcard $(foreach v,$(VARIANTS) fuzz-float fuzz-fixed,$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
-.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean \
+.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean check-format-exhaustive \
         m4f-float-images m3-fixed-images

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Host benchmark (`make bench`): OBJ parsing and mesh building, then every scheme on real
- * meshes: Loop (levels 1-5), Loop limit positions + normals, quasi 4-8 (1, 2, 4, 8 binary
+ * meshes, number formatting (float32 and Q16.16 text per coordinate), Loop (levels 1-5), Loop limit positions + normals, quasi 4-8 (1, 2, 4, 8 binary
  * steps), alpha-subdivision curves (S_2, S_3, S_4) and Doo-Sabin type surfaces (levels 1-3),
  * a quality comparison quasi 4-8 vs Loop (volume shrinkage, maximum dihedral angle),
  * progressive interpolation (PIA, method PAPER vs FAST) and streaming Loop (levels 3-5,
@@ -15,7 +15,7 @@
  * plan calls, and reused across the repeats. Without files it takes every .obj in
  * ../shared/data/meshes/bench/ (relative to the working directory, i.e. the repository when
  * run by `make bench`) and says so when there is none. SECTIONS is a comma list of
- * parse,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild (default: all), valence48 (only when
+ * parse,format,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild (default: all), valence48 (only when
  * named: the semi-regular 4-8 valence transition table) and demostream (only when named,
  * alone, no files read: the firmware demo's streaming step on the host, the same lines and
  * hash as port/cortex-m/demo.c prints under QEMU; compile with -DSUBD_FIXED=1 for the
@@ -28,9 +28,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include "subd.h"
 #include "fileio.h"
 #include "cortex-m/demo_mesh.h" /* the firmware demo's streaming mesh and checksum */
+#include "../src/text.h"          /* subd_q16_format: the Q16.16 formatter, int32 code */
 
 #define DEFAULT_DIR "../shared/data/meshes/bench"
 #define MIN_RUNS 5
@@ -1405,6 +1407,88 @@ static void section_pia(void)
 }
 
 /* ==================================================================================== */
+/* Section: number formatting (subd_real_format; the writers' cost per coordinate)        */
+
+#define FMT_N 65536u
+
+typedef struct fmt_ctx {
+    float f[FMT_N];
+    int32_t q[FMT_N];
+    int q16;
+    uint64_t bytes; /* keeps the work observable */
+} fmt_ctx;
+
+static int op_format(void *p)
+{
+    fmt_ctx *c = (fmt_ctx *)p;
+    char b[32];
+    uint32_t i;
+    uint64_t n = 0;
+    if (c->q16)
+        for (i = 0; i < FMT_N; i++) n += subd_q16_format(c->q[i], b);
+    else
+        for (i = 0; i < FMT_N; i++) n += subd_real_format(c->f[i], b);
+    c->bytes += n;
+    return SUBD_OK;
+}
+
+static uint32_t xorshift32(uint32_t *s)
+{
+    uint32_t x = *s;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return *s = x;
+}
+
+/* Float32 (subd_real_format) and Q16.16 (its integer formatter, subd_q16_format) on two inputs
+ * each: uniform bit patterns (all exponents) and coordinate-like values (uniform in (-4, 4):
+ * the 8-9 significant digits a subdivided mesh's coordinates have). */
+static void section_format(void)
+{
+    static fmt_ctx c;
+    static const char *const what[4] = {"float32 bit patterns", "float32 in (-4, 4)", "q16.16 bit patterns",
+                                        "q16.16 in (-4, 4)"};
+    uint32_t st = 12345u, i;
+    int k, runs;
+    printf("\n== number formatting (subd_real_format, subd_q16_format); reproduce: " REPRO " -s format\n"
+           "%u values per run, formatted into a stack buffer; M num/s = million values per second (median\n"
+           "wall-clock run); CPU M num/s = the same from the mean process CPU time per run.\n",
+           FMT_N);
+    printf("%-24s %10s %10s %12s %12s %5s\n", "input", "ns/number", "M num/s", "CPU M num/s", "bytes/number",
+           "runs");
+    for (k = 0; k < 4; k++) {
+        double ns, cpu;
+        struct timespec c0, c1;
+        for (i = 0; i < FMT_N; i++) {
+            uint32_t r = xorshift32(&st);
+            union { uint32_t u; float f; } u;
+            if (k == 0) {
+                while ((r & 0x7f800000u) == 0x7f800000u) r = xorshift32(&st);
+                u.u = r;
+                c.f[i] = u.f;
+            } else if (k == 1) {
+                c.f[i] = (float)((double)(int32_t)r / 536870912.0);
+            } else if (k == 2) {
+                c.q[i] = (int32_t)r;
+            } else {
+                c.q[i] = (int32_t)r >> 13;
+            }
+        }
+        c.q16 = k >= 2;
+        c.bytes = 0;
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
+        ns = measure(op_format, &c, &runs);
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+        /* the mean process CPU time per run too: on a shared machine the wall clock also
+         * counts the time other jobs held the CPU */
+        cpu = ((double)(c1.tv_sec - c0.tv_sec) * 1e9 + (double)(c1.tv_nsec - c0.tv_nsec)) / runs;
+        printf("%-24s %10.2f %10.2f %12.2f %12.2f %5d\n", what[k], ns / FMT_N, FMT_N / ns * 1e3,
+               FMT_N / cpu * 1e3, (double)c.bytes / ((double)FMT_N * runs), runs);
+    }
+}
+
+/* ==================================================================================== */
 
 /* Every .obj in dir (malloc'd paths, sorted by name), count in *n. */
 static char **list_objs(const char *dir, int *n)
@@ -1462,7 +1546,7 @@ static int section_on(const char *sections, const char *name)
 static int usage(int rc)
 {
     fprintf(rc ? stderr : stdout,
-            "usage: bench [-t SECONDS] [-s parse,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild,valence48] [FILE.obj ...]\n"
+            "usage: bench [-t SECONDS] [-s parse,format,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild,valence48] [FILE.obj ...]\n"
             "       bench -s demostream\n");
     return rc;
 }
@@ -1495,7 +1579,7 @@ int main(int argc, char **argv)
         if (!def || ndef == 0) {
             printf("bench: no .obj files in %s/ (shared mesh data absent); mesh sections skipped, curves "
                    "only\n", DEFAULT_DIR);
-            sections = "alpha";
+            sections = "alpha,format";
         }
         nfiles = ndef;
         files = def;
@@ -1513,6 +1597,7 @@ int main(int argc, char **argv)
         for (k = 0; k < nfiles; k++) failed += bench_file(files[k]);
     }
     failed += load_meshes(files, nfiles);
+    if (section_on(sections, "format")) section_format();
     if (section_on(sections, "loop")) section_loop();
     if (section_on(sections, "stream")) section_stream();
     if (section_on(sections, "limit")) section_limit();

@@ -162,11 +162,12 @@ int subd_real_parse(const char **p, const char *end, subd_real *out);
 /* Writes x as decimal text into buf (at least 24 bytes), without a terminator; returns the
  * number of characters. Float32: the shortest decimal that subd_real_parse (or any correct
  * strtof) reads back to the same bits, at most 9 significant digits and 15 characters,
- * the nearest one when several are shortest; positional when the decimal exponent of those
+ * the nearest one when several are shortest (an exact tie: the larger magnitude); positional
+ * when the decimal exponent of those
  * digits is -4..8, otherwise d.ddde+XX like printf's %g: "0.1", "-1.25", "100", "1e+30", "1.0000001e+30", "1e-45",
  * "-0". Non-finite values give "inf", "-inf", "nan" (which the parser rejects). Q16.16:
  * the exact value of x / 65536, up to 16 fraction digits, trailing zeros and point removed:
- * "3", "-0.5", "0.0000152587890625", at most 23 characters. Stack: about 330 bytes (float). */
+ * "3", "-0.5", "0.0000152587890625", at most 23 characters. Stack: about 120 bytes (float). */
 uint32_t subd_real_format(subd_real x, char *buf);
 
 /* subd_cos_turns, subd_sin_turns: deterministic cos and sin of the angle 2*pi*num/den

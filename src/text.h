@@ -31,6 +31,10 @@ int subd_text_line_is_text(const char *s, const char *e);
  * line end. */
 int subd_text_parse_real(const char **s, const char *e, subd_real *out);
 
+/* x / 65536 as exact decimal text (subd_real_format of the Q16.16 build, src/real_format.c;
+ * int32 only, so it exists in the float build too). At most 23 bytes, no NUL. */
+uint32_t subd_q16_format(int32_t x, char *buf);
+
 /* Output sink: writes while there is room, always counts. */
 typedef struct text_sink {
     char *buf;

@@ -3,6 +3,7 @@
 SUITE(suite_harness)
 SUITE(suite_arena)
 SUITE(suite_real)
+SUITE(suite_format)
 SUITE(suite_trig)
 SUITE(suite_selfcheck)
 SUITE(suite_mesh)

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: MIT
 // OpenSubdiv (3.5, Far API) Loop driver: DRIVER loop MESH.obj LEVELS
+//                                      or DRIVER loop-obj MESH.obj LEVELS OUT.obj
 // The standard uniform-refinement path of the Far tutorials: TopologyDescriptor ->
 // TopologyRefinerFactory::Create (untimed, like building tinysubd's input mesh), then timed:
 // RefineUniform(LEVELS) + PrimvarRefiner::Interpolate of the float xyz positions level by level
 // into one buffer of all levels' vertices. Single-threaded (CPU, no OpenMP/TBB evaluator).
+// loop-obj (the end-to-end row of run.sh, timed as a whole process from outside) also writes
+// the last level as OBJ: "v x y z" with printf's "%.9g" (9 significant digits: the text reads
+// back to the same float, as tinysubd's shortest text does) and "f a b c" (1-based), the
+// Far tutorials' way of writing a level, through one stdio stream.
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include "peer_common.hpp"
@@ -23,7 +28,8 @@ struct Vertex {
 
 int main(int argc, char **argv)
 {
-    if (argc != 4 || std::strcmp(argv[1], "loop") != 0) peer_usage(argv[0]);
+    bool obj_out = argc == 5 && std::strcmp(argv[1], "loop-obj") == 0;
+    if (!obj_out && (argc != 4 || std::strcmp(argv[1], "loop") != 0)) peer_usage(argv[0]);
     int levels = std::atoi(argv[3]);
     ObjData obj;
     if (!peer_read_obj(argv[2], obj)) { std::fprintf(stderr, "cannot read %s\n", argv[2]); return 1; }
@@ -68,7 +74,21 @@ int main(int argc, char **argv)
     double check = 0; // keep the result observable
     for (int i = 0; i < last.GetNumVertices(); i += 97) check += src[i].p[0];
     if (check != check) std::fprintf(stderr, "NaN in output\n");
-    peer_report("opensubdiv", "loop", argv[2], levels, last.GetNumFaces(), last.GetNumVertices(),
+    if (obj_out) {
+        FILE *f = std::fopen(argv[4], "wb");
+        if (!f) { std::fprintf(stderr, "cannot write %s\n", argv[4]); return 1; }
+        std::fprintf(f, "# opensubdiv\n");
+        for (int i = 0; i < last.GetNumVertices(); ++i)
+            std::fprintf(f, "v %.9g %.9g %.9g\n", (double)src[i].p[0], (double)src[i].p[1], (double)src[i].p[2]);
+        for (int i = 0; i < last.GetNumFaces(); ++i) {
+            Far::ConstIndexArray fv = last.GetFaceVertices(i);
+            std::fputc('f', f);
+            for (int k = 0; k < fv.size(); ++k) std::fprintf(f, " %d", fv[k] + 1);
+            std::fputc('\n', f);
+        }
+        if (std::fclose(f) != 0) { std::fprintf(stderr, "cannot write %s\n", argv[4]); return 1; }
+    }
+    peer_report("opensubdiv", obj_out ? "loop-obj" : "loop", argv[2], levels, last.GetNumFaces(), last.GetNumVertices(),
                 t1 - t0, c1 - c0, rss_before);
     delete refiner;
     return 0;

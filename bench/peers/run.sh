@@ -10,7 +10,9 @@
 # implementations exceeds it, default 60), MEM_LIMIT_MB (skip an implementation whose
 # predicted max RSS exceeds it, default 8192), PEERS_NO_INSTALL=1 (never call apt-get),
 # LOOP_LEVELS (the Loop levels to run, default "1 2 3 4 5"; e.g. "3 4 5" for the targets only),
-# PEERS_OUT (build directory of the drivers and results, default build/peers).
+# PEERS_OUT (build directory of the drivers and results, default build/peers),
+# E2E_MESHES / E2E_LEVEL (the end-to-end OBJ row: default spot_triangulated, level 5),
+# E2E_ONLY=1 (run only the end-to-end row).
 # Loop runs five implementations: tinysubd (subd_loop), stream (tinysubd's subd_loop_stream into
 # a checksum sink, reported as tinysubd-stream), osd, cgal, openmesh.
 #
@@ -36,7 +38,7 @@ MESHES="spot_triangulated nefertiti stanford-bunny-open"
 IMPLS="tinysubd stream osd cgal openmesh"  # stream = tinysubd's subd_loop_stream (Loop only)
 
 # ------------------------------------------------------------------ packages
-PKGS="libosd-dev libcgal-dev libopenmesh-dev"
+PKGS="libosd-dev libcgal-dev libopenmesh-dev time"  # time: /usr/bin/time for the end-to-end row
 missing=
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -67,8 +69,9 @@ $CXX $CXXFLAGS bench/peers/openmesh_driver.cpp -o "$OUT/openmesh_driver" -lOpenM
     2>"$OUT/build-openmesh.log" & p3=$!
 $CXX $CXXFLAGS bench/peers/cgal_driver.cpp -o "$OUT/cgal_driver" -lgmp -lmpfr \
     2>"$OUT/build-cgal.log" & p4=$!
+${MAKE:-make} --no-print-directory build/bin/subd >"$OUT/build-subd.log" 2>&1 & p5=$!  # the tool, for end to end
 fail=0
-for p in $p1 $p2 $p3 $p4; do wait $p || fail=1; done
+for p in $p1 $p2 $p3 $p4 $p5; do wait $p || fail=1; done
 if [ $fail -ne 0 ]; then cat "$OUT"/build-*.log >&2; echo "driver build failed" >&2; exit 1; fi
 
 ver() { dpkg-query -W -f='${Version}' "$1" 2>/dev/null || echo "?"; }
@@ -78,6 +81,7 @@ echo "versions: tinysubd $(sed -n 's/^#define SUBD_VERSION "\(.*\)"/\1/p' includ
 echo "machine: $(nproc) CPUs, $(awk '/MemTotal/ {printf "%.1f GB", $2/1048576}' /proc/meminfo)," \
      "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 
+if [ "${E2E_ONLY:-0}" != 1 ]; then
 # ------------------------------------------------------------------ run
 RES="$OUT/results.txt"
 : >"$RES"
@@ -294,3 +298,67 @@ END {
 }' "$RES"
 if [ -s "$SKIPS" ]; then echo "skipped / failed:"; sed 's/^/  /' "$SKIPS"; fi
 echo "raw lines: $RES"
+fi
+
+# ------------------------------------------------------------------ end to end: OBJ file
+# The whole process, file to file: `subd loop -l L MESH -o out.obj` (read, build, Loop, write
+# the OBJ text) against `osd_driver loop-obj MESH L out.obj` (read, Far refine, interpolate,
+# write with printf "%.9g"), each REPS times in a fresh process under /usr/bin/time; the
+# median of the process CPU time (user + system; TIME=wall: elapsed) and of the max RSS.
+E2E_MESHES=${E2E_MESHES:-spot_triangulated}
+E2E_LEVEL=${E2E_LEVEL:-5}
+E2E="$OUT/e2e.txt"
+: >"$E2E"
+echo
+echo "== end to end (time = $TIME; REPS=$REPS): subd loop -l $E2E_LEVEL MESH -o out.obj vs osd_driver loop-obj MESH $E2E_LEVEL out.obj"
+for m in $E2E_MESHES; do
+    n=0
+    while [ $n -lt "$REPS" ]; do
+        for i in tinysubd osd; do
+            if [ $i = tinysubd ]; then
+                set -- build/bin/subd loop -l "$E2E_LEVEL" "$MESH_DIR/$m.obj" -o "$OUT/e2e-$i.obj"
+            else
+                set -- "$OUT/osd_driver" loop-obj "$MESH_DIR/$m.obj" "$E2E_LEVEL" "$OUT/e2e-$i.obj"
+            fi
+            if ! /usr/bin/time -f "%e %U %S %M" -o "$OUT/e2e-time.txt" "$@" >/dev/null 2>"$OUT/last-stderr.txt"; then
+                echo "  $m L$E2E_LEVEL $i: failed: $(tail -n 1 "$OUT/last-stderr.txt")"
+                continue
+            fi
+            echo "$i $m $(tail -n 1 "$OUT/e2e-time.txt") $(wc -c <"$OUT/e2e-$i.obj")" >>"$E2E"
+        done
+        n=$((n + 1))
+    done
+done
+rm -f "$OUT/e2e-tinysubd.obj" "$OUT/e2e-osd.obj"
+awk -v tmode="$TIME" -v level="$E2E_LEVEL" '
+function median(k,    n, i, j, a, t) {
+    n = cnt[k]; for (i = 1; i <= n; i++) a[i] = v[k, i]
+    for (i = 2; i <= n; i++) { t = a[i]; for (j = i - 1; j >= 1 && a[j] > t; j--) a[j + 1] = a[j]; a[j + 1] = t }
+    return (n % 2) ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
+}
+{   # impl mesh elapsed user sys maxrss_kb bytes
+    k = $1 SUBSEP $2; n = ++cnt[k]
+    v[k, n] = (tmode == "wall") ? $3 : $4 + $5
+    rk = "rss" SUBSEP k; cnt[rk] = n; v[rk, n] = $6
+    bytes[k] = $7
+    if (!($2 in seen)) { seen[$2] = 1; ms[++nm] = $2 }
+}
+END {
+    printf "%-20s %2s | %8s %6s %9s | %8s %6s %9s | %6s | %s\n", "mesh", "L", "subd s", "MB", "OBJ MB",
+           "osd s", "MB", "OBJ MB", "speed", "target (>= 2x)"
+    tested = 0; met = 0
+    for (i = 1; i <= nm; i++) {
+        a = "tinysubd" SUBSEP ms[i]; b = "osd" SUBSEP ms[i]
+        if (!(a in cnt) || !(b in cnt)) { printf "%-20s %2s | missing runs\n", ms[i], level; continue }
+        ta = median(a); tb = median(b); sp = tb / ta; tested++
+        ok = sp >= 2 ? "met" : "NOT met"; if (sp >= 2) met++
+        printf "%-20s %2s | %8.3f %6.0f %9.1f | %8.3f %6.0f %9.1f | %6.2f | %s (n=%d)\n", ms[i], level, ta,
+               median("rss" SUBSEP a) / 1024, bytes[a] / 1048576, tb, median("rss" SUBSEP b) / 1024,
+               bytes[b] / 1048576, sp, ok, cnt[a]
+    }
+    print "speed = OpenSubdiv process " (tmode == "wall" ? "elapsed" : "CPU (user + system)") " seconds / subd process seconds (medians); MB = max RSS (MiB)."
+    if (tested == 0) print "E2E TARGET: not evaluated"
+    else if (met == tested) printf "E2E TARGET MET in all %d cases (subd loop to OBJ >= 2x faster than OpenSubdiv writing OBJ)\n", tested
+    else printf "E2E TARGET NOT MET: %d of %d cases >= 2x\n", met, tested
+}' "$E2E"
+echo "raw lines (impl mesh elapsed user sys maxrss_kb obj_bytes): $E2E"

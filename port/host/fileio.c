@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Host file wrappers: whole-file I/O and mesh reading by extension (see fileio.h). */
+/* Host file wrappers: whole-file I/O, a buffered output file and the writers' record
+ * formatting, and mesh reading by extension (see fileio.h). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdio.h>
@@ -103,6 +104,82 @@ int host_write_file(const char *path, const void *buf, uint32_t len)
         return -1;
     }
     return 0;
+}
+
+int host_out_open(host_out *o, const char *path)
+{
+    struct stat sb;
+    o->path = path;
+    o->err = 0;
+    o->fill = 0;
+    o->bytes = 0;
+    o->regular = 0;
+    if (!path) { errno = EINVAL; return -1; }
+    o->f = fopen(path, "wb");
+    if (!o->f) return -1;
+    o->regular = fstat(fileno(o->f), &sb) == 0 && S_ISREG(sb.st_mode);
+    return 0;
+}
+
+static int out_flush(host_out *o)
+{
+    if (o->err) return -1;
+    errno = 0;
+    if (o->fill && fwrite(o->buf, 1, o->fill, o->f) != o->fill) {
+        o->err = errno ? errno : EIO;
+        return -1;
+    }
+    o->bytes += o->fill;
+    o->fill = 0;
+    return 0;
+}
+
+char *host_out_room(host_out *o, uint32_t n)
+{
+    if (o->fill + n > HOST_OUT_BUF && out_flush(o) != 0) return NULL;
+    return o->err ? NULL : o->buf + o->fill;
+}
+
+int host_out_close(host_out *o, int ok)
+{
+    if (!o->f) return -1;
+    if (ok) (void)out_flush(o);
+    errno = 0;
+    if (fclose(o->f) != 0 && !o->err) o->err = errno ? errno : EIO;
+    o->f = NULL;
+    if (!ok && !o->err) o->err = EIO; /* the caller's failure: the file is incomplete */
+    if (o->err) {
+        if (o->regular) remove(o->path);
+        errno = o->err;
+        return -1;
+    }
+    return 0;
+}
+
+uint32_t host_fmt_u32(char *b, uint32_t v)
+{
+    char t[10];
+    uint32_t n = 0, i;
+    do {
+        t[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v);
+    for (i = 0; i < n; i++) b[i] = t[n - 1u - i];
+    return n;
+}
+
+uint32_t host_fmt_xyz(char *b, const char *kw, const subd_real *p)
+{
+    uint32_t n = 0, k;
+    while (kw[n]) {
+        b[n] = kw[n];
+        n++;
+    }
+    for (k = 0; k < 3u; k++) {
+        n += subd_real_format(p[k], b + n);
+        b[n++] = k < 2u ? ' ' : '\n';
+    }
+    return n;
 }
 
 const char *host_read_error_str(int rc)

@@ -5,6 +5,7 @@
 #ifndef FILEIO_H
 #define FILEIO_H
 #include <stdint.h>
+#include <stdio.h>
 #include "subd.h"
 
 /* Inputs larger than this are refused before anything is read (the tool reads an input
@@ -28,6 +29,39 @@ const char *host_read_error_str(int rc);
 /* Writes buf[0..len) to path (created or truncated). Returns 0, or -1 with errno set; a
  * partially written regular file is removed (a device or FIFO path is left alone). */
 int host_write_file(const char *path, const void *buf, uint32_t len);
+
+/* An output file written through one fixed buffer (HOST_OUT_BUF bytes), so writing a mesh
+ * costs no memory beyond the mesh: the writers format straight into the buffer
+ * (host_out_room) and it goes to the file whenever it is full. */
+#define HOST_OUT_BUF 65536u
+#define HOST_OUT_ROOM_MAX 1024u /* the most host_out_room hands out at once */
+typedef struct host_out {
+    FILE *f;
+    const char *path;
+    int regular;       /* a regular file: removed again when the write fails            */
+    int err;           /* errno of the first failure (0: none)                           */
+    uint32_t fill;     /* bytes in buf                                                   */
+    uint64_t bytes;    /* bytes handed to the file so far                                */
+    char buf[HOST_OUT_BUF];
+} host_out;
+
+/* Creates or truncates path for writing. Returns 0, or -1 with errno set. */
+int host_out_open(host_out *o, const char *path);
+/* n <= HOST_OUT_ROOM_MAX bytes of room at o->buf + o->fill (writing the buffer out first when
+ * needed); the caller writes there and adds what it used to o->fill. NULL after a write
+ * error (o->err set). */
+char *host_out_room(host_out *o, uint32_t n);
+/* Writes the buffer out and closes; with ok == 0 (the caller failed) or any write failure a
+ * partially written regular file is removed (a device or FIFO is left alone). Returns 0, or
+ * -1 with errno set (o->err). o->bytes is the file's length on success. */
+int host_out_close(host_out *o, int ok);
+
+/* The library's text for numbers (subd_real_format) in the writers' record shapes:
+ * host_fmt_u32 writes v in decimal (<= 10 bytes); host_fmt_xyz writes kw (NUL-terminated,
+ * <= 8 bytes) then the three reals separated by spaces and a newline (<= 8 + 3 * 24 bytes):
+ * "v x y z\n", "vn x y z\n", the bytes src/obj.c and src/off.c write. Both return the length. */
+uint32_t host_fmt_u32(char *b, uint32_t v);
+uint32_t host_fmt_xyz(char *b, const char *kw, const subd_real *p);
 
 /* File formats known by extension (case-insensitive). */
 typedef enum host_format {

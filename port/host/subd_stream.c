@@ -12,7 +12,7 @@
  *          with --limit its vn) is written the first time a triangle uses it, just before that
  *          f line, so vertices are numbered in first-use order; the text is streamed.
  *   .off   needs its counts first: vertices and triangles are gathered in host memory and
- *          written at the end by the library's OFF writer.
+ *          written at the end by the tool's OFF writer (subd_write.c, streamed to the file).
  *   none   (--stats without -o) a counting sink, for timing the stream alone.
  * Coordinates in .obj/.off are subd_real_format's, the bytes `subd loop` writes for the same
  * vertex; in .stl float32 (Q16.16: x / 65536.0 rounded to float). Isolated control vertices
@@ -188,30 +188,6 @@ static int gather_id(stream_sink *s, uint64_t id, uint32_t *num, int *fresh)
     return 0;
 }
 
-static uint32_t fmt_u32(char *b, uint32_t v)
-{
-    char t[10];
-    uint32_t n = 0, i;
-    do {
-        t[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v);
-    for (i = 0; i < n; i++) b[i] = t[n - 1u - i];
-    return n;
-}
-
-/* "KW x y z\n" with the library's number format (as src/obj.c writes them); <= 76 bytes. */
-static uint32_t fmt_xyz(char *b, const char *kw, const subd_real *p)
-{
-    uint32_t n = (uint32_t)strlen(kw), k;
-    memcpy(b, kw, n);
-    for (k = 0; k < 3u; k++) {
-        n += subd_real_format(p[k], b + n);
-        b[n++] = k < 2u ? ' ' : '\n';
-    }
-    return n;
-}
-
 static int obj_tri(void *ctx, const subd_loop_tri *t)
 {
     stream_sink *s = (stream_sink *)ctx;
@@ -223,8 +199,8 @@ static int obj_tri(void *ctx, const subd_loop_tri *t)
         if ((st = gather_id(s, t->id[c], &num[c], &fresh)) != 0) return st;
         if (!fresh) continue;
         if (!(o = (char *)out_room(s, 160u))) return SINK_WRITE;
-        n = fmt_xyz(o, "v ", t->pos[c]);
-        if (s->limit) n += fmt_xyz(o + n, "vn ", t->normal[c]);
+        n = host_fmt_xyz(o, "v ", t->pos[c]);
+        if (s->limit) n += host_fmt_xyz(o + n, "vn ", t->normal[c]);
         s->fill += n;
     }
     if (!(o = (char *)out_room(s, 80u))) return SINK_WRITE;
@@ -232,11 +208,11 @@ static int obj_tri(void *ctx, const subd_loop_tri *t)
     o[n++] = 'f';
     for (c = 0; c < 3u; c++) {
         o[n++] = ' ';
-        n += fmt_u32(o + n, num[c]);
+        n += host_fmt_u32(o + n, num[c]);
         if (s->limit) {
             o[n++] = '/';
             o[n++] = '/';
-            n += fmt_u32(o + n, num[c]);
+            n += host_fmt_u32(o + n, num[c]);
         }
     }
     o[n++] = '\n';

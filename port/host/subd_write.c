@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* subd tool: the writers. OUTPUT by extension: .obj/.off through the library's writers
- * (sized by their counting call, then written in one piece), .png through the renderer,
- * .xyz as plain points; and the one --stats JSON object on stdout.
+/* subd tool: the writers. OUTPUT by extension: .obj/.off/.xyz as text streamed to the file
+ * through one fixed 64 KiB buffer (host_out, fileio.h): the bytes of the library's writers
+ * (subd_obj_write, subd_off_write, with subd_real_format's numbers), but no copy of the text in
+ * memory, so writing costs the mesh and 64 KiB. .png through the renderer; and the one
+ * --stats JSON object on stdout.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -51,65 +53,154 @@ static int write_png(tool_run *r)
     return EXIT_OK;
 }
 
+/* Opens OUTPUT for a streamed text writer: the host_out (64 KiB buffer) or NULL after
+ * reporting the failure in *rc. */
+static host_out *out_open(tool_run *r, int *rc)
+{
+    host_out *o = (host_out *)malloc(sizeof *o);
+    if (!o) {
+        *rc = tool_out_of_memory();
+        return NULL;
+    }
+    if (host_out_open(o, r->o.output) != 0) {
+        free(o);
+        *rc = write_failed(r->o.output);
+        return NULL;
+    }
+    return o;
+}
+
+/* Closes OUTPUT (ok: the whole text went into o), sets out_bytes; the tool's exit status. */
+static int out_finish(tool_run *r, host_out *o, int ok)
+{
+    int rc = host_out_close(o, ok);
+    uint64_t n = o->bytes;
+    free(o);
+    if (rc != 0) return write_failed(r->o.output);
+    r->out_bytes = n > UINT32_MAX ? UINT32_MAX : (uint32_t)n;
+    return EXIT_OK;
+}
+
 /* Plain points for CNC use: "x y z" per line in the library's exact decimal form; the
  * points of each polyline in order with a blank line between polylines, or every vertex
  * when there are no polylines. */
 static int write_xyz(tool_run *r)
 {
     const subd_mesh *m = &r->out;
-    FILE *f = fopen(r->o.output, "w");
     uint32_t l, c, nl = m->num_lines ? m->num_lines : 1u;
-    long n;
-    if (!f) return write_failed(r->o.output);
-    for (l = 0; l < nl; l++) {
+    int rc = EXIT_OK, ok = 1;
+    host_out *o = out_open(r, &rc);
+    char *p;
+    if (!o) return rc;
+    for (l = 0; ok && l < nl; l++) {
         uint32_t s = m->num_lines ? m->line_start[l] : 0u;
         uint32_t e = m->num_lines ? m->line_start[l + 1u] : m->num_verts;
-        if (l) fputc('\n', f);
+        if (l) {
+            if (!(p = host_out_room(o, 1u))) { ok = 0; break; }
+            *p = '\n';
+            o->fill++;
+        }
         for (c = s; c < e; c++) {
-            uint32_t v = m->num_lines ? m->line_vert[c] : c, k;
-            for (k = 0; k < 3u; k++) {
-                char b[32];
-                uint32_t len = subd_real_format(m->pos[3u * v + k], b);
-                fwrite(b, 1, len, f);
-                fputc(k < 2u ? ' ' : '\n', f);
-            }
+            uint32_t v = m->num_lines ? m->line_vert[c] : c;
+            if (!(p = host_out_room(o, 96u))) { ok = 0; break; }
+            o->fill += host_fmt_xyz(p, "", &m->pos[3u * v]);
         }
     }
-    n = ftell(f);
-    if (ferror(f) | (fclose(f) != 0)) return write_failed(r->o.output);
-    r->out_bytes = n > 0 ? (uint32_t)n : 0u;
-    return EXIT_OK;
+    return out_finish(r, o, ok);
+}
+
+/* The library's OBJ text (src/obj.c: subd_obj_write, subd_obj_write_normals), written
+ * record by record into the output buffer instead of being counted and formatted into
+ * memory first: "# tinysubd", v (then vn when there are normals: vertex i has normal i),
+ * f (1-based; "a//a" with normals), l. */
+static int emit_obj(host_out *o, const subd_mesh *m, const subd_real *nrm)
+{
+    uint32_t v, f, c;
+    char *p;
+    if (!(p = host_out_room(o, 11u))) return 0;
+    memcpy(p, "# tinysubd\n", 11u);
+    o->fill += 11u;
+    for (v = 0; v < m->num_verts; v++) {
+        if (!(p = host_out_room(o, 96u))) return 0;
+        o->fill += host_fmt_xyz(p, "v ", &m->pos[3u * v]);
+    }
+    for (v = 0; nrm && v < m->num_verts; v++) {
+        if (!(p = host_out_room(o, 96u))) return 0;
+        o->fill += host_fmt_xyz(p, "vn ", &nrm[3u * v]);
+    }
+    for (f = 0; f < m->num_faces + m->num_lines; f++) {
+        const uint32_t *start = f < m->num_faces ? m->face_start : m->line_start;
+        const uint32_t *vert = f < m->num_faces ? m->corner_vert : m->line_vert;
+        uint32_t i = f < m->num_faces ? f : f - m->num_faces;
+        if (!(p = host_out_room(o, 2u))) return 0;
+        *p = f < m->num_faces ? 'f' : 'l';
+        o->fill++;
+        for (c = start[i]; c < start[i + 1u]; c++) {
+            uint32_t n;
+            if (!(p = host_out_room(o, 24u))) return 0;
+            p[0] = ' ';
+            n = 1u + host_fmt_u32(p + 1, vert[c] + 1u);
+            if (nrm && f < m->num_faces) {
+                p[n++] = '/';
+                p[n++] = '/';
+                n += host_fmt_u32(p + n, vert[c] + 1u);
+            }
+            o->fill += n;
+        }
+        if (!(p = host_out_room(o, 1u))) return 0;
+        *p = '\n';
+        o->fill++;
+    }
+    return 1;
+}
+
+/* The library's OFF text (src/off.c: subd_off_write): "OFF", the counts V F E, "x y z" per
+ * vertex, "n i j k ..." per face (0-based). */
+static int emit_off(host_out *o, const subd_mesh *m)
+{
+    uint32_t v, f, c, n;
+    char *p;
+    if (!(p = host_out_room(o, 40u))) return 0;
+    memcpy(p, "OFF\n", 4u);
+    n = 4u;
+    n += host_fmt_u32(p + n, m->num_verts);
+    p[n++] = ' ';
+    n += host_fmt_u32(p + n, m->num_faces);
+    p[n++] = ' ';
+    n += host_fmt_u32(p + n, m->num_edges);
+    p[n++] = '\n';
+    o->fill += n;
+    for (v = 0; v < m->num_verts; v++) {
+        if (!(p = host_out_room(o, 96u))) return 0;
+        o->fill += host_fmt_xyz(p, "", &m->pos[3u * v]);
+    }
+    for (f = 0; f < m->num_faces; f++) {
+        if (!(p = host_out_room(o, 12u))) return 0;
+        o->fill += host_fmt_u32(p, m->face_start[f + 1u] - m->face_start[f]);
+        for (c = m->face_start[f]; c < m->face_start[f + 1u]; c++) {
+            if (!(p = host_out_room(o, 12u))) return 0;
+            p[0] = ' ';
+            o->fill += 1u + host_fmt_u32(p + 1, m->corner_vert[c]);
+        }
+        if (!(p = host_out_room(o, 1u))) return 0;
+        *p = '\n';
+        o->fill++;
+    }
+    return 1;
 }
 
 static int write_mesh(tool_run *r)
 {
-    int (*writer)(const subd_mesh *, char *, uint32_t, uint32_t *) =
-        (r->o.out_format == HOST_FMT_OBJ) ? subd_obj_write : subd_off_write;
-    uint32_t len = 0;
-    char *buf;
-    int st = r->extra.normals ? subd_obj_write_normals(&r->out, r->extra.normals, NULL, 0, &len)
-                              : writer(&r->out, NULL, 0, &len);
-    if (st != SUBD_OK) {
-        tool_error("%s: %s", r->o.output, subd_status_str(st));
-        return st == SUBD_ERR_TOO_BIG ? EXIT_LIMIT : EXIT_OUTPUT;
-    }
+    host_out *o;
+    int rc = EXIT_OK, ok;
     if (r->o.out_format == HOST_FMT_OFF && r->out.num_lines)
         fprintf(stderr, "subd: warning: %s: OFF has no polylines; %lu polyline(s) not written\n",
                 r->o.output, (unsigned long)r->out.num_lines);
-    buf = (char *)malloc((size_t)len + 1u);
-    if (!buf) return tool_out_of_memory();
-    st = r->extra.normals ? subd_obj_write_normals(&r->out, r->extra.normals, buf, len, &len)
-                          : writer(&r->out, buf, len, &len);
-    if (st != SUBD_OK) {
-        free(buf);
-        tool_error("%s: %s", r->o.output, subd_status_str(st));
-        return EXIT_OUTPUT;
-    }
-    st = host_write_file(r->o.output, buf, len);
-    free(buf);
-    if (st != 0) return write_failed(r->o.output);
-    r->out_bytes = len;
-    return EXIT_OK;
+    if (!(o = out_open(r, &rc))) return rc;
+    /* with normals the OBJ text, whatever the extension (as the library-writer version did) */
+    ok = (r->extra.normals || r->o.out_format == HOST_FMT_OBJ) ? emit_obj(o, &r->out, r->extra.normals)
+                                                                : emit_off(o, &r->out);
+    return out_finish(r, o, ok);
 }
 
 /* Writes OUTPUT in the format its extension names. */

@@ -677,7 +677,8 @@ static void normal_dbl(const subd_mesh *m, uint32_t v, double *n)
  * moved by exactly the normal component of the interior rule's displacement (target 1/2 p
  * + 1/2 the mean of its new neighbours in b) along its area-weighted normal in a; so its
  * displacement x unit normal is ~0. New boundary vertices are the midpoints of their edge.
- * Returns how many boundary vertices moved by more than 1e-3. Tolerances: Q16.16 4 LSB
+ * *worst_cross: the largest |displacement x unit normal|^2. Returns how many boundary
+ * vertices moved by more than 1e-3. Tolerances: Q16.16 4 LSB
  * (the normal's direction is kept to 2^-19, the projection rounds once, the target once);
  * float32 2e-6 (coordinates below 4, a few roundings). */
 static uint32_t check_normal_step(const subd_mesh *a, const subd_mesh *b, double *worst_cross)
@@ -686,7 +687,7 @@ static uint32_t check_normal_step(const subd_mesh *a, const subd_mesh *b, double
     uint32_t v, k, moved = 0;
     for (v = 0; v < b->num_verts; v++) {
         uint32_t ring[32], n, j, cnt = 0;
-        double t[3] = {0, 0, 0}, p[3], nn[3], dd[3], dn = 0, n2 = 0, cr[3], c2, len;
+        double t[3] = {0, 0, 0}, p[3], nn[3], dd[3], dn = 0, n2 = 0, cr[3], c2;
         if (!(b->vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
         n = subd_vertex_ring(b, v, ring, 32);
         if (!CHECK(n >= 2u && n <= 32u)) return moved;
@@ -720,14 +721,14 @@ static uint32_t check_normal_step(const subd_mesh *a, const subd_mesh *b, double
             dd[k] = h_dbl(b->pos[3u * v + k]) - p[k];
             CHECK(fabs(h_dbl(b->pos[3u * v + k]) - want) <= tol);
         }
-        len = sqrt(n2);
-        cr[0] = (dd[1] * nn[2] - dd[2] * nn[1]) / len;
-        cr[1] = (dd[2] * nn[0] - dd[0] * nn[2]) / len;
-        cr[2] = (dd[0] * nn[1] - dd[1] * nn[0]) / len;
-        c2 = sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
-        CHECK(c2 <= tol);
+        /* |d x n|^2 / |n|^2 = |d x unit normal|^2, squared: no sqrt (libm) on the device */
+        cr[0] = dd[1] * nn[2] - dd[2] * nn[1];
+        cr[1] = dd[2] * nn[0] - dd[0] * nn[2];
+        cr[2] = dd[0] * nn[1] - dd[1] * nn[0];
+        c2 = (cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]) / n2;
+        CHECK(c2 <= tol * tol);
         if (c2 > *worst_cross) *worst_cross = c2;
-        if (sqrt(dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2]) > 1e-3) moved++;
+        if (dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2] > 1e-6) moved++;
     }
     return moved;
 }
@@ -764,11 +765,10 @@ static void q48_normal_box(void)
         cur = nxt;
     }
     CHECK(moved >= 16u); /* at least the 16 input boundary vertices once */
-    h_str("    tube, normal boundary, 3 steps: boundary vertices moved ");
-    h_u32(moved);
-    h_str(", worst |displacement x unit normal| (1e-9 units) ");
-    h_u32((uint32_t)(worst * 1e9 + 0.5));
-    h_nl();
+#if H_HOST
+    printf("    tube, normal boundary, 3 steps: boundary vertices moved %u, worst |displacement x unit normal| %.3g\n",
+           (unsigned)moved, sqrt(worst));
+#endif
     /* the same three steps in one call give the same mesh */
     if (!run(&a, &in, &o3, &m)) return;
     CHECK_EQ(m.num_verts, cur.num_verts);

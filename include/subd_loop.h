@@ -259,11 +259,30 @@ typedef struct subd_pia_opts {
     subd_pia_method method;
 } subd_pia_opts;
 
+/* One phase of the paper's sequencing (section 4): the boundary vertices (tagged
+ * SUBD_VTAG_BOUNDARY) first, then the interior (every other vertex) with the boundary fixed.
+ * iterations: the iterations spent in the phase (PAPER: phase 1 and phase 2; FAST: the curve
+ * phase, boundary and crease vertices, counts as the boundary phase of an open mesh, the
+ * smooth phase and the final polish as interior; with darts FAST runs one phase over all
+ * vertices, counted as interior). boundary.iterations + interior.iterations = iterations
+ * (interior is the difference, so a preconditioned half iteration is counted once). A
+ * closed mesh has an empty boundary phase: 0 iterations, 0 vertices, errors 0. verts: the
+ * vertices of the set; max_err and mean_err: over the set, at the end of the call (a
+ * boundary vertex's limit depends only on boundary vertices, so PAPER's boundary errors are
+ * those phase 1 ended with). */
+typedef struct subd_pia_phase {
+    uint32_t iterations;
+    uint32_t verts;
+    subd_real max_err;
+    subd_real mean_err;
+} subd_pia_phase;
+
 typedef struct subd_pia_result {
     uint32_t iterations;
     subd_real max_err;   /* max over vertices of |P - L V| (Euclidean) at the end         */
     subd_real mean_err;  /* mean of the same                                              */
     int converged;       /* 1 when max_err <= tol                                        */
+    subd_pia_phase boundary, interior; /* the paper's two phases (subd_pia_phase)        */
 } subd_pia_result;
 
 /* Exact arena bytes of subd_pia for this input and options: PAPER 2 arrays of 3 * num_verts

@@ -2,7 +2,7 @@
 /* Quasi 4-8 subdivision (paper: quasi-4-8-subdivision.txt, Velho): geometry-sensitive
  * longest-edge binary refinement with edge-cluster marking (Algorithm 1) followed by the
  * two-pass convolution smoothing (Algorithm 2), with the section 4.3 feature control
- * (tagged vertices and edges are not affected by smoothing) and two boundary modes.
+ * (tagged vertices and edges are not affected by smoothing) and three boundary modes.
  * Included by subd.h. */
 #ifndef SUBD_QUASI48_H
 #define SUBD_QUASI48_H
@@ -17,7 +17,7 @@ extern "C" {
  * refinement (face count x4, like one Loop level), hence twice SUBD_MAX_LEVELS. */
 #define SUBD_Q48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
 
-/* What smoothing does with boundary vertices (refinement is the same in both modes). */
+/* What smoothing does with boundary vertices (refinement is the same in every mode). */
 typedef enum subd_q48_boundary {
     /* Boundary vertices never move; new boundary vertices are edge midpoints, so the
      * boundary polygon keeps its shape (the paper's planar examples, figures 5-8). */
@@ -26,7 +26,20 @@ typedef enum subd_q48_boundary {
      * the midpoints of their two boundary neighbours (pass 1), an old boundary vertex becomes
      * 1/2 own + 1/2 the average of its new boundary neighbours (pass 2; with both neighbours
      * new that is the cubic B-spline vertex rule 3/4, 1/8, 1/8). */
-    SUBD_Q48_BOUNDARY_SMOOTH = 1
+    SUBD_Q48_BOUNDARY_SMOOTH = 1,
+    /* Section 4.3: "boundary vertices are constrained to move along the surface normal
+     * direction". An old boundary vertex p takes the interior rule's target t (1/2 p + 1/2
+     * the average of all its new neighbours, both boundary ones included) and moves by the
+     * normal component of t - p only: p + ((t - p) . n / n . n) n, with n the area-weighted
+     * normal of p in the step's input (the sum over p's faces (p, b, c) of (b - p) x (c - p),
+     * in the deterministic arithmetic: Q16.16 exact int64 products after a common shift).
+     * n = 0 (the faces cancel or are degenerate) leaves p where it is. New boundary vertices
+     * stay at the edge midpoint: the interior rule's displacement of a vertex on a boundary
+     * edge lies in the plane of its one face, so its normal component is 0. A planar open
+     * mesh in z = 0 therefore gives bit for bit the FIXED result; a rotation by 90 degrees
+     * about z (x, y) -> (-y, x) maps the output bit for bit (Q16.16: any rotation that
+     * permutes and negates axes). */
+    SUBD_Q48_BOUNDARY_NORMAL = 2
 } subd_q48_boundary;
 
 /* subd_q48_opts.flags */
@@ -98,8 +111,10 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
  * subd_mesh_build would build for the same faces) and its arrays lie in the arena.
  * The input is not modified.
  * Errors: those of subd_quasi48_plan, SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
- * SUBD_ERR_RANGE (float32 overflow to infinity; Q16.16 cannot overflow: every new position
- * is a convex combination). On failure the arena is back where it was and *out untouched.
+ * SUBD_ERR_RANGE (float32 overflow to infinity, in normal mode also of a normal's
+ * products, coordinates beyond about 1e19; Q16.16 cannot overflow in the fixed and smooth
+ * modes, every new position being a convex combination, but a normal projection can leave
+ * the range: a component may move further than the displacement's). On failure the arena is back where it was and *out untouched.
  * Work per step: at most 8 radix passes over the edges, O(C) for the adjacency; no
  * recursion; stack under 600 bytes (subd_quasi48's own frame, with every step inlined:
  * 440 / 456 bytes on Cortex-M4F / M3, plus at most 72 in the edge sort). */

@@ -39,85 +39,11 @@
  *     geometrically, so this ends only runs that sit at the rounding floor (or whose
  *     assumptions fail); max_iter still bounds everything.
  *
- * SUBD_PIA_FAST, beyond the paper. Two accelerations, chosen by the mesh's structure:
- *
- * (1) Conjugate gradients, phase by phase (pia_phase_sym), when no dart couples the phases:
- * plain CG (pia_phase_cg) on a uniform phase, preconditioned CG (pia_phase_sgs, (1b) below)
- * on any other.
- * The phases are the paper's, split by limit rule rather than by the boundary tag: first
- * the curve vertices (boundary and crease vertices, two sharp edges), then the smooth ones;
- * corners and isolated vertices never move (V = P is exact there). Vertices outside the
- * phase are fixed, so the phase solves A x = b with A its block of L, and CG runs in the
- * inner product <x, y>_W = sum_v w_v x_v . y_v, where W makes W A symmetric:
- *   - smooth block: row v of L is beta_n on v and chi_n = (1 - beta_n) / n on each
- *     neighbour; w_v = 1 / chi_{n_v} = n / (1 - beta_n) gives (W A)_{uv} = 1 for every edge:
- *     W A is the minor S_I of the paper's S (section 4), positive definite by theorem 1;
- *   - curve block: the weight of neighbour u in row v is c_v g_u with c_v = 1/48 (regular
- *     v) or 1/40 (extraordinary), g_u = 8 (regular u) or 7 (the six masks 1/6, 7/48, 1/5,
- *     7/40); w_v = 48 or 35 gives (W A)_{uv} = g_u g_v / 8, symmetric, and as the two
- *     neighbour weights of a row sum to at most 2/5, W A is strictly diagonally dominant
- *     with a positive diagonal, hence positive definite. B-spline rule: w_v = 1.
- * CG's k-th iterate minimises the energy norm |e|_{WA} over V^0 + K_k(A, r_0). The paper's
- * k-th iterate V^0 + sum_{j<k} (I - A)^j r_0 lies in the same affine Krylov space, so in
- * exact arithmetic CG is never behind the paper's method after the same number of
- * iterations (in that norm), and |e_k| <= 2 q^k |e_0| with q = (sqrt(kappa) - 1) /
- * (sqrt(kappa) + 1), kappa <= 1 / lambda_min. A lower bound for lambda_min from theorem 1's
- * proof, x^T S x >= sum_i n_i (beta_i/(1-beta_i) - 1/2) x_i^2, gives lambda_min >=
- * min_i (3 beta_i - 1) / 2 = 1/10, 17/110, 0.207, 1/4 for smallest valence 3, 4, 5, >= 6
- * (tight on the regular lattice, spectrum [1/4, 1]): q = 1/3 there against the paper's
- * 3/4. In practice CG does far better (superlinear; exact after as many steps as the data
- * has distinct eigenvalues: 1 on the bundled icosahedron, whose coordinates are one
- * eigenvector). Per iteration: one application of L (to the search direction; L V follows
- * by the same recurrence) and two weighted dot products.
- *
- * (1b) Symmetric Gauss-Seidel preconditioning (pia_phase_sgs). With the phase's block
- * A = D + Lo + Up split by vertex index (D its diagonal: beta_n, or 1 minus the two curve
- * weights), M = K D^-1 K', K = D + Lo, K' = D + Up, satisfies W M = (D_W + E) D_W^-1
- * (D_W + E^T) with D_W = W D, E = W Lo, W Up = E^T (W A symmetric): M is W-symmetric and
- * positive definite, so PCG in the W inner product converges, |e_k| <= 2 q^k |e_0| in the
- * energy norm with q from kappa(M^-1 A) instead of kappa(A). Its Krylov space is not the
- * paper's, so (1)'s "never behind the paper" does not carry over: that is measured (every
- * test and bench mesh, pia_fast in test/test_pia.c). SGS shrinks kappa on irregular
- * meshes (measured in float64 on L at 1e-4 x diagonal: spot 4 -> 2 iterations, the open
- * bunny 8 -> 4). Eisenstat's trick keeps pt = K' p by recurrence, so A p = pt + Lo p: an
- * iteration is a forward sweep y = K^-1 r, a backward sweep z = K'^-1 D y and Lo p, each half
- * an application of L (the strictly lower or upper neighbours of every row), and counts as
- * 1.5 iterations (`iterations` is the work in applications of L, rounded up; max_iter bounds
- * it). The sweeps use loop_limit.c's weights recomputed here (chi_n = 1 / w_v, the curve
- * masks by regularity), equal to L's up to rounding; a difference only perturbs the L V
- * recurrence, which the true error at convergence checks (safeguards below). A uniform phase,
- * where every row has the same diagonal and CG weight (the icosahedron, torus_tri, the
- * hexfan's boundary), keeps plain CG: the data's symmetry that CG exploits there (1
- * iteration on the icosahedron, 3 on torus_tri) is lost to the sweep order (measured: 5 and
- * 4 SGS iterations, 7.5 and 6 in work), and Jacobi scaling, the symmetric alternative, is
- * the identity there.
- *
- * (2) Chebyshev semi-iteration on all movable vertices at once (pia_phase_cheb) when the
- * mesh has darts. A dart (one sharp edge) uses formula (3), yet the crease vertex next to it
- * depends on it, so the curve and smooth blocks are coupled both ways, L is no longer
- * symmetrisable and CG does not apply; alternating CG phases (block Gauss-Seidel) measured
- * no faster than the paper's step. Chebyshev needs only an interval [l, 1] holding the
- * spectrum: l = the smallest of the bounds above over the movable vertices, with 1/5
- * (paper rule) or 1/3 (B-spline rule) for curve vertices by Gershgorin on their rows and
- * both bounds for a dart. Its residual after k steps is p_k(L) r_0 with p_k the scaled
- * Chebyshev polynomial, |p_k| <= 2 q^k / (1 + q^2k) on [l, 1], q = (1 - sqrt l) /
- * (1 + sqrt l); the first step is the optimally weighted paper step V += 2/(1 + l) r.
- * With darts there is no proof that the spectrum is real; eigenvalues in (0, l) or
- * (1, 1 + l) would still decay (|p_k| < 1 there), only more slowly. Chebyshev is not the
- * choice without darts because it is tuned to the worst case: on smooth data (error near
- * eigenvalue 1) it lost to the paper's plain step (6 against 5 iterations on the
- * icosahedron), where CG takes 1.
- *
- * Safeguards (FAST). W is computed here from the valence and loop_limit.c's regularity rule
- * while L's weights are rounded (and valences above PIA_MAX_VALENCE get a capped weight), so
- * W A is symmetric only to that accuracy: perturbed CG, slower at worst. The recurrence for
- * L V drifts from the true L V by rounding, so when it says "converged" L V is recomputed
- * and the true error decides; if that fails the phase is at the rounding floor and the
- * paper's step finishes it (its integer floor is lower than CG's). A curvature
- * <p, A p>_W <= 0, a step or ratio that does not fit subd_real, or an error above twice the
- * phase's starting error also hand the phase to the paper's step (which converges for any
- * spectrum in (0, 2)). Whatever is left above tol after the accelerated phases (a stalled
- * phase) gets the paper's step on every movable vertex; the stall guard ends each phase.
+ * SUBD_PIA_FAST, beyond the paper: conjugate gradients phase by phase, preconditioned by
+ * symmetric Gauss-Seidel, or Chebyshev semi-iteration when darts couple the phases, with
+ * safeguards that hand a phase back to the paper's step: src/pia_fast.c, whose header has
+ * the convergence argument. This file holds what both methods share (validation, the one
+ * layout, errors, the paper's step, the result) and the driver.
  *
  * Arithmetic. Q16.16: L rounds each coordinate of each limit point once (1/2 LSB), P - L V
  * is an exact integer, and FAST's updates round again, so the floor an iteration can reach is
@@ -144,55 +70,11 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "entry.h"
 #include "layout.h"
-#include "loop_internal.h"
-#include "loop_rules.h"
 #include "mesh_internal.h"
 #include "real_avg.h"
+#include "loop_rules.h"
+#include "pia_internal.h"
 
-#define PIA_STALL 10u         /* iterations without a new minimum that end a phase        */
-#define PIA_TOL_MIN_LSB 2     /* Q16.16: smallest accepted tol, in units of 2^-16         */
-#define PIA_MAX_VALENCE 4096u /* larger valences get this valence's CG weight             */
-#define PIA_WCACHE 20u        /* CG weights of valences below this are computed once      */
-
-/* Vertex classes (FAST), mirroring loop_limit.c's classification by sharp edges. */
-enum { PIA_CLS_FIXED = 0, PIA_CLS_CURVE = 1, PIA_CLS_SMOOTH = 2 };
-
-/* Vertex sets a phase moves and measures. */
-enum { PIA_SET_ALL, PIA_SET_BOUNDARY, PIA_SET_INTERIOR, PIA_SET_CURVE, PIA_SET_SMOOTH, PIA_SET_MOVABLE };
-
-/* Why the #if: the errors and the CG inner products are computed exactly in integers in
- * Q16.16 (no float in the fixed build; see "Arithmetic" above), in float32 as plain sums. */
-#if SUBD_FIXED
-typedef uint64_t pia_sq; /* squared distance in LSB^2: 3 * (2^31)^2 < 2^64 */
-/* A weighted dot product: the 128-bit two's complement integer (hi, lo) times 2^e. */
-typedef struct pia_dotv {
-    uint64_t lo;
-    int64_t hi;
-    int32_t e;
-} pia_dotv;
-#else
-typedef float pia_sq;
-typedef float pia_dotv;
-#endif
-
-typedef struct pia_state {
-    const subd_mesh *m;
-    const subd_pia_opts *o;
-    subd_real *v;   /* control points being improved                                    */
-    subd_real *lv;  /* L v: exact when lv_true, else only on the current phase's set     */
-    subd_real *p;   /* FAST: search direction (0 outside the phase's set)                */
-    subd_real *q;   /* FAST: L p                                                         */
-    subd_real *w;   /* FAST: CG inner-product weight per vertex                          */
-    subd_real *pt;  /* FAST, SGS: K' p (the Eisenstat companion of p)                     */
-    subd_real *z;   /* FAST, SGS: y = K^-1 r                                              */
-    subd_real *od;  /* FAST: off-diagonal weight chi of a smooth vertex's row of L        */
-    uint8_t *cls;   /* FAST: PIA_CLS_* per vertex                                        */
-    subd_real ell;  /* FAST: lower bound of L's spectrum on the movable vertices          */
-    int darts;      /* FAST: some smooth vertex has one sharp edge                       */
-    uint64_t half;  /* work done in half iterations (one application of L = 2)           */
-    uint32_t ovf;
-    int lv_true;
-} pia_state;
 
 /* ------------------------------------------------------------------------------------ */
 /* Validation and layout                                                                  */
@@ -257,21 +139,8 @@ int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes)
 /* ------------------------------------------------------------------------------------ */
 /* Sets, errors, L                                                                        */
 
-static int pia_in_set(const pia_state *s, uint32_t v, uint32_t set)
-{
-    int bnd = (s->m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
-    switch (set) {
-    case PIA_SET_BOUNDARY: return bnd;
-    case PIA_SET_INTERIOR: return !bnd;
-    case PIA_SET_CURVE: return s->cls[v] == PIA_CLS_CURVE;
-    case PIA_SET_SMOOTH: return s->cls[v] == PIA_CLS_SMOOTH;
-    case PIA_SET_MOVABLE: return s->cls[v] != PIA_CLS_FIXED;
-    default: return 1;
-    }
-}
-
 /* |p - l|^2 for one vertex. */
-static pia_sq pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
+pia_sq subd_pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
 {
     uint32_t k;
 #if SUBD_FIXED /* why: the saturated differences squared exactly in 64 bits (vec3w.h's exact
@@ -293,7 +162,7 @@ static pia_sq pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
     return s;
 }
 
-static subd_real pia_root(pia_sq s, uint32_t *ovf)
+subd_real subd_pia_root(pia_sq s, uint32_t *ovf)
 {
 #if SUBD_FIXED /* why: the integer square root of pia_dist2's exact 64-bit square */
     uint32_t r = subd_isqrt64(s);
@@ -309,30 +178,17 @@ static subd_real pia_root(pia_sq s, uint32_t *ovf)
 }
 
 /* Max over the set of |P - L V| (with the current lv). */
-static subd_real pia_max_err(pia_state *s, uint32_t set)
+subd_real subd_pia_max_err(pia_state *s, uint32_t set)
 {
     const subd_mesh *m = s->m;
     pia_sq best = 0, e;
     uint32_t i;
     for (i = 0; i < m->num_verts; i++) {
         if (!pia_in_set(s, i, set)) continue;
-        e = pia_dist2(&m->pos[3u * i], &s->lv[3u * i], &s->ovf);
+        e = subd_pia_dist2(&m->pos[3u * i], &s->lv[3u * i], &s->ovf);
         if (e > best) best = e;
     }
-    return pia_root(best, &s->ovf);
-}
-
-/* lv = L v, exactly. */
-static void pia_limit(pia_state *s)
-{
-    subd_loop_limit_apply(s->m, s->o->boundary, s->v, s->lv, &s->ovf);
-    s->lv_true = 1;
-}
-
-/* 1 if h more half iterations fit the budget of max_iter iterations. */
-static int pia_budget(const pia_state *s, uint32_t h)
-{
-    return s->half + h <= 2u * (uint64_t)s->o->max_iter;
+    return subd_pia_root(best, &s->ovf);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -352,7 +208,7 @@ static void pia_step_paper(pia_state *s, uint32_t set)
 
 /* Tracks a phase's progress: records err of iteration k and returns 1 once the error has
  * not reached a new minimum for PIA_STALL iterations (the rounding floor: not converged). */
-static int pia_stalled(subd_real err, uint32_t k, subd_real *best, uint32_t *stall)
+int subd_pia_stalled(subd_real err, uint32_t k, subd_real *best, uint32_t *stall)
 {
     if (k == 0u || err < *best) {
         *best = err;
@@ -364,557 +220,15 @@ static int pia_stalled(subd_real err, uint32_t k, subd_real *best, uint32_t *sta
 
 /* Runs the paper's iteration on the set until its max error is <= tol, it stalls, or the
  * budget is spent. Needs an exact lv on entry and leaves one. */
-static void pia_phase_paper(pia_state *s, uint32_t set)
+void subd_pia_phase_paper(pia_state *s, uint32_t set)
 {
     subd_real err, best = 0;
     uint32_t stall = 0, k;
     for (k = 0;; k++) {
-        err = pia_max_err(s, set);
-        if (s->ovf || err <= s->o->tol || pia_stalled(err, k, &best, &stall)) return;
+        err = subd_pia_max_err(s, set);
+        if (s->ovf || err <= s->o->tol || subd_pia_stalled(err, k, &best, &stall)) return;
         if (!pia_budget(s, 2u)) return;
         pia_step_paper(s, set);
-        s->half += 2u;
-        pia_limit(s);
-        if (s->ovf) return;
-    }
-}
-
-/* ------------------------------------------------------------------------------------ */
-/* Conjugate gradients (FAST)                                                             */
-
-/* CG weight of a smooth vertex of valence n: n / (1 - beta_n) = n (1 - x^2) / (5/8 - x^2)
- * with x = 3/8 + cos(2 pi / n) / 4 (see loop_limit.c); 5/8 - x^2 >= 15/64. */
-static subd_real pia_weight_smooth(uint32_t n, uint32_t *ovf)
-{
-    subd_real x, x2;
-    if (n > PIA_MAX_VALENCE) n = PIA_MAX_VALENCE;
-    x = subd_add(SUBD_REAL_FRAC(3, 8), subd_mul(subd_cos_turns(1, (int32_t)n), SUBD_REAL_FRAC(1, 4), ovf), ovf);
-    x2 = subd_mul(x, x, ovf);
-    return subd_mul(subd_from_int((int32_t)n, ovf),
-                    subd_div(subd_sub(SUBD_REAL_ONE, x2, ovf), subd_sub(SUBD_REAL_FRAC(5, 8), x2, ovf), ovf), ovf);
-}
-
-/* Class and CG weight of every vertex, by subd_loop_classify (loop_rules.h, the classification of
- * loop.c and loop_limit.c): a corner (tagged, or three or more sharp edges) or isolated
- * vertex is fixed; two sharp edges make a curve vertex (regular as loop_rules.h defines it:
- * valence 4 on a boundary, valence 6 with opposite sharp edges inside); fewer make a smooth
- * vertex (one: a dart, formula (3) as well). */
-static void pia_classify(pia_state *s)
-{
-    const subd_mesh *m = s->m;
-    const subd_real curve = (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) ? SUBD_REAL_FRAC(1, 3) : SUBD_REAL_FRAC(1, 5);
-    subd_real lo, cache[PIA_WCACHE];
-    uint32_t v, n, ns;
-    loop_vinfo c;
-    for (v = 0; v < PIA_WCACHE; v++) cache[v] = 0;
-    s->ell = SUBD_REAL_FRAC(1, 3);
-    s->darts = 0;
-    for (v = 0; v < m->num_verts; v++) {
-        s->cls[v] = PIA_CLS_FIXED;
-        s->w[v] = 0;
-        s->od[v] = 0;
-        subd_loop_classify(m, v, &c);
-        if (c.cls == LOOP_ISOLATED || c.cls == LOOP_CORNER) continue;
-        n = c.valence;
-        ns = c.nsharp;
-        if (ns == 2u) {
-            s->cls[v] = PIA_CLS_CURVE;
-            if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) s->w[v] = SUBD_REAL_ONE;
-            else s->w[v] = subd_from_int(c.regular ? 48 : 35, &s->ovf);
-            lo = curve;
-        } else {
-            s->cls[v] = PIA_CLS_SMOOTH;
-            if (n < PIA_WCACHE) {
-                if (cache[n] == 0) cache[n] = pia_weight_smooth(n, &s->ovf);
-                s->w[v] = cache[n];
-            } else {
-                s->w[v] = pia_weight_smooth(n, &s->ovf);
-            }
-            s->od[v] = subd_div(SUBD_REAL_ONE, s->w[v], &s->ovf); /* chi_n = 1 / w_v */
-            /* (3 beta_n - 1) / 2, increasing in n */
-            if (n <= 2u) lo = SUBD_REAL_FRAC(1, 14);
-            else if (n == 3u) lo = SUBD_REAL_FRAC(1, 10);
-            else if (n == 4u) lo = SUBD_REAL_FRAC(17, 110);
-            else if (n == 5u) lo = SUBD_REAL_FRAC(2071, 10000); /* 0.2071326 rounded down */
-            else lo = SUBD_REAL_FRAC(1, 4);
-            if (ns == 1u) {
-                s->darts = 1;
-                if (curve < lo) lo = curve;
-            }
-        }
-        if (lo < s->ell) s->ell = lo;
-    }
-}
-
-/* Why the #if: the fixed build's CG dot products are exact 128-bit integer sums and their
- * ratio an integer division (the algorithm of the fixed build, not a scalar twin). */
-#if SUBD_FIXED
-
-/* Component k of a - as (as may be NULL), exactly. */
-static int64_t pia_comp(const subd_real *a, const subd_real *as, uint32_t k)
-{
-    return (int64_t)a[k] - (as ? as[k] : 0);
-}
-
-/* c / 2^sh truncated towards zero (symmetric, so tiny values of either sign vanish), for
- * |c| < 2^(21 + sh): the result fits 22 bits. */
-static int32_t pia_shr(int64_t c, uint32_t sh)
-{
-    return (int32_t)(c < 0 ? -(int64_t)((uint64_t)-c >> sh) : (int64_t)((uint64_t)c >> sh));
-}
-
-/* sum over the set of w_v (a_v - as_v) . (b_v - bs_v), summed exactly in 128 bits after
- * scaling the components to |c| < 2^21 (one shift for the whole sum, from the largest
- * component) and the weights to 8.8 fixed point (< 2^16): each vertex term is below
- * 3 * 2^42 * 2^16 < 2^60. The products are 32 x 32 -> 64 bits (one instruction on a
- * Cortex-M3). */
-static pia_dotv pia_dot(const pia_state *s, uint32_t set, const subd_real *a, const subd_real *as,
-                        const subd_real *b, const subd_real *bs)
-{
-    pia_dotv r;
-    uint64_t bits = 0, old;
-    uint32_t i, k, sh = 0;
-    r.lo = 0;
-    r.hi = 0;
-    for (i = 0; i < s->m->num_verts; i++) {
-        if (!pia_in_set(s, i, set)) continue;
-        for (k = 3u * i; k < 3u * i + 3u; k++) {
-            int64_t ca = pia_comp(a, as, k), cb = pia_comp(b, bs, k);
-            bits |= (uint64_t)(ca < 0 ? -ca : ca) | (uint64_t)(cb < 0 ? -cb : cb);
-        }
-    }
-    while ((bits >> sh) >= ((uint64_t)1 << 21)) sh++;
-    for (i = 0; i < s->m->num_verts; i++) {
-        int64_t t = 0, wq;
-        if (!pia_in_set(s, i, set)) continue;
-        for (k = 3u * i; k < 3u * i + 3u; k++)
-            t += (int64_t)pia_shr(pia_comp(a, as, k), sh) * pia_shr(pia_comp(b, bs, k), sh);
-        wq = ((int64_t)s->w[i] + 128) / 256;
-        if (wq > 65535) wq = 65535;
-        t *= wq;
-        old = r.lo;
-        r.lo += (uint64_t)t;
-        r.hi += (t < 0 ? -1 : 0) + (r.lo < old ? 1 : 0);
-    }
-    r.e = (int32_t)(2u * sh) - 8;
-    return r;
-}
-
-/* x as mant * 2^e with mant in [2^61, 2^62) (x > 0, hi >= 0). */
-static uint64_t pia_norm(pia_dotv x, int32_t *e)
-{
-    uint64_t hi = (uint64_t)x.hi, lo = x.lo;
-    int32_t ex = x.e;
-    while (hi != 0u || lo >= ((uint64_t)1 << 62)) {
-        lo = (lo >> 1) | (hi << 63);
-        hi >>= 1;
-        ex++;
-    }
-    while (lo < ((uint64_t)1 << 61)) {
-        lo <<= 1;
-        ex--;
-    }
-    *e = ex;
-    return lo;
-}
-
-/* x / y as a subd_real (truncated); *ok = 0 when x < 0, y <= 0 or the ratio does not fit. */
-static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
-{
-    uint64_t mx, my, q = 0;
-    int32_t ex, ey, sh;
-    uint32_t i;
-    if (x.hi < 0 || y.hi < 0 || (y.hi == 0 && y.lo == 0u)) {
-        *ok = 0;
-        return 0;
-    }
-    if (x.hi == 0 && x.lo == 0u) return 0;
-    mx = pia_norm(x, &ex);
-    my = pia_norm(y, &ey);
-    /* restoring division: q = floor(mx / my * 2^30), mx / my in (1/2, 2), r < 2 my < 2^63 */
-    for (i = 0; i < 31u; i++) {
-        q <<= 1;
-        if (mx >= my) {
-            mx -= my;
-            q |= 1u;
-        }
-        mx <<= 1;
-    }
-    /* value = q * 2^(ex - ey - 30); Q16.16 raw = q * 2^(ex - ey - 14) */
-    sh = ex - ey - 14;
-    if (sh >= 0) {
-        if (sh > 31 || q > ((uint64_t)INT32_MAX >> sh)) {
-            *ok = 0;
-            return 0;
-        }
-        return (subd_real)(q << sh);
-    }
-    if (sh <= -63) return 0;
-    return (subd_real)(q >> -sh);
-}
-
-#else
-
-static pia_dotv pia_dot(const pia_state *s, uint32_t set, const subd_real *a, const subd_real *as,
-                        const subd_real *b, const subd_real *bs)
-{
-    float acc = 0.0f;
-    uint32_t i, k;
-    for (i = 0; i < s->m->num_verts; i++) {
-        float t = 0.0f, wt;
-        if (!pia_in_set(s, i, set)) continue;
-        for (k = 3u * i; k < 3u * i + 3u; k++) {
-            float ca = as ? a[k] - as[k] : a[k], cb = bs ? b[k] - bs[k] : b[k];
-            float pr = ca * cb;
-            t = t + pr;
-        }
-        wt = s->w[i] * t;
-        acc = acc + wt;
-    }
-    return acc;
-}
-
-static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
-{
-    float r;
-    if (!(x >= 0.0f) || !(y > 0.0f) || !subd_real_is_finite(x) || !subd_real_is_finite(y)) {
-        *ok = 0;
-        return 0.0f;
-    }
-    r = x / y;
-    if (!subd_real_is_finite(r)) *ok = 0;
-    return r;
-}
-
-#endif
-
-/* The end of a CG or PCG iteration, shared by both: V += alpha p and L V += alpha q on the
- * set with the new max error in one pass (the recurrence; `halves` half-applications of L
- * are charged), then the verdict. DONE: the true error (residual replacement) is <= tol,
- * or no new minimum for PIA_STALL iterations (the rounding floor: not converged); lv is
- * exact then. SAFEGUARD: the recurrence drifted at the rounding floor, or the error grew
- * beyond twice its start; the caller polishes with the paper's step. */
-enum { PIA_GO_ON, PIA_DONE, PIA_SAFEGUARD };
-static int pia_cg_advance(pia_state *s, uint32_t set, subd_real alpha, uint32_t halves, subd_real start,
-                          subd_real *best, uint32_t *stall)
-{
-    const subd_real *P = s->m->pos;
-    subd_real err;
-    pia_sq e2 = 0;
-    uint32_t i, k;
-    for (i = 0; i < s->m->num_verts; i++) {
-        pia_sq d2;
-        if (!pia_in_set(s, i, set)) continue;
-        for (k = 3u * i; k < 3u * i + 3u; k++) {
-            s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
-            s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
-        }
-        d2 = pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
-        if (d2 > e2) e2 = d2;
-    }
-    s->lv_true = 0;
-    s->half += halves;
-    err = pia_root(e2, &s->ovf);
-    if (!s->ovf && err <= s->o->tol) {
-        pia_limit(s);
-        err = pia_max_err(s, set);
-        return s->ovf || err <= s->o->tol ? PIA_DONE : PIA_SAFEGUARD;
-    }
-    if (err < *best) {
-        *best = err;
-        *stall = 0;
-    } else if (++*stall >= PIA_STALL) {
-        if (!s->lv_true) pia_limit(s);
-        return PIA_DONE;
-    }
-    if (err > start && subd_sub(err, start, &s->ovf) > start) return PIA_SAFEGUARD;
-    return PIA_GO_ON;
-}
-
-/* CG on the set (all other vertices fixed) until its max error is <= tol, it stalls, the
- * budget is spent, or a safeguard hands the phase to the paper's step. Needs an exact lv on
- * entry and leaves one. */
-static void pia_phase_cg(pia_state *s, uint32_t set)
-{
-    const subd_mesh *m = s->m;
-    const subd_real *P = m->pos;
-    subd_real err, start, best, alpha, beta;
-    pia_dotv rho, rho_new, sigma;
-    uint32_t i, k, stall = 0;
-    int ok = 1, st;
-
-    err = pia_max_err(s, set);
-    if (s->ovf || err <= s->o->tol) return;
-    start = best = err;
-    for (i = 0; i < m->num_verts; i++) {
-        int in = pia_in_set(s, i, set);
-        for (k = 3u * i; k < 3u * i + 3u; k++) s->p[k] = in ? subd_sub(P[k], s->lv[k], &s->ovf) : 0;
-    }
-    rho = pia_dot(s, set, P, s->lv, P, s->lv);
-    while (!s->ovf && pia_budget(s, 2u)) {
-        subd_loop_limit_apply(m, s->o->boundary, s->p, s->q, &s->ovf);
-        sigma = pia_dot(s, set, s->p, 0, s->q, 0);
-        alpha = pia_ratio(rho, sigma, &ok);
-        if (!ok || s->ovf) break;
-        st = pia_cg_advance(s, set, alpha, 2u, start, &best, &stall);
-        if (st == PIA_DONE) return;
-        if (st == PIA_SAFEGUARD) {
-            ok = 0;
-            break;
-        }
-        rho_new = pia_dot(s, set, P, s->lv, P, s->lv);
-        beta = pia_ratio(rho_new, rho, &ok);
-        if (!ok) break;
-        rho = rho_new;
-        for (i = 0; i < m->num_verts; i++) {
-            if (!pia_in_set(s, i, set)) continue;
-            for (k = 3u * i; k < 3u * i + 3u; k++) {
-                subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_ONE, subd_sub(P[k], s->lv[k], &s->ovf));
-                acc = subd_acc_add(acc, beta, s->p[k]);
-                s->p[k] = subd_acc_real(acc, &s->ovf);
-            }
-        }
-    }
-    if (s->ovf) return;
-    if (!s->lv_true) pia_limit(s);
-    if (!ok) pia_phase_paper(s, set); /* safeguard: the paper's step from here on */
-}
-
-/* ------------------------------------------------------------------------------------ */
-/* Symmetric Gauss-Seidel preconditioned CG with Eisenstat's trick (FAST)                 */
-
-/* The two sharp-edge neighbours of curve vertex v, in ring order (as loop_limit.c). */
-static void pia_curve_nbrs(const subd_mesh *m, uint32_t v, uint32_t *c)
-{
-    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0;
-    c[0] = c[1] = v;
-    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h), n++) {
-        if (m->twin[h] == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) {
-            if (ns < 2u) c[ns] = subd_he_dest(m, h);
-            ns++;
-        }
-        last = h;
-    }
-    if ((m->vert_tag[v] & SUBD_VTAG_BOUNDARY) && ns < 2u && last != SUBD_NONE)
-        c[ns] = m->corner_vert[subd_he_prev(m, last)];
-}
-
-/* Weight of curve neighbour u in curve vertex v's row of L (lim_curve_weights). */
-static subd_real pia_curve_w(const pia_state *s, uint32_t v, uint32_t u)
-{
-    int rv, ru;
-    if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) return SUBD_REAL_FRAC(1, 6);
-    rv = s->w[v] == SUBD_REAL_FRAC(48, 1);
-    ru = s->cls[u] == PIA_CLS_CURVE && s->w[u] == SUBD_REAL_FRAC(48, 1);
-    if (rv) return ru ? SUBD_REAL_FRAC(1, 6) : SUBD_REAL_FRAC(7, 48);
-    return ru ? SUBD_REAL_FRAC(1, 5) : SUBD_REAL_FRAC(7, 40);
-}
-
-/* Vertex v's row of A (L restricted to the set PIA_SET_CURVE or PIA_SET_SMOOTH, v in it): the diagonal, returned, and in
- * sum the off-diagonal part applied to x over the neighbours u in the set with u < v
- * (upper = 0: the strictly lower triangle Lo) or u > v (upper = 1: Up); rows of L with
- * neighbours outside the set lose those columns (fixed vertices). x = NULL: the diagonal
- * only. */
-static subd_real pia_half_row(pia_state *s, uint32_t set, uint32_t v, int upper, const subd_real *x,
-                              subd_real *sum)
-{
-    const subd_mesh *m = s->m;
-    subd_acc acc[3];
-    subd_real d;
-    uint32_t k, i, n = 0;
-    const uint8_t want = set == PIA_SET_CURVE ? PIA_CLS_CURVE : PIA_CLS_SMOOTH; /* the set's class */
-    for (k = 0; k < 3u; k++) acc[k] = subd_acc_zero();
-    if (s->cls[v] == PIA_CLS_CURVE) {
-        uint32_t c[2];
-        pia_curve_nbrs(m, v, c);
-        d = SUBD_REAL_ONE;
-        for (i = 0; i < 2u; i++) {
-            subd_real wu = pia_curve_w(s, v, c[i]);
-            d = subd_sub(d, wu, &s->ovf);
-            if (!x || (upper ? c[i] <= v : c[i] >= v) || s->cls[c[i]] != want) continue;
-            for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], wu, x[3u * c[i] + k]);
-        }
-    } else {
-        uint32_t first = m->vert_out[v], h;
-        for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h), n++) {
-            uint32_t u = subd_he_dest(m, h);
-            if (!x || (upper ? u <= v : u >= v) || s->cls[u] != want) continue;
-            for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], s->od[v], x[3u * u + k]);
-        }
-        d = subd_sub(SUBD_REAL_ONE, subd_mul(subd_from_int((int32_t)n, &s->ovf), s->od[v], &s->ovf), &s->ovf);
-    }
-    for (k = 0; k < 3u; k++) sum[k] = subd_acc_real(acc[k], &s->ovf);
-    return d;
-}
-
-/* Forward sweep: z = K^-1 (P - L V) on the set, K = D + Lo (0 elsewhere). */
-static void pia_sweep_fwd(pia_state *s, uint32_t set)
-{
-    const subd_mesh *m = s->m;
-    subd_real sum[3], d;
-    uint32_t v, k;
-    for (v = 0; v < m->num_verts; v++) {
-        if (!pia_in_set(s, v, set)) {
-            for (k = 3u * v; k < 3u * v + 3u; k++) s->z[k] = 0;
-            continue;
-        }
-        d = pia_half_row(s, set, v, 0, s->z, sum);
-        for (k = 0; k < 3u; k++) {
-            subd_real r = subd_sub(m->pos[3u * v + k], s->lv[3u * v + k], &s->ovf);
-            s->z[3u * v + k] = subd_div(subd_sub(r, sum[k], &s->ovf), d, &s->ovf);
-        }
-    }
-}
-
-/* Backward sweep: q = K'^-1 D z on the set, K' = D + Up (0 elsewhere). */
-static void pia_sweep_bwd(pia_state *s, uint32_t set)
-{
-    const subd_mesh *m = s->m;
-    subd_real sum[3], d;
-    uint32_t v, k;
-    for (v = m->num_verts; v-- > 0u;) {
-        if (!pia_in_set(s, v, set)) {
-            for (k = 3u * v; k < 3u * v + 3u; k++) s->q[k] = 0;
-            continue;
-        }
-        d = pia_half_row(s, set, v, 1, s->q, sum);
-        for (k = 0; k < 3u; k++)
-            s->q[3u * v + k] = subd_sub(s->z[3u * v + k], subd_div(sum[k], d, &s->ovf), &s->ovf);
-    }
-}
-
-/* PCG on the set (all other vertices fixed) with the symmetric Gauss-Seidel preconditioner
- * M = K D^-1 K' (K = D + Lo, K' = D + Up, A = K + K' - D the set's block of L in vertex
- * order), until its max error is <= tol, it stalls, the budget is spent, or a safeguard
- * hands the phase to the paper's step. With pt = K' p, A p = pt + Lo p (Eisenstat), so an
- * iteration costs a forward sweep (Lo), a backward sweep (Up) and Lo p: three halves of an
- * application of L, counted as 1.5 iterations. Exact lv on entry and exit. */
-static void pia_phase_sgs(pia_state *s, uint32_t set)
-{
-    const subd_mesh *m = s->m;
-    const subd_real *P = m->pos;
-    subd_real err, start, best, alpha, beta, sum[3], d;
-    pia_dotv rho, rho_new, sigma;
-    uint32_t i, k, stall = 0;
-    int ok = 1, st;
-
-    err = pia_max_err(s, set);
-    if (s->ovf || err <= s->o->tol || !pia_budget(s, 3u)) return;
-    start = best = err;
-    beta = 0;
-    for (i = 0; i < 3u * m->num_verts; i++) s->p[i] = s->pt[i] = 0;
-    pia_sweep_fwd(s, set);
-    pia_sweep_bwd(s, set);
-    rho = pia_dot(s, set, P, s->lv, s->q, 0);
-    while (!s->ovf && pia_budget(s, 3u)) {
-        /* one ascending pass: p = z + beta p, pt = D y + beta pt (= K' p), q = pt + Lo p
-         * (= A p); Lo p at v reads only the p_u, u < v, already updated (q held z) */
-        for (i = 0; i < m->num_verts; i++) {
-            if (!pia_in_set(s, i, set)) continue;
-            d = pia_half_row(s, set, i, 0, s->p, sum);
-            for (k = 0; k < 3u; k++) {
-                uint32_t j = 3u * i + k;
-                subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_ONE, s->q[j]);
-                s->p[j] = subd_acc_real(subd_acc_add(acc, beta, s->p[j]), &s->ovf);
-                acc = subd_acc_add(subd_acc_zero(), d, s->z[j]);
-                s->pt[j] = subd_acc_real(subd_acc_add(acc, beta, s->pt[j]), &s->ovf);
-                s->q[j] = subd_add(s->pt[j], sum[k], &s->ovf);
-            }
-        }
-        sigma = pia_dot(s, set, s->p, 0, s->q, 0);
-        alpha = pia_ratio(rho, sigma, &ok);
-        if (!ok || s->ovf) break;
-        st = pia_cg_advance(s, set, alpha, 3u, start, &best, &stall);
-        if (st == PIA_DONE) return;
-        if (st == PIA_SAFEGUARD) {
-            ok = 0;
-            break;
-        }
-        pia_sweep_fwd(s, set);
-        pia_sweep_bwd(s, set);
-        rho_new = pia_dot(s, set, P, s->lv, s->q, 0);
-        beta = pia_ratio(rho_new, rho, &ok);
-        if (!ok) break;
-        rho = rho_new;
-    }
-    if (s->ovf) return;
-    if (!s->lv_true) pia_limit(s);
-    if (!ok) pia_phase_paper(s, set);
-}
-
-/* 1 when every vertex of the set has the same row shape (CG weight and diagonal of L). */
-static int pia_uniform(pia_state *s, uint32_t set)
-{
-    subd_real w0 = 0, d0 = 0, d, sum[3];
-    uint32_t v;
-    int first = 1;
-    for (v = 0; v < s->m->num_verts; v++) {
-        if (!pia_in_set(s, v, set)) continue;
-        d = pia_half_row(s, set, v, 0, 0, sum);
-        if (first) {
-            w0 = s->w[v];
-            d0 = d;
-            first = 0;
-        } else if (s->w[v] != w0 || d != d0) {
-            return 0;
-        }
-    }
-    return 1;
-}
-
-/* A phase of the symmetrisable system: plain CG when the set is uniform, else SGS-PCG. */
-static void pia_phase_sym(pia_state *s, uint32_t set)
-{
-    if (pia_uniform(s, set)) pia_phase_cg(s, set);
-    else if (!s->ovf) pia_phase_sgs(s, set);
-}
-
-/* ------------------------------------------------------------------------------------ */
-/* Chebyshev semi-iteration (FAST on meshes with darts)                                   */
-
-/* Chebyshev iteration for L V = P on the set, for a spectrum in [ell, 1], until the max
- * error is <= tol, it stalls, or the budget is spent; an error above twice the starting
- * one hands the set to the paper's step. p holds the step d_k. Exact lv on entry and exit. */
-static void pia_phase_cheb(pia_state *s, uint32_t set)
-{
-    const subd_mesh *m = s->m;
-    subd_real one = SUBD_REAL_ONE, two = subd_add(one, one, &s->ovf);
-    subd_real opl = subd_add(one, s->ell, &s->ovf), oml = subd_sub(one, s->ell, &s->ovf);
-    subd_real c0 = subd_div(two, opl, &s->ovf);                                /* 1 / theta  */
-    subd_real two_sigma = subd_div(subd_add(opl, opl, &s->ovf), oml, &s->ovf); /* 2 sigma    */
-    subd_real four_over = subd_div(subd_add(two, two, &s->ovf), oml, &s->ovf); /* 2 / delta  */
-    subd_real err, best = 0, start = 0, rho = 0, rho_new, a, c;
-    uint32_t stall = 0, k, i;
-    for (k = 0;; k++) {
-        err = pia_max_err(s, set);
-        if (s->ovf || err <= s->o->tol || pia_stalled(err, k, &best, &stall)) return;
-        if (!pia_budget(s, 2u)) return;
-        if (k == 0u) {
-            start = err;
-            a = 0;
-            c = c0;
-            rho = subd_div(oml, opl, &s->ovf); /* rho_0 = 1 / sigma */
-            for (i = 0; i < 3u * m->num_verts; i++) s->p[i] = 0;
-        } else if (err > start && subd_sub(err, start, &s->ovf) > start) {
-            pia_phase_paper(s, set); /* safeguard: the error grew beyond twice its start */
-            return;
-        } else {
-            rho_new = subd_div(one, subd_sub(two_sigma, rho, &s->ovf), &s->ovf);
-            a = subd_mul(rho_new, rho, &s->ovf);
-            c = subd_mul(rho_new, four_over, &s->ovf);
-            rho = rho_new;
-        }
-        /* d = a d + c (P - L V), V += d */
-        for (i = 0; i < m->num_verts; i++) {
-            uint32_t j;
-            if (!pia_in_set(s, i, set)) continue;
-            for (j = 3u * i; j < 3u * i + 3u; j++) {
-                subd_acc acc = subd_acc_add(subd_acc_zero(), a, s->p[j]);
-                acc = subd_acc_add(acc, c, subd_sub(m->pos[j], s->lv[j], &s->ovf));
-                s->p[j] = subd_acc_real(acc, &s->ovf);
-                s->v[j] = subd_add(s->v[j], s->p[j], &s->ovf);
-            }
-        }
         s->half += 2u;
         pia_limit(s);
         if (s->ovf) return;
@@ -949,26 +263,38 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
 
     for (i = 0; i < 3u * in->num_verts; i++) s.v[i] = in->pos[i]; /* V^0 = P */
     pia_limit(&s);
+    s.half_bnd = 0;
     if (o->method == SUBD_PIA_FAST) {
-        pia_classify(&s);
-        if (!s.ovf && s.darts) pia_phase_cheb(&s, PIA_SET_MOVABLE);
-        if (!s.ovf && !s.darts) pia_phase_sym(&s, PIA_SET_CURVE);
-        if (!s.ovf && !s.darts) pia_phase_sym(&s, PIA_SET_SMOOTH);
-        /* a phase that stalled or gave up: the paper's step polishes what is left */
-        if (!s.ovf && pia_max_err(&s, PIA_SET_ALL) > o->tol) pia_phase_paper(&s, PIA_SET_MOVABLE);
+        subd_pia_fast(&s);
     } else {
-        if (in->num_boundary_edges > 0u) pia_phase_paper(&s, PIA_SET_BOUNDARY);
-        if (!s.ovf) pia_phase_paper(&s, PIA_SET_INTERIOR);
+        if (in->num_boundary_edges > 0u) subd_pia_phase_paper(&s, PIA_SET_BOUNDARY);
+        s.half_bnd = s.half;
+        if (!s.ovf) subd_pia_phase_paper(&s, PIA_SET_INTERIOR);
     }
 
-    /* final statistics over all vertices, from the exact L V of the returned V */
+    /* final statistics over all vertices and per phase set, from the exact L V of the
+     * returned V */
     if (!s.ovf) {
-        subd_sum sum = 0;
-        res.max_err = pia_max_err(&s, PIA_SET_ALL);
-        for (i = 0; i < in->num_verts; i++)
-            sum = subd_sum_add(sum, pia_root(pia_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf));
+        subd_sum sum = 0, part[2] = {0, 0};
+        uint32_t cnt[2] = {0, 0};
+        res.max_err = subd_pia_max_err(&s, PIA_SET_ALL);
+        res.boundary.max_err = subd_pia_max_err(&s, PIA_SET_BOUNDARY);
+        res.interior.max_err = subd_pia_max_err(&s, PIA_SET_INTERIOR);
+        for (i = 0; i < in->num_verts; i++) {
+            subd_real ei = subd_pia_root(subd_pia_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf);
+            uint32_t j = (in->vert_tag[i] & SUBD_VTAG_BOUNDARY) ? 0u : 1u;
+            sum = subd_sum_add(sum, ei);
+            part[j] = subd_sum_add(part[j], ei);
+            cnt[j]++;
+        }
         res.mean_err = subd_avg(sum, in->num_verts, &s.ovf); /* num_verts >= 1 (pia_check) */
+        res.boundary.verts = cnt[0];
+        res.interior.verts = cnt[1];
+        res.boundary.mean_err = cnt[0] ? subd_avg(part[0], cnt[0], &s.ovf) : 0;
+        res.interior.mean_err = cnt[1] ? subd_avg(part[1], cnt[1], &s.ovf) : 0;
         res.iterations = (uint32_t)((s.half + 1u) / 2u); /* <= max_iter (pia_budget) */
+        res.boundary.iterations = (uint32_t)((s.half_bnd + 1u) / 2u);
+        res.interior.iterations = res.iterations - res.boundary.iterations;
         res.converged = res.max_err <= o->tol;
     }
     if (s.ovf) return subd_entry_fail(&e, SUBD_ERR_RANGE);

@@ -29,9 +29,15 @@
  *  - Section 4.3, "a tagged vertex or edge is not affected by smoothing": vertices tagged
  *    CORNER or FIXED and both ends of a CREASE edge keep their position; a new vertex on a
  *    crease stays at the edge's midpoint, and both halves keep the crease tag, so a tagged
- *    polyline keeps its shape at every step. (The paper's remark that boundary vertices
- *    "move along the surface normal direction" is not implemented: boundaries are either
- *    fixed, as in its planar figures, or smoothed as curves; see subd_q48_boundary.)
+ *    polyline keeps its shape at every step.
+ *  - Section 4.3, "boundary vertices are constrained to move along the surface normal
+ *    direction": SUBD_Q48_BOUNDARY_NORMAL. The paper names neither the normal nor the
+ *    displacement: the displacement is the interior rule's (every new neighbour counts),
+ *    the normal the area-weighted one of the vertex's faces in the step's input (read-only
+ *    during pass 2, so the visiting order does not matter), and only the normal component
+ *    is applied (q48_smooth_normal); a zero normal leaves the vertex. New boundary vertices
+ *    stay at edge midpoints (their interior-rule displacement lies in their face's plane).
+ *    The other modes: fixed, as in its planar figures, or smoothed as curves.
  *  - Smoothing of an old vertex uses exact weights: Q16.16 forms (k p + sum) / (2k) in 64
  *    bits with one rounding, so planar input stays exactly planar in z and weights sum to 1.
  *
@@ -52,6 +58,7 @@
 #include "real_avg.h"
 #include "layout.h"
 #include "entry.h"
+#include "vec3w.h"
 
 typedef struct q48_layout {
     mesh_counts out;  /* bound for the last step's output                                */
@@ -115,7 +122,8 @@ static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
 {
     int st;
     if (!in || !o || o->steps < 1u || o->steps > SUBD_Q48_MAX_STEPS || o->len_bits > SUBD_Q48_LEN_BITS_EXACT ||
-        (o->boundary != SUBD_Q48_BOUNDARY_FIXED && o->boundary != SUBD_Q48_BOUNDARY_SMOOTH))
+        (o->boundary != SUBD_Q48_BOUNDARY_FIXED && o->boundary != SUBD_Q48_BOUNDARY_SMOOTH &&
+         o->boundary != SUBD_Q48_BOUNDARY_NORMAL))
         return subd_fail(d, SUBD_ERR_PARAM);
     if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->edge_tag))
         return subd_fail(d, SUBD_ERR_PARAM);
@@ -399,38 +407,139 @@ static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, 
  * smoothed by pass 1 (q48_new_position).                                                 */
 
 /* Pass 2 for old vertex v: 1/2 its position + 1/2 the average of its new neighbours (in
- * ring order from vert_out; none: unchanged). On a boundary (smooth mode) only the two
- * boundary neighbours count. */
-static void q48_smooth_old(subd_mesh *o, uint32_t v, uint32_t nv_old, uint32_t *ovf)
+ * ring order from vert_out; none: unchanged), written to t[0..2]. On a boundary, `curve`
+ * (smooth mode) counts only the two boundary neighbours; otherwise (normal mode) every
+ * neighbour counts, the last boundary one after the ring walk. Returns 0 when v has no new
+ * neighbour (t untouched). */
+static uint32_t q48_pass2(const subd_mesh *o, uint32_t v, uint32_t nv_old, int curve, subd_real *t, uint32_t *ovf)
 {
     uint32_t first = o->vert_out[v], n = 0, last = SUBD_NONE, steps = 0, h, k;
     subd_sum s[3] = {0, 0, 0};
-    if (o->twin[first] == SUBD_NONE) {
-        uint32_t ends[2], j;
-        for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++)
-            last = h;
-        ends[0] = tri_dest(o, first);
-        ends[1] = o->corner_vert[tri_prev(last)];
-        for (j = 0; j < 2u; j++) {
-            if (ends[j] < nv_old) continue;
-            for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * ends[j] + k]);
-            n++;
-        }
-    } else {
-        for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++) {
-            uint32_t u = tri_dest(o, h);
-            if (u < nv_old) continue;
+    int bnd = o->twin[first] == SUBD_NONE;
+    for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++) {
+        uint32_t u = tri_dest(o, h);
+        last = h;
+        if (u < nv_old || (bnd && curve && h != first)) continue;
+        for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * u + k]);
+        n++;
+    }
+    if (bnd) { /* the incoming boundary edge's origin closes the fan */
+        uint32_t u = o->corner_vert[tri_prev(last)];
+        if (u >= nv_old) {
             for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * u + k]);
             n++;
         }
     }
-    if (n == 0) return;
-    for (k = 0; k < 3u; k++) o->pos[3u * v + k] = subd_blend(o->pos[3u * v + k], s[k], n, ovf);
+    if (n == 0) return 0;
+    for (k = 0; k < 3u; k++) t[k] = subd_blend(o->pos[3u * v + k], s[k], n, ovf);
+    return n;
 }
 
-static int q48_smooth(subd_mesh *o, uint32_t nv_old, subd_q48_boundary bmode, const q48_work *w, subd_diag *d)
+/* Area-weighted normal of vertex v of the step's input m (section 4.3, normal mode): the
+ * sum over v's faces (v, b, c) of (b - v) x (c - v), twice the area times the unit normal,
+ * from the positions before the step, so it does not depend on the order in which pass 2
+ * moves vertices. Q16.16: exact int64 arithmetic after one common shift of every edge
+ * vector of the fan (truncating toward zero, so sign changes commute with it) chosen so
+ * that no sum overflows: components below 2^b with 2b + 1 + bitlen(faces) <= 62. float32:
+ * the subd_w3 products in their fixed order; non-finite only for coordinates near 1e19. */
+static void q48_vertex_normal(const subd_mesh *m, uint32_t v, subd_wide *n)
+{
+    const subd_real *pv = m->pos + 3u * v;
+    uint32_t first = m->vert_out[v], h, steps = 0, k;
+    int32_t sh = 0;
+    subd_wide e0[3], e1[3], c[3];
+#if SUBD_FIXED
+    uint64_t big = 0;
+    uint32_t nf = 0, bits;
+    for (h = first; h != SUBD_NONE && steps < m->num_corners; h = subd_ring_next(m, first, h), steps++) {
+        subd_w3_diff(m->pos + 3u * subd_he_dest(m, h), pv, e0);
+        subd_w3_diff(m->pos + 3u * m->corner_vert[subd_he_prev(m, h)], pv, e1);
+        if (subd_w3_maxabs(e0) > big) big = subd_w3_maxabs(e0);
+        if (subd_w3_maxabs(e1) > big) big = subd_w3_maxabs(e1);
+        nf++;
+    }
+    bits = (61u - subd_bitlen64(nf)) / 2u;
+    sh = (int32_t)subd_bitlen64(big) - (int32_t)bits;
+    if (sh < 0) sh = 0;
+    steps = 0;
+#endif
+    n[0] = n[1] = n[2] = 0;
+    for (h = first; h != SUBD_NONE && steps < m->num_corners; h = subd_ring_next(m, first, h), steps++) {
+        subd_w3_diff(m->pos + 3u * subd_he_dest(m, h), pv, e0);
+        subd_w3_diff(m->pos + 3u * m->corner_vert[subd_he_prev(m, h)], pv, e1);
+#if SUBD_FIXED
+        subd_w3_shift(e0, e0, sh);
+        subd_w3_shift(e1, e1, sh);
+#endif
+        subd_w3_cross(e0, e1, c);
+        for (k = 0; k < 3u; k++) n[k] += c[k];
+    }
+    (void)sh;
+}
+
+/* p += ((t - p) . n / n . n) n: only the normal component of the displacement t - p; n = 0
+ * leaves p. Both forms are symmetric under negating any axis and exchanging x and y (a
+ * rotation by 90 degrees about z maps the output bit for bit; Q16.16: any axis
+ * permutation, its sums being exact). Q16.16: the displacement is exact (|d| < 2^32); n is
+ * rescaled to 20 bits, direction kept to 2^-19 (subd_w3_normalize), so d . n < 2^54 and
+ * n . n < 2^42; (d . n) n_j / (n . n) is formed as q n_j + round(r n_j / n . n) from the
+ * truncating quotient q and remainder r, exact but for that one rounding; a result outside
+ * the Q16.16 range sets *ovf (a component can move further than the displacement's).
+ * float32: n is scaled to max |n_k| = 1 first, so n . n is in [1, 3]. */
+static void q48_project_normal(subd_real *p, const subd_real *t, const subd_wide *n, uint32_t *ovf)
+{
+    subd_wide u[3], d[3], dn, nn;
+    uint32_t k;
+    subd_w3_normalize(n, u, 20u);
+    nn = subd_w3_dot(u, u);
+    if (!(nn > 0)) return; /* zero normal (faces cancel or are degenerate): v stays */
+    subd_w3_diff(t, p, d);
+    dn = subd_w3_dot(d, u);
+#if SUBD_FIXED
+    {
+        int64_t q = dn / nn, r = dn % nn;
+        for (k = 0; k < 3u; k++) {
+            int64_t x = (int64_t)p[k] + q * u[k] + subd_div_round(r * u[k], nn);
+            if (x > INT32_MAX || x < INT32_MIN) {
+                *ovf |= 1u;
+                return;
+            }
+            p[k] = (subd_real)x;
+        }
+    }
+#else
+    {
+        float s = dn / nn;
+        for (k = 0; k < 3u; k++) {
+            float m = s * u[k];
+            p[k] = subd_chk(p[k] + m, ovf);
+        }
+    }
+#endif
+}
+
+/* Normal mode for old boundary vertex v: the interior rule's target (every new neighbour),
+ * of which only the displacement along v's normal in the step's input m is taken. */
+static void q48_smooth_normal(subd_mesh *o, const subd_mesh *m, uint32_t v, uint32_t nv_old, uint32_t *ovf)
+{
+    subd_real t[3];
+    subd_wide n[3];
+    uint32_t k;
+    if (!q48_pass2(o, v, nv_old, 0, t, ovf)) return;
+    q48_vertex_normal(m, v, n);
+#if !SUBD_FIXED
+    for (k = 0; k < 3u; k++) (void)subd_chk(n[k], ovf);
+    if (*ovf) return;
+#endif
+    (void)k;
+    q48_project_normal(o->pos + 3u * v, t, n, ovf);
+}
+
+static int q48_smooth(subd_mesh *o, const subd_mesh *m, subd_q48_boundary bmode, const q48_work *w,
+                      subd_diag *d)
 {
     uint8_t *pin = w->vkeep;
+    const uint32_t nv_old = m->num_verts;
     uint32_t v, h, c, ovf = 0;
     const uint8_t fixed_bits = (uint8_t)(SUBD_VTAG_CORNER | SUBD_VTAG_FIXED | SUBD_VTAG_ISOLATED);
 
@@ -446,13 +555,18 @@ static int q48_smooth(subd_mesh *o, uint32_t nv_old, subd_q48_boundary bmode, co
         }
     }
     /* pass 1 (new vertices = average of their neighbours) was done by q48_new_position */
-    /* pass 2 (q48_smooth_old). A vertex reads only new vertices and writes only itself, so
-     * the order of visits is free: each is visited at its vert_out corner, in corner order,
-     * so that consecutive walks stay in neighbouring faces (vertex order is split order,
-     * longest edge first, which scatters consecutive vertices over the mesh). */
+    /* pass 2 (q48_pass2). A vertex reads only new vertices (and, in normal mode, the step's
+     * input m) and writes only itself, so the order of visits is free: each is visited at
+     * its vert_out corner, in corner order, so that consecutive walks stay in neighbouring
+     * faces (vertex order is split order, longest edge first, which scatters consecutive
+     * vertices over the mesh). */
     for (c = 0; c < o->num_corners; c++) {
         v = o->corner_vert[c];
-        if (v < nv_old && !pin[v] && o->vert_out[v] == c) q48_smooth_old(o, v, nv_old, &ovf);
+        if (v >= nv_old || pin[v] || o->vert_out[v] != c) continue;
+        if (bmode == SUBD_Q48_BOUNDARY_NORMAL && o->twin[c] == SUBD_NONE)
+            q48_smooth_normal(o, m, v, nv_old, &ovf);
+        else
+            (void)q48_pass2(o, v, nv_old, 1, o->pos + 3u * v, &ovf);
     }
     if (ovf) return subd_fail(d, SUBD_ERR_RANGE);
     return SUBD_OK;
@@ -489,7 +603,7 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
         subd_mesh *dst = &buf[(o->steps - s) & 1u];
         const mesh_counts *cap = ((o->steps - s) & 1u) ? &L.mid : &L.out;
         st = q48_refine(src, dst, cap, bits, smooth, &w, d);
-        if (st == SUBD_OK && smooth) st = q48_smooth(dst, src->num_verts, o->boundary, &w, d);
+        if (st == SUBD_OK && smooth) st = q48_smooth(dst, src, o->boundary, &w, d);
         if (st != SUBD_OK) return subd_entry_fail(&e, st);
         src = dst;
     }

@@ -39,10 +39,7 @@
  */
 #include "harness.h"
 #include "corpus.h"
-
-#if H_HOST
-#include <math.h>
-#endif
+#include <math.h> /* the tests' double references (pia_phases also on the device) */
 
 #define PV 64
 #define PF 128
@@ -903,6 +900,130 @@ static void pia_budget(void)
     }
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* Per-phase report (paper, section 4: "10 iterations for the boundary, 10 for the
+ * interior")                                                                             */
+
+/* Checks r's phase fields against the output V: the vertex counts by the boundary tag, the
+ * per-set max and mean of |P - L V| recomputed in double from subd_loop_limit of V (a call
+ * of its own), iterations summing to the total, an empty boundary phase on a closed mesh. */
+/* sqrt by Newton's iteration from above (the device tests link no libm). */
+static double dsqrt(double x)
+{
+    double r = x > 1.0 ? x : 1.0;
+    uint32_t i;
+    if (!(x > 0.0)) return 0.0;
+    for (i = 0; i < 80u; i++) r = 0.5 * (r + x / r);
+    return r;
+}
+
+static void check_phases(subd_arena *a, const subd_mesh *m, subd_loop_boundary b, const subd_real *V,
+                         const subd_pia_result *r)
+{
+    const double tol = SUBD_FIXED ? 2.0 / 65536.0 : 1e-6;
+    subd_mesh mv = *m;
+    subd_real *lv = 0;
+    subd_diag d;
+    uint32_t mark = subd_arena_mark(a), v, k, cnt[2] = {0, 0};
+    double mx[2] = {0, 0}, sum[2] = {0, 0};
+    mv.pos = (subd_real *)V;
+    if (!CHECK_EQ(subd_loop_limit(a, &mv, b, &lv, 0, &d), SUBD_OK)) return;
+    for (v = 0; v < m->num_verts; v++) {
+        uint32_t j = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) ? 0u : 1u;
+        double e = 0;
+        for (k = 0; k < 3u; k++) {
+            double t = h_dbl(m->pos[3u * v + k]) - h_dbl(lv[3u * v + k]);
+            e += t * t;
+        }
+        e = dsqrt(e);
+        cnt[j]++;
+        sum[j] += e;
+        if (e > mx[j]) mx[j] = e;
+    }
+    subd_arena_rewind(a, mark);
+    CHECK_EQ(r->boundary.verts, cnt[0]);
+    CHECK_EQ(r->interior.verts, cnt[1]);
+    CHECK_EQ(r->boundary.iterations + r->interior.iterations, r->iterations);
+    CHECK(fabs(h_dbl(r->boundary.max_err) - mx[0]) <= tol * (1.0 + mx[0]));
+    CHECK(fabs(h_dbl(r->interior.max_err) - mx[1]) <= tol * (1.0 + mx[1]));
+    CHECK(fabs(h_dbl(r->boundary.mean_err) - (cnt[0] ? sum[0] / cnt[0] : 0.0)) <= tol * (1.0 + mx[0]));
+    CHECK(fabs(h_dbl(r->interior.mean_err) - (cnt[1] ? sum[1] / cnt[1] : 0.0)) <= tol * (1.0 + mx[1]));
+    CHECK(r->max_err == (r->boundary.max_err > r->interior.max_err ? r->boundary.max_err : r->interior.max_err));
+    if (m->num_boundary_edges == 0u) {
+        CHECK_EQ(r->boundary.iterations, 0);
+        CHECK_EQ(r->boundary.verts, 0);
+        CHECK(r->boundary.max_err == 0 && r->boundary.mean_err == 0);
+    }
+}
+
+/* PAPER's boundary phase, by its definition: after boundary.iterations = k_b iterations
+ * (max_iter = k_b) the boundary is within tol, no interior vertex has moved (V = P there,
+ * bit for bit) and the interior phase has 0 iterations; one iteration fewer leaves the
+ * boundary above tol. */
+static void check_paper_boundary_phase(const subd_mesh *m, subd_loop_boundary b, uint32_t kb)
+{
+    subd_real *V;
+    subd_pia_result r;
+    uint32_t v, k;
+    if (!CHECK(kb >= 1u)) return;
+    if (!CHECK_EQ(run(m, SUBD_PIA_PAPER, b, tol_std(), kb, &V, &r), SUBD_OK)) return;
+    CHECK_EQ(r.boundary.iterations, kb);
+    CHECK_EQ(r.interior.iterations, 0);
+    CHECK(r.boundary.max_err <= tol_std());
+    for (v = 0; v < m->num_verts; v++)
+        if (!(m->vert_tag[v] & SUBD_VTAG_BOUNDARY))
+            for (k = 0; k < 3u; k++) CHECK(h_same(V[3u * v + k], m->pos[3u * v + k]));
+    if (kb >= 2u && CHECK_EQ(run(m, SUBD_PIA_PAPER, b, tol_std(), kb - 1u, &V, &r), SUBD_OK)) {
+        CHECK_EQ(r.boundary.iterations, kb - 1u);
+        CHECK(r.boundary.max_err > tol_std());
+    }
+}
+
+static void phases_case(subd_arena *a, const subd_mesh *m, const char *name)
+{
+    uint32_t meth;
+    for (meth = 0; meth < 2u; meth++) {
+        subd_real *V = 0;
+        subd_pia_result r;
+        if (!CHECK_EQ(run(m, (subd_pia_method)meth, SUBD_LOOP_BOUNDARY_PAPER, tol_std(), 200, &V, &r), SUBD_OK))
+            continue;
+        check_phases(a, m, SUBD_LOOP_BOUNDARY_PAPER, V, &r);
+        h_str("  ");
+        h_str(name);
+        h_str(meth ? " fast" : " paper");
+        h_str(": boundary ");
+        h_u32(r.boundary.iterations);
+        h_str(" iterations (");
+        h_u32(r.boundary.verts);
+        h_str(" vertices), interior ");
+        h_u32(r.interior.iterations);
+        h_str(" (");
+        h_u32(r.interior.verts);
+        h_str(" vertices)");
+        h_nl();
+        if (meth == 0u && m->num_boundary_edges > 0u) {
+            subd_pia_result r0 = r;
+            check_paper_boundary_phase(m, SUBD_LOOP_BOUNDARY_PAPER, r0.boundary.iterations);
+        }
+    }
+}
+
+static void pia_phases(void)
+{
+    subd_arena a;
+    subd_mesh m;
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (load_obj(&a, "test/data/grid_tri_8x8.obj", &m)) phases_case(&a, &m, "grid8");
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (load_obj(&a, "test/data/hexfan.obj", &m)) phases_case(&a, &m, "hexfan");
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (mesh_bump(&a, &m)) phases_case(&a, &m, "bump");
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (load_obj(&a, "test/data/icosahedron.obj", &m)) phases_case(&a, &m, "icosahedron (closed)");
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+    if (load_obj(&a, "test/data/torus_tri.obj", &m)) phases_case(&a, &m, "torus_tri (closed)");
+}
+
 const test_case suite_pia[] = {
     {"pia_closed", pia_closed},
     {"pia_open", pia_open},
@@ -914,5 +1035,6 @@ const test_case suite_pia[] = {
     {"pia_range", pia_range},
     {"pia_nomem", pia_nomem},
     {"pia_budget", pia_budget},
+    {"pia_phases", pia_phases},
     {0, 0}
 };

@@ -6,6 +6,7 @@
 #include "harness.h"
 #include "subd_quasi48.h"
 #include "corpus.h"
+#include <math.h>
 #if H_HOST
 #include <stdio.h>
 #endif
@@ -582,6 +583,215 @@ static void q48_tags_and_boundary(void)
     }
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* Normal boundary mode (section 4.3: boundary vertices move along the surface normal). */
+
+/* Figure 11(a): a triangulated box with two open sides, a square tube along x: nseg + 1
+ * rings of 8 vertices (corners and edge midpoints of the square |y|, |z| <= 1) at x = 0..4
+ * (step 4 / nseg), quads between rings cut by alternating diagonals. Two boundary loops. */
+static void tube_list(subd_face_list *fl, uint32_t nseg)
+{
+    static const int32_t ry[8] = {1, 1, 1, 0, -1, -1, -1, 0}, rz[8] = {-1, 0, 1, 1, 1, 0, -1, -1};
+    uint32_t i, k, n = 0, ovf = 0;
+    for (i = 0; i <= nseg; i++)
+        for (k = 0; k < 8u; k++) {
+            uint32_t v = 8u * i + k;
+            g_pos[3 * v] = R((int32_t)(4u * i), (int32_t)nseg);
+            g_pos[3 * v + 1] = subd_from_int(ry[k], &ovf);
+            g_pos[3 * v + 2] = subd_from_int(rz[k], &ovf);
+        }
+    for (i = 0; i < nseg; i++)
+        for (k = 0; k < 8u; k++) {
+            uint32_t a = 8u * i + k, b = 8u * (i + 1u) + k, c = 8u * (i + 1u) + (k + 1u) % 8u,
+                     d = 8u * i + (k + 1u) % 8u;
+            if ((i + k) & 1u) {
+                g_idx[n++] = a; g_idx[n++] = b; g_idx[n++] = c;
+                g_idx[n++] = a; g_idx[n++] = c; g_idx[n++] = d;
+            } else {
+                g_idx[n++] = a; g_idx[n++] = b; g_idx[n++] = d;
+                g_idx[n++] = b; g_idx[n++] = c; g_idx[n++] = d;
+            }
+        }
+    CHECK_EQ(ovf, 0);
+    fl->num_verts = 8u * (nseg + 1u);
+    fl->pos = g_pos;
+    fl->num_faces = 16u * nseg;
+    fl->face_size = 0;
+    fl->index = g_idx;
+    fl->num_lines = 0;
+    fl->line_size = fl->line_index = 0;
+}
+
+static subd_q48_opts opts_normal(uint32_t steps)
+{
+    subd_q48_opts o = opts(steps, 0);
+    o.boundary = SUBD_Q48_BOUNDARY_NORMAL;
+    return o;
+}
+
+/* Planar open mesh in z = 0: the normal is (0, 0, n_z) exactly and the displacement has
+ * z = 0, so its normal component is exactly 0 in both arithmetics: the output equals the
+ * FIXED mode's bit for bit (boundary vertices exactly in place, every z exactly 0). */
+static void q48_normal_planar(void)
+{
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, mf, mn;
+    subd_q48_opts of = opts(3, 0), on = opts_normal(3);
+    uint32_t v, c;
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    grid_list(&fl, 4);
+    if (!h_build(&a, &fl, &in) || !run(&a, &in, &of, &mf) || !run(&a, &in, &on, &mn)) return;
+    if (!CHECK_EQ(mn.num_verts, mf.num_verts) || !CHECK_EQ(mn.num_faces, mf.num_faces)) return;
+    for (c = 0; c < mn.num_corners; c++) CHECK(mn.corner_vert[c] == mf.corner_vert[c]);
+    for (v = 0; v < 3u * mn.num_verts; v++) CHECK(h_same(mn.pos[v], mf.pos[v]));
+    for (v = 0; v < mn.num_verts; v++) {
+        CHECK(mn.pos[3 * v + 2] == 0);
+        if (v < in.num_verts && (in.vert_tag[v] & SUBD_VTAG_BOUNDARY))
+            CHECK(mn.pos[3 * v] == in.pos[3 * v] && mn.pos[3 * v + 1] == in.pos[3 * v + 1]);
+    }
+}
+
+/* Area-weighted normal of v in m, brute force over every face, in double. */
+static void normal_dbl(const subd_mesh *m, uint32_t v, double *n)
+{
+    uint32_t f, j, k;
+    n[0] = n[1] = n[2] = 0.0;
+    for (f = 0; f < m->num_faces; f++) {
+        const uint32_t *q = m->corner_vert + 3u * f;
+        double e[2][3];
+        for (j = 0; j < 3u && q[j] != v; j++) {}
+        if (j == 3u) continue;
+        for (k = 0; k < 3u; k++) {
+            double p = h_dbl(m->pos[3u * v + k]);
+            e[0][k] = h_dbl(m->pos[3u * q[(j + 1u) % 3u] + k]) - p;
+            e[1][k] = h_dbl(m->pos[3u * q[(j + 2u) % 3u] + k]) - p;
+        }
+        n[0] += e[0][1] * e[1][2] - e[0][2] * e[1][1];
+        n[1] += e[0][2] * e[1][0] - e[0][0] * e[1][2];
+        n[2] += e[0][0] * e[1][1] - e[0][1] * e[1][0];
+    }
+}
+
+/* One normal-mode step a -> b of the tube, checked in double: every old boundary vertex
+ * moved by exactly the normal component of the interior rule's displacement (target 1/2 p
+ * + 1/2 the mean of its new neighbours in b) along its area-weighted normal in a; so its
+ * displacement x unit normal is ~0. New boundary vertices are the midpoints of their edge.
+ * *worst_cross: the largest |displacement x unit normal|^2. Returns how many boundary
+ * vertices moved by more than 1e-3. Tolerances: Q16.16 4 LSB
+ * (the normal's direction is kept to 2^-19, the projection rounds once, the target once);
+ * float32 2e-6 (coordinates below 4, a few roundings). */
+static uint32_t check_normal_step(const subd_mesh *a, const subd_mesh *b, double *worst_cross)
+{
+    const double tol = SUBD_FIXED ? 4.0 / 65536.0 : 2e-6;
+    uint32_t v, k, moved = 0;
+    for (v = 0; v < b->num_verts; v++) {
+        uint32_t ring[32], n, j, cnt = 0;
+        double t[3] = {0, 0, 0}, p[3], nn[3], dd[3], dn = 0, n2 = 0, cr[3], c2;
+        if (!(b->vert_tag[v] & SUBD_VTAG_BOUNDARY)) continue;
+        n = subd_vertex_ring(b, v, ring, 32);
+        if (!CHECK(n >= 2u && n <= 32u)) return moved;
+        if (v >= a->num_verts) { /* new: midpoint of its boundary edge, in the input */
+            uint32_t e0 = ring[0], e1 = ring[n - 1u];
+            for (k = 0; k < 3u; k++) {
+                double mid = 0.5 * (h_dbl(a->pos[3u * e0 + k]) + h_dbl(a->pos[3u * e1 + k]));
+                CHECK(fabs(h_dbl(b->pos[3u * v + k]) - mid) <= tol);
+            }
+            continue;
+        }
+        for (k = 0; k < 3u; k++) p[k] = h_dbl(a->pos[3u * v + k]);
+        for (j = 0; j < n; j++) {
+            if (ring[j] < a->num_verts) continue;
+            cnt++;
+            for (k = 0; k < 3u; k++) t[k] += h_dbl(b->pos[3u * ring[j] + k]);
+        }
+        if (cnt == 0) {
+            for (k = 0; k < 3u; k++) CHECK(b->pos[3u * v + k] == a->pos[3u * v + k]);
+            continue;
+        }
+        normal_dbl(a, v, nn);
+        for (k = 0; k < 3u; k++) {
+            t[k] = 0.5 * p[k] + 0.5 * t[k] / (double)cnt;
+            dn += (t[k] - p[k]) * nn[k];
+            n2 += nn[k] * nn[k];
+        }
+        if (!CHECK(n2 > 0.0)) continue;
+        for (k = 0; k < 3u; k++) {
+            double want = p[k] + dn / n2 * nn[k];
+            dd[k] = h_dbl(b->pos[3u * v + k]) - p[k];
+            CHECK(fabs(h_dbl(b->pos[3u * v + k]) - want) <= tol);
+        }
+        /* |d x n|^2 / |n|^2 = |d x unit normal|^2, squared: no sqrt (libm) on the device */
+        cr[0] = dd[1] * nn[2] - dd[2] * nn[1];
+        cr[1] = dd[2] * nn[0] - dd[0] * nn[2];
+        cr[2] = dd[0] * nn[1] - dd[1] * nn[0];
+        c2 = (cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]) / n2;
+        CHECK(c2 <= tol * tol);
+        if (c2 > *worst_cross) *worst_cross = c2;
+        if (dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2] > 1e-6) moved++;
+    }
+    return moved;
+}
+
+/* Rotation by 90 degrees about z, (x, y, z) -> (-y, x, z), or (fixed only) about x,
+ * (x, y, z) -> (x, -z, y): exact in both arithmetics. */
+static void rot90(const subd_real *p, subd_real *q, int about_x)
+{
+    if (about_x) {
+        q[0] = p[0]; q[1] = -p[2]; q[2] = p[1];
+    } else {
+        q[0] = -p[1]; q[1] = p[0]; q[2] = p[2];
+    }
+}
+
+static void q48_normal_box(void)
+{
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, cur, nxt, m, m2, in2;
+    subd_q48_opts o1 = opts_normal(1), o3 = opts_normal(3);
+    uint32_t s, moved = 0, v, c, axis;
+    double worst = 0.0;
+    static subd_real pos2[3 * 64];
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    tube_list(&fl, 4);
+    if (!h_build(&a, &fl, &in)) return;
+    CHECK_EQ(in.num_boundary_loops, 2);
+    cur = in;
+    for (s = 0; s < 3u; s++) {
+        if (!run(&a, &cur, &o1, &nxt)) return;
+        check_step(&cur, &nxt, 0);
+        moved += check_normal_step(&cur, &nxt, &worst);
+        cur = nxt;
+    }
+    CHECK(moved >= 16u); /* at least the 16 input boundary vertices once */
+#if H_HOST
+    printf("    tube, normal boundary, 3 steps: boundary vertices moved %u, worst |displacement x unit normal| %.3g\n",
+           (unsigned)moved, sqrt(worst));
+#endif
+    /* the same three steps in one call give the same mesh */
+    if (!run(&a, &in, &o3, &m)) return;
+    CHECK_EQ(m.num_verts, cur.num_verts);
+    for (v = 0; v < 3u * m.num_verts && v < 3u * cur.num_verts; v++) CHECK(m.pos[v] == cur.pos[v]);
+    h_hash("q48_tube_normal", h_mesh_hash(&m));
+    /* rotation invariance, bit for bit */
+    for (axis = 0; axis < (SUBD_FIXED ? 2u : 1u); axis++) {
+        for (v = 0; v < in.num_verts; v++) rot90(in.pos + 3u * v, pos2 + 3u * v, (int)axis);
+        fl.pos = pos2;
+        if (!h_build(&a, &fl, &in2) || !run(&a, &in2, &o3, &m2)) return;
+        if (!CHECK_EQ(m2.num_verts, m.num_verts)) return;
+        for (c = 0; c < m.num_corners; c++) CHECK(m.corner_vert[c] == m2.corner_vert[c]);
+        for (v = 0; v < m.num_verts; v++) {
+            subd_real q[3];
+            rot90(m.pos + 3u * v, q, (int)axis);
+            /* ==: the same bits, but for the sign of a zero (float32 x - x is +0 whichever
+             * sign x has, so -0 need not map to -0) */
+            CHECK(q[0] == m2.pos[3u * v] && q[1] == m2.pos[3u * v + 1u] && q[2] == m2.pos[3u * v + 2u]);
+        }
+        fl.pos = g_pos;
+    }
+}
+
 /* hexfan.obj from the corpus (decimal positions): same result as the built fan. */
 static void q48_hexfan_file(void)
 {
@@ -636,12 +846,17 @@ static void q48_plan_exhaustive(void)
     subd_arena_init(&a, g_big, BIG_BYTES);
     if (!h_build(&a, &fl, &in)) return;
     plan_case(&in, &o, 1);
+    o = opts_normal(1);
+    plan_case(&in, &o, 1);
+    o = opts(1, 0);
     fan_list(&fl, 5, 0, 0);
     if (!h_build(&a, &fl, &in2)) return;
     o = opts(3, 0);
     plan_case(&in2, &o, 0);
     o = opts(2, SUBD_Q48_NO_SMOOTH);
     o.boundary = SUBD_Q48_BOUNDARY_SMOOTH;
+    plan_case(&in2, &o, 0);
+    o = opts_normal(3);
     plan_case(&in2, &o, 0);
 }
 
@@ -724,6 +939,8 @@ const test_case suite_quasi48[] = {
     {"q48_torus", q48_torus},
     {"q48_smoothing", q48_smoothing},
     {"q48_tags_and_boundary", q48_tags_and_boundary},
+    {"q48_normal_planar", q48_normal_planar},
+    {"q48_normal_box", q48_normal_box},
     {"q48_hexfan_file", q48_hexfan_file},
     {"q48_plan_exhaustive", q48_plan_exhaustive},
     {"q48_errors", q48_errors},

@@ -675,5 +675,35 @@ printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1\n2\n3\n0 2 3\n' > "$T/mult
 run "$FLOAT" info "$T/multi.off"
 is 0 && grep -q "^faces: 2$" "$T/out"; check $? "OFF with faces over several lines: read (2 faces)"
 
+# --- quasi48 --boundary normal and pia per-phase --stats (issue 15, items 2 and 3) ---
+# phase member N of the pia JSON: phase_num boundary_phase iterations
+phase_num() { sed -n "s/.*\"$1\":{\([^}]*\)}.*/\1/p" "$T/out" | sed -n "s/.*\"$2\":\([0-9][0-9.e+-]*\).*/\1/p"; }
+top_iter() { sed -n 's/.*,"iterations":\([0-9]*\),"max_err".*/\1/p' "$T/out"; }
+for b in "$FLOAT" "$FIXED"; do
+    for m in paper fast; do
+        run "$b" pia --tol 0.001 --method $m --stats test/data/grid_tri_8x8.obj -o "$T/pia_ph.obj"
+        bi=$(phase_num boundary_phase iterations); ii=$(phase_num interior_phase iterations); ti=$(top_iter)
+        bv=$(phase_num boundary_phase vertices); iv=$(phase_num interior_phase vertices)
+        is 0 && json_ok "$T/out" && [ -n "$bi" ] && [ -n "$ii" ] && [ -n "$ti" ] && [ $((bi + ii)) -eq "$ti" ] &&
+            [ "$bi" -ge 1 ] && [ "$bv" = 32 ] && [ "$iv" = 49 ]
+        check $? "$(basename "$b") pia --method $m --stats on the open 8x8 grid: boundary $bi + interior $ii = $ti iterations, 32 + 49 vertices"
+    done
+    run "$b" pia --tol 0.001 --method paper --stats test/data/icosahedron.obj -o "$T/pia_ph.obj"
+    is 0 && json_ok "$T/out" && [ "$(phase_num boundary_phase iterations)" = 0 ] &&
+        [ "$(phase_num boundary_phase vertices)" = 0 ] && [ "$(phase_num interior_phase vertices)" = 12 ]
+    check $? "$(basename "$b") pia --stats on the closed icosahedron: empty boundary phase"
+    # a planar open mesh (z = 0): the normal mode leaves the boundary in place, as fixed does
+    run "$b" quasi48 -l 3 --boundary fixed test/data/grid_tri_8x8.obj -o "$T/q_fixed.obj"
+    run "$b" quasi48 -l 3 --boundary normal --stats test/data/grid_tri_8x8.obj -o "$T/q_normal.obj"
+    is 0 && json_ok "$T/out" && grep -q '"boundary":"normal"' "$T/out" && cmp -s "$T/q_fixed.obj" "$T/q_normal.obj"
+    check $? "$(basename "$b") quasi48 --boundary normal on the planar 8x8 grid: the same file as --boundary fixed"
+done
+run "$FLOAT" pia --tol 0.001 test/data/grid_tri_8x8.obj -o "$T/pia_ph.obj"
+is 0 && grep -q "^pia: [0-9]* iterations (boundary [0-9]*, interior [0-9]*)" "$T/err"
+check $? "pia without --stats: stderr names the boundary and interior iterations"
+usage_case_pre quasi48 --boundary sideways test/data/icosahedron.obj -o "$T/x.obj" &&
+    grep -q "expected fixed, smooth or normal" "$T/err"
+check $? "quasi48 --boundary sideways: exit 1, lists fixed, smooth and normal"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

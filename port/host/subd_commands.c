@@ -81,17 +81,32 @@ static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_
     if (st != SUBD_OK) return st;
     *out = *in;
     out->pos = pos;
-    snprintf(x->json, sizeof x->json,
-             "\"method\":\"%s\",\"tol\":%.9g,\"iterations\":%lu,\"max_err\":%.9g,\"mean_err\":%.9g,\"converged\":%s",
-             o->method == SUBD_PIA_FAST ? "fast" : "paper", o->tol, (unsigned long)res.iterations,
-             host_real_to_double(res.max_err), host_real_to_double(res.mean_err), res.converged ? "true" : "false");
+    {
+        /* the paper's two phases (section 4), as subd_pia_result reports them */
+        char ph[2][160];
+        const subd_pia_phase *p[2];
+        int k;
+        p[0] = &res.boundary;
+        p[1] = &res.interior;
+        for (k = 0; k < 2; k++)
+            snprintf(ph[k], sizeof ph[k], "{\"iterations\":%lu,\"vertices\":%lu,\"max_err\":%.9g,\"mean_err\":%.9g}",
+                     (unsigned long)p[k]->iterations, (unsigned long)p[k]->verts, host_real_to_double(p[k]->max_err),
+                     host_real_to_double(p[k]->mean_err));
+        snprintf(x->json, sizeof x->json,
+                 "\"method\":\"%s\",\"tol\":%.9g,\"iterations\":%lu,\"max_err\":%.9g,\"mean_err\":%.9g,\"converged\":%s,"
+                 "\"boundary_phase\":%s,\"interior_phase\":%s",
+                 o->method == SUBD_PIA_FAST ? "fast" : "paper", o->tol, (unsigned long)res.iterations,
+                 host_real_to_double(res.max_err), host_real_to_double(res.mean_err), res.converged ? "true" : "false",
+                 ph[0], ph[1]);
+    }
     x->not_converged = !res.converged;
     x->max_err = host_real_to_double(res.max_err);
     if (!o->stats && !o->quiet) {
         progress_pause();
-        fprintf(stderr, "pia: %lu iterations, max error %.6g, mean error %.6g, %s\n", (unsigned long)res.iterations,
-                host_real_to_double(res.max_err), host_real_to_double(res.mean_err),
-                res.converged ? "converged" : "NOT converged (raise --max-iter or --tol)");
+        fprintf(stderr, "pia: %lu iterations (boundary %lu, interior %lu), max error %.6g, mean error %.6g, %s\n",
+                (unsigned long)res.iterations, (unsigned long)res.boundary.iterations,
+                (unsigned long)res.interior.iterations, host_real_to_double(res.max_err),
+                host_real_to_double(res.mean_err), res.converged ? "converged" : "NOT converged (raise --max-iter or --tol)");
     }
     return SUBD_OK;
 }
@@ -121,7 +136,9 @@ static int q48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_
     if (st == SUBD_OK)
         snprintf(x->json, sizeof x->json, "\"binary_steps\":%lu,\"smoothing\":%s,\"boundary\":\"%s\"",
                  (unsigned long)o->levels, o->no_smooth ? "false" : "true",
-                 o->q48_boundary == SUBD_Q48_BOUNDARY_SMOOTH ? "smooth" : "fixed");
+                 o->q48_boundary == SUBD_Q48_BOUNDARY_SMOOTH   ? "smooth"
+                 : o->q48_boundary == SUBD_Q48_BOUNDARY_NORMAL ? "normal"
+                                                               : "fixed");
     return st;
 }
 
@@ -344,7 +361,7 @@ const command tool_commands[] = {
                                        "--max-iter K (default 100), --method paper|fast",
      CMD_OUTPUT_REQUIRED, "pia", 0, 0, LOOP_OPTS | OPT_TOL | OPT_MAX_ITER | OPT_METHOD, pia_plan, pia_run, NULL},
     {"quasi48", "[-l N] INPUT -o OUTPUT", "quasi 4-8 subdivision, N binary steps (default 2 = one\n"
-                                          "4-8 refinement); --no-smooth, --boundary fixed|smooth,\n"
+                                          "4-8 refinement); --no-smooth, --boundary fixed|smooth|normal,\n"
                                           "--tag-boundary, --crease-angle DEG",
      CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_Q48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE, q48_plan, q48_run, NULL},
     {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"

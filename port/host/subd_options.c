@@ -374,7 +374,8 @@ static const tool_option options[] = {
     {"--boundary", NULL, "R", 0, 0, set_boundary,
      "loop/limit/pia: boundary and crease rule, paper (the paper's\n"
      "section 4, default) or bspline (midpoints, as OpenSubdiv and\n"
-     "CGAL); quasi48: fixed (default) or smooth boundary vertices"},
+     "CGAL); quasi48: fixed (default), smooth or normal (along the\n"
+     "surface normal, section 4.3) boundary vertices"},
     {"--no-smooth", NULL, NULL, 0, OPT_NO_SMOOTH, set_flag,
      "(quasi48, semireg48, adapt) refinement only, no smoothing"},
     {"--tag-boundary", NULL, NULL, 0, OPT_Q48, set_flag,
@@ -545,7 +546,8 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         } else if (cmd->options & OPT_Q48) {
             if (strcmp(b, "fixed") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_FIXED;
             else if (strcmp(b, "smooth") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_SMOOTH;
-            else return tool_usage_error("bad boundary mode '%s' for '%s' (expected fixed or smooth)", b, cmd->name);
+            else if (strcmp(b, "normal") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_NORMAL;
+            else return tool_usage_error("bad boundary mode '%s' for '%s' (expected fixed, smooth or normal)", b, cmd->name);
         } else {
             return tool_usage_error("option --boundary does not apply to '%s'", cmd->name);
         }

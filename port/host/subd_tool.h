@@ -89,7 +89,7 @@ typedef struct tool_opts {
  * OBJ vn) and extra --stats members (a JSON fragment without braces, e.g. "iterations":9). */
 typedef struct scheme_extra {
     subd_real *normals;
-    char json[256];
+    char json[512]; /* pia --stats: the totals and two phase objects, about 320 bytes */
     void *host_mem; /* output arrays a scheme built in host memory (freed at exit) */
     int not_converged; /* pia: the tolerance was not reached (exit EXIT_NOT_CONVERGED)   */
     double max_err;    /* pia: the error reached                                        */

@@ -129,7 +129,7 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
     r->alpha_line[0] = r->alpha_line[1] = 0;
     while (subd_text_next_line(&t)) {
         const char *tok[3], *tend[3], *s, *e = t.line;
-        uint32_t n = 0, v[2], h = SUBD_NONE;
+        uint32_t n = 0, v[2] = {0, 0}, h = SUBD_NONE;
         int st = SUBD_OK, crease, alpha, falpha;
         int64_t an = 0, ad = 1;
         uint8_t vbit = 0;

@@ -59,3 +59,9 @@ run adapt_torus_point adapt -l 6 --point 1.4,0,0 demo/torus_12x6.obj --pitch 60
 run adapt_torus_ramp adapt -l 6 --ramp x demo/torus_12x6.obj --pitch 60
 run adapt_torus_plane adapt -l 6 --plane 0,0,0,1,0,0 demo/torus_12x6.obj --pitch 60
 run adapt_spot_chord adapt -l 6 --chord 0.002 demo/spot_triangulated.obj --edges --size 1200x700
+
+echo "-- alpha tags (semi-stationary paper, section 3, figure 4(d))"
+# one cube corner (vertex 1, at (-1,-1,-1)) tagged alpha = 9 rad, the rest 0;
+# cos kernel, S_3: the tagged corner is pulled in; the untagged run beside it for comparison
+run alpha_tags_fig4d alpha --order 3 --kernel cos -l 4 --tags demo/fig4d_alpha.tags test/data/cube_quad.obj --yaw 45 --pitch 0
+run alpha_tags_fig4d_untagged alpha --order 3 --kernel cos -l 4 test/data/cube_quad.obj --yaw 45 --pitch 0

@@ -68,9 +68,10 @@ typedef struct subd_alpha_opts {
     int32_t alpha_num;    /* alpha = 2 pi alpha_num / alpha_den radians                   */
     int32_t alpha_den;    /* > 0                                                          */
     subd_real stiffness;  /* s = f(0); must be > -1/2 (theorem 1)                         */
-    /* Optional per-vertex alpha numerators (curves only, section 3; shared alpha_den), one
-     * per input point; NULL = alpha_num everywhere. See the curve section for how they
-     * travel. Surfaces: must be NULL. */
+    /* Optional alpha tags (section 3): numerators over the shared alpha_den, each within
+     * +-SUBD_ALPHA_MAX_NUM; NULL = alpha_num everywhere. Curves: one per input point.
+     * Surfaces: one per input vertex for odd k, one per input face for even k. See the
+     * curve and surface sections for how they travel. */
     const int32_t *tag_num;
 } subd_alpha_opts;
 
@@ -172,8 +173,40 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
 /* S' = C, B' = 2B. On a regular quad grid with f = 1, S_3 is the tensor-product cubic     */
 /* B-spline refinement (the face, edge and vertex points of Catmull-Clark).                */
 /*                                                                                        */
-/* Not implemented: per-face alpha (k even) and per-vertex alpha (k odd) tags; tag_num must */
-/* be NULL for surfaces.                                                                  */
+/* Tags (section 3: "tag every point a parameter when k is odd and every face a parameter  */
+/* when k is even"). tag_num holds one alpha numerator (over alpha_den) per input vertex   */
+/* (odd k) or per input face (even k). Formula (3) on a face uses that face's alpha: its   */
+/* tag (face tags) or the mean of its corners' tags (vertex tags). The kind of element      */
+/* that carries tags alternates within a level: S_2 leaves face tags, each C swaps faces    */
+/* and vertices (C is a duality), so a level ends with the kind it started with. Rule      */
+/* (src/alpha_tags.c): an element descending from one tagged element inherits its alpha,  */
+/* one descending from several takes their mean:                                           */
+/*                                                                                        */
+/*   step  tagged before  new element                 its alpha                           */
+/*   ----  -------------  --------------------------  ----------------------------------- */
+/*   S_2   faces          face-face of F              alpha(F)                            */
+/*   S_2   faces          edge-face of edge (F1|F2)   mean(alpha(F1), alpha(F2))          */
+/*   S_2   faces          vertex-face of v            mean over the faces around v        */
+/*   S_2   vertices       face-face of F              mean over F's corners (= F's alpha) */
+/*   S_2   vertices       edge-face of edge (a, b)    mean(alpha(a), alpha(b))            */
+/*   S_2   vertices       vertex-face of v            alpha(v)                            */
+/*   C     faces          vertex at F's centroid      alpha(F)                            */
+/*   C     faces          midpoint of boundary edge   alpha(the edge's face)              */
+/*   C     faces          kept boundary vertex v      mean over the faces around v        */
+/*   C     vertices       face of v                   alpha(v)                            */
+/*                                                                                        */
+/* The mean of n tags is floor(sum / n) in whole units of 1/alpha_den turn (exact int64   */
+/* sum; the curve rule's floor((a + b) / 2) is n = 2): integer arithmetic, so both builds  */
+/* carry the same tags, and equal tags reproduce the untagged result bit for bit. Sums run */
+/* in corner order and ring order. Why the tagged kind alternates instead of tracking face */
+/* alphas throughout: a vertex tag (odd k) then reaches its vertex-face, whose centroid is */
+/* that vertex's new point, unchanged at every level (figure 4(d)), and a face tag (even k */
+/* >= 4) its own output face, instead of being averaged with its neighbours at every C.    */
+/* Why numerators over the shared alpha_den and not a subd_real angle: the kernel takes    */
+/* exact turns (a radian angle would be rounded by the division by 2 pi), and integer     */
+/* means are the same on every target and arithmetic. A mean loses less than 1/alpha_den  */
+/* turn: choose a fine den (e.g. 3600000, degrees with 4 decimals) for smooth gradations.  */
+/* Locality: a tag changes only the points within the operator's support of its element.  */
 
 typedef struct subd_alpha_surface_info {
     int32_t continuity;   /* -1 not smooth (s <= 0), 0 GC0 (s in (0, 1/2]), 1 GC1 (any k)  */
@@ -185,7 +218,7 @@ typedef struct subd_alpha_surface_info {
  * N = 4 it would give 0 instead of Doo-Sabin's 1/4). The code follows formula (3).       */
 
 /* Exact arena bytes of subd_alpha_surface (the peak: after the first step two consecutive
- * steps' meshes coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM (NULL, options,
+ * steps' meshes, and with tags their tag arrays, coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM (NULL, options,
  * |s| >= 2^31, a mesh without adjacency: twin, vert_out or corner_face NULL, e.g. subd_loop
  * output without SUBD_LOOP_ADJACENCY), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (no faces),
  * SUBD_ERR_FACE_SIZE (an interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face
@@ -194,15 +227,22 @@ int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint3
 
 /* opts->levels (1..SUBD_MAX_LEVELS) levels of S_k, k = opts->order in 2..
  * SUBD_ALPHA_MAX_ORDER: level n is a Doo-Sabin type step with f_n = f(alpha; n) followed by
- * k - 2 dual averaging steps. tag_num must be NULL (tags are not implemented for surfaces).
+ * k - 2 dual averaging steps. With tag_num, each face's alpha comes from the tags (above);
+ * the tags of each step are one int32 per tagged element in the arena (the plan counts them,
+ * two steps' at a time) and are given back at the end.
  * The input is not modified; the result's arrays are in the arena (the only memory left
  * in use after success). info (may be NULL) receives the continuity class (the S_2 class
  * for every order: the paper proves GC^(k-1) only away from extraordinary points).
- * Errors: SUBD_ERR_PARAM (NULL, options, |s| >= 2^31, a mesh without adjacency, a level
- * with f_n <= -1), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY,
- * SUBD_ERR_FACE_SIZE (diag.vertex), SUBD_ERR_NAN (diag.vertex), SUBD_ERR_RANGE (a kernel
- * value or a position overflows), SUBD_ERR_NOMEM (diag.bytes_needed = the plan),
- * SUBD_ERR_TOO_BIG. Stack: about 400 bytes. Work: O(output corners) per level. */
+ * Errors, in this order: SUBD_ERR_PARAM (NULL, options, |s| >= 2^31, a mesh without
+ * adjacency), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY, SUBD_ERR_NAN (diag.vertex),
+ * SUBD_ERR_PARAM (a tag outside +-SUBD_ALPHA_MAX_NUM: diag.vertex for odd k, diag.face for
+ * even k; the first one), SUBD_ERR_FACE_SIZE (diag.vertex), SUBD_ERR_TOO_BIG,
+ * SUBD_ERR_NOMEM, then while running SUBD_ERR_PARAM (a level with f_n <= -1 on some
+ * face; no element named) and SUBD_ERR_RANGE (a kernel value or a position overflows).
+ * SUBD_ERR_NOMEM sets diag.bytes_needed = the plan. On every failure the arena is back at
+ * its mark and *out is untouched. Stack: about 450 bytes. Work: O(output corners) per
+ * level (with tags: plus one kernel evaluation per face whose alpha differs from the
+ * previous face's). */
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag);
 

@@ -1,13 +1,21 @@
 /* SPDX-License-Identifier: MIT */
-/* Tag files: crease edges, corner and fixed vertices for a mesh, as text in a memory buffer,
- * so a firmware image can carry (or receive) the same tag files as the host tool's --tags.
+/* Tag files: crease edges, corner and fixed vertices for a mesh, and the alpha parameters of
+ * the semi-stationary operators (subd_alpha.h), as text in a memory buffer, so a firmware
+ * image can carry (or receive) the same tag files as the host tool's --tags.
  * Included by subd.h.
  *
  * Format, one tag per line (LF, CRLF or lone CR line ends, as the OBJ and OFF readers):
  *   crease I J    the edge between vertices I and J gets SUBD_ETAG_CREASE (both half-edges)
  *   corner I      vertex I gets SUBD_VTAG_CORNER
  *   fixed I       vertex I gets SUBD_VTAG_FIXED
- * Vertex numbers are 1-based, as in OBJ, and written as plain decimal digits. Fields are
+ *   alpha I A     vertex I's alpha is A (alpha curves; alpha surfaces of odd order)
+ *   falpha F A    face F's alpha is A (alpha surfaces of even order)
+ * A is a fraction of a turn, "N/D" or "N" (|N| <= 10^9, D in 1..10^9), or degrees "Xdeg"
+ * (optional sign, at most 4 decimals, |X| <= 36000), as the tool's --alpha. Alpha lines set
+ * no mesh bits: subd_tags_alpha turns them into numerators for subd_alpha_opts.tag_num; a
+ * later line for the same element wins. Face numbers are 1-based in face order (the order
+ * of OBJ f records). Vertex numbers are 1-based, as in OBJ, and written as plain decimal
+ * digits. Fields are
  * separated by spaces or tabs; '#' starts a comment that runs to the end of the line; blank
  * and comment-only lines are skipped. Keywords are lower case. An empty buffer is a valid
  * file with no tags.
@@ -29,6 +37,15 @@ extern "C" {
 typedef struct subd_tags_report {
     uint32_t creases;     /* crease lines (an edge named twice counts twice)              */
     uint32_t vertex_tags; /* corner and fixed lines                                       */
+    uint32_t vertex_alphas; /* alpha lines                                                */
+    uint32_t face_alphas;   /* falpha lines                                               */
+    /* The least common denominator of every alpha value (each a reduced fraction of a
+     * turn; degrees are tenths of thousandths over 3600000): 1 with no alpha lines, 0 when
+     * it does not fit int32. A den for subd_tags_alpha that makes every value exact. */
+    int32_t alpha_den;
+    /* The line of the first 'alpha' and of the first 'falpha' line (0: none), e.g. for a
+     * caller's message when a line names the kind of element its operator does not tag. */
+    uint32_t alpha_line[2];
     /* On SUBD_ERR_INDEX from a crease line whose two vertices exist but share no edge:
      * those vertices (0-based). SUBD_NONE otherwise. */
     uint32_t edge[2];
@@ -38,11 +55,13 @@ typedef struct subd_tags_report {
  * its tags into *report (may be NULL). Returns
  *   SUBD_OK              every line is a valid tag for m
  *   SUBD_ERR_PARAM       m NULL, or buf NULL with len > 0
- *   SUBD_ERR_PARSE       diag.line: not 'crease I J', 'corner I' or 'fixed I' (unknown
- *                        keyword, wrong number of fields, a field that is not a number)
- *   SUBD_ERR_INDEX       diag.line: a vertex number outside 1..num_verts (diag.vertex =
- *                        SUBD_NONE), or a crease pair that shares no edge (diag.vertex = I-1,
- *                        report->edge = {I-1, J-1})
+ *   SUBD_ERR_PARSE       diag.line: not 'crease I J', 'corner I', 'fixed I', 'alpha I A'
+ *                        or 'falpha F A' (unknown keyword, wrong number of fields, a field
+ *                        that is not a number, an alpha value not in the syntax above; the
+ *                        value is checked before the element number)
+ *   SUBD_ERR_INDEX       diag.line: a vertex number outside 1..num_verts or a face number
+ *                        outside 1..num_faces (diag.vertex = SUBD_NONE), or a crease pair
+ *                        that shares no edge (diag.vertex = I-1, report->edge = {I-1, J-1})
  * The first failing line is reported. */
 int subd_tags_check(const char *buf, uint32_t len, const subd_mesh *m, subd_tags_report *report, subd_diag *diag);
 
@@ -50,6 +69,19 @@ int subd_tags_check(const char *buf, uint32_t len, const subd_mesh *m, subd_tags
  * the tag bits in m (existing tags are kept; tags are only ever added). Same returns; on
  * any failure m is unchanged. */
 int subd_tags_apply(const char *buf, uint32_t len, subd_mesh *m, subd_tags_report *report, subd_diag *diag);
+
+/* Checks the whole file as subd_tags_check does and, only when every line is valid and every
+ * alpha value A is a whole number of 1/den turns (A * den an integer within
+ * +-SUBD_ALPHA_MAX_NUM), stores A * den for each 'alpha I A' line in vert_num[I-1] and for
+ * each 'falpha F A' line in face_num[F-1] (num_verts and num_faces entries; either may be
+ * NULL, then those lines are checked but not stored). Entries no line names keep their
+ * values (fill them with the uniform alpha_num first). Mesh bits are not set (that is
+ * subd_tags_apply). Same returns as subd_tags_check, plus SUBD_ERR_PARAM (den <= 0) and
+ * SUBD_ERR_RANGE (diag.line: a value that is not a whole number of 1/den turns or out of
+ * range; report->alpha_den is a den that avoids the first case). On any failure nothing is
+ * stored. No memory; work O(buffer length). */
+int subd_tags_alpha(const char *buf, uint32_t len, const subd_mesh *m, int32_t den, int32_t *vert_num,
+                    int32_t *face_num, subd_tags_report *report, subd_diag *diag);
 
 #ifdef __cplusplus
 }

@@ -166,7 +166,7 @@ static void copy3(subd_real *out, const subd_real *a)
     out[2] = a[2];
 }
 
-static int32_t tag_mean(int32_t a, int32_t b) { return (int32_t)(((int64_t)a + b) >> 1); }
+static int32_t tag_mean(int32_t a, int32_t b) { return subd_alpha_tag_mean((int64_t)a + b, 2u); }
 
 /* S_2 on a closed polygon of n points, in place, backwards: edge i writes 2i and 2i+1 and
  * later edges read only i' <= i < 2i (i >= 1); the wrap edge (n-1, 0) is done first. */

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Private interface of the alpha-subdivision files (alpha_kernel.c, alpha_curve.c,
- * alpha_surface.c): exact integer helpers, the kernel in Q32.32, and the weight type.
+ * alpha_surface.c, alpha_tags.c): exact integer helpers, the kernel in Q32.32, the weight
+ * type and the parameter-tag rules.
  *
  * Weights are computed in Q32.32 integers (int64, value * 2^32) from the kernel value and
  * then kept as subd_alpha_wt: a float in the float build (rounded once, correctly), the
@@ -36,6 +37,19 @@ int subd_alpha_kernel_q32(uint32_t kernel, int32_t num, int32_t den, uint32_t le
 int subd_alpha_check_opts(const subd_alpha_opts *o, uint32_t max_order, int64_t *s_q32);
 /* Table 1 / theorems 1-2: -1 for s <= 0, 0 for s <= 1/2, else smooth_class. */
 int32_t subd_alpha_continuity(int64_t s_q32, int32_t smooth_class);
+
+/* Parameter tags (alpha_tags.c; the rule is the table in subd_alpha.h). Tags are alpha
+ * numerators over the options' alpha_den. vertex_tags != 0: t has one tag per vertex of m,
+ * else one per face. */
+/* floor(sum / n), n >= 1: the arithmetic mean of n tags, in whole units of 1/den turn. */
+int32_t subd_alpha_tag_mean(int64_t sum, uint32_t n);
+/* The alpha numerator formula (3) uses on face f: its tag, or the mean of its corners'. */
+int32_t subd_alpha_face_num(const subd_mesh *m, int vertex_tags, const int32_t *t, uint32_t f);
+/* The face tags of the Doo-Sabin type step's output (its face order) into out. */
+void subd_alpha_tags_s2(const subd_mesh *m, int vertex_tags, const int32_t *t, int32_t *out);
+/* The dual step C's output tags into out: vertex tags from face tags, face tags from vertex
+ * tags (C's vertex and face order). */
+void subd_alpha_tags_dual(const subd_mesh *m, int vertex_tags, const int32_t *t, int32_t *out);
 
 #if SUBD_FIXED /* the weight type differs: Q32.32 integers, products formed in 128 bits (see above) */
 typedef int64_t subd_alpha_wt;

@@ -132,25 +132,44 @@ static void to_counts(const ds_stats *s, mesh_counts *c)
     c->nlv = 0;
 }
 
+/* Which kind of element carries the tags after step j of a level (j = 0: S_2, j >= 1: the
+ * j-th C): S_2 leaves face tags and each C swaps the kind (alpha_tags.c). */
+static int step_vertex_tags(uint32_t j) { return (j & 1u) != 0u; }
+
+/* The kind tagged at the start of a level: vertices for odd k, faces for even k. */
+static int level_vertex_tags(const subd_alpha_opts *o) { return (o->order & 1u) != 0u; }
+
+/* Bytes of one step's output tags (0 without tags): one int32 per tagged element. */
+static uint32_t tag_bytes(const subd_alpha_opts *o, const ds_stats *s, uint32_t j)
+{
+    if (!o->tag_num) return 0;
+    return SUBD_ALIGN_UP(4u * (step_vertex_tags(j) ? s->v : s->f));
+}
+
+/* The arena of every step t > 0: [previous mesh arrays][previous tags][this step's arrays]
+ * [this step's tags][the validator's scratch]; then this step's arrays and tags move down to
+ * the caller's mark. The peak is the largest such sum. */
 static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes, subd_diag *d)
 {
     ds_stats cur, nxt;
     mesh_counts c;
-    uint32_t t, peak = 0, prev_arrays = 0, bad;
+    uint32_t t, peak = 0, prev = 0, bad;
     int st = input_stats(in, &cur, &bad);
     if (st != SUBD_OK) {
         d->vertex = bad;
         return st;
     }
     for (t = 0; t < o->levels * (o->order - 1u); t++) {
-        uint32_t total, here;
+        uint32_t total, tags;
+        uint64_t here;
         if (!next_stats(&cur, t % (o->order - 1u) != 0u, &nxt)) return SUBD_ERR_TOO_BIG;
         to_counts(&nxt, &c);
         total = subd_mesh_counts_bytes(&c);
-        if (total == UINT32_MAX || (uint64_t)total + prev_arrays >= UINT32_MAX) return SUBD_ERR_TOO_BIG;
-        here = total + prev_arrays;
-        if (here > peak) peak = here;
-        prev_arrays = subd_mesh_arrays_bytes(&c);
+        tags = tag_bytes(o, &nxt, t % (o->order - 1u)); /* counts < 2^28: no wrap */
+        here = (uint64_t)total + prev + tags;
+        if (total == UINT32_MAX || here >= UINT32_MAX) return SUBD_ERR_TOO_BIG;
+        if (here > peak) peak = (uint32_t)here;
+        prev = subd_mesh_arrays_bytes(&c) + tags;
         cur = nxt;
     }
     *bytes = peak;
@@ -172,7 +191,7 @@ static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_
     int st;
     if (!in || !mesh_ok(in)) return SUBD_ERR_PARAM;
     if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, s_q32)) != SUBD_OK) return st;
-    if (o->levels < 1u || o->tag_num) return SUBD_ERR_PARAM;
+    if (o->levels < 1u) return SUBD_ERR_PARAM;
     if (in->num_faces == 0) return SUBD_ERR_EMPTY;
     return SUBD_OK;
 }
@@ -197,12 +216,47 @@ static subd_real centroid(const subd_mesh *m, uint32_t s, uint32_t e, uint32_t k
     return subd_avg(sum, e - s, ovf);
 }
 
-/* Formula (3) for every corner of every face of m, into pos (3 per corner). */
-static void ds_positions(const subd_mesh *m, subd_alpha_wt wa, subd_alpha_wt wb, subd_real *pos, uint32_t *ovf)
+/* The two weights of formula (3) for one alpha numerator at one level, cached: with no
+ * tags (or equal ones) the kernel runs once per level, as without tags. */
+typedef struct ds_weights {
+    const subd_alpha_opts *o;
+    int64_t s_q32;
+    uint32_t level;
+    int64_t num; /* INT64_MIN: nothing cached */
+    subd_alpha_wt wa, wb;
+} ds_weights;
+
+static int ds_weights_for(ds_weights *w, int32_t num, uint32_t *ovf)
+{
+    int64_t f, u, a, b;
+    int st;
+    if (num == w->num) return SUBD_OK;
+    st = subd_alpha_kernel_q32(w->o->kernel, num, w->o->alpha_den, w->level, w->s_q32, &f);
+    if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
+    if (st != SUBD_OK) return st;
+    u = SUBD_Q32_ONE + f;
+    a = subd_alpha_divq(f, u, 32, ovf);     /* f / (1 + f)        */
+    b = subd_alpha_divq(a, 2 * u, 32, ovf); /* f / (2 (1 + f)^2)  */
+    w->wa = subd_alpha_wt_from_q32(a, ovf);
+    w->wb = subd_alpha_wt_from_q32(b, ovf);
+    w->num = num;
+    return SUBD_OK;
+}
+
+/* Formula (3) for every corner of every face of m, into pos (3 per corner); each face with
+ * the alpha its tags give (t NULL: the options' alpha everywhere). */
+static int ds_positions(const subd_mesh *m, ds_weights *w, int vertex_tags, const int32_t *t, subd_real *pos,
+                        uint32_t *ovf)
 {
     uint32_t f, k;
     for (f = 0; f < m->num_faces; f++) {
         uint32_t s = m->face_start[f], e = m->face_start[f + 1u], i;
+        int32_t num = t ? subd_alpha_face_num(m, vertex_tags, t, f) : w->o->alpha_num;
+        subd_alpha_wt wa, wb;
+        int st = ds_weights_for(w, num, ovf);
+        if (st != SUBD_OK) return st;
+        wa = w->wa;
+        wb = w->wb;
         for (k = 0; k < 3u; k++) {
             subd_real c = centroid(m, s, e, k, ovf);
             for (i = s; i < e; i++) {
@@ -214,6 +268,7 @@ static void ds_positions(const subd_mesh *m, subd_alpha_wt wa, subd_alpha_wt wb,
             }
         }
     }
+    return SUBD_OK;
 }
 
 /* Doo-Sabin faces of m into out's face_start / corner_vert (counts already set). */
@@ -290,16 +345,34 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
     out->line_start[0] = 0;
 }
 
+/* SUBD_OK when every input tag is within +-SUBD_ALPHA_MAX_NUM; else SUBD_ERR_PARAM with
+ * diag.vertex (odd k: vertex tags) or diag.face (even k: face tags). */
+static int check_tags(const subd_mesh *in, const subd_alpha_opts *o, subd_diag *d)
+{
+    int vt = level_vertex_tags(o);
+    uint32_t n = vt ? in->num_verts : in->num_faces, i;
+    for (i = 0; o->tag_num && i < n; i++)
+        if (o->tag_num[i] > SUBD_ALPHA_MAX_NUM || o->tag_num[i] < -SUBD_ALPHA_MAX_NUM) {
+            if (vt) d->vertex = i;
+            else d->face = i;
+            return SUBD_ERR_PARAM;
+        }
+    return SUBD_OK;
+}
+
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag)
 {
     subd_entry e;
     subd_diag *d = subd_entry_begin(&e, arena, diag);
     int64_t s_q32;
-    uint32_t mark = e.mark, bytes, l, t, i, ovf = 0;
+    uint32_t mark = e.mark, bytes, t, i, ovf = 0, keep = 0;
     subd_mesh prev, cur;
     ds_stats st_in, st_cur;
-    int st;
+    ds_weights w;
+    const int32_t *prev_tags;
+    int32_t *cur_tags = 0;
+    int prev_vt, st;
 
     if (!arena || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = check_args(in, o, &s_q32)) != SUBD_OK) return subd_entry_fail(&e, st);
@@ -308,6 +381,7 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
             d->vertex = i / 3u;
             return subd_entry_fail(&e, SUBD_ERR_NAN);
         }
+    if ((st = check_tags(in, o, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if ((st = surface_plan(in, o, &bytes, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(arena)) {
         d->bytes_needed = bytes;
@@ -316,27 +390,40 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
     input_stats(in, &st_in, &i);
     st_cur = st_in;
     prev = *in;
+    prev_tags = o->tag_num; /* the caller's: read in place */
+    prev_vt = level_vertex_tags(o);
+    w.o = o;
+    w.s_q32 = s_q32;
+    w.level = 0;
+    w.num = INT64_MIN;
+    w.wa = w.wb = 0;
     for (t = 0; t < o->levels * (o->order - 1u); t++) {
         ds_stats nx;
         mesh_counts c;
-        int dual = t % (o->order - 1u) != 0u;
-        next_stats(&st_cur, dual, &nx);
+        uint32_t j = t % (o->order - 1u), tb, arrays;
+        next_stats(&st_cur, j != 0u, &nx);
         to_counts(&nx, &c);
-        if (!dual) {
-            int64_t f, u, a, b;
-            l = t / (o->order - 1u);
-            st = subd_alpha_kernel_q32(o->kernel, o->alpha_num, o->alpha_den, l, s_q32, &f);
-            if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
-            if (st == SUBD_OK) st = subd_mesh_alloc_arrays(arena, &c, &cur);
+        arrays = subd_mesh_arrays_bytes(&c);
+        tb = tag_bytes(o, &nx, j);
+        if ((st = subd_mesh_alloc_arrays(arena, &c, &cur)) != SUBD_OK) break;
+        if (tb) {
+            /* right after the arrays, so the two move down as one block */
+            cur_tags = (int32_t *)subd_arena_alloc(arena, tb);
+            if (!cur_tags) { /* not expected: the plan counted it */
+                st = SUBD_ERR_NOMEM;
+                break;
+            }
+        }
+        if (j == 0u) {
+            w.level = t / (o->order - 1u);
+            w.num = INT64_MIN;
+            st = ds_positions(&prev, &w, prev_vt, prev_tags, cur.pos, &ovf);
             if (st != SUBD_OK) break;
-            u = SUBD_Q32_ONE + f;
-            a = subd_alpha_divq(f, u, 32, &ovf);         /* f / (1 + f)        */
-            b = subd_alpha_divq(a, 2 * u, 32, &ovf);     /* f / (2 (1 + f)^2)  */
-            ds_positions(&prev, subd_alpha_wt_from_q32(a, &ovf), subd_alpha_wt_from_q32(b, &ovf), cur.pos, &ovf);
             if (!ovf) ds_faces(&prev, &cur);
+            if (cur_tags) subd_alpha_tags_s2(&prev, prev_vt, prev_tags, cur_tags);
         } else {
-            if ((st = subd_mesh_alloc_arrays(arena, &c, &cur)) != SUBD_OK) break;
             dual_step(&prev, &cur, &ovf);
+            if (cur_tags) subd_alpha_tags_dual(&prev, prev_vt, prev_tags, cur_tags);
         }
         if (ovf) {
             st = SUBD_ERR_RANGE;
@@ -351,15 +438,21 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
             break;
         }
         if (t > 0u) {
-            /* drop the previous mesh: move this one down to where it started */
+            /* drop the previous mesh (and its tags): move this one down to where it started */
+            uint32_t delta = (uint32_t)((uint8_t *)cur.pos - (arena->base + mark));
             subd_arena_rewind(arena, mark);
-            subd_mesh_move_down(&cur, arena->base + mark, subd_mesh_arrays_bytes(&c));
-            subd_arena_alloc(arena, subd_mesh_arrays_bytes(&c));
+            subd_mesh_move_down(&cur, arena->base + mark, arrays + tb);
+            subd_arena_alloc(arena, arrays + tb);
+            if (cur_tags) cur_tags = (int32_t *)(void *)((uint8_t *)cur_tags - delta);
         }
         prev = cur;
+        prev_tags = cur_tags;
+        prev_vt = step_vertex_tags(j);
         st_cur = nx;
+        keep = arrays;
     }
     if (st != SUBD_OK) return subd_entry_fail(&e, st); /* d->bytes_needed is still 0 here */
+    if (o->tag_num) subd_arena_rewind(arena, mark + keep); /* the last tags were scratch */
     *out = cur;
     if (info) info->continuity = subd_alpha_continuity(s_q32, 1);
     return subd_entry_ok(&e);

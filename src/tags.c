@@ -2,7 +2,9 @@
 /* Tag files on memory buffers: 'crease I J', 'corner I', 'fixed I' lines (include/subd_tags.h)
  * turned into the mesh's SUBD_ETAG_CREASE, SUBD_VTAG_CORNER and SUBD_VTAG_FIXED bits, the
  * features the schemes honour (Hoppe et al. creases and corners, the quasi 4-8 paper's
- * section 4.3 tagged features).
+ * section 4.3 tagged features); and 'alpha V A', 'falpha F A' lines, the semi-stationary
+ * paper's per-vertex and per-face parameters (section 3), turned into alpha numerators over
+ * a caller's denominator (subd_tags_alpha) for subd_alpha_opts.tag_num.
  *
  * Choices:
  * - Two passes of one scan routine: the first only checks every line, the second (only when
@@ -21,21 +23,85 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include <stddef.h>
 #include "mesh_internal.h"
+#include "subd_alpha.h"
 #include "text.h"
 
-/* Parses a vertex number field [s, e): SUBD_OK with *v 0-based, SUBD_ERR_PARSE when it is not
- * all digits, SUBD_ERR_INDEX when it is outside 1..m->num_verts. */
-static int tag_vertex(const char *s, const char *e, const subd_mesh *m, uint32_t *v)
+/* Parses an element number field [s, e): SUBD_OK with *v 0-based, SUBD_ERR_PARSE when it is
+ * not all digits, SUBD_ERR_INDEX when it is outside 1..count. */
+static int tag_index(const char *s, const char *e, uint32_t count, uint32_t *v)
 {
     uint64_t n = 0;
     for (; s < e; s++) {
         if (*s < '0' || *s > '9') return SUBD_ERR_PARSE;
-        if (n <= m->num_verts) n = n * 10u + (uint64_t)(*s - '0'); /* stays below 2^36 */
+        if (n <= count) n = n * 10u + (uint64_t)(*s - '0'); /* stays below 2^36 */
     }
-    if (n == 0 || n > m->num_verts) return SUBD_ERR_INDEX;
+    if (n == 0 || n > count) return SUBD_ERR_INDEX;
     *v = (uint32_t)(n - 1u);
     return SUBD_OK;
 }
+
+static int64_t gcd64(int64_t a, int64_t b)
+{
+    if (a < 0) a = -a;
+    while (b) {
+        int64_t r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
+}
+
+/* An alpha value [s, e) as a reduced fraction *num / *den of a turn (den >= 1): "N" or "N/D"
+ * (|N| <= 10^9, D in 1..10^9), or "Xdeg" (degrees, optional sign, at most 4 decimals,
+ * |X| <= 36000), the syntax of the tool's --alpha. SUBD_ERR_PARSE otherwise. */
+static int alpha_value(const char *s, const char *e, int64_t *num, int64_t *den)
+{
+    int32_t n, d = 1;
+    int64_t g;
+    const char *slash;
+    if (e - s > 3 && e[-3] == 'd' && e[-2] == 'e' && e[-1] == 'g') {
+        int64_t v = 0;
+        uint32_t decimals = 0, digits = 0;
+        int neg = 0, dot = 0;
+        e -= 3;
+        if (s < e && (*s == '-' || *s == '+')) neg = *s++ == '-';
+        for (; s < e; s++) {
+            if (*s == '.' && !dot) {
+                dot = 1;
+                continue;
+            }
+            if (*s < '0' || *s > '9' || (dot && decimals == 4u)) return SUBD_ERR_PARSE;
+            v = v * 10 + (*s - '0');
+            digits++;
+            if (dot) decimals++;
+            if (v > 360000000) return SUBD_ERR_PARSE; /* 36000 degrees */
+        }
+        if (!digits) return SUBD_ERR_PARSE;
+        for (; decimals < 4u; decimals++) v *= 10;
+        if (v > 360000000) return SUBD_ERR_PARSE;
+        *num = neg ? -v : v;
+        *den = 3600000; /* 10^-4 degree units */
+    } else {
+        for (slash = s; slash < e && *slash != '/'; slash++) {
+        }
+        if (subd_text_parse_int(s, slash, &n) != SUBD_OK || n > 1000000000 || n < -1000000000) return SUBD_ERR_PARSE;
+        if (slash < e && (slash + 1 == e || slash[1] == '-' || slash[1] == '+' ||
+                          subd_text_parse_int(slash + 1, e, &d) != SUBD_OK || d < 1 || d > 1000000000))
+            return SUBD_ERR_PARSE;
+        *num = n;
+        *den = d;
+    }
+    g = gcd64(*num, *den);
+    *num /= g;
+    *den /= g;
+    return SUBD_OK;
+}
+
+/* Where subd_tags_alpha puts the values (den > 0), or NULL. */
+typedef struct alpha_fill {
+    int32_t den;
+    int32_t *vnum, *fnum;
+} alpha_fill;
 
 /* The half-edge from a to b or, when the edge only runs b -> a (a boundary edge), that one;
  * SUBD_NONE when a and b share no edge. */
@@ -50,18 +116,22 @@ static uint32_t find_edge(const subd_mesh *m, uint32_t a, uint32_t b)
     return SUBD_NONE;
 }
 
-/* One pass over the file. out == NULL checks only; out == m sets the bits (called only after
- * a checking pass succeeded, so it cannot fail half-way). */
-static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mesh *out, subd_tags_report *r,
-                     subd_diag *d)
+/* One pass over the file. out == NULL and write == 0 checks only (with af: also that every
+ * alpha converts to af->den); out == m sets the bits, write != 0 stores the alphas in af's
+ * arrays (both called only after a checking pass succeeded, so they cannot fail half-way). */
+static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mesh *out, const alpha_fill *af,
+                     int write, subd_tags_report *r, subd_diag *d)
 {
     text_cursor t;
     subd_text_init(&t, buf, len);
-    r->creases = r->vertex_tags = 0;
+    r->creases = r->vertex_tags = r->vertex_alphas = r->face_alphas = 0;
+    r->alpha_den = 1;
+    r->alpha_line[0] = r->alpha_line[1] = 0;
     while (subd_text_next_line(&t)) {
         const char *tok[3], *tend[3], *s, *e = t.line;
-        uint32_t n = 0, v[2], h = SUBD_NONE;
-        int st = SUBD_OK, crease;
+        uint32_t n = 0, v[2] = {0, 0}, h = SUBD_NONE;
+        int st = SUBD_OK, crease, alpha, falpha;
+        int64_t an = 0, ad = 1;
         uint8_t vbit = 0;
         while (e < t.line_end && *e != '#') e++;
         /* up to three fields; s < e afterwards means there is a fourth */
@@ -71,11 +141,22 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
         }
         if (n == 0) continue;
         crease = subd_text_token_is(tok[0], tend[0], "crease");
+        alpha = subd_text_token_is(tok[0], tend[0], "alpha");
+        falpha = subd_text_token_is(tok[0], tend[0], "falpha");
         if (subd_text_token_is(tok[0], tend[0], "corner")) vbit = SUBD_VTAG_CORNER;
         if (subd_text_token_is(tok[0], tend[0], "fixed")) vbit = SUBD_VTAG_FIXED;
-        if (s < e || n != (crease ? 3u : 2u) || (!crease && !vbit)) st = SUBD_ERR_PARSE;
-        if (st == SUBD_OK) st = tag_vertex(tok[1], tend[1], m, &v[0]);
-        if (st == SUBD_OK && crease) st = tag_vertex(tok[2], tend[2], m, &v[1]);
+        if (s < e || n != (crease || alpha || falpha ? 3u : 2u) || (!crease && !alpha && !falpha && !vbit))
+            st = SUBD_ERR_PARSE;
+        /* the value before the index: a malformed line is a syntax error whatever it names */
+        if (st == SUBD_OK && (alpha || falpha)) st = alpha_value(tok[2], tend[2], &an, &ad);
+        if (st == SUBD_OK) st = tag_index(tok[1], tend[1], falpha ? m->num_faces : m->num_verts, &v[0]);
+        if (st == SUBD_OK && crease) st = tag_index(tok[2], tend[2], m->num_verts, &v[1]);
+        if (st == SUBD_OK && (alpha || falpha) && af) {
+            /* exact: ad (reduced) must divide den, and the numerator fit the tag range */
+            int64_t q = an * (af->den / ad);
+            if (af->den % ad != 0 || q > SUBD_ALPHA_MAX_NUM || q < -SUBD_ALPHA_MAX_NUM) st = SUBD_ERR_RANGE;
+            else an = q;
+        }
         if (st == SUBD_OK && crease && (h = find_edge(m, v[0], v[1])) == SUBD_NONE) {
             r->edge[0] = d->vertex = v[0];
             r->edge[1] = v[1];
@@ -85,7 +166,15 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
             d->line = t.lineno;
             return subd_fail(d, st);
         }
-        if (crease) {
+        if (alpha || falpha) {
+            int32_t *dst = alpha ? (af ? af->vnum : 0) : (af ? af->fnum : 0);
+            int64_t g = gcd64(r->alpha_den, ad), l = r->alpha_den ? r->alpha_den / g * ad : 0;
+            r->alpha_den = (l > 0 && l <= INT32_MAX) ? (int32_t)l : 0; /* 0: no int32 common den */
+            if (write && dst) dst[v[0]] = (int32_t)an;
+            if (alpha) r->vertex_alphas++;
+            else r->face_alphas++;
+            if (!r->alpha_line[falpha]) r->alpha_line[falpha] = t.lineno;
+        } else if (crease) {
             if (out) subd_edge_tag_set(out, h, SUBD_ETAG_CREASE);
             r->creases++;
         } else {
@@ -97,9 +186,9 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
 }
 
 /* The shared entry: clears diag and report, checks the arguments, checks the whole file and,
- * when out is not NULL, applies it. */
-static int tags_run(const char *buf, uint32_t len, const subd_mesh *m, subd_mesh *out, subd_tags_report *report,
-                    subd_diag *diag)
+ * when out is not NULL, sets its bits, when af is not NULL, stores its alphas. */
+static int tags_run(const char *buf, uint32_t len, const subd_mesh *m, subd_mesh *out, const alpha_fill *af,
+                    subd_tags_report *report, subd_diag *diag)
 {
     subd_diag dummy;
     subd_tags_report rdummy;
@@ -107,21 +196,33 @@ static int tags_run(const char *buf, uint32_t len, const subd_mesh *m, subd_mesh
     subd_tags_report *r = report ? report : &rdummy;
     int st;
     subd_diag_clear(d);
-    r->creases = r->vertex_tags = 0;
+    r->creases = r->vertex_tags = r->vertex_alphas = r->face_alphas = 0;
+    r->alpha_den = 1;
+    r->alpha_line[0] = r->alpha_line[1] = 0;
     r->edge[0] = r->edge[1] = SUBD_NONE;
-    if (!m || (!buf && len)) return subd_fail(d, SUBD_ERR_PARAM);
+    if (!m || (!buf && len) || (af && af->den <= 0)) return subd_fail(d, SUBD_ERR_PARAM);
     if (len == 0) return SUBD_OK; /* an empty file has no tags (and buf may be NULL) */
-    st = tags_pass(buf, len, m, NULL, r, d);
-    if (st == SUBD_OK && out) st = tags_pass(buf, len, m, out, r, d);
+    st = tags_pass(buf, len, m, NULL, af, 0, r, d);
+    if (st == SUBD_OK && (out || af)) st = tags_pass(buf, len, m, out, af, 1, r, d);
     return st;
 }
 
 int subd_tags_check(const char *buf, uint32_t len, const subd_mesh *m, subd_tags_report *report, subd_diag *diag)
 {
-    return tags_run(buf, len, m, NULL, report, diag);
+    return tags_run(buf, len, m, NULL, NULL, report, diag);
 }
 
 int subd_tags_apply(const char *buf, uint32_t len, subd_mesh *m, subd_tags_report *report, subd_diag *diag)
 {
-    return tags_run(buf, len, m, m, report, diag);
+    return tags_run(buf, len, m, m, NULL, report, diag);
+}
+
+int subd_tags_alpha(const char *buf, uint32_t len, const subd_mesh *m, int32_t den, int32_t *vert_num,
+                    int32_t *face_num, subd_tags_report *report, subd_diag *diag)
+{
+    alpha_fill af;
+    af.den = den;
+    af.vnum = vert_num;
+    af.fnum = face_num;
+    return tags_run(buf, len, m, NULL, &af, report, diag);
 }

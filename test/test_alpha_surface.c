@@ -7,6 +7,7 @@
  * Higher orders S_k = C^(k-2) S_2: S_3 with f = 1 on a regular quad grid is the tensor
  * cubic B-spline refinement (exact); closed-form counts, Euler characteristic, boundary
  * loops, plan = peak and hashes for k = 3..5; every too-small arena for S_3 and S_4. */
+#include <string.h>
 #include "harness.h"
 #include "corpus.h"
 #include "subd_alpha.h"
@@ -443,7 +444,6 @@ static void alpha_ds_errors(void)
     subd_diag d;
     subd_face_list fl = quad_grid(2, 2);
     uint32_t plan, i, m0;
-    static int32_t tags[4];
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     if (!h_build(&a, &fl, &in)) return;
     m0 = subd_arena_mark(&a);
@@ -461,13 +461,7 @@ static void alpha_ds_errors(void)
     o.order = 1;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     o.order = 2;
-    o.tag_num = tags;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
-    o.order = 3; /* per-face / per-vertex tags are not implemented for surfaces */
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
-    o.order = 2;
     CHECK_EQ(subd_arena_mark(&a), m0);
-    o.tag_num = 0;
     o.stiffness = h_int(-1); /* table 1 and theorem 1: diverges */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_DIVERGENT);
@@ -967,6 +961,367 @@ static void alpha_ds_divergent(void)
     }
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* Tags (section 3): per-face alpha for even k, per-vertex alpha for odd k; the rule is    */
+/* the table in subd_alpha.h.                                                             */
+
+/* A closed n x m quad torus (topology only matters; z a bumpy integer height). */
+static subd_face_list quad_torus(uint32_t n, uint32_t m)
+{
+    subd_face_list fl = {0, 0, 0, 0, 0, 0, 0, 0};
+    uint32_t i, j, k = 0, f = 0;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++) {
+            uint32_t v = i * m + j;
+            g_pos[3u * v] = h_int((int32_t)j * 4 + (int32_t)(i % 2u));
+            g_pos[3u * v + 1u] = h_int((int32_t)i * 4);
+            g_pos[3u * v + 2u] = h_int((int32_t)(h_rand(&g_state) % 9u) - 4);
+        }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++) {
+            g_idx[k++] = i * m + j;
+            g_idx[k++] = i * m + (j + 1u) % m;
+            g_idx[k++] = ((i + 1u) % n) * m + (j + 1u) % m;
+            g_idx[k++] = ((i + 1u) % n) * m + j;
+            g_size[f++] = 4;
+        }
+    fl.num_verts = n * m;
+    fl.pos = g_pos;
+    fl.num_faces = f;
+    fl.face_size = g_size;
+    fl.index = g_idx;
+    return fl;
+}
+
+static int tag_run(subd_arena *a, const subd_mesh *in, uint32_t order, uint32_t levels, uint32_t kernel, int32_t num,
+                   int32_t den, const int32_t *tags, subd_mesh *out)
+{
+    subd_alpha_opts o;
+    sopts(&o, levels, kernel, num, den, SUBD_REAL_ONE);
+    o.order = order;
+    o.tag_num = tags;
+    return ds(a, in, &o, out);
+}
+
+static int same_mesh(const subd_mesh *x, const subd_mesh *y)
+{
+    uint32_t i;
+    if (x->num_verts != y->num_verts || x->num_faces != y->num_faces || x->num_corners != y->num_corners) return 0;
+    for (i = 0; i < 3u * x->num_verts; i++)
+        if (!h_same(x->pos[i], y->pos[i])) return 0;
+    for (i = 0; i < x->num_corners; i++)
+        if (x->corner_vert[i] != y->corner_vert[i]) return 0;
+    return 1;
+}
+
+/* Uniform tags (every tag = alpha_num) give the untagged result bit for bit: every order
+ * 2..5, every kernel, on the cube, a torus and an open grid (boundary: C's midpoints and
+ * kept boundary vertices get tags too); the device: the cube and the grid, fewer levels. */
+static void alpha_tags_uniform(void)
+{
+    static int32_t tags[MAXV];
+    uint32_t k, kern, mi, i;
+    for (mi = 0; mi < 3u; mi++)
+        for (k = 2; k <= 5u; k++)
+            for (kern = 0; kern < 4u; kern++) {
+                subd_arena a;
+                subd_mesh in, x, y;
+                subd_face_list fl = mi == 1u ? quad_torus(4, 5) : quad_grid(3, 2);
+                uint32_t lev = H_HOST ? (k <= 3u ? 3u : 2u) : 1u, plan0, plan1;
+                subd_alpha_opts o;
+                if (!H_HOST && mi == 1u) continue;
+                subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+                if (mi == 0) {
+                    if (!read_obj(&a, "test/data/cube_quad.obj", &in)) return;
+                } else if (!h_build(&a, &fl, &in)) {
+                    return;
+                }
+                for (i = 0; i < MAXV; i++) tags[i] = 7;
+                if (!tag_run(&a, &in, k, lev, kern, 7, 40, 0, &x)) return;
+                if (!tag_run(&a, &in, k, lev, kern, 7, 40, tags, &y)) return;
+                if (!CHECK(same_mesh(&x, &y))) {
+                    h_str("  order ");
+                    h_u32(k);
+                    h_str(" kernel ");
+                    h_u32(kern);
+                    h_str("\n");
+                    return;
+                }
+                /* the plan counts the tag arrays */
+                sopts(&o, lev, kern, 7, 40, SUBD_REAL_ONE);
+                o.order = k;
+                CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan0), SUBD_OK);
+                o.tag_num = tags;
+                CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan1), SUBD_OK);
+                CHECK(plan1 > plan0);
+            }
+}
+
+/* Dependency flags through one step, from the topology alone (closed meshes): pd = "this
+ * vertex's position can differ", td = "this tagged element's alpha can differ". */
+#define TMAX (H_HOST ? 20000u : 1200u)
+static uint8_t g_pd[2][TMAX], g_td[2][TMAX];
+
+static uint32_t corner_next(const subd_mesh *m, uint32_t h)
+{
+    uint32_t f = m->corner_face[h];
+    return h + 1u == m->face_start[f + 1u] ? m->face_start[f] : h + 1u;
+}
+
+/* S_2 on closed m (step output: corner j = vertex j; faces: face-faces, edge-faces (h <
+ * twin), vertex-faces in vertex order). vt: m's tags are per vertex. */
+static int deps_s2(const subd_mesh *m, int vt, const uint8_t *pd, const uint8_t *td, uint8_t *pd2, uint8_t *td2)
+{
+    uint32_t f, h, v, n = 0;
+    if (m->num_corners > TMAX || m->num_faces + m->num_corners > TMAX) return 0;
+    for (f = 0; f < m->num_faces; f++) {
+        uint32_t s = m->face_start[f], e = m->face_start[f + 1u], i;
+        uint8_t fa = vt ? 0 : td[f], any = 0;
+        for (i = s; i < e; i++) {
+            if (vt) fa |= td[m->corner_vert[i]];
+            any |= pd[m->corner_vert[i]];
+        }
+        for (i = s; i < e; i++) pd2[i] = (uint8_t)(fa | any);
+        td2[n++] = fa;
+    }
+    for (h = 0; h < m->num_corners; h++) {
+        uint32_t t = m->twin[h];
+        if (t < h) continue;
+        td2[n++] = vt ? (uint8_t)(td[m->corner_vert[h]] | td[m->corner_vert[corner_next(m, h)]])
+                      : (uint8_t)(td[m->corner_face[h]] | td[m->corner_face[t]]);
+    }
+    for (v = 0; v < m->num_verts; v++) {
+        uint8_t x = 0;
+        if (vt) {
+            x = td[v];
+        } else {
+            for (h = 0; h < m->num_corners; h++)
+                if (m->corner_vert[h] == v) x |= td[m->corner_face[h]];
+        }
+        td2[n++] = x;
+    }
+    return 1;
+}
+
+/* C on closed m: output vertex i is face i's centroid; vertex tags from face tags (one per
+ * face) or face tags from vertex tags (one per vertex). */
+static int deps_c(const subd_mesh *m, int vt, const uint8_t *pd, const uint8_t *td, uint8_t *pd2, uint8_t *td2)
+{
+    uint32_t f, v;
+    if (m->num_faces > TMAX || m->num_verts > TMAX) return 0;
+    for (f = 0; f < m->num_faces; f++) {
+        uint32_t i;
+        pd2[f] = 0;
+        for (i = m->face_start[f]; i < m->face_start[f + 1u]; i++) pd2[f] |= pd[m->corner_vert[i]];
+        if (!vt) td2[f] = td[f];
+    }
+    if (vt)
+        for (v = 0; v < m->num_verts; v++) td2[v] = td[v];
+    return 1;
+}
+
+/* Locality: one tag changed (a vertex for odd k, a face for even k) changes, after each
+ * level, only the output points that the topology lets depend on it (flags pushed through
+ * every S_2 and C step, using the intermediate meshes of B-spline runs: the topology does
+ * not depend on alpha); every other point keeps its bits, and some inside do change.
+ * Orders 2..5 on a torus, cos kernel. */
+static void alpha_tags_locality(void)
+{
+    static int32_t ta[MAXV], tb[MAXV];
+    uint32_t k, lmax = H_HOST ? 3u : 1u;
+    for (k = 2; k <= (H_HOST ? 5u : 3u); k++) {
+        subd_arena a;
+        subd_mesh in, cur, prev, step, x, y;
+        subd_face_list fl = quad_torus(6, 7);
+        uint32_t l, j, i, ntag, src = 0;
+        int vt = (k & 1u) != 0u;
+        subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+        if (!h_build(&a, &fl, &in)) return;
+        ntag = vt ? in.num_verts : in.num_faces;
+        for (i = 0; i < ntag; i++) ta[i] = tb[i] = (int32_t)(i % 5u) * 3 - 4;
+        tb[17] = 31; /* the changed element */
+        for (i = 0; i < in.num_verts; i++) g_pd[0][i] = 0;
+        for (i = 0; i < ntag; i++) g_td[0][i] = i == 17u;
+        cur = in;
+        for (l = 1; l <= lmax; l++) {
+            uint32_t inside = 0, outside = 0, changed = 0, bad = 0, mark;
+            int kind = vt;
+            prev = cur;
+            for (j = 0; j + 2u <= k; j++) {
+                uint32_t dst = 1u - src;
+                int ok;
+                /* step j's output: C^j S_2 of cur */
+                if (!tag_run(&a, &cur, j + 2u, 1, SUBD_ALPHA_BSPLINE, 0, 1, 0, &step)) return;
+                if (!CHECK_EQ(step.num_boundary_edges, 0)) return;
+                if (j == 0) ok = deps_s2(&prev, kind, g_pd[src], g_td[src], g_pd[dst], g_td[dst]);
+                else ok = deps_c(&prev, kind, g_pd[src], g_td[src], g_pd[dst], g_td[dst]);
+                if (!CHECK(ok) || !CHECK(step.num_verts <= TMAX)) return;
+                kind = j == 0 ? 0 : !kind;
+                src = dst;
+                prev = step;
+            }
+            cur = prev;
+            mark = subd_arena_mark(&a);
+            if (!tag_run(&a, &in, k, l, SUBD_ALPHA_COS, 1, 16, ta, &x)) return;
+            if (!tag_run(&a, &in, k, l, SUBD_ALPHA_COS, 1, 16, tb, &y)) return;
+            if (!CHECK_EQ(x.num_verts, cur.num_verts)) return;
+            for (i = 0; i < x.num_verts; i++) {
+                int same = h_same(x.pos[3u * i], y.pos[3u * i]) && h_same(x.pos[3u * i + 1u], y.pos[3u * i + 1u]) &&
+                           h_same(x.pos[3u * i + 2u], y.pos[3u * i + 2u]);
+                if (g_pd[src][i]) {
+                    inside++;
+                    changed += !same;
+                } else {
+                    outside++;
+                    bad += !same;
+                }
+            }
+            CHECK_EQ(bad, 0);
+            CHECK(changed > 0);
+            CHECK(outside > 0u); /* the support is local: not every point */
+            if (k == 3u && l == lmax) {
+                h_str("  note: S_3 locality, last level: ");
+                h_u32(inside);
+                h_str(" of ");
+                h_u32(inside + outside);
+                h_str(" points in the support, ");
+                h_u32(changed);
+                h_str(" changed\n");
+            }
+            subd_arena_rewind(&a, mark);
+        }
+    }
+}
+
+/* floor(s / n), written out independently of the library. */
+static int32_t floor_div(int64_t s, int64_t n)
+{
+    int64_t q = s / n;
+    if (q * n > s) q--;
+    return (int32_t)q;
+}
+
+/* The mean rule on small meshes against a brute-force computation of the next level's tags:
+ * running 2 levels equals running 1 level and then 1 more from its output with the tags
+ * computed here (level 1 of den is level 0 of 2 den bit for bit: the kernel sees the same
+ * fraction 2^-(n+1) num / den). S_2 with face tags and S_3 with vertex tags, on the cube
+ * and the torus, tags chosen so that the means are not whole (floor) and some negative. */
+static void alpha_tags_mean(void)
+{
+    static int32_t t0[MAXV], t1[4 * MAXC];
+    uint32_t k, mi;
+    for (mi = 0; mi < 2u; mi++)
+        for (k = 2; k <= 3u; k++) {
+            subd_arena a;
+            subd_mesh in, two, one, next;
+            subd_face_list fl = quad_torus(3, 4);
+            uint32_t i, h, v, f, n = 0;
+            int vt = k == 3u;
+            subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+            if (mi == 0) {
+                if (!read_obj(&a, "test/data/cube_quad.obj", &in)) return;
+            } else if (!h_build(&a, &fl, &in)) {
+                return;
+            }
+            for (i = 0; i < (vt ? in.num_verts : in.num_faces); i++) t0[i] = (int32_t)((i * 7u) % 11u) - 6;
+            if (!tag_run(&a, &in, k, 2, SUBD_ALPHA_COS, 0, 24, t0, &two)) return;
+            if (!tag_run(&a, &in, k, 1, SUBD_ALPHA_COS, 0, 24, t0, &one)) return;
+            /* S_2's output faces: face-faces, edge-faces (h < twin), vertex-faces */
+            for (f = 0; f < in.num_faces; f++) {
+                int64_t s = 0;
+                uint32_t e = in.face_start[f + 1u];
+                for (i = in.face_start[f]; i < e; i++) s += vt ? t0[in.corner_vert[i]] : 0;
+                t1[n++] = vt ? floor_div(s, e - in.face_start[f]) : t0[f];
+            }
+            for (h = 0; h < in.num_corners; h++) {
+                uint32_t t = in.twin[h];
+                if (t < h) continue;
+                t1[n++] = vt ? floor_div((int64_t)t0[in.corner_vert[h]] + t0[in.corner_vert[corner_next(&in, h)]], 2)
+                             : floor_div((int64_t)t0[in.corner_face[h]] + t0[in.corner_face[t]], 2);
+            }
+            for (v = 0; v < in.num_verts; v++) {
+                int64_t s = 0;
+                uint32_t c = 0;
+                for (h = 0; h < in.num_corners; h++)
+                    if (in.corner_vert[h] == v) {
+                        s += t0[in.corner_face[h]];
+                        c++;
+                    }
+                t1[n++] = vt ? t0[v] : floor_div(s, c);
+            }
+            /* S_3: C turns these face tags into the tags of the face centroids, in face order */
+            if (!CHECK_EQ(n, vt ? one.num_verts : one.num_faces)) return;
+            if (!tag_run(&a, &one, k, 1, SUBD_ALPHA_COS, 0, 48, t1, &next)) return;
+            CHECK(same_mesh(&two, &next));
+            /* and the rule matters: the untagged and uniform second levels differ */
+            for (i = 0; i < n; i++) t1[i] = 0;
+            if (!tag_run(&a, &one, k, 1, SUBD_ALPHA_COS, 0, 48, t1, &next)) return;
+            CHECK(!same_mesh(&two, &next));
+        }
+}
+
+/* Bad tags: SUBD_ERR_PARAM naming the first bad element (a vertex for odd k, a face for even
+ * k), the arena back at its mark, the output and the input untouched; every too-small arena
+ * of a tagged run fails cleanly (the plan is exact with the tag arrays). */
+static void alpha_tags_errors(void)
+{
+    static int32_t tags[MAXV];
+    subd_arena a;
+    subd_mesh in, out, sentinel;
+    subd_alpha_opts o;
+    subd_diag d;
+    uint32_t m0, hin, i;
+    subd_arena_init(&a, WORK_BUF, WORK_BYTES);
+    if (!read_obj(&a, "test/data/cube_quad.obj", &in)) return;
+    m0 = subd_arena_mark(&a);
+    hin = h_mesh_hash(&in);
+    for (i = 0; i < MAXV; i++) tags[i] = 0;
+    memset(&out, 0x5a, sizeof out);
+    sentinel = out;
+    sopts(&o, 2, SUBD_ALPHA_COS, 1, 8, SUBD_REAL_ONE);
+    o.tag_num = tags;
+    o.order = 3;
+    tags[5] = SUBD_ALPHA_MAX_NUM + 1;
+    tags[6] = -SUBD_ALPHA_MAX_NUM - 1;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(d.vertex, 5);
+    CHECK_EQ(d.face, SUBD_NONE);
+    tags[5] = SUBD_ALPHA_MAX_NUM; /* the largest tag is fine */
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(d.vertex, 6);
+    CHECK_EQ(subd_arena_mark(&a), m0);
+    o.order = 2; /* even k: the same array is per face (6 faces: tag 5 is the last) */
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_OK);
+    subd_arena_rewind(&a, m0);
+    tags[5] = -SUBD_ALPHA_MAX_NUM - 1;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(d.face, 5);
+    CHECK_EQ(d.vertex, SUBD_NONE);
+    CHECK_EQ(subd_arena_mark(&a), m0);
+    out = sentinel;
+    /* a tagged face whose level has f_n <= -1 (s = 2, f_0 = 2 cos(0.45 turn)), others fine */
+    tags[5] = 9;
+    o.alpha_den = 10;
+    o.stiffness = h_int(2);
+    for (i = 0; i < 5u; i++) tags[i] = 1;
+    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_arena_mark(&a), m0);
+    CHECK(memcmp(&out, &sentinel, sizeof out) == 0);
+    CHECK_EQ(h_mesh_hash(&in), hin);
+    /* exact plans with tags: every too-small arena */
+    for (i = 0; i < MAXV; i++) tags[i] = (int32_t)(i % 3u);
+    sopts(&o, H_HOST ? 2u : 1u, SUBD_ALPHA_COS, 1, 8, SUBD_REAL_ONE);
+    o.tag_num = tags;
+    for (o.order = 2; o.order <= 4u; o.order++) check_plan_exhaustive(&in, &o);
+    {
+        subd_face_list fl = quad_grid(3, 2); /* with a boundary */
+        subd_mesh grid;
+        if (!h_build(&a, &fl, &grid)) return;
+        o.levels = 1; /* the sweep's buffer holds 40000 bytes */
+        for (o.order = 2; o.order <= 4u; o.order++) check_plan_exhaustive(&grid, &o);
+    }
+}
+
 const test_case suite_alpha_surface[] = {
     {"alpha_ds_quad_weights", alpha_ds_quad_weights},
 #if H_HOST
@@ -985,5 +1340,9 @@ const test_case suite_alpha_surface[] = {
     {"alpha_ds_no_adjacency", alpha_ds_no_adjacency},
     {"alpha_ds_valence2", alpha_ds_valence2},
     {"alpha_ds_divergent", alpha_ds_divergent},
+    {"alpha_tags_uniform", alpha_tags_uniform},
+    {"alpha_tags_locality", alpha_tags_locality},
+    {"alpha_tags_mean", alpha_tags_mean},
+    {"alpha_tags_errors", alpha_tags_errors},
     {0, 0}
 };

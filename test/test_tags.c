@@ -3,6 +3,7 @@
  * any error, comments, CRLF and lone CR, empty files, boundary edges named either way, and the
  * tags equal to what the host tool's own --tags parser produced before it moved into the
  * library (golden output bytes of the original tool, and the cube's edges = crease angle). */
+#include <string.h>
 #include "harness.h"
 #include "corpus.h"
 
@@ -236,6 +237,86 @@ static void tags_equal_old_tool(void)
     h_hash("tags_loop1_icosahedron_obj", h_fnv(2166136261u, out, len));
 }
 
+/* alpha / falpha lines (the semi-stationary paper's parameters): syntax and index errors
+ * with their line numbers, through the same check and apply as every other tag. */
+static void tags_alpha_errors(void)
+{
+    expect("alpha 1\n", SUBD_ERR_PARSE, 1, "alpha without a value");
+    expect("alpha 1 1/8 3\n", SUBD_ERR_PARSE, 1, "alpha with two values");
+    expect("corner 2\nalpha 1 x\n", SUBD_ERR_PARSE, 2, "alpha value not a number");
+    expect("alpha 1 1/0\n", SUBD_ERR_PARSE, 1, "zero denominator");
+    expect("alpha 1 1/-8\n", SUBD_ERR_PARSE, 1, "negative denominator");
+    expect("alpha 1 1/\n", SUBD_ERR_PARSE, 1, "empty denominator");
+    expect("alpha 1 /8\n", SUBD_ERR_PARSE, 1, "empty numerator");
+    expect("alpha 1 1/8/2\n", SUBD_ERR_PARSE, 1, "two slashes");
+    expect("alpha 1 2000000000\n", SUBD_ERR_PARSE, 1, "numerator above 10^9");
+    expect("alpha 1 10.12345deg\n", SUBD_ERR_PARSE, 1, "five decimals");
+    expect("alpha 1 deg\n", SUBD_ERR_PARSE, 1, "degrees without digits");
+    expect("alpha 1 1.2.3deg\n", SUBD_ERR_PARSE, 1, "two points");
+    expect("alpha 1 36000.0001deg\n", SUBD_ERR_PARSE, 1, "more than 36000 degrees");
+    expect("alpha 1 45 deg\n", SUBD_ERR_PARSE, 1, "unit as a field");
+    expect("Alpha 1 1/8\n", SUBD_ERR_PARSE, 1, "keywords are lower case");
+    expect("falpha 1\n", SUBD_ERR_PARSE, 1, "falpha without a value");
+    expect("alpha x 1/8\n", SUBD_ERR_PARSE, 1, "vertex not a number");
+    expect("# c\n\nalpha 13 1/8\n", SUBD_ERR_INDEX, 3, "one past the last vertex");
+    expect("alpha 0 1/8\n", SUBD_ERR_INDEX, 1, "vertex 0");
+    expect("falpha 21 1/8\n", SUBD_ERR_INDEX, 1, "one past the last face");
+    expect("falpha 0 1/8\n", SUBD_ERR_INDEX, 1, "face 0");
+    expect("falpha 20 -1/8\nalpha 12 36000deg\nalpha 12 -36000deg\nalpha 2 7 # turns\n", SUBD_OK, 0,
+           "last face, last vertex, extremes");
+}
+
+/* The values: exact numerators over the caller's den, the last line for an element wins,
+ * entries no line names keep theirs, the least common denominator in the report; a den that
+ * does not make every value whole, or a numerator out of range, is SUBD_ERR_RANGE with the
+ * line and nothing stored; apply sets no bits for alpha lines. */
+static void tags_alpha_values(void)
+{
+    static const char text[] = "alpha 1 1/8\nalpha 3 -45deg\nfalpha 2 1/3\n# c\nalpha 1 2/8\nfalpha 20 10.5deg\n";
+    subd_arena a;
+    subd_mesh m;
+    subd_diag d;
+    subd_tags_report rep;
+    int32_t vn[12], fn[20], v0[12], f0[20];
+    uint32_t i, ok = 1, before;
+    if (!read_mesh("test/data/icosahedron.obj", &a, &m)) return;
+    for (i = 0; i < 12u; i++) vn[i] = v0[i] = 5;
+    for (i = 0; i < 20u; i++) fn[i] = f0[i] = 5;
+    CHECK_EQ(subd_tags_check(text, slen(text), &m, &rep, &d), SUBD_OK);
+    CHECK_EQ(rep.vertex_alphas, 3);
+    CHECK_EQ(rep.face_alphas, 2);
+    CHECK_EQ(rep.alpha_den, 240); /* lcm of 8, 8, 3, 4 and 10.5 / 360 = 7 / 240 */
+    CHECK_EQ(rep.alpha_line[0], 1);
+    CHECK_EQ(rep.alpha_line[1], 3);
+    CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 240, vn, fn, &rep, &d), SUBD_OK);
+    for (i = 0; i < 12u; i++) ok &= vn[i] == (i == 0 ? 60 : i == 2u ? -30 : 5);
+    for (i = 0; i < 20u; i++) ok &= fn[i] == (i == 1u ? 80 : i == 19u ? 7 : 5);
+    CHECK(ok);
+    /* den 8: 1/3 (line 3) is not a whole number of eighths */
+    for (i = 0; i < 12u; i++) vn[i] = v0[i];
+    for (i = 0; i < 20u; i++) fn[i] = f0[i];
+    CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 8, vn, fn, &rep, &d), SUBD_ERR_RANGE);
+    CHECK_EQ(d.line, 3);
+    CHECK(memcmp(vn, v0, sizeof vn) == 0 && memcmp(fn, f0, sizeof fn) == 0);
+    /* a numerator beyond SUBD_ALPHA_MAX_NUM: 8 turns over 2^28 */
+    CHECK_EQ(subd_tags_alpha("corner 1\nalpha 1 8\n", 19, &m, 1 << 28, vn, fn, &rep, &d), SUBD_ERR_RANGE);
+    CHECK_EQ(d.line, 2);
+    CHECK(memcmp(vn, v0, sizeof vn) == 0);
+    CHECK_EQ(subd_tags_alpha("alpha 1 -3\n", 11, &m, 1 << 28, vn, fn, &rep, &d), SUBD_OK);
+    CHECK_EQ(vn[0], -3 * (1 << 28));
+    CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 0, vn, fn, &rep, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 240, 0, 0, &rep, &d), SUBD_OK); /* checked only */
+    /* a common denominator beyond int32 is reported as 0 */
+    CHECK_EQ(subd_tags_check("alpha 1 1/999999937\nalpha 2 1/999999929\n", 40, &m, &rep, &d), SUBD_OK);
+    CHECK_EQ(rep.alpha_den, 0);
+    /* apply: alpha lines are counted, no bits set */
+    before = tag_hash(&m);
+    CHECK_EQ(subd_tags_apply(text, slen(text), &m, &rep, &d), SUBD_OK);
+    CHECK_EQ(tag_hash(&m), before);
+    CHECK_EQ(rep.vertex_alphas + rep.face_alphas, 5);
+    CHECK_EQ(rep.vertex_tags + rep.creases, 0);
+}
+
 const test_case suite_tags[] = {
     {"tags_parse_errors", tags_parse_errors},
     {"tags_index_errors", tags_index_errors},
@@ -244,5 +325,7 @@ const test_case suite_tags[] = {
     {"tags_boundary_edge", tags_boundary_edge},
     {"tags_cube_edges", tags_cube_edges},
     {"tags_equal_old_tool", tags_equal_old_tool},
+    {"tags_alpha_errors", tags_alpha_errors},
+    {"tags_alpha_values", tags_alpha_values},
     {0, 0}
 };

@@ -705,5 +705,61 @@ usage_case_pre quasi48 --boundary sideways test/data/icosahedron.obj -o "$T/x.ob
     grep -q "expected fixed, smooth or normal" "$T/err"
 check $? "quasi48 --boundary sideways: exit 1, lists fixed, smooth and normal"
 
+# ---- alpha tags (--tags: 'alpha V A', 'falpha F A'; semi-stationary paper, section 3) ----
+# uniform tags give the untagged output byte for byte, both arithmetics, odd and even orders
+for b in "$FLOAT" "$FIXED"; do
+    for k in 2 3 4; do
+        if [ $((k % 2)) -eq 1 ]; then kw=alpha; n=8; else kw=falpha; n=6; fi
+        i=1; : > "$T/uni.tags"
+        while [ $i -le $n ]; do echo "$kw $i 45deg" >> "$T/uni.tags"; i=$((i + 1)); done
+        run "$b" alpha --order $k --kernel cos --alpha 1/8 -l 2 test/data/cube_quad.obj -o "$T/u0.obj"
+        run "$b" alpha --order $k --kernel cos --alpha 1/8 -l 2 --tags "$T/uni.tags" test/data/cube_quad.obj -o "$T/u1.obj"
+        is 0 && cmp -s "$T/u0.obj" "$T/u1.obj"
+        check $? "alpha --order $k: uniform $kw tags (45deg) = --alpha 1/8 untagged, byte for byte ($(basename "$b"))"
+    done
+done
+# one tag changes the output; --stats says tagged, and the plan is the peak
+printf 'alpha 1 515.662deg # 9 radians\n' > "$T/one.tags"
+run "$FLOAT" alpha --order 3 --kernel cos -l 2 --tags "$T/one.tags" test/data/cube_quad.obj -o "$T/t0.obj"
+is 0 && grep -q "one.tags: 0 crease edge(s), 0 vertex tag(s), 1 alpha(s)" "$T/err"
+check $? "alpha --tags: the tag file's summary counts the alpha line"
+run "$FLOAT" alpha --order 3 --kernel cos -l 2 test/data/cube_quad.obj -o "$T/u0.obj"
+run "$FLOAT" alpha --order 3 --kernel cos -l 2 --tags "$T/one.tags" --stats test/data/cube_quad.obj -o "$T/t1.obj"
+is 0 && json_ok "$T/out" && grep -q '"tagged":true' "$T/out" &&
+    [ "$(json_num arena_planned)" = "$(json_num arena_used)" ] && ! cmp -s "$T/t1.obj" "$T/u0.obj"
+check $? "alpha --tags one vertex: output changes, --stats tagged, planned = used"
+# the wrong kind for the order: FILE:LINE, exit 2
+printf '# c\nfalpha 1 1/8\n' > "$T/f.tags"
+run "$FLOAT" alpha --order 3 --tags "$T/f.tags" test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && grep -q "f.tags:2: 'falpha' (per-face alpha) needs an even --order" "$T/err"
+check $? "alpha --order 3 with a falpha line: exit 2, FILE:LINE"
+run "$FLOAT" alpha --order 2 --tags "$T/one.tags" test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && grep -q "one.tags:1: 'alpha' (per-vertex alpha) needs an odd --order" "$T/err"
+check $? "alpha --order 2 with an alpha line: exit 2, FILE:LINE"
+run "$FLOAT" alpha --tags "$T/f.tags" demo/square.obj -o "$T/x.obj"
+is 2 && grep -q "f.tags:2: .*falpha.* needs a surface\|f.tags:2: .*face numbers 1..0" "$T/err"
+check $? "alpha on a curve with a falpha line: exit 2, FILE:LINE"
+# parse and index errors name the tag file's line
+printf 'alpha 1 1/8\nalpha 2 x\n' > "$T/bad1.tags"
+run "$FLOAT" alpha --order 3 --tags "$T/bad1.tags" test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && grep -q "bad1.tags:2: expected" "$T/err"; check $? "alpha --tags with a bad value: exit 2, FILE:LINE"
+printf 'falpha 7 1/8\n' > "$T/bad2.tags"
+run "$FLOAT" alpha --order 2 --tags "$T/bad2.tags" test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && grep -q "bad2.tags:1: expected.*face numbers 1..6" "$T/err"; check $? "alpha --tags with face 7 of 6: exit 2, FILE:LINE"
+# a common denominator too fine for the levels: exit 2, says so
+printf 'alpha 1 1/999999937\nalpha 2 1/999999929\n' > "$T/fine.tags"
+run "$FLOAT" alpha --order 3 --tags "$T/fine.tags" test/data/cube_quad.obj -o "$T/x.obj"
+is 2 && grep -q "common denominator" "$T/err"; check $? "alpha --tags needing a too fine denominator: exit 2"
+# curves: per-vertex alpha; uniform = untagged, one tag changes only its neighbourhood
+printf 'alpha 1 1/4\nalpha 2 1/4\nalpha 3 1/4\nalpha 4 1/4\n' > "$T/sq.tags"
+run "$FLOAT" alpha --kernel cos --alpha 1/4 -l 3 demo/square.obj -o "$T/c0.obj"
+run "$FLOAT" alpha --kernel cos -l 3 --tags "$T/sq.tags" demo/square.obj -o "$T/c1.obj"
+is 0 && cmp -s "$T/c0.obj" "$T/c1.obj"; check $? "alpha curve: uniform alpha tags = --alpha, byte for byte"
+printf 'alpha 1 1/4\nalpha 2 1/4\nalpha 3 -1/3\nalpha 4 1/4\n' > "$T/sq2.tags"
+run "$FLOAT" alpha --kernel cos -l 3 --tags "$T/sq2.tags" demo/square.obj -o "$T/c2.obj"
+is 0 && ! cmp -s "$T/c0.obj" "$T/c2.obj" &&
+    [ "$(grep -c '^v ' "$T/c2.obj")" = 32 ]
+check $? "alpha curve: one vertex tag changes the curve, same point count"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

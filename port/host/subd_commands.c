@@ -246,7 +246,101 @@ static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
 /* alpha: the semi-stationary operators. A mesh with faces gets the Doo-Sabin type surface
  * operator; a mesh of polylines (OBJ l records) gets the curve operator S_k once per
  * polyline, closed when its last index repeats its first. Curves are refined one at a time
- * in the arena (the plan is the largest single curve) and collected in host memory. */
+ * in the arena (the plan is the largest single curve) and collected in host memory.
+ *
+ * --tags FILE with 'alpha V A' / 'falpha F A' lines (subd_tags.h): per-vertex alphas for
+ * curves and odd orders, per-face alphas for even orders (section 3), as one array of alpha
+ * numerators in the arena (counted by the plan). Every value and --alpha are put over one
+ * common denominator (their least common one), so equal tags give exactly the untagged
+ * result. The file was already checked line by line (subd_main.c); what is left to refuse
+ * here is a line of the kind the operator does not tag and a denominator too fine for the
+ * levels: those are reported here (FILE:LINE), and the plan returns EXIT_INPUT. */
+typedef struct alpha_tagging {
+    subd_alpha_opts ao; /* o->alpha, over the common den when tagged                     */
+    int vertex;         /* tags per vertex (curves, odd k) or per face (even k)           */
+    uint32_t count;     /* 0: no alpha lines, untagged                                    */
+    char *buf;          /* the tag file (host memory, freed by alpha_tagging_done)        */
+    uint32_t len;
+} alpha_tagging;
+
+static void alpha_tagging_done(alpha_tagging *t)
+{
+    free(t->buf);
+    t->buf = NULL;
+}
+
+static int64_t gcd_i64(int64_t a, int64_t b)
+{
+    while (b) {
+        int64_t r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
+}
+
+/* Reads o->tags and fills *t; EXIT_INPUT (reported) or SUBD_OK. */
+static int alpha_tagging_load(const subd_mesh *in, const tool_opts *o, alpha_tagging *t)
+{
+    subd_tags_report rep;
+    subd_diag d;
+    int64_t den, g, num;
+    uint32_t wrong;
+    memset(t, 0, sizeof *t);
+    t->ao = o->alpha;
+    t->ao.tag_num = NULL;
+    if (!o->tags) return SUBD_OK;
+    if (host_read_file(o->tags, &t->buf, &t->len) != 0 ||
+        subd_tags_check(t->buf, t->len, in, &rep, &d) != SUBD_OK) { /* main checked it already */
+        tool_error("%s: cannot read the tag file again", o->tags);
+        alpha_tagging_done(t);
+        return EXIT_INPUT;
+    }
+    if (rep.vertex_alphas + rep.face_alphas == 0) {
+        alpha_tagging_done(t);
+        return SUBD_OK;
+    }
+    t->vertex = !in->num_faces || (o->alpha.order & 1u);
+    wrong = t->vertex ? rep.alpha_line[1] : rep.alpha_line[0];
+    if (wrong) {
+        tool_error("%s:%lu: %s", o->tags, (unsigned long)wrong,
+                          !in->num_faces ? "'falpha' (per-face alpha) needs a surface; curves take 'alpha V A'"
+                          : t->vertex ? "'falpha' (per-face alpha) needs an even --order; odd orders tag vertices"
+                                      : "'alpha' (per-vertex alpha) needs an odd --order (or a curve); even orders "
+                                        "tag faces ('falpha F A')");
+        alpha_tagging_done(t);
+        return EXIT_INPUT;
+    }
+    /* one denominator for --alpha and every tag */
+    den = o->alpha.alpha_den;
+    g = rep.alpha_den ? gcd_i64(den, rep.alpha_den) : 1;
+    den = rep.alpha_den ? den / g * rep.alpha_den : 0;
+    num = den ? (int64_t)o->alpha.alpha_num * (den / o->alpha.alpha_den) : 0;
+    if (den <= 0 || den > (INT32_MAX >> (o->levels + 2u)) || num > SUBD_ALPHA_MAX_NUM || num < -SUBD_ALPHA_MAX_NUM) {
+        tool_error("%s: the alphas and --alpha need a common denominator of %lld turns, too fine for %lu "
+                   "level(s) (at most %ld): use coarser fractions",
+                   o->tags, (long long)den, (unsigned long)o->levels, (long)(INT32_MAX >> (o->levels + 2u)));
+        alpha_tagging_done(t);
+        return EXIT_INPUT;
+    }
+    t->ao.alpha_num = (int32_t)num;
+    t->ao.alpha_den = (int32_t)den;
+    t->count = t->vertex ? in->num_verts : in->num_faces;
+    return SUBD_OK;
+}
+
+/* The tag array in the arena: the uniform alpha, then the file's values over the common den
+ * (cannot fail after alpha_tagging_load: same file, same den). */
+static int alpha_tagging_fill(subd_arena *a, const subd_mesh *in, alpha_tagging *t, int32_t **tags, subd_diag *d)
+{
+    uint32_t i;
+    *tags = (int32_t *)subd_arena_alloc(a, 4u * t->count);
+    if (!*tags) return SUBD_ERR_NOMEM;
+    for (i = 0; i < t->count; i++) (*tags)[i] = t->ao.alpha_num;
+    return subd_tags_alpha(t->buf, t->len, in, t->ao.alpha_den, t->vertex ? *tags : NULL, t->vertex ? NULL : *tags,
+                           NULL, d);
+}
+
 static int alpha_is_closed(const subd_mesh *in, uint32_t l, uint32_t *m)
 {
     uint32_t s = in->line_start[l], e = in->line_start[l + 1u];
@@ -260,20 +354,31 @@ static int alpha_is_closed(const subd_mesh *in, uint32_t l, uint32_t *m)
 
 static int alpha_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
-    uint32_t l, most = 0, b, pts, m;
+    uint32_t l, most = 0, b, pts, m, tag_arr;
+    alpha_tagging t;
+    static const int32_t dummy = 0; /* the plans only test tag_num for NULL */
     int st;
     (void)d;
-    if (in->num_faces) return subd_alpha_surface_plan(in, &o->alpha, bytes);
+    if ((st = alpha_tagging_load(in, o, &t)) != SUBD_OK) return st;
+    alpha_tagging_done(&t);
+    tag_arr = t.count ? SUBD_ALIGN_UP(4u * t.count) : 0u;
+    if (t.count) t.ao.tag_num = &dummy;
+    if (in->num_faces) {
+        st = subd_alpha_surface_plan(in, &t.ao, bytes);
+        if (st == SUBD_OK) *bytes += tag_arr;
+        return st;
+    }
     if (!in->num_lines) return SUBD_ERR_EMPTY;
     for (l = 0; l < in->num_lines; l++) {
         int closed = alpha_is_closed(in, l, &m);
-        st = subd_alpha_curve_plan(m, closed, &o->alpha, &b, &pts);
+        st = subd_alpha_curve_plan(m, closed, &t.ao, &b, &pts);
         if (st != SUBD_OK) return st;
-        /* room for the gathered input points too */
+        /* room for the gathered input points (and their tags) too */
         b += SUBD_ALIGN_UP(3u * m * (uint32_t)sizeof(subd_real));
+        if (t.count) b += SUBD_ALIGN_UP(4u * m);
         if (b > most) most = b;
     }
-    *bytes = most;
+    *bytes = most + tag_arr;
     return SUBD_OK;
 }
 
@@ -281,21 +386,29 @@ static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, sub
                      subd_diag *d)
 {
     uint32_t l, total = 0, k, m, pts, b;
-    int32_t continuity = 1;
+    int32_t continuity = 1, *tags = NULL;
     subd_real *pos;
     uint32_t *lstart, *lvert;
+    alpha_tagging t;
     int st;
+    if ((st = alpha_tagging_load(in, o, &t)) != SUBD_OK) return SUBD_ERR_PARAM; /* the plan reported it */
+    if (t.count) {
+        st = alpha_tagging_fill(a, in, &t, &tags, d);
+        alpha_tagging_done(&t);
+        if (st != SUBD_OK) return st;
+    }
     if (in->num_faces) {
         subd_alpha_surface_info info;
-        st = subd_alpha_surface(a, in, &o->alpha, out, &info, d);
+        t.ao.tag_num = tags;
+        st = subd_alpha_surface(a, in, &t.ao, out, &info, d);
         if (st == SUBD_OK)
-            snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"surface\"",
-                     (unsigned long)o->alpha.order, (long)info.continuity);
+            snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"surface\"%s",
+                     (unsigned long)o->alpha.order, (long)info.continuity, tags ? ",\"tagged\":true" : "");
         return st;
     }
     for (l = 0; l < in->num_lines; l++) {
         int closed = alpha_is_closed(in, l, &m);
-        if ((st = subd_alpha_curve_plan(m, closed, &o->alpha, &b, &pts)) != SUBD_OK) return st;
+        if ((st = subd_alpha_curve_plan(m, closed, &t.ao, &b, &pts)) != SUBD_OK) return st;
         total += pts + (uint32_t)closed;
     }
     x->host_mem = malloc((size_t)total * (3u * sizeof(subd_real) + sizeof(uint32_t)) +
@@ -311,9 +424,16 @@ static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, sub
         int closed = alpha_is_closed(in, l, &m);
         subd_alpha_curve_out co;
         subd_real *p = (subd_real *)subd_arena_alloc(a, 3u * m * (uint32_t)sizeof(subd_real));
+        int32_t *lt = NULL;
         if (!p) return SUBD_ERR_NOMEM;
         for (k = 0; k < 3u * m; k++) p[k] = in->pos[3u * in->line_vert[s + k / 3u] + k % 3u];
-        st = subd_alpha_curve(a, p, m, closed, &o->alpha, &co, d);
+        if (tags) {
+            /* this polyline's points' tags, in its order */
+            if (!(lt = (int32_t *)subd_arena_alloc(a, 4u * m))) return SUBD_ERR_NOMEM;
+            for (k = 0; k < m; k++) lt[k] = tags[in->line_vert[s + k]];
+        }
+        t.ao.tag_num = lt;
+        st = subd_alpha_curve(a, p, m, closed, &t.ao, &co, d);
         if (st != SUBD_OK) {
             d->polyline = l;
             return st;
@@ -334,12 +454,12 @@ static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, sub
     out->num_line_verts = lstart[in->num_lines];
     out->line_start = lstart;
     out->line_vert = lvert;
-    snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"curves\"",
-             (unsigned long)o->alpha.order, (long)continuity);
+    snprintf(x->json, sizeof x->json, "\"order\":%lu,\"continuity\":%ld,\"geometry\":\"curves\"%s",
+             (unsigned long)o->alpha.order, (long)continuity, tags ? ",\"tagged\":true" : "");
     return SUBD_OK;
 }
 
-#define LOOP_OPTS (OPT_BOUNDARY | OPT_CREASE)
+#define LOOP_OPTS (OPT_BOUNDARY | OPT_CREASE | OPT_TAGS)
 const command tool_commands[] = {
     {"info", "INPUT", "counts, components, Euler characteristic, genus,\n"
                       "valences and bounding box of a mesh",
@@ -363,11 +483,12 @@ const command tool_commands[] = {
     {"quasi48", "[-l N] INPUT -o OUTPUT", "quasi 4-8 subdivision, N binary steps (default 2 = one\n"
                                           "4-8 refinement); --no-smooth, --boundary fixed|smooth|normal,\n"
                                           "--tag-boundary, --crease-angle DEG",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_Q48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE, q48_plan, q48_run, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_Q48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE | OPT_TAGS, q48_plan, q48_run, NULL},
     {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"
                                         "or the Doo-Sabin type surface; --order K, --kernel\n"
-                                        "bspline|cos|poly|cosh, --alpha A, --stiffness S",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, SUBD_MAX_LEVELS, OPT_ALPHA, alpha_plan, alpha_run, NULL},
+                                        "bspline|cos|poly|cosh, --alpha A, --stiffness S;\n"
+                                        "--tags FILE: 'alpha V A' (curves, odd K), 'falpha F A' (even K)",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, SUBD_MAX_LEVELS, OPT_ALPHA | OPT_TAGS, alpha_plan, alpha_run, NULL},
     {"semireg48", "[-l N] INPUT -o OUTPUT", "semi-regular 4-8 refinement with Zwart-Powell box-spline\n"
                                             "smoothing, N binary steps after pre-processing (default\n"
                                             "2; -l 0 writes the pre-processed mesh); --no-smooth",

@@ -154,15 +154,18 @@ static int apply_tag_file(const char *path, subd_mesh *m, int quiet)
         return EXIT_INPUT;
     }
     if (st == SUBD_ERR_PARSE || st == SUBD_ERR_INDEX) {
-        fprintf(stderr, "%s:%lu: expected 'crease I J', 'corner I' or 'fixed I' with vertex numbers 1..%lu\n",
-                path, (unsigned long)d.line, (unsigned long)m->num_verts);
+        fprintf(stderr,
+                "%s:%lu: expected 'crease I J', 'corner I', 'fixed I' or 'alpha I A' with vertex numbers 1..%lu, "
+                "or 'falpha F A' with face numbers 1..%lu\n",
+                path, (unsigned long)d.line, (unsigned long)m->num_verts, (unsigned long)m->num_faces);
         return EXIT_INPUT;
     }
     if (st != SUBD_OK) return library_error(path, st, &d, 0, 0);
     if (!quiet) {
         progress_pause();
-        fprintf(stderr, "subd: %s: %lu crease edge(s), %lu vertex tag(s)\n", path, (unsigned long)rep.creases,
-                (unsigned long)rep.vertex_tags);
+        fprintf(stderr, "subd: %s: %lu crease edge(s), %lu vertex tag(s), %lu alpha(s)\n", path,
+                (unsigned long)rep.creases, (unsigned long)rep.vertex_tags,
+                (unsigned long)(rep.vertex_alphas + rep.face_alphas));
     }
     return EXIT_OK;
 }
@@ -324,6 +327,7 @@ static int run_command(tool_run *r)
         t0 = host_now_ns();
         st = cmd->plan(&r->in.mesh, &r->o, &bytes, &d);
         r->lib_ns += host_now_ns() - t0;
+        if (st > 0) return st; /* an EXIT_* the plan already reported (alpha's tag file) */
         if (st != SUBD_OK) return scheme_error(r, st, &d);
         need = (bytes > UINT32_MAX - base) ? UINT32_MAX : base + bytes;
         if (need > r->planned) r->planned = need;

@@ -382,10 +382,12 @@ static const tool_option options[] = {
      "(quasi48) tag boundary edges as creases (they stay put)"},
     {"--crease-angle", NULL, "D", 0, OPT_CREASE, set_crease_angle,
      "tag edges whose faces meet at more than D degrees as creases"},
-    {"--tags", NULL, "FILE", 0, OPT_CREASE, set_tags,
+    {"--tags", NULL, "FILE", 0, OPT_TAGS, set_tags,
      "(loop, limit, pia, quasi48) tags from a text file, one per line:\n"
      "'crease I J' (the edge between vertices I and J), 'corner I',\n"
-     "'fixed I'; vertex numbers 1-based as in OBJ, '#' comments"},
+     "'fixed I'; vertex numbers 1-based as in OBJ, '#' comments;\n"
+     "(alpha) 'alpha V A' (curves, odd --order) and 'falpha F A' (faces\n"
+     "in file order, even --order): A as for --alpha"},
     {"--normals", NULL, NULL, 0, OPT_NORMALS, set_flag,
      "(limit) also write unit limit normals as OBJ vn records"},
     {"--stream", NULL, NULL, 0, OPT_STREAM, set_flag,

@@ -84,6 +84,7 @@ typedef struct tool_opts {
 #define OPT_NO_SMOOTH 0x100u /* --no-smooth */
 #define OPT_ADAPT 0x200u /* --point, --ramp, --plane, --chord, --radius */
 #define OPT_STREAM 0x400u /* --stream, --limit */
+#define OPT_TAGS 0x800u /* --tags FILE */
 
 /* What a scheme produced besides the output mesh: optional per-vertex normals (written as
  * OBJ vn) and extra --stats members (a JSON fragment without braces, e.g. "iterations":9). */

@@ -8,6 +8,8 @@
 # multiply-add; and every refusal of the generator fails loudly with nothing written.
 # usage: amalgamate_test.sh ARM_OBJDUMP M4F_GNU_OBJECT      (run from the repository root)
 objdump_arm=$1 gnu_obj=$2
+LC_ALL=C
+export LC_ALL
 CC=${CC:-gcc} CXX=${CXX:-g++}
 pass=0 fail=0
 ok() { pass=$((pass + 1)); echo "ok - $1"; }

@@ -36,6 +36,7 @@ case "$srcs$pubs$hdrs" in *'*'*) echo "$0: no sources found" >&2; exit 1 ;; esac
 version=$(awk '$1 == "#define" && $2 ~ /^SUBD_VERSION_(MAJOR|MINOR|PATCH)$/ { v[$2] = $3 }
     END { print v["SUBD_VERSION_MAJOR"] "." v["SUBD_VERSION_MINOR"] "." v["SUBD_VERSION_PATCH"] }' \
     include/subd.h)
+case $version in [0-9]*.[0-9]*.[0-9]*) ;; *) echo "$0: no SUBD_VERSION_* in include/subd.h" >&2; exit 1 ;; esac
 
 # mode c: expand the files of `files` as translation unit parts; mode h: as headers.
 amalg() { # mode, files...

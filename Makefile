@@ -8,6 +8,7 @@
 #   make bench   performance report (never part of make test)
 #   make bench-peers  the same Loop / Doo-Sabin work by OpenSubdiv, CGAL and OpenMesh
 #   make tool    build/bin/subd (float32) and build/bin/subd-fixed (Q16.16)
+#   make amalgamate  dist/tinysubd.c + dist/tinysubd.h: the library as one file (README)
 
 .SUFFIXES:
 .DELETE_ON_ERROR:
@@ -161,6 +162,40 @@ dirs:
 	@mkdir -p $(B)/gen $(B)/bin $(B)/logs $(B)/bench $(foreach v,$(VARIANTS),$(B)/$(v)/src $(B)/$(v)/test \
 	    $(B)/$(v)/port/host $(B)/$(v)/port/cortex-m $(B)/$(v)/gen $(B)/$(v)/bench)
 
+# ------------------------------------------------------------------ single file (make amalgamate)
+# dist/tinysubd.c (every src/*.c and src/*.h, one translation unit) and dist/tinysubd.h (the
+# public headers), written by tools/amalgamate.sh. make test compiles dist/tinysubd.c alone (no
+# include path: it needs only tinysubd.h beside it): with the host-float / host-fixed flags and
+# sanitizers, linked with those variants' test objects (the same tests, the same hashes), and
+# with the Cortex-M flags (-Werror, -Wstack-usage) for the link proofs; m4f-gnu as an
+# integrator might build it, for the no-fused-multiply-add proof (test/amalgamate_test.sh).
+AMALG := dist/tinysubd.c dist/tinysubd.h
+$(AMALG) &: tools/amalgamate.sh $(SRC) $(wildcard src/*.h include/*.h)
+	tools/amalgamate.sh dist
+amalgamate: $(AMALG)
+
+define amalg_host
+$(B)/amalg-$(1)/tinysubd.o: dist/tinysubd.c $(AMALG) $(MK)
+	@mkdir -p $$(@D)
+	$(HOST_CC) $(WARN) $(SRC_WARN) $(HOST_FLAGS_host-$(1)) -c $$< -o $$@
+$(B)/amalg-$(1)/test.elf: $(B)/amalg-$(1)/tinysubd.o $(filter-out $(SRC:%.c=$(B)/host-$(1)/%.o),$(call host_test_objs,host-$(1)))
+	$(HOST_CC) $(SAN) $$^ -lm -o $$@
+endef
+$(foreach v,float fixed,$(eval $(call amalg_host,$(v))))
+define amalg_cm
+$(B)/amalg-$(1)/tinysubd.o: dist/tinysubd.c $(AMALG) $(MK)
+	@mkdir -p $$(@D)
+	$(CM_CC) $(ARCH_$(1)) $(CM_FLAGS) $(SRC_WARN) -DSUBD_FIXED=$(FIXED_$(1)) -c $$< -o $$@
+$(B)/amalg-$(1)/libtinysubd.a: $(B)/amalg-$(1)/tinysubd.o
+	rm -f $$@ && $(CM_AR) rcs $$@ $$^
+endef
+$(foreach v,m4f-float m3-fixed,$(eval $(call amalg_cm,$(v))))
+$(B)/amalg-m4f-gnu/tinysubd.o: dist/tinysubd.c $(AMALG) $(MK)
+	@mkdir -p $(@D)
+	$(CM_CC) $(ARCH_m4f-float) $(GNU_WARN) $(SRC_WARN) -O2 -DSUBD_FIXED=0 -c $< -o $@
+AMALG_BUILD := $(B)/amalg-float/test.elf $(B)/amalg-fixed/test.elf $(B)/amalg-m4f-float/libtinysubd.a \
+               $(B)/amalg-m3-fixed/libtinysubd.a $(B)/amalg-m4f-gnu/tinysubd.o
+
 # ------------------------------------------------------------------ toolchain
 # A fresh Debian machine may have only gcc and make: install what is missing.
 CM_OK = command -v $(CM_CC) >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1 && \
@@ -183,7 +218,7 @@ test: deps
 
 test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/test-fail.elf \
             m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool \
-            $(B)/host-gnu/test.elf $(B)/m4f-gnu/libsubd.a
+            $(B)/host-gnu/test.elf $(B)/m4f-gnu/libsubd.a $(AMALG_BUILD)
 
 test-run:
 	@rm -rf $(L) && mkdir -p $(L)
@@ -209,6 +244,18 @@ test-run:
 	@test/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS)
 	@test/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS)
 	@test/run_suite.sh "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/cmake_test.sh $(B)
+	@test/run_suite.sh "amalgamation host-float tests" $(L)/amalg-float.log $(B)/amalg-float/test.elf & \
+	 test/run_suite.sh "amalgamation host-fixed tests" $(L)/amalg-fixed.log $(B)/amalg-fixed/test.elf & wait
+	@test/run_suite.sh "hashes host-float = amalgamation" $(L)/hash-amalg-float.log test/compare_hashes.sh \
+	    $(L)/host-float.log $(L)/amalg-float.log float32
+	@test/run_suite.sh "hashes host-fixed = amalgamation" $(L)/hash-amalg-fixed.log test/compare_hashes.sh \
+	    $(L)/host-fixed.log $(L)/amalg-fixed.log q16.16
+	@test/run_suite.sh "link proofs amalgamation m4f-float" $(L)/link-amalg-m4f.log test/link_proofs.sh $(CM_NM) \
+	    $(B)/amalg-m4f-float/libtinysubd.a m4f-float
+	@test/run_suite.sh "link proofs amalgamation m3-fixed" $(L)/link-amalg-m3.log test/link_proofs.sh $(CM_NM) \
+	    $(B)/amalg-m3-fixed/libtinysubd.a m3-fixed
+	@test/run_suite.sh "amalgamation (tools/amalgamate.sh)" $(L)/amalg.log test/amalgamate_test.sh \
+	    $(CM_OBJDUMP) $(B)/amalg-m4f-gnu/tinysubd.o
 	@test/summary.sh $(L)/*.log
 
 # ------------------------------------------------------------------ fuzzing (make fuzz)
@@ -317,10 +364,11 @@ check-format-exhaustive: $(B)/bin/format_exhaustive-float $(B)/bin/format_exhaus
 	$(B)/bin/format_exhaustive-fixed q16 $(FMT_RANGE)
 
 clean:
-	rm -rf $(B)
+	rm -rf $(B) dist
 
 # Header dependencies written by -MMD (none before the first build).
 -include $(wildcard $(foreach v,$(VARIANTS) fuzz-float fuzz-fixed,$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
-.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean check-format-exhaustive \
+.PHONY: dirs deps test test-build test-run demo demo-run bench bench-run bench-peers tool clean amalgamate \
+        check-format-exhaustive \
         m4f-float-images m3-fixed-images

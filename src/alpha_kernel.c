@@ -109,7 +109,7 @@ int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf)
     return (int64_t)x * 65536;
 }
 #else
-static float float_from_bits(uint32_t u)
+static float alpha_float_from_bits(uint32_t u)
 {
     union { float f; uint32_t u; } c;
     c.u = u;
@@ -136,7 +136,7 @@ subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf)
         m = u << (23u - p);
     }
     /* value = m 2^(p - 23) 2^-32 with m in [2^23, 2^24): exponent p - 32 in -32..31 */
-    return float_from_bits(sign | ((p + 95u) << 23) | ((uint32_t)m & 0x7fffffu));
+    return alpha_float_from_bits(sign | ((p + 95u) << 23) | ((uint32_t)m & 0x7fffffu));
 }
 
 int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf)

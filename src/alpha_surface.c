@@ -178,7 +178,7 @@ static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t 
 
 /* The arrays the steps read; a mesh without adjacency (e.g. subd_loop output without
  * SUBD_LOOP_ADJACENCY: twin and vert_out NULL) is refused. */
-static int mesh_ok(const subd_mesh *m)
+static int surface_mesh_ok(const subd_mesh *m)
 {
     if (!m->face_start) return 0;
     if (m->num_verts && (!m->pos || !m->vert_out || !m->vert_tag)) return 0;
@@ -189,7 +189,7 @@ static int mesh_ok(const subd_mesh *m)
 static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_q32)
 {
     int st;
-    if (!in || !mesh_ok(in)) return SUBD_ERR_PARAM;
+    if (!in || !surface_mesh_ok(in)) return SUBD_ERR_PARAM;
     if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, s_q32)) != SUBD_OK) return st;
     if (o->levels < 1u) return SUBD_ERR_PARAM;
     if (in->num_faces == 0) return SUBD_ERR_EMPTY;

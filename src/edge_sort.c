@@ -39,6 +39,7 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "edge_sort.h"
+#include "mesh_internal.h" /* tri_next, tri_prev */
 #include "vec3w.h" /* subd_bitlen64 */
 
 #define ES_KEY_FRAC 52u
@@ -48,9 +49,6 @@
 /* True when every face is a triangle: then face f's corners are 3f, 3f+1, 3f+2 (faces have
  * at least 3 corners and face_start[0] == 0, so 3 per face on average means 3 each). */
 static int es_all_tris(const subd_mesh *m) { return m->num_corners == 3u * m->num_faces; }
-
-static uint32_t es_tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
-static uint32_t es_tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
 
 /* ------------------------------------------------------------------------------------ */
 /* sort_edges                                                                             */
@@ -114,11 +112,11 @@ uint32_t subd_edge_number(const subd_mesh *m, const subd_edge_work *w, uint32_t 
                 edge_he[ne++] = h;
             }
             /* subd_ring_next */
-            h = twin[tri ? es_tri_prev(h) : subd_he_prev(m, h)];
+            h = twin[tri ? tri_prev(h) : subd_he_prev(m, h)];
             if (h == first) h = SUBD_NONE;
         }
         if (twin[first] == SUBD_NONE) { /* boundary: the incoming boundary edge comes last */
-            h = tri ? es_tri_prev(last) : subd_he_prev(m, last);
+            h = tri ? tri_prev(last) : subd_he_prev(m, last);
             if (edge_of[h] == SUBD_NONE) {
                 if (ne == cap) return SUBD_NONE;
                 edge_of[h] = ne;
@@ -193,7 +191,7 @@ uint32_t subd_edge_clusters(const subd_mesh *m, subd_edge_work *w, uint32_t ne, 
     for (i = 0; i < 256u; i++) cnt[i] = 0;
     for (e = 0; e < ne; e++) {
         uint32_t h = edge_he[e];
-        uint64_t r = (es_len_key(pos + 3u * cv[h], pos + 3u * cv[es_tri_next(h)]) + half) >> drop;
+        uint64_t r = (es_len_key(pos + 3u * cv[h], pos + 3u * cv[tri_next(h)]) + half) >> drop;
         k_or |= r;
         k_and &= r;
         cnt[(uint32_t)r & 255u]++; /* the sort's first digit */

@@ -253,10 +253,7 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
 }
 
 /* ------------------------------------------------------------------------------------ */
-/* Navigation on a triangle level                                                         */
-
-static uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
-static uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
+/* Navigation on a triangle level (tri_next, tri_prev: mesh_internal.h)                   */
 
 static int edge_sharp(const loop_src *s, uint32_t h)
 {
@@ -558,7 +555,7 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     (void)out_layout(&whole, &lay.cl, (o->flags & SUBD_LOOP_ADJACENCY) != 0u, &fin, &fs, &cf, &front, 0);
     cur = lay.c0;
     for (k = 1; k <= o->levels; k++) {
-        loop_counts child;
+        loop_counts child = {0, 0, 0, 0}; /* counts_next sets it; zero for gcc -O2 on dist/tinysubd.c */
         loop_dst dst = fin;
         loop_src next;
         (void)counts_next(&cur, &child); /* cannot fail: the layout checked every level */

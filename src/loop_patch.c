@@ -136,7 +136,7 @@ typedef struct sp_ring {
     uint32_t h0, h, steps, tail;
 } sp_ring;
 
-static void ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
+static void sp_ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
 {
     it->h0 = it->h = p->vout[v];
     it->steps = 0;
@@ -144,7 +144,7 @@ static void ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
 }
 
 /* Next neighbour (SUBD_NONE at the end); *he: a half-edge of the edge to it. */
-static uint32_t ring_step(const sp_level *p, sp_ring *it, uint32_t *he)
+static uint32_t sp_ring_step(const sp_level *p, sp_ring *it, uint32_t *he)
 {
     uint32_t h = it->h, pr, t, nb;
     if (h == SUBD_NONE) return SUBD_NONE;
@@ -184,8 +184,8 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
     if (f & VF_SMOOTH6) {
         n = 6;
     } else {
-        ring_begin(p, v, &it);
-        while ((nb = ring_step(p, &it, &he)) != SUBD_NONE) {
+        sp_ring_begin(p, v, &it);
+        while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) {
             if (p->sh[he] & sharp_bit) {
                 if (ns < 2u) snb[ns] = next ? p->slot[he] : nb;
                 ns++;
@@ -205,8 +205,8 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
         loop_weights w = subd_loop_weights_of(wc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
-        ring_begin(p, v, &it);
-        while ((nb = ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
+        sp_ring_begin(p, v, &it);
+        while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
         loop_smooth_end(out, acc, ovf);
         if (n == 6u) f |= VF_SMOOTH6;
     }
@@ -346,8 +346,8 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
     } else {
         uint32_t he = 0;
         sp_ring it;
-        ring_begin(p, c, &it);
-        while (ring_step(p, &it, &he) != SUBD_NONE) /* the tail step repeats the last face */
+        sp_ring_begin(p, c, &it);
+        while (sp_ring_step(p, &it, &he) != SUBD_NONE) /* the tail step repeats the last face */
             if (n == 0u || cand[n - 1u] != he / 3u) cand[n++] = (uint16_t)(he / 3u);
     }
     for (i = 1; i < n; i++) { /* insertion sort: a few entries */

@@ -52,10 +52,6 @@ typedef struct sp_level {
 static inline uint32_t cap_f(uint32_t s) { return s - 2u; }
 static inline uint32_t cap_v(uint32_t s) { return s - 3u; }
 
-/* Next and previous corner of a triangle. */
-static inline uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
-static inline uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
-
 /* A level's arrays for corner valence sum s (offsets into its block; returns its bytes);
  * `cache`: with the refined values; `control`: with the input face and vertex of each local
  * element. SUBD_LOOP_SLEV_ in subd_loop.h is the same sum. */

@@ -1,10 +1,16 @@
 /* SPDX-License-Identifier: MIT */
 /* Private mesh construction interface shared by the builder (mesh.c) and the readers
  * (obj.c, off.c): the readers parse straight into the mesh arrays and then run the same
- * validation and adjacency pass, so there is one layout and one validator. */
+ * validation and adjacency pass, so there is one layout and one validator. Also the corner
+ * steps of an all-triangle mesh that the schemes walk with (tri_next, tri_prev). */
 #ifndef SUBD_MESH_INTERNAL_H
 #define SUBD_MESH_INTERNAL_H
 #include "subd.h"
+
+/* Next and previous corner in a mesh whose face f is corners 3f..3f+2 (every face a triangle,
+ * as each scheme level is): subd_he_next/prev without loading corner_face and face_start. */
+static inline uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
+static inline uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
 
 typedef struct mesh_counts {
     uint32_t nv, nf, nc, nl, nlv;

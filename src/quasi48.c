@@ -164,10 +164,8 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
 /* ------------------------------------------------------------------------------------ */
 /* Navigation in the child meshes, whose face f is corners 3f..3f+2 (q48_split_faces writes
  * them so): the same half-edges as subd_he_next/prev and subd_ring_next, without loading
- * corner_face and face_start on every step of a walk.                                     */
+ * corner_face and face_start on every step of a walk (tri_next, tri_prev: mesh_internal.h). */
 
-static uint32_t tri_next(uint32_t h) { return (h % 3u == 2u) ? h - 2u : h + 1u; }
-static uint32_t tri_prev(uint32_t h) { return (h % 3u == 0u) ? h + 2u : h - 1u; }
 static uint32_t tri_dest(const subd_mesh *m, uint32_t h) { return m->corner_vert[tri_next(h)]; }
 static uint32_t tri_ring_next(const subd_mesh *m, uint32_t first, uint32_t h)
 {

@@ -73,7 +73,7 @@ static uint32_t sums_bytes(uint32_t n)
     return b;
 }
 
-static int out_layout(subd_arena *a, const sr48_layout *L, subd_sr48 *h, uint32_t *bytes)
+static int sr48_out_layout(subd_arena *a, const sr48_layout *L, subd_sr48 *h, uint32_t *bytes)
 {
     const uint32_t nv = L->level_verts[L->steps], nt = L->level_tri[L->steps + 1u];
     subd_layout l;
@@ -124,7 +124,7 @@ static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32
     for (k = o->steps + 1u; k <= SUBD_SR48_MAX_STEPS; k++) L->level_verts[k] = L->level_verts[o->steps];
     for (k = o->steps + 2u; k <= SUBD_SR48_MAX_STEPS + 1u; k++) L->level_tri[k] = (uint32_t)tt;
 
-    out_layout(0, L, 0, &L->out_bytes);
+    sr48_out_layout(0, L, 0, &L->out_bytes);
     {
         uint32_t keep; /* phase A's edge_of, edge_he, sel stay in phase B */
         subd_sr48_pre_alloc_a(0, in, 0, &L->a_bytes, &keep);
@@ -231,10 +231,10 @@ int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase
     const uint32_t t0 = h->level_tri[k], n = h->level_tri[k + 1u] - t0, cb = h->level_tri[k + 1u];
     const uint32_t cap = h->level_verts[k + 1u];
     uint32_t i, next = h->level_verts[k], q, ovf = 0;
-    uint32_t *tv = h->tri_vert, *bn = h->tri_base_nb;
+    uint32_t *tv = h->tri_vert, *base_nb = h->tri_base_nb;
     subd_real *pos = h->pos;
     for (i = 0; i < n; i++) {
-        const uint32_t t = t0 + i, c = tv[3u * t], a = tv[3u * t + 1u], b = tv[3u * t + 2u], nb = bn[t];
+        const uint32_t t = t0 + i, c = tv[3u * t], a = tv[3u * t + 1u], b = tv[3u * t + 2u], nb = base_nb[t];
         const uint32_t ch = cb + 2u * i, pn = pnb[i >> 1];
         uint32_t m, nrel;
         if (nb == SUBD_NONE || nb > t) {
@@ -257,11 +257,11 @@ int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase
         tv[3u * ch + 5u] = c;
         nrel = (pn == SUBD_NONE) ? SUBD_NONE : pn - pbase; /* N, index within level k-1 */
         if ((i & 1u) == 0u) {
-            bn[ch] = cb + 2u * (i + 1u) + 1u;
-            bn[ch + 1u] = (nrel == SUBD_NONE) ? SUBD_NONE : cb + 2u * (2u * nrel + 1u);
+            base_nb[ch] = cb + 2u * (i + 1u) + 1u;
+            base_nb[ch + 1u] = (nrel == SUBD_NONE) ? SUBD_NONE : cb + 2u * (2u * nrel + 1u);
         } else {
-            bn[ch] = (nrel == SUBD_NONE) ? SUBD_NONE : cb + 2u * (2u * nrel) + 1u;
-            bn[ch + 1u] = cb + 2u * (i - 1u);
+            base_nb[ch] = (nrel == SUBD_NONE) ? SUBD_NONE : cb + 2u * (2u * nrel) + 1u;
+            base_nb[ch + 1u] = cb + 2u * (i - 1u);
         }
     }
     if (next != cap) return SUBD_ERR_PARAM;
@@ -343,7 +343,7 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
     for (k = 0; k <= SUBD_SR48_MAX_STEPS + 1u; k++) h.level_tri[k] = L.level_tri[k];
     h.num_clusters = L.clusters;
     h.num_isolated = L.isolated;
-    if ((st = out_layout(a, &L, &h, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = sr48_out_layout(a, &L, &h, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
 
     /* pre-processing: phase A (find_clusters again, above the output), phase B */
     base = subd_arena_mark(a);

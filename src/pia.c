@@ -76,7 +76,6 @@
 #include "loop_rules.h"
 #include "pia_internal.h"
 
-
 /* ------------------------------------------------------------------------------------ */
 /* Validation and layout                                                                  */
 

@@ -116,8 +116,9 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
  * modes, every new position being a convex combination, but a normal projection can leave
  * the range: a component may move further than the displacement's). On failure the arena is back where it was and *out untouched.
  * Work per step: at most 8 radix passes over the edges, O(C) for the adjacency; no
- * recursion; stack under 600 bytes (subd_quasi48's own frame, with every step inlined:
- * 440 / 456 bytes on Cortex-M4F / M3, plus at most 72 in the edge sort). */
+ * recursion; stack under 800 bytes (subd_quasi48's own frame, with every step inlined:
+ * 464 / 656 bytes on Cortex-M4F / M3 (the normal mode's 64-bit projection is inlined), plus
+ * at most 88 in pass 2 or 72 in the edge sort). */
 int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out,
                  subd_diag *d);
 

@@ -62,9 +62,10 @@
  * the search direction p, q = L p, pt = K' p and the sweep vector z (same), two weights per
  * vertex (the CG weight w and chi, subd_reals) and one class byte per vertex. On success
  * only V stays in the arena. Stack (-fstack-usage, -O2):
- * under 850 bytes on the deepest path (Cortex-M3, Q16.16: subd_pia, pia_phase_sym with the
- * inlined CG and SGS phases, pia_sweep_fwd, pia_half_row), and subd_pia, pia_phase_sym plus
- * subd_loop_limit_apply's. Work per iteration: one application of L, O(corners), plus
+ * under 850 bytes on the deepest path (Cortex-M3, Q16.16: subd_pia 232, subd_pia_fast 8,
+ * pia_phase_sym 216 with the inlined CG and SGS phases, pia_sweep_fwd 96, pia_half_row 136:
+ * 688), and subd_pia, subd_pia_fast, pia_phase_sym plus subd_loop_limit_apply's
+ * (pia_classify and pia_phase_cheb are kept out of line, off that path). Work per iteration: one application of L, O(corners), plus
  * O(vertices); an SGS step does 1.5 applications' worth (three half-row passes).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -74,7 +75,6 @@
 #include "real_avg.h"
 #include "loop_rules.h"
 #include "pia_internal.h"
-
 
 /* ------------------------------------------------------------------------------------ */
 /* Validation and layout                                                                  */

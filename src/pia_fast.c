@@ -109,7 +109,8 @@ static subd_real pia_weight_smooth(uint32_t n, uint32_t *ovf)
  * vertex is fixed; two sharp edges make a curve vertex (regular as loop_rules.h defines it:
  * valence 4 on a boundary, valence 6 with opposite sharp edges inside); fewer make a smooth
  * vertex (one: a dart, formula (3) as well). */
-static void pia_classify(pia_state *s)
+/* Not inlined (nor pia_phase_cheb): their frames stay off the CG path's stack. */
+static SUBD_NOINLINE void pia_classify(pia_state *s)
 {
     const subd_mesh *m = s->m;
     const subd_real curve = (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) ? SUBD_REAL_FRAC(1, 3) : SUBD_REAL_FRAC(1, 5);
@@ -585,7 +586,7 @@ static void pia_phase_sym(pia_state *s, uint32_t set)
 /* Chebyshev iteration for L V = P on the set, for a spectrum in [ell, 1], until the max
  * error is <= tol, it stalls, or the budget is spent; an error above twice the starting
  * one hands the set to the paper's step. p holds the step d_k. Exact lv on entry and exit. */
-static void pia_phase_cheb(pia_state *s, uint32_t set)
+static SUBD_NOINLINE void pia_phase_cheb(pia_state *s, uint32_t set)
 {
     const subd_mesh *m = s->m;
     subd_real one = SUBD_REAL_ONE, two = subd_add(one, one, &s->ovf);

@@ -525,7 +525,8 @@ static void q48_smooth_normal(subd_mesh *o, const subd_mesh *m, uint32_t v, uint
     uint32_t k;
     if (!q48_pass2(o, v, nv_old, 0, t, ovf)) return;
     q48_vertex_normal(m, v, n);
-#if !SUBD_FIXED
+#if !SUBD_FIXED /* why: float32 products can overflow to infinity (Q16.16's cannot, by the
+                 * shift in q48_vertex_normal) */
     for (k = 0; k < 3u; k++) (void)subd_chk(n[k], ovf);
     if (*ovf) return;
 #endif

@@ -792,6 +792,45 @@ static void q48_normal_box(void)
     }
 }
 
+/* Normal mode, SUBD_ERR_RANGE: two faces folded along the edge (0, 2) whose vertex 0 is
+ * the largest in y; its normal points between the faces, and the normal component of its
+ * displacement (mostly along x) moves it up in y, beyond every input vertex (found by a
+ * search over small integer folds). Q16.16: scaled by 1000 with y + 32000, vertex 0 would
+ * leave the range (y about 33230); float32: scaled by 2^64, the normal's cross products
+ * overflow. The fixed mode (convex combinations only) succeeds on the same mesh; the failed
+ * call leaves the arena mark, the input and *out unchanged. */
+static void q48_normal_range(void)
+{
+    static const int32_t base[12] = {0, 0, 0, 9, 0, -5, 8, -5, 5, 9, -3, -9};
+    static const uint32_t idx[6] = {0, 1, 2, 0, 2, 3};
+    subd_real pos[12], keep[12];
+    subd_arena a;
+    subd_face_list fl;
+    subd_mesh in, out, out0;
+    subd_diag d;
+    subd_q48_opts of = opts(1, 0), on = opts_normal(1);
+    uint32_t i, mark, ovf = 0;
+    for (i = 0; i < 12u; i++) {
+#if SUBD_FIXED
+        pos[i] = subd_from_int(base[i] * 1000 + (i % 3u == 1u ? 32000 : 0), &ovf);
+#else
+        pos[i] = (float)base[i] * 18446744073709551616.0f; /* 2^64 */
+#endif
+        keep[i] = pos[i];
+    }
+    CHECK_EQ(ovf, 0);
+    fl.num_verts = 4; fl.pos = pos; fl.num_faces = 2; fl.face_size = 0; fl.index = idx;
+    fl.num_lines = 0; fl.line_size = fl.line_index = 0;
+    subd_arena_init(&a, g_big, BIG_BYTES);
+    if (!h_build(&a, &fl, &in) || !run(&a, &in, &of, &out0)) return;
+    mark = subd_arena_mark(&a);
+    out = out0;
+    CHECK_EQ(subd_quasi48(&a, &in, &on, &out, &d), SUBD_ERR_RANGE);
+    CHECK_EQ(subd_arena_mark(&a), mark);
+    CHECK(out.pos == out0.pos && out.num_verts == out0.num_verts && out.num_faces == out0.num_faces);
+    for (i = 0; i < 12u; i++) CHECK(h_same(in.pos[i], keep[i]));
+}
+
 /* hexfan.obj from the corpus (decimal positions): same result as the built fan. */
 static void q48_hexfan_file(void)
 {
@@ -941,6 +980,7 @@ const test_case suite_quasi48[] = {
     {"q48_tags_and_boundary", q48_tags_and_boundary},
     {"q48_normal_planar", q48_normal_planar},
     {"q48_normal_box", q48_normal_box},
+    {"q48_normal_range", q48_normal_range},
     {"q48_hexfan_file", q48_hexfan_file},
     {"q48_plan_exhaustive", q48_plan_exhaustive},
     {"q48_errors", q48_errors},

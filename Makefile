@@ -256,6 +256,8 @@ test-run:
 	    $(B)/amalg-m3-fixed/libtinysubd.a m3-fixed
 	@test/run_suite.sh "amalgamation (tools/amalgamate.sh)" $(L)/amalg.log test/amalgamate_test.sh \
 	    $(CM_OBJDUMP) $(B)/amalg-m4f-gnu/tinysubd.o
+	@test/run_suite.sh "header template (include/*.h)" $(L)/headers.log test/header_check.sh include
+	@test/run_suite.sh "SPDX license lines" $(L)/spdx.log test/spdx_check.sh .
 	@test/summary.sh $(L)/*.log
 
 # ------------------------------------------------------------------ fuzzing (make fuzz)

@@ -345,12 +345,19 @@ int subd_off_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *o
 uint32_t subd_obj_line_of(const char *buf, uint32_t len, const subd_diag *diag);
 uint32_t subd_off_line_of(const char *buf, uint32_t len, const subd_diag *diag);
 
-/* Writers: write the mesh as text into buf[0..cap). *len receives the number of bytes
- * written. With buf == NULL (or cap too small) nothing is written, *len receives the exact
- * size needed and SUBD_ERR_NOMEM is returned (SUBD_OK when buf == NULL). */
+/* subd_obj_write, subd_off_write, subd_obj_write_normals: write the mesh as text into
+ * buf[0..cap), numbers by subd_real_format (the same bytes on every target); *len receives
+ * the number of bytes written. subd_obj_write_normals adds one normal per vertex
+ * (3 * num_verts; `vn` records, faces as `f a//a ...`).
+ * Memory: no arena; the caller's buffer only.
+ * Errors: SUBD_ERR_PARAM (NULL mesh, len or normals), SUBD_ERR_NOMEM (cap too small: nothing
+ *   is written and *len receives the exact size needed). With buf == NULL nothing is written,
+ *   *len receives the exact size and SUBD_OK is returned, so a caller can size its buffer;
+ *   SUBD_ERR_TOO_BIG (the text would exceed 4 GB).
+ * Cost: O(vertices + corners) (every number formatted once per call; sizing calls format
+ *   too). */
 int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
-/* OBJ with one normal per vertex (3 * num_verts; `vn` records, faces as `f a//a ...`). */
 int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len);
 
 #ifdef __cplusplus

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* tinysubd — semi-stationary alpha-subdivision (Zhang & Wang, "Semi-stationary subdivision
- * operators in geometric modeling", 2002; ../shared/papers/semi-stationary-subdivision.txt).
+/* Semi-stationary alpha-subdivision (Zhang Hongxin and Wang Guojin,
+ * "Semi-stationary subdivision operators in geometric modeling", Progress in Natural Science
+ * 12(10), 2002). Each call's comment: a summary, Memory, Errors (every status), Cost, Notes.
  *
  * Curves: the second order bisect operator S_2(f; n) of formula (2) and the higher orders of
  * definition 3 (S_{2k} = B C S_{2k-1}, S_{2k+1} = C S_{2k}; C averages consecutive points,
@@ -75,15 +76,20 @@ typedef struct subd_alpha_opts {
     const int32_t *tag_num;
 } subd_alpha_opts;
 
-/* order 2, levels 1, B-spline kernel, alpha = 0, stiffness 1, no tags. */
+/* subd_alpha_opts_default: order 2, levels 1, B-spline kernel, alpha = 0 (den 1),
+ * stiffness 1, no tags.
+ * Memory: none. Errors: none (o must not be NULL). Cost: O(1). */
 void subd_alpha_opts_default(subd_alpha_opts *o);
 
-/* The kernel value f(alpha; n) = s g(2^-(n+1) alpha) for alpha = 2 pi num / den, rounded to
- * subd_real. Any int32 num. Returns SUBD_OK, SUBD_ERR_PARAM (f NULL, bad kernel, den <= 0,
- * den << (n + 1) not an int32, s <= -1, |s| >= 2^31 or not finite; the kernel itself
- * accepts s in (-1, -1/2], only the operators refuse it) or SUBD_ERR_RANGE (the value does
- * not fit: cosh (or poly) of a large angle, e.g. num = SUBD_ALPHA_MAX_NUM at level 0).
- * Pure computation, no arena; stack < 200 bytes. */
+/* subd_alpha_kernel_value: the kernel value f(alpha; n) = s g(2^-(n+1) alpha) for
+ * alpha = 2 pi num / den, rounded to subd_real, into *f. Any int32 num.
+ * Memory: no arena; stack < 200 bytes.
+ * Errors: SUBD_ERR_PARAM (f NULL, bad kernel, den <= 0, den << (n + 1) not an int32,
+ *   s <= -1, |s| >= 2^31 or not finite; the kernel itself accepts s in (-1, -1/2], only the
+ *   operators refuse it with SUBD_ERR_DIVERGENT), SUBD_ERR_RANGE (the value does not fit:
+ *   cosh (or poly) of a large angle, e.g. num = SUBD_ALPHA_MAX_NUM at level 0). *f is
+ *   untouched on failure.
+ * Cost: O(1) (the deterministic cos/sin or a short series in 64-bit integers). */
 int subd_alpha_kernel_value(uint32_t kernel, int32_t num, int32_t den, uint32_t level, subd_real s,
                             subd_real *f);
 
@@ -116,23 +122,29 @@ typedef struct subd_alpha_curve_out {
     int32_t continuity;   /* -1 not smooth (s <= 0), 0 GC0, else k - 1 (theorem 1)         */
 } subd_alpha_curve_out;
 
-/* Exact arena bytes and output point count of subd_alpha_curve for m input points.
- * Returns SUBD_OK, SUBD_ERR_PARAM (NULL, bad order / levels / kernel / alpha, |s| >= 2^31
- * or s not finite), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (m < 2 open, m < 3
- * closed) or SUBD_ERR_TOO_BIG (m or a level's count > 2^26). */
+/* subd_alpha_curve_plan: the exact arena bytes (*bytes) and output point count
+ * (*out_points) of subd_alpha_curve for m input points.
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL, bad order / levels / kernel / alpha, |s| >= 2^31 or s not
+ *   finite), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (m < 2 open, m < 3 closed),
+ *   SUBD_ERR_TOO_BIG (m or a level's count > 2^26).
+ * Cost: O(levels * k). */
 int subd_alpha_curve_plan(uint32_t m, int closed, const subd_alpha_opts *o, uint32_t *bytes,
                           uint32_t *out_points);
 
-/* Refines one curve by opts->levels applications of S_k(f; n), n = 0 .. levels - 1.
- * Uses one arena buffer of the largest intermediate size (each operator runs in place)
- * plus, with tags, one int32 tag per point that is given back at the end: after success
- * the arena holds only out->pos. Errors, in this order: SUBD_ERR_PARAM (NULL, options,
+/* subd_alpha_curve: refines one curve by opts->levels applications of S_k(f; n),
+ * n = 0 .. levels - 1, into *out.
+ * Memory: exactly the plan: one arena buffer of the largest intermediate size (each
+ *   operator runs in place) plus, with tags, one int32 tag per point that is given back at
+ *   the end: after success the arena holds only out->pos. Stack about 200 bytes.
+ * Cost: O(points of the last level * k).
+ * Errors: in this order, SUBD_ERR_PARAM (NULL, options,
  * |s| >= 2^31 or not finite), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY,
  * SUBD_ERR_TOO_BIG (m or a level's count > 2^26; checked before any point is read),
  * SUBD_ERR_NAN (a non-finite input point, diag.vertex), SUBD_ERR_NOMEM (diag.bytes_needed =
  * the plan), SUBD_ERR_PARAM (a tag outside +-SUBD_ALPHA_MAX_NUM, diag.vertex; a level with
- * f_n <= -1), SUBD_ERR_RANGE (overflow: a kernel value or a point outside the range).
- * Stack: about 200 bytes. Work: O(points of the last level * k). */
+ * f_n <= -1), SUBD_ERR_RANGE (overflow: a kernel value or a point outside the range). On
+ * failure the arena is back where it was and *out is untouched. */
 int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
                      const subd_alpha_opts *o, subd_alpha_curve_out *out, subd_diag *diag);
 
@@ -217,32 +229,39 @@ typedef struct subd_alpha_surface_info {
  * closed form printed in the paper's proof has 2f/(1+f)^2, a factor 2 too large (at f = 1,
  * N = 4 it would give 0 instead of Doo-Sabin's 1/4). The code follows formula (3).       */
 
-/* Exact arena bytes of subd_alpha_surface (the peak: after the first step two consecutive
- * steps' meshes, and with tags their tag arrays, coexist while one is built). Returns SUBD_OK, SUBD_ERR_PARAM (NULL, options,
- * |s| >= 2^31, a mesh without adjacency: twin, vert_out or corner_face NULL, e.g. subd_loop
- * output without SUBD_LOOP_ADJACENCY), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (no faces),
- * SUBD_ERR_FACE_SIZE (an interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face
- * that large), SUBD_ERR_TOO_BIG. */
+/* subd_alpha_surface_plan: the exact arena bytes of subd_alpha_surface, in *bytes (the
+ * peak: after the first step two consecutive steps' meshes, and with tags their tag
+ * arrays, coexist while one is built).
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL, options, |s| >= 2^31, a mesh without adjacency: twin,
+ *   vert_out or corner_face NULL, e.g. subd_loop output without SUBD_LOOP_ADJACENCY),
+ *   SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY (no faces), SUBD_ERR_FACE_SIZE (an
+ *   interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face that large),
+ *   SUBD_ERR_TOO_BIG.
+ * Cost: O(levels * k) after one O(corners) pass (the counts per step are closed forms). */
 int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes);
 
-/* opts->levels (1..SUBD_MAX_LEVELS) levels of S_k, k = opts->order in 2..
- * SUBD_ALPHA_MAX_ORDER: level n is a Doo-Sabin type step with f_n = f(alpha; n) followed by
+/* subd_alpha_surface: opts->levels (1..SUBD_MAX_LEVELS) levels of S_k, k = opts->order in
+ * 2..SUBD_ALPHA_MAX_ORDER, into *out.
+ * Memory: exactly subd_alpha_surface_plan's bytes at the peak; after success the arena
+ *   holds only *out's arrays. Stack about 450 bytes.
+ * Cost: O(output corners) per level (with tags: plus one kernel evaluation per face whose
+ *   alpha differs from the previous face's).
+ * Notes: level n is a Doo-Sabin type step with f_n = f(alpha; n) followed by
  * k - 2 dual averaging steps. With tag_num, each face's alpha comes from the tags (above);
  * the tags of each step are one int32 per tagged element in the arena (the plan counts them,
  * two steps' at a time) and are given back at the end.
  * The input is not modified; the result's arrays are in the arena (the only memory left
  * in use after success). info (may be NULL) receives the continuity class (the S_2 class
  * for every order: the paper proves GC^(k-1) only away from extraordinary points).
- * Errors, in this order: SUBD_ERR_PARAM (NULL, options, |s| >= 2^31, a mesh without
+ * Errors: in this order, SUBD_ERR_PARAM (NULL, options, |s| >= 2^31, a mesh without
  * adjacency), SUBD_ERR_DIVERGENT (s <= -1/2), SUBD_ERR_EMPTY, SUBD_ERR_NAN (diag.vertex),
  * SUBD_ERR_PARAM (a tag outside +-SUBD_ALPHA_MAX_NUM: diag.vertex for odd k, diag.face for
  * even k; the first one), SUBD_ERR_FACE_SIZE (diag.vertex), SUBD_ERR_TOO_BIG,
  * SUBD_ERR_NOMEM, then while running SUBD_ERR_PARAM (a level with f_n <= -1 on some
  * face; no element named) and SUBD_ERR_RANGE (a kernel value or a position overflows).
  * SUBD_ERR_NOMEM sets diag.bytes_needed = the plan. On every failure the arena is back at
- * its mark and *out is untouched. Stack: about 450 bytes. Work: O(output corners) per
- * level (with tags: plus one kernel evaluation per face whose alpha differs from the
- * previous face's). */
+ * its mark and *out is untouched. */
 int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_opts *o, subd_mesh *out,
                        subd_alpha_surface_info *info, subd_diag *diag);
 

@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Quasi 4-8 subdivision (paper: quasi-4-8-subdivision.txt, Velho): geometry-sensitive
+/* Quasi 4-8 subdivision (L. Velho, "Quasi 4-8 subdivision", Computer Aided Geometric
+ * Design 18(4), 2001): geometry-sensitive
  * longest-edge binary refinement with edge-cluster marking (Algorithm 1) followed by the
  * two-pass convolution smoothing (Algorithm 2), with the section 4.3 feature control
  * (tagged vertices and edges are not affected by smoothing) and three boundary modes.
- * Included by subd.h. */
+ * Included by subd.h. Each call's comment: a summary, Memory, Errors (every status), Cost,
+ * Notes. */
 #ifndef SUBD_QUASI48_H
 #define SUBD_QUASI48_H
 
@@ -68,8 +70,15 @@ typedef struct subd_q48_opts {
 #define SUBD_Q48_MAX_FACES(F, s) ((F) << (s))
 #define SUBD_Q48_MAX_VERTS(V, F, s) ((V) + (((F) << (s)) - (F)))
 
-/* Arena bytes subd_quasi48 uses for this input and options. The number of splits of a step
- * is only known after its marking pass, so the plan is computed from the bounds above: the
+/* subd_quasi48_plan: the arena bytes subd_quasi48 uses for this input and options, in
+ * *bytes (a bound: see Notes; the run never exceeds it).
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL, steps or len_bits out of range, unknown boundary mode or
+ *   flag, input without adjacency), SUBD_ERR_NOT_TRIANGLES (diag.face: a non-triangle),
+ *   SUBD_ERR_EMPTY (no faces), SUBD_ERR_TOO_BIG (the bound does not fit 32-bit sizes).
+ * Cost: O(corners).
+ * Notes: the number of splits of a step is only known after its marking pass, so the plan
+ * is computed from the bounds above: the
  * output mesh arrays sized for step `steps`, one more set for step steps-1 (ping-pong
  * between steps; none when steps == 1) and the per-step working memory for the largest step
  * input (edge numbering, sort keys, marks, split vertices: 37 bytes per corner of step
@@ -80,13 +89,16 @@ typedef struct subd_q48_opts {
  * would fit above it, and the plan keeps that room when what follows the buffer is smaller
  * (only for inputs with many isolated vertices). Everything is allocated before the first
  * step, so the measured peak equals the plan except in that case. subd_quasi48 refuses to
- * start unless that many bytes are free, so the run can never exceed the plan. Returns
- * SUBD_OK, SUBD_ERR_PARAM (NULL, steps or len_bits out of range, input without adjacency),
- * SUBD_ERR_NOT_TRIANGLES (a non-triangle), SUBD_ERR_EMPTY (no faces) or SUBD_ERR_TOO_BIG (the
- * bound does not fit 32-bit sizes). */
+ * start unless that many bytes are free, so the run can never exceed the plan. */
 int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes);
 
-/* `steps` binary steps of quasi 4-8 subdivision of an all-triangle mesh. Each step:
+/* subd_quasi48: `steps` binary steps of quasi 4-8 subdivision of an all-triangle mesh,
+ * into *out.
+ * Memory: at most subd_quasi48_plan's bytes (all of it allocated before the first step);
+ *   *out's arrays stay in the arena. Stack under 800 bytes, no recursion (see the end).
+ * Cost: per step at most 8 radix passes over the edges and O(C) for the adjacency and the
+ *   smoothing.
+ * Notes: each step:
  *  1. Algorithm 1 (refinement). Edges are numbered "radially around each vertex": vertices
  *     in index order, and around each vertex its not yet numbered edges in one-ring order
  *     (starting at vert_out[v], the order of subd_ring_next; a boundary vertex's incoming

@@ -139,8 +139,8 @@ static inline subd_real subd_acc_real(subd_acc acc, uint32_t *ovf) { return subd
 
 static inline subd_real subd_neg(subd_real a, uint32_t *ovf) { return subd_sub((subd_real)0, a, ovf); }
 
-/* Converts decimal text [*p, end) to the nearest subd_real using integer arithmetic only
- * (src/real_text.c), so a file gives identical bits on every target. Grammar, with no
+/* subd_real_parse: converts decimal text [*p, end) to the nearest subd_real using integer
+ * arithmetic only (src/real_text.c), so a file gives identical bits on every target. Grammar, with no
  * leading white space: [+-] digits [. digits] [(e|E) [+-] digits], where one of the two digit
  * runs may be empty (".5", "5."). The exponent is taken only when complete: "1e", "1e+" and
  * "1ex" read as 1 and stop before the 'e'; "0x10" reads as 0 and stops at the 'x'. Text that
@@ -152,22 +152,29 @@ static inline subd_real subd_neg(subd_real a, uint32_t *ovf) { return subd_sub((
  * smallest subnormal gives a zero of the text's sign. Q16.16: nearest multiple of 2^-16,
  * ties away from zero; "-0" gives 0. Decimal exponents of any size are accepted (clamped
  * internally, no overflow).
- * Returns SUBD_OK (*out set, *p just after the number), SUBD_ERR_PARAM (a NULL pointer),
- * SUBD_ERR_PARSE (no number at *p, including *p >= end), SUBD_ERR_NAN (nan/inf text) or
- * SUBD_ERR_RANGE (the rounded value does not fit: outside [-32768, 32768 - 2^-16] in
- * Q16.16, magnitude >= 2^128 after rounding in float32). On any error *p and *out are
- * unchanged. Stack: about 120 bytes; work O(length of the text). */
+ * Memory: no arena; stack about 120 bytes.
+ * Errors: SUBD_ERR_PARAM (a NULL pointer), SUBD_ERR_PARSE (no number at *p, including
+ *   *p >= end), SUBD_ERR_NAN (nan/inf text), SUBD_ERR_RANGE (the rounded value does not
+ *   fit: outside [-32768, 32768 - 2^-16] in Q16.16, magnitude >= 2^128 after rounding in
+ *   float32). On SUBD_OK *out is set and *p is just after the number; on any error *p and
+ *   *out are unchanged.
+ * Cost: O(length of the text). */
 int subd_real_parse(const char **p, const char *end, subd_real *out);
 
-/* Writes x as decimal text into buf (at least 24 bytes), without a terminator; returns the
- * number of characters. Float32: the shortest decimal that subd_real_parse (or any correct
+/* subd_real_format: writes x as decimal text into buf (at least 24 bytes), without a
+ * terminator; returns the number of characters.
+ * Memory: no arena; stack about 120 bytes (float).
+ * Errors: none (every value has a text; buf must hold 24 bytes).
+ * Cost: O(1): integer arithmetic only (float32: a shortest-digit search with 64-bit
+ *   tables; Q16.16: two digits per step).
+ * Notes: float32: the shortest decimal that subd_real_parse (or any correct
  * strtof) reads back to the same bits, at most 9 significant digits and 15 characters,
  * the nearest one when several are shortest (an exact tie: the larger magnitude); positional
  * when the decimal exponent of those
  * digits is -4..8, otherwise d.ddde+XX like printf's %g: "0.1", "-1.25", "100", "1e+30", "1.0000001e+30", "1e-45",
  * "-0". Non-finite values give "inf", "-inf", "nan" (which the parser rejects). Q16.16:
  * the exact value of x / 65536, up to 16 fraction digits, trailing zeros and point removed:
- * "3", "-0.5", "0.0000152587890625", at most 23 characters. Stack: about 120 bytes (float). */
+ * "3", "-0.5", "0.0000152587890625", at most 23 characters. */
 uint32_t subd_real_format(subd_real x, char *buf);
 
 /* subd_cos_turns, subd_sin_turns: deterministic cos and sin of the angle 2*pi*num/den

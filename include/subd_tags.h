@@ -51,9 +51,11 @@ typedef struct subd_tags_report {
     uint32_t edge[2];
 } subd_tags_report;
 
-/* Validates the tag file buf[0..len) against mesh m without changing anything, and counts
- * its tags into *report (may be NULL). Returns
- *   SUBD_OK              every line is a valid tag for m
+/* subd_tags_check: validates the tag file buf[0..len) against mesh m without changing
+ * anything, and counts its tags into *report (may be NULL).
+ * Memory: none (no arena; a few dozen bytes of stack).
+ * Cost: O(buffer length + sum over crease lines of the valences of their two vertices).
+ * Errors: SUBD_OK when every line is a valid tag for m, else the first failing line's:
  *   SUBD_ERR_PARAM       m NULL, or buf NULL with len > 0
  *   SUBD_ERR_PARSE       diag.line: not 'crease I J', 'corner I', 'fixed I', 'alpha I A'
  *                        or 'falpha F A' (unknown keyword, wrong number of fields, a field
@@ -65,21 +67,24 @@ typedef struct subd_tags_report {
  * The first failing line is reported. */
 int subd_tags_check(const char *buf, uint32_t len, const subd_mesh *m, subd_tags_report *report, subd_diag *diag);
 
-/* Checks the whole file as subd_tags_check does and, only when every line is valid, sets
- * the tag bits in m (existing tags are kept; tags are only ever added). Same returns; on
- * any failure m is unchanged. */
+/* subd_tags_apply: checks the whole file as subd_tags_check does and, only when every line
+ * is valid, sets the tag bits in m (existing tags are kept; tags are only ever added).
+ * Memory: none. Errors: as subd_tags_check; on any failure m is unchanged.
+ * Cost: two passes of subd_tags_check's cost. */
 int subd_tags_apply(const char *buf, uint32_t len, subd_mesh *m, subd_tags_report *report, subd_diag *diag);
 
-/* Checks the whole file as subd_tags_check does and, only when every line is valid and every
- * alpha value A is a whole number of 1/den turns (A * den an integer within
+/* subd_tags_alpha: checks the whole file as subd_tags_check does and, only when every line
+ * is valid and every alpha value A is a whole number of 1/den turns (A * den an integer within
  * +-SUBD_ALPHA_MAX_NUM), stores A * den for each 'alpha I A' line in vert_num[I-1] and for
  * each 'falpha F A' line in face_num[F-1] (num_verts and num_faces entries; either may be
  * NULL, then those lines are checked but not stored). Entries no line names keep their
  * values (fill them with the uniform alpha_num first). Mesh bits are not set (that is
- * subd_tags_apply). Same returns as subd_tags_check, plus SUBD_ERR_PARAM (den <= 0) and
- * SUBD_ERR_RANGE (diag.line: a value that is not a whole number of 1/den turns or out of
- * range; report->alpha_den is a den that avoids the first case). On any failure nothing is
- * stored. No memory; work O(buffer length). */
+ * subd_tags_apply).
+ * Memory: none.
+ * Errors: as subd_tags_check, plus SUBD_ERR_PARAM (den <= 0) and SUBD_ERR_RANGE (diag.line:
+ *   a value that is not a whole number of 1/den turns or out of range; report->alpha_den is
+ *   a den that avoids the first case). On any failure nothing is stored.
+ * Cost: O(buffer length) (two passes). */
 int subd_tags_alpha(const char *buf, uint32_t len, const subd_mesh *m, int32_t den, int32_t *vert_num,
                     int32_t *face_num, subd_tags_report *report, subd_diag *diag);
 

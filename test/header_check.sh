@@ -39,5 +39,6 @@ for h in "$dir"/*.h; do
     fi
 done
 n=$(grep -hcE '^[a-z][a-z0-9_ ]*[ *]subd_[a-z0-9_]+\(' "$dir"/*.h | awk '{s += $1} END {print s}')
-if [ $fails -ne 0 ]; then echo "FAIL header template: $fails problem(s)"; exit 1; fi
+if [ $fails -ne 0 ]; then echo "FAIL header template: $fails problem(s)"; echo "$((n - fails)) passed, $fails failed"; exit 1; fi
 echo "PASS header template: $n exported calls documented (Memory, Errors, Cost), no outside file named"
+echo "$n passed, 0 failed"

@@ -211,6 +211,7 @@ static void describe_command(const tool_run *r, char *buf, size_t n)
             ADD(" --alpha %ld/%ld", (long)o->alpha.alpha_num, (long)o->alpha.alpha_den);
     }
     if ((cmd->options & OPT_ADAPT) && (unsigned)o->adapt_mode < 6u) ADD(" %s", adapt[o->adapt_mode]);
+    if (o->tags) ADD(" --tags %s", base_name(o->tags)); /* tags change the result: say so */
 #undef ADD
 }
 

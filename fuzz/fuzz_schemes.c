@@ -4,13 +4,17 @@
  * The bytes choose a mesh (a template - tetrahedron, octahedron, grid, quad cube, fan, strip -
  * with perturbed positions, or a random face list that is often invalid), tags (creases,
  * corners, fixed vertices, reserved bits, crease angle) and the parameters of every scheme
- * (levels 1..3, boundary rule, flags, PIA, quasi 4-8, semi-regular 4-8 and an extraction,
- * alpha order / kernel / angle / stiffness), including out-of-range values. Each scheme runs
- * with an arena of exactly its plan, of plan - 1 and of a smaller size chosen by the input,
- * and fuzz_check.c's checks apply: known status; on failure arena mark, input mesh and input
- * bytes unchanged; on success peak <= plan, guard bytes intact, outputs validated. Also: an
- * arena of the plan never gives SUBD_ERR_NOMEM; the stream emits subd_loop's triangles bit
- * for bit and nothing stays in its arena.
+ * (levels 1..3, boundary rule, flags, PIA, quasi 4-8 with its three boundary modes, semi-
+ * regular 4-8 and an extraction, alpha order / kernel / angle / stiffness / tags: per point
+ * for curves, per vertex (odd order) or per face (even order) for surfaces), including
+ * out-of-range values. Each scheme runs with an arena of exactly its plan, of plan - 1 and
+ * of a smaller size chosen by the input, and fuzz_check.c's checks apply: known status; on
+ * failure arena mark, input mesh and input bytes unchanged; on success peak <= plan, guard
+ * bytes intact, outputs validated. Also: an arena of the plan never gives SUBD_ERR_NOMEM;
+ * the stream emits subd_loop's triangles bit for bit and nothing stays in its arena; PIA's
+ * per-phase result adds up (iterations, vertex sets, max error); quasi 4-8 keeps its bounds
+ * and input vertices, its normal mode gives the fixed mode's bits on a mesh in z = 0 and
+ * commutes with a 90-degree rotation about z; equal alpha tags give the untagged bits.
  *
  * FZ_AVOID_KNOWN (default 0) keeps the decoder away from bugs reported but not yet fixed; it
  * kept the cosh kernel's large angles out while their int64 overflow (issue 13) was open. */

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The OBJ/OFF reader checks (fuzz_obj.c, fuzz_off.c). The input is the file; bytes after
- * the first NUL byte, if any, are a tag file (include/subd_tags.h) applied to the mesh. */
+ * the first NUL byte, if any, are a tag file (include/subd_tags.h) applied to the mesh
+ * (subd_tags_check, subd_tags_apply, and subd_tags_alpha with several dens). */
 #include "fuzz_reader.h"
 
 #include <stdlib.h>
@@ -9,6 +10,77 @@
 typedef int (*plan_fn)(const char *, uint32_t, uint32_t *, subd_diag *);
 typedef int (*read_fn)(subd_arena *, const char *, uint32_t, subd_mesh *, subd_diag *);
 typedef int (*write_fn)(const subd_mesh *, char *, uint32_t, uint32_t *);
+
+/* subd_tags_alpha on the same text, after subd_tags_check gave st0 (line0) and rep0, with
+ * the report's common den (every value exact), 1, a fine one (3600000) and invalid ones:
+ * den <= 0 is SUBD_ERR_PARAM; else an invalid file gives check's failure (or SUBD_ERR_RANGE
+ * on an earlier line: values are converted while checking), a valid one SUBD_OK or
+ * SUBD_ERR_RANGE; diag.line names a failing line; NULL arrays give the same status; on
+ * failure nothing is stored; on success only named entries change (at most one per alpha /
+ * falpha line), within +-SUBD_ALPHA_MAX_NUM, and the counts are check's. The mesh is never
+ * changed (no tag bits). */
+static void alpha_run(const subd_mesh *m, const char *tags, uint32_t tlen, int st0, uint32_t line0,
+                      const subd_tags_report *rep0)
+{
+    static const int32_t dens[4] = {1, 3600000, 0, -7};
+    uint32_t nv = m->num_verts, nf = m->num_faces;
+    int32_t *vn = (int32_t *)malloc(((size_t)nv + 1u) * 4u), *fn = (int32_t *)malloc(((size_t)nf + 1u) * 4u);
+    int32_t *vn0 = (int32_t *)malloc(((size_t)nv + 1u) * 4u), *fn0 = (int32_t *)malloc(((size_t)nf + 1u) * 4u);
+    FZ_CHECK(vn && fn && vn0 && fn0, "malloc", nv, nf);
+    fz_snap sm;
+    fz_snap_take(&sm, m, sizeof *m);
+    for (uint32_t k = 0; k < 5u; k++) {
+        int32_t den = k == 0u ? (rep0->alpha_den > 0 ? rep0->alpha_den : 1) : dens[k - 1u];
+        for (uint32_t i = 0; i < nv; i++)
+            vn[i] = vn0[i] = (int32_t)(0x5A5A5A5Au ^ i * 2654435761u);
+        for (uint32_t i = 0; i < nf; i++)
+            fn[i] = fn0[i] = (int32_t)(0x3C3C3C3Cu ^ i * 2246822519u);
+        subd_tags_report rep;
+        subd_diag d;
+        int st = subd_tags_alpha(tags, tlen, m, den, vn, fn, &rep, &d);
+        fz_status_known(st, 0, "subd_tags_alpha");
+        fz_snap_check(&sm, "subd_tags_alpha mesh");
+        if (den <= 0)
+            FZ_CHECK(st == SUBD_ERR_PARAM, "subd_tags_alpha den <= 0", st, den);
+        else if (st0 != SUBD_OK)
+            FZ_CHECK(st == st0 ? d.line == line0 : st == SUBD_ERR_RANGE && d.line <= line0,
+                     "subd_tags_alpha = subd_tags_check on an invalid file", st, st0);
+        else
+            FZ_CHECK(st == SUBD_OK || st == SUBD_ERR_RANGE, "subd_tags_alpha on a valid file", st, d.line);
+        if (st == SUBD_ERR_RANGE || st == SUBD_ERR_PARSE || st == SUBD_ERR_INDEX)
+            FZ_CHECK(d.line > 0, "subd_tags_alpha: diag.line names the line", st, d.line);
+        subd_diag d2;
+        int st2 = subd_tags_alpha(tags, tlen, m, den, NULL, NULL, NULL, &d2);
+        FZ_CHECK(st2 == st, "subd_tags_alpha without arrays", st2, st);
+        if (st != SUBD_OK) {
+            FZ_CHECK(memcmp(vn, vn0, (size_t)nv * 4u) == 0 && memcmp(fn, fn0, (size_t)nf * 4u) == 0,
+                     "subd_tags_alpha: nothing stored on failure", st, d.line);
+            continue;
+        }
+        FZ_CHECK(rep.creases == rep0->creases && rep.vertex_tags == rep0->vertex_tags &&
+                     rep.vertex_alphas == rep0->vertex_alphas && rep.face_alphas == rep0->face_alphas &&
+                     rep.alpha_den == rep0->alpha_den,
+                 "subd_tags_alpha report = subd_tags_check report", rep.vertex_alphas, rep0->vertex_alphas);
+        uint32_t cv = 0, cf = 0;
+        for (uint32_t i = 0; i < nv; i++)
+            if (vn[i] != vn0[i]) {
+                cv++;
+                FZ_CHECK(vn[i] <= SUBD_ALPHA_MAX_NUM && vn[i] >= -SUBD_ALPHA_MAX_NUM, "vertex alpha range", i, vn[i]);
+            }
+        for (uint32_t i = 0; i < nf; i++)
+            if (fn[i] != fn0[i]) {
+                cf++;
+                FZ_CHECK(fn[i] <= SUBD_ALPHA_MAX_NUM && fn[i] >= -SUBD_ALPHA_MAX_NUM, "face alpha range", i, fn[i]);
+            }
+        FZ_CHECK(cv <= rep.vertex_alphas && cf <= rep.face_alphas, "subd_tags_alpha stores only named entries", cv,
+                 cf);
+    }
+    fz_snap_free(&sm);
+    free(vn);
+    free(fn);
+    free(vn0);
+    free(fn0);
+}
 
 static void tags_run(const subd_mesh *m0, const char *tags, uint32_t tlen)
 {
@@ -47,6 +119,7 @@ static void tags_run(const subd_mesh *m0, const char *tags, uint32_t tlen)
                 FZ_CHECK(et[c] == et[m.twin[c]], "edge tag on both half-edges", c, m.twin[c]);
         }
     }
+    alpha_run(&m, tags, tlen, st, d.line, &rep);
     fz_snap_free(&sv);
     fz_snap_free(&se);
     fz_snap_free(&sm);

@@ -4,13 +4,17 @@
  * The bytes choose a mesh (a template - tetrahedron, octahedron, grid, quad cube, fan, strip -
  * with perturbed positions, or a random face list that is often invalid), tags (creases,
  * corners, fixed vertices, reserved bits, crease angle) and the parameters of every scheme
- * (levels 1..3, boundary rule, flags, PIA, quasi 4-8, semi-regular 4-8 and an extraction,
- * alpha order / kernel / angle / stiffness), including out-of-range values. Each scheme runs
- * with an arena of exactly its plan, of plan - 1 and of a smaller size chosen by the input,
- * and fuzz_check.c's checks apply: known status; on failure arena mark, input mesh and input
- * bytes unchanged; on success peak <= plan, guard bytes intact, outputs validated. Also: an
- * arena of the plan never gives SUBD_ERR_NOMEM; the stream emits subd_loop's triangles bit
- * for bit and nothing stays in its arena.
+ * (levels 1..3, boundary rule, flags, PIA, quasi 4-8 with its three boundary modes, semi-
+ * regular 4-8 and an extraction, alpha order / kernel / angle / stiffness / tags: per point
+ * for curves, per vertex (odd order) or per face (even order) for surfaces), including
+ * out-of-range values. Each scheme runs with an arena of exactly its plan, of plan - 1 and
+ * of a smaller size chosen by the input, and fuzz_check.c's checks apply: known status; on
+ * failure arena mark, input mesh and input bytes unchanged; on success peak <= plan, guard
+ * bytes intact, outputs validated. Also: an arena of the plan never gives SUBD_ERR_NOMEM;
+ * the stream emits subd_loop's triangles bit for bit and nothing stays in its arena; PIA's
+ * per-phase result adds up (iterations, vertex sets, max error); quasi 4-8 keeps its bounds
+ * and input vertices, its normal mode gives the fixed mode's bits on a mesh in z = 0 and
+ * commutes with a 90-degree rotation about z; equal alpha tags give the untagged bits.
  *
  * FZ_AVOID_KNOWN (default 0) keeps the decoder away from bugs reported but not yet fixed; it
  * kept the cosh kernel's large angles out while their int64 overflow (issue 13) was open. */
@@ -202,6 +206,7 @@ static void decode_mesh(cur *c, decoded *m)
 
 /* ---------------------------------------------------------------- the input mesh */
 static subd_mesh g_in;
+static const subd_face_list *g_fl; /* g_in's face list */
 static fz_snap g_in_snap, g_desc_snap, g_data_snap;
 
 static void check_inputs(const char *call)
@@ -349,7 +354,32 @@ static void pia_ok(void *x, subd_arena *a, int first)
     pia_ctx *c = (pia_ctx *)x;
     (void)a, (void)first;
     fz_check_finite(c->pos, 3u * g_in.num_verts, "subd_pia pos");
-    FZ_CHECK(c->r.iterations <= c->o.max_iter, "subd_pia iterations", c->r.iterations, c->o.max_iter);
+    const subd_pia_result *r = &c->r;
+    FZ_CHECK(r->iterations <= c->o.max_iter, "subd_pia iterations", r->iterations, c->o.max_iter);
+    /* the per-phase result (subd_loop.h, subd_pia_phase): the phases' iterations add up;
+     * boundary = the SUBD_VTAG_BOUNDARY vertices, interior = every other vertex (counted
+     * here from the input's tags); each error is finite and >= 0, and the overall max is
+     * the max over the two sets; a closed mesh has an empty boundary phase */
+    FZ_CHECK(r->boundary.iterations + r->interior.iterations == r->iterations, "subd_pia phase iterations",
+             r->boundary.iterations, r->interior.iterations);
+    uint32_t nb = 0;
+    for (uint32_t v = 0; v < g_in.num_verts; v++)
+        nb += (g_in.vert_tag[v] & SUBD_VTAG_BOUNDARY) ? 1u : 0u;
+    FZ_CHECK(r->boundary.verts == nb, "subd_pia boundary verts", r->boundary.verts, nb);
+    FZ_CHECK(r->interior.verts == g_in.num_verts - nb, "subd_pia interior verts", r->interior.verts, g_in.num_verts);
+    const subd_real e[6] = {r->max_err, r->mean_err, r->boundary.max_err, r->boundary.mean_err,
+                            r->interior.max_err, r->interior.mean_err};
+    fz_check_finite(e, 6u, "subd_pia errors");
+    for (uint32_t k = 0; k < 6u; k++)
+        FZ_CHECK(e[k] >= 0, "subd_pia error >= 0", k, subd_real_bits(e[k]));
+    subd_real mx = r->boundary.max_err > r->interior.max_err ? r->boundary.max_err : r->interior.max_err;
+    FZ_CHECK(r->max_err == mx, "subd_pia max_err = max of the phases", subd_real_bits(r->max_err), subd_real_bits(mx));
+    FZ_CHECK(r->converged == (r->max_err <= c->o.tol), "subd_pia converged", r->converged, subd_real_bits(r->max_err));
+    if (nb == 0u)
+        FZ_CHECK(r->boundary.max_err == 0 && r->boundary.mean_err == 0, "subd_pia empty boundary errors", 0, 0);
+    if (g_in.num_boundary_edges == 0u)
+        FZ_CHECK(r->boundary.iterations == 0u && nb == 0u, "subd_pia closed: empty boundary phase",
+                 r->boundary.iterations, nb);
 }
 
 /* ---------------------------------------------------------------- quasi 4-8 */
@@ -362,11 +392,118 @@ static int q48_run(void *x, subd_arena *a, subd_diag *d)
     q48_ctx *c = (q48_ctx *)x;
     return subd_quasi48(a, &g_in, &c->o, &c->out, d);
 }
+/* -x does not fit (Q16.16 INT32_MIN; float32 negation is exact) */
+static int neg_overflows(subd_real x)
+{
+#if SUBD_FIXED
+    return x == INT32_MIN;
+#else
+    (void)x;
+    return 0;
+#endif
+}
+
+/* subd_quasi48 on `in` with c's options but boundary mode b, in an arena of its plan; the
+ * output is copied to malloc'd arrays (*pos, *cv; free them) and the status returned. */
+static int q48_again(const q48_ctx *c, const subd_mesh *in, subd_q48_boundary b, subd_mesh *out, subd_real **pos,
+                     uint32_t **cv)
+{
+    subd_q48_opts o = c->o;
+    o.boundary = b;
+    uint32_t plan = 0;
+    int st = subd_quasi48_plan(in, &o, &plan);
+    FZ_CHECK(st == SUBD_OK, "subd_quasi48_plan (again)", st, b);
+    fz_arena fa;
+    fz_arena_open(&fa, plan);
+    subd_diag d;
+    st = subd_quasi48(&fa.a, in, &o, out, &d);
+    fz_status_known(st, 0, "subd_quasi48 (again)");
+    fz_arena_after(&fa, st, 0, plan, "subd_quasi48 (again)");
+    *pos = NULL, *cv = NULL;
+    if (st == SUBD_OK) {
+        *pos = (subd_real *)malloc((size_t)out->num_verts * 3u * sizeof(subd_real) + 1u);
+        *cv = (uint32_t *)malloc((size_t)out->num_corners * 4u + 1u);
+        FZ_CHECK(*pos != NULL && *cv != NULL, "malloc", 0, 0);
+        memcpy(*pos, out->pos, (size_t)out->num_verts * 3u * sizeof(subd_real));
+        memcpy(*cv, out->corner_vert, (size_t)out->num_corners * 4u);
+        out->pos = NULL, out->corner_vert = NULL; /* in the closed arena */
+    }
+    fz_arena_close(&fa);
+    return st;
+}
+
 static void q48_ok(void *x, subd_arena *a, int first)
 {
     q48_ctx *c = (q48_ctx *)x;
-    (void)a, (void)first;
-    fz_validate_mesh(&c->out, 1, "subd_quasi48 output");
+    const subd_mesh *o = &c->out;
+    (void)a;
+    fz_validate_mesh(o, 1, "subd_quasi48 output");
+    /* the bounds of subd_quasi48.h; vertex i of the input is vertex i of the output, and
+     * without smoothing nothing moves */
+    FZ_CHECK(o->num_faces <= SUBD_Q48_MAX_FACES(g_in.num_faces, c->o.steps), "quasi48 face bound", o->num_faces, 0);
+    FZ_CHECK(o->num_verts <= SUBD_Q48_MAX_VERTS(g_in.num_verts, g_in.num_faces, c->o.steps), "quasi48 vertex bound",
+             o->num_verts, 0);
+    FZ_CHECK(o->num_verts >= g_in.num_verts, "quasi48 keeps the input vertices", o->num_verts, g_in.num_verts);
+    if (c->o.flags & SUBD_Q48_NO_SMOOTH)
+        FZ_CHECK(memcmp(o->pos, g_in.pos, (size_t)g_in.num_verts * 3u * sizeof(subd_real)) == 0,
+                 "quasi48 NO_SMOOTH keeps the input positions", 0, 0);
+    if (!first || c->o.boundary != SUBD_Q48_BOUNDARY_NORMAL)
+        return;
+    subd_mesh o2;
+    subd_real *pos2;
+    uint32_t *cv2;
+    /* normal mode: a planar mesh in z = 0 gives bit for bit the FIXED result */
+    int planar = 1;
+    for (uint32_t v = 0; v < g_in.num_verts; v++)
+        planar &= subd_real_bits(g_in.pos[3u * v + 2u]) == 0u;
+    if (planar && !(c->o.flags & SUBD_Q48_NO_SMOOTH)) {
+        int st = q48_again(c, &g_in, SUBD_Q48_BOUNDARY_FIXED, &o2, &pos2, &cv2);
+        FZ_CHECK(st == SUBD_OK, "quasi48 planar: FIXED succeeds too", st, 0);
+        FZ_CHECK(o2.num_verts == o->num_verts && o2.num_corners == o->num_corners, "quasi48 planar counts",
+                 o2.num_verts, o->num_verts);
+        FZ_CHECK(memcmp(cv2, o->corner_vert, (size_t)o->num_corners * 4u) == 0, "quasi48 planar faces", 0, 0);
+        FZ_CHECK(memcmp(pos2, o->pos, (size_t)o->num_verts * 3u * sizeof(subd_real)) == 0,
+                 "quasi48 planar NORMAL = FIXED bit for bit", 0, 0);
+        free(pos2);
+        free(cv2);
+    }
+    /* normal mode: a rotation by 90 degrees about z, (x, y) -> (-y, x), maps the output (the
+     * same faces, rotated positions; compared as values: -0 == +0) */
+    for (uint32_t i = 0; i < 3u * g_in.num_verts; i++)
+        if (!subd_real_is_finite(g_in.pos[i]) || neg_overflows(g_in.pos[i]))
+            return;
+    static subd_real rp[3 * MAXV];
+    for (uint32_t v = 0; v < g_in.num_verts; v++) {
+        rp[3u * v] = -g_in.pos[3u * v + 1u];
+        rp[3u * v + 1u] = g_in.pos[3u * v];
+        rp[3u * v + 2u] = g_in.pos[3u * v + 2u];
+    }
+    subd_face_list fl = *g_fl;
+    fl.pos = rp;
+    uint32_t plan = 0;
+    FZ_CHECK(subd_mesh_plan(&fl, &plan) == SUBD_OK, "quasi48 rotated plan", 0, 0);
+    fz_arena fa;
+    fz_arena_open(&fa, plan);
+    subd_mesh rin;
+    subd_diag d;
+    int st = subd_mesh_build(&fa.a, &fl, &rin, &d);
+    FZ_CHECK(st == SUBD_OK, "quasi48 rotated input builds", st, 0);
+    FZ_CHECK(rin.num_corners == g_in.num_corners && rin.num_verts == g_in.num_verts, "rotated counts", 0, 0);
+    memcpy(rin.vert_tag, g_in.vert_tag, g_in.num_verts); /* the same tags (crease angle: geometric) */
+    memcpy(rin.edge_tag, g_in.edge_tag, g_in.num_corners);
+    st = q48_again(c, &rin, SUBD_Q48_BOUNDARY_NORMAL, &o2, &pos2, &cv2);
+    FZ_CHECK(st == SUBD_OK, "quasi48 rotated: succeeds too", st, 0);
+    FZ_CHECK(o2.num_verts == o->num_verts && o2.num_corners == o->num_corners, "quasi48 rotated counts",
+             o2.num_verts, o->num_verts);
+    FZ_CHECK(memcmp(cv2, o->corner_vert, (size_t)o->num_corners * 4u) == 0, "quasi48 rotated faces", 0, 0);
+    for (uint32_t v = 0; v < o->num_verts; v++) {
+        const subd_real *p = o->pos + 3u * v, *q = pos2 + 3u * v;
+        FZ_CHECK(q[0] == -p[1] && q[1] == p[0] && q[2] == p[2], "quasi48 NORMAL: rotation about z", v,
+                 subd_real_bits(q[0]) ^ subd_real_bits(-p[1]));
+    }
+    free(pos2);
+    free(cv2);
+    fz_arena_close(&fa);
 }
 
 /* ---------------------------------------------------------------- semi-regular 4-8 */
@@ -428,9 +565,15 @@ static void sr48_ok(void *x, subd_arena *a, int first)
 }
 
 /* ---------------------------------------------------------------- alpha */
+/* Tags of the alpha calls (subd_alpha_opts.tag_num): curves one per point, surfaces one per
+ * vertex (odd order) or per face (even order). Static, bounded by the decoded mesh. */
+#define MAXT (MAXV > MAXF ? MAXV : MAXF)
+static int32_t g_ctags[MAXT], g_stags[MAXT];
+
 typedef struct curve_ctx {
     uint32_t m;
     int closed;
+    int uniform; /* every tag equal: the result must be the untagged one with that alpha */
     subd_alpha_opts o;
     uint32_t points;
     subd_alpha_curve_out out;
@@ -443,13 +586,33 @@ static int curve_run(void *x, subd_arena *a, subd_diag *d)
 static void curve_ok(void *x, subd_arena *a, int first)
 {
     curve_ctx *c = (curve_ctx *)x;
-    (void)a, (void)first;
+    (void)a;
     FZ_CHECK(c->out.num_points == c->points, "alpha curve points", c->out.num_points, c->points);
     fz_check_finite(c->out.pos, 3u * c->out.num_points, "alpha curve pos");
+    if (!first || !c->uniform)
+        return;
+    /* "Equal tags give exactly the uniform result" (subd_alpha.h) */
+    curve_ctx u = *c;
+    u.o.tag_num = NULL;
+    u.o.alpha_num = c->o.tag_num[0];
+    uint32_t plan = 0, pts = 0;
+    int st = subd_alpha_curve_plan(u.m, u.closed, &u.o, &plan, &pts);
+    FZ_CHECK(st == SUBD_OK && pts == c->points, "alpha curve untagged plan", st, pts);
+    fz_arena fa;
+    fz_arena_open(&fa, plan);
+    subd_diag d;
+    st = subd_alpha_curve(&fa.a, g_in.pos, u.m, u.closed, &u.o, &u.out, &d);
+    FZ_CHECK(st == SUBD_OK, "alpha curve: equal tags ok -> untagged ok", st, u.o.alpha_num);
+    FZ_CHECK(u.out.num_points == c->out.num_points && u.out.continuity == c->out.continuity,
+             "alpha curve equal tags: counts", u.out.num_points, c->out.num_points);
+    FZ_CHECK(memcmp(u.out.pos, c->out.pos, (size_t)c->out.num_points * 3u * sizeof(subd_real)) == 0,
+             "alpha curve: equal tags = untagged bit for bit", c->out.num_points, u.o.alpha_num);
+    fz_arena_close(&fa);
 }
 
 typedef struct surf_ctx {
     subd_alpha_opts o;
+    int uniform;
     subd_mesh out;
     subd_alpha_surface_info info;
 } surf_ctx;
@@ -461,13 +624,41 @@ static int surf_run(void *x, subd_arena *a, subd_diag *d)
 static void surf_ok(void *x, subd_arena *a, int first)
 {
     surf_ctx *c = (surf_ctx *)x;
-    (void)a, (void)first;
+    (void)a;
     fz_validate_mesh(&c->out, 1, "subd_alpha_surface output");
+    if (!first || !c->uniform)
+        return;
+    /* "equal tags reproduce the untagged result bit for bit" (subd_alpha.h) */
+    surf_ctx u = *c;
+    u.o.tag_num = NULL;
+    u.o.alpha_num = c->o.tag_num[0];
+    uint32_t plan = 0;
+    int st = subd_alpha_surface_plan(&g_in, &u.o, &plan);
+    FZ_CHECK(st == SUBD_OK, "alpha surface untagged plan", st, 0);
+    fz_arena fa;
+    fz_arena_open(&fa, plan);
+    subd_diag d;
+    st = subd_alpha_surface(&fa.a, &g_in, &u.o, &u.out, &u.info, &d);
+    FZ_CHECK(st == SUBD_OK, "alpha surface: equal tags ok -> untagged ok", st, u.o.alpha_num);
+    const subd_mesh *p = &c->out, *q = &u.out;
+    FZ_CHECK(q->num_verts == p->num_verts && q->num_faces == p->num_faces && q->num_corners == p->num_corners &&
+                 u.info.continuity == c->info.continuity,
+             "alpha surface equal tags: counts", q->num_corners, p->num_corners);
+    FZ_CHECK(memcmp(q->face_start, p->face_start, ((size_t)p->num_faces + 1u) * 4u) == 0 &&
+                 memcmp(q->corner_vert, p->corner_vert, (size_t)p->num_corners * 4u) == 0,
+             "alpha surface equal tags: faces", 0, 0);
+    FZ_CHECK(memcmp(q->pos, p->pos, (size_t)p->num_verts * 3u * sizeof(subd_real)) == 0,
+             "alpha surface: equal tags = untagged bit for bit", p->num_verts, u.o.alpha_num);
+    fz_arena_close(&fa);
 }
 
-static void alpha_params(cur *c, subd_alpha_opts *o, int32_t *tags, uint32_t ntags)
+/* The options; tags (one per vertex for odd order, nt_even for even order) with
+ * probability 1/4: small numerators, sometimes all equal (*uniform), sometimes one at or
+ * beyond +-SUBD_ALPHA_MAX_NUM (the error path). */
+static void alpha_params(cur *c, subd_alpha_opts *o, int32_t *tags, uint32_t nt_odd, uint32_t nt_even, int *uniform)
 {
     subd_alpha_opts_default(o);
+    *uniform = 0;
     uint8_t b = u8(c);
     o->order = 2u + b % 8u;
     if (b >= 248u)
@@ -497,9 +688,25 @@ static void alpha_params(cur *c, subd_alpha_opts *o, int32_t *tags, uint32_t nta
 #else
     o->stiffness = (float)s / 32.0f;
 #endif
-    if (u8(c) < 64u && ntags) {
+    uint8_t tm = u8(c);
+    uint32_t ntags = (o->order & 1u) ? nt_odd : nt_even;
+    if (tm < 64u && ntags) {
         for (uint32_t i = 0; i < ntags; i++)
             tags[i] = s8(c);
+        if (tm < 8u || tm >= 56u) { /* all equal: alpha_num or the first tag */
+            int32_t t = tm < 8u ? o->alpha_num : tags[0];
+            for (uint32_t i = 0; i < ntags; i++)
+                tags[i] = t;
+            *uniform = 1;
+        } else if (tm < 16u) { /* one extreme tag: valid at +-MAX_NUM, invalid beyond */
+            static const int32_t ex[6] = {SUBD_ALPHA_MAX_NUM, -SUBD_ALPHA_MAX_NUM, SUBD_ALPHA_MAX_NUM + 1,
+                                          -SUBD_ALPHA_MAX_NUM - 1, INT32_MAX, INT32_MIN};
+            uint8_t w = u8(c);
+            tags[w % ntags] = ex[(w >> 5) % 6u];
+        } else if (tm < 24u) { /* large tags: big angles (cosh/poly overflow) */
+            for (uint32_t i = 0; i < ntags; i++)
+                tags[i] *= (int32_t)1 << ((tm & 7u) * 3u);
+        }
         o->tag_num = tags;
     }
 }
@@ -520,6 +727,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     fl.num_faces = dm.nf;
     fl.face_size = dm.fsize;
     fl.index = dm.idx;
+    g_fl = &fl;
 
     /* the builder itself, with arenas of plan, plan - 1 and smaller */
     uint32_t plan = 0;
@@ -659,7 +867,8 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     q48_ctx qc;
     memset(&qc, 0, sizeof qc);
     qc.o.steps = u8(&c) % 5u;
-    qc.o.boundary = (subd_q48_boundary)(u8(&c) % 3u);
+    uint8_t qb = u8(&c); /* all three modes (FIXED, SMOOTH, NORMAL) and invalid ones */
+    qc.o.boundary = (subd_q48_boundary)(qb < 250u ? qb % 3u : qb & 1u ? 3u : 0x7fffffffu);
     qc.o.flags = u8(&c) % 3u;
     qc.o.len_bits = u8(&c) % 56u;
     st = subd_quasi48_plan(&g_in, &qc.o, &plan);
@@ -717,10 +926,9 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     /* alpha curve through the first m vertices */
     curve_ctx cc;
     memset(&cc, 0, sizeof cc);
-    int32_t ctags[MAXV];
     cc.m = u8(&c) % (g_in.num_verts + 1u);
     cc.closed = u8(&c) & 1u;
-    alpha_params(&c, &cc.o, ctags, cc.m);
+    alpha_params(&c, &cc.o, g_ctags, cc.m, cc.m, &cc.uniform);
     st = subd_alpha_curve_plan(cc.m, cc.closed, &cc.o, &plan, &cc.points);
     fz_status_known(st, 0, "subd_alpha_curve_plan");
     if (st == SUBD_OK)
@@ -729,8 +937,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     /* alpha surface */
     surf_ctx uc;
     memset(&uc, 0, sizeof uc);
-    int32_t stags[MAXV];
-    alpha_params(&c, &uc.o, stags, g_in.num_verts);
+    alpha_params(&c, &uc.o, g_stags, g_in.num_verts, g_in.num_faces, &uc.uniform);
     if (uc.o.levels == 0u && (u8(&c) & 1u))
         uc.o.levels = 1u;
     if (uc.o.order > 4u && uc.o.levels > 1u && uc.o.order <= SUBD_ALPHA_MAX_ORDER)

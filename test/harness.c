@@ -54,6 +54,22 @@ int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
     return CHECK_OK(st, &d);
 }
 
+int h_tetra_no_adjacency(subd_arena *a, subd_mesh *m, subd_mesh *noadj)
+{
+    static const uint32_t idx[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
+    static subd_real pos[12];
+    subd_face_list fl = {4, 0, 4, 0, idx, 0, 0, 0};
+    subd_loop_opts lo = {1, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    subd_diag d;
+    uint32_t k;
+    for (k = 0; k < 12u; k++) pos[k] = h_int((int32_t)((k * 7u) % 5u));
+    pos[0] = h_int(9);
+    fl.pos = pos;
+    if (!h_build(a, &fl, m)) return 0;
+    if (!CHECK_EQ(subd_loop(a, m, &lo, noadj, &d), SUBD_OK)) return 0;
+    return CHECK(noadj->twin == 0 && noadj->vert_out == 0);
+}
+
 subd_face_list h_torus(uint32_t n, uint32_t m, subd_real *pos, uint32_t *idx)
 {
     subd_face_list fl;

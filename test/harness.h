@@ -59,6 +59,10 @@ static inline double h_dbl(subd_real x) { return SUBD_FIXED ? (double)x / 65536.
 
 /* subd_mesh_build of a face list that must succeed (a failed CHECK otherwise). */
 int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m);
+/* A small tetrahedron built in a (*m, full adjacency) and its level-1 Loop output made without
+ * SUBD_LOOP_ADJACENCY (*noadj: twin and vert_out NULL), the library's own mesh that every call
+ * must refuse or handle without dereferencing the missing arrays. 1, or 0 after a failed CHECK. */
+int h_tetra_no_adjacency(subd_arena *a, subd_mesh *m, subd_mesh *noadj);
 
 /* Torus of n x m quads (R = 1, r = 0.4) cut by the diagonals a-c: a closed genus-1 triangle
  * mesh in pos (3 n m reals) and idx (6 n m indices). CHECKs that the coordinates fit. */

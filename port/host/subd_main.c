@@ -231,7 +231,6 @@ static int read_overlay(tool_run *r)
     host_mesh *h = &r->overlay;
     render_mesh *rm = &r->overlay_rm;
     subd_diag d;
-    uint32_t i;
     int st = host_read_mesh(r->o.with_input, NULL, h, &d, NULL);
     if (st == HOST_ERR_IO) {
         tool_error("cannot read '%s': %s", r->o.with_input, host_read_error_str(h->read_rc));
@@ -239,18 +238,7 @@ static int read_overlay(tool_run *r)
     }
     if (st == HOST_ERR_OOM) return tool_out_of_memory();
     if (st != SUBD_OK) return library_error(r->o.with_input, st, &d, 0, 0);
-    r->overlay_pos = (double *)malloc(3u * (size_t)h->mesh.num_verts * sizeof(double) + 1u);
-    if (!r->overlay_pos) return tool_out_of_memory();
-    for (i = 0; i < 3u * h->mesh.num_verts; i++) r->overlay_pos[i] = host_real_to_double(h->mesh.pos[i]);
-    memset(rm, 0, sizeof *rm);
-    rm->num_verts = h->mesh.num_verts;
-    rm->pos = r->overlay_pos;
-    rm->num_faces = h->mesh.num_faces;
-    rm->face_start = h->mesh.face_start;
-    rm->corner_vert = h->mesh.corner_vert;
-    rm->num_lines = h->mesh.num_lines;
-    rm->line_start = h->mesh.line_start;
-    rm->line_vert = h->mesh.line_vert;
+    if (tool_render_view(&h->mesh, rm, &r->overlay_pos) != 0) return tool_out_of_memory();
     r->o.ropt.input = rm;
     return EXIT_OK;
 }

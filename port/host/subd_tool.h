@@ -159,6 +159,10 @@ int tool_usage_error(const char *fmt, ...);
 /* Reports and output (subd_info.c, subd_write.c). Each returns an EXIT_* status. */
 int tool_info_report(FILE *f, const tool_run *r);
 int tool_write_output(tool_run *r);
+/* The renderer's view of m: its topology shared, its positions as doubles in *pos (malloc'd,
+ * the caller frees it after rendering). 0, or -1 when out of memory (*pos NULL). One home for
+ * the result picture and the --with-input overlay. */
+int tool_render_view(const subd_mesh *m, render_mesh *rm, double **pos);
 void tool_print_stats(FILE *f, const tool_run *r);
 
 /* loop --stream (subd_stream.c): streams the input into the sink OUTPUT's format needs (or a

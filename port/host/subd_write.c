@@ -18,26 +18,34 @@ static int write_failed(const char *path)
     return EXIT_OUTPUT;
 }
 
+int tool_render_view(const subd_mesh *m, render_mesh *rm, double **pos)
+{
+    uint32_t i;
+    double *p = (double *)malloc(3u * (size_t)m->num_verts * sizeof *p + 1u);
+    *pos = p;
+    if (!p) return -1;
+    for (i = 0; i < 3u * m->num_verts; i++) p[i] = host_real_to_double(m->pos[i]);
+    memset(rm, 0, sizeof *rm);
+    rm->num_verts = m->num_verts;
+    rm->pos = p;
+    rm->num_faces = m->num_faces;
+    rm->face_start = m->face_start;
+    rm->corner_vert = m->corner_vert;
+    rm->num_lines = m->num_lines;
+    rm->line_start = m->line_start;
+    rm->line_vert = m->line_vert;
+    return 0;
+}
+
 static int write_png(tool_run *r)
 {
-    const subd_mesh *m = &r->out;
     render_mesh rm;
     double *pos;
     uint8_t *rgb = NULL, *png = NULL;
-    uint32_t i, len = 0;
+    uint32_t len = 0;
     int w = 0, h = 0, rc;
 
-    pos = (double *)malloc(3u * (size_t)m->num_verts * sizeof *pos + 1u);
-    if (!pos) return tool_out_of_memory();
-    for (i = 0; i < 3u * m->num_verts; i++) pos[i] = host_real_to_double(m->pos[i]);
-    rm.num_verts = m->num_verts;
-    rm.pos = pos;
-    rm.num_faces = m->num_faces;
-    rm.face_start = m->face_start;
-    rm.corner_vert = m->corner_vert;
-    rm.num_lines = m->num_lines;
-    rm.line_start = m->line_start;
-    rm.line_vert = m->line_vert;
+    if (tool_render_view(&r->out, &rm, &pos) != 0) return tool_out_of_memory();
     rc = render_rgb(&rm, &r->o.ropt, &rgb, &w, &h);
     free(pos);
     if (rc != 0) return tool_out_of_memory();

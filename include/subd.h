@@ -360,6 +360,99 @@ int subd_obj_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len);
 
+/* ------------------------------------------------------------------------------------ */
+/* Streams: one interface for every scheme.                                               */
+/*                                                                                        */
+/* A stream hands a scheme's output to the caller piece by piece instead of storing it, in */
+/* an arena whose size depends on the level count, the largest valence and the mode only,  */
+/* never on the mesh or the output. Surfaces stream triangles (subd_tri), curves points    */
+/* (subd_point). Every stream has two forms:                                              */
+/*  - pull: subd_X_stream_begin(arena, in, opts, &s, diag) puts the stream's state in the  */
+/*    arena (its plan, subd_X_stream_plan, includes it), then subd_stream_next_tris /      */
+/*    subd_stream_next_points fill a caller buffer with up to `max` items per call, with   */
+/*    bounded work per call (a controller's main loop interleaves them with its real-time */
+/*    work), and subd_stream_end gives the arena back. Pulling in batches of any size gives */
+/*    the same items in the same order with the same bits as one push call.               */
+/*  - push: subd_X_stream(arena, in, opts, sink, diag) = begin, next until the end with    */
+/*    every item handed to the sink, end (subd_stream_run_tris / _points).                */
+/* Ids are closed-form 64-bit global vertex ids: every item that uses a vertex gives it    */
+/* the same id and the same bits (no cracks); each scheme's header gives its formula.     */
+
+/* One triangle of a surface stream. */
+typedef struct subd_tri {
+    subd_real pos[3][3];    /* corner positions, counter-clockwise as the input's faces   */
+    subd_real normal[3][3]; /* unit normals where the stream gives them, else zeros        */
+    uint64_t id[3];         /* global vertex ids (see the scheme's header)                 */
+    uint32_t face;          /* the control (base mesh) face it comes from                  */
+    uint32_t level;         /* its refinement level, in the scheme's steps                 */
+} subd_tri;
+
+/* One point of a curve stream. */
+typedef struct subd_point {
+    subd_real pos[3];
+    subd_real tangent[3]; /* unit tangent where the stream gives it, else zeros            */
+    uint64_t id;          /* global point id (see the scheme's header)                      */
+    uint32_t curve;       /* the control polygon it comes from                              */
+    uint32_t level;       /* its refinement level                                           */
+} subd_point;
+
+/* Sinks: the caller's consumers of the push form. The item is valid only during the call.
+ * A non-zero return stops the stream at once and the push call returns that value
+ * unchanged (use positive values to tell them from the library's negative statuses). */
+typedef struct subd_tri_sink {
+    int (*tri)(void *ctx, const subd_tri *t);
+    void *ctx;
+} subd_tri_sink;
+typedef struct subd_point_sink {
+    int (*point)(void *ctx, const subd_point *p);
+    void *ctx;
+} subd_point_sink;
+
+/* Every stream's state starts with a fixed block of this many arena bytes (the run state:
+ * where the walk is, the scheme's options, the overflow ring's bookkeeping), the same on
+ * every target; the plans and SUBD_X_STREAM_BYTES macros include it. */
+#define SUBD_STREAM_STATE_BYTES 512u
+
+/* A pull stream's handle, owned by the caller (its state lives in the arena). Fields ending
+ * in _ are private; diag holds the details of the last failure (status, face, ...). */
+#define SUBD_STREAM_TRIS 1u
+#define SUBD_STREAM_POINTS 2u
+typedef struct subd_stream {
+    uint32_t magic_;  /* set by a begin call                                           */
+    void *state_;
+    subd_arena *arena_;
+    uint32_t mark_;
+    int32_t status_;  /* SUBD_OK while running, 1 after the end, < 0 after a failure */
+    uint32_t kind_;   /* SUBD_STREAM_TRIS or SUBD_STREAM_POINTS                       */
+    uint32_t items_;  /* items handed out so far (saturates at UINT32_MAX)             */
+    subd_diag diag;
+} subd_stream;
+
+/* subd_stream_next_tris, subd_stream_next_points: the next up to `max` items of a stream
+ * into buf[0..max); returns how many (1..max), 0 at the end of the stream, or a negative
+ * status (then s->diag has the details, and every later call returns the same status).
+ * At the end or on a failure the stream's arena is given back (as subd_stream_end).
+ * Memory: none beyond the stream's own (already in the arena). Stack: the scheme's step.
+ * Errors: SUBD_ERR_PARAM (NULL s or buf, max = 0, a stream of the other kind, a handle no
+ *   begin call filled), SUBD_ERR_RANGE (a position overflowed), the scheme's own.
+ * Cost: bounded per call: `max` items plus at most one internal batch of the scheme (its
+ *   header says how many items a batch holds). */
+int subd_stream_next_tris(subd_stream *s, subd_tri *buf, uint32_t max);
+int subd_stream_next_points(subd_stream *s, subd_point *buf, uint32_t max);
+
+/* subd_stream_end: stops the stream (any time) and rewinds its arena to where it was
+ * before the begin call. Idempotent.
+ * Memory: gives the stream's bytes back. Errors: none (NULL is ignored). Cost: O(1). */
+void subd_stream_end(subd_stream *s);
+
+/* subd_stream_run_tris, subd_stream_run_points: the push form over a begun stream: every
+ * remaining item to the sink, then subd_stream_end. Returns SUBD_OK, a negative status
+ * (diag: its details) or the sink's non-zero value unchanged.
+ * Memory: none beyond the stream's. Errors: SUBD_ERR_PARAM (NULL s, sink or its
+ *   function), the stream's own. Cost: the stream's. */
+int subd_stream_run_tris(subd_stream *s, const subd_tri_sink *sink, subd_diag *diag);
+int subd_stream_run_points(subd_stream *s, const subd_point_sink *sink, subd_diag *diag);
+
 #ifdef __cplusplus
 }
 #endif

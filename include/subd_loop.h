@@ -116,21 +116,13 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
 /* ------------------------------------------------------------------------------------ */
 /* Streaming Loop: any level in memory independent of the mesh and the output             */
 
-/* One output triangle: for each corner (in subd_loop's corner order) its position, its
- * global vertex id and, with SUBD_LOOP_STREAM_LIMIT, its unit limit normal (else zeros). */
-typedef struct subd_loop_tri {
-    subd_real pos[3][3];
-    subd_real normal[3][3];
-    uint64_t id[3];
-} subd_loop_tri;
-
-/* The caller's consumer. tri is called once per triangle; the triangle is valid only during
- * the call. A non-zero return stops the stream at once: subd_loop_stream returns that value
- * unchanged (use positive values to tell them from the library's negative statuses). */
-typedef struct subd_loop_sink {
-    int (*tri)(void *ctx, const subd_loop_tri *t);
-    void *ctx;
-} subd_loop_sink;
+/* The stream's triangles and sink are the common ones of subd.h ("Streams"): subd_tri
+ * (for each corner, in subd_loop's corner order, its position, its global vertex id and,
+ * with SUBD_LOOP_STREAM_LIMIT, its unit limit normal, else zeros; face: the control face;
+ * level: o->levels) and subd_tri_sink. The names below are the 0.3 ones, kept as aliases
+ * (deprecated, until 1.0). */
+typedef subd_tri subd_loop_tri;
+typedef subd_tri_sink subd_loop_sink;
 
 /* subd_loop_opts.flags for the stream (SUBD_LOOP_ADJACENCY does not apply) */
 #define SUBD_LOOP_STREAM_LIMIT 0x2u /* emit limit positions and unit limit normals */

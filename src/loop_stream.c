@@ -226,6 +226,8 @@ static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint64_t
         }
         t.id[j] = id[j];
     }
+    t.face = r->f;
+    t.level = r->o->levels;
     return r->sink->tri(r->sink->ctx, &t);
 }
 
@@ -417,6 +419,8 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
         t.id[j] = vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
     }
     if (*ovf) return SUBD_ERR_RANGE;
+    t.face = r->f;
+    t.level = r->o->levels;
     return r->sink->tri(r->sink->ctx, &t);
 }
 

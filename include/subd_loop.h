@@ -127,8 +127,8 @@ typedef subd_tri_sink subd_loop_sink;
 /* subd_loop_opts.flags for the stream (SUBD_LOOP_ADJACENCY does not apply) */
 #define SUBD_LOOP_STREAM_LIMIT 0x2u /* emit limit positions and unit limit normals */
 
-/* subd_loop_stream_plan: the exact arena bytes subd_loop_stream needs, in *bytes: a
- * function of the level count, the largest valence of the input (neighbours per vertex, at
+/* subd_loop_stream_plan: the exact arena bytes subd_loop_stream and subd_loop_stream_begin
+ * need, in *bytes: a function of the level count, the largest valence of the input (neighbours per vertex, at
  * least 6 is assumed) and the LIMIT flag only, never of the number of faces.
  * Memory: no arena use; SUBD_LOOP_STREAM_BYTES(_LIMIT) gives the same number at compile time.
  * Errors: SUBD_ERR_PARAM (as subd_loop_plan, and SUBD_LOOP_ADJACENCY, which does not apply
@@ -142,9 +142,11 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
 
 /* subd_loop_stream: `levels` steps of Loop subdivision of `in`, exactly as subd_loop
  * computes them, handed to sink->tri one triangle at a time instead of stored.
- * Memory: exactly subd_loop_stream_plan's bytes at the peak, independent of the mesh; the
- *   arena holds one control face's 1-ring per level, refined depth first (an explicit stack,
- *   no recursion); nothing stays in it after the call. Stack (Cortex-M, -fstack-usage,
+ * Memory: exactly subd_loop_stream_plan's bytes at the peak, independent of the mesh: the
+ *   run state (SUBD_STREAM_STATE_BYTES), the overflow ring of one batch (16 triangles; one
+ *   level: 4; limit mode: 1; 104 bytes each), and one control face's 1-ring per level,
+ *   refined depth first (an explicit stack, no recursion); nothing stays in it after the
+ *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
  *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.
  * Errors: as subd_loop_stream_plan (SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES,
@@ -172,8 +174,25 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  * (C - E)(N - 1) ids are unused (a host that wants dense indices numbers edges itself).
  * With SUBD_LOOP_STREAM_LIMIT each corner is moved to its limit position and gets its unit
  * limit normal, as subd_loop_limit of subd_loop's level-L output. */
-int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
+int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_tri_sink *sink,
                      subd_diag *d);
+
+/* subd_loop_stream_begin: the pull form of subd_loop_stream (subd.h "Streams"): checks
+ * everything subd_loop_stream checks, puts the stream's state in the arena and fills *s;
+ * then subd_stream_next_tris(s, buf, max) hands out the same triangles in the same order
+ * with the same bits as the push form, in batches of the caller's size, and
+ * subd_stream_end(s) (or the end of the stream, or a failure) gives the arena back.
+ * Memory: subd_loop_stream_plan's bytes, taken here and kept until the end; the arena must
+ *   not be used for anything else meanwhile.
+ * Errors: those subd_loop_stream reports before it emits anything (SUBD_ERR_PARAM,
+ *   SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG, SUBD_ERR_NOMEM with diag.bytes_needed); on
+ *   failure the arena and *s are untouched. Later, subd_stream_next_tris returns
+ *   SUBD_ERR_RANGE (s->diag.face: the control face) as subd_loop_stream would.
+ * Cost: O(corners) here (the valence scan); each next call: its triangles plus at most one
+ *   batch (one control face's walk down to the next emitting level: O(levels) patch
+ *   extractions). */
+int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_stream *s,
+                           subd_diag *diag);
 
 /* The plan at compile time, for a static buffer: levels L (1..SUBD_MAX_LEVELS), largest
  * valence N; SUBD_LOOP_STREAM_BYTES_LIMIT for SUBD_LOOP_STREAM_LIMIT. A uint32_t constant
@@ -203,7 +222,8 @@ int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o
      SUBD_LOOP_SA_(4u * SUBD_LOOP_SV_(S)) + SUBD_LOOP_SA_(SUBD_LOOP_SV_(S)) + SUBD_LOOP_SA_(3u * SUBD_LOOP_SF_(S)))
 #define SUBD_LOOP_SSCR_(S) (SUBD_LOOP_SA_(2u * SUBD_LOOP_SC_(S)) + SUBD_LOOP_SA_(2u * 4u * SUBD_LOOP_SF_(S)))
 #define SUBD_LOOP_STREAM_BYTES_(L, N, lim) \
-    (SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
+    (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_(((lim) ? 1u : (L) >= 2u ? 16u : 4u) * (uint32_t)sizeof(subd_tri)) + \
+     SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
      ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)))
 

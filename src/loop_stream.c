@@ -50,6 +50,7 @@
 #include "loop_internal.h"
 #include "loop_patch.h"
 #include "mesh_internal.h"
+#include "stream_internal.h"
 
 /* The blocks stream_layout takes (NULL when it only counts). A level's own arrays are an
  * offset table inside its block (off0, off1 from level_layout) rather than carved: the
@@ -166,6 +167,8 @@ static int stream_check(const subd_mesh *in, const subd_loop_opts *o, sp_layout 
     return stream_layout(0, o->levels, n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, l);
 }
 
+static uint32_t stream_total(const sp_layout *l, uint32_t levels, int limit);
+
 int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes)
 {
     sp_layout l;
@@ -174,7 +177,7 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
     if (!bytes) return SUBD_ERR_PARAM;
     subd_diag_clear(&d);
     if ((st = stream_check(in, o, &l, &d)) != SUBD_OK) return st;
-    *bytes = l.total;
+    *bytes = stream_total(&l, o->levels, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u);
     return SUBD_OK;
 }
 
@@ -210,25 +213,33 @@ static uint64_t vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t 
 typedef struct sp_run {
     const subd_mesh *in;
     const subd_loop_opts *o;
-    const subd_loop_sink *sink;
+    subd_stream_q *q; /* where this batch's triangles go (stream_internal.h) */
     uint32_t f;
 } sp_run;
+
+/* The next output slot: the caller's buffer, else the overflow ring, which holds a whole
+ * batch (ring_cap below), so it is never full here. */
+static subd_tri *out_tri(const sp_run *r)
+{
+    subd_tri *t = (subd_tri *)subd_stream_q_put(r->q);
+    t->face = r->f;
+    t->level = r->o->levels;
+    return t;
+}
 
 /* One emitted triangle from three level-L values and their ids. */
 static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint64_t id[3])
 {
-    subd_loop_tri t;
+    subd_tri *t = out_tri(r);
     uint32_t j, k;
     for (j = 0; j < 3u; j++) {
         for (k = 0; k < 3u; k++) {
-            t.pos[j][k] = x[j][k];
-            t.normal[j][k] = 0;
+            t->pos[j][k] = x[j][k];
+            t->normal[j][k] = 0;
         }
-        t.id[j] = id[j];
+        t->id[j] = id[j];
     }
-    t.face = r->f;
-    t.level = r->o->levels;
-    return r->sink->tri(r->sink->ctx, &t);
+    return 0;
 }
 
 /* The corners of child k of a triangle whose corners are points 0..2 and whose edge j -> j+1
@@ -390,7 +401,7 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
     const sp_head *ph = p->h;
     uint32_t nf = ph->nf, nv = ph->nv, c, v, j;
     subd_mesh m = lay->view;
-    subd_loop_tri t;
+    subd_tri t;
     m.num_verts = nv;
     m.num_faces = nf;
     m.num_corners = 3u * nf;
@@ -421,76 +432,155 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
     if (*ovf) return SUBD_ERR_RANGE;
     t.face = r->f;
     t.level = r->o->levels;
-    return r->sink->tri(r->sink->ctx, &t);
+    *(subd_tri *)subd_stream_q_put(r->q) = t; /* the ring holds one: never NULL */
+    return 0;
 }
 
-int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_loop_sink *sink,
-                     subd_diag *diag)
+/* ------------------------------------------------------------------------------------ */
+/* The pull form (subd.h "Streams"): the depth-first walk as a resumable step              */
+
+/* The run state, in the arena's fixed SUBD_STREAM_STATE_BYTES block. The walk's position is
+ * (run.f, k, started) plus each level header's `child`, which are in the arena already. */
+typedef struct sp_state {
+    subd_stream_impl impl; /* first: stream.c's view of the state */
+    subd_stream_ring ring;
+    sp_layout lay;
+    sp_run run;
+    subd_loop_opts o;
+    loop_wcache wc;
+    uint32_t k, depth, ovf, started, limit;
+} sp_state;
+SUBD_STREAM_STATE_FITS(sp_state);
+
+/* Triangles one batch can make (the overflow ring holds them): limit mode 1 (one per
+ * centre), one level 4 (the centre's children), else 16 (its grandchildren). */
+static uint32_t ring_cap(uint32_t levels, int limit) { return limit ? 1u : levels >= 2u ? 16u : 4u; }
+
+static uint32_t ring_bytes(uint32_t levels, int limit)
+{
+    uint32_t b = 0;
+    subd_size_add(&b, ring_cap(levels, limit), (uint32_t)sizeof(subd_tri));
+    return b;
+}
+
+/* The whole plan: the run state, the ring, the levels (stream_layout). */
+static uint32_t stream_total(const sp_layout *l, uint32_t levels, int limit)
+{
+    uint32_t b = SUBD_STREAM_STATE_BYTES;
+    subd_bytes_add(&b, ring_bytes(levels, limit));
+    subd_bytes_add(&b, l->total);
+    return b;
+}
+
+/* One batch: walks on from where the last step stopped to the next emitting visit and emits
+ * there; 1 after the last face. */
+static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
+{
+    sp_state *s = (sp_state *)state;
+    const subd_mesh *in = s->run.in;
+    const subd_loop_opts *o = &s->o;
+    sp_level p, qv;
+    int st;
+    s->run.q = q;
+    for (;;) {
+        if (!s->started) {
+            if (s->run.f >= in->num_faces) return 1;
+            level_at(&s->lay, 0, &p);
+            subd_lp_build_control(in, s->run.f, &p, o->levels);
+            /* a level above the emitting one caches everything its children's 1-rings need;
+             * the emitting level only its centre's six values (limit mode: none) */
+            subd_lp_fill_cache(&p, o->boundary, s->depth > 0u || o->levels >= 2u, &s->wc, &s->ovf);
+            s->k = 0;
+            s->started = 1;
+        }
+        if (s->ovf) {
+            d->face = s->run.f;
+            return SUBD_ERR_RANGE;
+        }
+        level_at(&s->lay, s->k, &p);
+        st = 0;
+        if (s->k == s->depth) {
+            st = s->limit ? emit_limit(&s->run, &p, &s->lay, &s->ovf)
+                 : o->levels >= 2u ? emit_grandchildren(&s->run, &p, &s->wc, &s->ovf) : emit_children(&s->run, &p);
+            if (st != 0) {
+                d->face = s->run.f;
+                return st;
+            }
+            st = 1; /* a batch went out: return after leaving this level */
+        } else if (p.h->child < 4u) {
+            uint32_t c = p.h->child++;
+            level_at(&s->lay, s->k + 1u, &qv);
+            subd_lp_extract_child(&p, &qv, c, s->lay.smap, s->lay.fmap);
+            if (s->k + 1u < s->depth || !s->limit)
+                subd_lp_fill_cache(&qv, o->boundary, s->k + 1u < s->depth || o->levels >= 2u, &s->wc, &s->ovf);
+            s->k++;
+            continue;
+        }
+        /* this level is done: up one, or on to the next control face */
+        if (s->k == 0u) {
+            s->started = 0;
+            s->run.f++;
+        } else {
+            s->k--;
+        }
+        if (st) return SUBD_OK;
+    }
+}
+
+int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_stream *h,
+                           subd_diag *diag)
 {
     subd_entry e;
     subd_diag *d = subd_entry_begin(&e, a, diag);
     sp_layout lay;
-    sp_run run;
-    loop_wcache wc;
-    uint16_t *smap, *fmap;
-    uint32_t f, ovf = 0, levels, depth;
-    int limit;
-    int st = SUBD_OK;
+    sp_state *s;
+    uint8_t *ring;
+    uint32_t f, total;
+    int st, limit;
 
-    if (!a || !sink || !sink->tri) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    if (!a || !h) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = stream_check(in, o, &lay, d)) != SUBD_OK) return subd_entry_fail(&e, st);
-    if (lay.total > subd_arena_free_bytes(a)) { /* checked first: nothing is taken on failure */
-        d->bytes_needed = lay.total;
+    limit = (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u;
+    total = stream_total(&lay, o->levels, limit);
+    if (total > subd_arena_free_bytes(a)) { /* checked first: nothing is taken on failure */
+        d->bytes_needed = total;
         return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    (void)stream_layout(a, o->levels, lay.n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, &lay); /* fits */
-    smap = lay.smap;
-    fmap = lay.fmap;
-    for (f = 0; f < 4u * cap_f(3u * lay.n); f++) fmap[f] = NO_SLOT; /* extract_child keeps it so */
-    wc.have = 0;
-    levels = o->levels;
-    limit = (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u;
+    s = (sp_state *)subd_arena_alloc(a, SUBD_STREAM_STATE_BYTES); /* fits: checked above */
+    ring = (uint8_t *)subd_arena_alloc(a, ring_bytes(o->levels, limit));
+    (void)stream_layout(a, o->levels, lay.n, limit, &lay);
+    s->lay = lay;
+    for (f = 0; f < 4u * cap_f(3u * lay.n); f++) lay.fmap[f] = NO_SLOT; /* extract_child keeps it so */
+    s->wc.have = 0;
+    s->o = *o;
+    s->limit = (uint32_t)limit;
     /* the level that emits: level L (limit mode), L-2 (its centre's 16 grandchildren), or 0
      * for one level (its centre's 4 children) */
-    depth = limit ? levels : levels >= 2u ? levels - 2u : 0u;
-    run.in = in;
-    run.o = o;
-    run.sink = sink;
-    for (f = 0; f < in->num_faces && st == SUBD_OK; f++) {
-        sp_level p, q;
-        uint32_t k = 0;
-        run.f = f;
-        level_at(&lay, 0, &p);
-        subd_lp_build_control(in, f, &p, levels);
-        /* a level above the emitting one caches everything its children's 1-rings need;
-         * the emitting level only its centre's six values (limit mode: none) */
-        subd_lp_fill_cache(&p, o->boundary, depth > 0u || levels >= 2u, &wc, &ovf);
-        for (;;) {
-            if (ovf) {
-                st = SUBD_ERR_RANGE;
-                break;
-            }
-            level_at(&lay, k, &p);
-            if (k == depth) {
-                st = limit ? emit_limit(&run, &p, &lay, &ovf)
-                     : levels >= 2u ? emit_grandchildren(&run, &p, &wc, &ovf) : emit_children(&run, &p);
-                if (st != 0) break;
-            } else if (p.h->child < 4u) {
-                uint32_t c = p.h->child++;
-                level_at(&lay, k + 1u, &q);
-                subd_lp_extract_child(&p, &q, c, smap, fmap);
-                if (k + 1u < depth || !limit) subd_lp_fill_cache(&q, o->boundary, k + 1u < depth || levels >= 2u, &wc, &ovf);
-                k++;
-                continue;
-            }
-            if (k == 0u) break;
-            k--;
-        }
-    }
-    if (st != SUBD_OK) {
-        d->face = f - 1u;
-        return subd_entry_fail(&e, st);
-    }
-    subd_arena_rewind(a, e.mark); /* a stream keeps nothing */
+    s->depth = limit ? o->levels : o->levels >= 2u ? o->levels - 2u : 0u;
+    s->run.in = in;
+    s->run.o = &s->o;
+    s->run.q = 0;
+    s->run.f = 0;
+    s->k = 0;
+    s->ovf = 0;
+    s->started = 0;
+    s->impl.step = sp_step;
+    s->impl.ring = &s->ring;
+    s->impl.ring_items = ring;
+    subd_stream_start(h, a, e.mark, SUBD_STREAM_TRIS, &s->impl, ring_cap(o->levels, limit));
     return subd_entry_ok(&e);
+}
+
+int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_tri_sink *sink,
+                     subd_diag *diag)
+{
+    subd_stream h;
+    int st;
+    if (!sink || !sink->tri) {
+        subd_entry e;
+        (void)subd_entry_begin(&e, a, diag);
+        return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    }
+    if ((st = subd_loop_stream_begin(a, in, o, &h, diag)) != SUBD_OK) return st;
+    return subd_stream_run_tris(&h, sink, diag);
 }

@@ -120,8 +120,10 @@ static int run_push(subd_stream *s, void *item, uint32_t kind, const subd_tri_si
         if (n <= 0) break;
         n = (kind == SUBD_STREAM_TRIS) ? ts->tri(ts->ctx, (const subd_tri *)item)
                                        : ps->point(ps->ctx, (const subd_point *)item);
-        if (n != 0) {
+        if (n != 0) { /* the sink stopped: its value, and where the item came from */
             s->diag.status = n;
+            if (kind == SUBD_STREAM_TRIS) s->diag.face = ((const subd_tri *)item)->face;
+            else s->diag.polyline = ((const subd_point *)item)->curve;
             subd_stream_end(s);
             if (diag) *diag = s->diag;
             return n;

@@ -23,7 +23,10 @@
  *    can always write d->face, d->bytes_needed, ...; subd_diag_clear(d); records the arena
  *    mark (a may be NULL: nothing to rewind then, the body reports SUBD_ERR_PARAM).
  *  - subd_entry_fail(e, st): rewinds the arena to the mark, sets d->status = st, returns st.
- *    It leaves d's other fields alone: set bytes_needed, face, vertex, line before calling it.
+ *    It leaves d's other fields alone (set face, vertex, line, and with SUBD_ERR_NOMEM
+ *    bytes_needed, before calling it), except bytes_needed, which it clears for every other
+ *    status: a call that computed a need before the work and then failed otherwise reports
+ *    no need, by construction.
  *    Functions that already set d->status (subd_fail, subd_mesh_finish) may be followed by it.
  *  - subd_entry_ok(e): d->bytes_needed = 0 and d->status = SUBD_OK, returns SUBD_OK. It does
  *    not rewind: what the call allocated above the mark is its output.
@@ -56,6 +59,7 @@ static inline int subd_entry_fail(subd_entry *e, int st)
 {
     if (e->a) subd_arena_rewind(e->a, e->mark);
     e->d->status = st;
+    if (st != SUBD_ERR_NOMEM) e->d->bytes_needed = 0; /* a need is reported only with NOMEM */
     return st;
 }
 

@@ -239,7 +239,7 @@ static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint64_t
         }
         t->id[j] = id[j];
     }
-    return 0;
+    return subd_stream_q_commit(r->q);
 }
 
 /* The corners of child k of a triangle whose corners are points 0..2 and whose edge j -> j+1
@@ -433,7 +433,7 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
     t.face = r->f;
     t.level = r->o->levels;
     *(subd_tri *)subd_stream_q_put(r->q) = t; /* the ring holds one: never NULL */
-    return 0;
+    return subd_stream_q_commit(r->q);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -473,7 +473,7 @@ static uint32_t stream_total(const sp_layout *l, uint32_t levels, int limit)
 }
 
 /* One batch: walks on from where the last step stopped to the next emitting visit and emits
- * there; 1 after the last face. */
+ * there; q->ended after the last face. */
 static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
 {
     sp_state *s = (sp_state *)state;
@@ -484,7 +484,10 @@ static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
     s->run.q = q;
     for (;;) {
         if (!s->started) {
-            if (s->run.f >= in->num_faces) return 1;
+            if (s->run.f >= in->num_faces) {
+                q->ended = 1;
+                return SUBD_OK;
+            }
             level_at(&s->lay, 0, &p);
             subd_lp_build_control(in, s->run.f, &p, o->levels);
             /* a level above the emitting one caches everything its children's 1-rings need;

@@ -27,16 +27,20 @@ void subd_stream_start(subd_stream *s, subd_arena *a, uint32_t mark, uint32_t ki
     subd_diag_clear(&s->diag);
 }
 
+/* Items are whole 32-bit words (subd_tri 104 bytes, subd_point 40), 4-aligned. */
 static void copy_item(uint8_t *dst, const uint8_t *src, uint32_t size)
 {
+    uint32_t *d = (uint32_t *)(void *)dst;
+    const uint32_t *x = (const uint32_t *)(const void *)src;
     uint32_t i;
-    for (i = 0; i < size; i++) dst[i] = src[i];
+    for (i = 0; i < size / 4u; i++) d[i] = x[i];
 }
 
 void *subd_stream_q_put(subd_stream_q *q)
 {
     subd_stream_ring *r = q->r;
     uint32_t slot;
+    if (q->one) return q->one;
     if (q->n < q->max) return q->out + (q->n++) * q->size;
     if (r->count >= r->cap) return 0;
     slot = r->head + r->count;
@@ -45,42 +49,65 @@ void *subd_stream_q_put(subd_stream_q *q)
     return q->ring + slot * q->size;
 }
 
-/* Drains the ring into the caller's buffer, then runs the scheme's batches until the buffer
- * is full or the stream ends. */
+static int q_deliver(const subd_stream_q *q, const uint8_t *item)
+{
+    return q->ts ? q->ts->tri(q->ts->ctx, (const subd_tri *)(const void *)item)
+                 : q->ps->point(q->ps->ctx, (const subd_point *)(const void *)item);
+}
+
+int subd_stream_q_commit(subd_stream_q *q) { return q->one ? q_deliver(q, q->one) : 0; }
+
+static void q_init(subd_stream_q *q, subd_stream_impl *impl, uint32_t kind)
+{
+    q->out = 0;
+    q->max = q->n = 0;
+    q->ring = impl->ring_items;
+    q->r = impl->ring;
+    q->size = ITEM_BYTES(kind);
+    q->ended = impl->ring->done;
+    q->ts = 0;
+    q->ps = 0;
+    q->one = 0;
+}
+
+/* A failure: the stream stays failed with its status, the arena is given back. */
+static int stream_fail(subd_stream *s, int st)
+{
+    s->diag.status = st;
+    s->status_ = st;
+    subd_arena_rewind(s->arena_, s->mark_);
+    return st;
+}
+
+static int handle_ok(const subd_stream *s) { return s && s->magic_ == STREAM_MAGIC && s->state_; }
+
+/* Pull: drains the ring into the caller's buffer, then runs the scheme's batches until the
+ * buffer is full or the stream ends. */
 static int run_next(subd_stream *s, void *buf, uint32_t max, uint32_t kind)
 {
     subd_stream_impl *impl;
     subd_stream_ring *r;
     subd_stream_q q;
-    if (!s) return SUBD_ERR_PARAM;
-    if (s->magic_ != STREAM_MAGIC || !s->state_) return SUBD_ERR_PARAM;
+    if (!handle_ok(s)) return SUBD_ERR_PARAM;
     if (s->status_ < 0) return s->status_;
     if (s->status_ > 0) return 0;
     if (!buf || max == 0u || s->kind_ != kind) return SUBD_ERR_PARAM;
     impl = (subd_stream_impl *)s->state_;
     r = impl->ring;
+    q_init(&q, impl, kind);
     q.out = (uint8_t *)buf;
     q.max = max;
-    q.n = 0;
-    q.ring = impl->ring_items;
-    q.r = r;
-    q.size = ITEM_BYTES(kind);
     while (q.n < max && r->count > 0u) {
         copy_item(q.out + q.n * q.size, q.ring + r->head * q.size, q.size);
         q.n++;
         r->head = (r->head + 1u == r->cap) ? 0u : r->head + 1u;
         r->count--;
     }
-    while (q.n < max && !r->done) {
+    while (q.n < max && !q.ended) {
         int st = impl->step(impl, &q, &s->diag);
-        if (st < 0) {
-            s->diag.status = st;
-            s->status_ = st;
-            subd_arena_rewind(s->arena_, s->mark_);
-            return st;
-        }
-        if (st > 0) r->done = 1;
+        if (st != SUBD_OK) return stream_fail(s, st < 0 ? st : SUBD_ERR_PARAM); /* > 0: no sink here */
     }
+    r->done = q.ended;
     s->items_ = (s->items_ > UINT32_MAX - q.n) ? UINT32_MAX : s->items_ + q.n;
     if (q.n == 0u) { /* the end: nothing pending, nothing more to come */
         s->status_ = 1;
@@ -101,73 +128,70 @@ int subd_stream_next_points(subd_stream *s, subd_point *buf, uint32_t max)
 
 void subd_stream_end(subd_stream *s)
 {
-    if (!s || s->magic_ != STREAM_MAGIC) return;
+    if (!handle_ok(s)) return;
     if (s->status_ == SUBD_OK) {
         s->status_ = 1;
         subd_arena_rewind(s->arena_, s->mark_);
     }
 }
 
-/* The push form: one item at a time (a buffer of one keeps the stack small on a device;
- * the ring holds the rest of a batch, so the scheme's work is the same). */
+/* Push: what a pull left in the ring first, then every batch straight to the sink through
+ * one item (no ring, no copy: the push form costs what a direct sink call costs). */
 static int run_push(subd_stream *s, void *item, uint32_t kind, const subd_tri_sink *ts, const subd_point_sink *ps,
                     subd_diag *diag)
 {
-    int n;
+    subd_stream_impl *impl;
+    subd_stream_ring *r;
+    subd_stream_q q;
+    int st = SUBD_OK;
     if (diag) subd_diag_clear(diag);
-    for (;;) {
-        n = run_next(s, item, 1u, kind);
-        if (n <= 0) break;
-        n = (kind == SUBD_STREAM_TRIS) ? ts->tri(ts->ctx, (const subd_tri *)item)
-                                       : ps->point(ps->ctx, (const subd_point *)item);
-        if (n != 0) { /* the sink stopped: its value, and where the item came from */
-            s->diag.status = n;
+    if (!handle_ok(s) || s->kind_ != kind || (kind == SUBD_STREAM_TRIS ? !ts || !ts->tri : !ps || !ps->point)) {
+        subd_stream_end(s);
+        if (diag) diag->status = SUBD_ERR_PARAM;
+        return SUBD_ERR_PARAM;
+    }
+    if (s->status_ < 0) st = s->status_;
+    if (s->status_ == SUBD_OK) {
+        impl = (subd_stream_impl *)s->state_;
+        r = impl->ring;
+        q_init(&q, impl, kind);
+        q.ts = ts;
+        q.ps = ps;
+        while (st == SUBD_OK && r->count > 0u) {
+            copy_item((uint8_t *)item, q.ring + r->head * q.size, q.size);
+            st = q_deliver(&q, (const uint8_t *)item);
+            r->head = (r->head + 1u == r->cap) ? 0u : r->head + 1u;
+            r->count--;
+        }
+        q.one = (uint8_t *)item;
+        while (st == SUBD_OK && !q.ended) st = impl->step(impl, &q, &s->diag);
+        if (st > 0) { /* the sink stopped: its value, and where the item came from */
             if (kind == SUBD_STREAM_TRIS) s->diag.face = ((const subd_tri *)item)->face;
             else s->diag.polyline = ((const subd_point *)item)->curve;
+            s->diag.status = st;
             subd_stream_end(s);
-            if (diag) *diag = s->diag;
-            return n;
+        } else if (st < 0) {
+            (void)stream_fail(s, st);
+        } else {
+            subd_stream_end(s);
         }
-    }
-    if (n < 0) {
-        if (diag) {
-            *diag = s->diag;
-            diag->status = n;
-        }
-        return n;
     }
     if (diag) {
         *diag = s->diag;
-        diag->status = SUBD_OK;
+        diag->status = st;
         diag->bytes_needed = 0;
     }
-    return SUBD_OK;
+    return st;
 }
 
 int subd_stream_run_tris(subd_stream *s, const subd_tri_sink *sink, subd_diag *diag)
 {
     subd_tri t;
-    if (!s || !sink || !sink->tri) {
-        subd_stream_end(s);
-        if (diag) {
-            subd_diag_clear(diag);
-            diag->status = SUBD_ERR_PARAM;
-        }
-        return SUBD_ERR_PARAM;
-    }
     return run_push(s, &t, SUBD_STREAM_TRIS, sink, 0, diag);
 }
 
 int subd_stream_run_points(subd_stream *s, const subd_point_sink *sink, subd_diag *diag)
 {
     subd_point p;
-    if (!s || !sink || !sink->point) {
-        subd_stream_end(s);
-        if (diag) {
-            subd_diag_clear(diag);
-            diag->status = SUBD_ERR_PARAM;
-        }
-        return SUBD_ERR_PARAM;
-    }
     return run_push(s, &p, SUBD_STREAM_POINTS, 0, sink, diag);
 }

@@ -10,9 +10,10 @@
 #define SUBD_STREAM_INTERNAL_H
 #include "subd.h"
 
-/* A scheme's next: produce into q (subd_stream_q_put) until subd_stream_q_full(q) or the
- * end; return SUBD_OK (1 when the stream has ended and nothing more will come) or a
- * negative status with d's details. */
+/* A scheme's step: produce one internal batch: for each item, subd_stream_q_put gives the
+ * slot to fill, subd_stream_q_commit hands it on (a non-zero value: the push form's sink
+ * stopped; return it at once); at the end of the stream set q->ended. Return SUBD_OK, a
+ * negative status with d's details, or the sink's non-zero value. */
 typedef struct subd_stream_q subd_stream_q;
 typedef int (*subd_stream_step_fn)(void *state, subd_stream_q *q, subd_diag *d);
 
@@ -22,11 +23,16 @@ typedef struct subd_stream_ring {
 } subd_stream_ring;
 
 struct subd_stream_q {
-    uint8_t *out;   /* the caller's buffer of this call                 */
+    uint8_t *out;   /* pull: the caller's buffer of this call            */
     uint32_t max, n;
     uint8_t *ring;  /* cap items of `size` bytes in the arena            */
     subd_stream_ring *r;
     uint32_t size;
+    uint32_t ended; /* set by the step after the last item               */
+    /* push: every item goes straight to the sink from `one` (no copy)   */
+    const subd_tri_sink *ts;
+    const subd_point_sink *ps;
+    uint8_t *one;
 };
 
 /* Fills the handle: state (in the arena above mark), kind, the scheme's step and ring. */
@@ -48,9 +54,11 @@ void subd_stream_start(subd_stream *s, subd_arena *a, uint32_t mark, uint32_t ki
 #define SUBD_STREAM_STATE_FITS(type) \
     typedef char subd_stream_fits_##type[sizeof(type) <= SUBD_STREAM_STATE_BYTES ? 1 : -1]
 
-/* Where the next item goes (the caller's buffer, else the ring); NULL only when both are
- * full, which a scheme whose batch is at most ring_cap items never sees. */
+/* Where the next item goes (push: the one item handed to the sink; pull: the caller's
+ * buffer, else the ring); NULL only when both are full, which a scheme whose batch is at most
+ * ring_cap items never sees. */
 void *subd_stream_q_put(subd_stream_q *q);
-static inline int subd_stream_q_full(const subd_stream_q *q) { return q->n >= q->max; }
+/* The item put last is complete: push: the sink's value (non-zero: stop); pull: 0. */
+int subd_stream_q_commit(subd_stream_q *q);
 
 #endif

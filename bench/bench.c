@@ -334,7 +334,7 @@ static int op_run(void *p)
     subd_arena_rewind(&c->arena, c->kind == RUN_SR48X ? c->xmark : 0u);
     switch (c->kind) {
     case RUN_LOOP: return subd_loop(&c->arena, c->in, &c->lo, &c->out, &c->diag);
-    case RUN_LIMIT: return subd_loop_limit(&c->arena, c->in, SUBD_LOOP_BOUNDARY_PAPER, &c->lpos, &c->lnrm, &c->diag);
+    case RUN_LIMIT: return subd_loop_limit(&c->arena, c->in, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &c->lpos, &c->lnrm, &c->diag);
     case RUN_Q48: return subd_quasi48(&c->arena, c->in, &c->qo, &c->out, &c->diag);
     case RUN_CURVE: return subd_alpha_curve(&c->arena, c->cpos, c->cm, 1, &c->ao, &c->co, &c->diag);
     case RUN_SURF: return subd_alpha_surface(&c->arena, c->in, &c->ao, &c->out, NULL, &c->diag);
@@ -355,12 +355,12 @@ static int run_plan(run_ctx *c)
 {
     uint32_t pts;
     switch (c->kind) {
-    case RUN_LOOP: return subd_loop_plan(c->in, &c->lo, &c->plan);
-    case RUN_LIMIT: return subd_loop_limit_plan(c->in, SUBD_LOOP_BOUNDARY_PAPER, 1, &c->plan);
-    case RUN_Q48: return subd_quasi48_plan(c->in, &c->qo, &c->plan);
+    case RUN_LOOP: return subd_loop_plan(c->in, &c->lo, &c->plan, 0);
+    case RUN_LIMIT: return subd_loop_limit_plan(c->in, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &c->plan, 0);
+    case RUN_Q48: return subd_quasi48_plan(c->in, &c->qo, &c->plan, 0);
     case RUN_CURVE: return subd_alpha_curve_plan(c->cm, 1, &c->ao, &c->plan, &pts);
-    case RUN_SURF: return subd_alpha_surface_plan(c->in, &c->ao, &c->plan);
-    case RUN_PIA: return subd_pia_plan(c->in, &c->po, &c->plan);
+    case RUN_SURF: return subd_alpha_surface_plan(c->in, &c->ao, &c->plan, 0);
+    case RUN_PIA: return subd_pia_plan(c->in, &c->po, &c->plan, 0);
     case RUN_SR48: { /* exact: find_clusters first, in a scratch arena */
         uint32_t bound, clusters;
         subd_arena tmp;
@@ -374,7 +374,7 @@ static int run_plan(run_ctx *c)
         return st == SUBD_OK ? subd_sr48_plan(c->in, &c->so, clusters, &c->plan) : st;
     }
     case RUN_SR48X: return SUBD_ERR_PARAM; /* planned by section_sr48 (needs the hierarchy) */
-    case RUN_STREAM: return subd_loop_stream_plan(c->in, &c->lo, &c->plan);
+    case RUN_STREAM: return subd_loop_stream_plan(c->in, &c->lo, &c->plan, 0);
     }
     return SUBD_ERR_PARAM;
 }
@@ -679,7 +679,7 @@ static int section_demostream(void)
     o.levels = DEMO_STREAM_LEVELS;
     o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
     o.flags = 0;
-    if ((st = subd_loop_stream_plan(&m, &o, &plan)) != SUBD_OK) goto fail;
+    if ((st = subd_loop_stream_plan(&m, &o, &plan, 0)) != SUBD_OK) goto fail;
     printf("  stream arena bytes (static) %lu\n  stream arena bytes planned %lu\n", (unsigned long)sizeof stream_arena,
            (unsigned long)plan);
     subd_arena_init(&sa, stream_arena, sizeof stream_arena);
@@ -708,7 +708,7 @@ static int section_demostream(void)
         subd_mesh out;
         void *lmem;
         uint32_t lh;
-        if ((st = subd_loop_plan(&m, &o, &plan)) != SUBD_OK) goto fail;
+        if ((st = subd_loop_plan(&m, &o, &plan, 0)) != SUBD_OK) goto fail;
         if (!(lmem = host_arena_alloc(&la, plan))) return 1;
         if ((st = subd_loop(&la, &m, &o, &out, &d)) != SUBD_OK) goto fail;
         lh = loop_output_hash(&out);

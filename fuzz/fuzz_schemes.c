@@ -327,7 +327,7 @@ typedef struct limit_ctx {
 static int limit_run(void *x, subd_arena *a, subd_diag *d)
 {
     limit_ctx *c = (limit_ctx *)x;
-    return subd_loop_limit(a, &g_in, c->b, &c->pos, c->normals ? &c->nrm : NULL, d);
+    return subd_loop_limit(a, &g_in, &(subd_loop_limit_opts){c->b, c->normals ? SUBD_LOOP_LIMIT_NORMALS : 0u}, &c->pos, c->normals ? &c->nrm : NULL, d);
 }
 static void limit_ok(void *x, subd_arena *a, int first)
 {
@@ -411,7 +411,7 @@ static int q48_again(const q48_ctx *c, const subd_mesh *in, subd_q48_boundary b,
     subd_q48_opts o = c->o;
     o.boundary = b;
     uint32_t plan = 0;
-    int st = subd_quasi48_plan(in, &o, &plan);
+    int st = subd_quasi48_plan(in, &o, &plan, 0);
     FZ_CHECK(st == SUBD_OK, "subd_quasi48_plan (again)", st, b);
     fz_arena fa;
     fz_arena_open(&fa, plan);
@@ -633,7 +633,7 @@ static void surf_ok(void *x, subd_arena *a, int first)
     u.o.tag_num = NULL;
     u.o.alpha_num = c->o.tag_num[0];
     uint32_t plan = 0;
-    int st = subd_alpha_surface_plan(&g_in, &u.o, &plan);
+    int st = subd_alpha_surface_plan(&g_in, &u.o, &plan, 0);
     FZ_CHECK(st == SUBD_OK, "alpha surface untagged plan", st, 0);
     fz_arena fa;
     fz_arena_open(&fa, plan);
@@ -812,7 +812,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     lc.o.flags = fb < 240u ? fb % 2u : fb;
     if (u8(&c) == 0xffu)
         lc.o.levels = u8(&c) & 1u ? 0u : SUBD_MAX_LEVELS + 1u;
-    st = subd_loop_plan(&g_in, &lc.o, &plan);
+    st = subd_loop_plan(&g_in, &lc.o, &plan, 0);
     fz_status_known(st, 0, "subd_loop_plan");
     check_inputs("subd_loop_plan");
     if (st == SUBD_OK)
@@ -826,7 +826,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     sc.o.flags = sf < 240u ? (sf & 1u) * SUBD_LOOP_STREAM_LIMIT : sf;
     sc.stop_at = u8(&c) < 32u ? 1u + u8(&c) : 0u;
     sc.loop = (lc.have && sc.o.flags == 0) ? &lc : NULL;
-    st = subd_loop_stream_plan(&g_in, &sc.o, &plan);
+    st = subd_loop_stream_plan(&g_in, &sc.o, &plan, 0);
     fz_status_known(st, 0, "subd_loop_stream_plan");
     check_inputs("subd_loop_stream_plan");
     if (st == SUBD_OK)
@@ -839,7 +839,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     memset(&lim, 0, sizeof lim);
     lim.b = lc.o.boundary;
     lim.normals = u8(&c) & 1u;
-    st = subd_loop_limit_plan(&g_in, lim.b, lim.normals, &plan);
+    st = subd_loop_limit_plan(&g_in, &(subd_loop_limit_opts){lim.b, (lim.normals) ? SUBD_LOOP_LIMIT_NORMALS : 0u}, &plan, 0);
     fz_status_known(st, 0, "subd_loop_limit_plan");
     check_inputs("subd_loop_limit_plan");
     if (st == SUBD_OK)
@@ -857,7 +857,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
 #endif
     pc.o.max_iter = u8(&c) % 9u;
     pc.o.method = (subd_pia_method)(u8(&c) % 3u);
-    st = subd_pia_plan(&g_in, &pc.o, &plan);
+    st = subd_pia_plan(&g_in, &pc.o, &plan, 0);
     fz_status_known(st, 0, "subd_pia_plan");
     check_inputs("subd_pia_plan");
     if (st == SUBD_OK)
@@ -871,7 +871,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     qc.o.boundary = (subd_q48_boundary)(qb < 250u ? qb % 3u : qb & 1u ? 3u : 0x7fffffffu);
     qc.o.flags = u8(&c) % 3u;
     qc.o.len_bits = u8(&c) % 56u;
-    st = subd_quasi48_plan(&g_in, &qc.o, &plan);
+    st = subd_quasi48_plan(&g_in, &qc.o, &plan, 0);
     fz_status_known(st, 0, "subd_quasi48_plan");
     check_inputs("subd_quasi48_plan");
     if (st == SUBD_OK)
@@ -942,7 +942,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
         uc.o.levels = 1u;
     if (uc.o.order > 4u && uc.o.levels > 1u && uc.o.order <= SUBD_ALPHA_MAX_ORDER)
         uc.o.levels = 1u; /* keeps the outputs (and the O(valence^2) builds) small: speed */
-    st = subd_alpha_surface_plan(&g_in, &uc.o, &plan);
+    st = subd_alpha_surface_plan(&g_in, &uc.o, &plan, 0);
     fz_status_known(st, 0, "subd_alpha_surface_plan");
     check_inputs("subd_alpha_surface_plan");
     if (st == SUBD_OK)

@@ -239,7 +239,7 @@ typedef struct subd_alpha_surface_info {
  *   interior vertex of valence > SUBD_MAX_FACE_SIZE would make a face that large),
  *   SUBD_ERR_TOO_BIG.
  * Cost: O(levels * k) after one O(corners) pass (the counts per step are closed forms). */
-int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes);
+int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* subd_alpha_surface: opts->levels (1..SUBD_MAX_LEVELS) levels of S_k, k = opts->order in
  * 2..SUBD_ALPHA_MAX_ORDER, into *out.

@@ -32,6 +32,10 @@ typedef struct subd_loop_opts {
     uint32_t flags;
 } subd_loop_opts;
 
+/* subd_loop_opts_default: one level, SUBD_LOOP_BOUNDARY_PAPER, no flags.
+ * Memory: none. Errors: none (NULL is ignored). Cost: O(1). */
+void subd_loop_opts_default(subd_loop_opts *o);
+
 /* subd_loop_plan: the exact arena bytes subd_loop needs for this input and options, in
  * *bytes (subd_loop's peak arena use equals it).
  * Memory: no arena use; SUBD_LOOP_BYTES below gives the same number at compile time.
@@ -45,7 +49,7 @@ typedef struct subd_loop_opts {
  * Notes: the intermediate levels live inside the output block (level L-1 where face_start
  *   and corner_face go, which are written last), so the plan is the output arrays alone
  *   unless isolated vertices dominate the mesh. */
-int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
+int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* The plan as a compile-time constant, for sizing a static buffer: subd_loop_plan of an
  * all-triangle mesh with V vertices (isolated ones included), F faces and E edges
@@ -135,7 +139,7 @@ typedef subd_tri_sink subd_loop_sink;
  *   to a stream), SUBD_ERR_NOT_TRIANGLES (diag.face), SUBD_ERR_TOO_BIG (a valence above
  *   SUBD_LOOP_STREAM_MAX_VALENCE).
  * Cost: O(corners). */
-int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes);
+int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* Largest valence the stream takes (local indices are 16-bit). */
 #define SUBD_LOOP_STREAM_MAX_VALENCE 2000u
@@ -230,19 +234,32 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */
 
+/* Options of subd_loop_limit: the boundary rule set and SUBD_LOOP_LIMIT_NORMALS (unit limit
+ * normals too). */
+#define SUBD_LOOP_LIMIT_NORMALS 0x1u
+typedef struct subd_loop_limit_opts {
+    subd_loop_boundary boundary;
+    uint32_t flags;
+} subd_loop_limit_opts;
+
+/* subd_loop_limit_opts_default: SUBD_LOOP_BOUNDARY_PAPER with normals.
+ * Memory: none. Errors: none (NULL is ignored). Cost: O(1). */
+void subd_loop_limit_opts_default(subd_loop_limit_opts *o);
+
 /* subd_loop_limit_plan: the exact arena bytes of subd_loop_limit, in *bytes: 3 * num_verts
- * subd_reals for the positions and, when normals != 0, as many again for the normals, each
- * rounded up to SUBD_ARENA_ALIGN (no working memory).
+ * subd_reals for the positions and, with SUBD_LOOP_LIMIT_NORMALS, as many again for the
+ * normals, each rounded up to SUBD_ARENA_ALIGN (no working memory); diag as the call fills it.
  * Memory: no arena use.
- * Errors: SUBD_ERR_PARAM (NULL pointer, unknown boundary rule, a mesh without adjacency,
+ * Errors: SUBD_ERR_PARAM (NULL pointer, unknown boundary rule or flag, a mesh without adjacency,
  *   vertex tag bits 0x40/0x80 set, which are reserved: diag.vertex), SUBD_ERR_NOT_TRIANGLES
  *   (diag.face), SUBD_ERR_TOO_BIG.
  * Cost: O(corners). */
-int subd_loop_limit_plan(const subd_mesh *in, subd_loop_boundary b, int normals, uint32_t *bytes);
+int subd_loop_limit_plan(const subd_mesh *in, const subd_loop_limit_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* subd_loop_limit: limit-surface positions of every control vertex (*pos, 3 * num_verts,
- * in the arena) and, when normals != NULL, unit limit normals (*normals, 3 * num_verts; a
- * vertex where the tangents vanish gets (0, 0, 0)).
+ * in the arena) and, with SUBD_LOOP_LIMIT_NORMALS, unit limit normals (*normals, 3 *
+ * num_verts; a vertex where the tangents vanish gets (0, 0, 0); normals may be NULL without
+ * the flag, SUBD_ERR_PARAM with it).
  * Memory: exactly subd_loop_limit_plan's bytes, which stay in the arena; stack about
  *   0.9 KB on Cortex-M4 (376 bytes + the normal's 480: masks of valences 2..17 are cached
  *   per call).
@@ -253,7 +270,7 @@ int subd_loop_limit_plan(const subd_mesh *in, subd_loop_boundary b, int normals,
  * Notes: interior vertices use the progressive-interpolation paper's formula (3); boundary
  *   vertices the rule set b; creases follow the boundary rules; corners and isolated vertices
  *   stay. */
-int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, subd_real **pos,
+int subd_loop_limit(subd_arena *a, const subd_mesh *in, const subd_loop_limit_opts *o, subd_real **pos,
                     subd_real **normals, subd_diag *d);
 
 /* ------------------------------------------------------------------------------------ */
@@ -297,6 +314,11 @@ typedef struct subd_pia_result {
     subd_pia_phase boundary, interior; /* the paper's two phases (subd_pia_phase)        */
 } subd_pia_result;
 
+/* subd_pia_opts_default: SUBD_LOOP_BOUNDARY_PAPER, tol two Q16.16 LSB (2^-15, the
+ * smallest tolerance both arithmetics resolve), at most 100 iterations, SUBD_PIA_PAPER.
+ * Memory: none. Errors: none (NULL is ignored). Cost: O(1). */
+void subd_pia_opts_default(subd_pia_opts *o);
+
 /* subd_pia_plan: the exact arena bytes of subd_pia for this input and options, in *bytes:
  * PAPER 2 arrays of 3 * num_verts subd_reals (V, L V); FAST 6 such arrays (V, L V, search
  * direction, L of it, two for the preconditioner) plus two subd_reals and one byte per
@@ -304,7 +326,7 @@ typedef struct subd_pia_result {
  * Memory: no arena use.
  * Errors: validates like subd_pia: SUBD_ERR_PARAM, SUBD_ERR_NOT_TRIANGLES, SUBD_ERR_TOO_BIG.
  * Cost: O(corners). */
-int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes);
+int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* subd_pia: control positions V (*pos, 3 * num_verts, in the arena) whose Loop limit
  * surface passes through the input mesh's vertices P within tol, and how it went (*result).

@@ -70,6 +70,11 @@ typedef struct subd_q48_opts {
 #define SUBD_Q48_MAX_FACES(F, s) ((F) << (s))
 #define SUBD_Q48_MAX_VERTS(V, F, s) ((V) + (((F) << (s)) - (F)))
 
+/* subd_quasi48_opts_default: 2 binary steps, SUBD_Q48_BOUNDARY_FIXED, smoothing on,
+ * len_bits SUBD_Q48_LEN_BITS_DEFAULT.
+ * Memory: none. Errors: none (NULL is ignored). Cost: O(1). */
+void subd_quasi48_opts_default(subd_q48_opts *o);
+
 /* subd_quasi48_plan: the arena bytes subd_quasi48 uses for this input and options, in
  * *bytes (a bound: see Notes; the run never exceeds it).
  * Memory: no arena use.
@@ -90,7 +95,7 @@ typedef struct subd_q48_opts {
  * (only for inputs with many isolated vertices). Everything is allocated before the first
  * step, so the measured peak equals the plan except in that case. subd_quasi48 refuses to
  * start unless that many bytes are free, so the run can never exceed the plan. */
-int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes);
+int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* subd_quasi48: `steps` binary steps of quasi 4-8 subdivision of an all-triangle mesh,
  * into *out.

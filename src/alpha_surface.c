@@ -196,15 +196,14 @@ static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_
     return SUBD_OK;
 }
 
-int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes)
+int subd_alpha_surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t *bytes, subd_diag *diag)
 {
-    subd_diag d;
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     int64_t s;
     int st;
-    if (!bytes) return SUBD_ERR_PARAM;
-    if ((st = check_args(in, o, &s)) != SUBD_OK) return st;
-    subd_diag_clear(&d);
-    return surface_plan(in, o, bytes, &d);
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
+    if ((st = check_args(in, o, &s)) != SUBD_OK) return subd_plan_end(d, st);
+    return subd_plan_end(d, surface_plan(in, o, bytes, d));
 }
 
 /* Face centroid, rounded once (Q16.16: exact sum, one rounded division). */

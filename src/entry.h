@@ -70,4 +70,24 @@ static inline int subd_entry_ok(subd_entry *e)
     return SUBD_OK;
 }
 
+/* The plan calls' half of the same contract: plan(in, opts, &bytes, diag) fills diag (when
+ * not NULL) like the call it plans, through one exit:
+ *     subd_diag own, *d = subd_plan_begin(&own, diag);   // d = diag or own, cleared
+ *     ...
+ *     return subd_plan_end(d, st);                         // d->status = st, no need reported
+ * A plan needs no arena, so it never reports bytes_needed. */
+static inline subd_diag *subd_plan_begin(subd_diag *own, subd_diag *diag)
+{
+    subd_diag *d = diag ? diag : own;
+    subd_diag_clear(d);
+    return d;
+}
+
+static inline int subd_plan_end(subd_diag *d, int st)
+{
+    d->status = st;
+    d->bytes_needed = 0;
+    return st;
+}
+
 #endif

@@ -239,17 +239,15 @@ static int loop_layout_of(const subd_mesh *in, const subd_loop_opts *o, loop_lay
     return SUBD_OK;
 }
 
-int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes)
+int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes, subd_diag *diag)
 {
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     loop_layout lay;
-    subd_diag d;
     int st;
-    if (!bytes) return SUBD_ERR_PARAM;
-    subd_diag_clear(&d);
-    st = loop_layout_of(in, o, &lay, &d);
-    if (st != SUBD_OK) return st;
-    *bytes = lay.total;
-    return SUBD_OK;
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
+    st = loop_layout_of(in, o, &lay, d);
+    if (st == SUBD_OK) *bytes = lay.total;
+    return subd_plan_end(d, st);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -600,4 +598,12 @@ int subd_loop(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, subd_
     subd_arena_rewind(a, e.mark + lay.out_bytes); /* only the output arrays stay */
     *out = m;
     return subd_entry_ok(&e);
+}
+
+void subd_loop_opts_default(subd_loop_opts *o)
+{
+    if (!o) return;
+    o->levels = 1;
+    o->boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o->flags = 0;
 }

@@ -773,17 +773,25 @@ static int lim_layout(subd_arena *a, const subd_mesh *in, int normals, subd_real
     return subd_layout_end(&l, bytes);
 }
 
-int subd_loop_limit_plan(const subd_mesh *in, subd_loop_boundary b, int normals, uint32_t *bytes)
+void subd_loop_limit_opts_default(subd_loop_limit_opts *o)
 {
-    subd_real *p, *nrm;
-    int st;
-    if (!bytes) return SUBD_ERR_PARAM;
-    if ((st = lim_check(in, b, 0)) != SUBD_OK) return st;
-    return lim_layout(0, in, normals, &p, &nrm, bytes);
+    if (!o) return;
+    o->boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o->flags = SUBD_LOOP_LIMIT_NORMALS;
 }
 
-int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, subd_real **pos,
-                    subd_real **normals, subd_diag *diag)
+int subd_loop_limit_plan(const subd_mesh *in, const subd_loop_limit_opts *o, uint32_t *bytes, subd_diag *diag)
+{
+    subd_diag own, *d = subd_plan_begin(&own, diag);
+    subd_real *p, *nrm;
+    int st;
+    if (!bytes || !o || (o->flags & ~SUBD_LOOP_LIMIT_NORMALS) != 0u) return subd_plan_end(d, SUBD_ERR_PARAM);
+    if ((st = lim_check(in, o->boundary, d)) != SUBD_OK) return subd_plan_end(d, st);
+    return subd_plan_end(d, lim_layout(0, in, (o->flags & SUBD_LOOP_LIMIT_NORMALS) != 0u, &p, &nrm, bytes));
+}
+
+int subd_loop_limit(subd_arena *a, const subd_mesh *in, const subd_loop_limit_opts *o, subd_real **pos,
+                    subd_real **normals_out, subd_diag *diag)
 {
     subd_entry e;
     subd_diag *d = subd_entry_begin(&e, a, diag);
@@ -794,7 +802,12 @@ int subd_loop_limit(subd_arena *a, const subd_mesh *in, subd_loop_boundary b, su
     lim_vert c;
     int st;
 
-    if (!a || !pos) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    subd_real **normals;
+    subd_loop_boundary b;
+    if (!a || !pos || !o || (o->flags & ~SUBD_LOOP_LIMIT_NORMALS) != 0u) return subd_entry_fail(&e, SUBD_ERR_PARAM);
+    b = o->boundary;
+    normals = (o->flags & SUBD_LOOP_LIMIT_NORMALS) ? normals_out : 0;
+    if ((o->flags & SUBD_LOOP_LIMIT_NORMALS) && !normals_out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = lim_check(in, b, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if ((st = lim_layout(0, in, normals != 0, &p, &nrm, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(a)) { /* checked first: a failed call leaves the peak */

@@ -169,16 +169,15 @@ static int stream_check(const subd_mesh *in, const subd_loop_opts *o, sp_layout 
 
 static uint32_t stream_total(const sp_layout *l, uint32_t levels, int limit);
 
-int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes)
+int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes, subd_diag *diag)
 {
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     sp_layout l;
-    subd_diag d;
     int st;
-    if (!bytes) return SUBD_ERR_PARAM;
-    subd_diag_clear(&d);
-    if ((st = stream_check(in, o, &l, &d)) != SUBD_OK) return st;
-    *bytes = stream_total(&l, o->levels, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u);
-    return SUBD_OK;
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
+    if ((st = stream_check(in, o, &l, d)) == SUBD_OK)
+        *bytes = stream_total(&l, o->levels, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u);
+    return subd_plan_end(d, st);
 }
 
 /* ------------------------------------------------------------------------------------ */

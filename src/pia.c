@@ -124,16 +124,15 @@ static int pia_layout(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o
     return subd_layout_end(&l, bytes);
 }
 
-int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes)
+int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes, subd_diag *diag)
 {
-    subd_diag d;
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     pia_state s;
     uint32_t keep;
     int st;
-    subd_diag_clear(&d);
-    if (!bytes) return SUBD_ERR_PARAM;
-    if ((st = pia_check(in, o, &d)) != SUBD_OK) return st;
-    return pia_layout(0, in, o, &s, &keep, bytes);
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
+    if ((st = pia_check(in, o, d)) != SUBD_OK) return subd_plan_end(d, st);
+    return subd_plan_end(d, pia_layout(0, in, o, &s, &keep, bytes));
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -302,4 +301,13 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
     *pos = s.v;
     *result = res;
     return subd_entry_ok(&e);
+}
+
+void subd_pia_opts_default(subd_pia_opts *o)
+{
+    if (!o) return;
+    o->boundary = SUBD_LOOP_BOUNDARY_PAPER;
+    o->tol = SUBD_REAL_FRAC(2, 65536); /* 2^-15: the smallest tolerance Q16.16 resolves */
+    o->max_iter = 100;
+    o->method = SUBD_PIA_PAPER;
 }

@@ -149,16 +149,15 @@ static int q48_plan(const subd_mesh *in, const subd_q48_opts *o, q48_layout *L, 
     return SUBD_OK;
 }
 
-int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes)
+int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes, subd_diag *diag)
 {
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     q48_layout L;
-    subd_diag d;
     int st;
-    subd_diag_clear(&d);
-    if (!bytes) return SUBD_ERR_PARAM;
-    st = q48_plan(in, o, &L, &d);
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
+    st = q48_plan(in, o, &L, d);
     if (st == SUBD_OK) *bytes = L.bytes;
-    return st;
+    return subd_plan_end(d, st);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -609,4 +608,13 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
     subd_arena_rewind(a, keep);
     *out = buf[0];
     return subd_entry_ok(&e);
+}
+
+void subd_quasi48_opts_default(subd_q48_opts *o)
+{
+    if (!o) return;
+    o->steps = 2;
+    o->boundary = SUBD_Q48_BOUNDARY_FIXED;
+    o->flags = 0;
+    o->len_bits = SUBD_Q48_LEN_BITS_DEFAULT;
 }

@@ -380,7 +380,7 @@ static void alpha_ds_levels(void)
                 s = 4u * s;
             }
             sopts(&o, lev, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_FRAC(7, 8));
-            if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_OK)) return;
+            if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_OK)) return;
             {
                 uint32_t m0 = subd_arena_mark(&a);
                 if (!ds(&a, &in, &o, &out)) return;
@@ -411,7 +411,7 @@ static void check_plan_exhaustive(const subd_mesh *in, const subd_alpha_opts *o)
     uint32_t plan;
     h_mesh_call c;
     h_sweep s;
-    if (!CHECK_EQ(subd_alpha_surface_plan(in, o, &plan), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_alpha_surface_plan(in, o, &plan, 0), SUBD_OK)) return;
     c.in = in;
     c.opts = o;
     s = h_mesh_sweep(surface_run, &c, buf, sizeof buf, plan);
@@ -451,24 +451,24 @@ static void alpha_ds_errors(void)
     CHECK_EQ(subd_alpha_surface(0, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface(&a, 0, &o, &out, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, 0, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_surface_plan(&in, &o, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, 0, 0), SUBD_ERR_PARAM);
     o.levels = 0;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     o.levels = 1;
     o.order = SUBD_ALPHA_MAX_ORDER + 1u;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
     o.order = 1;
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
     o.order = 2;
     CHECK_EQ(subd_arena_mark(&a), m0);
     o.stiffness = h_int(-1); /* table 1 and theorem 1: diverges */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
-    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_DIVERGENT);
 #if !SUBD_FIXED
     o.stiffness = 3e9f; /* outside the internal Q32.32 range */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
 #endif
     /* a level with f_n <= -1: s = 2, cos kernel, f_0 = 2 cos(0.45 turn) */
     sopts(&o, 1, SUBD_ALPHA_COS, 9, 10, h_int(2));
@@ -726,7 +726,7 @@ static void alpha_sk_levels(void)
                 }
                 sopts(&o, lev, SUBD_ALPHA_COS, 1, 5, SUBD_REAL_FRAC(3, 4));
                 o.order = order;
-                if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_OK)) return;
+                if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_OK)) return;
                 if (!CHECK(plan <= subd_arena_free_bytes(&a))) return;
                 m0 = subd_arena_mark(&a);
                 if (!ds(&a, &in, &o, &out)) return;
@@ -790,7 +790,7 @@ static void alpha_ds_no_adjacency(void)
     CHECK(tri.twin == 0 || tri.vert_out == 0);
     m0 = subd_arena_mark(&a);
     sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
-    CHECK_EQ(subd_alpha_surface_plan(&tri, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_alpha_surface_plan(&tri, &o, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(plan, 7);
     CHECK_EQ(subd_alpha_surface(&a, &tri, &o, &out, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_arena_mark(&a), m0);
@@ -882,7 +882,7 @@ static void alpha_ds_valence2(void)
         for (lev = 1; lev <= (H_HOST ? 2u : 1u); lev++) { /* the device: one level (soft double) */
             sopts(&o, lev, SUBD_ALPHA_COS, 1, 5, SUBD_REAL_ONE);
             o.order = order;
-            if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_OK)) return;
+            if (!CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_OK)) return;
             subd_diag_clear(&d);
             a.peak = a.used;
             if (!CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_OK)) {
@@ -937,7 +937,7 @@ static void alpha_ds_divergent(void)
     m0 = subd_arena_mark(&a);
     sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_FRAC(-1, 2));
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
-    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan), SUBD_ERR_DIVERGENT);
+    CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_DIVERGENT);
     o.stiffness = SUBD_REAL_FRAC(-3, 5);
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_arena_mark(&a), m0);
@@ -1050,9 +1050,9 @@ static void alpha_tags_uniform(void)
                 /* the plan counts the tag arrays */
                 sopts(&o, lev, kern, 7, 40, SUBD_REAL_ONE);
                 o.order = k;
-                CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan0), SUBD_OK);
+                CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan0, 0), SUBD_OK);
                 o.tag_num = tags;
-                CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan1), SUBD_OK);
+                CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan1, 0), SUBD_OK);
                 CHECK(plan1 > plan0);
             }
 }

@@ -19,7 +19,7 @@ static void embed_readme_example(void)
     CHECK_EQ(subd_obj_plan(tetra_obj, sizeof tetra_obj - 1, &read_plan, &d), SUBD_OK);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     CHECK_EQ(subd_obj_read(&a, tetra_obj, sizeof tetra_obj - 1, &coarse, &d), SUBD_OK);
-    CHECK_EQ(subd_loop_plan(&coarse, &o, &loop_plan), SUBD_OK);
+    CHECK_EQ(subd_loop_plan(&coarse, &o, &loop_plan, 0), SUBD_OK);
     CHECK(read_plan <= sizeof arena_buf);
     CHECK(subd_arena_mark(&a) + loop_plan <= sizeof arena_buf);
 }
@@ -37,7 +37,7 @@ static void embed_readme_stream(void)
     CHECK_EQ(n, 4u * 4096u);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     CHECK_EQ(subd_obj_read(&a, tetra_obj, sizeof tetra_obj - 1, &m, &d), SUBD_OK);
-    CHECK_EQ(subd_loop_stream_plan(&m, &o, &plan), SUBD_OK);
+    CHECK_EQ(subd_loop_stream_plan(&m, &o, &plan, 0), SUBD_OK);
     CHECK_EQ(plan, sizeof stream_buf);
 }
 

@@ -693,7 +693,7 @@ static void check_plan_exhaustive(const subd_mesh *in, uint32_t levels, uint32_t
     o.levels = levels;
     o.boundary = PAPER;
     o.flags = flags;
-    if (!CHECK_EQ(subd_loop_plan(in, &o, &plan), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_loop_plan(in, &o, &plan, 0), SUBD_OK)) return;
     c.in = in;
     c.opts = &o;
     s = h_mesh_sweep(loop_run, &c, buf, sizeof buf, plan);
@@ -757,7 +757,7 @@ static void loop_memory(void)
         uint32_t mark = subd_arena_mark(&a), nv = in.num_verts, ne = in.num_edges, nf = in.num_faces;
         uint32_t pv = 0, pf = 0, qv = 0, qf = 0, front, fscf;
         o.levels = levels;
-        if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) return;
+        if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan, 0), SUBD_OK)) return;
         if (!run(&a, &in, levels, PAPER, 0, &out)) return;
         keep = subd_arena_mark(&a) - mark;
         front = SUBD_ALIGN_UP(12u * out.num_verts) + SUBD_ALIGN_UP(4u * out.num_corners) +
@@ -785,7 +785,7 @@ static void loop_memory(void)
         uint32_t v1, c1, v2, c2;
         if (!h_build(&a, &fl, &in)) return;
         o.levels = 3;
-        if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) return;
+        if (!CHECK_EQ(subd_loop_plan(&in, &o, &plan, 0), SUBD_OK)) return;
         v1 = 1003u + 3u, c1 = 12u, v2 = v1 + 9u, c2 = 48u;
         CHECK_EQ(plan, level_bytes(v1, c1) + level_bytes(v2, c2));
     }
@@ -810,13 +810,13 @@ static void loop_bytes_macro(void)
             uint32_t V = in.num_verts, F = in.num_faces, E = in.num_edges;
             o.levels = levels;
             o.flags = 0;
-            if (subd_loop_plan(&in, &o, &plan) != SUBD_OK) {
+            if (subd_loop_plan(&in, &o, &plan, 0) != SUBD_OK) {
                 CHECK(SUBD_LOOP_BYTES(V, F, E, levels) >= UINT32_MAX);
                 continue;
             }
             CHECK_EQ(SUBD_LOOP_BYTES(V, F, E, levels), plan);
             o.flags = SUBD_LOOP_ADJACENCY;
-            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK)) CHECK_EQ(SUBD_LOOP_BYTES_ADJ(V, F, E, levels), plan);
+            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan, 0), SUBD_OK)) CHECK_EQ(SUBD_LOOP_BYTES_ADJ(V, F, E, levels), plan);
         }
         subd_arena_rewind(&a, mark);
     }
@@ -827,10 +827,10 @@ static void loop_bytes_macro(void)
         for (levels = 1; levels <= 4u; levels++) {
             o.levels = levels;
             o.flags = 0;
-            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK))
+            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan, 0), SUBD_OK))
                 CHECK_EQ(SUBD_LOOP_BYTES(in.num_verts, in.num_faces, in.num_edges, levels), plan);
             o.flags = SUBD_LOOP_ADJACENCY;
-            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan), SUBD_OK))
+            if (CHECK_EQ(subd_loop_plan(&in, &o, &plan, 0), SUBD_OK))
                 CHECK_EQ(SUBD_LOOP_BYTES_ADJ(in.num_verts, in.num_faces, in.num_edges, levels), plan);
         }
     }
@@ -863,7 +863,7 @@ static void expect_error(const subd_mesh *in, const subd_loop_opts *o, int statu
     CHECK_EQ(subd_arena_mark(&a), 8);
     CHECK_EQ(out.num_verts, 12345);
     if (status != SUBD_ERR_NOMEM && status != SUBD_ERR_RANGE) {
-        CHECK_EQ(subd_loop_plan(in, o, &bytes), status);
+        CHECK_EQ(subd_loop_plan(in, o, &bytes, 0), status);
         CHECK_EQ(bytes, 77);
     }
 }
@@ -892,7 +892,7 @@ static void loop_not_triangles(void)
     o.flags = 0;
     if (!CHECK_EQ(subd_obj_read(&a, k_tri4_quad_obj, n, &m, &d), SUBD_OK)) return;
     mark = subd_arena_mark(&a);
-    CHECK_EQ(subd_loop_plan(&m, &o, &bytes), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_loop_plan(&m, &o, &bytes, 0), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(subd_loop(&a, &m, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 4);
@@ -956,7 +956,7 @@ static void loop_errors(void)
     o.flags = 0;
     expect_error(0, &o, SUBD_ERR_PARAM);
     expect_error(&tri, 0, SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_plan(&tri, &o, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_plan(&tri, &o, 0, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop(0, &tri, &o, &plain, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop(&a2, &tri, &o, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop(&a2, &tri, &o, 0, 0), SUBD_ERR_PARAM); /* diag is optional */
@@ -964,7 +964,7 @@ static void loop_errors(void)
     if (!run(&a, &tri, 1, PAPER, 0, &plain)) return;
     expect_error(&plain, &o, SUBD_ERR_PARAM);
     /* a too-small arena: NOMEM with the plan */
-    CHECK_EQ(subd_loop_plan(&tri, &o, &bytes), SUBD_OK);
+    CHECK_EQ(subd_loop_plan(&tri, &o, &bytes, 0), SUBD_OK);
     subd_arena_init(&a2, WORK_BUF + (WORK_BYTES / 2u), bytes - 1u);
     CHECK_EQ(subd_loop(&a2, &tri, &o, &plain, &d), SUBD_ERR_NOMEM);
     CHECK_EQ(d.bytes_needed, bytes);

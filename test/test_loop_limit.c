@@ -725,7 +725,7 @@ static int limit_of(const tmesh *t, subd_loop_boundary rule, subd_arena *a, subd
     subd_diag d;
     subd_arena_init(a, h_arena_buf, H_ARENA_BYTES);
     if (!tm_build(a, t, m)) return 0;
-    return subd_loop_limit(a, m, rule, pos, nrm, &d) == SUBD_OK;
+    return subd_loop_limit(a, m, &(subd_loop_limit_opts){rule, (nrm) ? SUBD_LOOP_LIMIT_NORMALS : 0u}, pos, nrm, &d) == SUBD_OK;
 }
 
 /* The interior weight chi(n) seen through a fan: centre 0, neighbour 0 at x = 1. */
@@ -863,7 +863,7 @@ static void convex_test(void)
     subd_diag d;
     uint32_t i, bad = 0;
     if (!CHECK(read_corpus("test/data/icosahedron.obj", &a, &m))) return;
-    if (!CHECK_EQ(subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_OK)) return;
     for (i = 0; i < m.num_verts; i++) {
         uint32_t ovf = 0;
         subd_real dot = subd_add(subd_add(subd_mul(nrm[3 * i], m.pos[3 * i], &ovf),
@@ -930,7 +930,7 @@ static void refine_test(void)
                 o.boundary = rule;
                 o.flags = SUBD_LOOP_ADJACENCY;
                 if (!CHECK_EQ(subd_loop(&a, &m, &o, &out, &d), SUBD_OK)) return;
-                if (!CHECK_EQ(subd_loop_limit(&a, &out, rule, &pos, &nrm, &d), SUBD_OK)) return;
+                if (!CHECK_EQ(subd_loop_limit(&a, &out, &(subd_loop_limit_opts){rule, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_OK)) return;
                 for (i = 0; i < nv; i++) {
                     for (k = 0; k < 3; k++) {
                         subd_real e = pos[3 * i + k] - p0[3 * i + k];
@@ -970,7 +970,7 @@ typedef struct limit_call {
 static int limit_run(void *ctx, subd_arena *a, subd_diag *d)
 {
     limit_call *c = (limit_call *)ctx;
-    return subd_loop_limit(a, c->m, SUBD_LOOP_BOUNDARY_PAPER, &c->out[0], c->normals ? &c->out[1] : 0, d);
+    return subd_loop_limit(a, c->m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, c->normals ? SUBD_LOOP_LIMIT_NORMALS : 0u}, &c->out[0], c->normals ? &c->out[1] : 0, d);
 }
 
 /* only the results stay allocated: all of the plan */
@@ -994,8 +994,8 @@ static void arena_test(void)
     tm_torus(&g_tm, 10, 8, 5u);
     subd_arena_init(&ma, h_arena_buf, H_ARENA_BYTES);
     if (!CHECK(tm_build(&ma, &g_tm, &m))) return;
-    CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan), SUBD_OK);
-    CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &plan_np), SUBD_OK);
+    CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_OK);
+    CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_BSPLINE, 0u}, &plan_np, 0), SUBD_OK);
     CHECK_EQ(plan, 2u * SUBD_ALIGN_UP(3u * 80u * (uint32_t)sizeof(subd_real)));
     CHECK_EQ(plan_np, SUBD_ALIGN_UP(3u * 80u * (uint32_t)sizeof(subd_real)));
     c.m = &m;
@@ -1020,21 +1020,21 @@ static void errors_test(void)
     /* a quad mesh */
     if (!CHECK(read_corpus("test/data/cube_quad.obj", &a, &m))) return;
     mark = subd_arena_mark(&a);
-    CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan), SUBD_ERR_NOT_TRIANGLES);
-    CHECK_EQ(subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     CHECK_EQ(subd_arena_mark(&a), mark);
     CHECK(pos == 0 && nrm == 0);
     /* parameters */
     if (!CHECK(read_corpus("test/data/icosahedron.obj", &a, &m))) return;
-    CHECK_EQ(subd_loop_limit_plan(0, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit_plan(&m, SUBD_LOOP_BOUNDARY_PAPER, 1, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit_plan(&m, (subd_loop_boundary)7, 1, &plan), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(0, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(&a, 0, SUBD_LOOP_BOUNDARY_PAPER, &pos, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, 0, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(&a, &m, (subd_loop_boundary)7, &pos, 0, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit_plan(0, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, 0, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){(subd_loop_boundary)7, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit(0, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, &pos, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit(&a, 0, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, &pos, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, 0, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){(subd_loop_boundary)7, 0u}, &pos, 0, 0), SUBD_ERR_PARAM);
     CHECK(pos == 0);
 #if !SUBD_FIXED
     {
@@ -1042,7 +1042,7 @@ static void errors_test(void)
         uint32_t i;
         mark = subd_arena_mark(&a);
         for (i = 0; i < m.num_verts; i++) m.pos[3 * i] = (i & 1u) ? 3.0e38f : -3.0e38f;
-        CHECK_EQ(subd_loop_limit(&a, &m, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d), SUBD_ERR_RANGE);
+        CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_ERR_RANGE);
         CHECK_EQ(subd_arena_mark(&a), mark);
         CHECK(pos == 0 && nrm == 0);
     }
@@ -1066,7 +1066,7 @@ static void hashes_test(void)
             subd_diag d;
             uint32_t h = 2166136261u;
             if (!CHECK(read_corpus(files[f], &a, &m))) return;
-            if (!CHECK_EQ(subd_loop_limit(&a, &m, r ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER, &pos,
+            if (!CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){r ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos,
                                           &nrm, &d),
                           SUBD_OK))
                 return;
@@ -1156,7 +1156,7 @@ static void compare_mesh(const tmesh *t, subd_loop_boundary rule, lim_stats *st)
     uint32_t v, k;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (!CHECK(tm_build(&a, t, &m))) return;
-    if (!CHECK_EQ(subd_loop_limit(&a, &m, rule, &pos, &nrm, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){rule, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_OK)) return;
     for (v = 0; v < t->nv; v++) {
         double rp[3], rn[3], ln[3], err = 0, dot = 0, ang, l;
         int cls = ref_limit(t, v, rule, rp, rn), cfg;

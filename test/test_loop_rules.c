@@ -388,7 +388,7 @@ static void check_mask(const subd_real *ctrl, const subd_real *lim, uint32_t v, 
 static int limit_of(subd_arena *a, const subd_mesh *m, subd_real **lim)
 {
     subd_diag d;
-    return CHECK_OK(subd_loop_limit(a, m, SUBD_LOOP_BOUNDARY_PAPER, lim, 0, &d), &d);
+    return CHECK_OK(subd_loop_limit(a, m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, lim, 0, &d), &d);
 }
 
 /* Interior valence-6 fan, crease to ring vertices 1 and 4 (opposite: regular) or 1 and 3

@@ -151,7 +151,7 @@ static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd
     o.flags = flags & SUBD_LOOP_STREAM_LIMIT ? SUBD_LOOP_ADJACENCY : 0u; /* the reference */
     so = o;
     so.flags = flags;
-    if (!CHECK_OK(subd_loop_plan(in, &o, &plan), &d) || !CHECK_OK(subd_loop_stream_plan(in, &so, &splan), &d)) return 0;
+    if (!CHECK_OK(subd_loop_plan(in, &o, &plan, 0), &d) || !CHECK_OK(subd_loop_stream_plan(in, &so, &splan, 0), &d)) return 0;
     if ((uint64_t)plan + splan + 16u * 1024u > subd_arena_free_bytes(a)) {
         g_skipped++;
         return 0;
@@ -161,13 +161,13 @@ static int compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd
     if (flags & SUBD_LOOP_STREAM_LIMIT) {
         subd_real *lp = 0, *ln = 0;
         uint32_t lplan;
-        if (!CHECK_OK(subd_loop_limit_plan(&ref, b, 1, &lplan), &d)) return 0;
+        if (!CHECK_OK(subd_loop_limit_plan(&ref, &(subd_loop_limit_opts){b, SUBD_LOOP_LIMIT_NORMALS}, &lplan, 0), &d)) return 0;
         if ((uint64_t)lplan + ref.num_verts * 8u + splan + 64u > subd_arena_free_bytes(a)) {
             subd_arena_rewind(a, mark);
             g_skipped++;
             return 0;
         }
-        if (!CHECK_OK(subd_loop_limit(a, &ref, b, &lp, &ln, &d), &d)) return 0;
+        if (!CHECK_OK(subd_loop_limit(a, &ref, &(subd_loop_limit_opts){b, SUBD_LOOP_LIMIT_NORMALS}, &lp, &ln, &d), &d)) return 0;
         s.lpos = lp;
         s.lnrm = ln;
     }
@@ -272,18 +272,18 @@ static void stream_plan(void)
     for (l = 1; l <= SUBD_MAX_LEVELS; l++) {
         o.levels = l;
         /* icosahedron (valence 5), tetrahedron (3) and the cube (4, 5, 6): all below 6 or at 6 */
-        CHECK_OK(subd_loop_stream_plan(&ico, &o, &p1), &d0);
-        CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2), &d0);
+        CHECK_OK(subd_loop_stream_plan(&ico, &o, &p1, 0), &d0);
+        CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2, 0), &d0);
         CHECK_EQ(p1, p2);
         CHECK_EQ(p1, SUBD_LOOP_STREAM_BYTES(l, 6));
         o.flags = SUBD_LOOP_STREAM_LIMIT;
-        CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2), &d0);
+        CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2, 0), &d0);
         CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES_LIMIT(l, 6));
         CHECK(p2 > p1);
         o.flags = 0;
-        CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2), &d0);
+        CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2, 0), &d0);
         CHECK_EQ(p2, p1);
-        CHECK_OK(subd_loop_stream_plan(&fan, &o, &p2), &d0); /* centre valence 64 */
+        CHECK_OK(subd_loop_stream_plan(&fan, &o, &p2, 0), &d0); /* centre valence 64 */
         CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES(l, 64));
         CHECK(p2 > p1);
     }
@@ -322,7 +322,7 @@ static void stream_small_arenas(void)
     o.levels = 3;
     o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
     o.flags = 0;
-    if (!CHECK_OK(subd_loop_stream_plan(&in, &o, &plan), &d)) return;
+    if (!CHECK_OK(subd_loop_stream_plan(&in, &o, &plan, 0), &d)) return;
     buf = (uint8_t *)subd_arena_alloc(&a, plan);
     if (!CHECK(buf != 0)) return;
     sink.tri = count_tri;
@@ -405,10 +405,10 @@ static void stream_errors(void)
     CHECK_EQ(subd_loop_stream(&a, &in, 0, &sink, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_stream(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_stream(&a, &in, &o, &nosink, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream_plan(&in, &o, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream_plan(&in, &o, 0, 0), SUBD_ERR_PARAM);
     o.levels = 0;
     CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_loop_stream_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
     o.levels = SUBD_MAX_LEVELS + 1u;
     CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
     o.levels = 2;

@@ -636,7 +636,7 @@ static void crease_case(const subd_mesh *m, const char *name)
             iters[meth] = r.iterations;
             mv = *m;
             mv.pos = V;
-            if (!CHECK_EQ(subd_loop_limit(&a, &mv, (subd_loop_boundary)b, &lim, 0, &d), SUBD_OK)) continue;
+            if (!CHECK_EQ(subd_loop_limit(&a, &mv, &(subd_loop_limit_opts){(subd_loop_boundary)b, 0u}, &lim, 0, &d), SUBD_OK)) continue;
             for (i = 0; i < m->num_verts; i++) {
                 uint32_t k;
                 subd_real e = 0;
@@ -709,7 +709,7 @@ static void pia_params(void)
     subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
 
     o = opts(SUBD_PIA_PAPER, SUBD_LOOP_BOUNDARY_PAPER, tol_std(), 0);
-    CHECK_EQ(subd_pia_plan(&m, &o, &plan), SUBD_ERR_PARAM); /* max_iter = 0 */
+    CHECK_EQ(subd_pia_plan(&m, &o, &plan, 0), SUBD_ERR_PARAM); /* max_iter = 0 */
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
     CHECK_EQ(d.status, SUBD_ERR_PARAM);
     o = opts(SUBD_PIA_PAPER, SUBD_LOOP_BOUNDARY_PAPER, 0, 10);
@@ -718,7 +718,7 @@ static void pia_params(void)
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM); /* tol < 0 */
 #if SUBD_FIXED
     o.tol = 1; /* 1 LSB: below the 2-LSB floor */
-    CHECK_EQ(subd_pia_plan(&m, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_pia_plan(&m, &o, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
     o.tol = 2; /* the floor itself is accepted and reachable here */
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_OK);
@@ -747,8 +747,8 @@ static void pia_params(void)
     CHECK_EQ(subd_pia(&pa, &m, 0, &V, &r, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_pia(&pa, &m, &o, 0, &r, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia_plan(&m, &o, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia_plan(0, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_pia_plan(&m, &o, 0, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_pia_plan(0, &o, &plan, 0), SUBD_ERR_PARAM);
     subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
     bad = m;
     bad.twin = 0; /* no adjacency (e.g. a subd_loop output without SUBD_LOOP_ADJACENCY) */
@@ -759,7 +759,7 @@ static void pia_params(void)
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
     if (load_obj(&a, "test/data/cube_quad.obj", &m)) {
-        CHECK_EQ(subd_pia_plan(&m, &o, &plan), SUBD_ERR_NOT_TRIANGLES);
+        CHECK_EQ(subd_pia_plan(&m, &o, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
         CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_NOT_TRIANGLES);
         CHECK_EQ(d.face, 0);
         CHECK_EQ(pa.used, 0);
@@ -833,7 +833,7 @@ static void nomem_case(const subd_mesh *m, subd_pia_method meth)
     uint32_t plan = 0;
     pia_call c;
     h_sweep s;
-    if (!CHECK_EQ(subd_pia_plan(m, &o, &plan), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_pia_plan(m, &o, &plan, 0), SUBD_OK)) return;
     c.m = m;
     c.o = &o;
     s = h_sweep_make(pia_run, &c, g_buf, (uint32_t)sizeof g_buf, plan);
@@ -927,7 +927,7 @@ static void check_phases(subd_arena *a, const subd_mesh *m, subd_loop_boundary b
     uint32_t mark = subd_arena_mark(a), v, k, cnt[2] = {0, 0};
     double mx[2] = {0, 0}, sum[2] = {0, 0};
     mv.pos = (subd_real *)V;
-    if (!CHECK_EQ(subd_loop_limit(a, &mv, b, &lv, 0, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_loop_limit(a, &mv, &(subd_loop_limit_opts){b, 0u}, &lv, 0, &d), SUBD_OK)) return;
     for (v = 0; v < m->num_verts; v++) {
         uint32_t j = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) ? 0u : 1u;
         double e = 0;

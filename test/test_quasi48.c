@@ -415,7 +415,7 @@ static void q48_torus(void)
                 subd_q48_opts o4 = opts(4, 0);
                 uint32_t plan = 0;
                 subd_arena_init(&b, g_big + BIG_BYTES / 2u, BIG_BYTES / 2u);
-                CHECK_EQ(subd_quasi48_plan(&in, &o4, &plan), SUBD_OK);
+                CHECK_EQ(subd_quasi48_plan(&in, &o4, &plan, 0), SUBD_OK);
                 if (run(&b, &in, &o4, &once)) {
                     CHECK_EQ(h_mesh_hash(&once), h_mesh_hash(&m));
                     CHECK(b.peak <= plan);
@@ -860,7 +860,7 @@ static void plan_case(const subd_mesh *in, const subd_q48_opts *o, int exact)
     uint32_t plan;
     h_mesh_call c;
     h_sweep s;
-    if (!CHECK_EQ(subd_quasi48_plan(in, o, &plan), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_quasi48_plan(in, o, &plan, 0), SUBD_OK)) return;
     c.in = in;
     c.opts = o;
     s = h_mesh_sweep(q48_run, &c, h_arena_buf, H_ARENA_BYTES, plan);
@@ -913,7 +913,7 @@ static void q48_errors(void)
     fan_list(&fl, 4, 0, 0);
     if (!h_build(&a, &fl, &in)) return;
     o.steps = 0;
-    CHECK_EQ(subd_quasi48_plan(&in, &o, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
     o.steps = SUBD_Q48_MAX_STEPS + 1u;
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
@@ -928,12 +928,12 @@ static void q48_errors(void)
     CHECK_EQ(subd_quasi48(&a, 0, &o, &out, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_quasi48(&a, &in, 0, &out, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_quasi48(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_quasi48_plan(&in, &o, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_quasi48_plan(&in, &o, 0, 0), SUBD_ERR_PARAM);
     for (i = 0; i < 12; i++) qpos[i] = 0;
     qpos[3] = qpos[6] = qpos[7] = qpos[10] = subd_from_int(1, &ovf);
     fl.num_verts = 4; fl.pos = qpos; fl.num_faces = 1; fl.face_size = quad_size; fl.index = quad_idx;
     if (!h_build(&a, &fl, &q)) return;
-    CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_EQ(subd_quasi48_plan(&q, &o, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     CHECK_EQ(ovf, 0);
@@ -942,7 +942,7 @@ static void q48_errors(void)
         uint32_t mark;
         if (CHECK(cf != 0) && CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &q, &d), SUBD_OK)) {
             mark = subd_arena_mark(&a);
-            CHECK_EQ(subd_quasi48_plan(&q, &o, &plan), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(subd_quasi48_plan(&q, &o, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.face, 0);

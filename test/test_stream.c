@@ -137,7 +137,7 @@ static void pull_errors(void)
     CHECK_EQ(subd_loop_stream_begin(&a, &in, &o, &s, &d), SUBD_ERR_PARAM);
     o.levels = 2;
     CHECK_EQ(d.bytes_needed, 0);
-    if (!CHECK_OK(subd_loop_stream_plan(&in, &o, &plan), &d)) return;
+    if (!CHECK_OK(subd_loop_stream_plan(&in, &o, &plan, 0), &d)) return;
     CHECK_EQ(plan, SUBD_LOOP_STREAM_BYTES(2, 5));
     buf = (uint8_t *)subd_arena_alloc(&a, plan);
     if (!CHECK(buf != 0)) return;

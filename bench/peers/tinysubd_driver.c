@@ -128,7 +128,7 @@ int main(int argc, char **argv)
         o.flags = 0;
         sink.tri = hash_tri;
         sink.ctx = &hs;
-        st = subd_loop_stream_plan(&in, &o, &plan);
+        st = subd_loop_stream_plan(&in, &o, &plan, 0);
         if (st != SUBD_OK) fail("subd_loop_stream_plan", st, &d);
         subd_arena_init(&out_arena, xmalloc((size_t)plan + SUBD_ARENA_ALIGN), plan + SUBD_ARENA_ALIGN);
         rss_before = rss_kb();
@@ -145,7 +145,7 @@ int main(int argc, char **argv)
         o.levels = (uint32_t)levels;
         o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
         o.flags = 0;
-        st = subd_loop_plan(&in, &o, &plan);
+        st = subd_loop_plan(&in, &o, &plan, 0);
         if (st != SUBD_OK) fail("subd_loop_plan", st, &d);
         subd_arena_init(&out_arena, xmalloc((size_t)plan + SUBD_ARENA_ALIGN), plan + SUBD_ARENA_ALIGN);
         rss_before = rss_kb();
@@ -159,7 +159,7 @@ int main(int argc, char **argv)
         subd_alpha_opts o;
         subd_alpha_opts_default(&o);
         o.levels = (uint32_t)levels;
-        st = subd_alpha_surface_plan(&in, &o, &plan);
+        st = subd_alpha_surface_plan(&in, &o, &plan, 0);
         if (st != SUBD_OK) fail("subd_alpha_surface_plan", st, &d);
         subd_arena_init(&out_arena, xmalloc((size_t)plan + SUBD_ARENA_ALIGN), plan + SUBD_ARENA_ALIGN);
         rss_before = rss_kb();

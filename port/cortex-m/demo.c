@@ -74,7 +74,7 @@ static int demo_loop(subd_arena *arena, const subd_mesh *in)
     o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
     o.flags = 0;
     print_str("Loop subdivision, 3 levels:\n");
-    if ((st = subd_loop_plan(in, &o, &plan)) != SUBD_OK) return st;
+    if ((st = subd_loop_plan(in, &o, &plan, 0)) != SUBD_OK) return st;
     kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
@@ -98,10 +98,10 @@ static int demo_limit(subd_arena *arena, const subd_mesh *in)
     uint32_t plan, t0, t1, mark = start_measure(arena);
     int st;
     print_str("Loop limit positions and normals:\n");
-    if ((st = subd_loop_limit_plan(in, SUBD_LOOP_BOUNDARY_PAPER, 1, &plan)) != SUBD_OK) return st;
+    if ((st = subd_loop_limit_plan(in, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0)) != SUBD_OK) return st;
     kv("arena bytes planned", plan);
     t0 = port_cycles();
-    st = subd_loop_limit(arena, in, SUBD_LOOP_BOUNDARY_PAPER, &pos, &nrm, &d);
+    st = subd_loop_limit(arena, in, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d);
     t1 = port_cycles();
     if (st != SUBD_OK) return report_error(st, &d);
     kv("arena bytes used (peak)", arena->peak - mark);
@@ -122,7 +122,7 @@ static int demo_quasi48(subd_arena *arena, const subd_mesh *in)
     o.flags = 0;
     o.len_bits = 0;
     print_str("quasi 4-8 subdivision, 4 binary steps:\n");
-    if ((st = subd_quasi48_plan(in, &o, &plan)) != SUBD_OK) return st;
+    if ((st = subd_quasi48_plan(in, &o, &plan, 0)) != SUBD_OK) return st;
     kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
@@ -280,7 +280,7 @@ static int demo_stream(subd_arena *arena)
     o.levels = DEMO_STREAM_LEVELS;
     o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
     o.flags = 0;
-    if ((st = subd_loop_stream_plan(&m, &o, &plan)) != SUBD_OK) return st;
+    if ((st = subd_loop_stream_plan(&m, &o, &plan, 0)) != SUBD_OK) return st;
     kv("stream arena bytes (static)", (uint32_t)sizeof stream_arena);
     kv("stream arena bytes planned", plan);
     if (plan > sizeof stream_arena) return SUBD_ERR_NOMEM;

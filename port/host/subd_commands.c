@@ -23,8 +23,7 @@ subd_loop_opts tool_loop_opts(const tool_opts *o)
 static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_loop_opts lo = tool_loop_opts(o);
-    (void)d;
-    return o->stream ? subd_loop_stream_plan(in, &lo, bytes) : subd_loop_plan(in, &lo, bytes);
+    return o->stream ? subd_loop_stream_plan(in, &lo, bytes, d) : subd_loop_plan(in, &lo, bytes, d);
 }
 
 static int loop_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
@@ -37,8 +36,7 @@ static int loop_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
 
 static int limit_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
-    (void)d;
-    return subd_loop_limit_plan(in, o->boundary, o->normals, bytes);
+    return subd_loop_limit_plan(in, &(subd_loop_limit_opts){o->boundary, o->normals ? SUBD_LOOP_LIMIT_NORMALS : 0u}, bytes, d);
 }
 
 /* The limit and interpolation commands move the vertices: the output is the input's
@@ -47,7 +45,7 @@ static int limit_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, sub
                      subd_diag *d)
 {
     subd_real *pos = NULL;
-    int st = subd_loop_limit(a, in, o->boundary, &pos, o->normals ? &x->normals : NULL, d);
+    int st = subd_loop_limit(a, in, &(subd_loop_limit_opts){o->boundary, o->normals ? SUBD_LOOP_LIMIT_NORMALS : 0u}, &pos, o->normals ? &x->normals : NULL, d);
     if (st != SUBD_OK) return st;
     *out = *in;
     out->pos = pos;
@@ -67,8 +65,7 @@ static subd_pia_opts pia_opts_of(const tool_opts *o)
 static int pia_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_pia_opts po = pia_opts_of(o);
-    (void)d;
-    return subd_pia_plan(in, &po, bytes);
+    return subd_pia_plan(in, &po, bytes, d);
 }
 
 static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
@@ -124,8 +121,7 @@ static subd_q48_opts q48_opts_of(const tool_opts *o)
 static int q48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_q48_opts qo = q48_opts_of(o);
-    (void)d;
-    return subd_quasi48_plan(in, &qo, bytes);
+    return subd_quasi48_plan(in, &qo, bytes, d);
 }
 
 static int q48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
@@ -358,13 +354,12 @@ static int alpha_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, 
     alpha_tagging t;
     static const int32_t dummy = 0; /* the plans only test tag_num for NULL */
     int st;
-    (void)d;
     if ((st = alpha_tagging_load(in, o, &t)) != SUBD_OK) return st;
     alpha_tagging_done(&t);
     tag_arr = t.count ? SUBD_ALIGN_UP(4u * t.count) : 0u;
     if (t.count) t.ao.tag_num = &dummy;
     if (in->num_faces) {
-        st = subd_alpha_surface_plan(in, &t.ao, bytes);
+        st = subd_alpha_surface_plan(in, &t.ao, bytes, d);
         if (st == SUBD_OK) *bytes += tag_arr;
         return st;
     }

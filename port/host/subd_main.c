@@ -101,9 +101,10 @@ static int library_error(const char *file, int st, const subd_diag *d, int have_
     return EXIT_INPUT;
 }
 
-/* A scheme's failure on the input mesh: a triangle-only scheme names the first polygon (the
- * plan calls take no diag, so the tool finds it then), which the reader maps back to its line
- * in the input file (subd_obj_line_of / subd_off_line_of). */
+/* A scheme's failure on the input mesh: a triangle-only scheme names the first polygon in
+ * diag.face (the semi-regular 4-8 plans take no diag yet, so the tool finds it for them),
+ * which the reader maps back to its line in the input file (subd_obj_line_of /
+ * subd_off_line_of). */
 static int scheme_error(const tool_run *r, int st, subd_diag *d)
 {
     const subd_mesh *m = &r->in.mesh;

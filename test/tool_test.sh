@@ -495,6 +495,10 @@ for b in "$FLOAT" "$FIXED"; do
         grep -q '"stream":true' "$T/out" && grep -q '"limit":false' "$T/out" && [ "$(json_num triangles)" = $((64 * 20)) ] &&
         [ -n "$sum" ] && grep -q "\"checksum\":\"$sum\"" "$T/out" && [ "$(json_num arena_planned)" = "$planned" ]
     check $? "$name loop -l 3 --stream --stats, no -o: JSON with every key, triangles 4^3 x 20, same checksum and plan"
+    sa=$(json_num stream_arena)
+    [ -n "$sa" ] && [ "$sa" -gt 0 ] && [ "$sa" -lt "$planned" ] && { [ -z "$stream_arena_prev" ] || [ "$sa" = "$stream_arena_prev" ]; }
+    check $? "$name loop --stream --stats: stream_arena (the stream's plan) > 0, below arena_planned, same in both arithmetics"
+    stream_arena_prev=$sa
     run "$b" loop -l 2 --stream --limit --stats test/data/hexfan.obj
     is 0 && json_ok "$T/out" && grep -q '"limit":true' "$T/out" && [ "$(json_num triangles)" = 96 ]
     check $? "$name loop --stream --limit --stats: \"limit\":true, 96 triangles"

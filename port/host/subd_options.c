@@ -366,7 +366,8 @@ static const tool_option options[] = {
      "print exactly one JSON object on stdout (keys: command, scheme,\n"
      "levels, arithmetic, input, output, arena_budget, arena_planned,\n"
      "arena_used, time_ms = milliseconds in library calls; --stream adds\n"
-     "stream, limit, triangles, checksum); the human report of 'info'\n"
+     "stream, limit, triangles, checksum, stream_arena = the stream's own\n"
+     "arena, its plan, the mesh not counted); the human report of 'info'\n"
      "then goes to stderr"},
     {"--arena", NULL, "BYTES", 0, 0, set_arena,
      "simulate a device arena of BYTES bytes (suffix k = 1024,\n"

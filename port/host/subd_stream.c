@@ -365,9 +365,15 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
         for (k = 0; k <= m->num_faces; k++) m->face_start[k] = 3u * k;
         st = tool_write_output(r);
     }
-    snprintf(r->extra.json, sizeof r->extra.json,
-             "\"stream\":true,\"limit\":%s,\"triangles\":%llu,\"checksum\":\"%08lx\"", r->o.limit ? "true" : "false",
-             (unsigned long long)s->tris, (unsigned long)s->hash);
+    {
+        /* the stream's own arena (its plan; the mesh not counted), beside arena_planned */
+        subd_loop_opts lo = tool_loop_opts(&r->o);
+        uint32_t sb = 0;
+        if (subd_loop_stream_plan(in, &lo, &sb, NULL) != SUBD_OK) sb = 0;
+        snprintf(r->extra.json, sizeof r->extra.json,
+                 "\"stream\":true,\"limit\":%s,\"triangles\":%llu,\"checksum\":\"%08lx\",\"stream_arena\":%lu",
+                 r->o.limit ? "true" : "false", (unsigned long long)s->tris, (unsigned long)s->hash, (unsigned long)sb);
+    }
     free(s->index);
     free(s);
     return st;

@@ -16,7 +16,8 @@ typedef struct test_case {
     test_fn fn;
 } test_case;
 
-/* Every suite is a table ending with {0, 0}; test/suites.h lists them. */
+/* Every suite is a table ending with {0, 0}; the Makefile lists them in build/gen/suites.h
+ * (every `const test_case suite_NAME[] = {` of test/test_*.c, in file name order). */
 #define SUITE(name) extern const test_case name[];
 #include "suites.h"
 #undef SUITE

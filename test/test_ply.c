@@ -7,7 +7,7 @@
 #include "corpus.h"
 
 static char ply_buf[4096];
-static uint8_t ply_sweep[64u * 1024u] __attribute__((aligned(8)));
+static uint8_t ply_sweep[16u * 1024u] __attribute__((aligned(8)));
 
 static uint32_t slen(const char *s)
 {

@@ -10,10 +10,10 @@
 #include "harness.h"
 #include "corpus.h"
 
-#define IO_BUF 40000u
+#define IO_BUF 20000u
 static char io_buf[IO_BUF];
-static char io_buf2[IO_BUF];
-static uint8_t io_sweep[96u * 1024u] __attribute__((aligned(8)));
+static char io_buf2[1024];
+static uint8_t io_sweep[16u * 1024u] __attribute__((aligned(8)));
 
 static uint32_t slen(const char *s)
 {

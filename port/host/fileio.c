@@ -308,6 +308,13 @@ int host_read_mesh(const char *path, const uint32_t *budget, host_mesh *hm, subd
     }
 done:
     if (parse_ns) *parse_ns = t1;
+    if (st == SUBD_ERR_PARSE && hm->format == HOST_FMT_PLY && diag->line > 0u) {
+        /* the library refuses big-endian PLY as a syntax error on its format line: say why */
+        const char *p = text, *end = text + len;
+        uint32_t line = 1;
+        while (p < end && line < diag->line) line += *p++ == '\n';
+        hm->big_endian_ply = (size_t)(end - p) >= 24u && memcmp(p, "format binary_big_endian", 24) == 0;
+    }
     free(text);
     return st;
 }

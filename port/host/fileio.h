@@ -95,6 +95,7 @@ typedef struct host_mesh {
     uint32_t file_bytes;
     host_format format;
     int read_rc;        /* host_read_file's return value (for host_read_error_str)        */
+    int big_endian_ply; /* the read failed at a `format binary_big_endian` line (message)  */
 } host_mesh;
 
 /* Reads an .obj, .off, .stl or .ply file (the library's reader by extension). The arena is sized from the reader's plan call: exactly the plan

@@ -290,6 +290,12 @@ static int run_command(tool_run *r)
     }
     if (st == HOST_ERR_OOM) return tool_out_of_memory();
     if (st == HOST_ERR_FORMAT) return tool_usage_error("cannot read '%s': input must be " HOST_READABLE, r->o.input);
+    if (st == SUBD_ERR_PARSE && r->in.big_endian_ply) {
+        tool_error_record("%s:%lu: big-endian PLY is not supported (ascii and binary_little_endian are)", r->o.input,
+                          (unsigned long)d.line);
+        fprintf(stderr, "%s\n", g_error);
+        return EXIT_INPUT;
+    }
     if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
     /* One device arena holds the input mesh and then the operation's memory above it. */
     r->planned = r->in.planned;

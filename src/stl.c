@@ -6,7 +6,9 @@
  * Otherwise a buffer that starts with "solid" is ASCII, unless it holds bytes no text has
  * (NUL or control characters other than tab, CR, LF, FF, VT): then it is a binary file with
  * a "solid" header whose count the size contradicts, and is reported as one. Everything else
- * is binary. Binary errors name the facet (diag.face, 0-based); ASCII errors name the line.
+ * is binary. A text file is never taken for binary by the size rule: its bytes 80..83 are
+ * text (>= 0x09), so the count would be at least 0x09000000 and 84 + 50 n over 4 GB. Binary
+ * errors name the facet (diag.face, 0-based); ASCII errors name the line.
  * Normals and the attribute bytes are ignored (ASCII normals may even be "nan").
  *
  * Welding. STL stores every facet's three corners by value; the mesh needs shared vertices

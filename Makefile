@@ -279,13 +279,13 @@ test-run:
 
 # ------------------------------------------------------------------ fuzzing (make fuzz)
 # make fuzz [FUZZ_SECONDS=N]: libFuzzer targets (clang, ASan+UBSan, no recovery) for the OBJ
-# reader, the OFF reader (+ tags) and every scheme on decoded small meshes (fuzz/*.c), in
+# reader, the OFF reader (+ tags), the STL and PLY readers and every scheme on decoded small meshes (fuzz/*.c), in
 # float32 and Q16.16, each run N seconds by fuzz/run.sh. Installs clang when missing. Not part
 # of make test; make test replays the committed corpus fuzz/corpus/<target>/ through the same
 # checks built with gcc and the host sanitizers ("fuzz corpus replay" suites).
 FUZZ_SECONDS ?= 60
 CLANG ?= clang
-FUZZ_TARGETS := obj off schemes
+FUZZ_TARGETS := obj off schemes stl ply
 FUZZ_COMMON  := fuzz/fuzz_check.c fuzz/fuzz_reader.c
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_CFLAGS   = $(filter-out -Werror,$(WARN)) $(INC) -Ifuzz $(DEP) -DSUBD_HOST=1 -O1 -g $(FUZZ_SAN)

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Corpus replay for make test: feeds every file of fuzz/corpus/<target>/ to the same entry
- * function libFuzzer calls (fuzz_obj.c, fuzz_off.c, fuzz_schemes.c, compiled here with
+ * function libFuzzer calls (fuzz_obj.c, fuzz_off.c, fuzz_stl.c, fuzz_ply.c, fuzz_schemes.c, compiled here with
  * -DFUZZ_ENTRY=fz_<target>_entry), so CI runs the fuzz checks with gcc and ASan+UBSan and
  * needs no clang. A violated check aborts (run_suite.sh counts that as a failure), after
  * this program has printed which file it was running.
- * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, schemes) */
+ * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes) */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <stdint.h>
@@ -14,6 +14,8 @@
 
 int fz_obj_entry(const uint8_t *data, size_t size);
 int fz_off_entry(const uint8_t *data, size_t size);
+int fz_stl_entry(const uint8_t *data, size_t size);
+int fz_ply_entry(const uint8_t *data, size_t size);
 int fz_schemes_entry(const uint8_t *data, size_t size);
 
 typedef int (*entry_fn)(const uint8_t *, size_t);
@@ -97,6 +99,8 @@ int main(int argc, char **argv)
     for (int i = 1; i + 1 < argc; i += 2) {
         entry_fn fn = strcmp(argv[i], "obj") == 0       ? fz_obj_entry
                       : strcmp(argv[i], "off") == 0     ? fz_off_entry
+                      : strcmp(argv[i], "stl") == 0     ? fz_stl_entry
+                      : strcmp(argv[i], "ply") == 0     ? fz_ply_entry
                       : strcmp(argv[i], "schemes") == 0 ? fz_schemes_entry
                                                         : NULL;
         if (!fn) {

@@ -12,8 +12,8 @@ fails=0
 summary=""
 for arith in float fixed; do
     [ $arith = float ] && bin=$bf || bin=$bx
-    for t in obj off schemes; do
-        case $t in obj|off) maxlen=4096 ;; *) maxlen=512 ;; esac
+    for t in obj off schemes stl ply; do
+        case $t in obj|off|stl|ply) maxlen=4096 ;; *) maxlen=512 ;; esac
         w=$out/work/$t-$arith log=$out/logs/$t-$arith.log
         mkdir -p $w
         echo "== fuzz $t ($arith), $secs s"

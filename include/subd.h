@@ -361,6 +361,87 @@ int subd_off_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
 int subd_obj_write_normals(const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap, uint32_t *len);
 
 /* ------------------------------------------------------------------------------------ */
+/* STL and PLY on memory buffers.                                                         */
+/*                                                                                        */
+/* Readers take the whole file in memory and build the mesh with subd_mesh_build's         */
+/* validation, so every error of subd_mesh_build applies. Binary coordinates (float32,     */
+/* PLY also float64) become subd_reals by subd_real_from_f32_bits / _f64_bits, text ones    */
+/* by subd_real_parse: the same value gives the same bits from every format and target.   */
+
+/* subd_stl_plan: the exact arena bytes subd_stl_read needs for this buffer, in *bytes.
+ * subd_stl_read: reads binary or ASCII STL and welds the facets' corners into shared
+ * vertices (equal coordinate bits, -0 = +0; vertices numbered by first use, faces in file
+ * order, each facet one triangle), so the mesh has its adjacency.
+ * Memory: the plans use no arena. The plan is the bytes of the unwelded mesh (3 vertices
+ * per facet) with subd_mesh_build's scratch, about 40 bytes per corner: the read takes all of
+ * it at the peak (the weld works inside it) for every file, and leaves *out's arrays, for
+ * the welded vertex count, in the arena.
+ * Errors: SUBD_ERR_PARAM (NULL pointers other than the empty (NULL, 0) buffer),
+ *   SUBD_ERR_EMPTY (an empty buffer, no facets), SUBD_ERR_TOO_BIG (counts beyond 32-bit
+ *   sizes). Binary (diag.face: the 0-based facet): SUBD_ERR_PARSE for a buffer shorter than
+ *   the 84-byte header (no facet named), a truncated file (the first incomplete facet) or
+ *   one longer than its count says (diag.face = the count, the first facet beyond it: also
+ *   a binary file with a "solid" header whose count the size contradicts), SUBD_ERR_NAN
+ *   (NaN or infinity), SUBD_ERR_RANGE (outside Q16.16). ASCII (diag.line): SUBD_ERR_PARSE,
+ *   SUBD_ERR_NAN, SUBD_ERR_RANGE, SUBD_ERR_FACE_SIZE (a loop of other than 3 vertices). The
+ *   read also: SUBD_ERR_NOMEM (diag.bytes_needed) and subd_mesh_build's errors for the welded
+ *   mesh (e.g. SUBD_ERR_NONMANIFOLD_EDGE when three facets weld onto one edge), with
+ *   diag.face the facet (for a vertex error, diag.vertex the welded vertex and diag.face the
+ *   first facet using it) and, for ASCII, diag.line its `facet` line. On failure the arena
+ *   is back where it was and *out untouched.
+ * Cost: O(length) to scan (plan and read each), then O(F) for the weld (at most 12 counting
+ *   passes over the 3F corners) and subd_mesh_build.
+ * Notes: normals and attribute bytes are ignored. A buffer of 84 + 50 n bytes with count n
+ * at byte 80 is binary even if its header starts with "solid". Q16.16: corners whose float32
+ * values round to the same Q16.16 value weld. */
+int subd_stl_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
+int subd_stl_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
+
+/* subd_stl_write: writes the mesh as binary STL into buf[0..cap): an 80-byte header (not
+ * starting with "solid"), the triangle count, and per triangle (a polygon as a fan from its
+ * first corner) the unit normal and the corners as float32 (subd_real_to_f32_bits), attribute
+ * 0; *len receives the number of bytes, 84 + 50 T. Polylines and isolated vertices are not
+ * written.
+ * Memory: no arena; the caller's buffer only.
+ * Errors: SUBD_ERR_PARAM (NULL mesh or len), SUBD_ERR_NOMEM (cap too small: nothing is
+ *   written and *len receives the exact size needed). With buf == NULL nothing is written,
+ *   *len receives the exact size and SUBD_OK is returned; SUBD_ERR_TOO_BIG (over 4 GB).
+ * Cost: O(corners).
+ * Notes: float32 reads back bit for bit through subd_stl_read. Q16.16 coordinates of magnitude
+ * below 256 are exact in float32 and read back bit for bit; larger ones are rounded to 24
+ * significant bits (off by at most half a float32 ulp, < 2^-9). */
+int subd_stl_write(const subd_mesh *m, char *buf, uint32_t cap, uint32_t *len);
+
+/* subd_ply_plan: the exact arena bytes subd_ply_read needs for this buffer, in *bytes.
+ * subd_ply_read: reads PLY, `format ascii 1.0` or `format binary_little_endian 1.0`: the
+ * element `vertex` (properties x, y, z of type float/float32 or double/float64) and the
+ * element `face` (a list property vertex_indices or vertex_index, any integer count and
+ * index types), in any order; every other element and property is skipped by its declared
+ * type (lists included). Faces keep their sizes (3..SUBD_MAX_FACE_SIZE).
+ * Memory: the plans use no arena; the reader uses exactly the plan at the peak and leaves
+ *   *out's arrays (subd_mesh_build's) in the arena.
+ * Errors: SUBD_ERR_PARAM (NULL pointers other than the empty (NULL, 0) buffer),
+ *   SUBD_ERR_PARSE (header: diag.line of the offending line, e.g. a format other than the two
+ *   above, so big-endian PLY is refused at its `format` line, an unknown type, x/y/z not
+ *   float or double or missing; body: a value that is not a number or an integer, a missing
+ *   or extra value or record, a file shorter or longer than the header says),
+ *   SUBD_ERR_NAN, SUBD_ERR_RANGE (a coordinate), SUBD_ERR_INDEX (an index out of range or
+ *   negative), SUBD_ERR_FACE_SIZE, SUBD_ERR_EMPTY (no vertices), SUBD_ERR_TOO_BIG; the
+ *   reader also SUBD_ERR_NOMEM (diag.bytes_needed) and every error of subd_mesh_build. Body
+ *   errors name the record: ASCII the line (diag.line); binary diag.vertex or diag.face
+ *   (0-based), or for another element and for trailing bytes the line of its `element`
+ *   line / of `end_header`. On failure the arena is back where it was and *out untouched.
+ * Cost: O(length of the buffer) (two passes: count, then fill), then subd_mesh_build. */
+int subd_ply_plan(const char *buf, uint32_t len, uint32_t *bytes, subd_diag *diag);
+int subd_ply_read(subd_arena *arena, const char *buf, uint32_t len, subd_mesh *out, subd_diag *diag);
+
+/* subd_ply_line_of: the 1-based line of face diag.face (else vertex diag.vertex) in an ASCII
+ * PLY buffer a mesh was read from, as subd_obj_line_of.
+ * Memory: no arena. Errors: none: 0 when the diag names no element, the buffer is binary,
+ *   has no such element or does not parse. Cost: one scan of the buffer (two passes). */
+uint32_t subd_ply_line_of(const char *buf, uint32_t len, const subd_diag *diag);
+
+/* ------------------------------------------------------------------------------------ */
 /* Streams: one interface for every scheme.                                               */
 /*                                                                                        */
 /* A stream hands a scheme's output to the caller piece by piece instead of storing it, in */

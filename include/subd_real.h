@@ -223,6 +223,25 @@ subd_real subd_sqrt(subd_real x);
  * Memory: none. Errors: none (every uint64 is a valid input). Cost: O(1), 32 loop steps. */
 uint32_t subd_isqrt64(uint64_t x);
 
+/* subd_real_from_f32_bits, subd_real_from_f64_bits: the subd_real of an IEEE binary32 /
+ * binary64 value given by its bit pattern (as stored in binary STL and PLY files), rounded as
+ * subd_real_parse rounds the same value written as text: float32 correctly rounded to
+ * nearest, ties to even, subnormals kept (binary32 input: the value itself); Q16.16 the
+ * nearest multiple of 2^-16, ties away from zero (src/real_bits.c).
+ * Memory: no arena; a few words of stack.
+ * Errors: SUBD_ERR_PARAM (out NULL), SUBD_ERR_NAN (NaN or infinity), SUBD_ERR_RANGE (the
+ *   rounded value does not fit subd_real: magnitude >= 2^128 in float32, outside
+ *   [-32768, 32768 - 2^-16] in Q16.16). On an error *out is unchanged.
+ * Cost: O(1), integer arithmetic only (no float or double operation in either build). */
+int subd_real_from_f32_bits(uint32_t bits, subd_real *out);
+int subd_real_from_f64_bits(uint64_t bits, subd_real *out);
+
+/* subd_real_to_f32_bits: x as IEEE binary32 bits: float32 its own bits; Q16.16 the nearest
+ * float32 to x / 65536 (ties to even; exact when |x| < 2^24, i.e. |value| < 256, or x has at
+ * most 24 significant bits), as (float)(x / 65536.0) gives on a host.
+ * Memory: none. Errors: none (every subd_real has a float32). Cost: O(1), integers only. */
+uint32_t subd_real_to_f32_bits(subd_real x);
+
 #ifdef __cplusplus
 }
 #endif

@@ -574,7 +574,7 @@ usage_case "convert without -o" convert test/data/hexfan.obj
 usage_case "-o without value" convert test/data/hexfan.obj -o
 usage_case "unknown output extension" convert test/data/hexfan.obj -o "$T/x.ply"
 usage_case ".stl without loop --stream" convert test/data/hexfan.obj -o "$T/x.stl"
-usage_case "unknown input extension" info test/data/hexfan.stl
+usage_case "unknown input extension" info test/data/hexfan.step
 usage_case "render to .obj" render test/data/hexfan.obj -o "$T/x.obj"
 usage_case "bad --size" render test/data/hexfan.obj -o "$T/x.png" --size 12by3
 usage_case "bad --pitch" render test/data/hexfan.obj -o "$T/x.png" --pitch 100
@@ -764,6 +764,50 @@ run "$FLOAT" alpha --kernel cos -l 3 --tags "$T/sq2.tags" demo/square.obj -o "$T
 is 0 && ! cmp -s "$T/c0.obj" "$T/c2.obj" &&
     [ "$(grep -c '^v ' "$T/c2.obj")" = 32 ]
 check $? "alpha curve: one vertex tag changes the curve, same point count"
+
+# ---------------------------------------------------------------- STL and PLY input
+# .stl (binary or ASCII) and .ply (ASCII or binary little-endian) are read by extension; the
+# stream's STL reads back with the same triangles in the same order, float32 bit for bit (every
+# coordinate here is below 256, exact in Q16.16 too); STL and PLY copies of an OBJ give loop the
+# same triangles; errors name FILE:LINE or, for binary STL, FILE: facet N.
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    run "$b" loop -l 2 --stream test/data/icosahedron.obj -o "$T/s.stl"
+    run "$b" convert "$T/s.stl" -o "$T/back.obj"
+    is 0 && dump "$T/s.stl" > "$T/s.tri" && dump "$T/back.obj" > "$T/back.tri" && cmp -s "$T/s.tri" "$T/back.tri"
+    check $? "$name loop --stream -o .stl read back (convert to .obj): the same triangles in order, bit for bit"
+    run "$b" info "$T/s.stl"
+    is 0 && out_has "^vertices: 162 " && out_has "^faces: 320" && out_has "validation: ok"
+    check $? "$name info of the stream's .stl: corners welded into the 162 vertices of level 2"
+    "$b" loop -l 1 test/data/icosahedron.obj -o "$T/o.obj" < /dev/null > /dev/null 2>&1
+    run "$b" loop -l 1 test/data/icosahedron.stl -o "$T/a.obj"
+    is 0 && dump "$T/a.obj" > "$T/a.tri" && dump "$T/o.obj" > "$T/o.tri" && cmp -s "$T/a.tri" "$T/o.tri"
+    check $? "$name loop of the ASCII .stl copy of an .obj: the same triangles, bit for bit"
+    for p in icosahedron.ply icosahedron_le.ply; do
+        run "$b" loop -l 1 "test/data/$p" -o "$T/p.obj"
+        is 0 && cmp -s "$T/p.obj" "$T/o.obj"
+        check $? "$name loop of test/data/$p = loop of the .obj, byte for byte"
+    done
+done
+head -c 500 "$T/s.stl" > "$T/trunc.stl"
+run "$FLOAT" info "$T/trunc.stl"
+is 2 && err_starts "$T/trunc.stl: facet 8: syntax error"; check $? "truncated binary STL: exit 2, FILE: facet N"
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 nan\n' > "$T/nan.stl"
+run "$FLOAT" info "$T/nan.stl"
+is 2 && err_starts "$T/nan.stl:4: coordinate is NaN"; check $? "ASCII STL with nan: exit 2, FILE:LINE"
+f3='facet normal 0 0 1\nouter loop\nvertex %s\nvertex %s\nvertex %s\nendloop\nendfacet\n'
+printf "solid x\n$f3$f3${f3}endsolid\n" "0 0 0" "1 0 0" "0 1 0" "1 0 0" "0 0 0" "0 -1 0" "0 0 0" "1 0 0" "0 0 1" > "$T/nm.stl"
+run "$FLOAT" info "$T/nm.stl"
+is 2 && err_starts "$T/nm.stl:16: non-manifold edge"; check $? "ASCII STL whose facets weld into a non-manifold edge: exit 2, FILE:LINE"
+printf 'ply\nformat binary_big_endian 1.0\nelement vertex 1\nend_header\n' > "$T/be.ply"
+run "$FLOAT" info "$T/be.ply"
+is 2 && err_starts "$T/be.ply:2: big-endian PLY is not supported"; check $? "big-endian PLY refused at its format line: exit 2, says why"
+sed 's/^0 3 0 11 5$/0 3 0 11 50/' test/data/icosahedron.ply > "$T/idx.ply"
+n=$(grep -n '^0 3 0 11 50$' "$T/idx.ply" | cut -d: -f1)
+run "$FIXED" info "$T/idx.ply"
+is 2 && err_starts "$T/idx.ply:$n: vertex index out of range"; check $? "PLY index out of range: exit 2, FILE:LINE"
+run "$FLOAT" convert test/data/icosahedron.obj -o "$T/x.ply"
+is 1; check $? "writing .ply is refused: exit 1"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

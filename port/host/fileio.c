@@ -209,6 +209,7 @@ host_format host_format_of(const char *path)
     if (ends_with_ci(path, ".png")) return HOST_FMT_PNG;
     if (ends_with_ci(path, ".xyz")) return HOST_FMT_XYZ;
     if (ends_with_ci(path, ".stl")) return HOST_FMT_STL;
+    if (ends_with_ci(path, ".ply")) return HOST_FMT_PLY;
     return HOST_FMT_UNKNOWN;
 }
 
@@ -220,8 +221,14 @@ const char *host_format_name(host_format f)
     case HOST_FMT_PNG: return "png";
     case HOST_FMT_XYZ: return "xyz";
     case HOST_FMT_STL: return "stl";
+    case HOST_FMT_PLY: return "ply";
     default: return "unknown";
     }
+}
+
+int host_format_readable(host_format f)
+{
+    return f == HOST_FMT_OBJ || f == HOST_FMT_OFF || f == HOST_FMT_STL || f == HOST_FMT_PLY;
 }
 
 void *host_arena_alloc(subd_arena *a, uint32_t bytes)
@@ -265,6 +272,12 @@ int host_read_mesh(const char *path, const uint32_t *budget, host_mesh *hm, subd
     } else if (hm->format == HOST_FMT_OFF) {
         plan_fn = subd_off_plan;
         read_fn = subd_off_read;
+    } else if (hm->format == HOST_FMT_STL) {
+        plan_fn = subd_stl_plan;
+        read_fn = subd_stl_read;
+    } else if (hm->format == HOST_FMT_PLY) {
+        plan_fn = subd_ply_plan;
+        read_fn = subd_ply_read;
     } else {
         return HOST_ERR_FORMAT;
     }
@@ -295,6 +308,13 @@ int host_read_mesh(const char *path, const uint32_t *budget, host_mesh *hm, subd
     }
 done:
     if (parse_ns) *parse_ns = t1;
+    if (st == SUBD_ERR_PARSE && hm->format == HOST_FMT_PLY && diag->line > 0u) {
+        /* the library refuses big-endian PLY as a syntax error on its format line: say why */
+        const char *p = text, *end = text + len;
+        uint32_t line = 1;
+        while (p < end && line < diag->line) line += *p++ == '\n';
+        hm->big_endian_ply = (size_t)(end - p) >= 24u && memcmp(p, "format binary_big_endian", 24) == 0;
+    }
     free(text);
     return st;
 }

@@ -70,14 +70,18 @@ typedef enum host_format {
     HOST_FMT_OFF,
     HOST_FMT_PNG,
     HOST_FMT_XYZ, /* output only: "x y z" per line, a blank line between polylines (CNC) */
-    HOST_FMT_STL  /* output only, binary STL, written by loop --stream (subd_stream.c)     */
+    HOST_FMT_STL, /* read (binary or ASCII); written as binary STL by loop --stream (subd_stream.c) */
+    HOST_FMT_PLY  /* input only: ASCII or binary little-endian PLY                          */
 } host_format;
 
 host_format host_format_of(const char *path);
-const char *host_format_name(host_format f); /* "obj", "off", "png", "xyz", "stl" or "unknown" */
+const char *host_format_name(host_format f); /* "obj", "off", "png", "xyz", "stl", "ply" or "unknown" */
+/* True for the formats host_read_mesh reads (.obj, .off, .stl, .ply). */
+int host_format_readable(host_format f);
+#define HOST_READABLE ".obj, .off, .stl or .ply" /* for messages */
 
 /* Statuses of host_read_mesh besides the library's subd_status values (which are 0 or
- * negative): I/O failure (errno set) and an extension that is not .obj/.off. */
+ * negative): I/O failure (errno set) and an extension host_read_mesh does not read. */
 #define HOST_ERR_IO 1
 #define HOST_ERR_FORMAT 2
 #define HOST_ERR_OOM 3
@@ -91,9 +95,10 @@ typedef struct host_mesh {
     uint32_t file_bytes;
     host_format format;
     int read_rc;        /* host_read_file's return value (for host_read_error_str)        */
+    int big_endian_ply; /* the read failed at a `format binary_big_endian` line (message)  */
 } host_mesh;
 
-/* Reads an .obj or .off file. The arena is sized from the reader's plan call: exactly the plan
+/* Reads an .obj, .off, .stl or .ply file (the library's reader by extension). The arena is sized from the reader's plan call: exactly the plan
  * when budget is NULL, or *budget bytes when given (a simulated device arena; the rest stays
  * free for later operations). Returns
  *   SUBD_OK              hm filled; hm->arena.peak is the bytes the read used
@@ -101,7 +106,7 @@ typedef struct host_mesh {
  *                        plan exceeds *budget: SUBD_ERR_NOMEM with diag->bytes_needed = plan
  *   HOST_ERR_IO          the file cannot be read (errno set), is not a regular file or is
  *                        over HOST_INPUT_MAX (host_mesh.read_rc says which)
- *   HOST_ERR_FORMAT      the extension is not .obj or .off
+ *   HOST_ERR_FORMAT      the extension is not one of HOST_READABLE
  *   HOST_ERR_OOM         the host is out of memory
  * parse_ns, when not NULL, receives the nanoseconds spent in the library (plan + read). */
 int host_read_mesh(const char *path, const uint32_t *budget, host_mesh *hm, subd_diag *diag,

@@ -93,7 +93,9 @@ static int library_error(const char *file, int st, const subd_diag *d, int have_
         return EXIT_LIMIT;
     }
     element_str(d, el, sizeof el);
-    if (d->line) tool_error_record("%s:%lu: %s%s", file, (unsigned long)d->line, subd_status_str(st), el);
+    if (!d->line && d->face != SUBD_NONE && host_format_of(file) == HOST_FMT_STL) /* binary STL: its record */
+        tool_error_record("%s: facet %lu: %s", file, (unsigned long)d->face, subd_status_str(st));
+    else if (d->line) tool_error_record("%s:%lu: %s%s", file, (unsigned long)d->line, subd_status_str(st), el);
     else tool_error_record("%s: %s%s", file, subd_status_str(st), el);
     fprintf(stderr, "%s\n", g_error);
     if (st == SUBD_ERR_TOO_BIG) return EXIT_LIMIT;
@@ -116,7 +118,10 @@ static int scheme_error(const tool_run *r, int st, subd_diag *d)
         char *buf = NULL;
         uint32_t len = 0;
         if (host_read_file(r->o.input, &buf, &len) == 0) {
-            d->line = r->in.format == HOST_FMT_OFF ? subd_off_line_of(buf, len, d) : subd_obj_line_of(buf, len, d);
+            d->line = r->in.format == HOST_FMT_OFF   ? subd_off_line_of(buf, len, d)
+                      : r->in.format == HOST_FMT_PLY ? subd_ply_line_of(buf, len, d)
+                      : r->in.format == HOST_FMT_STL ? 0u
+                                                     : subd_obj_line_of(buf, len, d);
             free(buf);
         }
     }
@@ -285,7 +290,13 @@ static int run_command(tool_run *r)
         return EXIT_INPUT;
     }
     if (st == HOST_ERR_OOM) return tool_out_of_memory();
-    if (st == HOST_ERR_FORMAT) return tool_usage_error("cannot read '%s': input must be .obj or .off", r->o.input);
+    if (st == HOST_ERR_FORMAT) return tool_usage_error("cannot read '%s': input must be " HOST_READABLE, r->o.input);
+    if (st == SUBD_ERR_PARSE && r->in.big_endian_ply) {
+        tool_error_record("%s:%lu: big-endian PLY is not supported (ascii and binary_little_endian are)", r->o.input,
+                          (unsigned long)d.line);
+        fprintf(stderr, "%s\n", g_error);
+        return EXIT_INPUT;
+    }
     if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
     /* One device arena holds the input mesh and then the operation's memory above it. */
     r->planned = r->in.planned;

@@ -217,8 +217,8 @@ static int set_crease_angle(const opt_ctx *c)
 static int set_with_input(const opt_ctx *c)
 {
     if (c->o->with_input) return tool_usage_error("more than one --with-input file ('%s')", c->val);
-    if (host_format_of(c->val) != HOST_FMT_OBJ && host_format_of(c->val) != HOST_FMT_OFF)
-        return tool_usage_error("cannot read '%s': --with-input must be .obj or .off", c->val);
+    if (!host_format_readable(host_format_of(c->val)))
+        return tool_usage_error("cannot read '%s': --with-input must be " HOST_READABLE, c->val);
     c->o->with_input = c->val;
     c->o->render_opt_given = 1;
     return EXIT_OK;
@@ -518,12 +518,12 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         return tool_usage_error("--stream applies to 'loop' only (not '%s')", cmd->name);
     if (o->limit && !o->stream)
         return tool_usage_error("--limit needs --stream (for the limit of a mesh's own vertices: 'subd limit')");
-    if (host_format_of(o->input) != HOST_FMT_OBJ && host_format_of(o->input) != HOST_FMT_OFF)
-        return tool_usage_error("cannot read '%s': input must be .obj or .off", o->input);
+    if (!host_format_readable(host_format_of(o->input)))
+        return tool_usage_error("cannot read '%s': input must be " HOST_READABLE, o->input);
     if (o->output) {
         if (cmd->flags & CMD_OUTPUT_NONE) return tool_usage_error("'%s' writes no output file (no -o)", cmd->name);
         o->out_format = host_format_of(o->output);
-        if (o->out_format == HOST_FMT_UNKNOWN)
+        if (o->out_format == HOST_FMT_UNKNOWN || o->out_format == HOST_FMT_PLY)
             return tool_usage_error("cannot write '%s': output must be .obj, .off, .png, .xyz or .stl", o->output);
         if ((cmd->flags & CMD_PNG_ONLY) && o->out_format != HOST_FMT_PNG)
             return tool_usage_error("'%s' writes a .png picture", cmd->name);
@@ -608,7 +608,9 @@ void tool_usage(FILE *f)
     fprintf(f, "\nformats, by extension (any case): .obj and .off are read and written;\n"
                ".png is written (a rendering of the result); .xyz is written as plain 'x y z'\n"
                "lines, polylines separated by a blank line (for CNC use); .stl (binary STL,\n"
-               "one facet per triangle with its unit normal) is written by loop --stream.\n"
+               "one facet per triangle with its unit normal) is written by loop --stream;\n"
+               ".stl (binary or ASCII, corners welded by equal coordinates) and .ply (ASCII or\n"
+               "binary little-endian) are read.\n"
                "\noptions:\n");
     for (i = 0; i < NUM_OPTIONS; i++) {
         const tool_option *t = &options[i];

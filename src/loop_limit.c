@@ -115,6 +115,7 @@
 #include "loop_rules.h"
 #include "mesh_internal.h"
 #include "vec3w.h"
+#include "wide.h"
 
 /* Vertex classes: loop_rules.h (the one classification of loop.c, this file and pia.c). */
 typedef loop_vinfo lim_vert;
@@ -133,31 +134,21 @@ static int lim_regular(const subd_mesh *m, uint32_t v)
 /* ------------------------------------------------------------------------------------ */
 /* Interior weights in 64-bit integer arithmetic.                                         */
 
-/* round(a * b / 2^62) for a, b < 2^63, via a 128-bit product from 32-bit halves. */
+/* round(a * b / 2^62) for a, b < 2^63 (wide.h's 128-bit product), rounded half up. */
 static uint64_t lim_mul_q62(uint64_t a, uint64_t b)
 {
-    uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
-    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
-    uint64_t hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-    uint64_t lo = (mid << 32) | (uint32_t)p00;
-    return ((hi << 2) | (lo >> 62)) + ((lo >> 61) & 1u);
+    return subd_u128_shr_round(subd_u128_mul(a, b), 62u);
 }
 
-/* round(num * 2^62 / den) by restoring long division, for num < 2 den and 0 < den < 2^63. */
+/* round(num * 2^62 / den), half up, for num < 2 den and 0 < den < 2^63 (wide.h's division). */
 static uint64_t lim_div_q62(uint64_t num, uint64_t den)
 {
-    uint64_t q = 0, r = num;
-    uint32_t i;
-    for (i = 0; i < 63u; i++) {
-        q <<= 1;
-        if (r >= den) {
-            r -= den;
-            q |= 1u;
-        }
-        r <<= 1;
-    }
-    return q + (r >= den ? 1u : 0u);
+    uint64_t rem, q;
+    subd_u128 n;
+    n.hi = num >> 2;
+    n.lo = num << 62;
+    q = subd_u128_div(n, den, &rem);
+    return q + (rem >= den - rem ? 1u : 0u);
 }
 
 /* Position weights and the affine combinations v + sum w_i (p_i - v) they weight.

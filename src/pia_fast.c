@@ -88,6 +88,7 @@
 #include "loop_rules.h"
 #include "mesh_internal.h"
 #include "pia_internal.h"
+#include "wide.h"
 
 /* ------------------------------------------------------------------------------------ */
 /* Conjugate gradients (FAST)                                                             */
@@ -232,9 +233,9 @@ static uint64_t pia_norm(pia_dotv x, int32_t *e)
 /* x / y as a subd_real (truncated); *ok = 0 when x < 0, y <= 0 or the ratio does not fit. */
 static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
 {
-    uint64_t mx, my, q = 0;
+    uint64_t mx, my, q, rem;
     int32_t ex, ey, sh;
-    uint32_t i;
+    subd_u128 n;
     if (x.hi < 0 || y.hi < 0 || (y.hi == 0 && y.lo == 0u)) {
         *ok = 0;
         return 0;
@@ -242,15 +243,10 @@ static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
     if (x.hi == 0 && x.lo == 0u) return 0;
     mx = pia_norm(x, &ex);
     my = pia_norm(y, &ey);
-    /* restoring division: q = floor(mx / my * 2^30), mx / my in (1/2, 2), r < 2 my < 2^63 */
-    for (i = 0; i < 31u; i++) {
-        q <<= 1;
-        if (mx >= my) {
-            mx -= my;
-            q |= 1u;
-        }
-        mx <<= 1;
-    }
+    /* q = floor(mx / my * 2^30) < 2^31 (mx / my in (1/2, 2)), by wide.h's long division */
+    n.hi = mx >> 34;
+    n.lo = mx << 30;
+    q = subd_u128_div(n, my, &rem);
     /* value = q * 2^(ex - ey - 30); Q16.16 raw = q * 2^(ex - ey - 14) */
     sh = ex - ey - 14;
     if (sh >= 0) {

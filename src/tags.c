@@ -25,6 +25,7 @@
 #include "mesh_internal.h"
 #include "subd_alpha.h"
 #include "text.h"
+#include "wide.h"
 
 /* Parses an element number field [s, e): SUBD_OK with *v 0-based, SUBD_ERR_PARSE when it is
  * not all digits, SUBD_ERR_INDEX when it is outside 1..count. */
@@ -38,17 +39,6 @@ static int tag_index(const char *s, const char *e, uint32_t count, uint32_t *v)
     if (n == 0 || n > count) return SUBD_ERR_INDEX;
     *v = (uint32_t)(n - 1u);
     return SUBD_OK;
-}
-
-static int64_t gcd64(int64_t a, int64_t b)
-{
-    if (a < 0) a = -a;
-    while (b) {
-        int64_t r = a % b;
-        a = b;
-        b = r;
-    }
-    return a;
 }
 
 /* An alpha value [s, e) as a reduced fraction *num / *den of a turn (den >= 1): "N" or "N/D"
@@ -91,7 +81,7 @@ static int alpha_value(const char *s, const char *e, int64_t *num, int64_t *den)
         *num = n;
         *den = d;
     }
-    g = gcd64(*num, *den);
+    g = (int64_t)subd_gcd64(*num, *den);
     *num /= g;
     *den /= g;
     return SUBD_OK;
@@ -168,7 +158,7 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
         }
         if (alpha || falpha) {
             int32_t *dst = alpha ? (af ? af->vnum : 0) : (af ? af->fnum : 0);
-            int64_t g = gcd64(r->alpha_den, ad), l = r->alpha_den ? r->alpha_den / g * ad : 0;
+            int64_t g = (int64_t)subd_gcd64(r->alpha_den, ad), l = r->alpha_den ? r->alpha_den / g * ad : 0;
             r->alpha_den = (l > 0 && l <= INT32_MAX) ? (int32_t)l : 0; /* 0: no int32 common den */
             if (write && dst) dst[v[0]] = (int32_t)an;
             if (alpha) r->vertex_alphas++;

@@ -24,7 +24,7 @@
  *    then a normal float: 2^-62 <= |value| < 2^63). Integer code, so it exists (and is
  *    tested) in both builds; the float build reads the pattern as its subd_real.
  *  - subd_real_from_scaled_away / _up(q, frac, ovf): q * 2^-frac as a subd_real, frac in
- *    16..62. float32: subd_f32_bits_from_scaled (never sets *ovf). Q16.16: the two tie rules
+ *    17..62. float32: subd_f32_bits_from_scaled (never sets *ovf). Q16.16: the two tie rules
  *    of the library, kept apart because they are observable (see test_wide.c):
  *      _away: half away from zero (trig.c's subd_real_from_q62, symmetric: -x rounds to
  *             -(x rounded));
@@ -32,7 +32,7 @@
  *             subd_alpha_kernel_value: e.g. -2^-17 rounds to 0, not to -2^-16);
  *    both saturate to the Q16.16 range with *ovf set.
  *  - subd_real_to_q32(x, ovf): x * 2^32 as int64. Q16.16 exact. float32: rounded to nearest
- *    (ties up in magnitude), 0 below 2^-41; *ovf when |x| >= 2^31 or x is not finite.
+ *    (ties up in magnitude), 0 below 2^-41; *ovf when |x| >= 2^30 or x is not finite.
  *  - subd_gcd64(a, b) (wide.c): gcd(|a|, |b|) for int64 a, b > 0 (Euclid; at most ~92 steps).
  */
 #ifndef SUBD_WIDE_H

@@ -160,6 +160,24 @@ int subd_alpha_kernel_value(uint32_t kernel, int32_t num, int32_t den, uint32_t 
     return SUBD_OK;
 }
 
+int subd_alpha_kcache_get(subd_alpha_kcache *c, const subd_alpha_opts *o, int64_t num, int32_t den, uint32_t level,
+                          int64_t s_q32, int64_t *f, int *fresh)
+{
+    int st;
+    *fresh = 0;
+    if (num == c->num) {
+        *f = c->f;
+        return SUBD_OK;
+    }
+    st = subd_alpha_kernel_q32(o->kernel, (int32_t)num, den, level, s_q32, f);
+    if (st == SUBD_OK && *f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
+    if (st != SUBD_OK) return st;
+    c->num = num;
+    c->f = *f;
+    *fresh = 1;
+    return SUBD_OK;
+}
+
 void subd_alpha_opts_default(subd_alpha_opts *o)
 {
     o->order = 2;

@@ -260,24 +260,33 @@ static lim_w lim_dart_weight(const lim_dart *s, uint32_t m)
 /* ------------------------------------------------------------------------------------ */
 /* Boundary-curve limit weights (see the derivation at the top).                          */
 
+void subd_loop_limit_curve_frac(subd_loop_boundary b, int rv, int ru, int32_t *num, int32_t *den)
+{
+    /* [v regular][u regular]: (R; . E) 7/48, (R; . R) 1/6, (E; . E) 7/40, (E; . R) 1/5 */
+    static const int32_t tab[2][2][2] = {{{7, 40}, {1, 5}}, {{7, 48}, {1, 6}}};
+    if (b == SUBD_LOOP_BOUNDARY_BSPLINE) {
+        *num = 1;
+        *den = 6;
+        return;
+    }
+    *num = tab[rv != 0][ru != 0][0];
+    *den = tab[rv != 0][ru != 0][1];
+}
+
 static void lim_curve_weights(const subd_mesh *m, subd_loop_boundary b, const lim_vert *c,
                               lim_w *w0, lim_w *w1)
 {
-    int rv, r0, r1;
-    if (b == SUBD_LOOP_BOUNDARY_BSPLINE) {
-        *w0 = *w1 = LIM_W_FRAC(1, 6);
-        return;
+    int32_t n0, d0, n1, d1;
+    int rv = 0, r0 = 0, r1 = 0;
+    if (b != SUBD_LOOP_BOUNDARY_BSPLINE) { /* the B-spline rule needs no classes */
+        rv = (int)c->regular;
+        r0 = lim_regular(m, c->c0);
+        r1 = lim_regular(m, c->c1);
     }
-    rv = (int)c->regular;
-    r0 = lim_regular(m, c->c0);
-    r1 = lim_regular(m, c->c1);
-    if (rv) {
-        *w0 = r0 ? LIM_W_FRAC(1, 6) : LIM_W_FRAC(7, 48);
-        *w1 = r1 ? LIM_W_FRAC(1, 6) : LIM_W_FRAC(7, 48);
-    } else {
-        *w0 = r0 ? LIM_W_FRAC(1, 5) : LIM_W_FRAC(7, 40);
-        *w1 = r1 ? LIM_W_FRAC(1, 5) : LIM_W_FRAC(7, 40);
-    }
+    subd_loop_limit_curve_frac(b, rv, r0, &n0, &d0);
+    subd_loop_limit_curve_frac(b, rv, r1, &n1, &d1);
+    *w0 = LIM_W_FRAC(n0, d0);
+    *w1 = LIM_W_FRAC(n1, d1);
 }
 
 static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,

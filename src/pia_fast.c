@@ -130,7 +130,7 @@ static SUBD_NOINLINE void pia_classify(pia_state *s)
         n = c.valence;
         ns = c.nsharp;
         if (ns == 2u) {
-            s->cls[v] = PIA_CLS_CURVE;
+            s->cls[v] = (uint8_t)(PIA_CLS_CURVE | (c.regular ? PIA_CLS_REGULAR : 0));
             if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) s->w[v] = SUBD_REAL_ONE;
             else s->w[v] = subd_from_int(c.regular ? 48 : 35, &s->ovf);
             lo = curve;
@@ -406,15 +406,14 @@ static void pia_curve_nbrs(const subd_mesh *m, uint32_t v, uint32_t *c)
         c[ns] = m->corner_vert[subd_he_prev(m, last)];
 }
 
-/* Weight of curve neighbour u in curve vertex v's row of L (lim_curve_weights). */
+/* Weight of curve neighbour u in curve vertex v's row of L: loop_limit.c's mask, by the
+ * regularity pia_classify recorded (a regular vertex is always a curve vertex). */
 static subd_real pia_curve_w(const pia_state *s, uint32_t v, uint32_t u)
 {
-    int rv, ru;
-    if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) return SUBD_REAL_FRAC(1, 6);
-    rv = s->w[v] == SUBD_REAL_FRAC(48, 1);
-    ru = s->cls[u] == PIA_CLS_CURVE && s->w[u] == SUBD_REAL_FRAC(48, 1);
-    if (rv) return ru ? SUBD_REAL_FRAC(1, 6) : SUBD_REAL_FRAC(7, 48);
-    return ru ? SUBD_REAL_FRAC(1, 5) : SUBD_REAL_FRAC(7, 40);
+    int32_t num, den;
+    subd_loop_limit_curve_frac(s->o->boundary, (s->cls[v] & PIA_CLS_REGULAR) != 0u, (s->cls[u] & PIA_CLS_REGULAR) != 0u,
+                               &num, &den);
+    return SUBD_REAL_FRAC(num, den);
 }
 
 /* Vertex v's row of A (L restricted to the set PIA_SET_CURVE or PIA_SET_SMOOTH, v in it): the diagonal, returned, and in
@@ -431,14 +430,14 @@ static subd_real pia_half_row(pia_state *s, uint32_t set, uint32_t v, int upper,
     uint32_t k, i, n = 0;
     const uint8_t want = set == PIA_SET_CURVE ? PIA_CLS_CURVE : PIA_CLS_SMOOTH; /* the set's class */
     for (k = 0; k < 3u; k++) acc[k] = subd_acc_zero();
-    if (s->cls[v] == PIA_CLS_CURVE) {
+    if (pia_cls(s, v) == PIA_CLS_CURVE) {
         uint32_t c[2];
         pia_curve_nbrs(m, v, c);
         d = SUBD_REAL_ONE;
         for (i = 0; i < 2u; i++) {
             subd_real wu = pia_curve_w(s, v, c[i]);
             d = subd_sub(d, wu, &s->ovf);
-            if (!x || (upper ? c[i] <= v : c[i] >= v) || s->cls[c[i]] != want) continue;
+            if (!x || (upper ? c[i] <= v : c[i] >= v) || pia_cls(s, c[i]) != want) continue;
             for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], wu, x[3u * c[i] + k]);
         }
     } else {

@@ -41,9 +41,10 @@ static int tag_index(const char *s, const char *e, uint32_t count, uint32_t *v)
     return SUBD_OK;
 }
 
-/* An alpha value [s, e) as a reduced fraction *num / *den of a turn (den >= 1): "N" or "N/D"
- * (|N| <= 10^9, D in 1..10^9), or "Xdeg" (degrees, optional sign, at most 4 decimals,
- * |X| <= 36000), the syntax of the tool's --alpha. SUBD_ERR_PARSE otherwise. */
+/* An alpha value [s, e) as a reduced fraction *num / *den of a turn (den >= 1), in the one
+ * grammar of subd_tags.h (a tag file's A and the tool's --alpha, by subd_tags_parse_alpha):
+ * "N" or "N/D" (|N| <= 10^9, D in 1..10^9), or "Xdeg" (degrees, optional sign, at most 4
+ * decimals, no exponent, |X| <= 36000). SUBD_ERR_PARSE otherwise. */
 static int alpha_value(const char *s, const char *e, int64_t *num, int64_t *den)
 {
     int32_t n, d = 1;
@@ -84,6 +85,18 @@ static int alpha_value(const char *s, const char *e, int64_t *num, int64_t *den)
     g = (int64_t)subd_gcd64(*num, *den);
     *num /= g;
     *den /= g;
+    return SUBD_OK;
+}
+
+int subd_tags_parse_alpha(const char *text, uint32_t len, int32_t *num, int32_t *den)
+{
+    int64_t n, d;
+    int st;
+    if (!text || !num || !den) return SUBD_ERR_PARAM;
+    st = alpha_value(text, text + len, &n, &d);
+    if (st != SUBD_OK) return st;
+    *num = (int32_t)n; /* |n| <= 10^9 and 1 <= d <= 10^9 after the grammar's bounds */
+    *den = (int32_t)d;
     return SUBD_OK;
 }
 

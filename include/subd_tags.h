@@ -106,6 +106,13 @@ int subd_tags_alpha(const char *buf, uint32_t len, const subd_mesh *m, int32_t d
  * Cost: O(len). */
 int subd_tags_parse_alpha(const char *text, uint32_t len, int32_t *num, int32_t *den);
 
+/* subd_tags_common_den: the least common multiple of two alpha denominators a and b (the
+ * den over which values of either are whole numbers, as report.alpha_den for a file), or 0
+ * when a or b is below 1 or the result exceeds INT32_MAX; e.g. a caller's --alpha den and a
+ * file's report.alpha_den.
+ * Memory: none. Errors: none (0 as said). Cost: O(log min(a, b)) (Euclid). */
+int32_t subd_tags_common_den(int32_t a, int32_t b);
+
 #ifdef __cplusplus
 }
 #endif

@@ -100,6 +100,14 @@ int subd_tags_parse_alpha(const char *text, uint32_t len, int32_t *num, int32_t 
     return SUBD_OK;
 }
 
+int32_t subd_tags_common_den(int32_t a, int32_t b)
+{
+    int64_t l;
+    if (a < 1 || b < 1) return 0;
+    l = (int64_t)a / (int64_t)subd_gcd64(a, b) * b; /* <= (2^31 - 1)^2 < 2^62 */
+    return l <= INT32_MAX ? (int32_t)l : 0;
+}
+
 /* Where subd_tags_alpha puts the values (den > 0), or NULL. */
 typedef struct alpha_fill {
     int32_t den;
@@ -171,8 +179,7 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
         }
         if (alpha || falpha) {
             int32_t *dst = alpha ? (af ? af->vnum : 0) : (af ? af->fnum : 0);
-            int64_t g = (int64_t)subd_gcd64(r->alpha_den, ad), l = r->alpha_den ? r->alpha_den / g * ad : 0;
-            r->alpha_den = (l > 0 && l <= INT32_MAX) ? (int32_t)l : 0; /* 0: no int32 common den */
+            r->alpha_den = subd_tags_common_den(r->alpha_den, (int32_t)ad); /* 0: no int32 common den */
             if (write && dst) dst[v[0]] = (int32_t)an;
             if (alpha) r->vertex_alphas++;
             else r->face_alphas++;

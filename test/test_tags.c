@@ -379,6 +379,22 @@ static void tags_alpha_grammar(void)
     CHECK_EQ(subd_tags_parse_alpha(0, 0, &num, &den), SUBD_ERR_PARAM);
     CHECK_EQ(subd_tags_parse_alpha("1", 1, 0, &den), SUBD_ERR_PARAM);
     CHECK_EQ(subd_tags_parse_alpha("1", 1, &num, 0), SUBD_ERR_PARAM);
+    /* the common denominator: the least common multiple by search, 0 beyond int32 */
+    {
+        int32_t x, y, l, wrong = 0;
+        for (x = 1; x <= 24; x++)
+            for (y = 1; y <= 24; y++) {
+                for (l = x > y ? x : y; l % x != 0 || l % y != 0; l++) {
+                }
+                if (subd_tags_common_den(x, y) != l) wrong++;
+            }
+        CHECK_EQ(wrong, 0);
+        CHECK_EQ(subd_tags_common_den(3600000, 8), 3600000);
+        CHECK_EQ(subd_tags_common_den(999999937, 999999929), 0);
+        CHECK_EQ(subd_tags_common_den(INT32_MAX, INT32_MAX), INT32_MAX);
+        CHECK_EQ(subd_tags_common_den(0, 5), 0);
+        CHECK_EQ(subd_tags_common_den(5, -1), 0);
+    }
     /* the same grammar on an alpha line: an exponent is refused there too */
     expect("alpha 1 4.5e1deg\n", SUBD_ERR_PARSE, 1, "alpha with an exponent");
 }

@@ -21,7 +21,7 @@
  *    path, so callers round as they like from the remainder (2 rem >= d: half up).
  *  - subd_f32_bits_from_scaled(q, frac) (wide.c): the IEEE-754 binary32 bit pattern of
  *    q * 2^-frac rounded to nearest, ties to even, frac in 0..62 (every nonzero result is
- *    then a normal float: 2^-62 <= |value| < 2^63). Integer code, so it exists (and is
+ *    then a normal float: 2^-62 <= |value| <= 2^63). Integer code, so it exists (and is
  *    tested) in both builds; the float build reads the pattern as its subd_real.
  *  - subd_real_from_scaled_away / _up(q, frac, ovf): q * 2^-frac as a subd_real, frac in
  *    17..62. float32: subd_f32_bits_from_scaled (never sets *ovf). Q16.16: the two tie rules
@@ -32,8 +32,9 @@
  *             subd_alpha_kernel_value: e.g. -2^-17 rounds to 0, not to -2^-16);
  *    both saturate to the Q16.16 range with *ovf set.
  *  - subd_real_to_q32(x, ovf): x * 2^32 as int64. Q16.16 exact. float32: rounded to nearest
- *    (ties up in magnitude), 0 below 2^-41; *ovf when |x| >= 2^30 or x is not finite.
- *  - subd_gcd64(a, b) (wide.c): gcd(|a|, |b|) for int64 a, b > 0 (Euclid; at most ~92 steps).
+ *    (ties up in magnitude; tiny values give 0); *ovf when |x| >= 2^30 or x is not finite.
+ *  - subd_gcd64(a, b) (wide.c): gcd(|a|, |b|) for any int64 a, b, gcd(a, 0) = |a| (Euclid;
+ *    at most ~92 steps).
  */
 #ifndef SUBD_WIDE_H
 #define SUBD_WIDE_H

@@ -47,8 +47,10 @@
  * iteration is a forward sweep y = K^-1 r, a backward sweep z = K'^-1 D y and Lo p, each half
  * an application of L (the strictly lower or upper neighbours of every row), and counts as
  * 1.5 iterations (`iterations` is the work in applications of L, rounded up; max_iter bounds
- * it). The sweeps use loop_limit.c's weights recomputed here (chi_n = 1 / w_v, the curve
- * masks by regularity), equal to L's up to rounding; a difference only perturbs the L V
+ * it). The sweeps use loop_limit.c's curve masks themselves (subd_loop_limit_curve_frac, by
+ * the regularity pia_classify records) and chi_n = 1 / w_v recomputed here in subd_real
+ * (loop_limit.c's own Q62 chi would round differently and change the iterates), equal to
+ * L's up to rounding; a difference only perturbs the L V
  * recurrence, which the true error at convergence checks (safeguards below). A uniform phase,
  * where every row has the same diagonal and CG weight (the icosahedron, torus_tri, the
  * hexfan's boundary), keeps plain CG: the data's symmetry that CG exploits there (1

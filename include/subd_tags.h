@@ -10,8 +10,16 @@
  *   fixed I       vertex I gets SUBD_VTAG_FIXED
  *   alpha I A     vertex I's alpha is A (alpha curves; alpha surfaces of odd order)
  *   falpha F A    face F's alpha is A (alpha surfaces of even order)
- * A is a fraction of a turn, "N/D" or "N" (|N| <= 10^9, D in 1..10^9), or degrees "Xdeg"
- * (optional sign, at most 4 decimals, |X| <= 36000), as the tool's --alpha. Alpha lines set
+ * A is an alpha value, one grammar for a tag file and the tool's --alpha (both parse it with
+ * subd_tags_parse_alpha), exact, with no locale and no floating point:
+ *   A       = turns | degrees
+ *   turns   = sign? digit+ ( "/" digit+ )?     N or N/D turns, |N| <= 10^9, D in 1..10^9
+ *   degrees = sign? digits "deg"               X degrees, |X| <= 36000, where digits is
+ *             digit+ ( "." digit* )? | "." digit+   with at most 4 decimals
+ *   sign    = "+" | "-"
+ * No exponent ("4.5e1deg"), no hexadecimal, no blanks inside, no sign after the '/'; a value
+ * is the reduced fraction of a turn (degrees: X 10^4 / 3600000, reduced), so "45deg", "1/8"
+ * and "2/16" are the same value. Alpha lines set
  * no mesh bits: subd_tags_alpha turns them into numerators for subd_alpha_opts.tag_num; a
  * later line for the same element wins. Face numbers are 1-based in face order (the order
  * of OBJ f records). Vertex numbers are 1-based, as in OBJ, and written as plain decimal
@@ -87,6 +95,23 @@ int subd_tags_apply(const char *buf, uint32_t len, subd_mesh *m, subd_tags_repor
  * Cost: O(buffer length) (two passes). */
 int subd_tags_alpha(const char *buf, uint32_t len, const subd_mesh *m, int32_t den, int32_t *vert_num,
                     int32_t *face_num, subd_tags_report *report, subd_diag *diag);
+
+/* subd_tags_parse_alpha: parses one alpha value text[0..len) (no NUL needed) in the grammar
+ * above into the reduced fraction of a turn *num / *den (den >= 1, gcd(|num|, den) = 1): the
+ * parser of a tag file's alpha and falpha lines, for callers that take the same value from
+ * elsewhere (the tool's --alpha), so both accept exactly the same texts.
+ * Memory: none (a few words of stack).
+ * Errors: SUBD_ERR_PARAM (text, num or den NULL); SUBD_ERR_PARSE (not in the grammar or out
+ *   of its bounds). On failure *num and *den are unchanged.
+ * Cost: O(len). */
+int subd_tags_parse_alpha(const char *text, uint32_t len, int32_t *num, int32_t *den);
+
+/* subd_tags_common_den: the least common multiple of two alpha denominators a and b (the
+ * den over which values of either are whole numbers, as report.alpha_den for a file), or 0
+ * when a or b is below 1 or the result exceeds INT32_MAX; e.g. a caller's --alpha den and a
+ * file's report.alpha_den.
+ * Memory: none. Errors: none (0 as said). Cost: O(log min(a, b)) (Euclid). */
+int32_t subd_tags_common_den(int32_t a, int32_t b);
 
 #ifdef __cplusplus
 }

@@ -33,7 +33,7 @@ typedef struct curve_ctx {
     const subd_alpha_opts *o;
     int64_t s_q32;
     uint32_t level;
-    int64_t cached_num; /* INT64_MIN: nothing cached */
+    subd_alpha_kcache kc; /* the kernel value of the last edge's alpha */
     subd_alpha_wt w, w2;
     uint32_t ovf;
     int status;
@@ -126,18 +126,16 @@ int subd_alpha_curve_plan(uint32_t m, int closed, const subd_alpha_opts *o, uint
 static int edge_weight(curve_ctx *c, const int32_t *tag, uint32_t ia, uint32_t ib)
 {
     int64_t num2 = tag ? (int64_t)tag[ia] + tag[ib] : 2 * (int64_t)c->o->alpha_num, f, w1;
-    int st;
-    if (num2 == c->cached_num) return 1;
-    st = subd_alpha_kernel_q32(c->o->kernel, (int32_t)num2, 2 * c->o->alpha_den, c->level, c->s_q32, &f);
-    if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
+    int st, fresh;
+    st = subd_alpha_kcache_get(&c->kc, c->o, num2, 2 * c->o->alpha_den, c->level, c->s_q32, &f, &fresh);
     if (st != SUBD_OK) {
         c->status = st;
         return 0;
     }
+    if (!fresh) return 1;
     w1 = subd_alpha_divq(SUBD_Q32_ONE, 2 * (SUBD_Q32_ONE + f), 32, &c->ovf);
     c->w = subd_alpha_wt_from_q32(w1, &c->ovf);
     c->w2 = subd_alpha_wt_from_q32(2 * w1, &c->ovf);
-    c->cached_num = num2;
     return 1;
 }
 
@@ -378,7 +376,7 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
     for (l = 0; l < o->levels && c.status == SUBD_OK; l++) {
         int ok;
         c.level = l;
-        c.cached_num = INT64_MIN;
+        subd_alpha_kcache_reset(&c.kc);
         if (closed) ok = s2_closed(&c, p, t, n);
         else if (vc) ok = s2_open_vertex(&c, p, t, n);
         else ok = (n >= 3u) ? s2_open_edge(&c, p, t, n) : 1;

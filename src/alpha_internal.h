@@ -32,6 +32,22 @@ int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf);
 int subd_alpha_kernel_q32(uint32_t kernel, int32_t num, int32_t den, uint32_t level, int64_t s_q32,
                           int64_t *f_q32);
 
+/* The kernel value of one alpha numerator, cached (one home for alpha_curve.c's edge weights
+ * and alpha_surface.c's formula (3) weights): with no tags, or equal ones, the kernel runs
+ * once per level. subd_alpha_kcache_get gives f = subd_alpha_kernel_q32(o->kernel, num, den,
+ * level, s_q32) and checks 1 + f > 0, which every weight dividing by 1 + f needs
+ * (SUBD_ERR_PARAM otherwise; the kernel's own errors as they come); it runs the kernel only
+ * when num differs from the cached numerator, and then sets *fresh = 1 (the caller's weights
+ * derived from f are stale), else *fresh = 0 and *f is the cached value. Reset the cache
+ * whenever level, den or s_q32 change. */
+typedef struct subd_alpha_kcache {
+    int64_t num; /* INT64_MIN: nothing cached */
+    int64_t f;
+} subd_alpha_kcache;
+static inline void subd_alpha_kcache_reset(subd_alpha_kcache *c) { c->num = INT64_MIN; }
+int subd_alpha_kcache_get(subd_alpha_kcache *c, const subd_alpha_opts *o, int64_t num, int32_t den, uint32_t level,
+                          int64_t s_q32, int64_t *f, int *fresh);
+
 /* Common option checks (order <= max_order, levels, kernel, den, num, stiffness); *s_q32
  * receives the stiffness. */
 int subd_alpha_check_opts(const subd_alpha_opts *o, uint32_t max_order, int64_t *s_q32);

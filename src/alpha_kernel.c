@@ -12,22 +12,14 @@
  * Q32.32 from the turns num/(den 2^(n+1)) (rounded to 2^-32) times 2 pi in Q60; the result
  * is within a few 2^-32 (relative, cosh) of the true value, far below one float32 ulp.
  * Everything is integer arithmetic: the same bits on every target, and no float code at all
- * in the Q16.16 build (the float conversion below builds the IEEE bit pattern by hand).
+ * in the Q16.16 build (the float conversion, wide.h's, builds the IEEE bit pattern by hand).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "alpha_internal.h"
+#include "wide.h"
 
 #define TWOPI_Q60 INT64_C(0x6487ed5110b4611a) /* round(2 pi 2^60) */
 #define LN2_Q62 INT64_C(0x2c5c85fdf473de6b)   /* round(ln 2 2^62) */
-
-static void mul_u64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
-{
-    uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
-    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
-    *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-    *lo = (mid << 32) | (uint32_t)p00;
-}
 
 static uint64_t mag(int64_t a) { return a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a; }
 
@@ -42,46 +34,33 @@ static int64_t signed_result(uint64_t m, int neg, uint32_t *ovf)
 
 int64_t subd_alpha_mulq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf)
 {
-    uint64_t hi, lo, r;
     int neg = (a < 0) != (b < 0);
-    mul_u64(mag(a), mag(b), &hi, &lo);
     /* add 2^(shift-1) for rounding, with carry into hi */
-    r = lo + ((uint64_t)1 << (shift - 1u));
-    if (r < lo) hi++;
-    lo = r;
-    if ((hi >> shift) != 0) {
+    subd_u128 p = subd_u128_add64(subd_u128_mul(mag(a), mag(b)), (uint64_t)1 << (shift - 1u));
+    if ((p.hi >> shift) != 0) {
         *ovf |= 1u;
         return neg ? -INT64_MAX : INT64_MAX;
     }
-    return signed_result((hi << (64u - shift)) | (lo >> shift), neg, ovf);
+    return signed_result(subd_u128_shr(p, shift), neg, ovf);
 }
 
 int64_t subd_alpha_divq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf)
 {
-    uint64_t d = mag(b), hi, lo, rem, q = 0;
-    int neg = (a < 0) != (b < 0), i;
+    uint64_t d = mag(b), rem, q;
+    int neg = (a < 0) != (b < 0);
+    subd_u128 n;
     if (d == 0) {
         *ovf |= 1u;
         return 0;
     }
     /* numerator |a| * 2^shift as 128 bits */
-    lo = shift ? mag(a) << shift : mag(a);
-    hi = shift ? mag(a) >> (64u - shift) : 0;
-    if (hi >= d) {
+    n.lo = shift ? mag(a) << shift : mag(a);
+    n.hi = shift ? mag(a) >> (64u - shift) : 0;
+    if (n.hi >= d) {
         *ovf |= 1u;
         return neg ? -INT64_MAX : INT64_MAX;
     }
-    rem = hi;
-    for (i = 0; i < 64; i++) {
-        uint64_t carry = rem >> 63;
-        rem = (rem << 1) | (lo >> 63);
-        lo <<= 1;
-        q <<= 1;
-        if (carry || rem >= d) {
-            rem -= d;
-            q |= 1u;
-        }
-    }
+    q = subd_u128_div(n, d, &rem);
     /* round half away from zero: rem >= d - rem */
     if (rem >= d - rem) {
         if (q == UINT64_MAX) {
@@ -93,77 +72,11 @@ int64_t subd_alpha_divq(int64_t a, int64_t b, uint32_t shift, uint32_t *ovf)
     return signed_result(q, neg, ovf);
 }
 
-#if SUBD_FIXED /* conversions between Q32.32 and subd_real: one per arithmetic */
-subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf)
-{
-    if (q > INT64_MAX - 32768) {
-        *ovf |= 1u;
-        return INT32_MAX;
-    }
-    return subd_real_sat((q + 32768) >> 16, ovf);
-}
+/* The conversions live in wide.h: Q16.16 rounds the kernel's Q32.32 values half up (towards
+ * +infinity), unlike subd_real_from_q62 (half away from zero); see wide.h and test_wide.c. */
+subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf) { return subd_real_from_scaled_up(q, 32u, ovf); }
 
-int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf)
-{
-    (void)ovf;
-    return (int64_t)x * 65536;
-}
-#else
-static float alpha_float_from_bits(uint32_t u)
-{
-    union { float f; uint32_t u; } c;
-    c.u = u;
-    return c.f;
-}
-
-subd_real subd_alpha_q32_to_real(int64_t q, uint32_t *ovf)
-{
-    uint64_t u = mag(q), m;
-    uint32_t p = 63, sign = q < 0 ? 0x80000000u : 0u;
-    (void)ovf;
-    if (u == 0) return 0.0f;
-    while (!((u >> p) & 1u)) p--;
-    if (p > 23u) {
-        uint32_t sh = p - 23u;
-        uint64_t rest = u & (((uint64_t)1 << sh) - 1u), half = (uint64_t)1 << (sh - 1u);
-        m = u >> sh;
-        if (rest > half || (rest == half && (m & 1u))) m++;
-        if (m == ((uint64_t)1 << 24)) {
-            m >>= 1;
-            p++;
-        }
-    } else {
-        m = u << (23u - p);
-    }
-    /* value = m 2^(p - 23) 2^-32 with m in [2^23, 2^24): exponent p - 32 in -32..31 */
-    return alpha_float_from_bits(sign | ((p + 95u) << 23) | ((uint32_t)m & 0x7fffffu));
-}
-
-int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf)
-{
-    uint32_t b = subd_real_bits(x), e = (b >> 23) & 0xffu;
-    uint64_t m = (b & 0x7fffffu) | 0x800000u, v;
-    int neg = (b >> 31) != 0;
-    if (e == 0xffu) {
-        *ovf |= 1u;
-        return 0;
-    }
-    if (e == 0) return 0; /* zero or subnormal: far below 2^-32 */
-    /* x = m 2^(e - 150); Q32 = m 2^(e - 118) */
-    if (e >= 118u) {
-        if (e - 118u > 38u) {
-            *ovf |= 1u;
-            return 0;
-        }
-        v = m << (e - 118u);
-    } else {
-        uint32_t sh = 118u - e;
-        if (sh > 40u) return 0;
-        v = (m + ((uint64_t)1 << (sh - 1u))) >> sh;
-    }
-    return neg ? -(int64_t)v : (int64_t)v;
-}
-#endif
+int64_t subd_alpha_real_to_q32(subd_real x, uint32_t *ovf) { return subd_real_to_q32(x, ovf); }
 
 /* e^r for |r| <= 1/2 in Q62 (r in Q62): Taylor series, 28 terms. */
 static int64_t exp_q62(int64_t r, uint32_t *ovf)
@@ -244,6 +157,24 @@ int subd_alpha_kernel_value(uint32_t kernel, int32_t num, int32_t den, uint32_t 
     v = subd_alpha_q32_to_real(fq, &ovf);
     if (ovf) return SUBD_ERR_RANGE;
     *f = v;
+    return SUBD_OK;
+}
+
+int subd_alpha_kcache_get(subd_alpha_kcache *c, const subd_alpha_opts *o, int64_t num, int32_t den, uint32_t level,
+                          int64_t s_q32, int64_t *f, int *fresh)
+{
+    int st;
+    *fresh = 0;
+    if (num == c->num) {
+        *f = c->f;
+        return SUBD_OK;
+    }
+    st = subd_alpha_kernel_q32(o->kernel, (int32_t)num, den, level, s_q32, f);
+    if (st == SUBD_OK && *f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
+    if (st != SUBD_OK) return st;
+    c->num = num;
+    c->f = *f;
+    *fresh = 1;
     return SUBD_OK;
 }
 

@@ -221,24 +221,21 @@ typedef struct ds_weights {
     const subd_alpha_opts *o;
     int64_t s_q32;
     uint32_t level;
-    int64_t num; /* INT64_MIN: nothing cached */
+    subd_alpha_kcache kc; /* the kernel value of the last face's alpha */
     subd_alpha_wt wa, wb;
 } ds_weights;
 
 static int ds_weights_for(ds_weights *w, int32_t num, uint32_t *ovf)
 {
     int64_t f, u, a, b;
-    int st;
-    if (num == w->num) return SUBD_OK;
-    st = subd_alpha_kernel_q32(w->o->kernel, num, w->o->alpha_den, w->level, w->s_q32, &f);
-    if (st == SUBD_OK && f <= -SUBD_Q32_ONE) st = SUBD_ERR_PARAM; /* 1 + f_n <= 0 */
-    if (st != SUBD_OK) return st;
+    int st, fresh;
+    st = subd_alpha_kcache_get(&w->kc, w->o, num, w->o->alpha_den, w->level, w->s_q32, &f, &fresh);
+    if (st != SUBD_OK || !fresh) return st;
     u = SUBD_Q32_ONE + f;
     a = subd_alpha_divq(f, u, 32, ovf);     /* f / (1 + f)        */
     b = subd_alpha_divq(a, 2 * u, 32, ovf); /* f / (2 (1 + f)^2)  */
     w->wa = subd_alpha_wt_from_q32(a, ovf);
     w->wb = subd_alpha_wt_from_q32(b, ovf);
-    w->num = num;
     return SUBD_OK;
 }
 
@@ -394,7 +391,7 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
     w.o = o;
     w.s_q32 = s_q32;
     w.level = 0;
-    w.num = INT64_MIN;
+    subd_alpha_kcache_reset(&w.kc);
     w.wa = w.wb = 0;
     for (t = 0; t < o->levels * (o->order - 1u); t++) {
         ds_stats nx;
@@ -415,7 +412,7 @@ int subd_alpha_surface(subd_arena *arena, const subd_mesh *in, const subd_alpha_
         }
         if (j == 0u) {
             w.level = t / (o->order - 1u);
-            w.num = INT64_MIN;
+            subd_alpha_kcache_reset(&w.kc);
             st = ds_positions(&prev, &w, prev_vt, prev_tags, cur.pos, &ovf);
             if (st != SUBD_OK) break;
             if (!ovf) ds_faces(&prev, &cur);

@@ -24,44 +24,27 @@
 
 #define N_BITS 10 /* Q16.16: significant bits kept per normal component */
 
-#if SUBD_FIXED /* the algorithm differs: Q16.16 differences are pre-shifted so products stay in int64 */
-/* The shift that brings the differences of the face's corners [s, e) to p0 below 2^28, so
- * their cross products and the fan's sum stay in int64. One shift for the whole face, so
- * the fan's terms add up exactly. */
+/* The shift that brings the differences of the face's corners [s, e) to p0 below 2^28
+ * (Q16.16; float32: none, vec3w.h's span), so their cross products and the fan's sum stay in
+ * int64. One shift for the whole face, so the fan's terms add up exactly. */
 static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd_real *p0)
 {
     uint64_t big = 0;
     uint32_t c;
     for (c = s; c < e; c++) {
         subd_wide d[3];
-        uint64_t x;
         subd_w3_diff(&m->pos[3u * m->corner_vert[c]], p0, d);
-        x = subd_w3_maxabs(d);
-        if (x > big) big = x;
+        big = subd_w3_span_add(big, d);
     }
-    return big >= ((uint64_t)1 << 28) ? (int32_t)subd_bitlen64(big) - 28 : 0;
+    return subd_w3_span_shift(big, 28u);
 }
+
 /* r = (p - p0) * 2^-sh */
 static void corner_diff(const subd_real *p, const subd_real *p0, int32_t sh, subd_wide *r)
 {
     subd_w3_diff(p, p0, r);
-    subd_w3_shift(r, r, sh);
+    subd_w3_span_apply(r, r, sh);
 }
-#else
-static int32_t face_shift(const subd_mesh *m, uint32_t s, uint32_t e, const subd_real *p0)
-{
-    (void)m;
-    (void)s;
-    (void)e;
-    (void)p0;
-    return 0; /* float32 has the range */
-}
-static void corner_diff(const subd_real *p, const subd_real *p0, int32_t sh, subd_wide *r)
-{
-    (void)sh;
-    subd_w3_diff(p, p0, r);
-}
-#endif
 
 /* Normal of face f by Newell's method over the fan from its first corner, rescaled by
  * subd_w3_fit (float32: largest component 1; Q16.16: at most N_BITS bits per component, so

@@ -29,4 +29,11 @@ void subd_loop_limit_vertex(const subd_mesh *m, subd_loop_boundary b, const subd
  * (only those in `flags` allowed), a mesh with adjacency, triangles only (SUBD_ERR_NOT_TRIANGLES
  * with diag.face). Returns SUBD_OK or the status (diag set). Written by loop.c. */
 int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d);
+/* The limit mask of a boundary or crease vertex v on one of its two curve neighbours u, as
+ * the weight num/den (den > 0): the paper's rule by whether v and u are regular (loop_rules.h;
+ * the six configurations derived at the top of loop_limit.c: 1/6, 7/48, 1/5, 7/40), the
+ * B-spline rule's 1/6 whatever they are. Written by loop_limit.c; used by its positions and
+ * by pia_fast.c (the rows of L its Gauss-Seidel sweeps apply). */
+void subd_loop_limit_curve_frac(subd_loop_boundary b, int rv, int ru, int32_t *num, int32_t *den);
+
 #endif

@@ -115,6 +115,7 @@
 #include "loop_rules.h"
 #include "mesh_internal.h"
 #include "vec3w.h"
+#include "wide.h"
 
 /* Vertex classes: loop_rules.h (the one classification of loop.c, this file and pia.c). */
 typedef loop_vinfo lim_vert;
@@ -133,31 +134,21 @@ static int lim_regular(const subd_mesh *m, uint32_t v)
 /* ------------------------------------------------------------------------------------ */
 /* Interior weights in 64-bit integer arithmetic.                                         */
 
-/* round(a * b / 2^62) for a, b < 2^63, via a 128-bit product from 32-bit halves. */
+/* round(a * b / 2^62) for a, b < 2^63 (wide.h's 128-bit product), rounded half up. */
 static uint64_t lim_mul_q62(uint64_t a, uint64_t b)
 {
-    uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
-    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
-    uint64_t hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-    uint64_t lo = (mid << 32) | (uint32_t)p00;
-    return ((hi << 2) | (lo >> 62)) + ((lo >> 61) & 1u);
+    return subd_u128_shr_round(subd_u128_mul(a, b), 62u);
 }
 
-/* round(num * 2^62 / den) by restoring long division, for num < 2 den and 0 < den < 2^63. */
+/* round(num * 2^62 / den), half up, for num < 2 den and 0 < den < 2^63 (wide.h's division). */
 static uint64_t lim_div_q62(uint64_t num, uint64_t den)
 {
-    uint64_t q = 0, r = num;
-    uint32_t i;
-    for (i = 0; i < 63u; i++) {
-        q <<= 1;
-        if (r >= den) {
-            r -= den;
-            q |= 1u;
-        }
-        r <<= 1;
-    }
-    return q + (r >= den ? 1u : 0u);
+    uint64_t rem, q;
+    subd_u128 n;
+    n.hi = num >> 2;
+    n.lo = num << 62;
+    q = subd_u128_div(n, den, &rem);
+    return q + (rem >= den - rem ? 1u : 0u);
 }
 
 /* Position weights and the affine combinations v + sum w_i (p_i - v) they weight.
@@ -269,24 +260,33 @@ static lim_w lim_dart_weight(const lim_dart *s, uint32_t m)
 /* ------------------------------------------------------------------------------------ */
 /* Boundary-curve limit weights (see the derivation at the top).                          */
 
+void subd_loop_limit_curve_frac(subd_loop_boundary b, int rv, int ru, int32_t *num, int32_t *den)
+{
+    /* [v regular][u regular]: (R; . E) 7/48, (R; . R) 1/6, (E; . E) 7/40, (E; . R) 1/5 */
+    static const int32_t tab[2][2][2] = {{{7, 40}, {1, 5}}, {{7, 48}, {1, 6}}};
+    if (b == SUBD_LOOP_BOUNDARY_BSPLINE) {
+        *num = 1;
+        *den = 6;
+        return;
+    }
+    *num = tab[rv != 0][ru != 0][0];
+    *den = tab[rv != 0][ru != 0][1];
+}
+
 static void lim_curve_weights(const subd_mesh *m, subd_loop_boundary b, const lim_vert *c,
                               lim_w *w0, lim_w *w1)
 {
-    int rv, r0, r1;
-    if (b == SUBD_LOOP_BOUNDARY_BSPLINE) {
-        *w0 = *w1 = LIM_W_FRAC(1, 6);
-        return;
+    int32_t n0, d0, n1, d1;
+    int rv = 0, r0 = 0, r1 = 0;
+    if (b != SUBD_LOOP_BOUNDARY_BSPLINE) { /* the B-spline rule needs no classes */
+        rv = (int)c->regular;
+        r0 = lim_regular(m, c->c0);
+        r1 = lim_regular(m, c->c1);
     }
-    rv = (int)c->regular;
-    r0 = lim_regular(m, c->c0);
-    r1 = lim_regular(m, c->c1);
-    if (rv) {
-        *w0 = r0 ? LIM_W_FRAC(1, 6) : LIM_W_FRAC(7, 48);
-        *w1 = r1 ? LIM_W_FRAC(1, 6) : LIM_W_FRAC(7, 48);
-    } else {
-        *w0 = r0 ? LIM_W_FRAC(1, 5) : LIM_W_FRAC(7, 40);
-        *w1 = r1 ? LIM_W_FRAC(1, 5) : LIM_W_FRAC(7, 40);
-    }
+    subd_loop_limit_curve_frac(b, rv, r0, &n0, &d0);
+    subd_loop_limit_curve_frac(b, rv, r1, &n1, &d1);
+    *w0 = LIM_W_FRAC(n0, d0);
+    *w1 = LIM_W_FRAC(n1, d1);
 }
 
 static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,

@@ -4,6 +4,7 @@
  * that walk a mesh or do 64-bit integer arithmetic. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_rules.h"
+#include "wide.h"
 
 int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h)
 {
@@ -66,23 +67,13 @@ void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
     o->regular = loop_regular_of(o->cls, n, o->boundary, at[0], at[1]);
 }
 
-/* round(A^2 / 2^66) for A < 2^64, from four 32x32 -> 64-bit products. */
-static uint64_t sq_q66(uint64_t a)
-{
-    uint64_t a0 = (uint32_t)a, a1 = a >> 32;
-    uint64_t p00 = a0 * a0, p01 = a0 * a1, p11 = a1 * a1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p01;
-    uint64_t hi = p11 + (p01 >> 32) + (p01 >> 32) + (mid >> 32);
-    return (hi >> 2) + ((hi >> 1) & 1u);
-}
-
 /* A = 4 (3/8 + c/4) = 3/2 + c lies in [1/2, 5/2] (as an unsigned value * 2^62 < 2^64),
- * (A/4)^2 = A^2 / 2^66 in Q62. */
+ * (A/4)^2 = A^2 / 2^66 in Q62, rounded half up. */
 uint64_t subd_loop_nbeta_q62(uint32_t n)
 {
     int64_t c = subd_cos_turns_q62(1, (int32_t)n);
     uint64_t a = ((uint64_t)3 << 61) + (uint64_t)c; /* c >= -2^62 > -3 * 2^61: no wrap */
-    return ((uint64_t)5 << 59) - sq_q66(a);         /* >= 0: (A/4)^2 <= 25/64 < 5/8 */
+    return ((uint64_t)5 << 59) - subd_u128_shr_round(subd_u128_mul(a, a), 66u); /* >= 0: (A/4)^2 <= 25/64 < 5/8 */
 }
 
 static loop_weights weights_calc(uint32_t n, uint32_t *ovf)

@@ -47,8 +47,10 @@
  * iteration is a forward sweep y = K^-1 r, a backward sweep z = K'^-1 D y and Lo p, each half
  * an application of L (the strictly lower or upper neighbours of every row), and counts as
  * 1.5 iterations (`iterations` is the work in applications of L, rounded up; max_iter bounds
- * it). The sweeps use loop_limit.c's weights recomputed here (chi_n = 1 / w_v, the curve
- * masks by regularity), equal to L's up to rounding; a difference only perturbs the L V
+ * it). The sweeps use loop_limit.c's curve masks themselves (subd_loop_limit_curve_frac, by
+ * the regularity pia_classify records) and chi_n = 1 / w_v recomputed here in subd_real
+ * (loop_limit.c's own Q62 chi would round differently and change the iterates), equal to
+ * L's up to rounding; a difference only perturbs the L V
  * recurrence, which the true error at convergence checks (safeguards below). A uniform phase,
  * where every row has the same diagonal and CG weight (the icosahedron, torus_tri, the
  * hexfan's boundary), keeps plain CG: the data's symmetry that CG exploits there (1
@@ -88,6 +90,7 @@
 #include "loop_rules.h"
 #include "mesh_internal.h"
 #include "pia_internal.h"
+#include "wide.h"
 
 /* ------------------------------------------------------------------------------------ */
 /* Conjugate gradients (FAST)                                                             */
@@ -129,7 +132,7 @@ static SUBD_NOINLINE void pia_classify(pia_state *s)
         n = c.valence;
         ns = c.nsharp;
         if (ns == 2u) {
-            s->cls[v] = PIA_CLS_CURVE;
+            s->cls[v] = (uint8_t)(PIA_CLS_CURVE | (c.regular ? PIA_CLS_REGULAR : 0));
             if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) s->w[v] = SUBD_REAL_ONE;
             else s->w[v] = subd_from_int(c.regular ? 48 : 35, &s->ovf);
             lo = curve;
@@ -232,9 +235,9 @@ static uint64_t pia_norm(pia_dotv x, int32_t *e)
 /* x / y as a subd_real (truncated); *ok = 0 when x < 0, y <= 0 or the ratio does not fit. */
 static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
 {
-    uint64_t mx, my, q = 0;
+    uint64_t mx, my, q, rem;
     int32_t ex, ey, sh;
-    uint32_t i;
+    subd_u128 n;
     if (x.hi < 0 || y.hi < 0 || (y.hi == 0 && y.lo == 0u)) {
         *ok = 0;
         return 0;
@@ -242,15 +245,10 @@ static subd_real pia_ratio(pia_dotv x, pia_dotv y, int *ok)
     if (x.hi == 0 && x.lo == 0u) return 0;
     mx = pia_norm(x, &ex);
     my = pia_norm(y, &ey);
-    /* restoring division: q = floor(mx / my * 2^30), mx / my in (1/2, 2), r < 2 my < 2^63 */
-    for (i = 0; i < 31u; i++) {
-        q <<= 1;
-        if (mx >= my) {
-            mx -= my;
-            q |= 1u;
-        }
-        mx <<= 1;
-    }
+    /* q = floor(mx / my * 2^30) < 2^31 (mx / my in (1/2, 2)), by wide.h's long division */
+    n.hi = mx >> 34;
+    n.lo = mx << 30;
+    q = subd_u128_div(n, my, &rem);
     /* value = q * 2^(ex - ey - 30); Q16.16 raw = q * 2^(ex - ey - 14) */
     sh = ex - ey - 14;
     if (sh >= 0) {
@@ -410,15 +408,14 @@ static void pia_curve_nbrs(const subd_mesh *m, uint32_t v, uint32_t *c)
         c[ns] = m->corner_vert[subd_he_prev(m, last)];
 }
 
-/* Weight of curve neighbour u in curve vertex v's row of L (lim_curve_weights). */
+/* Weight of curve neighbour u in curve vertex v's row of L: loop_limit.c's mask, by the
+ * regularity pia_classify recorded (a regular vertex is always a curve vertex). */
 static subd_real pia_curve_w(const pia_state *s, uint32_t v, uint32_t u)
 {
-    int rv, ru;
-    if (s->o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) return SUBD_REAL_FRAC(1, 6);
-    rv = s->w[v] == SUBD_REAL_FRAC(48, 1);
-    ru = s->cls[u] == PIA_CLS_CURVE && s->w[u] == SUBD_REAL_FRAC(48, 1);
-    if (rv) return ru ? SUBD_REAL_FRAC(1, 6) : SUBD_REAL_FRAC(7, 48);
-    return ru ? SUBD_REAL_FRAC(1, 5) : SUBD_REAL_FRAC(7, 40);
+    int32_t num, den;
+    subd_loop_limit_curve_frac(s->o->boundary, (s->cls[v] & PIA_CLS_REGULAR) != 0u, (s->cls[u] & PIA_CLS_REGULAR) != 0u,
+                               &num, &den);
+    return SUBD_REAL_FRAC(num, den);
 }
 
 /* Vertex v's row of A (L restricted to the set PIA_SET_CURVE or PIA_SET_SMOOTH, v in it): the diagonal, returned, and in
@@ -435,14 +432,14 @@ static subd_real pia_half_row(pia_state *s, uint32_t set, uint32_t v, int upper,
     uint32_t k, i, n = 0;
     const uint8_t want = set == PIA_SET_CURVE ? PIA_CLS_CURVE : PIA_CLS_SMOOTH; /* the set's class */
     for (k = 0; k < 3u; k++) acc[k] = subd_acc_zero();
-    if (s->cls[v] == PIA_CLS_CURVE) {
+    if (pia_cls(s, v) == PIA_CLS_CURVE) {
         uint32_t c[2];
         pia_curve_nbrs(m, v, c);
         d = SUBD_REAL_ONE;
         for (i = 0; i < 2u; i++) {
             subd_real wu = pia_curve_w(s, v, c[i]);
             d = subd_sub(d, wu, &s->ovf);
-            if (!x || (upper ? c[i] <= v : c[i] >= v) || s->cls[c[i]] != want) continue;
+            if (!x || (upper ? c[i] <= v : c[i] >= v) || pia_cls(s, c[i]) != want) continue;
             for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], wu, x[3u * c[i] + k]);
         }
     } else {

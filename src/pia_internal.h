@@ -14,8 +14,10 @@
 #define PIA_MAX_VALENCE 4096u /* larger valences get this valence's CG weight             */
 #define PIA_WCACHE 20u        /* CG weights of valences below this are computed once      */
 
-/* Vertex classes (FAST), mirroring loop_limit.c's classification by sharp edges. */
-enum { PIA_CLS_FIXED = 0, PIA_CLS_CURVE = 1, PIA_CLS_SMOOTH = 2 };
+/* Vertex classes (FAST), mirroring loop_limit.c's classification by sharp edges; a curve
+ * vertex that is regular (loop_rules.h) also carries PIA_CLS_REGULAR, which picks its limit
+ * masks (subd_loop_limit_curve_frac). pia_cls() is the class without the flag. */
+enum { PIA_CLS_FIXED = 0, PIA_CLS_CURVE = 1, PIA_CLS_SMOOTH = 2, PIA_CLS_MASK = 3, PIA_CLS_REGULAR = 4 };
 
 /* Vertex sets a phase moves and measures. */
 enum { PIA_SET_ALL, PIA_SET_BOUNDARY, PIA_SET_INTERIOR, PIA_SET_CURVE, PIA_SET_SMOOTH, PIA_SET_MOVABLE };
@@ -55,6 +57,8 @@ typedef struct pia_state {
     int lv_true;
 } pia_state;
 
+static inline uint32_t pia_cls(const pia_state *s, uint32_t v) { return s->cls[v] & (uint32_t)PIA_CLS_MASK; }
+
 /* 1 if vertex v belongs to the set. */
 static inline int pia_in_set(const pia_state *s, uint32_t v, uint32_t set)
 {
@@ -62,9 +66,9 @@ static inline int pia_in_set(const pia_state *s, uint32_t v, uint32_t set)
     switch (set) {
     case PIA_SET_BOUNDARY: return bnd;
     case PIA_SET_INTERIOR: return !bnd;
-    case PIA_SET_CURVE: return s->cls[v] == PIA_CLS_CURVE;
-    case PIA_SET_SMOOTH: return s->cls[v] == PIA_CLS_SMOOTH;
-    case PIA_SET_MOVABLE: return s->cls[v] != PIA_CLS_FIXED;
+    case PIA_SET_CURVE: return pia_cls(s, v) == PIA_CLS_CURVE;
+    case PIA_SET_SMOOTH: return pia_cls(s, v) == PIA_CLS_SMOOTH;
+    case PIA_SET_MOVABLE: return pia_cls(s, v) != PIA_CLS_FIXED;
     default: return 1;
     }
 }

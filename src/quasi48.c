@@ -438,7 +438,10 @@ static uint32_t q48_pass2(const subd_mesh *o, uint32_t v, uint32_t nv_old, int c
  * moves vertices. Q16.16: exact int64 arithmetic after one common shift of every edge
  * vector of the fan (truncating toward zero, so sign changes commute with it) chosen so
  * that no sum overflows: components below 2^b with 2b + 1 + bitlen(faces) <= 62. float32:
- * the subd_w3 products in their fixed order; non-finite only for coordinates near 1e19. */
+ * the subd_w3 products in their fixed order; non-finite only for coordinates near 1e19.
+ * Why the two #ifs: the Q16.16 algorithm needs that shift, found by a first walk of the
+ * fan, which float32 does not need (vec3w.h's subd_w3_span_* would express both builds in
+ * one text, as in crease.c's face_shift; left for after the ring-walk rework of this file). */
 static void q48_vertex_normal(const subd_mesh *m, uint32_t v, subd_wide *n)
 {
     const subd_real *pv = m->pos + 3u * v;
@@ -481,38 +484,18 @@ static void q48_vertex_normal(const subd_mesh *m, uint32_t v, subd_wide *n)
  * rescaled to 20 bits, direction kept to 2^-19 (subd_w3_normalize), so d . n < 2^54 and
  * n . n < 2^42; (d . n) n_j / (n . n) is formed as q n_j + round(r n_j / n . n) from the
  * truncating quotient q and remainder r, exact but for that one rounding; a result outside
- * the Q16.16 range sets *ovf (a component can move further than the displacement's).
- * float32: n is scaled to max |n_k| = 1 first, so n . n is in [1, 3]. */
+ * the Q16.16 range sets *ovf (a component can move further than the displacement's);
+ * vec3w.h's subd_w3_add_ratio. float32: n is scaled to max |n_k| = 1 first, so n . n is
+ * in [1, 3]. */
 static void q48_project_normal(subd_real *p, const subd_real *t, const subd_wide *n, uint32_t *ovf)
 {
     subd_wide u[3], d[3], dn, nn;
-    uint32_t k;
     subd_w3_normalize(n, u, 20u);
     nn = subd_w3_dot(u, u);
     if (!(nn > 0)) return; /* zero normal (faces cancel or are degenerate): v stays */
     subd_w3_diff(t, p, d);
     dn = subd_w3_dot(d, u);
-#if SUBD_FIXED
-    {
-        int64_t q = dn / nn, r = dn % nn;
-        for (k = 0; k < 3u; k++) {
-            int64_t x = (int64_t)p[k] + q * u[k] + subd_div_round(r * u[k], nn);
-            if (x > INT32_MAX || x < INT32_MIN) {
-                *ovf |= 1u;
-                return;
-            }
-            p[k] = (subd_real)x;
-        }
-    }
-#else
-    {
-        float s = dn / nn;
-        for (k = 0; k < 3u; k++) {
-            float m = s * u[k];
-            p[k] = subd_chk(p[k] + m, ovf);
-        }
-    }
-#endif
+    subd_w3_add_ratio(p, dn, nn, u, ovf);
 }
 
 /* Normal mode for old boundary vertex v: the interior rule's target (every new neighbour),

@@ -433,25 +433,10 @@ static int ex_ramp_wants(const ex_ctx *c, const uint32_t *v, uint32_t k)
     return subd_wide_mulu(k + 1u, subd_wide_diff(hi, lo)) <= subd_wide_mulu(c->max, subd_wide_diff(x, lo));
 }
 
-/* (q - point).normal >= 0. */
+/* (q - point).normal >= 0, exactly in Q16.16 (vec3w.h). */
 static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_real *nrm)
 {
-#if SUBD_FIXED /* the algorithm differs: an exact sign of a sum of three 2^63 products */
-    /* Each product is below 2^63 in magnitude; the sum of three is kept as hi * 2^32 + lo
-     * with 0 <= lo < 2^32, so its sign is the sign of hi. */
-    int64_t hi = 0, lo = 0;
-    uint32_t i;
-    for (i = 0; i < 3u; i++) {
-        int64_t prod = ((int64_t)q[i] - pt[i]) * (int64_t)nrm[i];
-        hi += prod >> 32;
-        lo += prod & (int64_t)0xffffffff;
-    }
-    hi += lo >> 32;
-    return hi >= 0;
-#else
-    float s0 = (q[0] - pt[0]) * nrm[0], s1 = (q[1] - pt[1]) * nrm[1], s2 = (q[2] - pt[2]) * nrm[2];
-    return s0 + s1 + s2 >= 0.0f;
-#endif
+    return subd_w3_side(q, pt, nrm);
 }
 
 #if SUBD_FIXED /* Q32.32 interpolant, see ex_lin */

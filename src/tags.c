@@ -25,6 +25,7 @@
 #include "mesh_internal.h"
 #include "subd_alpha.h"
 #include "text.h"
+#include "wide.h"
 
 /* Parses an element number field [s, e): SUBD_OK with *v 0-based, SUBD_ERR_PARSE when it is
  * not all digits, SUBD_ERR_INDEX when it is outside 1..count. */
@@ -40,20 +41,10 @@ static int tag_index(const char *s, const char *e, uint32_t count, uint32_t *v)
     return SUBD_OK;
 }
 
-static int64_t gcd64(int64_t a, int64_t b)
-{
-    if (a < 0) a = -a;
-    while (b) {
-        int64_t r = a % b;
-        a = b;
-        b = r;
-    }
-    return a;
-}
-
-/* An alpha value [s, e) as a reduced fraction *num / *den of a turn (den >= 1): "N" or "N/D"
- * (|N| <= 10^9, D in 1..10^9), or "Xdeg" (degrees, optional sign, at most 4 decimals,
- * |X| <= 36000), the syntax of the tool's --alpha. SUBD_ERR_PARSE otherwise. */
+/* An alpha value [s, e) as a reduced fraction *num / *den of a turn (den >= 1), in the one
+ * grammar of subd_tags.h (a tag file's A and the tool's --alpha, by subd_tags_parse_alpha):
+ * "N" or "N/D" (|N| <= 10^9, D in 1..10^9), or "Xdeg" (degrees, optional sign, at most 4
+ * decimals, no exponent, |X| <= 36000). SUBD_ERR_PARSE otherwise. */
 static int alpha_value(const char *s, const char *e, int64_t *num, int64_t *den)
 {
     int32_t n, d = 1;
@@ -91,10 +82,30 @@ static int alpha_value(const char *s, const char *e, int64_t *num, int64_t *den)
         *num = n;
         *den = d;
     }
-    g = gcd64(*num, *den);
+    g = (int64_t)subd_gcd64(*num, *den);
     *num /= g;
     *den /= g;
     return SUBD_OK;
+}
+
+int subd_tags_parse_alpha(const char *text, uint32_t len, int32_t *num, int32_t *den)
+{
+    int64_t n, d;
+    int st;
+    if (!text || !num || !den) return SUBD_ERR_PARAM;
+    st = alpha_value(text, text + len, &n, &d);
+    if (st != SUBD_OK) return st;
+    *num = (int32_t)n; /* |n| <= 10^9 and 1 <= d <= 10^9 after the grammar's bounds */
+    *den = (int32_t)d;
+    return SUBD_OK;
+}
+
+int32_t subd_tags_common_den(int32_t a, int32_t b)
+{
+    int64_t l;
+    if (a < 1 || b < 1) return 0;
+    l = (int64_t)a / (int64_t)subd_gcd64(a, b) * b; /* <= (2^31 - 1)^2 < 2^62 */
+    return l <= INT32_MAX ? (int32_t)l : 0;
 }
 
 /* Where subd_tags_alpha puts the values (den > 0), or NULL. */
@@ -168,8 +179,7 @@ static int tags_pass(const char *buf, uint32_t len, const subd_mesh *m, subd_mes
         }
         if (alpha || falpha) {
             int32_t *dst = alpha ? (af ? af->vnum : 0) : (af ? af->fnum : 0);
-            int64_t g = gcd64(r->alpha_den, ad), l = r->alpha_den ? r->alpha_den / g * ad : 0;
-            r->alpha_den = (l > 0 && l <= INT32_MAX) ? (int32_t)l : 0; /* 0: no int32 common den */
+            r->alpha_den = subd_tags_common_den(r->alpha_den, (int32_t)ad); /* 0: no int32 common den */
             if (write && dst) dst[v[0]] = (int32_t)an;
             if (alpha) r->vertex_alphas++;
             else r->face_alphas++;

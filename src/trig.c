@@ -18,7 +18,8 @@
  *
  * Fixed point: unsigned Q63 (value * 2^63; 1.0 = 2^63 fits). a/den is formed as
  * t = floor(a * 2^64 / den) by two 64/32-bit long-division steps, x = t * (pi/2) with a
- * 64x64->128-bit product built from 32-bit halves (no __int128, which 32-bit ARM lacks).
+ * 64x64->128-bit product built from 32-bit halves (no __int128, which 32-bit ARM lacks):
+ * both from wide.h.
  * sin and cos are the Taylor series evaluated by Horner's rule on x^2:
  *   sin x = x (1 - x^2/(2*3) (1 - x^2/(4*5) (1 - ... x^2/(20*21)))),
  *   cos x =    1 - x^2/(1*2) (1 - x^2/(3*4) (1 - ... x^2/(21*22))).
@@ -36,27 +37,16 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
+#include "wide.h"
 
 #define ONE_Q63 ((uint64_t)1 << 63)
 #define PIO2_Q63 UINT64_C(0xc90fdaa22168c235)
 #define SQRT12_Q63 UINT64_C(0x5a827999fcef3242)
 
-/* Full 128-bit product of two 64-bit values from four 32x32->64 products. */
-static void mul_64x64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
-{
-    uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
-    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
-    *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-    *lo = (mid << 32) | (uint32_t)p00;
-}
-
 /* round(a * b / 2^63) for a, b <= 2^63 (Q63 product, rounded half up). */
 static uint64_t mul_q63(uint64_t a, uint64_t b)
 {
-    uint64_t hi, lo;
-    mul_64x64(a, b, &hi, &lo);
-    return ((hi << 1) | (lo >> 63)) + ((lo >> 62) & 1u);
+    return subd_u128_shr_round(subd_u128_mul(a, b), 63u);
 }
 
 /* y = 1 - x2 * y / c, rounded: the Horner step of both series. */
@@ -106,13 +96,13 @@ static void sincos_q62(int32_t num, int32_t den, int64_t *c, int64_t *s)
         cp = SQRT12_Q63;
         sp = SQRT12_Q63;
     } else {
-        uint64_t hi, lo, rem, x;
-        /* t = floor(a * 2^64 / den) < 2^63, by long division in two 32-bit digits */
-        hi = ((uint64_t)a << 32) / (uint64_t)d;
-        rem = ((uint64_t)a << 32) % (uint64_t)d;
-        t = (hi << 32) | ((rem << 32) / (uint64_t)d);
-        mul_64x64(t, PIO2_Q63, &hi, &lo);
-        x = hi + (lo >> 63); /* (pi/2) * a/den in Q63, <= pi/4 */
+        uint64_t rem, x;
+        subd_u128 n;
+        /* t = floor(a * 2^64 / den) < 2^63 (a < den < 2^31: two 32-bit digit steps) */
+        n.hi = (uint64_t)a;
+        n.lo = 0;
+        t = subd_u128_div(n, (uint64_t)d, &rem);
+        x = subd_u128_shr_round(subd_u128_mul(t, PIO2_Q63), 64u); /* (pi/2) * a/den in Q63, <= pi/4 */
         cp = cos_q63(x);
         sp = (3 * a == d) ? ONE_Q63 / 2u : sin_q63(x);
     }
@@ -139,37 +129,13 @@ int64_t subd_sin_turns_q62(int32_t num, int32_t den)
     return s;
 }
 
+/* Q16.16 rounds ties away from zero (subd_real.h), so a negated value rounds to the negated
+ * result; float32 is correctly rounded (wide.h). |q| <= 2^63 gives at most 2^17: no
+ * saturation. */
 subd_real subd_real_from_q62(int64_t q)
 {
-    uint64_t u = q < 0 ? 0u - (uint64_t)q : (uint64_t)q;
-#if SUBD_FIXED
-    /* Q62 -> Q16: drop 46 bits, rounding half away from zero; |q| <= 2^63 gives <= 2^17. */
-    int64_t m = (int64_t)((u + ((uint64_t)1 << 45)) >> 46);
-    return (subd_real)(q < 0 ? -m : m);
-#else
-    /* Correctly rounded (nearest, ties to even) float32 of q * 2^-62, built from its bit
-     * pattern: |q| >= 1 means the value is >= 2^-62, always a normal float. */
-    union { uint32_t u; float f; } c;
-    uint32_t blen = 0, sig, bits;
-    uint64_t v = u;
-    int32_t e2;
-    if (u == 0u) return 0.0f;
-    while (v) { blen++; v >>= 1; }
-    e2 = (int32_t)blen - 1 - 62;
-    if (blen <= 24u) {
-        sig = (uint32_t)(u << (24u - blen));
-    } else {
-        uint32_t sh = blen - 24u;
-        uint64_t rest = u & (((uint64_t)1 << (sh - 1u)) - 1u);
-        uint32_t rb = (uint32_t)(u >> (sh - 1u)) & 1u;
-        sig = (uint32_t)(u >> sh);
-        if (rb && (rest || (sig & 1u))) sig++;
-    }
-    bits = ((uint32_t)(e2 + 126) << 23) + sig;
-    if (q < 0) bits |= 0x80000000u;
-    c.u = bits;
-    return c.f;
-#endif
+    uint32_t ovf = 0;
+    return subd_real_from_scaled_away(q, 62u, &ovf);
 }
 
 subd_real subd_cos_turns(int32_t num, int32_t den)

@@ -28,10 +28,13 @@
  *    the product rounded into a temporary, then the sum.
  *  - subd_wide_mulu(n, x) = n * x: Q16.16 exact while |x| < 2^31 and n < 2^32; float32 one
  *    rounding. subd_wide_of(x): x widened (exact in both).
- * All but subd_w3_unit are static inline; none has side effects; o may alias t. */
+ *  - subd_w3_span_*, subd_w3_side, subd_w3_add_ratio: see their comments below.
+ * All but subd_w3_unit are static inline; none has side effects but subd_w3_add_ratio's on
+ * p and *ovf; o may alias t. */
 #ifndef SUBD_VEC3W_H
 #define SUBD_VEC3W_H
 #include "subd.h"
+#include "real_avg.h" /* subd_div_round */
 
 #if SUBD_FIXED
 typedef int64_t subd_wide;
@@ -146,6 +149,105 @@ static inline void subd_w3_normalize(const subd_wide *t, subd_wide *o, uint32_t 
 }
 
 static inline void subd_w3_fit(const subd_wide *t, subd_wide *o, uint32_t bits) { subd_w3_normalize(t, o, bits); }
+#endif
+
+/* A common shift for a set of wide 3-vectors whose cross products are summed (a face's
+ * Newell fan in crease.c, a vertex's fan of faces): Q16.16 shifts every vector by one s so
+ * that its components are below 2^bits, so the products and their sum stay in int64 and the
+ * terms add up exactly; float32 has the range and leaves the vectors alone.
+ *  - subd_w3_span_add(big, t): max(big, max |t_k|) (Q16.16; float32: big unchanged);
+ *  - subd_w3_span_shift(big, bits): s = max(0, bitlen(big) - bits) (float32: 0);
+ *  - subd_w3_span_apply(t, o, s): o = t * 2^-s, truncating toward zero (subd_w3_shift),
+ *    so a sign change commutes with it (float32: o = t). */
+/* 1 when (q - p) . n >= 0 for subd_real points q, p and a direction n (a plane side test).
+ * Q16.16: exact: each product is below 2^63 in magnitude and the sum of three is kept as
+ * hi 2^32 + lo with 0 <= lo < 2^32, so its sign is the sign of hi. float32: differences and
+ * products rounded one at a time, summed left to right. */
+/* subd_w3_add_ratio(p, num, den, u, ovf): p += (num / den) u for den > 0 (the projection of
+ * a displacement on u, with num = d . u and den = u . u). Q16.16: num, den and u_k as from
+ * subd_w3_normalize(., ., 20) and an exact difference (|num| < 2^54, den < 2^42,
+ * |u_k| < 2^20); (num / den) u_k is formed as q u_k + round(r u_k / den) from the truncating
+ * quotient q and remainder r, exact but for that one rounding; a result outside the Q16.16
+ * range sets *ovf and leaves that and the later components of p as they were. float32:
+ * s = num / den once, then p_k + s u_k, each rounded (subd_chk sets *ovf when not finite). */
+#if SUBD_FIXED
+static inline uint64_t subd_w3_span_add(uint64_t big, const subd_wide *t)
+{
+    uint64_t x = subd_w3_maxabs(t);
+    return x > big ? x : big;
+}
+
+static inline int32_t subd_w3_span_shift(uint64_t big, uint32_t bits)
+{
+    int32_t s = (int32_t)subd_bitlen64(big) - (int32_t)bits;
+    return s > 0 ? s : 0;
+}
+
+static inline void subd_w3_span_apply(const subd_wide *t, subd_wide *o, int32_t s) { subd_w3_shift(t, o, s); }
+
+static inline int subd_w3_side(const subd_real *q, const subd_real *p, const subd_real *n)
+{
+    int64_t hi = 0, lo = 0;
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        int64_t prod = ((int64_t)q[i] - p[i]) * (int64_t)n[i];
+        hi += prod >> 32;
+        lo += prod & (int64_t)0xffffffff;
+    }
+    hi += lo >> 32;
+    return hi >= 0;
+}
+
+static inline void subd_w3_add_ratio(subd_real *p, subd_wide num, subd_wide den, const subd_wide *u, uint32_t *ovf)
+{
+    int64_t q = num / den, r = num % den;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        int64_t x = (int64_t)p[k] + q * u[k] + subd_div_round(r * u[k], den);
+        if (x > INT32_MAX || x < INT32_MIN) {
+            *ovf |= 1u;
+            return;
+        }
+        p[k] = (subd_real)x;
+    }
+}
+#else
+static inline uint64_t subd_w3_span_add(uint64_t big, const subd_wide *t)
+{
+    (void)t;
+    return big;
+}
+
+static inline int32_t subd_w3_span_shift(uint64_t big, uint32_t bits)
+{
+    (void)big;
+    (void)bits;
+    return 0;
+}
+
+static inline void subd_w3_span_apply(const subd_wide *t, subd_wide *o, int32_t s)
+{
+    (void)s;
+    o[0] = t[0];
+    o[1] = t[1];
+    o[2] = t[2];
+}
+
+static inline int subd_w3_side(const subd_real *q, const subd_real *p, const subd_real *n)
+{
+    float s0 = (q[0] - p[0]) * n[0], s1 = (q[1] - p[1]) * n[1], s2 = (q[2] - p[2]) * n[2];
+    return s0 + s1 + s2 >= 0.0f;
+}
+
+static inline void subd_w3_add_ratio(subd_real *p, subd_wide num, subd_wide den, const subd_wide *u, uint32_t *ovf)
+{
+    float s = num / den;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        float m = s * u[k];
+        p[k] = subd_chk(p[k] + m, ovf);
+    }
+}
 #endif
 
 void subd_w3_unit(const subd_wide *c, subd_real *out);

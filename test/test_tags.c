@@ -317,6 +317,88 @@ static void tags_alpha_values(void)
     CHECK_EQ(rep.vertex_tags + rep.creases, 0);
 }
 
+/* The one alpha grammar (subd_tags.h), by subd_tags_parse_alpha: accepted texts give the
+ * reduced fraction written here by hand; degrees agree with X / 360 turns (checked by
+ * cross-multiplication); refused texts (exponents, too many decimals, blanks, signs after
+ * '/', out of range) leave the outputs alone and are refused on an alpha line as well. */
+static void tags_alpha_grammar(void)
+{
+    static const struct { const char *t; int32_t num, den; } ok[] = {
+        {"1/8", 1, 8}, {"2/16", 1, 8}, {"45deg", 1, 8}, {"+45deg", 1, 8}, {"45.deg", 1, 8},
+        {"45.0000deg", 1, 8}, {"-45deg", -1, 8}, {".5deg", 1, 720}, {"10.5deg", 7, 240},
+        {"0.0001deg", 1, 3600000}, {"36000deg", 100, 1}, {"-36000deg", -100, 1}, {"3", 3, 1},
+        {"+3", 3, 1}, {"-6/4", -3, 2}, {"0", 0, 1}, {"0/7", 0, 1}, {"0deg", 0, 1},
+        {"1000000000", 1000000000, 1}, {"-1000000000/999999999", -1000000000, 999999999},
+        {"1/1000000000", 1, 1000000000}, {"515.662deg", 257831, 180000}};
+    static const char *const bad[] = {
+        "", "deg", "-deg", ".deg", "4.5e1deg", "45e0deg", "1e1", "45.00001deg", "36000.0001deg",
+        "1/+8", "1/-8", "1/0", "1/", "/8", " 45deg", "45deg ", "45 deg", "45DEG", "0x10",
+        "1.5", "1000000001", "1/1000000001", "45..0deg", "4-5deg", "nandeg", "infdeg", "1/8/2"};
+    uint32_t i, bad_ok = 0, good = 0;
+    int32_t num, den;
+    for (i = 0; i < sizeof ok / sizeof ok[0]; i++) {
+        num = den = 77;
+        if (subd_tags_parse_alpha(ok[i].t, slen(ok[i].t), &num, &den) == SUBD_OK && num == ok[i].num &&
+            den == ok[i].den)
+            good++;
+        else
+            h_str(ok[i].t), h_nl();
+    }
+    CHECK_EQ(good, sizeof ok / sizeof ok[0]);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        num = den = 77;
+        if (subd_tags_parse_alpha(bad[i], slen(bad[i]), &num, &den) == SUBD_ERR_PARSE && num == 77 && den == 77)
+            bad_ok++;
+        else
+            h_str(bad[i]), h_nl();
+    }
+    CHECK_EQ(bad_ok, sizeof bad / sizeof bad[0]);
+    /* degrees X = k / 10^4 for k up to 36000 degrees in steps: num / den == k / (360 10^4) */
+    {
+        uint32_t k, wrong = 0;
+        char buf[16];
+        for (k = 0; k <= 360000000u; k += 1234567u) {
+            uint32_t n = 0, j, ip = k / 10000u, fp = k % 10000u;
+            char digits[12];
+            do { digits[n++] = (char)('0' + ip % 10u); ip /= 10u; } while (ip);
+            for (j = 0; j < n; j++) buf[j] = digits[n - 1u - j];
+            buf[n++] = '.';
+            buf[n++] = (char)('0' + fp / 1000u);
+            buf[n++] = (char)('0' + fp / 100u % 10u);
+            buf[n++] = (char)('0' + fp / 10u % 10u);
+            buf[n++] = (char)('0' + fp % 10u);
+            buf[n++] = 'd';
+            buf[n++] = 'e';
+            buf[n++] = 'g';
+            if (subd_tags_parse_alpha(buf, n, &num, &den) != SUBD_OK ||
+                (int64_t)num * 3600000 != (int64_t)k * den)
+                wrong++;
+        }
+        CHECK_EQ(wrong, 0);
+    }
+    CHECK_EQ(subd_tags_parse_alpha(0, 0, &num, &den), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_tags_parse_alpha("1", 1, 0, &den), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_tags_parse_alpha("1", 1, &num, 0), SUBD_ERR_PARAM);
+    /* the common denominator: the least common multiple by search, 0 beyond int32 */
+    {
+        int32_t x, y, l, wrong = 0;
+        for (x = 1; x <= 24; x++)
+            for (y = 1; y <= 24; y++) {
+                for (l = x > y ? x : y; l % x != 0 || l % y != 0; l++) {
+                }
+                if (subd_tags_common_den(x, y) != l) wrong++;
+            }
+        CHECK_EQ(wrong, 0);
+        CHECK_EQ(subd_tags_common_den(3600000, 8), 3600000);
+        CHECK_EQ(subd_tags_common_den(999999937, 999999929), 0);
+        CHECK_EQ(subd_tags_common_den(INT32_MAX, INT32_MAX), INT32_MAX);
+        CHECK_EQ(subd_tags_common_den(0, 5), 0);
+        CHECK_EQ(subd_tags_common_den(5, -1), 0);
+    }
+    /* the same grammar on an alpha line: an exponent is refused there too */
+    expect("alpha 1 4.5e1deg\n", SUBD_ERR_PARSE, 1, "alpha with an exponent");
+}
+
 const test_case suite_tags[] = {
     {"tags_parse_errors", tags_parse_errors},
     {"tags_index_errors", tags_index_errors},
@@ -327,5 +409,6 @@ const test_case suite_tags[] = {
     {"tags_equal_old_tool", tags_equal_old_tool},
     {"tags_alpha_errors", tags_alpha_errors},
     {"tags_alpha_values", tags_alpha_values},
+    {"tags_alpha_grammar", tags_alpha_grammar},
     {0, 0}
 };

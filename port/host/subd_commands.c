@@ -265,22 +265,12 @@ static void alpha_tagging_done(alpha_tagging *t)
     t->buf = NULL;
 }
 
-static int64_t gcd_i64(int64_t a, int64_t b)
-{
-    while (b) {
-        int64_t r = a % b;
-        a = b;
-        b = r;
-    }
-    return a;
-}
-
 /* Reads o->tags and fills *t; EXIT_INPUT (reported) or SUBD_OK. */
 static int alpha_tagging_load(const subd_mesh *in, const tool_opts *o, alpha_tagging *t)
 {
     subd_tags_report rep;
     subd_diag d;
-    int64_t den, g, num;
+    int64_t den, num;
     uint32_t wrong;
     memset(t, 0, sizeof *t);
     t->ao = o->alpha;
@@ -308,14 +298,13 @@ static int alpha_tagging_load(const subd_mesh *in, const tool_opts *o, alpha_tag
         return EXIT_INPUT;
     }
     /* one denominator for --alpha and every tag */
-    den = o->alpha.alpha_den;
-    g = rep.alpha_den ? gcd_i64(den, rep.alpha_den) : 1;
-    den = rep.alpha_den ? den / g * rep.alpha_den : 0;
+    den = subd_tags_common_den(o->alpha.alpha_den, rep.alpha_den); /* 0: beyond int32 */
     num = den ? (int64_t)o->alpha.alpha_num * (den / o->alpha.alpha_den) : 0;
     if (den <= 0 || den > (INT32_MAX >> (o->levels + 2u)) || num > SUBD_ALPHA_MAX_NUM || num < -SUBD_ALPHA_MAX_NUM) {
-        tool_error("%s: the alphas and --alpha need a common denominator of %lld turns, too fine for %lu "
+        tool_error("%s: the alphas and --alpha need a common denominator %s%lld turns, too fine for %lu "
                    "level(s) (at most %ld): use coarser fractions",
-                   o->tags, (long long)den, (unsigned long)o->levels, (long)(INT32_MAX >> (o->levels + 2u)));
+                   o->tags, den ? "of " : "beyond ", den ? (long long)den : (long long)INT32_MAX,
+                   (unsigned long)o->levels, (long)(INT32_MAX >> (o->levels + 2u)));
         alpha_tagging_done(t);
         return EXIT_INPUT;
     }

@@ -72,33 +72,13 @@ static int parse_doubles(const char *s, int n, double *out)
     return 0;
 }
 
-/* alpha as an exact fraction of a turn: "N/D" or "DEGdeg" (degrees with up to 4 decimals,
- * turned into DEG * 10^4 / 3600000). */
+/* alpha as an exact fraction of a turn: the library's one grammar for alpha values
+ * (subd_tags.h: "N", "N/D" or "Xdeg", at most 4 decimals, no exponent), as in a tag file. */
 static int parse_alpha(const char *s, int32_t *num, int32_t *den)
 {
-    char *end;
-    long n, dd;
     size_t len = strlen(s);
-    if (len > 3 && strcmp(s + len - 3, "deg") == 0) {
-        double deg = strtod(s, &end);
-        if (end != s + len - 3 || !(deg >= -36000.0 && deg <= 36000.0)) return -1;
-        *num = (int32_t)(deg * 1e4 + (deg < 0 ? -0.5 : 0.5));
-        *den = 3600000;
-        return 0;
-    }
-    n = strtol(s, &end, 10);
-    if (end == s) return -1;
-    if (*end == '\0') { dd = 1; }
-    else {
-        const char *q = end + 1;
-        if (*end != '/') return -1;
-        dd = strtol(q, &end, 10);
-        if (end == q || *end != '\0') return -1;
-    }
-    if (dd <= 0 || dd > 1000000000L || n < -1000000000L || n > 1000000000L) return -1;
-    *num = (int32_t)n;
-    *den = (int32_t)dd;
-    return 0;
+    if (len > UINT32_MAX) return -1;
+    return subd_tags_parse_alpha(s, (uint32_t)len, num, den) == SUBD_OK ? 0 : -1;
 }
 
 static int parse_size(const char *s, int *w, int *h)
@@ -412,7 +392,7 @@ static const tool_option options[] = {
     {"--alpha", NULL, "A", 0, OPT_ALPHA, set_alpha,
      "(alpha) angle as a fraction of a turn N/D (1/8) or degrees (45deg)"},
     {"--stiffness", NULL, "S", 0, OPT_ALPHA, set_stiffness,
-     "(alpha) s = f(0), default 1; s <= -1 diverges (rejected)"},
+     "(alpha) s = f(0), default 1; s <= -1/2 diverges (rejected)"},
     {"--point", NULL, "X,Y,Z", 0, OPT_ADAPT, set_adapt_mode,
      "(adapt) finest at this point, one level coarser per radius away"},
     {"--radius", NULL, "R", 0, OPT_ADAPT, set_radius,

@@ -1,0 +1,240 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming semi-regular 4-8 (subd_sr48_stream, src/sr48_stream.c) against the materialising
+ * calls: subd_sr48_build(steps = L) then subd_sr48_extract(UNIFORM, L). On closed and open
+ * shapes (tetrahedron: valence 3 input vertices; cube of triangles; icosahedron; a hexagon
+ * fan; an open 8x8 grid; two triangles with an isolated-triangle pre-processing; the torus),
+ * levels 0..4, smoothing on and off, both arithmetics:
+ *  - the j-th streamed triangle is the extraction's face j: same corners (apex, b0, b1) with
+ *    the same position bits;
+ *  - ids: one id per extraction vertex and one vertex per id (a bijection), level-0 ids =
+ *    base indices; welding by id gives the extraction's mesh, so a closed input gives a
+ *    closed 2-manifold (the validator's boundary edge count is 0);
+ *  - the pull form in batches of 1, 7 and 128 gives the same triangles as the push form;
+ *  - the plan equals the peak, every smaller arena fails with SUBD_ERR_NOMEM (bytes_needed =
+ *    the plan, nothing emitted, arena unchanged); bad parameters; a sink's stop value. */
+#include "harness.h"
+#include "corpus.h"
+#if H_HOST
+#include <stdio.h>
+#define T_NOTE(...) printf(__VA_ARGS__)
+#else
+#define T_NOTE(...) ((void)0)
+#endif
+
+static const char tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+static const char cube_obj[] =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
+    "f 4 1 5\nf 4 5 8\n";
+static const char two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
+
+enum { S_TET, S_CUBE, S_ICO, S_HEXFAN, S_GRID, S_TWO, S_TORUS, S_COUNT };
+
+#define ST_ARENA (96u * 1024u)       /* the stream's arena: the top of h_arena_buf         */
+#define MAT_ARENA (H_ARENA_BYTES - ST_ARENA)
+#define MAXV 8192u
+
+static subd_real g_tpos[3 * 64];
+static uint32_t g_tidx[6 * 64];
+
+static int load_text(subd_arena *a, const char *txt, subd_mesh *m)
+{
+    subd_diag d;
+    uint32_t n = 0;
+    while (txt[n]) n++;
+    return CHECK_EQ(subd_obj_read(a, txt, n, m, &d), SUBD_OK);
+}
+
+static int make_shape(int id, subd_arena *a, subd_mesh *m)
+{
+    const corpus_file *f = 0;
+    subd_diag d;
+    switch (id) {
+    case S_TET: return load_text(a, tet_obj, m);
+    case S_CUBE: return load_text(a, cube_obj, m);
+    case S_TWO: return load_text(a, two_obj, m);
+    case S_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
+    case S_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
+    case S_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
+    case S_TORUS: {
+        subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
+        return h_build(a, &fl, m);
+    }
+    default: return 0;
+    }
+    if (!CHECK(f != 0)) return 0;
+    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
+}
+
+/* The sink: compares triangle j with the extraction's face j. */
+typedef struct cmp_ctx {
+    const subd_mesh *m;
+    uint32_t j, bad, stop_after;
+    uint64_t id[MAXV];
+    uint8_t have[MAXV];
+    uint32_t hash;
+} cmp_ctx;
+
+static cmp_ctx g_cc;
+
+static uint32_t tri_hash(uint32_t h, const subd_tri *t)
+{
+    uint32_t i, j;
+    for (i = 0; i < 3u; i++) {
+        for (j = 0; j < 3u; j++) {
+            uint32_t b = subd_real_bits(t->pos[i][j]);
+            h = h_fnv(h, &b, 4);
+        }
+        h = h_fnv(h, &t->id[i], 8);
+    }
+    h = h_fnv(h, &t->face, 4);
+    return h_fnv(h, &t->level, 4);
+}
+
+static int cmp_tri(void *ctx, const subd_tri *t)
+{
+    cmp_ctx *c = (cmp_ctx *)ctx;
+    const subd_mesh *m = c->m;
+    uint32_t i, q;
+    c->hash = tri_hash(c->hash, t);
+    if (c->j >= m->num_faces) {
+        c->bad++;
+        return 0;
+    }
+    for (i = 0; i < 3u; i++) {
+        uint32_t v = m->corner_vert[3u * c->j + i];
+        for (q = 0; q < 3u; q++)
+            if (!h_same(t->pos[i][q], m->pos[3u * v + q])) c->bad++;
+        if (v < MAXV) {
+            if (c->have[v] && c->id[v] != t->id[i]) c->bad++;
+            c->have[v] = 1;
+            c->id[v] = t->id[i];
+        }
+    }
+    c->j++;
+    if (c->stop_after && c->j == c->stop_after) return 77;
+    return 0;
+}
+
+/* Ids distinct across vertices (insertion-free check: sort a copy). */
+static int ids_distinct(const cmp_ctx *c, uint32_t nv)
+{
+    static uint64_t ids[MAXV];
+    uint32_t i, j;
+    for (i = 0; i < nv; i++) {
+        uint64_t x = c->id[i];
+        j = i;
+        while (j > 0u && ids[j - 1u] > x) {
+            ids[j] = ids[j - 1u];
+            j--;
+        }
+        ids[j] = x;
+    }
+    for (i = 1; i < nv; i++)
+        if (ids[i] == ids[i - 1u]) return 0;
+    return 1;
+}
+
+static subd_tri g_buf[128];
+
+/* Pull in batches of `batch`: the hash of everything. */
+static int pull_hash(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t batch,
+                     uint32_t *hash, uint32_t *count)
+{
+    subd_stream s;
+    subd_diag d;
+    uint32_t h = 2166136261u, n = 0, mark = subd_arena_mark(a);
+    int got, i;
+    if (!CHECK_EQ(subd_sr48_stream_begin(a, base, o, &s, &d), SUBD_OK)) return 0;
+    while ((got = subd_stream_next_tris(&s, g_buf, batch)) > 0) {
+        CHECK(got <= (int)batch);
+        for (i = 0; i < got; i++) h = tri_hash(h, &g_buf[i]);
+        n += (uint32_t)got;
+    }
+    CHECK_EQ(got, 0);
+    CHECK_EQ(subd_arena_mark(a), mark);
+    *hash = h;
+    *count = n;
+    return 1;
+}
+
+static void run_case(int shape, uint32_t levels, uint32_t flags)
+{
+    subd_arena a, sa;
+    subd_mesh in, out;
+    subd_sr48 h, base;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_adapt_report rep;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan = 0, i, ph, pn, b;
+    subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(shape, &a, &in)) return;
+    o.steps = levels;
+    o.flags = flags;
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = levels;
+    if (!CHECK_EQ(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), SUBD_OK)) {
+        T_NOTE("shape %d levels %u: extract needs %u\n", shape, levels, d.bytes_needed);
+        return;
+    }
+    if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) return;
+    /* the base is level 0 of the hierarchy */
+    CHECK_EQ(base.level_tri[1], h.level_tri[1]);
+    CHECK_EQ(base.num_verts, h.level_verts[0]);
+    if (!CHECK(out.num_verts <= MAXV)) return;
+    if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+    subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
+    if (!CHECK(plan <= ST_ARENA)) {
+        T_NOTE("plan %u\n", plan);
+        return;
+    }
+    g_cc.m = &out;
+    g_cc.j = 0;
+    g_cc.bad = 0;
+    g_cc.stop_after = 0;
+    g_cc.hash = 2166136261u;
+    for (i = 0; i < out.num_verts; i++) g_cc.have[i] = 0;
+    sink.tri = cmp_tri;
+    sink.ctx = &g_cc;
+    subd_arena_reset_peak(&sa);
+    if (!CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), SUBD_OK)) {
+        T_NOTE("shape %d levels %u flags %u: status %d face %u\n", shape, levels, flags, d.status, d.face);
+        return;
+    }
+    CHECK_EQ(sa.peak, plan);
+    T_NOTE("    shape %d levels %u flags %u: %u faces, stream plan %u\n", shape, levels, flags, out.num_faces, plan);
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    CHECK_EQ(g_cc.j, out.num_faces);
+    if (!CHECK_EQ(g_cc.bad, 0u)) T_NOTE("shape %d levels %u flags %u\n", shape, levels, flags);
+    for (i = 0; i < out.num_verts; i++) CHECK(g_cc.have[i]);
+    CHECK(ids_distinct(&g_cc, out.num_verts));
+    /* level-0 vertices keep their base index */
+    for (i = 0; i < out.num_verts && levels == 0u; i++) CHECK(g_cc.id[i] < base.num_verts);
+    /* welded by id the stream is the extraction's mesh; closed input -> closed output */
+    CHECK_EQ(out.num_boundary_edges == 0u, in.num_boundary_edges == 0u);
+    /* pull form, several batch sizes: the push form's triangles */
+    for (b = 0; b < 3u; b++) {
+        static const uint32_t sizes[3] = {1u, 7u, 128u};
+        if (pull_hash(&sa, &base, &so, sizes[b], &ph, &pn)) {
+            CHECK_EQ(pn, out.num_faces);
+            CHECK_EQ(ph, g_cc.hash);
+        }
+    }
+}
+
+static void sr48s_uniform(void)
+{
+    int s;
+    uint32_t l, f;
+    for (s = 0; s < S_COUNT; s++)
+        for (f = 0; f < 2u; f++)
+            for (l = 0; l <= 4u; l++) run_case(s, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+}
+
+const test_case suite_sr48_stream[] = {
+    {"sr48s_uniform", sr48s_uniform},
+    {0, 0},
+};

@@ -319,11 +319,34 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
 int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, const subd_tri_sink *sink,
                      subd_diag *diag);
 
-/* The window: triangles within SUBD_SR48_STREAM_RINGS_ vertex rings; capacities for a
- * largest valence n. */
-#define SUBD_SR48_STREAM_RINGS_ 3u
-#define SUBD_SR48_STREAM_WT_(n) (24u * (uint32_t)(n) + 64u)
-#define SUBD_SR48_STREAM_WV_(n) (24u * (uint32_t)(n) + 64u)
+/* The plan at compile time, for a static buffer: L = adapt.max_level (0..SUBD_SR48_MAX_STEPS),
+ * N = the base's largest valence (triangles around a vertex; values below 8 count as 8). A
+ * uint32_t constant expression equal to subd_sr48_stream_plan. Example:
+ *     static uint8_t buf[SUBD_SR48_STREAM_BYTES(8, 12)] __attribute__((aligned(8)));
+ * The window of a level holds the triangles within SUBD_SR48_STREAM_RINGS_ vertex rings of the
+ * current triangle's children: at most SUBD_SR48_STREAM_WT_(N) triangles and
+ * SUBD_SR48_STREAM_WV_(N) vertices (measured: 56 and 40 on regular regions, 4N + 24 and
+ * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
+ * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
+ * overflow ring (2 triangles), max(L, 1) level windows (20 bytes per triangle, 21 per
+ * vertex), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
+ * (28 bytes per vertex in both arithmetics) and the crop's and level 0's maps. */
+#define SUBD_SR48_STREAM_RINGS_ 2u
+#define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
+#define SUBD_SR48_STREAM_WT_(n) (6u * SUBD_SR48_STREAM_N_(n) + 16u)
+#define SUBD_SR48_STREAM_WV_(n) (4u * SUBD_SR48_STREAM_N_(n) + 16u)
+#define SUBD_SR48_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
+#define SUBD_SR48_WIN_(t, v) \
+    (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(8u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
+     SUBD_SR48_SA_(8u * (v)) + SUBD_SR48_SA_(v))
+#define SUBD_SR48_STREAM_BYTES_WTV_(L, t, v) \
+    (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
+     ((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_WIN_(t, v) + SUBD_SR48_WIN_(2u * (t), (v) + (t)) + \
+     SUBD_SR48_SA_(24u * ((v) + (t))) + SUBD_SR48_SA_(4u * ((v) + (t))) + SUBD_SR48_SA_((v) + (t)) + \
+     SUBD_SR48_SA_(2u * (t)) + SUBD_SR48_SA_(4u * (t)) + SUBD_SR48_SA_(2u * ((v) + (t))) + SUBD_SR48_SA_(4u * (t)) + \
+     2u * SUBD_SR48_SA_(4u * (v)))
+#define SUBD_SR48_STREAM_BYTES(L, N) \
+    SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
 
 #ifdef __cplusplus
 }

@@ -28,9 +28,42 @@ static const char cube_obj[] =
     "f 4 1 5\nf 4 5 8\n";
 static const char two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
 
-enum { S_TET, S_CUBE, S_ICO, S_HEXFAN, S_GRID, S_TWO, S_TORUS, S_COUNT };
+enum { S_TET, S_CUBE, S_ICO, S_HEXFAN, S_GRID, S_TWO, S_TORUS, S_BIPYR, S_COUNT };
 
-#define ST_ARENA (96u * 1024u)       /* the stream's arena: the top of h_arena_buf         */
+/* A closed bipyramid with apexes of valence n (3..16), equator valence 4: g_bn sets n. */
+static uint32_t g_bn = 5;
+static subd_real g_bpos[3 * 18];
+static uint32_t g_bidx[3 * 32];
+static int make_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
+{
+    static const int32_t cs[16][2] = {{1000, 0}, {924, 383}, {707, 707}, {383, 924}, {0, 1000}, {-383, 924},
+                                      {-707, 707}, {-924, 383}, {-1000, 0}, {-924, -383}, {-707, -707},
+                                      {-383, -924}, {0, -1000}, {383, -924}, {707, -707}, {924, -383}};
+    subd_face_list fl;
+    uint32_t i, step = 16u / n;
+    for (i = 0; i < n; i++) {
+        uint32_t j = (i * 16u) / n;
+        g_bpos[3 * i] = h_int(cs[j][0]) / 1000;
+        g_bpos[3 * i + 1] = h_int(cs[j][1]) / 1000;
+        g_bpos[3 * i + 2] = h_int((int32_t)(i & 1u)) / 8;
+        g_bidx[6 * i] = n; g_bidx[6 * i + 1] = i; g_bidx[6 * i + 2] = (i + 1u) % n;
+        g_bidx[6 * i + 3] = n + 1u; g_bidx[6 * i + 4] = (i + 1u) % n; g_bidx[6 * i + 5] = i;
+    }
+    (void)step;
+    g_bpos[3 * n] = 0; g_bpos[3 * n + 1] = 0; g_bpos[3 * n + 2] = h_int(1);
+    g_bpos[3 * n + 3] = 0; g_bpos[3 * n + 4] = 0; g_bpos[3 * n + 5] = -h_int(1);
+    fl.num_verts = n + 2u;
+    fl.pos = g_bpos;
+    fl.num_faces = 2u * n;
+    fl.face_size = 0;
+    fl.index = g_bidx;
+    fl.num_lines = 0;
+    fl.line_size = 0;
+    fl.line_index = 0;
+    return h_build(a, &fl, m);
+}
+
+#define ST_ARENA (64u * 1024u)       /* the stream's arena: the top of h_arena_buf         */
 #define MAT_ARENA (H_ARENA_BYTES - ST_ARENA)
 #define MAXV 8192u
 
@@ -56,6 +89,7 @@ static int make_shape(int id, subd_arena *a, subd_mesh *m)
     case S_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
     case S_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
     case S_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
+    case S_BIPYR: return make_bipyramid(a, m, g_bn);
     case S_TORUS: {
         subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
         return h_build(a, &fl, m);
@@ -137,6 +171,18 @@ static int ids_distinct(const cmp_ctx *c, uint32_t nv)
 
 static subd_tri g_buf[128];
 
+/* The base's largest valence counted directly: triangles per vertex. */
+static uint16_t g_cnt[MAXV];
+static uint32_t base_valence(const subd_sr48 *b)
+{
+    uint32_t t, best = 0;
+    if (b->num_verts > MAXV) return 0;
+    for (t = 0; t < b->num_verts; t++) g_cnt[t] = 0;
+    for (t = 0; t < 3u * b->level_tri[1]; t++)
+        if (++g_cnt[b->tri_vert[t]] > best) best = g_cnt[b->tri_vert[t]];
+    return best;
+}
+
 /* Pull in batches of `batch`: the hash of everything. */
 static int pull_hash(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t batch,
                      uint32_t *hash, uint32_t *count)
@@ -205,7 +251,7 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
         return;
     }
     CHECK_EQ(sa.peak, plan);
-    T_NOTE("    shape %d levels %u flags %u: %u faces, stream plan %u\n", shape, levels, flags, out.num_faces, plan);
+    CHECK_EQ(plan, SUBD_SR48_STREAM_BYTES(levels, base_valence(&base)));
     CHECK_EQ(subd_arena_mark(&sa), 0u);
     CHECK_EQ(g_cc.j, out.num_faces);
     if (!CHECK_EQ(g_cc.bad, 0u)) T_NOTE("shape %d levels %u flags %u\n", shape, levels, flags);
@@ -215,6 +261,11 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
     for (i = 0; i < out.num_verts && levels == 0u; i++) CHECK(g_cc.id[i] < base.num_verts);
     /* welded by id the stream is the extraction's mesh; closed input -> closed output */
     CHECK_EQ(out.num_boundary_edges == 0u, in.num_boundary_edges == 0u);
+    if (levels == 3u && shape != S_BIPYR) {
+        static const char *const names[S_COUNT] = {"sr48s_tet", "sr48s_cube", "sr48s_ico", "sr48s_hexfan",
+                                                   "sr48s_grid", "sr48s_two", "sr48s_torus", "sr48s_bipyr"};
+        h_hash(names[shape], g_cc.hash ^ flags);
+    }
     /* pull form, several batch sizes: the push form's triangles */
     for (b = 0; b < 3u; b++) {
         static const uint32_t sizes[3] = {1u, 7u, 128u};
@@ -227,14 +278,214 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
 
 static void sr48s_uniform(void)
 {
+    static const uint32_t maxl[S_COUNT] = {6, 4, 3, 5, 1, 6, 3, 4};
     int s;
     uint32_t l, f;
     for (s = 0; s < S_COUNT; s++)
         for (f = 0; f < 2u; f++)
-            for (l = 0; l <= 4u; l++) run_case(s, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+            for (l = 0; l <= maxl[s]; l++) run_case(s, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+}
+
+/* Extraordinary valences: bipyramids with apexes of valence 3..16. */
+static void sr48s_valence(void)
+{
+    for (g_bn = 3; g_bn <= 16u; g_bn++) {
+        run_case(S_BIPYR, 3, 0);
+        run_case(S_BIPYR, 3, SUBD_SR48_NO_SMOOTH);
+    }
+    g_bn = 5;
+}
+
+/* A shape's base in the low arena (the caller's), as subd_sr48_base builds it. */
+static int make_base(int shape, subd_arena *a, uint32_t flags, subd_sr48 *base, subd_mesh *in)
+{
+    subd_diag d;
+    subd_arena_init(a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(shape, a, in)) return 0;
+    return CHECK_EQ(subd_sr48_base(a, in, flags, base, &d), SUBD_OK);
+}
+
+static int count_tri(void *ctx, const subd_tri *t)
+{
+    (void)t;
+    ++*(uint32_t *)ctx;
+    return 0;
+}
+
+/* Every arena below the plan: SUBD_ERR_NOMEM, bytes_needed = the plan, arena unchanged,
+ * nothing emitted; the plan itself works and is the peak. */
+static void sr48s_plan_exhaustive(void)
+{
+    subd_arena a, sa;
+    subd_mesh in;
+    subd_sr48 base;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan, size, n;
+    int st;
+    if (!make_base(S_TET, &a, 0, &base, &in)) return;
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = 3;
+    if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+    sink.tri = count_tri;
+    sink.ctx = &n;
+    for (size = 0; size <= plan; size += (size + 64u < plan) ? 7u : 1u) {
+        n = 0;
+        subd_arena_init(&sa, h_arena_buf + MAT_ARENA, size);
+        st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
+        if (size < plan) {
+            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(n, 0u) ||
+                !CHECK_EQ(subd_arena_mark(&sa), 0u) || !CHECK_EQ(sa.peak, 0u))
+                return;
+        } else {
+            CHECK_EQ(st, SUBD_OK);
+            CHECK_EQ(n, 16u << 3); /* 16 level-0 triangles, 2^3 each */
+            CHECK_EQ(sa.peak, plan);
+            CHECK_EQ(d.bytes_needed, 0u);
+        }
+    }
+}
+
+static int stop_at(void *ctx, const subd_tri *t)
+{
+    uint32_t *n = (uint32_t *)ctx;
+    (void)t;
+    return ++*n == 5u ? 42 : 0;
+}
+
+static void sr48s_errors(void)
+{
+    subd_arena a, sa;
+    subd_mesh in, noadj;
+    subd_sr48 base, bad, h;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    subd_stream s;
+    uint32_t plan, n = 0, flags = 0, m;
+    static uint32_t nb[4096];
+    if (!make_base(S_ICO, &a, 0, &base, &in)) return;
+    subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = 2;
+    sink.tri = stop_at;
+    sink.ctx = &n;
+    /* a sink's stop value comes back unchanged, the arena is given back */
+    CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), 42);
+    CHECK_EQ(n, 5u);
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    /* parameters */
+    CHECK_EQ(subd_sr48_stream_plan(0, &so, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream_plan(&base, 0, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream_plan(&base, &so, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream(&sa, &base, &so, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(d.status, SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream(0, &base, &so, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream_begin(&sa, &base, &so, 0, &d), SUBD_ERR_PARAM);
+    so.adapt.max_level = SUBD_SR48_MAX_STEPS + 1u;
+    CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
+    so.adapt.max_level = 2;
+    so.adapt.mode = (subd_adapt_mode)77;
+    CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    /* a base that is not subd_sr48_base's: a hierarchy (no hyb_base_nb), steps > 0, broken
+     * neighbours or vertices; each refused before anything is emitted */
+    o.steps = 1;
+    o.flags = 0;
+    if (CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) {
+        CHECK(h.hyb_base_nb == 0);
+        CHECK_EQ(subd_sr48_stream_plan(&h, &so, &plan, &d), SUBD_ERR_PARAM);
+    }
+    bad = base;
+    bad.steps = 1;
+    CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    bad = base;
+    bad.flags = 8;
+    CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    if (CHECK(base.level_tri[1] <= 4096u)) {
+        for (m = 0; m < base.level_tri[1]; m++) nb[m] = base.tri_base_nb[m];
+        bad = base;
+        bad.tri_base_nb = nb;
+        nb[3] = nb[5]; /* points at a triangle that does not point back */
+        CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+        n = 0;
+        CHECK_EQ(subd_sr48_stream(&sa, &bad, &so, &sink, &d), SUBD_ERR_PARAM);
+        CHECK_EQ(n, 0u);
+        nb[3] = base.level_tri[1];
+        CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    }
+    bad = base;
+    bad.hyb_base_nb = nb;
+    for (m = 0; m < base.level_tri[1] / 2u; m++) nb[m] = base.hyb_base_nb[m];
+    nb[0] = SUBD_NONE; /* one side says boundary, the other does not */
+    CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    /* the pull handle: bad calls, and a stale handle */
+    CHECK_EQ(subd_stream_next_tris(0, g_buf, 1), SUBD_ERR_PARAM);
+    if (CHECK_EQ(subd_sr48_stream_begin(&sa, &base, &so, &s, &d), SUBD_OK)) {
+        CHECK_EQ(subd_stream_next_tris(&s, 0, 1), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_stream_next_tris(&s, g_buf, 0), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_stream_next_points(&s, (subd_point *)(void *)g_buf, 1), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_stream_next_tris(&s, g_buf, 3), 3);
+        subd_stream_end(&s);
+        CHECK_EQ(subd_arena_mark(&sa), 0u);
+        CHECK_EQ(subd_stream_next_tris(&s, g_buf, 3), 0);
+    }
+    /* the base call refuses what subd_sr48_build refuses */
+    CHECK_EQ(subd_sr48_base(&a, 0, 0, &base, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_base(&a, &in, 4u, &base, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_base_plan(&in, 0, SUBD_SR48_CLUSTERS_UNKNOWN, 0), SUBD_ERR_PARAM);
+    if (h_tetra_no_adjacency(&a, &in, &noadj)) CHECK_EQ(subd_sr48_base(&a, &noadj, 0, &base, &d), SUBD_ERR_PARAM);
+    (void)flags;
+}
+
+/* subd_sr48_base: plan exact with the cluster count, every smaller arena fails cleanly, and
+ * it is subd_sr48_build's level 0 (same arrays) plus the hybrid neighbours. */
+static void sr48s_base(void)
+{
+    subd_arena a;
+    subd_mesh in;
+    subd_sr48 base, h;
+    subd_sr48_opts o;
+    subd_diag d;
+    uint32_t cl, plan, plan0, i, mark, size;
+    subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(S_ICO, &a, &in)) return;
+    if (!CHECK_EQ(subd_sr48_count_clusters(&a, &in, &cl, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_base_plan(&in, 0, cl, &plan), SUBD_OK)) return;
+    o.steps = 0;
+    o.flags = 0;
+    if (!CHECK_EQ(subd_sr48_plan(&in, &o, cl, &plan0), SUBD_OK)) return;
+    mark = subd_arena_mark(&a);
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    CHECK_EQ(plan - plan0, (h.level_tri[1] / 2u * 4u + 7u) & ~7u);
+    for (size = plan - 40u; size <= plan; size++) {
+        subd_arena b;
+        subd_arena_init(&b, h_arena_buf + MAT_ARENA, size);
+        if (size < plan) {
+            CHECK_EQ(subd_sr48_base(&b, &in, 0, &base, &d), SUBD_ERR_NOMEM);
+            CHECK_EQ(d.bytes_needed, plan);
+            CHECK_EQ(subd_arena_mark(&b), 0u);
+        } else {
+            subd_arena_reset_peak(&b);
+            if (!CHECK_EQ(subd_sr48_base(&b, &in, 0, &base, &d), SUBD_OK)) return;
+            CHECK_EQ(b.peak, plan);
+        }
+    }
+    CHECK_EQ(base.num_tris, h.num_tris);
+    for (i = 0; i < 3u * h.num_tris; i++) CHECK_EQ(base.tri_vert[i], h.tri_vert[i]);
+    for (i = 0; i < h.num_tris; i++) CHECK_EQ(base.tri_base_nb[i], h.tri_base_nb[i]);
+    for (i = 0; i < 3u * h.num_verts; i++) CHECK(h_same(base.pos[i], h.pos[i]));
+    (void)mark;
 }
 
 const test_case suite_sr48_stream[] = {
+    {"sr48s_base", sr48s_base},
+    {"sr48s_plan_exhaustive", sr48s_plan_exhaustive},
+    {"sr48s_errors", sr48s_errors},
     {"sr48s_uniform", sr48s_uniform},
+    {"sr48s_valence", sr48s_valence},
     {0, 0},
 };

@@ -733,15 +733,11 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
 int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, const subd_tri_sink *sink,
                      subd_diag *diag)
 {
+    subd_entry e;
     subd_stream s;
     int st;
-    if (!sink || !sink->tri) {
-        if (diag) {
-            subd_diag_clear(diag);
-            diag->status = SUBD_ERR_PARAM;
-        }
-        return SUBD_ERR_PARAM;
-    }
+    (void)subd_entry_begin(&e, a, diag);
+    if (!sink || !sink->tri) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     st = subd_sr48_stream_begin(a, base, o, &s, diag);
     if (st != SUBD_OK) return st;
     return subd_stream_run_tris(&s, sink, diag);

@@ -15,7 +15,7 @@
  * plan calls, and reused across the repeats. Without files it takes every .obj in
  * ../shared/data/meshes/bench/ (relative to the working directory, i.e. the repository when
  * run by `make bench`) and says so when there is none. SECTIONS is a comma list of
- * parse,format,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild (default: all), valence48 (only when
+ * parse,format,loop,limit,q48,alpha,quality,pia,sr48,sr48stream,stream,fanbuild (default: all), valence48 (only when
  * named: the semi-regular 4-8 valence transition table) and demostream (only when named,
  * alone, no files read: the firmware demo's streaming step on the host, the same lines and
  * hash as port/cortex-m/demo.c prints under QEMU; compile with -DSUBD_FIXED=1 for the
@@ -1093,6 +1093,119 @@ static void section_sr48(void)
 #define CURVE_POINTS 4000u
 #define CURVE_LEVELS 8u
 
+/* Streaming semi-regular 4-8 (subd_sr48_stream, UNIFORM, into a counting/hash sink) next to the
+ * materialised subd_sr48_build + subd_sr48_extract(UNIFORM) in the same run; the stream's plan
+ * table SUBD_SR48_STREAM_BYTES(steps, valence). */
+typedef struct sr48s_sink {
+    uint64_t tris;
+    uint32_t h;
+} sr48s_sink;
+static int sr48s_tri(void *ctx, const subd_tri *t)
+{
+    sr48s_sink *k = (sr48s_sink *)ctx;
+    uint32_t c, q, w;
+    for (c = 0; c < 3u; c++)
+        for (q = 0; q < 3u; q++) {
+            w = subd_real_bits(t->pos[c][q]);
+            k->h = (k->h ^ w) * 16777619u;
+        }
+    k->tris++;
+    return 0;
+}
+
+static void section_sr48stream(void)
+{
+    static const uint32_t vals[5] = {4u, 8u, 12u, 16u, 32u};
+    uint32_t st2, v, steps;
+    int i;
+    printf("\n== Streaming semi-regular 4-8 (subd_sr48_stream UNIFORM into a hash sink) next to subd_sr48_build + "
+           "subd_sr48_extract(UNIFORM) in the same run;\n   speed = stream faces/s / materialised faces/s; mem = "
+           "materialised peak / (base + stream plan); check = same triangles (hash); reproduce: " REPRO "\n");
+    printf("%-24s %5s %10s | %9s %8s %9s | %9s %8s %11s | %6s %7s %6s\n", "mesh", "steps", "faces", "stream ms",
+           "Mtri/s", "plan", "mat ms", "Mtri/s", "mat bytes", "speed", "mem", "check");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        if (!m->tri) continue;
+        for (steps = 2; steps <= 6u; steps += 2u) {
+            subd_arena a, b;
+            subd_sr48_opts so;
+            subd_sr48 h, base;
+            subd_sr48_stream_opts sso;
+            subd_mesh out;
+            subd_adapt_report rep;
+            subd_diag d;
+            subd_tri_sink sink;
+            sr48s_sink k1, k2;
+            uint32_t bound = 0, plan = 0, mh = 0, splan = 0;
+            void *mem, *bmem;
+            double t0, tm, ts;
+            so.steps = steps;
+            so.flags = 0;
+            if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;
+            if ((double)bound * 2.0 > PLAN_LIMIT) continue;
+            memset(&sso, 0, sizeof sso);
+            sso.adapt.mode = SUBD_ADAPT_UNIFORM;
+            sso.adapt.max_level = steps;
+            /* materialised: build + extract in one arena */
+            mem = host_arena_alloc(&a, (uint32_t)((double)bound * 2.0 > 4e9 ? 4e9 : (double)bound * 2.0));
+            if (!mem) continue;
+            t0 = host_now_ns();
+            if (subd_sr48_build(&a, &m->hm.mesh, &so, &h, &d) != SUBD_OK ||
+                subd_sr48_extract(&a, &h, &sso.adapt, &out, &rep, &d) != SUBD_OK) {
+                free(mem);
+                continue;
+            }
+            tm = host_now_ns() - t0;
+            mh = a.peak;
+            k1.tris = 0;
+            k1.h = 2166136261u;
+            for (v = 0; v < out.num_faces; v++) {
+                subd_tri t;
+                uint32_t c, q;
+                for (c = 0; c < 3u; c++)
+                    for (q = 0; q < 3u; q++) t.pos[c][q] = out.pos[3u * out.corner_vert[3u * v + c] + q];
+                sr48s_tri(&k1, &t);
+            }
+            free(mem);
+            /* stream: the base, then the stream in a buffer of exactly its plan */
+            if (subd_sr48_base_plan(&m->hm.mesh, 0, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;
+            bmem = host_arena_alloc(&b, bound + 65536u);
+            if (!bmem) continue;
+            t0 = host_now_ns();
+            st2 = (uint32_t)-subd_sr48_base(&b, &m->hm.mesh, 0, &base, &d);
+            if (st2 == 0u) st2 = (uint32_t)-subd_sr48_stream_plan(&base, &sso, &splan, &d);
+            plan = b.used;
+            if (st2 == 0u && splan <= b.size - b.used) {
+                k2.tris = 0;
+                k2.h = 2166136261u;
+                sink.tri = sr48s_tri;
+                sink.ctx = &k2;
+                st2 = (uint32_t)-subd_sr48_stream(&b, &base, &sso, &sink, &d);
+            }
+            ts = host_now_ns() - t0;
+            free(bmem);
+            if (st2 != 0u) {
+                printf("%-24s %5lu stream FAILED %d\n", m->name, (unsigned long)steps, -(int)st2);
+                continue;
+            }
+            printf("%-24s %5lu %10lu | %9.1f %8.2f %9lu | %9.1f %8.2f %11lu | %6.2f %7.0f %6s\n", m->name,
+                   (unsigned long)steps, (unsigned long)k2.tris, ts / 1e6, (double)k2.tris / 1e6 / (ts / 1e9),
+                   (unsigned long)splan, tm / 1e6, (double)out.num_faces / 1e6 / (tm / 1e9), (unsigned long)mh,
+                   ((double)k2.tris / ts) / ((double)out.num_faces / tm), (double)mh / (double)(plan + splan),
+                   (k1.h == k2.h && k1.tris == k2.tris) ? "=mat" : "DIFFERS");
+            fflush(stdout);
+        }
+    }
+    printf("\n   SUBD_SR48_STREAM_BYTES(steps, valence) (bytes; the base mesh not counted)\n%6s", "steps");
+    for (v = 0; v < 5u; v++) printf(" %9lu", (unsigned long)vals[v]);
+    printf("\n");
+    for (steps = 2; steps <= 16u; steps++) {
+        printf("%6lu", (unsigned long)steps);
+        for (v = 0; v < 5u; v++) printf(" %9lu", (unsigned long)SUBD_SR48_STREAM_BYTES(steps, vals[v]));
+        printf("\n");
+    }
+}
+
 static void section_alpha(void)
 {
     static const uint32_t orders[] = {2u, 3u, 4u};
@@ -1546,7 +1659,7 @@ static int section_on(const char *sections, const char *name)
 static int usage(int rc)
 {
     fprintf(rc ? stderr : stdout,
-            "usage: bench [-t SECONDS] [-s parse,format,loop,limit,q48,alpha,quality,pia,sr48,stream,fanbuild,valence48] [FILE.obj ...]\n"
+            "usage: bench [-t SECONDS] [-s parse,format,loop,limit,q48,alpha,quality,pia,sr48,sr48stream,stream,fanbuild,valence48] [FILE.obj ...]\n"
             "       bench -s demostream\n");
     return rc;
 }
@@ -1606,6 +1719,7 @@ int main(int argc, char **argv)
     if (section_on(sections, "quality")) section_quality();
     if (section_on(sections, "pia")) section_pia();
     if (section_on(sections, "sr48")) section_sr48();
+    if (section_on(sections, "sr48stream")) section_sr48stream();
     if (section_on(sections, "fanbuild")) failed += section_fanbuild();
     if (sections && section_on(sections, "valence48")) section_valence48();
     for (k = 0; k < g_nmesh; k++) host_mesh_free(&g_mesh[k].hm);

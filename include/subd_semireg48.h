@@ -78,6 +78,13 @@ typedef struct subd_sr48 {
     /* pre-processing report (section 5) */
     uint32_t num_clusters;     /* two-face clusters                                   */
     uint32_t num_isolated;     /* triangles split barycentrically                     */
+    /* the base mesh only (subd_sr48_base; NULL from subd_sr48_build): per hybrid triangle H
+     * (level -1, the parent of level-0 triangles 2H and 2H+1, level_tri[1] / 2 of them) the
+     * hybrid triangle across its base edge (an input edge), or SUBD_NONE on the boundary.
+     * It gives level 0's leg neighbours: triangle 2H has the sibling 2H+1 across leg 0 and
+     * child 1 of hyb_base_nb[H] across leg 1; 2H+1 has child 0 of hyb_base_nb[H] across
+     * leg 0 and the sibling across leg 1 (the rule of every later level). */
+    uint32_t *hyb_base_nb;
 } subd_sr48;
 
 /* Cluster count argument of subd_sr48_plan when it is not known. */
@@ -145,6 +152,26 @@ int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clust
  * allocates the output and runs find_clusters again above it. */
 int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out,
                     subd_diag *diag);
+
+/* subd_sr48_base_plan: the arena bytes subd_sr48_base uses, in *bytes: subd_sr48_plan of
+ * steps = 0 plus 4 bytes per hybrid triangle (level_tri[1] / 2) for hyb_base_nb; exact with
+ * subd_sr48_count_clusters' count, a bound with SUBD_SR48_CLUSTERS_UNKNOWN.
+ * Memory: no arena use.
+ * Errors: as subd_sr48_plan (flags: SUBD_SR48_NO_SMOOTH or 0).
+ * Cost: O(corners). */
+int subd_sr48_base_plan(const subd_mesh *in, uint32_t flags, uint32_t clusters, uint32_t *bytes);
+
+/* subd_sr48_base: the pre-processing alone (section 5): the level-0 hierarchy (as
+ * subd_sr48_build with steps = 0, the level-0 smoothing applied unless
+ * SUBD_SR48_NO_SMOOTH) with hyb_base_nb kept, the base mesh subd_sr48_stream refines. A
+ * device can build it once (or load it) and keep only it: it is the size of the control
+ * mesh (about 4 triangles per input triangle).
+ * Memory: exactly subd_sr48_base_plan with the cluster count at the peak; *out's arrays stay
+ *   in the arena.
+ * Errors: those of subd_sr48_build.
+ * Cost: O(corners) plus the edge sort.
+ * Notes: every field is as subd_sr48_build's with steps = 0; hyb_base_nb follows the arrays. */
+int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48 *out, subd_diag *diag);
 
 /* --------------------------------------------------------------------------------------
  * Variable-resolution extraction (section 7).
@@ -241,6 +268,92 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * first. */
 int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
                       subd_adapt_report *rep, subd_diag *diag);
+
+/* --------------------------------------------------------------------------------------
+ * Streaming (the common stream interface of subd.h, "Streams"). */
+
+typedef struct subd_sr48_stream_opts {
+    subd_adapt adapt; /* the cut; adapt.max_level is the finest level: binary steps above
+                         level 0, whose positions every emitted vertex has                */
+} subd_sr48_stream_opts;
+
+/* Largest valence (triangles around a base vertex) the stream takes. */
+#define SUBD_SR48_STREAM_MAX_VALENCE 64u
+
+/* subd_sr48_stream_plan: the exact arena bytes subd_sr48_stream needs, in *bytes: a function
+ * of adapt.max_level and the base mesh's largest valence only (SUBD_SR48_STREAM_BYTES).
+ * Memory: no arena use.
+ * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
+ *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, a mode other than
+ *   SUBD_ADAPT_UNIFORM: the adaptive modes are not streamed yet), SUBD_ERR_EMPTY,
+ *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
+ * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
+int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
+
+/* subd_sr48_stream_begin: the pull form (subd.h "Streams"): the stream's state into the
+ * arena, then subd_stream_next_tris hands out the triangles of subd_sr48_extract(UNIFORM,
+ * max_level) of subd_sr48_build(steps = max_level, the base's flags), in the same order,
+ * corners (apex, b0, b1), positions bit for bit (both arithmetics, with and without
+ * smoothing, open and closed meshes).
+ * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
+ *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
+ *   400 (next 56 + step 200 + refine 104 + scatter 24) plus the caller's; the push form
+ *   subd_sr48_stream about 630 plus the sink's.
+ * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing
+ *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
+ *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
+ *   overflowed: cannot happen within the valence the plan was made for).
+ * Cost: O(window) per internal batch of 2 triangles (the two children of a level
+ *   max_level-1 triangle: one refinement of the level max_level-1 window, about 60
+ *   triangles), O(window * valence) per level-0 triangle more (its window is gathered by fan
+ *   walks). Measured: 0.04-0.15x the faces/s of subd_sr48_build + subd_sr48_extract on the
+ *   host, about 22 600 instructions per triangle on the Cortex-M4F (bench -s sr48stream,
+ *   make demo).
+ * Notes: triangle face = the level-0 triangle it lies in, level = max_level. Ids: a level-0
+ * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose
+ * lower-index triangle is the i-th of level k-1 (i = its index minus level_tri[k-1]) gets
+ * num_verts + level_tri[1] (2^(k-1) - 1) + i (num_verts, level_tri of the base): equal ids
+ * have equal bits, and the ids are a bijection onto the extraction's vertices. */
+int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, subd_stream *s,
+                           subd_diag *diag);
+
+/* subd_sr48_stream: the push form: subd_sr48_stream_begin, then every triangle to sink->tri
+ * (subd_stream_run_tris).
+ * Memory: as subd_sr48_stream_begin; the arena is back where it was afterwards.
+ * Errors: those of subd_sr48_stream_begin, SUBD_ERR_PARAM (NULL sink), or the sink's
+ *   non-zero value unchanged.
+ * Cost: as subd_sr48_stream_begin. */
+int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, const subd_tri_sink *sink,
+                     subd_diag *diag);
+
+/* The plan at compile time, for a static buffer: L = adapt.max_level (0..SUBD_SR48_MAX_STEPS),
+ * N = the base's largest valence (triangles around a vertex; values below 8 count as 8). A
+ * uint32_t constant expression equal to subd_sr48_stream_plan. Example:
+ *     static uint8_t buf[SUBD_SR48_STREAM_BYTES(8, 12)] __attribute__((aligned(8)));
+ * The window of a level holds the triangles within SUBD_SR48_STREAM_RINGS_ vertex rings of the
+ * current triangle's children: at most SUBD_SR48_STREAM_WT_(N) triangles and
+ * SUBD_SR48_STREAM_WV_(N) vertices (measured: 56 and 40 on regular regions, 4N + 24 and
+ * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
+ * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
+ * overflow ring (2 triangles), max(L, 1) level windows (20 bytes per triangle, 21 per
+ * vertex), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
+ * (28 bytes per vertex in both arithmetics) and the crop's and level 0's maps. */
+#define SUBD_SR48_STREAM_RINGS_ 2u
+#define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
+#define SUBD_SR48_STREAM_WT_(n) (6u * SUBD_SR48_STREAM_N_(n) + 16u)
+#define SUBD_SR48_STREAM_WV_(n) (4u * SUBD_SR48_STREAM_N_(n) + 16u)
+#define SUBD_SR48_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
+#define SUBD_SR48_WIN_(t, v) \
+    (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(8u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
+     SUBD_SR48_SA_(8u * (v)) + SUBD_SR48_SA_(v))
+#define SUBD_SR48_STREAM_BYTES_WTV_(L, t, v) \
+    (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
+     ((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_WIN_(t, v) + SUBD_SR48_WIN_(2u * (t), (v) + (t)) + \
+     SUBD_SR48_SA_(24u * ((v) + (t))) + SUBD_SR48_SA_(4u * ((v) + (t))) + SUBD_SR48_SA_((v) + (t)) + \
+     SUBD_SR48_SA_(2u * (t)) + SUBD_SR48_SA_(4u * (t)) + SUBD_SR48_SA_(2u * ((v) + (t))) + SUBD_SR48_SA_(4u * (t)) + \
+     2u * SUBD_SR48_SA_(4u * (v)))
+#define SUBD_SR48_STREAM_BYTES(L, N) \
+    SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
 
 #ifdef __cplusplus
 }

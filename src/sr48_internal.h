@@ -24,6 +24,7 @@
 /* Counts and bytes of one build, from the input, the options and the cluster count. */
 typedef struct sr48_layout {
     uint32_t steps, smooth;
+    uint32_t keep;   /* the base mesh: keep the hybrid level's base neighbours (hnb)        */
     uint32_t nf, ne, clusters, isolated;
     uint32_t nhyb;   /* hybrid triangles 4C + 3I                                           */
     uint32_t nv_hyb; /* vertices before the edge points: V + C + I                         */

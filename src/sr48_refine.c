@@ -83,12 +83,13 @@ static int sr48_out_layout(subd_arena *a, const sr48_layout *L, subd_sr48 *h, ui
     p->pos = subd_layout_take(&l, 3u * nv, (uint32_t)sizeof(subd_real));
     p->tri_vert = subd_layout_take(&l, 3u * nt, 4u);
     p->tri_base_nb = subd_layout_take(&l, nt, 4u);
+    p->hyb_base_nb = L->keep ? (uint32_t *)subd_layout_take(&l, L->nhyb, 4u) : 0;
     return subd_layout_end(&l, bytes);
 }
 
 /* Counts and bytes; clusters may be SUBD_SR48_CLUSTERS_UNKNOWN (bound: no clusters). */
-static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, sr48_layout *L,
-                            subd_diag *d)
+static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t keep_hnb,
+                            sr48_layout *L, subd_diag *d)
 {
     const uint64_t lim = 0x0fffffffu; /* counts below 2^28: 3 * 4 * count fits 32 bits */
     uint64_t c, F, E, B, T, V, tt = 0;
@@ -101,6 +102,7 @@ static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32
     c = (clusters == SUBD_SR48_CLUSTERS_UNKNOWN) ? 0u : clusters;
     if (2u * c > F || c > E) return subd_fail(d, SUBD_ERR_PARAM);
     L->steps = o->steps;
+    L->keep = keep_hnb;
     L->smooth = (o->flags & SUBD_SR48_NO_SMOOTH) ? 0u : 1u;
     L->nf = (uint32_t)F;
     L->ne = (uint32_t)E;
@@ -152,7 +154,7 @@ int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t cluste
     int st;
     subd_diag_clear(&d);
     if (!bytes) return SUBD_ERR_PARAM;
-    st = sr48_layout_calc(in, o, clusters, &L, &d);
+    st = sr48_layout_calc(in, o, clusters, 0, &L, &d);
     if (st == SUBD_OK) *bytes = L.bytes;
     return st;
 }
@@ -179,18 +181,18 @@ static int count_in_place(subd_arena *a, const subd_mesh *in, uint32_t *clusters
  * find_clusters gives, so find_clusters runs first in the free arena space (given back)
  * and the layout is then computed with its count. On SUBD_ERR_NOMEM d->bytes_needed is the
  * plan (the bound without clusters when not even find_clusters fits). */
-static int sr48_layout_exact(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, sr48_layout *L,
-                             subd_diag *d)
+static int sr48_layout_exact(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, uint32_t keep_hnb,
+                             sr48_layout *L, subd_diag *d)
 {
     uint32_t clusters;
     int st;
-    if ((st = sr48_layout_calc(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, L, d)) != SUBD_OK) return st;
+    if ((st = sr48_layout_calc(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, keep_hnb, L, d)) != SUBD_OK) return st;
     if (L->a_bytes > subd_arena_free_bytes(a)) {
         d->bytes_needed = L->bytes; /* the bound: not even the cluster count fits */
         return subd_fail(d, SUBD_ERR_NOMEM);
     }
     if ((st = count_in_place(a, in, &clusters, d)) != SUBD_OK) return st;
-    if ((st = sr48_layout_calc(in, o, clusters, L, d)) != SUBD_OK) return st;
+    if ((st = sr48_layout_calc(in, o, clusters, keep_hnb, L, d)) != SUBD_OK) return st;
     d->bytes_needed = L->bytes;
     if (L->bytes > subd_arena_free_bytes(a)) return subd_fail(d, SUBD_ERR_NOMEM);
     return SUBD_OK;
@@ -207,7 +209,7 @@ int subd_sr48_count_clusters(subd_arena *a, const subd_mesh *in, uint32_t *clust
     if (!a || !clusters) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     o.steps = 0;
     o.flags = 0;
-    if ((st = sr48_layout_calc(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = sr48_layout_calc(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, 0, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     if ((st = count_in_place(a, in, &n, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     *clusters = n;
     return subd_entry_ok(&e);
@@ -320,7 +322,8 @@ int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pba
 
 /* ------------------------------------------------------------------------------------ */
 
-int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out, subd_diag *diag)
+static int sr48_build_impl(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, uint32_t keep_hnb, subd_sr48 *out,
+                           subd_diag *diag)
 {
     subd_entry e;
     subd_diag *d = subd_entry_begin(&e, a, diag);
@@ -332,7 +335,7 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
     int st;
 
     if (!a || !out) return subd_entry_fail(&e, SUBD_ERR_PARAM);
-    if ((st = sr48_layout_exact(a, in, o, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = sr48_layout_exact(a, in, o, keep_hnb, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
 
     h.steps = o->steps;
     h.flags = o->flags;
@@ -356,6 +359,8 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
     if (st == SUBD_OK && L.smooth) st = sums_layout(a, L.nv_hyb, &sums, &tmp);
     if (st == SUBD_OK) st = subd_sr48_level0(in, &L, &w, &h);
     if (st == SUBD_OK && L.smooth) st = subd_sr48_smooth(&h, 0, w.hnb, 0, L.nv_hyb, &sums);
+    if (st == SUBD_OK && keep_hnb)
+        for (k = 0; k < L.nhyb; k++) h.hyb_base_nb[k] = w.hnb[k]; /* the base keeps level -1's neighbours */
     if (st == SUBD_OK && o->steps >= 1u) st = subd_sr48_step(&h, 0, w.hnb, 0, (int)L.smooth);
     if (st != SUBD_OK) return subd_entry_fail(&e, st);
     subd_arena_rewind(a, base);
@@ -373,4 +378,39 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
     }
     *out = h;
     return subd_entry_ok(&e);
+}
+
+int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o, subd_sr48 *out, subd_diag *diag)
+{
+    return sr48_build_impl(a, in, o, 0, out, diag);
+}
+
+/* The base mesh: a build with steps = 0 that keeps the hybrid level's base neighbours. */
+static int sr48_base_opts(const uint32_t *flags, subd_sr48_opts *o)
+{
+    if (!flags) return SUBD_ERR_PARAM;
+    o->steps = 0;
+    o->flags = *flags;
+    return SUBD_OK;
+}
+
+int subd_sr48_base_plan(const subd_mesh *in, uint32_t flags, uint32_t clusters, uint32_t *bytes)
+{
+    sr48_layout L;
+    subd_sr48_opts o;
+    subd_diag d;
+    int st;
+    subd_diag_clear(&d);
+    if (!bytes) return SUBD_ERR_PARAM;
+    (void)sr48_base_opts(&flags, &o);
+    st = sr48_layout_calc(in, &o, clusters, 1u, &L, &d);
+    if (st == SUBD_OK) *bytes = L.bytes;
+    return st;
+}
+
+int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48 *out, subd_diag *diag)
+{
+    subd_sr48_opts o;
+    (void)sr48_base_opts(&flags, &o);
+    return sr48_build_impl(a, in, &o, 1u, out, diag);
 }

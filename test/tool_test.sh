@@ -383,6 +383,22 @@ check $? "semireg48 -l 0 icosahedron: V + T + E vertices, 8C + 6T faces, arena u
 run "$FIXED" semireg48 -l 3 test/data/icosahedron.obj -o "$T/sr3.obj" --stats
 is 0 && [ "$(json_num faces)" = $((8 * (8 * c + 6 * ti))) ] && [ "$(json_num arena_planned)" = "$(json_num arena_used)" ]
 check $? "subd-fixed semireg48 -l 3 icosahedron: 2^3 x the level-0 faces, arena used = planned"
+# semireg48 --stream: the same triangles as semireg48 (faces expanded to their corner
+# coordinates, which both write with the library's formatter), in a stream arena of its own
+off_faces() { awk 'NR==2{nv=$1} NR>2 && NR<=2+nv{v[NR-3]=$1" "$2" "$3} NR>2+nv{print v[$2]" | "v[$3]" | "v[$4]}' "$1" | sort; }
+for bin in "$FLOAT" "$FIXED"; do
+    for l in 0 3; do
+        run "$bin" semireg48 -l $l test/data/icosahedron.obj -o "$T/srm.off"
+        run "$bin" semireg48 --stream --stats -l $l test/data/icosahedron.obj -o "$T/srs.off"
+        is 0 && [ "$(json_num stream_arena)" -gt 0 ] && [ "$(json_num arena_planned)" = "$(json_num arena_used)" ] &&
+            [ "$(off_faces "$T/srm.off")" = "$(off_faces "$T/srs.off")" ]
+        check $? "$(basename "$bin") semireg48 --stream -l $l: semireg48's triangles, arena used = planned"
+    done
+done
+run "$FLOAT" semireg48 --stream -l 2 test/data/icosahedron.obj -o "$T/srs.stl"
+is 0 && [ "$(wc -c < "$T/srs.stl")" = $((84 + 50 * 8 * (8 * c + 6 * ti) / 2)) ]
+check $? "semireg48 --stream -o .stl: 84 + 50 bytes per triangle"
+usage_case_pre semireg48 --stream --limit -l 2 test/data/icosahedron.obj -o "$T/x.stl"; check $? "semireg48 --stream --limit: exit 1"
 run "$FLOAT" adapt -l 6 --chord 0.01 demo/torus_12x6.obj -o "$T/ad.obj" --stats
 is 0 && json_ok "$T/out" && [ "$(json_num uniform_faces)" = 36864 ] &&
     [ "$(json_num faces)" -lt 36864 ] && [ "$(json_num saved_faces)" = $((36864 - $(json_num faces))) ] &&
@@ -556,14 +572,14 @@ fi
 usage_case_pre loop --limit test/data/icosahedron.obj -o "$T/x.obj"
 grep -q -- '--limit needs --stream' "$T/err"; check $? "loop --limit without --stream: exit 1, says so"
 usage_case_pre convert --stream test/data/icosahedron.obj -o "$T/x.obj"
-grep -q -- "--stream applies to 'loop' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's"
+grep -q -- "--stream applies to 'loop' and 'semireg48' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's and semireg48's"
 usage_case_pre limit --stream --limit test/data/icosahedron.obj -o "$T/x.obj"; check $? "limit --stream: exit 1"
 for e in png xyz; do
     usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.$e"
     grep -q -- '--stream writes .stl, .obj or .off' "$T/err"; check $? "loop --stream -o .$e: exit 1, names the formats"
 done
 usage_case_pre loop test/data/icosahedron.obj -o "$T/x.stl"
-grep -q "written by 'loop --stream' only" "$T/err"; check $? "loop -o .stl without --stream: exit 1"
+grep -q "written by --stream only" "$T/err"; check $? "loop -o .stl without --stream: exit 1"
 usage_case_pre loop --stream test/data/icosahedron.obj
 grep -q "needs an output file" "$T/err"; check $? "loop --stream without -o and without --stats: exit 1"
 run "$FLOAT" --help

@@ -21,6 +21,10 @@ static uint8_t arena_buf[96 * 1024] __attribute__((aligned(8)));
 static uint8_t stream_arena[SUBD_LOOP_STREAM_BYTES(DEMO_STREAM_LEVELS, DEMO_GEO_MAX_VALENCE)]
     __attribute__((aligned(8)));
 typedef char stream_arena_within_16k[sizeof stream_arena <= 16u * 1024u ? 1 : -1];
+/* The semi-regular 4-8 stream's own arena: 8 binary steps, base valence up to 8 (the
+ * icosahedron's level 0). The materialised hierarchy of 8 steps would take ~1 MB. */
+#define DEMO_SR48_STEPS 8u
+static uint8_t sr48_stream_arena[SUBD_SR48_STREAM_BYTES(DEMO_SR48_STEPS, 8)] __attribute__((aligned(8)));
 static demo_geo geo; /* the generator's face list (copied into arena_buf by the builder) */
 
 static const char icosahedron_obj[] =
@@ -43,6 +47,9 @@ static void kv(const char *key, uint32_t v)
 
 /* Marks the arena and starts a new peak measurement there, so each step's peak can be
  * compared with its own plan. */
+static void kv64(const char *key, uint64_t v);
+static void kv_hex(const char *key, uint32_t v);
+
 static uint32_t start_measure(subd_arena *a)
 {
     subd_arena_reset_peak(a);
@@ -195,6 +202,65 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     return SUBD_OK;
 }
 
+/* FNV-1a over the little-endian bytes of every emitted coordinate's bits (the tool's
+ * --stats "checksum" of `subd semireg48 --stream`). */
+typedef struct sr48_hash {
+    uint32_t h, tris;
+} sr48_hash;
+static int sr48_hash_tri(void *ctx, const subd_tri *t)
+{
+    sr48_hash *k = (sr48_hash *)ctx;
+    uint32_t c, q, i, w;
+    for (c = 0; c < 3u; c++)
+        for (q = 0; q < 3u; q++) {
+            w = subd_real_bits(t->pos[c][q]);
+            for (i = 0; i < 4u; i++) k->h = (k->h ^ ((w >> (8u * i)) & 0xffu)) * 16777619u;
+        }
+    k->tris++;
+    return 0;
+}
+
+/* The semi-regular 4-8 surface streamed: the base mesh (subd_sr48_base) in the arena, then
+ * DEMO_SR48_STEPS binary steps, uniform, through a checksum sink, in a static buffer of
+ * SUBD_SR48_STREAM_BYTES. Host: subd semireg48 --stream --stats -l 8 (the same OBJ). */
+static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
+{
+    subd_sr48 base;
+    subd_sr48_stream_opts so;
+    subd_arena sa;
+    subd_diag d;
+    subd_tri_sink sink;
+    sr48_hash k;
+    uint32_t plan, t0, t1, mark = start_measure(arena);
+    uint64_t insns;
+    int st;
+    print_str("semi-regular 4-8 stream, uniform, 8 binary steps:\n");
+    if ((st = subd_sr48_base(arena, in, 0, &base, &d)) != SUBD_OK) return report_error(st, &d);
+    kv("base mesh arena bytes", arena->peak - mark);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = DEMO_SR48_STEPS;
+    if ((st = subd_sr48_stream_plan(&base, &so, &plan, &d)) != SUBD_OK) return report_error(st, &d);
+    kv("stream arena bytes planned", plan);
+    kv("static buffer bytes", (uint32_t)sizeof sr48_stream_arena);
+    subd_arena_init(&sa, sr48_stream_arena, sizeof sr48_stream_arena);
+    k.h = 2166136261u;
+    k.tris = 0;
+    sink.tri = sr48_hash_tri;
+    sink.ctx = &k;
+    t0 = port_cycles();
+    st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    kv("stream arena bytes used (peak)", sa.peak);
+    kv("triangles", k.tris);
+    kv_hex("checksum", k.h);
+    kv64("instructions, stream + checksum sink", insns);
+    kv("instructions per triangle", (uint32_t)(insns / k.tris));
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}
+
 static int demo_icosahedron(subd_arena *arena)
 {
     subd_mesh m;
@@ -228,6 +294,7 @@ static int demo_icosahedron(subd_arena *arena)
     if ((st = demo_limit(arena, &m)) != SUBD_OK) return st;
     if ((st = demo_quasi48(arena, &m)) != SUBD_OK) return st;
     if ((st = demo_semireg48(arena, &m)) != SUBD_OK) return st;
+    if ((st = demo_sr48_stream(arena, &m)) != SUBD_OK) return st;
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }

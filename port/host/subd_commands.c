@@ -184,6 +184,34 @@ static int sr48_build_plan(const subd_mesh *in, const subd_sr48_opts *so, uint32
     return subd_sr48_plan(in, so, clusters, bytes);
 }
 
+/* semireg48 --stream: the base mesh (exact, with the cluster count) plus the stream's plan
+ * (which needs the base: built once in host memory). */
+static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
+{
+    uint32_t flags = o->no_smooth ? SUBD_SR48_NO_SMOOTH : 0u, bound, clusters = 0, base_bytes = 0, sb = 0;
+    subd_sr48_stream_opts so;
+    subd_arena tmp;
+    subd_sr48 base;
+    void *mem;
+    int st = subd_sr48_base_plan(in, flags, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    if (st != SUBD_OK) return st;
+    mem = host_arena_alloc(&tmp, bound);
+    if (!mem) return SUBD_ERR_NOMEM;
+    st = subd_sr48_count_clusters(&tmp, in, &clusters, d);
+    if (st == SUBD_OK) st = subd_sr48_base_plan(in, flags, clusters, &base_bytes);
+    if (st == SUBD_OK) st = subd_sr48_base(&tmp, in, flags, &base, d);
+    memset(&so, 0, sizeof so);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = o->levels;
+    if (st == SUBD_OK) st = subd_sr48_stream_plan(&base, &so, &sb, d);
+    bound = tmp.used; /* the base; its build scratch above it is given back */
+    free(mem);
+    if (st != SUBD_OK) return st;
+    if (sb > UINT32_MAX - bound) return SUBD_ERR_TOO_BIG;
+    *bytes = bound + sb > base_bytes ? bound + sb : base_bytes;
+    return SUBD_OK;
+}
+
 static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_sr48_opts so = sr48_opts_of(o);
@@ -192,7 +220,9 @@ static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, s
     subd_arena tmp;
     subd_sr48 h;
     void *mem;
-    int st = sr48_build_plan(in, &so, &build, d);
+    int st;
+    if (o->stream) return sr48_stream_plan(in, o, bytes, d);
+    st = sr48_build_plan(in, &so, &build, d);
     if (st != SUBD_OK) return st;
     mem = host_arena_alloc(&tmp, build);
     if (!mem) return SUBD_ERR_NOMEM;
@@ -476,7 +506,7 @@ const command tool_commands[] = {
     {"semireg48", "[-l N] INPUT -o OUTPUT", "semi-regular 4-8 refinement with Zwart-Powell box-spline\n"
                                             "smoothing, N binary steps after pre-processing (default\n"
                                             "2; -l 0 writes the pre-processed mesh); --no-smooth",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 2, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH, sr48_plan,
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 2, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH | OPT_STREAM, sr48_plan,
      sr48_run, NULL},
     {"adapt", "-l MAX MODE INPUT -o OUTPUT", "variable-resolution semi-regular 4-8 mesh up to MAX binary\n"
                                              "steps; MODE: --point X,Y,Z [--radius R] | --ramp x|y|z |\n"

@@ -372,7 +372,8 @@ static const tool_option options[] = {
     {"--normals", NULL, NULL, 0, OPT_NORMALS, set_flag,
      "(limit) also write unit limit normals as OBJ vn records"},
     {"--stream", NULL, NULL, 0, OPT_STREAM, set_flag,
-     "(loop) stream the triangles one at a time (subd_loop_stream), in an\n"
+     "(loop, semireg48) stream the triangles one at a time\n"
+     "(subd_loop_stream, subd_sr48_stream), in an\n"
      "arena set by the level and largest valence only: .stl is written as\n"
      "they come (memory independent of the output; may be a pipe);\n"
      ".obj/.off are gathered on the host by vertex id; with --stats, -o\n"
@@ -495,7 +496,9 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     if (!o->input) return tool_usage_error("'%s' needs an input file", cmd->name);
     /* --stream and --limit: before the output checks, which depend on them */
     if (o->stream && !(cmd->options & OPT_STREAM))
-        return tool_usage_error("--stream applies to 'loop' only (not '%s')", cmd->name);
+        return tool_usage_error("--stream applies to 'loop' and 'semireg48' only (not '%s')", cmd->name);
+    o->sr48_stream = o->stream && strcmp(cmd->name, "semireg48") == 0;
+    if (o->limit && o->sr48_stream) return tool_usage_error("--limit applies to 'loop --stream' only");
     if (o->limit && !o->stream)
         return tool_usage_error("--limit needs --stream (for the limit of a mesh's own vertices: 'subd limit')");
     if (!host_format_readable(host_format_of(o->input)))
@@ -508,7 +511,7 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         if ((cmd->flags & CMD_PNG_ONLY) && o->out_format != HOST_FMT_PNG)
             return tool_usage_error("'%s' writes a .png picture", cmd->name);
         if (o->out_format == HOST_FMT_STL && !o->stream)
-            return tool_usage_error("cannot write '%s': .stl is written by 'loop --stream' only", o->output);
+            return tool_usage_error("cannot write '%s': .stl is written by --stream only", o->output);
         if (o->stream && (o->out_format == HOST_FMT_PNG || o->out_format == HOST_FMT_XYZ))
             return tool_usage_error("cannot write '%s': --stream writes .stl, .obj or .off", o->output);
     } else if (o->stream && o->stats) {

@@ -39,6 +39,7 @@
  * triangle uses, edges, and the size of the id space. */
 typedef struct stream_counts {
     uint64_t tris, verts, edges, ids;
+    int verts_exact; /* verts is the count (Loop's closed form), else a bound (semireg48) */
 } stream_counts;
 
 static stream_counts counts_of(const subd_mesh *in, uint32_t levels)
@@ -50,6 +51,7 @@ static stream_counts counts_of(const subd_mesh *in, uint32_t levels)
     c.verts = (uint64_t)(in->num_verts - in->num_isolated) + (uint64_t)in->num_edges * (n - 1u) + inner;
     c.edges = (uint64_t)in->num_edges * n + 3u * f * (n * (n - 1u) / 2u);
     c.ids = (uint64_t)in->num_verts + (uint64_t)in->num_corners * (n - 1u) + inner;
+    c.verts_exact = 1;
     return c;
 }
 
@@ -161,8 +163,8 @@ static int stl_begin(stream_sink *s, const tool_opts *o, uint32_t tris)
 {
     char head[96];
     unsigned char *p = out_room(s, 84u);
-    int n = snprintf(head, sizeof head, "tinysubd loop stream, level %lu, %s%s", (unsigned long)o->levels,
-                     ARITHMETIC, o->limit ? ", limit" : "");
+    int n = snprintf(head, sizeof head, "tinysubd %s stream, level %lu, %s%s", o->sr48_stream ? "semireg48" : "loop",
+                     (unsigned long)o->levels, ARITHMETIC, o->limit ? ", limit" : "");
     if (!p) return SINK_WRITE;
     memset(p, ' ', 80u);
     memcpy(p, head, n > 80 ? 80u : (size_t)n);
@@ -283,7 +285,8 @@ static int gather_alloc(tool_run *r, stream_sink *s, const stream_counts *c)
     return EXIT_OK;
 }
 
-static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s, const stream_counts *c)
+static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s, const stream_counts *c,
+                       const subd_sr48 *base)
 {
     const tool_opts *o = &r->o;
     host_format fmt = o->output ? o->out_format : HOST_FMT_UNKNOWN;
@@ -320,10 +323,18 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     sink.ctx = s;
     if (st == 0) {
         t0 = host_now_ns();
-        st = subd_loop_stream(a, &r->in.mesh, &lo, &sink, d);
+        if (base) {
+            subd_sr48_stream_opts so;
+            memset(&so, 0, sizeof so);
+            so.adapt.mode = SUBD_ADAPT_UNIFORM;
+            so.adapt.max_level = o->levels;
+            st = subd_sr48_stream(a, base, &so, &sink, d);
+        } else {
+            st = subd_loop_stream(a, &r->in.mesh, &lo, &sink, d);
+        }
         r->lib_ns += host_now_ns() - t0;
     }
-    if (st == 0 && (s->tris != c->tris || (s->index && s->nv != c->verts))) st = SINK_COUNT;
+    if (st == 0 && (s->tris != c->tris || (s->index && c->verts_exact && s->nv != c->verts))) st = SINK_COUNT;
     if (out_close(s, o->output, regular, st == 0) != 0 && st == 0) st = SINK_WRITE;
     if (st < 0) return st; /* the library's status: subd_main.c reports it */
     if (st == SINK_WRITE) {
@@ -340,16 +351,49 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     return 0;
 }
 
+/* semireg48 --stream: the base mesh (subd_sr48_base) in the arena, then subd_sr48_stream
+ * above it. Counts: n0 2^L triangles (n0 = the base's triangles); ids below
+ * V0 + n0 (2^L - 1) (subd_semireg48.h); the vertex count is what the sink gathers. */
+static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr48 *base, stream_counts *c,
+                               uint32_t *stream_bytes)
+{
+    uint32_t flags = r->o.no_smooth ? SUBD_SR48_NO_SMOOTH : 0u;
+    subd_sr48_stream_opts so;
+    double t0 = host_now_ns();
+    int st = subd_sr48_base(a, &r->in.mesh, flags, base, d);
+    memset(&so, 0, sizeof so);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = r->o.levels;
+    if (st == SUBD_OK) st = subd_sr48_stream_plan(base, &so, stream_bytes, d);
+    r->lib_ns += host_now_ns() - t0;
+    if (st != SUBD_OK) return st;
+    c->tris = (uint64_t)base->level_tri[1] << r->o.levels;
+    c->ids = (uint64_t)base->num_verts + (uint64_t)base->level_tri[1] * (((uint64_t)1 << r->o.levels) - 1u);
+    c->verts = c->ids < 3u * c->tris ? c->ids : 3u * c->tris; /* a bound: the sink counts them */
+    c->verts_exact = 0;
+    c->edges = 0;
+    return SUBD_OK;
+}
+
 int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
 {
     const subd_mesh *in = &r->in.mesh;
     stream_counts c = counts_of(in, r->o.levels);
     stream_sink *s = (stream_sink *)calloc(1, sizeof *s);
     subd_mesh *m = &r->out;
-    uint32_t k;
-    int st;
+    subd_sr48 base;
+    uint32_t k, stream_bytes = 0;
+    int st = 0;
     if (!s) return tool_out_of_memory();
-    st = stream_into(r, a, d, s, &c);
+    if (r->o.sr48_stream) {
+        st = sr48_stream_prepare(r, a, d, &base, &c, &stream_bytes);
+        if (st != SUBD_OK) {
+            free(s);
+            return st;
+        }
+    }
+    st = stream_into(r, a, d, s, &c, r->o.sr48_stream ? &base : NULL);
+    if (r->o.sr48_stream) c.verts = s->nv;
     memset(m, 0, sizeof *m);
     m->num_verts = sat32(c.verts);
     m->num_faces = sat32(c.tris);
@@ -365,7 +409,14 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
         for (k = 0; k <= m->num_faces; k++) m->face_start[k] = 3u * k;
         st = tool_write_output(r);
     }
-    {
+    if (r->o.sr48_stream)
+        snprintf(r->extra.json, sizeof r->extra.json,
+                 "\"stream\":true,\"stream_arena\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"uniform\","
+                 "\"base_triangles\":%lu,\"faces\":%llu,\"triangles\":%llu,\"checksum\":\"%08lx\"",
+                 (unsigned long)stream_bytes, (unsigned long)r->o.levels, r->o.no_smooth ? "false" : "true",
+                 (unsigned long)base.level_tri[1], (unsigned long long)s->tris, (unsigned long long)s->tris,
+                 (unsigned long)s->hash);
+    else {
         /* the stream's own arena (its plan; the mesh not counted), beside arena_planned */
         subd_loop_opts lo = tool_loop_opts(&r->o);
         uint32_t sb = 0;

@@ -68,6 +68,7 @@ typedef struct tool_opts {
     uint32_t adapt_axis;         /* --ramp x|y|z                                          */
     double radius;               /* --radius R (adapt --point)                            */
     int stream;                  /* --stream (loop): subd_loop_stream, triangles to a sink */
+    int sr48_stream;             /* --stream of semireg48: subd_sr48_stream                */
     int limit;                   /* --limit (loop --stream): limit positions and normals   */
     unsigned given;              /* OPT_* bits of the scheme options given                */
 } tool_opts;

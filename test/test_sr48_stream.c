@@ -1,0 +1,491 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming semi-regular 4-8 (subd_sr48_stream, src/sr48_stream.c) against the materialising
+ * calls: subd_sr48_build(steps = L) then subd_sr48_extract(UNIFORM, L). On closed and open
+ * shapes (tetrahedron: valence 3 input vertices; cube of triangles; icosahedron; a hexagon
+ * fan; an open 8x8 grid; two triangles with an isolated-triangle pre-processing; the torus),
+ * levels 0..4, smoothing on and off, both arithmetics:
+ *  - the j-th streamed triangle is the extraction's face j: same corners (apex, b0, b1) with
+ *    the same position bits;
+ *  - ids: one id per extraction vertex and one vertex per id (a bijection), level-0 ids =
+ *    base indices; welding by id gives the extraction's mesh, so a closed input gives a
+ *    closed 2-manifold (the validator's boundary edge count is 0);
+ *  - the pull form in batches of 1, 7 and 100 gives the same triangles as the push form;
+ *  - the plan equals the peak, every smaller arena fails with SUBD_ERR_NOMEM (bytes_needed =
+ *    the plan, nothing emitted, arena unchanged); bad parameters; a sink's stop value. */
+#include "harness.h"
+#include "corpus.h"
+#if H_HOST
+#include <stdio.h>
+#define T_NOTE(...) printf(__VA_ARGS__)
+#else
+#define T_NOTE(...) ((void)0)
+#endif
+
+static const char tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+static const char cube_obj[] =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
+    "f 4 1 5\nf 4 5 8\n";
+static const char two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
+
+enum { S_TET, S_CUBE, S_ICO, S_HEXFAN, S_GRID, S_TWO, S_TORUS, S_BIPYR, S_COUNT };
+
+/* A closed bipyramid with apexes of valence n (3..16), equator valence 4: g_bn sets n. */
+static uint32_t g_bn = 5;
+static subd_real g_bpos[3 * 18];
+static uint32_t g_bidx[3 * 32];
+static int make_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
+{
+    static const int32_t cs[16][2] = {{1000, 0}, {924, 383}, {707, 707}, {383, 924}, {0, 1000}, {-383, 924},
+                                      {-707, 707}, {-924, 383}, {-1000, 0}, {-924, -383}, {-707, -707},
+                                      {-383, -924}, {0, -1000}, {383, -924}, {707, -707}, {924, -383}};
+    subd_face_list fl;
+    uint32_t i, step = 16u / n;
+    for (i = 0; i < n; i++) {
+        uint32_t j = (i * 16u) / n;
+        g_bpos[3 * i] = h_int(cs[j][0]) / 1000;
+        g_bpos[3 * i + 1] = h_int(cs[j][1]) / 1000;
+        g_bpos[3 * i + 2] = h_int((int32_t)(i & 1u)) / 8;
+        g_bidx[6 * i] = n; g_bidx[6 * i + 1] = i; g_bidx[6 * i + 2] = (i + 1u) % n;
+        g_bidx[6 * i + 3] = n + 1u; g_bidx[6 * i + 4] = (i + 1u) % n; g_bidx[6 * i + 5] = i;
+    }
+    (void)step;
+    g_bpos[3 * n] = 0; g_bpos[3 * n + 1] = 0; g_bpos[3 * n + 2] = h_int(1);
+    g_bpos[3 * n + 3] = 0; g_bpos[3 * n + 4] = 0; g_bpos[3 * n + 5] = -h_int(1);
+    fl.num_verts = n + 2u;
+    fl.pos = g_bpos;
+    fl.num_faces = 2u * n;
+    fl.face_size = 0;
+    fl.index = g_bidx;
+    fl.num_lines = 0;
+    fl.line_size = 0;
+    fl.line_index = 0;
+    return h_build(a, &fl, m);
+}
+
+#define ST_ARENA (64u * 1024u)       /* the stream's arena: the top of h_arena_buf         */
+#define MAT_ARENA (H_ARENA_BYTES - ST_ARENA)
+#define MAXV 2048u
+
+static subd_real g_tpos[3 * 64];
+static uint32_t g_tidx[6 * 64];
+
+static int load_text(subd_arena *a, const char *txt, subd_mesh *m)
+{
+    subd_diag d;
+    uint32_t n = 0;
+    while (txt[n]) n++;
+    return CHECK_EQ(subd_obj_read(a, txt, n, m, &d), SUBD_OK);
+}
+
+static int make_shape(int id, subd_arena *a, subd_mesh *m)
+{
+    const corpus_file *f = 0;
+    subd_diag d;
+    switch (id) {
+    case S_TET: return load_text(a, tet_obj, m);
+    case S_CUBE: return load_text(a, cube_obj, m);
+    case S_TWO: return load_text(a, two_obj, m);
+    case S_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
+    case S_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
+    case S_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
+    case S_BIPYR: return make_bipyramid(a, m, g_bn);
+    case S_TORUS: {
+        subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
+        return h_build(a, &fl, m);
+    }
+    default: return 0;
+    }
+    if (!CHECK(f != 0)) return 0;
+    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
+}
+
+/* The sink: compares triangle j with the extraction's face j. */
+typedef struct cmp_ctx {
+    const subd_mesh *m;
+    uint32_t j, bad, stop_after;
+    uint64_t id[MAXV];
+    uint8_t have[MAXV];
+    uint32_t hash;
+} cmp_ctx;
+
+static cmp_ctx g_cc;
+
+static uint32_t tri_hash(uint32_t h, const subd_tri *t)
+{
+    uint32_t i, j;
+    for (i = 0; i < 3u; i++) {
+        for (j = 0; j < 3u; j++) {
+            uint32_t b = subd_real_bits(t->pos[i][j]);
+            h = h_fnv(h, &b, 4);
+        }
+        h = h_fnv(h, &t->id[i], 8);
+    }
+    h = h_fnv(h, &t->face, 4);
+    return h_fnv(h, &t->level, 4);
+}
+
+static int cmp_tri(void *ctx, const subd_tri *t)
+{
+    cmp_ctx *c = (cmp_ctx *)ctx;
+    const subd_mesh *m = c->m;
+    uint32_t i, q;
+    c->hash = tri_hash(c->hash, t);
+    if (c->j >= m->num_faces) {
+        c->bad++;
+        return 0;
+    }
+    for (i = 0; i < 3u; i++) {
+        uint32_t v = m->corner_vert[3u * c->j + i];
+        for (q = 0; q < 3u; q++)
+            if (!h_same(t->pos[i][q], m->pos[3u * v + q])) c->bad++;
+        if (v < MAXV) {
+            if (c->have[v] && c->id[v] != t->id[i]) c->bad++;
+            c->have[v] = 1;
+            c->id[v] = t->id[i];
+        }
+    }
+    c->j++;
+    if (c->stop_after && c->j == c->stop_after) return 77;
+    return 0;
+}
+
+/* Ids distinct across vertices (an insertion sort of c->id in place: the last use). */
+static int ids_distinct(cmp_ctx *c, uint32_t nv)
+{
+    uint64_t *ids = c->id;
+    uint32_t i, j;
+    for (i = 0; i < nv; i++) {
+        uint64_t x = c->id[i];
+        j = i;
+        while (j > 0u && ids[j - 1u] > x) {
+            ids[j] = ids[j - 1u];
+            j--;
+        }
+        ids[j] = x;
+    }
+    for (i = 1; i < nv; i++)
+        if (ids[i] == ids[i - 1u]) return 0;
+    return 1;
+}
+
+static subd_tri g_buf[100];
+
+/* The base's largest valence counted directly: triangles per vertex. */
+static uint16_t g_cnt[MAXV];
+static uint32_t base_valence(const subd_sr48 *b)
+{
+    uint32_t t, best = 0;
+    if (b->num_verts > MAXV) return 0;
+    for (t = 0; t < b->num_verts; t++) g_cnt[t] = 0;
+    for (t = 0; t < 3u * b->level_tri[1]; t++)
+        if (++g_cnt[b->tri_vert[t]] > best) best = g_cnt[b->tri_vert[t]];
+    return best;
+}
+
+/* Pull in batches of `batch`: the hash of everything. */
+static int pull_hash(subd_arena *a, const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t batch,
+                     uint32_t *hash, uint32_t *count)
+{
+    subd_stream s;
+    subd_diag d;
+    uint32_t h = 2166136261u, n = 0, mark = subd_arena_mark(a);
+    int got, i;
+    if (!CHECK_EQ(subd_sr48_stream_begin(a, base, o, &s, &d), SUBD_OK)) return 0;
+    while ((got = subd_stream_next_tris(&s, g_buf, batch)) > 0) {
+        CHECK(got <= (int)batch);
+        for (i = 0; i < got; i++) h = tri_hash(h, &g_buf[i]);
+        n += (uint32_t)got;
+    }
+    CHECK_EQ(got, 0);
+    CHECK_EQ(subd_arena_mark(a), mark);
+    *hash = h;
+    *count = n;
+    return 1;
+}
+
+static void run_case(int shape, uint32_t levels, uint32_t flags)
+{
+    subd_arena a, sa;
+    subd_mesh in, out;
+    subd_sr48 h, base;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_adapt_report rep;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan = 0, i, ph, pn, b;
+    subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(shape, &a, &in)) return;
+    o.steps = levels;
+    o.flags = flags;
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = levels;
+    if (!CHECK_EQ(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), SUBD_OK)) {
+        T_NOTE("shape %d levels %u: extract needs %u\n", shape, levels, d.bytes_needed);
+        return;
+    }
+    if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) return;
+    /* the base is level 0 of the hierarchy */
+    CHECK_EQ(base.level_tri[1], h.level_tri[1]);
+    CHECK_EQ(base.num_verts, h.level_verts[0]);
+    if (!CHECK(out.num_verts <= MAXV)) return;
+    if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+    subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
+    if (!CHECK(plan <= ST_ARENA)) {
+        T_NOTE("plan %u\n", plan);
+        return;
+    }
+    g_cc.m = &out;
+    g_cc.j = 0;
+    g_cc.bad = 0;
+    g_cc.stop_after = 0;
+    g_cc.hash = 2166136261u;
+    for (i = 0; i < out.num_verts; i++) g_cc.have[i] = 0;
+    sink.tri = cmp_tri;
+    sink.ctx = &g_cc;
+    subd_arena_reset_peak(&sa);
+    if (!CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), SUBD_OK)) {
+        T_NOTE("shape %d levels %u flags %u: status %d face %u\n", shape, levels, flags, d.status, d.face);
+        return;
+    }
+    CHECK_EQ(sa.peak, plan);
+    CHECK_EQ(plan, SUBD_SR48_STREAM_BYTES(levels, base_valence(&base)));
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    CHECK_EQ(g_cc.j, out.num_faces);
+    if (!CHECK_EQ(g_cc.bad, 0u)) T_NOTE("shape %d levels %u flags %u\n", shape, levels, flags);
+    for (i = 0; i < out.num_verts; i++) CHECK(g_cc.have[i]);
+    CHECK(ids_distinct(&g_cc, out.num_verts));
+    /* level-0 vertices keep their base index */
+    for (i = 0; i < out.num_verts && levels == 0u; i++) CHECK(g_cc.id[i] < base.num_verts);
+    /* welded by id the stream is the extraction's mesh; closed input -> closed output */
+    CHECK_EQ(out.num_boundary_edges == 0u, in.num_boundary_edges == 0u);
+    if (levels == 3u && shape != S_BIPYR) {
+        static const char *const names[S_COUNT] = {"sr48s_tet", "sr48s_cube", "sr48s_ico", "sr48s_hexfan",
+                                                   "sr48s_grid", "sr48s_two", "sr48s_torus", "sr48s_bipyr"};
+        h_hash(names[shape], g_cc.hash ^ flags);
+    }
+    /* pull form, several batch sizes: the push form's triangles */
+    for (b = 0; b < 3u; b++) {
+        static const uint32_t sizes[3] = {1u, 7u, 100u};
+        if (pull_hash(&sa, &base, &so, sizes[b], &ph, &pn)) {
+            CHECK_EQ(pn, out.num_faces);
+            CHECK_EQ(ph, g_cc.hash);
+        }
+    }
+}
+
+static void sr48s_uniform(void)
+{
+    static const uint32_t maxl[S_COUNT] = {6, 4, 3, 5, 1, 6, 3, 4};
+    int s;
+    uint32_t l, f;
+    for (s = 0; s < S_COUNT; s++)
+        for (f = 0; f < 2u; f++)
+            for (l = 0; l <= maxl[s]; l++) run_case(s, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+}
+
+/* Extraordinary valences: bipyramids with apexes of valence 3..16. */
+static void sr48s_valence(void)
+{
+    for (g_bn = 3; g_bn <= 16u; g_bn++) {
+        run_case(S_BIPYR, 3, 0);
+        run_case(S_BIPYR, 3, SUBD_SR48_NO_SMOOTH);
+    }
+    g_bn = 5;
+}
+
+/* A shape's base in the low arena (the caller's), as subd_sr48_base builds it. */
+static int make_base(int shape, subd_arena *a, uint32_t flags, subd_sr48 *base, subd_mesh *in)
+{
+    subd_diag d;
+    subd_arena_init(a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(shape, a, in)) return 0;
+    return CHECK_EQ(subd_sr48_base(a, in, flags, base, &d), SUBD_OK);
+}
+
+static int count_tri(void *ctx, const subd_tri *t)
+{
+    (void)t;
+    ++*(uint32_t *)ctx;
+    return 0;
+}
+
+/* Every arena below the plan: SUBD_ERR_NOMEM, bytes_needed = the plan, arena unchanged,
+ * nothing emitted; the plan itself works and is the peak. */
+static void sr48s_plan_exhaustive(void)
+{
+    subd_arena a, sa;
+    subd_mesh in;
+    subd_sr48 base;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan, size, n;
+    int st;
+    if (!make_base(S_TET, &a, 0, &base, &in)) return;
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = 3;
+    if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+    sink.tri = count_tri;
+    sink.ctx = &n;
+    for (size = 0; size <= plan; size += (size + 64u < plan) ? 7u : 1u) {
+        n = 0;
+        subd_arena_init(&sa, h_arena_buf + MAT_ARENA, size);
+        st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
+        if (size < plan) {
+            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(n, 0u) ||
+                !CHECK_EQ(subd_arena_mark(&sa), 0u) || !CHECK_EQ(sa.peak, 0u))
+                return;
+        } else {
+            CHECK_EQ(st, SUBD_OK);
+            CHECK_EQ(n, 16u << 3); /* 16 level-0 triangles, 2^3 each */
+            CHECK_EQ(sa.peak, plan);
+            CHECK_EQ(d.bytes_needed, 0u);
+        }
+    }
+}
+
+static int stop_at(void *ctx, const subd_tri *t)
+{
+    uint32_t *n = (uint32_t *)ctx;
+    (void)t;
+    return ++*n == 5u ? 42 : 0;
+}
+
+static void sr48s_errors(void)
+{
+    subd_arena a, sa;
+    subd_mesh in, noadj;
+    subd_sr48 base, bad, h;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    subd_stream s;
+    uint32_t plan, n = 0, flags = 0, m;
+    static uint32_t nb[1024];
+    if (!make_base(S_ICO, &a, 0, &base, &in)) return;
+    subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.max_level = 2;
+    sink.tri = stop_at;
+    sink.ctx = &n;
+    /* a sink's stop value comes back unchanged, the arena is given back */
+    CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), 42);
+    CHECK_EQ(n, 5u);
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    /* parameters */
+    CHECK_EQ(subd_sr48_stream_plan(0, &so, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream_plan(&base, 0, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream_plan(&base, &so, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream(&sa, &base, &so, 0, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(d.status, SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream(0, &base, &so, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_stream_begin(&sa, &base, &so, 0, &d), SUBD_ERR_PARAM);
+    so.adapt.max_level = SUBD_SR48_MAX_STEPS + 1u;
+    CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
+    so.adapt.max_level = 2;
+    so.adapt.mode = (subd_adapt_mode)77;
+    CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
+    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    /* a base that is not subd_sr48_base's: a hierarchy (no hyb_base_nb), steps > 0, broken
+     * neighbours or vertices; each refused before anything is emitted */
+    o.steps = 1;
+    o.flags = 0;
+    if (CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) {
+        CHECK(h.hyb_base_nb == 0);
+        CHECK_EQ(subd_sr48_stream_plan(&h, &so, &plan, &d), SUBD_ERR_PARAM);
+    }
+    bad = base;
+    bad.steps = 1;
+    CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    bad = base;
+    bad.flags = 8;
+    CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    if (CHECK(base.level_tri[1] <= 1024u)) {
+        for (m = 0; m < base.level_tri[1]; m++) nb[m] = base.tri_base_nb[m];
+        bad = base;
+        bad.tri_base_nb = nb;
+        nb[3] = nb[5]; /* points at a triangle that does not point back */
+        CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+        n = 0;
+        CHECK_EQ(subd_sr48_stream(&sa, &bad, &so, &sink, &d), SUBD_ERR_PARAM);
+        CHECK_EQ(n, 0u);
+        nb[3] = base.level_tri[1];
+        CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    }
+    bad = base;
+    bad.hyb_base_nb = nb;
+    for (m = 0; m < base.level_tri[1] / 2u; m++) nb[m] = base.hyb_base_nb[m];
+    nb[0] = SUBD_NONE; /* one side says boundary, the other does not */
+    CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    /* the pull handle: bad calls, and a stale handle */
+    CHECK_EQ(subd_stream_next_tris(0, g_buf, 1), SUBD_ERR_PARAM);
+    if (CHECK_EQ(subd_sr48_stream_begin(&sa, &base, &so, &s, &d), SUBD_OK)) {
+        CHECK_EQ(subd_stream_next_tris(&s, 0, 1), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_stream_next_tris(&s, g_buf, 0), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_stream_next_points(&s, (subd_point *)(void *)g_buf, 1), SUBD_ERR_PARAM);
+        CHECK_EQ(subd_stream_next_tris(&s, g_buf, 3), 3);
+        subd_stream_end(&s);
+        CHECK_EQ(subd_arena_mark(&sa), 0u);
+        CHECK_EQ(subd_stream_next_tris(&s, g_buf, 3), 0);
+    }
+    /* the base call refuses what subd_sr48_build refuses */
+    CHECK_EQ(subd_sr48_base(&a, 0, 0, &base, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_base(&a, &in, 4u, &base, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_base_plan(&in, 0, SUBD_SR48_CLUSTERS_UNKNOWN, 0), SUBD_ERR_PARAM);
+    if (h_tetra_no_adjacency(&a, &in, &noadj)) CHECK_EQ(subd_sr48_base(&a, &noadj, 0, &base, &d), SUBD_ERR_PARAM);
+    (void)flags;
+}
+
+/* subd_sr48_base: plan exact with the cluster count, every smaller arena fails cleanly, and
+ * it is subd_sr48_build's level 0 (same arrays) plus the hybrid neighbours. */
+static void sr48s_base(void)
+{
+    subd_arena a;
+    subd_mesh in;
+    subd_sr48 base, h;
+    subd_sr48_opts o;
+    subd_diag d;
+    uint32_t cl, plan, plan0, i, mark, size;
+    subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(S_ICO, &a, &in)) return;
+    if (!CHECK_EQ(subd_sr48_count_clusters(&a, &in, &cl, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_base_plan(&in, 0, cl, &plan), SUBD_OK)) return;
+    o.steps = 0;
+    o.flags = 0;
+    if (!CHECK_EQ(subd_sr48_plan(&in, &o, cl, &plan0), SUBD_OK)) return;
+    mark = subd_arena_mark(&a);
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    CHECK_EQ(plan - plan0, (h.level_tri[1] / 2u * 4u + 7u) & ~7u);
+    for (size = plan - 40u; size <= plan; size++) {
+        subd_arena b;
+        subd_arena_init(&b, h_arena_buf + MAT_ARENA, size);
+        if (size < plan) {
+            CHECK_EQ(subd_sr48_base(&b, &in, 0, &base, &d), SUBD_ERR_NOMEM);
+            CHECK_EQ(d.bytes_needed, plan);
+            CHECK_EQ(subd_arena_mark(&b), 0u);
+        } else {
+            subd_arena_reset_peak(&b);
+            if (!CHECK_EQ(subd_sr48_base(&b, &in, 0, &base, &d), SUBD_OK)) return;
+            CHECK_EQ(b.peak, plan);
+        }
+    }
+    CHECK_EQ(base.num_tris, h.num_tris);
+    for (i = 0; i < 3u * h.num_tris; i++) CHECK_EQ(base.tri_vert[i], h.tri_vert[i]);
+    for (i = 0; i < h.num_tris; i++) CHECK_EQ(base.tri_base_nb[i], h.tri_base_nb[i]);
+    for (i = 0; i < 3u * h.num_verts; i++) CHECK(h_same(base.pos[i], h.pos[i]));
+    (void)mark;
+}
+
+const test_case suite_sr48_stream[] = {
+    {"sr48s_base", sr48s_base},
+    {"sr48s_plan_exhaustive", sr48s_plan_exhaustive},
+    {"sr48s_errors", sr48s_errors},
+    {"sr48s_uniform", sr48s_uniform},
+    {"sr48s_valence", sr48s_valence},
+    {0, 0},
+};

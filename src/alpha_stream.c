@@ -94,7 +94,7 @@ typedef struct astream_state {
     subd_alpha_wt w[SUBD_MAX_LEVELS], w2[SUBD_MAX_LEVELS];
     /* adaptive */
     uint32_t adaptive, blk_base, blk_cnt, sp, ended, wrapped, last_done;
-    uint32_t stk[2u * 16u];
+    uint32_t stk[2u * 8u]; /* spans: 1 + log2(ASTREAM_BLOCK) at most */
 #if SUBD_FIXED
     int64_t eps_raw;
 #else

@@ -218,6 +218,26 @@ int subd_alpha_curve_stream(subd_arena *arena, const subd_real *pos, uint32_t m,
      SUBD_ALPHA_SA_(108u * (uint32_t)(L) * (uint32_t)(K)) + SUBD_ALPHA_SA_(36u * (uint32_t)(L) * (uint32_t)(K)) + \
      SUBD_ALPHA_SA_(12u * 66u))
 
+/* Path formats of subd_path_write. */
+#define SUBD_PATH_XYZ 1u
+#define SUBD_PATH_GCODE 2u
+
+/* subd_path_write: the points p[0..n) of a path as text into buf[0..cap), numbers by
+ * subd_real_format (the same bytes on every target); *len receives the bytes written.
+ * SUBD_PATH_XYZ: one "x y z" line per point. SUBD_PATH_GCODE: a plain tool path: for the
+ * path's first point (first_index == 0) "G21" (millimetres), "G90" (absolute) and
+ * "G0 X.. Y.. Z.." (rapid move to the start); every later point "G1 X.. Y.. Z..", the one at
+ * index 1 with " F<feed>" when feed > 0 (F is modal). first_index is the index of p[0] in
+ * the path, so a stream can be written in pieces with the same bytes as in one.
+ * Memory: no arena; the caller's buffer only.
+ * Errors: SUBD_ERR_PARAM (NULL len, NULL p with n > 0, an unknown format, feed < 0 or not
+ *   finite), SUBD_ERR_NOMEM (cap too small: nothing is written, *len = the size needed);
+ *   with buf == NULL nothing is written, *len receives the size and SUBD_OK is returned;
+ *   SUBD_ERR_TOO_BIG (the text would exceed 4 GB).
+ * Cost: O(n) (two passes: count, then write). */
+int subd_path_write(const subd_point *p, uint32_t n, uint32_t first_index, uint32_t format, subd_real feed,
+                    char *buf, uint32_t cap, uint32_t *len);
+
 /* ------------------------------------------------------------------------------------ */
 /* Surfaces: the Doo-Sabin type operator S_2(f; n), formula (3), and the higher orders     */
 /* S_k = C^(k-2) S_2 of section 2.2 (S_3 = C S_2 is the paper's Catmull-Clark variant).    */

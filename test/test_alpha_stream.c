@@ -614,6 +614,144 @@ static void astream_errors(void)
     CHECK_EQ(subd_arena_mark(&a), 0);
 }
 
+
+/* ------------------------------------------------------------------------------------ */
+/* Writers: .xyz and G-code read back                                                     */
+
+static char s_text[64 * 1024];
+static char s_text2[64 * 1024];
+
+static int as_is_ws(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+/* A small G-code reader: the header G21, G90; then "G0 X Y Z" once and "G1 X Y Z [F f]"
+ * lines; fills pts (pos) and returns how many, or UINT32_MAX on anything unexpected. *feed
+ * receives the F value (0 when none) and *f_lines the number of lines with F. */
+static uint32_t as_read_gcode(const char *t, uint32_t len, subd_point *pts, uint32_t cap, subd_real *feed,
+                              uint32_t *f_lines)
+{
+    const char *p = t, *end = t + len;
+    uint32_t n = 0, line = 0;
+    *feed = 0;
+    *f_lines = 0;
+    while (p < end) {
+        const char *e = p;
+        uint32_t k, got = 0;
+        while (e < end && *e != '\n') e++;
+        if (e == end) return UINT32_MAX; /* every line ends with a newline */
+        if (line == 0u && !(e - p == 3 && p[0] == 'G' && p[1] == '2' && p[2] == '1')) return UINT32_MAX;
+        if (line == 1u && !(e - p == 3 && p[0] == 'G' && p[1] == '9' && p[2] == '0')) return UINT32_MAX;
+        if (line >= 2u) {
+            int g0 = e - p > 2 && p[0] == 'G' && p[1] == '0' && as_is_ws(p[2]);
+            int g1 = e - p > 2 && p[0] == 'G' && p[1] == '1' && as_is_ws(p[2]);
+            if ((n == 0u && !g0) || (n > 0u && !g1) || n >= cap) return UINT32_MAX;
+            p += 2;
+            while (p < e) {
+                char w;
+                subd_real v;
+                while (p < e && as_is_ws(*p)) p++;
+                if (p >= e) break;
+                w = *p++;
+                if (subd_real_parse(&p, e, &v) != SUBD_OK) return UINT32_MAX;
+                if (w == 'X' || w == 'Y' || w == 'Z') {
+                    k = w == 'X' ? 0u : w == 'Y' ? 1u : 2u;
+                    if (got & (1u << k)) return UINT32_MAX;
+                    got |= 1u << k;
+                    pts[n].pos[k] = v;
+                } else if (w == 'F') {
+                    *feed = v;
+                    ++*f_lines;
+                } else
+                    return UINT32_MAX;
+            }
+            if (got != 7u) return UINT32_MAX;
+            n++;
+        }
+        p = e + 1;
+        line++;
+    }
+    return n;
+}
+
+static uint32_t as_read_xyz(const char *t, uint32_t len, subd_point *pts, uint32_t cap)
+{
+    const char *p = t, *end = t + len;
+    uint32_t n = 0, k;
+    while (p < end) {
+        if (n >= cap) return UINT32_MAX;
+        for (k = 0; k < 3u; k++) {
+            if (k && (p >= end || *p++ != ' ')) return UINT32_MAX;
+            if (subd_real_parse(&p, end, &pts[n].pos[k]) != SUBD_OK) return UINT32_MAX;
+        }
+        if (p >= end || *p++ != '\n') return UINT32_MAX;
+        n++;
+    }
+    return n;
+}
+
+static void astream_writers(void)
+{
+    subd_arena a;
+    subd_alpha_opts o;
+    subd_diag d;
+    uint32_t n = 0, len = 0, len2, i, k, got, fl, fmt, ok;
+    subd_real feed;
+    as_rand_poly(6);
+    as_opts(&o, 3, 5, SUBD_ALPHA_COS, 1, 6);
+    subd_arena_init(&a, AS_WORK, AS_WORK_BYTES);
+    if (!CHECK_EQ(as_push(&a, 6, 1, &o, SUBD_REAL_FRAC(1, 20), &n, &d), SUBD_OK)) return;
+    for (fmt = SUBD_PATH_XYZ; fmt <= SUBD_PATH_GCODE; fmt++) {
+        subd_real f_in = fmt == SUBD_PATH_GCODE ? SUBD_REAL_FRAC(1200, 1) : 0;
+        /* sizing, then the whole path in one call */
+        if (!CHECK_EQ(subd_path_write(s_pts, n, 0, fmt, f_in, 0, 0, &len), SUBD_OK)) return;
+        if (!CHECK(len < sizeof s_text)) return;
+        if (!CHECK_EQ(subd_path_write(s_pts, n, 0, fmt, f_in, s_text, sizeof s_text, &len2), SUBD_OK)) return;
+        CHECK_EQ(len2, len);
+        /* in pieces of 1 and 7 points: the same bytes */
+        for (k = 1; k <= 7u; k += 6u) {
+            uint32_t at = 0, fill = 0;
+            while (at < n) {
+                uint32_t m = n - at < k ? n - at : k, l;
+                if (!CHECK_EQ(subd_path_write(s_pts + at, m, at, fmt, f_in, s_text2 + fill,
+                                              (uint32_t)sizeof s_text2 - fill, &l), SUBD_OK))
+                    return;
+                fill += l;
+                at += m;
+            }
+            CHECK_EQ(fill, len);
+            for (ok = 1, i = 0; i < len && i < fill; i++) ok &= s_text[i] == s_text2[i];
+            CHECK(ok);
+        }
+        /* read back: the same points, bit for bit */
+        if (fmt == SUBD_PATH_GCODE) {
+            got = as_read_gcode(s_text, len, s_pull, AS_MAXP, &feed, &fl);
+            CHECK_EQ(fl, 1);
+            CHECK(h_same(feed, f_in));
+        } else
+            got = as_read_xyz(s_text, len, s_pull, AS_MAXP);
+        if (!CHECK_EQ(got, n)) return;
+        for (ok = 1, i = 0; i < n; i++)
+            for (k = 0; k < 3u; k++) ok &= h_same(s_pull[i].pos[k], s_pts[i].pos[k]);
+        CHECK(ok);
+        h_hash(fmt == SUBD_PATH_XYZ ? "alpha_stream_xyz" : "alpha_stream_gcode", h_fnv(2166136261u, s_text, len));
+        /* too small: NOMEM, the size, nothing written */
+        s_text2[0] = '#';
+        CHECK_EQ(subd_path_write(s_pts, n, 0, fmt, f_in, s_text2, len - 1u, &len2), SUBD_ERR_NOMEM);
+        CHECK_EQ(len2, len);
+        CHECK(s_text2[0] == '#');
+    }
+    /* G-code without feed: no F */
+    if (CHECK_EQ(subd_path_write(s_pts, n, 0, SUBD_PATH_GCODE, 0, s_text, sizeof s_text, &len), SUBD_OK)) {
+        CHECK_EQ(as_read_gcode(s_text, len, s_pull, AS_MAXP, &feed, &fl), n);
+        CHECK_EQ(fl, 0);
+    }
+    CHECK_EQ(subd_path_write(s_pts, 0, 0, SUBD_PATH_GCODE, 0, s_text, sizeof s_text, &len), SUBD_OK);
+    CHECK_EQ(len, 0);
+    CHECK_EQ(subd_path_write(s_pts, n, 0, 3, 0, s_text, sizeof s_text, &len), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_path_write(0, n, 0, SUBD_PATH_XYZ, 0, s_text, sizeof s_text, &len), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_path_write(s_pts, n, 0, SUBD_PATH_XYZ, 0, s_text, sizeof s_text, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_path_write(s_pts, n, 0, SUBD_PATH_GCODE, h_int(-1), s_text, sizeof s_text, &len), SUBD_ERR_PARAM);
+}
+
 const test_case suite_alpha_stream[] = {
     {"astream_uniform_levels", astream_uniform_levels},
     {"astream_uniform_params", astream_uniform_params},
@@ -623,5 +761,6 @@ const test_case suite_alpha_stream[] = {
     {"astream_circle", astream_circle},
     {"astream_plan_exact", astream_plan_exact},
     {"astream_errors", astream_errors},
+    {"astream_writers", astream_writers},
     {0, 0},
 };

@@ -209,6 +209,7 @@ host_format host_format_of(const char *path)
     if (ends_with_ci(path, ".png")) return HOST_FMT_PNG;
     if (ends_with_ci(path, ".xyz")) return HOST_FMT_XYZ;
     if (ends_with_ci(path, ".stl")) return HOST_FMT_STL;
+    if (ends_with_ci(path, ".gcode") || ends_with_ci(path, ".nc")) return HOST_FMT_GCODE;
     return HOST_FMT_UNKNOWN;
 }
 
@@ -220,6 +221,7 @@ const char *host_format_name(host_format f)
     case HOST_FMT_PNG: return "png";
     case HOST_FMT_XYZ: return "xyz";
     case HOST_FMT_STL: return "stl";
+    case HOST_FMT_GCODE: return "gcode";
     default: return "unknown";
     }
 }

@@ -14,11 +14,16 @@
 #include <math.h>
 #endif
 
-#define AS_MAXP 6000u
+/* device RAM is scarce: points are checked as they come (against subd_alpha_curve's
+ * output), only a few are stored */
+#define AS_MAXP (H_HOST ? 2600u : 600u)
+#define AS_PULL (H_HOST ? 4096u : 512u)
+#define AS_MAXID 2600u
 static subd_real s_in[3 * 64];
 static int32_t s_tags[64];
 static subd_point s_pts[AS_MAXP];
-static subd_point s_pull[AS_MAXP];
+static subd_point s_pull[AS_PULL];
+static uint32_t s_ids[AS_MAXID];
 static uint32_t s_state = 2024u;
 
 #define AS_WORK_BYTES H_ARENA_BYTES
@@ -45,46 +50,62 @@ typedef struct as_sink {
     subd_point *p;
     uint32_t n, cap, stop_after;
     int stop;
+    const subd_real *ref; /* subd_alpha_curve's points: each point is compared as it comes */
+    uint32_t ref_n, level, bad, hash;
 } as_sink;
+
+static as_sink s_last; /* the last push's sink: the checks' results */
 
 static int as_gather(void *ctx, const subd_point *p)
 {
     as_sink *s = (as_sink *)ctx;
+    uint32_t k;
     if (s->n >= s->stop_after) return s->stop;
     if (s->n < s->cap) s->p[s->n] = *p;
+    if (s->n < AS_MAXID) s_ids[s->n] = (uint32_t)p->id;
+    if (s->ref) {
+        if (p->id >= s->ref_n || p->level != s->level || p->curve != 0u) s->bad++;
+        else
+            for (k = 0; k < 3u; k++)
+                if (!h_same(p->pos[k], s->ref[3u * p->id + k]) || p->tangent[k] != 0) s->bad++;
+    }
+    for (k = 0; k < 3u; k++) {
+        uint32_t b = subd_real_bits(p->pos[k]);
+        s->hash = h_fnv(s->hash, &b, 4);
+    }
+    s->hash = h_fnv(s->hash, &p->id, 8);
     s->n++;
     return 0;
+}
+
+/* Pushes the stream; with ref (subd_alpha_curve's output of ref_n points) every point is
+ * checked against it (s_last.bad counts mismatches). */
+static int as_push_ref(subd_arena *a, uint32_t m, int closed, const subd_alpha_opts *o, subd_real chord,
+                       const subd_real *ref, uint32_t ref_n, uint32_t *n, subd_diag *d)
+{
+    subd_point_sink sk;
+    int st;
+    s_last.p = s_pts;
+    s_last.n = 0;
+    s_last.cap = AS_MAXP;
+    s_last.stop_after = UINT32_MAX;
+    s_last.stop = 0;
+    s_last.ref = ref;
+    s_last.ref_n = ref_n;
+    s_last.level = o ? o->levels : 0u;
+    s_last.bad = 0;
+    s_last.hash = 2166136261u;
+    sk.point = as_gather;
+    sk.ctx = &s_last;
+    st = subd_alpha_curve_stream(a, s_in, m, closed, o, chord, &sk, d);
+    *n = s_last.n;
+    return st;
 }
 
 static int as_push(subd_arena *a, uint32_t m, int closed, const subd_alpha_opts *o, subd_real chord, uint32_t *n,
                    subd_diag *d)
 {
-    as_sink g;
-    subd_point_sink sk;
-    int st;
-    g.p = s_pts;
-    g.n = 0;
-    g.cap = AS_MAXP;
-    g.stop_after = UINT32_MAX;
-    g.stop = 0;
-    sk.point = as_gather;
-    sk.ctx = &g;
-    st = subd_alpha_curve_stream(a, s_in, m, closed, o, chord, &sk, d);
-    *n = g.n;
-    return st;
-}
-
-static uint32_t as_hash(const subd_point *p, uint32_t n)
-{
-    uint32_t h = 2166136261u, i, k;
-    for (i = 0; i < n; i++) {
-        for (k = 0; k < 3u; k++) {
-            uint32_t b = subd_real_bits(p[i].pos[k]);
-            h = h_fnv(h, &b, 4);
-        }
-        h = h_fnv(h, &p[i].id, 8);
-    }
-    return h_fnv(h, &n, 4);
+    return as_push_ref(a, m, closed, o, chord, 0, 0, n, d);
 }
 
 /* The stream equals subd_alpha_curve point by point (bits, ids, level); 1 when it does. */
@@ -96,22 +117,17 @@ static int as_same_as_curve(uint32_t m, int closed, const subd_alpha_opts *o, ui
     uint32_t n = 0, i, k, ok = 1, mark;
     int st;
     subd_arena_init(&a, AS_WORK, AS_WORK_BYTES);
-    st = as_push(&a, m, closed, o, 0, &n, &d);
-    if (!CHECK_EQ(st, SUBD_OK)) return 0;
-    CHECK_EQ(subd_arena_mark(&a), 0);
-    mark = subd_arena_mark(&a);
     st = subd_alpha_curve(&a, s_in, m, closed, o, &out, &d);
     if (!CHECK_EQ(st, SUBD_OK)) return 0;
+    mark = subd_arena_mark(&a);
+    st = as_push_ref(&a, m, closed, o, 0, out.pos, out.num_points, &n, &d);
+    if (!CHECK_EQ(st, SUBD_OK)) return 0;
+    CHECK_EQ(subd_arena_mark(&a), mark);
     if (!CHECK_EQ(n, out.num_points)) return 0;
-    for (i = 0; i < n; i++) {
-        for (k = 0; k < 3u; k++) ok &= h_same(s_pts[i].pos[k], out.pos[3u * i + k]) && s_pts[i].tangent[k] == 0;
-        ok &= s_pts[i].id == i && s_pts[i].level == o->levels && s_pts[i].curve == 0u;
-    }
-    subd_arena_rewind(&a, mark);
-    if (hash) {
-        uint32_t x = as_hash(s_pts, n);
-        *hash = h_fnv(*hash, &x, 4);
-    }
+    ok = s_last.bad == 0u;
+    for (i = 0; i < n && i < AS_MAXID; i++) ok &= s_ids[i] == i;
+    (void)k;
+    if (hash) *hash = h_fnv(*hash, &s_last.hash, 4);
     return CHECK(ok);
 }
 
@@ -199,29 +215,36 @@ static void astream_batches(void)
             uint32_t n = 0;
             subd_real chord = adaptive ? SUBD_REAL_FRAC(1, 64) : 0;
             as_rand_poly(9);
+            subd_alpha_curve_out out;
+            uint32_t mark;
             as_opts(&o, 4, 6, SUBD_ALPHA_COS, 1, 9);
             subd_arena_init(&a, AS_WORK, AS_WORK_BYTES);
-            if (!CHECK_EQ(as_push(&a, 9, (int)closed, &o, chord, &n, &d), SUBD_OK)) return;
+            if (!CHECK_EQ(subd_alpha_curve(&a, s_in, 9, (int)closed, &o, &out, &d), SUBD_OK)) return;
+            mark = subd_arena_mark(&a);
+            if (!CHECK_EQ(as_push_ref(&a, 9, (int)closed, &o, chord, out.pos, out.num_points, &n, &d), SUBD_OK)) return;
+            if (!CHECK(n <= AS_MAXID && s_last.bad == 0u)) return;
             for (bi = 0; bi < 3u; bi++) {
                 subd_stream s;
-                uint32_t got = 0, calls = 0, i, ok = 1;
+                uint32_t got = 0, calls = 0, i, ok = 1, want = sizes[bi] < AS_PULL ? sizes[bi] : AS_PULL;
                 int r;
                 if (!CHECK_EQ(subd_alpha_curve_stream_begin(&a, s_in, 9, (int)closed, &o, chord, &s, &d), SUBD_OK))
                     return;
-                while ((r = subd_stream_next_points(&s, s_pull + got, sizes[bi] < AS_MAXP - got ? sizes[bi] : AS_MAXP - got)) > 0) {
-                    CHECK((uint32_t)r <= sizes[bi]);
+                /* each batch against the pushed ids and subd_alpha_curve's points */
+                while ((r = subd_stream_next_points(&s, s_pull, want)) > 0) {
+                    CHECK((uint32_t)r <= want);
+                    for (i = 0; i < (uint32_t)r; i++) {
+                        uint32_t k, id = (uint32_t)s_pull[i].id;
+                        ok &= got + i < n && id == s_ids[got + i] && id < out.num_points;
+                        if (id < out.num_points)
+                            for (k = 0; k < 3u; k++) ok &= h_same(s_pull[i].pos[k], out.pos[3u * id + k]);
+                    }
                     got += (uint32_t)r;
-                    if (++calls > AS_MAXP || got >= AS_MAXP) break;
+                    if (++calls > 2u * AS_MAXID) break;
                 }
                 CHECK_EQ(r, 0);
                 CHECK_EQ(got, n);
-                for (i = 0; i < got && i < n; i++) {
-                    uint32_t k;
-                    for (k = 0; k < 3u; k++) ok &= h_same(s_pull[i].pos[k], s_pts[i].pos[k]);
-                    ok &= s_pull[i].id == s_pts[i].id;
-                }
                 CHECK(ok);
-                CHECK_EQ(subd_arena_mark(&a), 0);
+                CHECK_EQ(subd_arena_mark(&a), mark);
                 /* after the end every call returns 0 */
                 CHECK_EQ(subd_stream_next_points(&s, s_pull, 4), 0);
             }
@@ -229,10 +252,10 @@ static void astream_batches(void)
             {
                 subd_stream s;
                 if (CHECK_EQ(subd_alpha_curve_stream_begin(&a, s_in, 9, (int)closed, &o, chord, &s, &d), SUBD_OK)) {
-                    CHECK(subd_arena_mark(&a) > 0u);
+                    CHECK(subd_arena_mark(&a) > mark);
                     CHECK_EQ(subd_stream_next_points(&s, s_pull, 3), 3);
                     subd_stream_end(&s);
-                    CHECK_EQ(subd_arena_mark(&a), 0);
+                    CHECK_EQ(subd_arena_mark(&a), mark);
                     subd_stream_end(&s);
                     CHECK_EQ(subd_stream_next_points(&s, s_pull, 3), 0);
                 }
@@ -274,24 +297,21 @@ static uint32_t as_check_adaptive(uint32_t m, int closed, const subd_alpha_opts 
     subd_diag d;
     uint32_t n = 0, i, k, ok = 1;
     subd_arena_init(&a, AS_WORK, AS_WORK_BYTES);
-    if (!CHECK_EQ(as_push(&a, m, closed, o, chord, &n, &d), SUBD_OK)) return 0;
     if (!CHECK_EQ(subd_alpha_curve(&a, s_in, m, closed, o, &out, &d), SUBD_OK)) return 0;
-    if (!CHECK(n >= 2u && n <= out.num_points)) return 0;
-    if (!CHECK(s_pts[0].id == 0u)) return 0;
-    if (!closed && !CHECK(s_pts[n - 1u].id == out.num_points - 1u)) return 0;
-    for (i = 0; i < n; i++) {
-        uint32_t id = (uint32_t)s_pts[i].id;
-        if (i > 0u) ok &= s_pts[i].id > s_pts[i - 1u].id && s_pts[i].id - s_pts[i - 1u].id <= 64u;
-        if (id >= out.num_points) return (uint32_t)CHECK(0);
-        for (k = 0; k < 3u; k++) ok &= h_same(s_pts[i].pos[k], out.pos[3u * id + k]);
-    }
+    if (!CHECK_EQ(as_push_ref(&a, m, closed, o, chord, out.pos, out.num_points, &n, &d), SUBD_OK)) return 0;
+    if (!CHECK(n >= 2u && n <= out.num_points && n <= AS_MAXID)) return 0;
+    if (!CHECK(s_last.bad == 0u)) return 0; /* every point = the uniform point of its id */
+    if (!CHECK(s_ids[0] == 0u)) return 0;
+    if (!closed && !CHECK(s_ids[n - 1u] == out.num_points - 1u)) return 0;
+    for (i = 1; i < n; i++) ok &= s_ids[i] > s_ids[i - 1u] && s_ids[i] - s_ids[i - 1u] <= 64u;
+    (void)k;
     if (!CHECK(ok)) return 0;
 #if H_HOST
     {
         double eps = h_dbl(chord), w = 0;
         uint32_t seg = closed ? n : n - 1u;
         for (i = 0; i < seg; i++) {
-            uint32_t a0 = (uint32_t)s_pts[i].id, b0 = i + 1u < n ? (uint32_t)s_pts[i + 1u].id : out.num_points, j;
+            uint32_t a0 = s_ids[i], b0 = i + 1u < n ? s_ids[i + 1u] : out.num_points, j;
             const subd_real *pa = out.pos + 3u * a0, *pb = out.pos + 3u * (b0 % out.num_points);
             for (j = a0 + 1u; j < b0; j++) {
                 double e = as_seg_dist(out.pos + 3u * j, pa, pb);
@@ -324,10 +344,7 @@ static void astream_adaptive_chord(void)
                     if (!n) return;
                     CHECK(n >= prev); /* a smaller chord never emits fewer points */
                     prev = n;
-                    {
-                        uint32_t x = as_hash(s_pts, n);
-                        h = h_fnv(h, &x, 4);
-                    }
+                    h = h_fnv(h, &s_last.hash, 4);
                 }
             }
     /* tags and a stiff, level-8 curve */
@@ -408,7 +425,7 @@ static void astream_circle(void)
                 uint32_t l;
                 if (k == 3u)
                     for (want = AS_R, l = 1; l <= 6u; l++) want *= cos(3.14159265358979323846 / (nn * (double)(1u << l)));
-                for (i = 0; i < n; i++) {
+                for (i = 0; i < n && i < AS_MAXP; i++) {
                     double r = hypot(h_dbl(s_pts[i].pos[0]), h_dbl(s_pts[i].pos[1]));
                     if (k <= 3u && fabs(r - want) > worst) worst = fabs(r - want);
                     if (r < lo) lo = r;
@@ -618,8 +635,8 @@ static void astream_errors(void)
 /* ------------------------------------------------------------------------------------ */
 /* Writers: .xyz and G-code read back                                                     */
 
-static char s_text[64 * 1024];
-static char s_text2[64 * 1024];
+static char s_text[12 * 1024];
+static char s_text2[12 * 1024];
 
 static int as_is_ws(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
@@ -699,6 +716,7 @@ static void astream_writers(void)
     as_opts(&o, 3, 5, SUBD_ALPHA_COS, 1, 6);
     subd_arena_init(&a, AS_WORK, AS_WORK_BYTES);
     if (!CHECK_EQ(as_push(&a, 6, 1, &o, SUBD_REAL_FRAC(1, 20), &n, &d), SUBD_OK)) return;
+    if (!CHECK(n <= AS_MAXP && n <= AS_PULL)) return;
     for (fmt = SUBD_PATH_XYZ; fmt <= SUBD_PATH_GCODE; fmt++) {
         subd_real f_in = fmt == SUBD_PATH_GCODE ? SUBD_REAL_FRAC(1200, 1) : 0;
         /* sizing, then the whole path in one call */
@@ -723,11 +741,11 @@ static void astream_writers(void)
         }
         /* read back: the same points, bit for bit */
         if (fmt == SUBD_PATH_GCODE) {
-            got = as_read_gcode(s_text, len, s_pull, AS_MAXP, &feed, &fl);
+            got = as_read_gcode(s_text, len, s_pull, AS_PULL, &feed, &fl);
             CHECK_EQ(fl, 1);
             CHECK(h_same(feed, f_in));
         } else
-            got = as_read_xyz(s_text, len, s_pull, AS_MAXP);
+            got = as_read_xyz(s_text, len, s_pull, AS_PULL);
         if (!CHECK_EQ(got, n)) return;
         for (ok = 1, i = 0; i < n; i++)
             for (k = 0; k < 3u; k++) ok &= h_same(s_pull[i].pos[k], s_pts[i].pos[k]);
@@ -741,7 +759,7 @@ static void astream_writers(void)
     }
     /* G-code without feed: no F */
     if (CHECK_EQ(subd_path_write(s_pts, n, 0, SUBD_PATH_GCODE, 0, s_text, sizeof s_text, &len), SUBD_OK)) {
-        CHECK_EQ(as_read_gcode(s_text, len, s_pull, AS_MAXP, &feed, &fl), n);
+        CHECK_EQ(as_read_gcode(s_text, len, s_pull, AS_PULL, &feed, &fl), n);
         CHECK_EQ(fl, 0);
     }
     CHECK_EQ(subd_path_write(s_pts, 0, 0, SUBD_PATH_GCODE, 0, s_text, sizeof s_text, &len), SUBD_OK);

@@ -160,11 +160,11 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
 /* bits (both arithmetics, closed and open, every kernel, stiffness and tags).            */
 /* Adaptive (chord > 0): a subsequence of those points (same ids, same bits) whose        */
 /* polyline (closed: with the edge back to the first point) has every point of the        */
-/* uniform output within chord of it: the output is cut into blocks of 64 segments, and   */
+/* uniform output within chord of it: the output is cut into blocks of 256 segments, and  */
 /* inside a block a span of indices [a, b] is one segment when every point between a and  */
 /* b lies within chord of the segment (measured, with a margin for rounding), else it is  */
 /* halved (top-down). The first point (and for an open curve the last) is always emitted, */
-/* as is every 64th (at least one point in 64 is kept).                                   */
+/* as is every 256th (at least one point in 256 is kept).                                 */
 /* Run-time failures are excluded at the begin call: without tags, with every f_n >= 0    */
 /* and an input extent inside the range a run cannot fail (convex combinations); otherwise */
 /* the begin call runs the stream once without output and fails as subd_alpha_curve would, */
@@ -197,7 +197,7 @@ int subd_alpha_curve_stream_plan(uint32_t m, int closed, const subd_alpha_opts *
  *   only for a bad handle or buffer.
  * Cost: O(m) (the extent and the tag checks); with tags, a negative f_n or a wide input
  *   O(subd_alpha_curve) for the run without output. Each next call: its points plus one
- *   batch (uniform: one point, about (k - 1) L stage steps; adaptive: one block of 64
+ *   batch (uniform: one point, about (k - 1) L stage steps; adaptive: one block of 256
  *   segments, its points and their distance tests). */
 int subd_alpha_curve_stream_begin(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
                                   const subd_alpha_opts *o, subd_real chord, subd_stream *s, subd_diag *diag);
@@ -212,13 +212,13 @@ int subd_alpha_curve_stream(subd_arena *arena, const subd_real *pos, uint32_t m,
 
 /* The plan at compile time (levels L in 0..SUBD_MAX_LEVELS, order K in 2..8), for a static
  * buffer: the state block, a one-point ring, per stage (L K of them: S_2, K - 2 averages and
- * the shift per level) 8 words, 9 window points and their tags, and the adaptive block of 66
- * points. 6 976 bytes at L = 8, K = 4; 12 608 at L = 8, K = 8. */
+ * the shift per level) 8 words, 9 window points and their tags, and the adaptive block of 258
+ * points. 9 280 bytes at L = 8, K = 4; 14 912 at L = 8, K = 8. */
 #define SUBD_ALPHA_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
 #define SUBD_ALPHA_CURVE_STREAM_BYTES(L, K) \
     (SUBD_ALPHA_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_ALPHA_SA_(40u) + SUBD_ALPHA_SA_(32u * (uint32_t)(L) * (uint32_t)(K)) + \
      SUBD_ALPHA_SA_(108u * (uint32_t)(L) * (uint32_t)(K)) + SUBD_ALPHA_SA_(36u * (uint32_t)(L) * (uint32_t)(K)) + \
-     SUBD_ALPHA_SA_(12u * 66u))
+     SUBD_ALPHA_SA_(12u * 258u))
 
 /* Path formats of subd_path_write. */
 #define SUBD_PATH_XYZ 1u

@@ -73,7 +73,7 @@
 #define ASTREAM_QCAP 4u
 #define ASTREAM_S2 0u
 #define ASTREAM_C 1u
-#define ASTREAM_BLOCK 64u /* adaptive: segments per block (the header says 64) */
+#define ASTREAM_BLOCK 256u /* adaptive: segments per block (the header says 256) */
 #define ASTREAM_SHIFT 2u
 
 typedef struct astream_state {
@@ -94,7 +94,7 @@ typedef struct astream_state {
     subd_alpha_wt w[SUBD_MAX_LEVELS], w2[SUBD_MAX_LEVELS];
     /* adaptive */
     uint32_t adaptive, blk_base, blk_cnt, sp, ended, wrapped, last_done;
-    uint32_t stk[2u * 8u]; /* spans: 1 + log2(ASTREAM_BLOCK) at most */
+    uint32_t stk[2u * 10u]; /* spans: 1 + log2(ASTREAM_BLOCK) = 9 at most */
 #if SUBD_FIXED
     int64_t eps_raw;
 #else

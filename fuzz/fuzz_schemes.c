@@ -583,12 +583,48 @@ static int curve_run(void *x, subd_arena *a, subd_diag *d)
     curve_ctx *c = (curve_ctx *)x;
     return subd_alpha_curve(a, g_in.pos, c->m, c->closed, &c->o, &c->out, d);
 }
+/* The curve stream (subd_alpha_curve_stream) against subd_alpha_curve's points: every point
+ * the uniform stream emits has the bits of the same index (ids 0, 1, ...). */
+typedef struct curve_cmp {
+    const subd_alpha_curve_out *ref;
+    uint32_t n, bad;
+} curve_cmp;
+static int curve_cmp_point(void *x, const subd_point *p)
+{
+    curve_cmp *k = (curve_cmp *)x;
+    if (p->id != k->n || k->n >= k->ref->num_points ||
+        memcmp(p->pos, k->ref->pos + 3u * k->n, 3u * sizeof(subd_real)) != 0)
+        k->bad++;
+    k->n++;
+    return 0;
+}
+static void curve_stream_check(const curve_ctx *c)
+{
+    uint32_t plan = 0;
+    int st = subd_alpha_curve_stream_plan(c->m, c->closed, &c->o, 0, &plan);
+    FZ_CHECK(st == SUBD_OK, "alpha curve ok -> stream plan ok", st, c->m);
+    if (st != SUBD_OK || plan > FZ_MAX_ARENA)
+        return;
+    fz_arena fa;
+    fz_arena_open(&fa, plan);
+    curve_cmp k = {&c->out, 0, 0};
+    subd_point_sink sk = {curve_cmp_point, &k};
+    subd_diag d;
+    st = subd_alpha_curve_stream(&fa.a, g_in.pos, c->m, c->closed, &c->o, 0, &sk, &d);
+    fz_arena_after(&fa, st, 0, plan, "subd_alpha_curve_stream");
+    FZ_CHECK(st == SUBD_OK, "alpha curve ok -> stream ok", st, plan);
+    FZ_CHECK(k.n == c->out.num_points && k.bad == 0, "alpha curve stream = subd_alpha_curve bit for bit", k.n, k.bad);
+    fz_arena_close(&fa);
+}
+
 static void curve_ok(void *x, subd_arena *a, int first)
 {
     curve_ctx *c = (curve_ctx *)x;
     (void)a;
     FZ_CHECK(c->out.num_points == c->points, "alpha curve points", c->out.num_points, c->points);
     fz_check_finite(c->out.pos, 3u * c->out.num_points, "alpha curve pos");
+    if (first)
+        curve_stream_check(c);
     if (!first || !c->uniform)
         return;
     /* "Equal tags give exactly the uniform result" (subd_alpha.h) */

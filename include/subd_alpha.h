@@ -149,6 +149,98 @@ int subd_alpha_curve(subd_arena *arena, const subd_real *pos, uint32_t m, int cl
                      const subd_alpha_opts *o, subd_alpha_curve_out *out, subd_diag *diag);
 
 /* ------------------------------------------------------------------------------------ */
+/* Streamed curves (src/alpha_stream.c): the points of subd_alpha_curve one at a time, to  */
+/* the common point stream of subd.h ("Streams"), in memory that depends on the level     */
+/* count and the order only; optionally only the points a chord tolerance needs.          */
+/*                                                                                        */
+/* Points (subd_point): pos; tangent (0, 0, 0); id = the point's index in subd_alpha_curve's */
+/* output (0 .. num_points - 1, a closed form: the stream walks that output in order);     */
+/* curve 0; level = opts->levels.                                                         */
+/* Uniform (chord = 0): every point of subd_alpha_curve's output, in its order, with its  */
+/* bits (both arithmetics, closed and open, every kernel, stiffness and tags).            */
+/* Adaptive (chord > 0): a subsequence of those points (same ids, same bits) whose        */
+/* polyline (closed: with the edge back to the first point) has every point of the        */
+/* uniform output within chord of it: the output is cut into blocks of 256 segments, and  */
+/* inside a block a span of indices [a, b] is one segment when every point between a and  */
+/* b lies within chord of the segment (measured, with a margin for rounding), else it is  */
+/* halved (top-down). The first point (and for an open curve the last) is always emitted, */
+/* as is every 256th (at least one point in 256 is kept).                                 */
+/* Run-time failures are excluded at the begin call: without tags, with every f_n >= 0    */
+/* and an input extent inside the range a run cannot fail (convex combinations); otherwise */
+/* the begin call runs the stream once without output and fails as subd_alpha_curve would, */
+/* so a refused input emits nothing and a begun stream never fails.                       */
+
+/* subd_alpha_curve_stream_plan: the exact arena bytes of the stream (*bytes) =
+ * SUBD_ALPHA_CURVE_STREAM_BYTES(opts->levels, opts->order), for every m, closed, chord and
+ * tags.
+ * Memory: no arena use.
+ * Errors: as subd_alpha_curve_plan (SUBD_ERR_PARAM, SUBD_ERR_DIVERGENT, SUBD_ERR_EMPTY,
+ *   SUBD_ERR_TOO_BIG), and SUBD_ERR_PARAM for a chord < 0 or not finite.
+ * Cost: O(levels * k). */
+int subd_alpha_curve_stream_plan(uint32_t m, int closed, const subd_alpha_opts *o, subd_real chord,
+                                 uint32_t *bytes);
+
+/* subd_alpha_curve_stream_begin: starts the pull stream *s of the curve pos[0 .. 3m) (the
+ * caller keeps pos and o->tag_num alive and unchanged until the stream ends); then
+ * subd_stream_next_points / subd_stream_end (subd.h).
+ * Memory: exactly the plan, in the arena until the stream ends (the end, a failure or
+ *   subd_stream_end rewinds it). Stack (Cortex-M4, gcc -O2, -fstack-usage): about 0.7 KB on
+ *   the deepest path (push form, stream layer, a stage step, the kernel); a pull walks the
+ *   stages in a loop, not by recursion.
+ * Errors: in subd_alpha_curve's order: SUBD_ERR_PARAM (NULL arena, pos or s, options, a
+ *   chord < 0 or not finite), SUBD_ERR_DIVERGENT, SUBD_ERR_EMPTY, SUBD_ERR_TOO_BIG,
+ *   SUBD_ERR_NAN (diag.vertex), SUBD_ERR_NOMEM (diag.bytes_needed = the plan), SUBD_ERR_PARAM
+ *   (a tag outside +-SUBD_ALPHA_MAX_NUM, diag.vertex), then what the run would report:
+ *   SUBD_ERR_PARAM (a level with f_n <= -1) or SUBD_ERR_RANGE (a kernel value or a point
+ *   overflows); the lowest failing level's kernel status first, as subd_alpha_curve. On
+ *   failure the arena is where it was and *s untouched. A begun stream's next calls fail
+ *   only for a bad handle or buffer.
+ * Cost: O(m) (the extent and the tag checks); with tags, a negative f_n or a wide input
+ *   O(subd_alpha_curve) for the run without output. Each next call: its points plus one
+ *   batch (uniform: one point, about (k - 1) L stage steps; adaptive: one block of 256
+ *   segments, its points and their distance tests). */
+int subd_alpha_curve_stream_begin(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
+                                  const subd_alpha_opts *o, subd_real chord, subd_stream *s, subd_diag *diag);
+
+/* subd_alpha_curve_stream: the push form: begin, every point to sink->point, end.
+ * Memory: as subd_alpha_curve_stream_begin; nothing stays in the arena.
+ * Errors: SUBD_ERR_PARAM (NULL sink or sink->point, before anything else), the begin call's
+ *   (nothing is emitted), or the sink's non-zero value unchanged (the stream stops at once).
+ * Cost: O(subd_alpha_curve) (the uniform cost in both modes) plus the sink's. */
+int subd_alpha_curve_stream(subd_arena *arena, const subd_real *pos, uint32_t m, int closed,
+                            const subd_alpha_opts *o, subd_real chord, const subd_point_sink *sink, subd_diag *diag);
+
+/* The plan at compile time (levels L in 0..SUBD_MAX_LEVELS, order K in 2..8), for a static
+ * buffer: the state block, a one-point ring, per stage (L K of them: S_2, K - 2 averages and
+ * the shift per level) 8 words, 9 window points and their tags, and the adaptive block of 258
+ * points. 9 280 bytes at L = 8, K = 4; 14 912 at L = 8, K = 8. */
+#define SUBD_ALPHA_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
+#define SUBD_ALPHA_CURVE_STREAM_BYTES(L, K) \
+    (SUBD_ALPHA_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_ALPHA_SA_(40u) + SUBD_ALPHA_SA_(32u * (uint32_t)(L) * (uint32_t)(K)) + \
+     SUBD_ALPHA_SA_(108u * (uint32_t)(L) * (uint32_t)(K)) + SUBD_ALPHA_SA_(36u * (uint32_t)(L) * (uint32_t)(K)) + \
+     SUBD_ALPHA_SA_(12u * 258u))
+
+/* Path formats of subd_path_write. */
+#define SUBD_PATH_XYZ 1u
+#define SUBD_PATH_GCODE 2u
+
+/* subd_path_write: the points p[0..n) of a path as text into buf[0..cap), numbers by
+ * subd_real_format (the same bytes on every target); *len receives the bytes written.
+ * SUBD_PATH_XYZ: one "x y z" line per point. SUBD_PATH_GCODE: a plain tool path: for the
+ * path's first point (first_index == 0) "G21" (millimetres), "G90" (absolute) and
+ * "G0 X.. Y.. Z.." (rapid move to the start); every later point "G1 X.. Y.. Z..", the one at
+ * index 1 with " F<feed>" when feed > 0 (F is modal). first_index is the index of p[0] in
+ * the path, so a stream can be written in pieces with the same bytes as in one.
+ * Memory: no arena; the caller's buffer only.
+ * Errors: SUBD_ERR_PARAM (NULL len, NULL p with n > 0, an unknown format, feed < 0 or not
+ *   finite), SUBD_ERR_NOMEM (cap too small: nothing is written, *len = the size needed);
+ *   with buf == NULL nothing is written, *len receives the size and SUBD_OK is returned;
+ *   SUBD_ERR_TOO_BIG (the text would exceed 4 GB).
+ * Cost: O(n) (two passes: count, then write). */
+int subd_path_write(const subd_point *p, uint32_t n, uint32_t first_index, uint32_t format, subd_real feed,
+                    char *buf, uint32_t cap, uint32_t *len);
+
+/* ------------------------------------------------------------------------------------ */
 /* Surfaces: the Doo-Sabin type operator S_2(f; n), formula (3), and the higher orders     */
 /* S_k = C^(k-2) S_2 of section 2.2 (S_3 = C S_2 is the paper's Catmull-Clark variant).    */
 /*                                                                                        */

@@ -55,7 +55,12 @@ static int q_deliver(const subd_stream_q *q, const uint8_t *item)
                  : q->ps->point(q->ps->ctx, (const subd_point *)(const void *)item);
 }
 
-int subd_stream_q_commit(subd_stream_q *q) { return q->one ? q_deliver(q, q->one) : 0; }
+int subd_stream_q_commit(subd_stream_q *q)
+{
+    if (!q->one) return 0;
+    q->stop = q_deliver(q, q->one);
+    return q->stop;
+}
 
 static void q_init(subd_stream_q *q, subd_stream_impl *impl, uint32_t kind)
 {
@@ -68,6 +73,7 @@ static void q_init(subd_stream_q *q, subd_stream_impl *impl, uint32_t kind)
     q->ts = 0;
     q->ps = 0;
     q->one = 0;
+    q->stop = 0;
 }
 
 /* A failure: the stream stays failed with its status, the arena is given back. */

@@ -33,6 +33,7 @@ struct subd_stream_q {
     const subd_tri_sink *ts;
     const subd_point_sink *ps;
     uint8_t *one;
+    int stop;       /* push: the sink's last non-zero value              */
 };
 
 /* Fills the handle: state (in the arena above mark), kind, the scheme's step and ring. */
@@ -58,7 +59,11 @@ void subd_stream_start(subd_stream *s, subd_arena *a, uint32_t mark, uint32_t ki
  * buffer, else the ring); NULL only when both are full, which a scheme whose batch is at most
  * ring_cap items never sees. */
 void *subd_stream_q_put(subd_stream_q *q);
-/* The item put last is complete: push: the sink's value (non-zero: stop); pull: 0. */
+/* The item put last is complete: push: the sink's value (non-zero: stop; also kept in
+ * q->stop); pull: 0. */
 int subd_stream_q_commit(subd_stream_q *q);
+/* For a step that makes several items per call: stop making them now (pull: the caller's
+ * buffer is full; push: the sink asked to stop, return q->stop). */
+static inline int subd_stream_q_full(const subd_stream_q *q) { return q->one ? q->stop != 0 : q->n >= q->max; }
 
 #endif

@@ -572,7 +572,7 @@ fi
 usage_case_pre loop --limit test/data/icosahedron.obj -o "$T/x.obj"
 grep -q -- '--limit needs --stream' "$T/err"; check $? "loop --limit without --stream: exit 1, says so"
 usage_case_pre convert --stream test/data/icosahedron.obj -o "$T/x.obj"
-grep -q -- "--stream applies to 'loop' and 'semireg48' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's and semireg48's"
+grep -q -- "--stream applies to 'loop', 'semireg48' and 'alpha' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, semireg48's and alpha's"
 usage_case_pre limit --stream --limit test/data/icosahedron.obj -o "$T/x.obj"; check $? "limit --stream: exit 1"
 for e in png xyz; do
     usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.$e"
@@ -837,6 +837,52 @@ run "$FIXED" info "$T/idx.ply"
 is 2 && err_starts "$T/idx.ply:$n: vertex index out of range"; check $? "PLY index out of range: exit 2, FILE:LINE"
 run "$FLOAT" convert test/data/icosahedron.obj -o "$T/x.ply"
 is 1; check $? "writing .ply is refused: exit 1"
+# ---- alpha --stream: curves point by point (.xyz, G-code), --chord, --feed ----
+printf 'v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\nl 1 2 3 4 1\nv 10 0 0\nv 14 0 0\nv 14 0 3\nv 17 2 3\nl 5 6 7 8\n' > "$T/two.obj"
+for b in "$FLOAT" "$FIXED"; do
+    for k in 2 3 4; do
+        run "$b" alpha --order $k --kernel cos --alpha 1/4 -l 6 "$T/two.obj" -o "$T/m.xyz"
+        run "$b" alpha --order $k --kernel cos --alpha 1/4 -l 6 --stream "$T/two.obj" -o "$T/s.xyz"
+        is 0 && cmp -s "$T/m.xyz" "$T/s.xyz"
+        check $? "alpha --stream --order $k: the .xyz of the materialised curves, byte for byte ($(basename "$b"))"
+    done
+done
+# G-code read back: header, one G0 per polyline, G1 per point, F once per polyline, the same
+# numbers as the .xyz (a closed polyline returns to its start)
+run "$FLOAT" alpha --order 3 --kernel cos --alpha 1/4 -l 5 --stream --feed 1200 "$T/two.obj" -o "$T/s.gcode"
+run "$FLOAT" alpha --order 3 --kernel cos --alpha 1/4 -l 5 --stream "$T/two.obj" -o "$T/s5.xyz"
+is 0 && awk '
+    FNR == NR { if (NF == 3) { n++; x[n] = $1; y[n] = $2; z[n] = $3 } next }
+    /^G21$/ || /^G90$/ { next }
+    /^G[01] / { m++; if ($1 == "G0") g0++; if ($2 != "X" x[m] || $3 != "Y" y[m] || $4 != "Z" z[m]) exit 1
+                if (NF == 5) { if ($5 != "F1200") exit 1; f++ } else if (NF != 4) exit 1; next }
+    { exit 1 }
+    END { if (m != n || g0 != 2 || f != 2) exit 1 }' "$T/s5.xyz" "$T/s.gcode"
+check $? "alpha --stream -o .gcode: G21, G90, G0 per polyline, G1 X Y Z per point (the .xyz numbers), F once"
+run "$FIXED" alpha --order 2 -l 4 --stream "$T/two.obj" -o "$T/s.nc"
+is 0 && [ "$(head -2 "$T/s.nc" | tr '\n' ' ')" = "G21 G90 " ] && grep -q '^G0 X' "$T/s.nc"
+check $? "subd-fixed alpha --stream -o .nc: G-code"
+# --chord: fewer points, every one a point of the uniform output, the rest within EPS
+run "$FLOAT" alpha --order 3 --kernel cos --alpha 1/4 -l 8 --stream demo/square.obj -o "$T/u.xyz"
+run "$FLOAT" alpha --order 3 --kernel cos --alpha 1/4 -l 8 --stream --chord 0.001 demo/square.obj -o "$T/c.xyz" --stats
+is 0 && json_ok "$T/out" && grep -q '"stream":true' "$T/out" && awk '
+    FNR == NR { if (NF == 3) { n++; ux[n] = $1; uy[n] = $2; if (!(($1 " " $2) in key)) key[$1 " " $2] = n } next }
+    NF == 3 { m++; if (!(($1 " " $2) in key)) exit 1; id[m] = key[$1 " " $2] }
+    END { if (m < 3 || m * 4 > n) exit 1
+          for (i = 1; i < m; i++) { a = id[i]; b = id[i + 1]; if (b == 1 && i + 1 == m) b = n; if (b <= a) exit 1
+              for (j = a + 1; j < b; j++) { dx = ux[b] - ux[a]; dy = uy[b] - uy[a]; px = ux[j] - ux[a]; py = uy[j] - uy[a]
+                  t = (dx * dx + dy * dy) > 0 ? (px * dx + py * dy) / (dx * dx + dy * dy) : 0; if (t < 0) t = 0; if (t > 1) t = 1
+                  ex = px - t * dx; ey = py - t * dy; if (sqrt(ex * ex + ey * ey) > 0.001 * 1.0001) exit 1 } }
+          exit 0 }' "$T/u.xyz" "$T/c.xyz"
+check $? "alpha --stream --chord 0.001: a quarter of the points or fewer, uniform points, the rest within EPS"
+usage_case_pre alpha --stream demo/square.obj -o "$T/x.obj"; check $? "alpha --stream -o .obj: exit 1 (writes .xyz or G-code)"
+usage_case_pre alpha --chord 0.1 demo/square.obj -o "$T/x.xyz"; check $? "alpha --chord without --stream: exit 1"
+usage_case_pre alpha --stream --feed 100 demo/square.obj -o "$T/x.xyz"; check $? "alpha --feed with .xyz output: exit 1"
+usage_case_pre alpha --stream --feed -5 demo/square.obj -o "$T/x.gcode"; check $? "alpha --feed -5: exit 1"
+usage_case_pre alpha --stream --limit demo/square.obj -o "$T/x.xyz"; check $? "alpha --stream --limit: exit 1"
+usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.gcode"; check $? "loop --stream -o .gcode: exit 1"
+run "$FLOAT" alpha --stream test/data/cube_quad.obj -o "$T/x.xyz"
+is 1 && grep -q "streams curves" "$T/err"; check $? "alpha --stream on a surface: exit 1, says it streams curves"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

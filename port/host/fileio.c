@@ -210,6 +210,7 @@ host_format host_format_of(const char *path)
     if (ends_with_ci(path, ".xyz")) return HOST_FMT_XYZ;
     if (ends_with_ci(path, ".stl")) return HOST_FMT_STL;
     if (ends_with_ci(path, ".ply")) return HOST_FMT_PLY;
+    if (ends_with_ci(path, ".gcode") || ends_with_ci(path, ".nc")) return HOST_FMT_GCODE;
     return HOST_FMT_UNKNOWN;
 }
 
@@ -222,6 +223,7 @@ const char *host_format_name(host_format f)
     case HOST_FMT_XYZ: return "xyz";
     case HOST_FMT_STL: return "stl";
     case HOST_FMT_PLY: return "ply";
+    case HOST_FMT_GCODE: return "gcode";
     default: return "unknown";
     }
 }

@@ -70,8 +70,9 @@ typedef enum host_format {
     HOST_FMT_OFF,
     HOST_FMT_PNG,
     HOST_FMT_XYZ, /* output only: "x y z" per line, a blank line between polylines (CNC) */
-    HOST_FMT_STL, /* read (binary or ASCII); written as binary STL by loop --stream (subd_stream.c) */
-    HOST_FMT_PLY  /* input only: ASCII or binary little-endian PLY                          */
+    HOST_FMT_STL, /* read (binary or ASCII); written as binary STL by the streams (subd_stream.c) */
+    HOST_FMT_PLY, /* input only: ASCII or binary little-endian PLY                          */
+    HOST_FMT_GCODE /* output only (.gcode, .nc), written by alpha --stream                */
 } host_format;
 
 host_format host_format_of(const char *path);

@@ -6,6 +6,7 @@
  * summary for --help, the options it accepts and its level range.
  */
 #define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include "subd_tool.h"
@@ -387,6 +388,8 @@ static int alpha_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, 
         int closed = alpha_is_closed(in, l, &m);
         st = subd_alpha_curve_plan(m, closed, &t.ao, &b, &pts);
         if (st != SUBD_OK) return st;
+        /* alpha --stream: the stream's plan (the level count and the order only) instead */
+        if (o->stream && (st = subd_alpha_curve_stream_plan(m, closed, &t.ao, 0, &b)) != SUBD_OK) return st;
         /* room for the gathered input points (and their tags) too */
         b += SUBD_ALIGN_UP(3u * m * (uint32_t)sizeof(subd_real));
         if (t.count) b += SUBD_ALIGN_UP(4u * m);
@@ -473,6 +476,141 @@ static int alpha_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, sub
     return SUBD_OK;
 }
 
+/* alpha --stream: each polyline streamed (subd_alpha_curve_stream_begin, pulled 256 points
+ * at a time) into OUTPUT through subd_path_write: .xyz lines ("x y z", a blank line between
+ * polylines, as the .xyz writer) or G-code (.gcode/.nc: G21, G90, G0 to each polyline's
+ * start, G1 per point, --feed once). A closed polyline's first point is written again at its
+ * end (the path closes, as `subd alpha` repeats it in OBJ l records). --chord EPS: the
+ * adaptive stream. Memory: the stream's plan plus the polyline's gathered points (and tags)
+ * in the arena; the text goes out through one 64 KiB host buffer. */
+#define ALPHA_STREAM_BATCH 256u
+static int alpha_stream_io_error(const char *path)
+{
+    tool_error("cannot write '%s': %s", path ? path : "(none)", strerror(errno ? errno : EIO));
+    return EXIT_OUTPUT;
+}
+
+int tool_alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
+{
+    const subd_mesh *in = &r->in.mesh;
+    const tool_opts *o = &r->o;
+    uint32_t fmt = o->out_format == HOST_FMT_XYZ ? SUBD_PATH_XYZ : SUBD_PATH_GCODE, l, k, m, emitted = 0;
+    subd_real chord = o->adapt_mode == SUBD_ADAPT_CHORD ? host_real_from_double(o->adapt_val[0]) : 0;
+    subd_real feed = o->feed > 0.0 ? host_real_from_double(o->feed) : 0;
+    int32_t *tags = NULL;
+    alpha_tagging t;
+    subd_point *batch = (subd_point *)malloc(ALPHA_STREAM_BATCH * sizeof(subd_point));
+    char *text = (char *)malloc(65536u);
+    FILE *f = NULL;
+    uint32_t hash = 2166136261u;
+    double t0;
+    int st = SUBD_OK;
+    if (!batch || !text) {
+        free(batch);
+        free(text);
+        return tool_out_of_memory();
+    }
+    if (in->num_faces || !in->num_lines) {
+        free(batch);
+        free(text);
+        tool_error("alpha --stream: %s has %s; --stream streams curves (OBJ l records)", o->input,
+                   in->num_faces ? "faces" : "no polylines");
+        return EXIT_USAGE;
+    }
+    if ((st = alpha_tagging_load(in, o, &t)) != SUBD_OK) {
+        free(batch);
+        free(text);
+        return SUBD_ERR_PARAM; /* the plan reported it */
+    }
+    if (t.count) {
+        st = alpha_tagging_fill(a, in, &t, &tags, d);
+        alpha_tagging_done(&t);
+        if (st != SUBD_OK) goto done;
+    }
+    if (o->output && !(f = fopen(o->output, "wb"))) {
+        free(batch);
+        free(text);
+        return alpha_stream_io_error(o->output);
+    }
+    for (l = 0; l < in->num_lines && st == SUBD_OK; l++) {
+        uint32_t mark = subd_arena_mark(a), s0 = in->line_start[l], at = 0, len;
+        int closed = alpha_is_closed(in, l, &m), n;
+        subd_real *p = (subd_real *)subd_arena_alloc(a, 3u * m * (uint32_t)sizeof(subd_real));
+        int32_t *lt = NULL;
+        subd_point first;
+        subd_stream s;
+        if (!p) {
+            st = SUBD_ERR_NOMEM;
+            break;
+        }
+        for (k = 0; k < 3u * m; k++) p[k] = in->pos[3u * in->line_vert[s0 + k / 3u] + k % 3u];
+        if (tags) {
+            if (!(lt = (int32_t *)subd_arena_alloc(a, 4u * m))) {
+                st = SUBD_ERR_NOMEM;
+                break;
+            }
+            for (k = 0; k < m; k++) lt[k] = tags[in->line_vert[s0 + k]];
+        }
+        t.ao.tag_num = lt;
+        t0 = host_now_ns();
+        st = subd_alpha_curve_stream_begin(a, p, m, closed, &t.ao, chord, &s, d);
+        r->lib_ns += host_now_ns() - t0;
+        if (st != SUBD_OK) {
+            d->polyline = l;
+            break;
+        }
+        if (l > 0u && fmt == SUBD_PATH_XYZ && f && fputs("\n", f) < 0) st = -1000;
+        for (;;) {
+            t0 = host_now_ns();
+            n = subd_stream_next_points(&s, batch, ALPHA_STREAM_BATCH);
+            r->lib_ns += host_now_ns() - t0;
+            if (n <= 0) {
+                if (n < 0) st = n;
+                break;
+            }
+            if (at == 0u) first = batch[0];
+            for (k = 0; k < (uint32_t)n; k++) {
+                uint32_t c;
+                batch[k].curve = l;
+                for (c = 0; c < 3u; c++) {
+                    uint32_t bits = subd_real_bits(batch[k].pos[c]);
+                    hash = (hash ^ (bits & 0xffu)) * 16777619u;
+                    hash = (hash ^ ((bits >> 8) & 0xffu)) * 16777619u;
+                    hash = (hash ^ ((bits >> 16) & 0xffu)) * 16777619u;
+                    hash = (hash ^ (bits >> 24)) * 16777619u;
+                }
+            }
+            if (f && (subd_path_write(batch, (uint32_t)n, at, fmt, feed, text, 65536u, &len) != SUBD_OK ||
+                      fwrite(text, 1, len, f) != len)) {
+                subd_stream_end(&s);
+                st = -1000;
+                break;
+            }
+            r->out_bytes += f ? len : 0u;
+            at += (uint32_t)n;
+        }
+        if (st == SUBD_OK && closed && f) { /* the path closes */
+            if (subd_path_write(&first, 1, at, fmt, feed, text, 65536u, &len) != SUBD_OK || fwrite(text, 1, len, f) != len)
+                st = -1000;
+            r->out_bytes += len;
+        }
+        emitted += at;
+        subd_arena_rewind(a, mark);
+    }
+done:
+    if (f && fclose(f) != 0 && st == SUBD_OK) st = -1000;
+    free(batch);
+    free(text);
+    if (st == -1000) return alpha_stream_io_error(o->output);
+    memset(&r->out, 0, sizeof r->out);
+    r->out.num_verts = emitted;
+    snprintf(r->extra.json, sizeof r->extra.json,
+             "\"order\":%lu,\"geometry\":\"curves\",\"stream\":true,\"chord\":%g,\"points\":%lu,\"checksum\":\"%08lx\"",
+             (unsigned long)o->alpha.order, o->adapt_mode == SUBD_ADAPT_CHORD ? o->adapt_val[0] : 0.0,
+             (unsigned long)emitted, (unsigned long)hash);
+    return st;
+}
+
 #define LOOP_OPTS (OPT_BOUNDARY | OPT_CREASE | OPT_TAGS)
 const command tool_commands[] = {
     {"info", "INPUT", "counts, components, Euler characteristic, genus,\n"
@@ -501,8 +639,11 @@ const command tool_commands[] = {
     {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"
                                         "or the Doo-Sabin type surface; --order K, --kernel\n"
                                         "bspline|cos|poly|cosh, --alpha A, --stiffness S;\n"
-                                        "--tags FILE: 'alpha V A' (curves, odd K), 'falpha F A' (even K)",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, SUBD_MAX_LEVELS, OPT_ALPHA | OPT_TAGS, alpha_plan, alpha_run, NULL},
+                                        "--tags FILE: 'alpha V A' (curves, odd K), 'falpha F A' (even K);\n"
+                                        "--stream [--chord EPS] [--feed F]: curves point by point\n"
+                                        "(.xyz, G-code .gcode/.nc)",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "alpha", 1, SUBD_MAX_LEVELS, OPT_ALPHA | OPT_TAGS | OPT_STREAM, alpha_plan,
+     alpha_run, NULL},
     {"semireg48", "[-l N] INPUT -o OUTPUT", "semi-regular 4-8 refinement with Zwart-Powell box-spline\n"
                                             "smoothing, N binary steps after pre-processing (default\n"
                                             "2; -l 0 writes the pre-processed mesh); --no-smooth",

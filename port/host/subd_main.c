@@ -343,7 +343,7 @@ static int run_command(tool_run *r)
         if (r->o.stream) {
             /* loop --stream: the triangles go straight to OUTPUT's sink (subd_stream.c),
              * which also times the library call */
-            st = tool_stream_run(r, a, &d);
+            st = strcmp(cmd->name, "alpha") == 0 ? tool_alpha_stream_run(r, a, &d) : tool_stream_run(r, a, &d);
             if (st > 0) return st;
         } else {
             t0 = host_now_ns();

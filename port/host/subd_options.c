@@ -278,6 +278,14 @@ static int set_stiffness(const opt_ctx *c)
     return EXIT_OK;
 }
 
+/* --feed F: the G-code feed rate of alpha --stream. */
+static int set_feed(const opt_ctx *c)
+{
+    if (parse_double(c->val, 0.0, 1e9, &c->o->feed) || !(c->o->feed > 0.0))
+        return tool_usage_error("bad feed rate '%s' (a positive number, units per minute)", c->val);
+    return EXIT_OK;
+}
+
 /* --point, --plane, --ramp and --chord: the adaptation mode, one per command line. */
 static int set_adapt_mode(const opt_ctx *c)
 {
@@ -406,7 +414,9 @@ static const tool_option options[] = {
      "points to, level 0 elsewhere (X,Y,Z,NX,NY,NZ)"},
     {"--chord", NULL, "EPS", 0, OPT_ADAPT, set_adapt_mode,
      "(adapt) refine only where a triangle is more than EPS from the\n"
-     "level-MAX surface (chordal tolerance, input units)"},
+     "level-MAX surface (chordal tolerance, input units); (alpha\n"
+     "--stream) only the points that keep every level-N point within EPS"},
+    {"--feed", NULL, "F", 0, OPT_ALPHA, set_feed, "(alpha --stream, G-code output) feed rate F on the first G1"},
     {"--size", NULL, "WxH", 0, 0, set_size, "picture size in pixels (default 800x600, up to 8192x8192)"},
     {"--yaw", NULL, "DEG", 0, 0, set_yaw, "view rotation about the up axis (default 30)"},
     {"--pitch", NULL, "DEG", 0, 0, set_pitch, "view elevation, -90..90 (default 20)"},
@@ -484,7 +494,8 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         }
         /* named here, where the option is known (several share one bit); --stream and
          * --limit get their own messages below */
-        if (t->given & ~cmd->options & ~OPT_STREAM)
+        if (t->given & ~cmd->options & ~OPT_STREAM &&
+            !(strcmp(name, "--chord") == 0 && strcmp(cmd->name, "alpha") == 0)) /* alpha --stream --chord */
             return tool_usage_error("option '%s' is not accepted by '%s' (see subd --help)", name, cmd->name);
         c.cmd = cmd;
         c.o = o;
@@ -496,9 +507,19 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     if (!o->input) return tool_usage_error("'%s' needs an input file", cmd->name);
     /* --stream and --limit: before the output checks, which depend on them */
     if (o->stream && !(cmd->options & OPT_STREAM))
-        return tool_usage_error("--stream applies to 'loop' and 'semireg48' only (not '%s')", cmd->name);
+        return tool_usage_error("--stream applies to 'loop', 'semireg48' and 'alpha' only (not '%s')", cmd->name);
     o->sr48_stream = o->stream && strcmp(cmd->name, "semireg48") == 0;
     if (o->limit && o->sr48_stream) return tool_usage_error("--limit applies to 'loop --stream' only");
+    if (strcmp(cmd->name, "alpha") == 0) { /* alpha --stream: --chord, --feed; .xyz or G-code */
+        if (o->limit) return tool_usage_error("--limit applies to 'loop --stream' only");
+        if (!o->stream && o->adapt_mode == SUBD_ADAPT_CHORD) return tool_usage_error("alpha: --chord needs --stream");
+        if (!o->stream && o->feed > 0.0) return tool_usage_error("alpha: --feed needs --stream (and G-code output)");
+        if (o->stream && o->output && host_format_of(o->output) != HOST_FMT_XYZ &&
+            host_format_of(o->output) != HOST_FMT_GCODE)
+            return tool_usage_error("cannot write '%s': alpha --stream writes .xyz, .gcode or .nc", o->output);
+        if (o->feed > 0.0 && o->output && host_format_of(o->output) != HOST_FMT_GCODE)
+            return tool_usage_error("--feed goes with G-code output (.gcode, .nc)");
+    }
     if (o->limit && !o->stream)
         return tool_usage_error("--limit needs --stream (for the limit of a mesh's own vertices: 'subd limit')");
     if (!host_format_readable(host_format_of(o->input)))
@@ -507,12 +528,15 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         if (cmd->flags & CMD_OUTPUT_NONE) return tool_usage_error("'%s' writes no output file (no -o)", cmd->name);
         o->out_format = host_format_of(o->output);
         if (o->out_format == HOST_FMT_UNKNOWN || o->out_format == HOST_FMT_PLY)
-            return tool_usage_error("cannot write '%s': output must be .obj, .off, .png, .xyz or .stl", o->output);
+            return tool_usage_error("cannot write '%s': output must be .obj, .off, .png, .xyz, .stl, .gcode or .nc", o->output);
         if ((cmd->flags & CMD_PNG_ONLY) && o->out_format != HOST_FMT_PNG)
             return tool_usage_error("'%s' writes a .png picture", cmd->name);
         if (o->out_format == HOST_FMT_STL && !o->stream)
             return tool_usage_error("cannot write '%s': .stl is written by --stream only", o->output);
-        if (o->stream && (o->out_format == HOST_FMT_PNG || o->out_format == HOST_FMT_XYZ))
+        if (o->out_format == HOST_FMT_GCODE && !(o->stream && strcmp(cmd->name, "alpha") == 0))
+            return tool_usage_error("cannot write '%s': G-code is written by 'alpha --stream' only", o->output);
+        if (o->stream && strcmp(cmd->name, "alpha") != 0 &&
+            (o->out_format == HOST_FMT_PNG || o->out_format == HOST_FMT_XYZ || o->out_format == HOST_FMT_GCODE))
             return tool_usage_error("cannot write '%s': --stream writes .stl, .obj or .off", o->output);
     } else if (o->stream && o->stats) {
         /* loop --stream --stats without -o: the counting sink */

@@ -70,6 +70,7 @@ typedef struct tool_opts {
     int stream;                  /* --stream (loop): subd_loop_stream, triangles to a sink */
     int sr48_stream;             /* --stream of semireg48: subd_sr48_stream                */
     int limit;                   /* --limit (loop --stream): limit positions and normals   */
+    double feed;                 /* --feed F (alpha --stream, G-code): feed rate, 0 none   */
     unsigned given;              /* OPT_* bits of the scheme options given                */
 } tool_opts;
 
@@ -170,6 +171,10 @@ void tool_print_stats(FILE *f, const tool_run *r);
  * counting sink without -o) in arena a, which holds the plan of tool_loop_opts(o). Returns
  * SUBD_OK, a subd_status < 0 with *d filled, or an EXIT_* > 0 already reported. */
 int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d);
+
+/* alpha --stream (subd_commands.c): every polyline streamed into OUTPUT (.xyz, .gcode/.nc)
+ * in arena a (the plan of alpha_plan with --stream). Returns as tool_stream_run. */
+int tool_alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d);
 
 /* The subd_loop_opts of the loop command (subd_commands.c): --stream --limit sets
  * SUBD_LOOP_STREAM_LIMIT. */

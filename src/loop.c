@@ -73,6 +73,7 @@
 #include "layout.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
+#include "topo.h"
 
 #define ETAG_SHARP LOOP_ETAG_SHARP
 #define VTAG_CALLER (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED)
@@ -184,18 +185,14 @@ static void block_region(subd_arena *r, uint8_t *base, uint32_t off, uint32_t to
     subd_arena_init(r, base + off, total - off);
 }
 
-static int mesh_ok(const subd_mesh *m)
-{
-    if (!m->face_start) return 0;
-    if (m->num_verts && (!m->pos || !m->vert_out || !m->vert_tag)) return 0;
-    if (m->num_corners && (!m->corner_vert || !m->twin || !m->edge_tag)) return 0;
-    return 1;
-}
+/* The arrays subd_loop reads (topo.h's guard: each when its count is non-zero). */
+#define LOOP_NEEDS                                                                                            \
+    (TOPO_FACE_START | TOPO_POS | TOPO_VERT_OUT | TOPO_VERT_TAG | TOPO_CORNER_VERT | TOPO_TWIN | TOPO_EDGE_TAG)
 
 int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d)
 {
     int st;
-    if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
+    if (!o || !subd_topo_has(in, LOOP_NEEDS)) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
         return subd_fail(d, SUBD_ERR_PARAM);

@@ -739,9 +739,9 @@ static int lim_check(const subd_mesh *in, subd_loop_boundary b, subd_diag *d)
 {
     int st;
     if (!in || (b != SUBD_LOOP_BOUNDARY_PAPER && b != SUBD_LOOP_BOUNDARY_BSPLINE)) return SUBD_ERR_PARAM;
-    if (in->num_verts > 0u && (!in->pos || !in->vert_out || !in->vert_tag)) return SUBD_ERR_PARAM;
-    if (in->num_faces > 0u && (!in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
-                               !in->edge_tag))
+    if (!subd_topo_has(in, TOPO_POS | TOPO_VERT_OUT | TOPO_VERT_TAG) ||
+        !subd_topo_has(in, TOPO_IF_FACES | TOPO_FACE_START | TOPO_CORNER_VERT | TOPO_CORNER_FACE | TOPO_TWIN |
+                               TOPO_EDGE_TAG))
         return SUBD_ERR_PARAM;
     if ((st = subd_loop_tags_public(in, d)) != SUBD_OK) return st;
     return subd_require_triangles(in, d);

@@ -25,6 +25,7 @@
 #ifndef SUBD_LOOP_RULES_H
 #define SUBD_LOOP_RULES_H
 #include "subd.h"
+#include "topo.h"
 
 #define LOOP_ETAG_SHARP (SUBD_ETAG_BOUNDARY | SUBD_ETAG_CREASE)
 

@@ -21,6 +21,7 @@
 #include "mesh_internal.h"
 #include "layout.h"
 #include "entry.h"
+#include "topo.h"
 
 #define TAG_VISITED 0x80u /* temporary edge_tag bit while walking boundary loops */
 

@@ -53,6 +53,7 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
+#include "topo.h"
 #include "subd_quasi48.h"
 #include "edge_sort.h"
 #include "real_avg.h"
@@ -125,7 +126,7 @@ static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
         (o->boundary != SUBD_Q48_BOUNDARY_FIXED && o->boundary != SUBD_Q48_BOUNDARY_SMOOTH &&
          o->boundary != SUBD_Q48_BOUNDARY_NORMAL))
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->edge_tag))
+    if (!subd_topo_has(in, TOPO_IF_FACES | TOPO_TWIN | TOPO_VERT_OUT | TOPO_CORNER_FACE | TOPO_EDGE_TAG))
         return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     if (in->num_faces == 0) return subd_fail(d, SUBD_ERR_EMPTY);

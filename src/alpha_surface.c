@@ -324,18 +324,17 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
     }
     out->face_start[0] = 0;
     for (v = 0; v < m->num_verts; v++) {
-        uint32_t first = m->vert_out[v], last = SUBD_NONE, bnd;
+        uint32_t first = m->vert_out[v];
+        topo_ring r;
         if (first == SUBD_NONE) continue;
-        bnd = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
-        if (bnd) {
+        if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
             out->corner_vert[nc++] = vmap[v];
             out->corner_vert[nc++] = emap[first];
         }
-        for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) {
-            out->corner_vert[nc++] = m->corner_face[h];
-            last = h;
-        }
-        if (bnd) out->corner_vert[nc++] = emap[subd_he_prev(m, last)];
+        /* the faces around v in ring order; on a boundary topo.h's tail is the incoming
+         * boundary edge, whose midpoint closes the face */
+        topo_ring_begin(&r, m, v);
+        while (topo_ring_step(&r)) out->corner_vert[nc++] = r.tail ? emap[r.he] : m->corner_face[r.he];
         out->face_start[++nf] = nc;
     }
     out->line_start[0] = 0;

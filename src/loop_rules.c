@@ -5,13 +5,6 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_rules.h"
 
-int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h)
-{
-    uint32_t t = m->twin[h];
-    if (t == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) return 1;
-    return (m->edge_tag[t] & SUBD_ETAG_CREASE) != 0u;
-}
-
 int subd_loop_tags_public(const subd_mesh *m, subd_diag *d)
 {
     uint32_t v;
@@ -25,36 +18,28 @@ int subd_loop_tags_public(const subd_mesh *m, subd_diag *d)
 
 void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
 {
-    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
+    uint32_t n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
+    topo_ring r;
     o->valence = 0;
     o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
     o->boundary = 0;
     o->regular = 0;
-    if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
+    if (m->vert_out[v] == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
         o->cls = LOOP_ISOLATED;
         return;
     }
-    /* The walk visits each outgoing half-edge once; n <= num_corners bounds it. */
-    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
-        if (subd_loop_edge_sharp(m, h)) {
+    /* topo.h's walk; on a boundary its tail (the incoming boundary edge) is the last */
+    topo_ring_begin(&r, m, v);
+    while (topo_ring_step(&r)) {
+        if (topo_ring_sharp(&r, m->edge_tag)) {
             if (ns < 2u) {
-                s[ns] = subd_he_dest(m, h);
+                s[ns] = r.nb;
                 at[ns] = n;
             }
             ns++;
         }
         n++;
-        last = h;
-    }
-    if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
-        /* the incoming boundary edge: its origin is the last neighbour */
-        if (ns < 2u) {
-            s[ns] = m->corner_vert[subd_he_prev(m, last)];
-            at[ns] = n;
-        }
-        ns++;
-        n++;
-        o->boundary = 1;
+        if (r.tail) o->boundary = 1;
     }
     o->valence = n;
     o->nsharp = ns;

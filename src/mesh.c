@@ -470,19 +470,16 @@ int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out,
 
 uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max)
 {
-    uint32_t first, h, last = SUBD_NONE, n = 0;
-    if (!m || v >= m->num_verts || !m->vert_out || !m->twin || !m->corner_face || !m->vert_tag) return 0;
-    first = m->vert_out[v];
-    if (first == SUBD_NONE) return 0;
-    for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) {
-        if (n < max) nbr[n] = subd_he_dest(m, h);
-        n++;
-        last = h;
-    }
-    /* On a boundary the walk ends at the face whose incoming edge is the other boundary
-     * edge; its origin is the last neighbour. */
-    if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
-        if (n < max) nbr[n] = m->corner_vert[subd_he_prev(m, last)];
+    uint32_t n = 0;
+    topo_ring r;
+    if (!subd_topo_has(m, TOPO_ALWAYS | TOPO_VERT_OUT | TOPO_TWIN | TOPO_CORNER_FACE | TOPO_VERT_TAG) ||
+        v >= m->num_verts)
+        return 0;
+    /* topo.h's walk: on a boundary its tail, the origin of the incoming boundary edge, is
+     * the last neighbour */
+    topo_ring_begin(&r, m, v);
+    while (topo_ring_step(&r)) {
+        if (n < max) nbr[n] = r.nb;
         n++;
     }
     return n;

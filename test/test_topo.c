@@ -33,7 +33,7 @@
 
 static subd_real t_pos[3 * TMAXV];
 static uint32_t t_idx[TMAXC], t_size[TMAXF];
-static uint8_t t_work[512u * 1024u] __attribute__((aligned(8)));
+static uint8_t t_work[128u * 1024u] __attribute__((aligned(8)));
 
 /* A face list over t_pos / t_idx (t_size when quads). */
 static subd_face_list t_list(uint32_t nv, uint32_t nf, int quads)
@@ -191,8 +191,9 @@ static void topo_ring_brute(void)
         subd_arena_init(&a, t_work, sizeof t_work);
         if (!t_make(id, &a, &m)) return;
         for (v = 0; v < m.num_verts; v++) {
-            uint32_t nb[32], he[32], n = bf_ring(&m, v, nb, he, 32u), i = 0, ntail = 0;
-            uint8_t adj[TMAXV];
+            static uint32_t nb[32], he[32];
+            static uint8_t adj[TMAXV];
+            uint32_t n = bf_ring(&m, v, nb, he, 32u), i = 0, ntail = 0;
             topo_ring r;
             topo_ring_begin(&r, &m, v);
             while (topo_ring_step(&r)) {
@@ -260,7 +261,8 @@ static void topo_patch_ring(void)
         for (f = 0; f < m.num_faces; f++) {
             subd_lp_build_control(&m, f, &p, 2u);
             for (v = 0; v < 3u; v++) {
-                uint32_t nb[32], he[32], n = subd_lp_ring(&p, v, nb, he, 32u);
+                static uint32_t nb[32], he[32];
+                uint32_t n = subd_lp_ring(&p, v, nb, he, 32u);
                 topo_ring r;
                 CHECK_EQ(p.cvert[v], m.corner_vert[3u * f + v]);
                 topo_ring_begin(&r, &m, p.cvert[v]);
@@ -361,7 +363,8 @@ static void topo_loop_child_tables(void)
         subd_mesh m, out;
         subd_loop_opts o;
         subd_diag d;
-        uint32_t mnum[TMAXC], h, e;
+        static uint32_t mnum[TMAXC];
+        uint32_t h, e;
         if (id == 21u) continue;
         subd_arena_init(&a, t_work, sizeof t_work);
         if (!t_make(id, &a, &m)) return;
@@ -441,8 +444,7 @@ static int t_same(const subd_real *x, const subd_real *y, uint32_t n)
 
 static void topo_sharp_schemes(void)
 {
-    static uint8_t ref_buf[128u * 1024u] __attribute__((aligned(8)));
-    static uint32_t ref_cv[8192];
+    static uint32_t ref_cv[2048];
     uint32_t side, scheme;
     for (scheme = 0; scheme < 5u; scheme++) {
         subd_arena ra;
@@ -450,7 +452,7 @@ static void topo_sharp_schemes(void)
         subd_diag d;
         const subd_real *ref = 0;
         uint32_t refn = 0;
-        subd_arena_init(&ra, ref_buf, sizeof ref_buf);
+        subd_arena_init(&ra, h_arena_buf, H_ARENA_BYTES); /* the reference's outputs */
         for (side = 0; side < 3u; side++) {
             subd_arena a;
             subd_mesh in, out;
@@ -498,7 +500,7 @@ static void topo_sharp_schemes(void)
                 st = subd_quasi48(use, &in, &o, &out, &d);
                 got = out.pos;
                 n = 3u * out.num_verts;
-                if (st == SUBD_OK && CHECK(out.num_corners <= 8192u)) {
+                if (st == SUBD_OK && CHECK(out.num_corners <= 2048u)) {
                     uint32_t c;
                     for (c = 0; c < out.num_corners; c++) {
                         if (side == 0u) ref_cv[c] = out.corner_vert[c];

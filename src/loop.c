@@ -292,9 +292,10 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loo
     subd_real *out = t->pos + 3u * v;
     const subd_real *pv = P(s, v);
     uint8_t tag = (uint8_t)(s->vtag[v] & LOOP_VTAG_CALLER);
-    uint32_t n = 0, nsharp = 0, snb[2] = {0, 0}, sidx[2] = {0, 0}, j, hmin = SUBD_NONE, cls;
+    uint32_t j, hmin = SUBD_NONE, n;
     int boundary;
     topo_ring it;
+    loop_vinfo c;
 
     if (s->vout[v] == SUBD_NONE) { /* isolated: copied */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
@@ -305,26 +306,16 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loo
     boundary = s->twin[s->vout[v]] == SUBD_NONE;
     if (boundary) tag |= SUBD_VTAG_BOUNDARY;
     ring_begin(s, v, &it);
-    while (topo_ring_step(&it)) {
-        if (!it.tail && it.he < hmin) hmin = it.he;
-        if (topo_ring_sharp(&it, s->etag)) {
-            if (nsharp < 2u) {
-                snb[nsharp] = it.nb;
-                sidx[nsharp] = n;
-            }
-            nsharp++;
-        }
-        n++;
-    }
+    subd_loop_classify_ring(&it, s->etag, (s->vtag[v] & SUBD_VTAG_CORNER) != 0u, &c, &hmin);
+    n = c.valence;
     /* vert_out as the builder chooses it: the boundary half-edge, else the smallest corner
      * (the children of v's corners are ordered like them) */
     if (t->vout) t->vout[v] = topo_loop_half_first(boundary ? s->vout[v] : hmin);
-    cls = loop_class_of(nsharp, (s->vtag[v] & SUBD_VTAG_CORNER) != 0u);
-    if (cls == LOOP_CORNER) { /* corner: fixed */
+    if (c.cls == LOOP_CORNER) { /* corner: fixed */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
-    } else if (cls == LOOP_CREASE) { /* crease (or boundary) vertex */
-        loop_rule_crease(out, pv, P(s, snb[0]), P(s, snb[1]), ovf);
-        if (loop_regular_of(cls, n, (uint32_t)boundary, sidx[0], sidx[1])) tag |= TOPO_VTAG_REGULAR;
+    } else if (c.cls == LOOP_CREASE) { /* crease (or boundary) vertex */
+        loop_rule_crease(out, pv, P(s, c.c0), P(s, c.c1), ovf);
+        if (c.regular) tag |= TOPO_VTAG_REGULAR;
     } else { /* smooth or dart: Loop's rule */
         loop_weights w = subd_loop_weights_of(bc, n, ovf);
         subd_acc acc[3];

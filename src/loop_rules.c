@@ -18,36 +18,44 @@ int subd_loop_tags_public(const subd_mesh *m, subd_diag *d)
 
 void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
 {
-    uint32_t n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
     topo_ring r;
-    o->valence = 0;
-    o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
-    o->boundary = 0;
-    o->regular = 0;
     if (m->vert_out[v] == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
+        o->valence = 0;
+        o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
+        o->boundary = 0;
+        o->regular = 0;
         o->cls = LOOP_ISOLATED;
         return;
     }
-    /* topo.h's walk; on a boundary its tail (the incoming boundary edge) is the last */
     topo_ring_begin(&r, m, v);
-    while (topo_ring_step(&r)) {
-        if (topo_ring_sharp(&r, m->edge_tag)) {
+    subd_loop_classify_ring(&r, m->edge_tag, (m->vert_tag[v] & SUBD_VTAG_CORNER) != 0u, o, 0);
+}
+
+void subd_loop_classify_ring(topo_ring *r, const uint8_t *etag, int corner_tag, loop_vinfo *o, uint32_t *hmin)
+{
+    uint32_t n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0}, hm = SUBD_NONE;
+    o->boundary = 0;
+    /* topo.h's walk; on a boundary its tail (the incoming boundary edge) is the last */
+    while (topo_ring_step(r)) {
+        if (!r->tail && r->he < hm) hm = r->he;
+        if (topo_ring_sharp(r, etag)) {
             if (ns < 2u) {
-                s[ns] = r.nb;
+                s[ns] = r->nb;
                 at[ns] = n;
             }
             ns++;
         }
         n++;
-        if (r.tail) o->boundary = 1;
+        if (r->tail) o->boundary = 1;
     }
+    if (hmin) *hmin = hm;
     o->valence = n;
     o->nsharp = ns;
     o->c0 = s[0];
     o->c1 = s[1];
     o->i0 = at[0];
     o->i1 = at[1];
-    o->cls = loop_class_of(ns, (m->vert_tag[v] & SUBD_VTAG_CORNER) != 0u);
+    o->cls = loop_class_of(ns, corner_tag);
     o->regular = loop_regular_of(o->cls, n, o->boundary, at[0], at[1]);
 }
 

@@ -77,6 +77,11 @@ static inline uint32_t loop_regular_of(uint32_t cls, uint32_t n, uint32_t bounda
  * (bounded by num_corners whatever the input). */
 void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o);
 
+/* The same from a walk r already begun at a non-isolated vertex (loop.c's levels, which carry
+ * no face_start: topo_ring_begin_tri), with edge tags etag and the vertex's CORNER tag; *hmin
+ * (if not NULL) gets the smallest outgoing half-edge (loop.c's vert_out choice). */
+void subd_loop_classify_ring(topo_ring *r, const uint8_t *etag, int corner_tag, loop_vinfo *o, uint32_t *hmin);
+
 /* ------------------------------------------------------------------------------------ */
 /* Weights                                                                                */
 

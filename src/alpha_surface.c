@@ -53,6 +53,7 @@
 #include "alpha_internal.h"
 #include "entry.h"
 #include "real_avg.h"
+#include "topo.h"
 
 typedef struct ds_stats {
     uint32_t v, f, c, ei, vi, s;
@@ -178,18 +179,13 @@ static int surface_plan(const subd_mesh *in, const subd_alpha_opts *o, uint32_t 
 
 /* The arrays the steps read; a mesh without adjacency (e.g. subd_loop output without
  * SUBD_LOOP_ADJACENCY: twin and vert_out NULL) is refused. */
-static int surface_mesh_ok(const subd_mesh *m)
-{
-    if (!m->face_start) return 0;
-    if (m->num_verts && (!m->pos || !m->vert_out || !m->vert_tag)) return 0;
-    if (m->num_corners && (!m->corner_vert || !m->corner_face || !m->twin)) return 0;
-    return 1;
-}
+#define ALPHA_SURFACE_NEEDS                                                                                   \
+    (TOPO_FACE_START | TOPO_POS | TOPO_VERT_OUT | TOPO_VERT_TAG | TOPO_CORNER_VERT | TOPO_CORNER_FACE | TOPO_TWIN)
 
 static int check_args(const subd_mesh *in, const subd_alpha_opts *o, int64_t *s_q32)
 {
     int st;
-    if (!in || !surface_mesh_ok(in)) return SUBD_ERR_PARAM;
+    if (!subd_topo_has(in, ALPHA_SURFACE_NEEDS)) return SUBD_ERR_PARAM;
     if ((st = subd_alpha_check_opts(o, SUBD_ALPHA_MAX_ORDER, s_q32)) != SUBD_OK) return st;
     if (o->levels < 1u) return SUBD_ERR_PARAM;
     if (in->num_faces == 0) return SUBD_ERR_EMPTY;
@@ -324,18 +320,17 @@ static void dual_step(const subd_mesh *m, subd_mesh *out, uint32_t *ovf)
     }
     out->face_start[0] = 0;
     for (v = 0; v < m->num_verts; v++) {
-        uint32_t first = m->vert_out[v], last = SUBD_NONE, bnd;
+        uint32_t first = m->vert_out[v];
+        topo_ring r;
         if (first == SUBD_NONE) continue;
-        bnd = (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) != 0u;
-        if (bnd) {
+        if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
             out->corner_vert[nc++] = vmap[v];
             out->corner_vert[nc++] = emap[first];
         }
-        for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) {
-            out->corner_vert[nc++] = m->corner_face[h];
-            last = h;
-        }
-        if (bnd) out->corner_vert[nc++] = emap[subd_he_prev(m, last)];
+        /* the faces around v in ring order; on a boundary topo.h's tail is the incoming
+         * boundary edge, whose midpoint closes the face */
+        topo_ring_begin(&r, m, v);
+        while (topo_ring_step(&r)) out->corner_vert[nc++] = r.tail ? emap[r.he] : m->corner_face[r.he];
         out->face_start[++nf] = nc;
     }
     out->line_start[0] = 0;

@@ -21,6 +21,7 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
 #include "vec3w.h"
+#include "topo.h"
 
 #define N_BITS 10 /* Q16.16: significant bits kept per normal component */
 
@@ -91,8 +92,9 @@ uint32_t subd_mesh_tag_crease_angle(subd_mesh *m, subd_real cos_limit)
     uint32_t h, tagged = 0;
     int all;
     subd_wide a[3], b[3];
-    if (!m || !m->num_corners || !m->twin || !m->corner_face || !m->face_start || !m->corner_vert || !m->pos ||
-        !m->edge_tag)
+    if (!m || !m->num_corners ||
+        !subd_topo_has(m, TOPO_ALWAYS | TOPO_TWIN | TOPO_CORNER_FACE | TOPO_FACE_START | TOPO_CORNER_VERT | TOPO_POS |
+                              TOPO_EDGE_TAG))
         return 0; /* no mesh or no adjacency: nothing tagged */
     if (cos_limit < -SUBD_REAL_ONE) return 0; /* < -1: no angle exceeds it */
     all = cos_limit > SUBD_REAL_ONE;          /* > 1: every angle does     */

@@ -40,6 +40,7 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "edge_sort.h"
 #include "mesh_internal.h" /* tri_next, tri_prev */
+#include "topo.h"
 #include "vec3w.h" /* subd_bitlen64 */
 
 #define ES_KEY_FRAC 52u
@@ -101,25 +102,16 @@ uint32_t subd_edge_number(const subd_mesh *m, const subd_edge_work *w, uint32_t 
     uint32_t h, v, ne = 0;
     for (h = 0; h < nc; h++) edge_of[h] = SUBD_NONE;
     for (v = 0; v < nv; v++) {
-        uint32_t first = vert_out[v], last = SUBD_NONE, steps = 0;
-        if (first == SUBD_NONE) continue;
-        for (h = first; h != SUBD_NONE && steps < nc; steps++) {
-            last = h;
+        topo_ring r; /* topo.h's walk: on a boundary the incoming boundary edge (the tail) last */
+        if (vert_out[v] == SUBD_NONE) continue;
+        if (tri) topo_ring_begin_tri(&r, m->corner_vert, twin, nc, vert_out[v]);
+        else topo_ring_begin(&r, m, v);
+        while (topo_ring_step(&r)) {
+            h = r.he;
             if (edge_of[h] == SUBD_NONE) {
                 if (ne == cap) return SUBD_NONE;
                 edge_of[h] = ne;
                 if (twin[h] != SUBD_NONE) edge_of[twin[h]] = ne;
-                edge_he[ne++] = h;
-            }
-            /* subd_ring_next */
-            h = twin[tri ? tri_prev(h) : subd_he_prev(m, h)];
-            if (h == first) h = SUBD_NONE;
-        }
-        if (twin[first] == SUBD_NONE) { /* boundary: the incoming boundary edge comes last */
-            h = tri ? tri_prev(last) : subd_he_prev(m, last);
-            if (edge_of[h] == SUBD_NONE) {
-                if (ne == cap) return SUBD_NONE;
-                edge_of[h] = ne;
                 edge_he[ne++] = h;
             }
         }

@@ -48,7 +48,7 @@
  *   - Classes are inherited: refinement keeps every old vertex's valence and number of
  *     sharp edges, and makes new vertices smooth of valence 6 (interior edge) or regular
  *     crease vertices (sharp edge). So only level 1 classifies by walking the input's rings;
- *     on the levels this file made, a smooth vertex (private tag bit VTAG_SMOOTH, valence in
+ *     on the levels this file made, a smooth vertex (private tag bit TOPO_VTAG_SMOOTH, valence in
  *     a byte array) takes exactly `valence` ring steps with no sharpness tests, and only
  *     crease, corner and high-valence vertices take the general walk. The order of the
  *     weighted sums is the same in both paths (bit-identical output).
@@ -73,13 +73,12 @@
 #include "layout.h"
 #include "loop_rules.h"
 #include "mesh_internal.h"
+#include "topo.h"
 
-#define ETAG_SHARP LOOP_ETAG_SHARP
-#define VTAG_CALLER (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED)
-#define VTAG_REGULAR 0x80u /* private: regular crease vertex (PAPER sharp-edge rule)       */
-#define VTAG_SMOOTH 0x40u  /* private, intermediate levels: smooth interior vertex whose
-                            * valence is in the level's val array (1..255)               */
-#define VTAG_PRIVATE (VTAG_REGULAR | VTAG_SMOOTH)
+/* The private class bits of the levels made here: topo.h's table (REGULAR: a regular
+ * crease vertex, PAPER sharp-edge rule; SMOOTH: a smooth interior vertex whose valence is in
+ * the level's val array, 1..255). */
+#define LOOP_VTAG_CALLER (SUBD_VTAG_CORNER | SUBD_VTAG_FIXED)
 
 /* Counts of one level. */
 typedef struct loop_counts {
@@ -184,18 +183,14 @@ static void block_region(subd_arena *r, uint8_t *base, uint32_t off, uint32_t to
     subd_arena_init(r, base + off, total - off);
 }
 
-static int mesh_ok(const subd_mesh *m)
-{
-    if (!m->face_start) return 0;
-    if (m->num_verts && (!m->pos || !m->vert_out || !m->vert_tag)) return 0;
-    if (m->num_corners && (!m->corner_vert || !m->twin || !m->edge_tag)) return 0;
-    return 1;
-}
+/* The arrays subd_loop reads (topo.h's guard: each when its count is non-zero). */
+#define LOOP_NEEDS                                                                                            \
+    (TOPO_FACE_START | TOPO_POS | TOPO_VERT_OUT | TOPO_VERT_TAG | TOPO_CORNER_VERT | TOPO_TWIN | TOPO_EDGE_TAG)
 
 int subd_loop_check(const subd_mesh *in, const subd_loop_opts *o, uint32_t flags, subd_diag *d)
 {
     int st;
-    if (!in || !o || !mesh_ok(in)) return subd_fail(d, SUBD_ERR_PARAM);
+    if (!o || !subd_topo_has(in, LOOP_NEEDS)) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->levels < 1u || o->levels > SUBD_MAX_LEVELS) return subd_fail(d, SUBD_ERR_PARAM);
     if (o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE)
         return subd_fail(d, SUBD_ERR_PARAM);
@@ -253,58 +248,16 @@ int subd_loop_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t *bytes
 /* ------------------------------------------------------------------------------------ */
 /* Navigation on a triangle level (tri_next, tri_prev: mesh_internal.h)                   */
 
-static int edge_sharp(const loop_src *s, uint32_t h)
-{
-    uint32_t t = s->twin[h];
-    if (t == SUBD_NONE || (s->etag[h] & ETAG_SHARP)) return 1;
-    return (s->etag[t] & SUBD_ETAG_CREASE) != 0u;
-}
-
-/* One-ring iterator: outgoing half-edges from vert_out, rotating with twin(prev(h)); on a
- * boundary the last neighbour is the origin of the incoming boundary half-edge. Bounded by
- * the number of corners whatever the input. */
-typedef struct ring_it {
-    uint32_t h0, h, steps, tail;
-} ring_it;
-
-static void ring_begin(const loop_src *s, uint32_t v, ring_it *it)
-{
-    it->h0 = it->h = s->vout[v];
-    it->steps = 0;
-    it->tail = 0;
-}
-
-/* Next neighbour (SUBD_NONE at the end); *sharp says whether the edge to it is sharp. */
-static uint32_t ring_step(const loop_src *s, ring_it *it, int *sharp)
-{
-    uint32_t h = it->h, p, t, nb;
-    if (h == SUBD_NONE) return SUBD_NONE;
-    if (it->tail) {
-        it->h = SUBD_NONE;
-        *sharp = 1;
-        return s->cv[h];
-    }
-    nb = s->cv[tri_next(h)];
-    *sharp = edge_sharp(s, h);
-    p = tri_prev(h);
-    t = s->twin[p];
-    if (t == SUBD_NONE) {
-        it->h = p;
-        it->tail = 1;
-    } else if (t == it->h0 || ++it->steps >= 3u * s->nf) {
-        it->h = SUBD_NONE;
-    } else {
-        it->h = t;
-    }
-    return nb;
-}
+/* Rings are walked by topo.h's iterator (topo_ring_begin_tri over the level's arrays) and
+ * sharpness is topo_edge_sharp; the 1->4 child numbering is topo.h's as well. */
 
 /* Child corner index of corner j of child k of face f. */
-#define CC(f, k, j) (12u * (f) + 3u * (k) + (j))
+#define LOOP_CC(f, k, j) (12u * (f) + 3u * (k) + (j))
 
-/* First child half-edge along parent half-edge h = 3f + i (v_i -> m_i, corner 0 of child
- * i): 12 f + 3 i = 4 h - i. */
-static uint32_t half_first(uint32_t h) { return 4u * h - h % 3u; }
+static void ring_begin(const loop_src *s, uint32_t v, topo_ring *it)
+{
+    topo_ring_begin_tri(it, s->cv, s->twin, 3u * s->nf, s->vout[v]);
+}
 
 /* ------------------------------------------------------------------------------------ */
 /* Position rules                                                                         */
@@ -312,7 +265,10 @@ static uint32_t half_first(uint32_t h) { return 4u * h - h % 3u; }
 static const subd_real *P(const loop_src *s, uint32_t v) { return s->pos + 3u * v; }
 
 /* Smooth rule on a level this file made: v is interior with valence n, so the ring is
- * exactly n steps of twin(prev(h)) from vert_out, in the order of the general walk. */
+ * exactly n steps of twin(prev(h)) from vert_out, in the order of the general walk. A
+ * specialisation of topo_ring for the hot path (no tail, no sharpness, no end test); test
+ * loop_compose holds it equal to the general walk (levels = k against k calls of one level,
+ * whose every level is walked by topo_ring), bit for bit. */
 static void smooth_fast(const loop_src *s, subd_real *out, uint32_t v, uint32_t n, loop_weights w, uint32_t *ovf)
 {
     subd_acc acc[3];
@@ -333,10 +289,11 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loo
 {
     subd_real *out = t->pos + 3u * v;
     const subd_real *pv = P(s, v);
-    uint8_t tag = (uint8_t)(s->vtag[v] & VTAG_CALLER);
-    uint32_t n = 0, nsharp = 0, nb, snb[2] = {0, 0}, sidx[2] = {0, 0}, j, hmin = SUBD_NONE, cls;
-    int sharp, boundary;
-    ring_it it;
+    uint8_t tag = (uint8_t)(s->vtag[v] & LOOP_VTAG_CALLER);
+    uint32_t j, hmin = SUBD_NONE, n;
+    int boundary;
+    topo_ring it;
+    loop_vinfo c;
 
     if (s->vout[v] == SUBD_NONE) { /* isolated: copied */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
@@ -347,38 +304,26 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loo
     boundary = s->twin[s->vout[v]] == SUBD_NONE;
     if (boundary) tag |= SUBD_VTAG_BOUNDARY;
     ring_begin(s, v, &it);
-    for (;;) {
-        uint32_t h = it.h, tail = it.tail; /* h is outgoing unless this is the tail step */
-        if ((nb = ring_step(s, &it, &sharp)) == SUBD_NONE) break;
-        if (!tail && h < hmin) hmin = h;
-        if (sharp) {
-            if (nsharp < 2u) {
-                snb[nsharp] = nb;
-                sidx[nsharp] = n;
-            }
-            nsharp++;
-        }
-        n++;
-    }
+    subd_loop_classify_ring(&it, s->etag, (s->vtag[v] & SUBD_VTAG_CORNER) != 0u, &c, &hmin);
+    n = c.valence;
     /* vert_out as the builder chooses it: the boundary half-edge, else the smallest corner
      * (the children of v's corners are ordered like them) */
-    if (t->vout) t->vout[v] = half_first(boundary ? s->vout[v] : hmin);
-    cls = loop_class_of(nsharp, (s->vtag[v] & SUBD_VTAG_CORNER) != 0u);
-    if (cls == LOOP_CORNER) { /* corner: fixed */
+    if (t->vout) t->vout[v] = topo_loop_half_first(boundary ? s->vout[v] : hmin);
+    if (c.cls == LOOP_CORNER) { /* corner: fixed */
         for (j = 0; j < 3u; j++) out[j] = pv[j];
-    } else if (cls == LOOP_CREASE) { /* crease (or boundary) vertex */
-        loop_rule_crease(out, pv, P(s, snb[0]), P(s, snb[1]), ovf);
-        if (loop_regular_of(cls, n, (uint32_t)boundary, sidx[0], sidx[1])) tag |= VTAG_REGULAR;
+    } else if (c.cls == LOOP_CREASE) { /* crease (or boundary) vertex */
+        loop_rule_crease(out, pv, P(s, c.c0), P(s, c.c1), ovf);
+        if (c.regular) tag |= TOPO_VTAG_REGULAR;
     } else { /* smooth or dart: Loop's rule */
         loop_weights w = subd_loop_weights_of(bc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
         ring_begin(s, v, &it);
-        while ((nb = ring_step(s, &it, &sharp)) != SUBD_NONE) loop_smooth_add(acc, w, P(s, nb));
+        while (topo_ring_step(&it)) loop_smooth_add(acc, w, P(s, it.nb));
         loop_smooth_end(out, acc, ovf);
         /* the child keeps the class: interior, valence n (not boundary: two sharp edges) */
         if (t->val && n <= 255u) {
-            tag |= VTAG_SMOOTH;
+            tag |= TOPO_VTAG_SMOOTH;
             t->val[v] = (uint8_t)n;
         }
     }
@@ -389,14 +334,11 @@ static void vertex_general(const loop_src *s, const loop_dst *t, uint32_t v, loo
 /* One level                                                                              */
 
 /* vert_out of the new vertex on the edge of lower half-edge h = 3f + i (twin tw): its
- * boundary half-edge m_i -> v_{i+1} (corner 2 of child i+1), else its smallest corner,
- * which is in face f (the twin face has a larger index): among CC(f, i, 1),
- * CC(f, i+1, 2) and CC(f, 3, i) that is CC(0,1), CC(1,1), CC(0,2) for i = 0, 1, 2. */
+ * boundary half-edge, else its smallest corner, which is in face f (the twin face has a
+ * larger index): topo_loop_new_vout. */
 static uint32_t new_vout(uint32_t f, uint32_t i, uint32_t tw)
 {
-    static const uint8_t smallest[3] = {1u, 4u, 2u};
-    if (tw == SUBD_NONE) return CC(f, (i + 1u) % 3u, 2u);
-    return 12u * f + smallest[i];
+    return 12u * f + topo_loop_new_vout(i, tw == SUBD_NONE);
 }
 
 static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundary rule, loop_wcache *bc,
@@ -404,18 +346,18 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
 {
     uint32_t v, f, e = s->nv;
     /* class bits kept on the child's new vertices (none on the output) */
-    uint8_t keep = t->val ? (uint8_t)VTAG_PRIVATE : (uint8_t)0u;
+    uint8_t keep = t->val ? (uint8_t)TOPO_VTAG_PRIVATE : (uint8_t)0u;
 
     /* Even vertices. On a made level the class is known: smooth ones take the fast walk. */
     for (v = 0; v < s->nv; v++) {
         uint8_t st = s->made ? s->vtag[v] : (uint8_t)0u;
-        if (st & VTAG_SMOOTH) {
+        if (st & TOPO_VTAG_SMOOTH) {
             uint32_t n = s->val[v];
             smooth_fast(s, t->pos + 3u * v, v, n, subd_loop_weights_of(bc, n, ovf), ovf);
             /* same class, same tags: interior, so only the caller bits and the class */
-            t->vtag[v] = (uint8_t)(st & (VTAG_CALLER | keep));
+            t->vtag[v] = (uint8_t)(st & (LOOP_VTAG_CALLER | keep));
             if (t->val) t->val[v] = (uint8_t)n;
-            if (t->vout) t->vout[v] = half_first(s->vout[v]);
+            if (t->vout) t->vout[v] = topo_loop_half_first(s->vout[v]);
         } else {
             vertex_general(s, t, v, bc, ovf);
         }
@@ -433,17 +375,18 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
             uint32_t a = s->cv[h], b = s->cv[i == 2u ? h0 : h + 1u];
             uint8_t tg;
             int sharp;
-            if (s->made) { /* both halves carry the same BOUNDARY / CREASE bits, nothing else */
+            if (s->made) { /* both halves carry the same BOUNDARY / CREASE bits, nothing else:
+                            * topo_edge_sharp in one byte (LOOP_ETAG_SHARP) */
                 tg = s->etag[h];
-                sharp = (tg & ETAG_SHARP) != 0u;
+                sharp = (tg & LOOP_ETAG_SHARP) != 0u;
             } else {
                 tg = (uint8_t)(s->etag[h] & SUBD_ETAG_CREASE);
                 tg = (uint8_t)(tg | (tw == SUBD_NONE ? SUBD_ETAG_BOUNDARY : (s->etag[tw] & SUBD_ETAG_CREASE)));
-                sharp = edge_sharp(s, h);
+                sharp = topo_edge_sharp(s->twin, s->etag, h);
             }
             tag[i] = tg;
             if (tw != SUBD_NONE && tw < h) { /* upper half: made at the twin's face */
-                m[i] = t->cv[CC(tw / 3u, tw % 3u, 1u)];
+                m[i] = t->cv[LOOP_CC(tw / 3u, tw % 3u, 1u)];
                 continue;
             }
             m[i] = e;
@@ -452,45 +395,50 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
                 subd_real *out = t->pos + 3u * e;
                 if (!sharp) {
                     loop_rule_edge(out, xa, xb, P(s, s->cv[i == 0u ? h0 + 2u : h - 1u]), P(s, s->cv[tri_prev(tw)]), ovf);
-                    t->vtag[e] = (uint8_t)(VTAG_SMOOTH & keep);
+                    t->vtag[e] = (uint8_t)(TOPO_VTAG_SMOOTH & keep);
                     if (t->val) t->val[e] = 6u;
                 } else {
-                    loop_rule_sharp_edge(out, xa, xb, rule, (t->vtag[a] & VTAG_REGULAR) != 0u,
-                                         (t->vtag[b] & VTAG_REGULAR) != 0u, ovf);
+                    loop_rule_sharp_edge(out, xa, xb, rule, (t->vtag[a] & TOPO_VTAG_REGULAR) != 0u,
+                                         (t->vtag[b] & TOPO_VTAG_REGULAR) != 0u, ovf);
                     /* a new vertex on a sharp edge is a regular crease vertex */
-                    t->vtag[e] = (uint8_t)((tw == SUBD_NONE ? SUBD_VTAG_BOUNDARY : 0u) | (VTAG_REGULAR & keep));
+                    t->vtag[e] = (uint8_t)((tw == SUBD_NONE ? SUBD_VTAG_BOUNDARY : 0u) | (TOPO_VTAG_REGULAR & keep));
                 }
                 if (t->vout) t->vout[e] = new_vout(f, i, tw);
             }
             e++;
         }
-        /* child i = (v_i, m_i, m_{i-1}), child 3 = (m0, m1, m2) */
-        cv[0] = s->cv[h0];      cv[1] = m[0]; cv[2] = m[2];
-        cv[3] = s->cv[h0 + 1u]; cv[4] = m[1]; cv[5] = m[0];
-        cv[6] = s->cv[h0 + 2u]; cv[7] = m[2]; cv[8] = m[1];
-        cv[9] = m[0];           cv[10] = m[1]; cv[11] = m[2];
-        /* parent edge i is split into CC(i, 0) and CC(i+1, 2); inner edges are untagged */
-        et[0] = tag[0]; et[1] = 0; et[2] = tag[2];
-        et[3] = tag[1]; et[4] = 0; et[5] = tag[0];
-        et[6] = tag[2]; et[7] = 0; et[8] = tag[1];
-        et[9] = 0;      et[10] = 0; et[11] = 0;
+        /* child i = (v_i, m_i, m_{i-1}), child 3 = (m0, m1, m2): topo.h's table */
+        {
+            static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS;
+            uint32_t x[6], k;
+            x[0] = s->cv[h0];
+            x[1] = s->cv[h0 + 1u];
+            x[2] = s->cv[h0 + 2u];
+            x[3] = m[0];
+            x[4] = m[1];
+            x[5] = m[2];
+            for (k = 0; k < 12u; k++) cv[k] = x[pts[k / 3u][k % 3u]];
+            /* parent edge i is split into its two halves; inner edges are untagged */
+            for (k = 0; k < 12u; k++) et[k] = 0;
+        }
+        for (i = 0; i < 3u; i++) et[topo_loop_first_half(i)] = et[topo_loop_second_half(i)] = tag[i];
         if (t->twin) {
             uint32_t *tt = t->twin + 12u * f;
             for (i = 0; i < 3u; i++) {
                 uint32_t tw = s->twin[h0 + i], i1 = (i + 1u) % 3u;
                 /* outer: v_i -> m_i pairs with the twin's second half, m_i -> v_{i+1} with
                  * its first half; inner: (m_i, m_{i-1}) of child i with child 3's edge
-                 * m_{i-1} -> m_i, which is CC(3, i+2) */
-                tt[3u * i] = (tw == SUBD_NONE) ? SUBD_NONE : 12u * (tw / 3u) + 3u * ((tw + 1u) % 3u) + 2u;
-                tt[3u * i1 + 2u] = (tw == SUBD_NONE) ? SUBD_NONE : half_first(tw);
-                tt[3u * i + 1u] = CC(f, 3u, (i + 2u) % 3u);
-                tt[9u + i] = CC(f, i1, 1u);
+                 * m_{i-1} -> m_i, which is LOOP_CC(3, i+2) */
+                tt[topo_loop_first_half(i)] = (tw == SUBD_NONE) ? SUBD_NONE : 12u * (tw / 3u) + topo_loop_second_half(tw % 3u);
+                tt[topo_loop_second_half(i)] = (tw == SUBD_NONE) ? SUBD_NONE : topo_loop_half_first(tw);
+                tt[3u * i + 1u] = LOOP_CC(f, 3u, (i + 2u) % 3u);
+                tt[9u + i] = LOOP_CC(f, i1, 1u);
             }
         }
     }
     /* REGULAR was only for this level's sharp edges; the output has no private bits */
     if (!t->val)
-        for (v = 0; v < s->nv; v++) t->vtag[v] = (uint8_t)(t->vtag[v] & ~VTAG_PRIVATE);
+        for (v = 0; v < s->nv; v++) t->vtag[v] = (uint8_t)(t->vtag[v] & ~TOPO_VTAG_PRIVATE);
 }
 
 /* ------------------------------------------------------------------------------------ */

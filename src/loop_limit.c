@@ -295,25 +295,29 @@ static void lim_position(const subd_mesh *m, subd_loop_boundary b, const subd_re
     const subd_real *pv = &ctrl[3u * v];
     uint32_t k;
     if (c->cls == LOOP_SMOOTH) {
-        uint32_t first = m->vert_out[v], h, n = 0;
+        uint32_t n = 0;
         subd_wide s[3];
         lim_w w = lim_chi_cached(cache, c->valence);
+        topo_ring r; /* smooth: interior, no tail */
         for (k = 0; k < 3u; k++) s[k] = (subd_wide)0;
-        for (h = first; h != SUBD_NONE && n < c->valence; h = subd_ring_next(m, first, h), n++) {
-            const subd_real *p = &ctrl[3u * subd_he_dest(m, h)];
+        topo_ring_begin(&r, m, v);
+        for (; n < c->valence && topo_ring_step(&r); n++) {
+            const subd_real *p = &ctrl[3u * r.nb];
             for (k = 0; k < 3u; k++) s[k] += subd_wide_diff(p[k], pv[k]);
         }
         /* Q16.16: n chi <= 1, so w s < 2^61; float32: the product rounded once */
         for (k = 0; k < 3u; k++) out[k] = lim_finish(pv[k], w * s[k], ovf);
     } else if (c->cls == LOOP_DART) {
-        uint32_t first = m->vert_out[v], h, i = 0, n = c->valence;
+        uint32_t i = 0, n = c->valence;
         subd_wide acc[3];
         lim_dart ds;
+        topo_ring r; /* a dart is interior: no tail */
         int paper = b == SUBD_LOOP_BOUNDARY_PAPER;
         lim_dart_setup(&ds, n, paper ? 3u : 4u, paper && !lim_regular(m, c->c0));
         for (k = 0; k < 3u; k++) acc[k] = (subd_wide)0;
-        for (h = first; h != SUBD_NONE && i < n; h = subd_ring_next(m, first, h), i++) {
-            const subd_real *p = &ctrl[3u * subd_he_dest(m, h)];
+        topo_ring_begin(&r, m, v);
+        for (; i < n && topo_ring_step(&r); i++) {
+            const subd_real *p = &ctrl[3u * r.nb];
             lim_w w = lim_dart_weight(&ds, (i + n - c->i0) % n);
             for (k = 0; k < 3u; k++) acc[k] = lim_madd_w(acc[k], w, subd_wide_diff(p[k], pv[k]));
         }
@@ -377,19 +381,12 @@ static void lim_add_unit(subd_wide *acc, const subd_real *u)
     for (k = 0; k < 3u; k++) acc[k] += subd_wide_of(u[k]);
 }
 
-/* The ring walk with the boundary's last neighbour: neighbour number i (in order) of v,
- * given the walk state *h (starts at vert_out[v]) and *last. */
-static uint32_t lim_ring_step(const subd_mesh *m, uint32_t first, uint32_t *h, uint32_t *last)
+/* The next neighbour of topo.h's walk (the tail included); the callers take exactly the
+ * valence of subd_loop_classify's walk, which is the same walk. */
+static uint32_t lim_ring_step(topo_ring *r)
 {
-    uint32_t u;
-    if (*h != SUBD_NONE) {
-        u = subd_he_dest(m, *h);
-        *last = *h;
-        *h = subd_ring_next(m, first, *h);
-    } else {
-        u = m->corner_vert[subd_he_prev(m, *last)];
-    }
-    return u;
+    (void)topo_ring_step(r);
+    return r->nb;
 }
 
 /* Per-call table of the interior tangent weights subd_cos_turns(j, n), subd_sin_turns(j, n)
@@ -440,10 +437,12 @@ static void lim_smooth_tangents(const subd_mesh *m, const subd_real *ctrl, uint3
                                 uint32_t i0, lim_trig *tab, subd_wide *t1, subd_wide *t2)
 {
     const subd_real *pv = &ctrl[3u * v];
-    uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, k;
+    uint32_t i, k;
+    topo_ring r;
+    topo_ring_begin(&r, m, v);
     for (k = 0; k < 3u; k++) t1[k] = t2[k] = (subd_wide)0;
     for (i = 0; i < n; i++) {
-        const subd_real *p = &ctrl[3u * lim_ring_step(m, first, &h, &last)];
+        const subd_real *p = &ctrl[3u * lim_ring_step(&r)];
         uint32_t j = (i + n - i0) % n;
         subd_real wc, ws;
         lim_sincos(tab, j, n, &wc, &ws);
@@ -463,7 +462,8 @@ static void lim_side_normal(const subd_mesh *m, const subd_real *ctrl, uint32_t 
                             uint32_t k, int32_t w8v, int32_t w8a, int32_t w8b, subd_real *out)
 {
     const subd_real *pv = &ctrl[3u * v];
-    uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, c, ovf = 0;
+    uint32_t i, c, ovf = 0;
+    topo_ring r;
     subd_wide along[3], across[3];
     subd_real bend = 0, wa_a, wa_b, wc_a, wc_b, sn = 0;
     int32_t den = 2 * (int32_t)(k - 1u);
@@ -503,8 +503,9 @@ static void lim_side_normal(const subd_mesh *m, const subd_real *ctrl, uint32_t 
         wa_b = subd_neg(wa_a, &ovf);
         two = 1;
     }
+    topo_ring_begin(&r, m, v);
     for (i = 0; i < n; i++) {
-        const subd_real *p = &ctrl[3u * lim_ring_step(m, first, &h, &last)];
+        const subd_real *p = &ctrl[3u * lim_ring_step(&r)];
         uint32_t j = (i + n - s) % n;
         subd_real wl = 0, wx;
         if (j >= k) continue;
@@ -591,7 +592,8 @@ static void lim_dart_normal(const subd_mesh *m, subd_loop_boundary b, const subd
                             const lim_vert *c, subd_real *out)
 {
     const subd_real *pv = &ctrl[3u * v];
-    uint32_t n = c->valence, first = m->vert_out[v], h = first, last = SUBD_NONE, i, k, ovf = 0;
+    uint32_t n = c->valence, i, k, ovf = 0;
+    topo_ring r;
     subd_wide ta[3], ts[3];
     int64_t bv[DART_MAXN / 2u + 2u];
     subd_real bs = 0;
@@ -609,8 +611,9 @@ static void lim_dart_normal(const subd_mesh *m, subd_loop_boundary b, const subd
         power = 1;
     }
     for (k = 0; k < 3u; k++) ta[k] = ts[k] = (subd_wide)0;
+    topo_ring_begin(&r, m, v);
     for (i = 0; i < n; i++) {
-        const subd_real *p = &ctrl[3u * lim_ring_step(m, first, &h, &last)];
+        const subd_real *p = &ctrl[3u * lim_ring_step(&r)];
         uint32_t j = (i + n - c->i0) % n;
         subd_real wa = subd_sin_turns((int32_t)j, (int32_t)n), ws;
         if (power) {
@@ -644,32 +647,32 @@ static void lim_corner_normal(const subd_mesh *m, const subd_real *ctrl, uint32_
                               int boundary, subd_real *out)
 {
     const subd_real *pv = &ctrl[3u * v];
-    uint32_t first = m->vert_out[v], h = first, last = SUBD_NONE, i, k, s0 = 0;
+    uint32_t i, k, s0 = 0;
     uint32_t nfaces = boundary ? n - 1u : n;
     subd_wide acc[3], fan[3], d0[3], dp[3];
+    topo_ring r;
     for (k = 0; k < 3u; k++) acc[k] = fan[k] = d0[k] = dp[k] = (subd_wide)0;
     /* an interior corner: start the walk at its first sharp edge (a boundary one starts
      * at its boundary edge already) */
-    if (!boundary)
-        for (h = first; h != SUBD_NONE && s0 < n && !subd_loop_edge_sharp(m, h); h = subd_ring_next(m, first, h)) s0++;
-    h = first;
-    for (i = 0; i < s0; i++) (void)lim_ring_step(m, first, &h, &last);
+    if (!boundary) {
+        topo_ring_begin(&r, m, v);
+        while (s0 < n && topo_ring_step(&r) && !topo_ring_sharp(&r, m->edge_tag)) s0++;
+    }
+    topo_ring_begin(&r, m, v);
+    for (i = 0; i < s0; i++) (void)lim_ring_step(&r);
     /* faces (v, p_j, p_j+1) for j = s0 .. s0 + nfaces - 1; sector ends at sharp edges */
     for (i = 0; i <= nfaces; i++) {
         uint32_t he, u;
         subd_wide d[3];
-        if (s0 + i == n) { /* wrap around an interior corner */
-            h = first;
-            last = SUBD_NONE;
-        }
-        he = h;
-        u = lim_ring_step(m, first, &h, &last);
+        if (s0 + i == n) topo_ring_begin(&r, m, v); /* wrap around an interior corner */
+        he = r.next; /* the outgoing half-edge of this step; SUBD_NONE for the tail */
+        u = lim_ring_step(&r);
         for (k = 0; k < 3u; k++) d[k] = subd_wide_diff(ctrl[3u * u + k], pv[k]);
         if (i > 0u) {
             subd_real fn[3];
             lim_unit_cross(dp, d, fn);
             lim_add_unit(fan, fn);
-            if (he == SUBD_NONE || subd_loop_edge_sharp(m, he) || i == nfaces) {
+            if (he == SUBD_NONE || topo_mesh_edge_sharp(m, he) || i == nfaces) {
                 subd_real sn[3];
                 subd_wide sw[3];
                 lim_unit_cross(d0, d, sn);
@@ -739,9 +742,9 @@ static int lim_check(const subd_mesh *in, subd_loop_boundary b, subd_diag *d)
 {
     int st;
     if (!in || (b != SUBD_LOOP_BOUNDARY_PAPER && b != SUBD_LOOP_BOUNDARY_BSPLINE)) return SUBD_ERR_PARAM;
-    if (in->num_verts > 0u && (!in->pos || !in->vert_out || !in->vert_tag)) return SUBD_ERR_PARAM;
-    if (in->num_faces > 0u && (!in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
-                               !in->edge_tag))
+    if (!subd_topo_has(in, TOPO_POS | TOPO_VERT_OUT | TOPO_VERT_TAG) ||
+        !subd_topo_has(in, TOPO_IF_FACES | TOPO_FACE_START | TOPO_CORNER_VERT | TOPO_CORNER_FACE | TOPO_TWIN |
+                               TOPO_EDGE_TAG))
         return SUBD_ERR_PARAM;
     if ((st = subd_loop_tags_public(in, d)) != SUBD_OK) return st;
     return subd_require_triangles(in, d);

@@ -65,20 +65,16 @@ static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
     p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
     p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
     subd_loop_classify(in, v, &c);
-    p->vflag[nv] = (uint8_t)((c.regular ? VF_REGULAR : 0u) | ((in->vert_tag[v] & SUBD_VTAG_CORNER) ? VF_CORNER : 0u));
-    p->vout[nv] = TW_NONE;
+    p->vflag[nv] = (uint8_t)((c.regular ? TOPO_PF_REGULAR : 0u) | ((in->vert_tag[v] & SUBD_VTAG_CORNER) ? TOPO_PF_CORNER : 0u));
+    p->vout[nv] = LP_TW_NONE;
     p->h->nv = nv + 1u;
     return (uint16_t)nv;
 }
 
-/* loop.c's sharpness of input half-edge h at level 0 (SH_RULE) and of its children. */
+/* Sharpness of input half-edge h at level 0 and of its children: topo_edge_sharp. */
 static uint8_t input_sharp(const subd_mesh *in, uint32_t h)
 {
-    uint32_t t = in->twin[h];
-    uint8_t tg = in->edge_tag[h];
-    if (t == SUBD_NONE) return SH_RULE | SH_CHILD;
-    if (tg & SUBD_ETAG_CREASE || (in->edge_tag[t] & SUBD_ETAG_CREASE)) return SH_RULE | SH_CHILD;
-    return (tg & SUBD_ETAG_BOUNDARY) ? SH_RULE : 0u;
+    return topo_edge_sharp(in->twin, in->edge_tag, h) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
 }
 
 /* Builds level 0 for input face f: every face around its corners (walked both ways from
@@ -108,10 +104,10 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
             p->cv[l] = local_vertex(in, p, in->corner_vert[h]);
             p->sh[l] = input_sharp(in, h);
             if (t == SUBD_NONE) {
-                p->tw[l] = TW_NONE;
+                p->tw[l] = LP_TW_NONE;
             } else {
                 uint32_t tf = find_face(p, nf, t / 3u);
-                p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)TW_BORDER;
+                p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)LP_TW_BORDER;
             }
         }
     for (j = 0; j < 3u; j++) { /* the input's vert_out, as loop.c's first level walks it */
@@ -129,9 +125,12 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
 /* ------------------------------------------------------------------------------------ */
 /* Refined values of a level (the cache)                                                  */
 
-/* One-ring iterator of a complete vertex of a patch, loop.c's walk: from vout
- * counter-clockwise (twin of prev); on a boundary the last neighbour is the origin of the
- * incoming boundary half-edge. Bounded by the patch's half-edges whatever the patch holds. */
+/* One-ring iterator of a complete vertex of a patch: topo_ring's walk specialised to the
+ * patch's 16-bit arrays, whose twin may also say "outside the patch" (LP_TW_BORDER, which
+ * cannot occur at a centre corner; the walk stops there). From vout counter-clockwise (twin
+ * of prev); on a boundary the last neighbour is the origin of the incoming boundary
+ * half-edge. Bounded by the patch's half-edges whatever the patch holds. test_topo's
+ * topo_patch_ring holds it equal to topo_ring on the input (subd_lp_ring). */
 typedef struct sp_ring {
     uint32_t h0, h, steps, tail;
 } sp_ring;
@@ -156,15 +155,30 @@ static uint32_t sp_ring_step(const sp_level *p, sp_ring *it, uint32_t *he)
     nb = p->cv[tri_next(h)];
     pr = tri_prev(h);
     t = p->tw[pr];
-    if (t == TW_NONE) {
+    if (t == LP_TW_NONE) {
         it->h = pr;
         it->tail = 1;
-    } else if (t == it->h0 || t == TW_BORDER || ++it->steps >= 3u * p->h->nf) {
+    } else if (t == it->h0 || t == LP_TW_BORDER || ++it->steps >= 3u * p->h->nf) {
         it->h = SUBD_NONE; /* a border cannot occur at a centre corner: the bound is a guard */
     } else {
         it->h = t;
     }
     return nb;
+}
+
+uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he, uint32_t max)
+{
+    uint32_t n = 0, nb, h = 0;
+    sp_ring it;
+    sp_ring_begin(p, v, &it);
+    while ((nb = sp_ring_step(p, &it, &h)) != SUBD_NONE) {
+        if (n < max) {
+            nbr[n] = nb;
+            he[n] = h;
+        }
+        n++;
+    }
+    return n;
 }
 
 /* Vertex point of centre corner v (0..2): classify by the walk, then the class's rule; a
@@ -178,10 +192,10 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
 {
     uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, he = 0, cls = LOOP_SMOOTH;
     const subd_real *pv = next ? p->cpos + 3u * v : p->pos + 3u * v;
-    uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)SH_CHILD : (uint8_t)SH_RULE;
+    uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)LP_SH_CHILD : (uint8_t)LP_SH_RULE;
     sp_ring it;
 #define SP_NB() (next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb)
-    if (f & VF_SMOOTH6) {
+    if (f & TOPO_PF_SMOOTH6) {
         n = 6;
     } else {
         sp_ring_begin(p, v, &it);
@@ -192,7 +206,7 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
             }
             n++;
         }
-        cls = loop_class_of(ns, (f & VF_CORNER) != 0u);
+        cls = loop_class_of(ns, (f & TOPO_PF_CORNER) != 0u);
     }
     if (cls == LOOP_CORNER) {
         out[0] = pv[0];
@@ -208,7 +222,7 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
         sp_ring_begin(p, v, &it);
         while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
         loop_smooth_end(out, acc, ovf);
-        if (n == 6u) f |= VF_SMOOTH6;
+        if (n == 6u) f |= TOPO_PF_SMOOTH6;
     }
 #undef SP_NB
     if (child) *child = f;
@@ -218,19 +232,19 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
 static uint32_t lower_of(const sp_level *p, uint32_t h)
 {
     uint32_t t = p->tw[h];
-    return (t < TW_BORDER && t < h) ? t : h;
+    return (t < LP_TW_BORDER && t < h) ? t : h;
 }
 
 /* Edge point of the edge of lower half-edge hl. */
 static void edge_point(const sp_level *p, uint32_t hl, subd_loop_boundary rule, uint32_t *ovf, subd_real *out)
 {
     uint32_t a = p->cv[hl], b = p->cv[tri_next(hl)], t = p->tw[hl];
-    if (!(p->sh[hl] & SH_RULE) && t < TW_BORDER)
+    if (!(p->sh[hl] & LP_SH_RULE) && t < LP_TW_BORDER)
         loop_rule_edge(out, p->pos + 3u * a, p->pos + 3u * b, p->pos + 3u * p->cv[tri_prev(hl)],
                        p->pos + 3u * p->cv[tri_prev(t)], ovf);
     else
-        loop_rule_sharp_edge(out, p->pos + 3u * a, p->pos + 3u * b, rule, p->vflag[a] & VF_REGULAR,
-                             p->vflag[b] & VF_REGULAR, ovf);
+        loop_rule_sharp_edge(out, p->pos + 3u * a, p->pos + 3u * b, rule, p->vflag[a] & TOPO_PF_REGULAR,
+                             p->vflag[b] & TOPO_PF_REGULAR, ovf);
 }
 
 /* Fills the cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
@@ -239,7 +253,7 @@ static void edge_point(const sp_level *p, uint32_t hl, subd_loop_boundary rule, 
 void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf)
 {
     uint32_t h, v, nc = 3u, n3 = 3u * p->h->nf;
-    for (h = 0; h < n3; h++) p->slot[h] = NO_SLOT;
+    for (h = 0; h < n3; h++) p->slot[h] = LP_NO_SLOT;
     for (v = 0; v < 3u; v++) subd_lp_vertex_point(p, v, 0, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
     if (!all) {
         for (v = 0; v < 3u; v++) {
@@ -252,12 +266,12 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
     }
     for (h = 0; h < n3; h++) {
         uint32_t hl;
-        if (p->slot[h] != NO_SLOT || (p->cv[h] >= 3u && p->cv[tri_next(h)] >= 3u)) continue;
+        if (p->slot[h] != LP_NO_SLOT || (p->cv[h] >= 3u && p->cv[tri_next(h)] >= 3u)) continue;
         hl = lower_of(p, h);
         p->slot[h] = (uint16_t)nc;
-        if (p->tw[h] < TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
+        if (p->tw[h] < LP_TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
         edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
-        p->cflag[nc] = (p->sh[hl] & SH_CHILD) ? (uint8_t)VF_REGULAR : (uint8_t)VF_SMOOTH6;
+        p->cflag[nc] = (p->sh[hl] & LP_SH_CHILD) ? (uint8_t)TOPO_PF_REGULAR : (uint8_t)TOPO_PF_SMOOTH6;
         nc++;
     }
     p->h->nc = nc;
@@ -266,19 +280,16 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
 /* ------------------------------------------------------------------------------------ */
 /* A child's 1-ring                                                                       */
 
-/* Slot of each corner of child k of local face pf (NO_SLOT: a vertex this level cannot
+/* Slot of each corner of child k of local face pf (LP_NO_SLOT: a vertex this level cannot
  * compute; such a child never touches the centre's children). */
 static void child_slots(const sp_level *p, uint32_t pf, uint32_t k, uint32_t x[3])
 {
-    uint32_t h = 3u * pf;
-    if (k == 3u) {
-        x[0] = p->slot[h];
-        x[1] = p->slot[h + 1u];
-        x[2] = p->slot[h + 2u];
-    } else {
-        x[0] = p->cv[h + k] < 3u ? p->cv[h + k] : NO_SLOT;
-        x[1] = p->slot[h + k];
-        x[2] = p->slot[h + (k + 2u) % 3u];
+    static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS; /* 0..2 corners, 3 + i: m_i */
+    uint32_t h = 3u * pf, j;
+    for (j = 0; j < 3u; j++) {
+        uint32_t q = pts[k][j];
+        if (q >= 3u) x[j] = p->slot[h + q - 3u];
+        else x[j] = p->cv[h + q] < 3u ? p->cv[h + q] : LP_NO_SLOT;
     }
 }
 
@@ -292,44 +303,43 @@ static uint32_t child_mask(const sp_level *p, uint32_t pf, uint32_t c, const uin
     for (j = 0; j < 3u; j++) {
         uint32_t sl = p->slot[h + j];
         if (c < 3u && p->cv[h + j] == c) m |= 1u << j;
-        if (sl != NO_SLOT && ((c == 3u && sl == s[0]) || sl == s[1] || sl == s[2]))
+        if (sl != LP_NO_SLOT && ((c == 3u && sl == s[0]) || sl == s[1] || sl == s[2]))
             m |= (1u << j) | (1u << ((j + 1u) % 3u)) | 8u;
     }
     return m;
 }
 
-/* Child corner (f, k, j) of the parent numbering -> child-local half-edge or TW_BORDER. */
+/* Child corner (f, k, j) of the parent numbering -> child-local half-edge or LP_TW_BORDER. */
 static uint16_t map_cc(const uint16_t *fmap, uint32_t f, uint32_t k, uint32_t j)
 {
     uint16_t q = fmap[4u * f + k];
-    return q == NO_SLOT ? (uint16_t)TW_BORDER : (uint16_t)(3u * q + j);
+    return q == LP_NO_SLOT ? (uint16_t)LP_TW_BORDER : (uint16_t)(3u * q + j);
 }
 
 /* Twin of an outer child half-edge: child kk, corner jj of the parent twin t's face. */
 static uint16_t outer_twin(const uint16_t *fmap, uint32_t t, int second)
 {
-    if (t == TW_NONE) return (uint16_t)TW_NONE;
-    if (t == TW_BORDER) return (uint16_t)TW_BORDER;
-    /* v_i -> m_i pairs with the twin's second half (child i+1 of its face, corner 2),
-     * m_i -> v_i+1 with its first (child i, corner 0) */
-    return second ? map_cc(fmap, t / 3u, (t % 3u + 1u) % 3u, 2u) : map_cc(fmap, t / 3u, t % 3u, 0u);
+    uint32_t c;
+    if (t == LP_TW_NONE) return (uint16_t)LP_TW_NONE;
+    if (t == LP_TW_BORDER) return (uint16_t)LP_TW_BORDER;
+    /* v_i -> m_i pairs with the twin's second half, m_i -> v_i+1 with its first */
+    c = second ? topo_loop_second_half(t % 3u) : topo_loop_first_half(t % 3u);
+    return map_cc(fmap, t / 3u, c / 3u, c % 3u);
 }
 
 /* vert_out of the child's corner that descends from slot s of the centre (loop.c: half_first
  * for an old vertex, new_vout for a new one). */
 static uint16_t child_vout(const sp_level *p, const uint16_t *fmap, uint32_t s, uint32_t h)
 {
-    static const uint8_t smallest[3] = {1u, 4u, 2u};
-    uint32_t hl, f, i;
+    uint32_t hl, f, c;
     if (s < 3u) {
         uint32_t hv = p->vout[s];
         return map_cc(fmap, hv / 3u, hv % 3u, 0u);
     }
     hl = lower_of(p, h);
     f = hl / 3u;
-    i = hl % 3u;
-    if (p->tw[hl] == TW_NONE) return map_cc(fmap, f, (i + 1u) % 3u, 2u);
-    return map_cc(fmap, f, smallest[i] / 3u, smallest[i] % 3u);
+    c = topo_loop_new_vout(hl % 3u, p->tw[hl] == LP_TW_NONE);
+    return map_cc(fmap, f, c / 3u, c % 3u);
 }
 
 /* The parent faces whose children can touch child c, ascending: c < 3, the faces around
@@ -342,7 +352,7 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
     if (c == 3u) {
         cand[n++] = (uint16_t)cf;
         for (j = 0; j < 3u; j++)
-            if (p->tw[3u * cf + j] < TW_BORDER) cand[n++] = (uint16_t)(p->tw[3u * cf + j] / 3u);
+            if (p->tw[3u * cf + j] < LP_TW_BORDER) cand[n++] = (uint16_t)(p->tw[3u * cf + j] / 3u);
     } else {
         uint32_t he = 0;
         sp_ring it;
@@ -358,7 +368,7 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
     return n;
 }
 
-/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds NO_SLOT on entry
+/* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds LP_NO_SLOT on entry
  * and on return (only the entries set here are reset); q's slot array, which fill_cache
  * rewrites afterwards, holds the parent faces and the list of children taken meanwhile. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
@@ -366,7 +376,7 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
     const sp_head *ph = p->h;
     uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0, ncand, ci;
     uint16_t *cand = q->slot, *taken;
-    for (j = 0; j < ph->nc; j++) smap[j] = NO_SLOT;
+    for (j = 0; j < ph->nc; j++) smap[j] = LP_NO_SLOT;
     /* the child's corners, in its corner order: (v_c, m_c, m_c-1) or (m0, m1, m2) */
     if (c < 3u) {
         s[0] = c;
@@ -403,7 +413,7 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
             taken[nf] = (uint16_t)(4u * pf + k);
             for (j = 0; j < 3u; j++) {
                 uint32_t sl = x[j];
-                if (smap[sl] == NO_SLOT) { /* sl is a valid slot: see child_slots */
+                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see child_slots */
                     smap[sl] = (uint16_t)nv;
                     q->pos[3u * nv] = p->cpos[3u * sl];
                     q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
@@ -431,16 +441,16 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
                 q->tw[l] = outer_twin(fmap, p->tw[h0], 1);
                 q->tw[l + 1u] = map_cc(fmap, pf, 3u, (k + 2u) % 3u);
                 q->tw[l + 2u] = outer_twin(fmap, p->tw[h2], 0);
-                q->sh[l] = (p->sh[h0] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
+                q->sh[l] = (p->sh[h0] & LP_SH_CHILD) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
                 q->sh[l + 1u] = 0;
-                q->sh[l + 2u] = (p->sh[h2] & SH_CHILD) ? (uint8_t)(SH_RULE | SH_CHILD) : (uint8_t)0u;
+                q->sh[l + 2u] = (p->sh[h2] & LP_SH_CHILD) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
             }
     }
     for (j = 0; j < 3u; j++) q->vout[j] = child_vout(p, fmap, s[j], e[j]);
     q->h->nv = nv;
     q->h->nf = nf;
     q->h->cf = fmap[4u * cf + c];
-    for (ci = 0; ci < nf; ci++) fmap[taken[ci]] = NO_SLOT;
+    for (ci = 0; ci < nf; ci++) fmap[taken[ci]] = LP_NO_SLOT;
     q->h->child = 0;
     /* lattice coordinates: a corner stays, a new vertex is the midpoint of edge i */
     for (j = 0; j < 3u; j++) {

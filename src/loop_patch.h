@@ -11,15 +11,17 @@
 #define SUBD_LOOP_PATCH_H
 #include "loop_rules.h"
 
-#define TW_NONE 0xffffu   /* no twin: a boundary edge                        */
-#define TW_BORDER 0xfffeu /* the twin face is outside the patch              */
-#define NO_SLOT 0xffffu
-#define SH_RULE 1u  /* sharp for this level's rules (loop.c's edge_sharp)            */
-#define SH_CHILD 2u /* sharp for its children (boundary, or CREASE on either half)   */
-#define VF_REGULAR 1u /* a regular crease vertex (the paper's sharp-edge rule)          */
-#define VF_CORNER 2u  /* the caller's CORNER tag                                       */
-#define VF_SMOOTH6 4u /* levels >= 1: smooth (or dart) of valence 6, the class inherited as
-                       * loop.c's VTAG_SMOOTH: one walk of six steps, no classification   */
+#define LP_TW_NONE 0xffffu   /* no twin: a boundary edge                        */
+#define LP_TW_BORDER 0xfffeu /* the twin face is outside the patch              */
+#define LP_NO_SLOT 0xffffu
+/* Sharpness of a patch half-edge, by topo_edge_sharp: since that is the one rule for a level
+ * and for its children alike, the two bits are set together (loop_stream.c reads both). */
+#define LP_SH_RULE 1u  /* sharp for this level's rules                                   */
+#define LP_SH_CHILD 2u /* sharp for its children                                         */
+/* Patch vertex flags: topo.h's table (TOPO_PF_REGULAR: a regular crease vertex, the paper's
+ * sharp-edge rule; TOPO_PF_CORNER: the caller's CORNER tag; TOPO_PF_SMOOTH6: levels >= 1,
+ * smooth (or dart) of valence 6, the class inherited as loop.c's TOPO_VTAG_SMOOTH: one walk
+ * of six steps, no classification). */
 
 /* Level header, in the arena (32-bit fields only: the same plan on host and device). */
 typedef struct sp_head {
@@ -36,14 +38,14 @@ enum { A_POS, A_VFLAG, A_VOUT, A_CV, A_TW, A_SLOT, A_SH, A_CPOS, A_CFLAG, A_CFAC
 typedef struct sp_level {
     sp_head *h;
     subd_real *pos;  /* 3 nv                                                          */
-    uint8_t *vflag;  /* nv: VF_*                                                      */
+    uint8_t *vflag;  /* nv: TOPO_PF_*                                                 */
     uint16_t *vout;  /* nv: ring start (only the centre's corners are used)            */
     uint16_t *cv;    /* 3 nf: local vertex of each corner                              */
-    uint16_t *tw;    /* 3 nf: local twin, TW_NONE or TW_BORDER                         */
-    uint16_t *slot;  /* 3 nf: the cached value of the half-edge's new vertex, or NO_SLOT */
-    uint8_t *sh;     /* 3 nf: SH_*                                                     */
+    uint16_t *tw;    /* 3 nf: local twin, LP_TW_NONE or LP_TW_BORDER                   */
+    uint16_t *slot;  /* 3 nf: the cached value of the half-edge's new vertex, or LP_NO_SLOT */
+    uint8_t *sh;     /* 3 nf: LP_SH_*                                                  */
     subd_real *cpos; /* 3 nc: slots 0..2 the corners' vertex points, then edge points  */
-    uint8_t *cflag;  /* nc: the VF_* of each cached vertex at the next level           */
+    uint8_t *cflag;  /* nc: the TOPO_PF_* of each cached vertex at the next level           */
     uint32_t *cface; /* level 0: the input face of each local face                      */
     uint32_t *cvert; /* level 0: the input vertex of each local vertex                  */
 } sp_level;
@@ -66,11 +68,25 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
 void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
                           uint8_t *child);
 
+/* The ring of patch vertex v (a centre corner) as the patch's walk sees it: neighbours into
+ * nbr, the half-edge of each edge into he (for the tail the incoming boundary half-edge), at
+ * most max of each; returns the valence. For the test that holds the walk equal to
+ * topo_ring. */
+uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he, uint32_t max);
+
 /* The cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
  * (`all`), or only the centre's three edges. */
 void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf);
 
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre; smap (one entry per cached
- * value) is scratch, fmap (4 per parent face) holds NO_SLOT on entry and on return. */
+ * value) is scratch, fmap (4 per parent face) holds LP_NO_SLOT on entry and on return. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap);
+/* The spellings loop_stream.c still uses (until its rewrite renames them there). */
+#define TW_NONE LP_TW_NONE
+#define TW_BORDER LP_TW_BORDER
+#define NO_SLOT LP_NO_SLOT
+#define SH_RULE LP_SH_RULE
+#define SH_CHILD LP_SH_CHILD
+#define VF_REGULAR TOPO_PF_REGULAR
+#define VF_CORNER TOPO_PF_CORNER
 #endif

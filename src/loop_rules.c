@@ -6,13 +6,6 @@
 #include "loop_rules.h"
 #include "wide.h"
 
-int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h)
-{
-    uint32_t t = m->twin[h];
-    if (t == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) return 1;
-    return (m->edge_tag[t] & SUBD_ETAG_CREASE) != 0u;
-}
-
 int subd_loop_tags_public(const subd_mesh *m, subd_diag *d)
 {
     uint32_t v;
@@ -26,44 +19,44 @@ int subd_loop_tags_public(const subd_mesh *m, subd_diag *d)
 
 void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o)
 {
-    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0};
-    o->valence = 0;
-    o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
-    o->boundary = 0;
-    o->regular = 0;
-    if (first == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
+    topo_ring r;
+    if (m->vert_out[v] == SUBD_NONE || (m->vert_tag[v] & SUBD_VTAG_ISOLATED)) {
+        o->valence = 0;
+        o->c0 = o->c1 = o->i0 = o->i1 = o->nsharp = 0;
+        o->boundary = 0;
+        o->regular = 0;
         o->cls = LOOP_ISOLATED;
         return;
     }
-    /* The walk visits each outgoing half-edge once; n <= num_corners bounds it. */
-    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h)) {
-        if (subd_loop_edge_sharp(m, h)) {
+    topo_ring_begin(&r, m, v);
+    subd_loop_classify_ring(&r, m->edge_tag, (m->vert_tag[v] & SUBD_VTAG_CORNER) != 0u, o, 0);
+}
+
+void subd_loop_classify_ring(topo_ring *r, const uint8_t *etag, int corner_tag, loop_vinfo *o, uint32_t *hmin)
+{
+    uint32_t n = 0, ns = 0, s[2] = {0, 0}, at[2] = {0, 0}, hm = SUBD_NONE;
+    o->boundary = 0;
+    /* topo.h's walk; on a boundary its tail (the incoming boundary edge) is the last */
+    while (topo_ring_step(r)) {
+        if (!r->tail && r->he < hm) hm = r->he;
+        if (topo_ring_sharp(r, etag)) {
             if (ns < 2u) {
-                s[ns] = subd_he_dest(m, h);
+                s[ns] = r->nb;
                 at[ns] = n;
             }
             ns++;
         }
         n++;
-        last = h;
+        if (r->tail) o->boundary = 1;
     }
-    if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
-        /* the incoming boundary edge: its origin is the last neighbour */
-        if (ns < 2u) {
-            s[ns] = m->corner_vert[subd_he_prev(m, last)];
-            at[ns] = n;
-        }
-        ns++;
-        n++;
-        o->boundary = 1;
-    }
+    if (hmin) *hmin = hm;
     o->valence = n;
     o->nsharp = ns;
     o->c0 = s[0];
     o->c1 = s[1];
     o->i0 = at[0];
     o->i1 = at[1];
-    o->cls = loop_class_of(ns, (m->vert_tag[v] & SUBD_VTAG_CORNER) != 0u);
+    o->cls = loop_class_of(ns, corner_tag);
     o->regular = loop_regular_of(o->cls, n, o->boundary, at[0], at[1]);
 }
 

@@ -7,7 +7,7 @@
  * vertex-rule function in Sdc for the same reason).
  *
  * Classification (Hoppe et al. 1994, by the number of sharp edges at the vertex; sharp edges
- * are boundary edges and edges tagged SUBD_ETAG_CREASE on either half): 0 smooth, 1 dart
+ * are boundary edges and edges tagged SUBD_ETAG_CREASE on either half: topo_edge_sharp): 0 smooth, 1 dart
  * (smooth rule), 2 crease (crease rule with its two sharp neighbours), 3 or more corner
  * (fixed); SUBD_VTAG_CORNER forces corner. "Regular", for the paper's 5/8-3/8 sharp-edge
  * rule: a crease vertex that looks like the ones refinement creates: valence 4 on a boundary
@@ -25,16 +25,20 @@
 #ifndef SUBD_LOOP_RULES_H
 #define SUBD_LOOP_RULES_H
 #include "subd.h"
+#include "topo.h"
 
+/* On a level loop.c made, both halves of an edge carry the same bits and BOUNDARY marks
+ * exactly the edges without twin, so there topo_edge_sharp is the test of one byte. */
 #define LOOP_ETAG_SHARP (SUBD_ETAG_BOUNDARY | SUBD_ETAG_CREASE)
 
-/* Vertex tag bits 0x40 and 0x80 are the library's (subd.h: keep them 0): loop.c marks its
- * intermediate levels' classes with them, and loop_stream.c's patch views (a level-L 1-ring
- * whose outer vertices lack whole rings) give an outer vertex's class with them:
- * LOOP_VTAG_KNOWN set means "regular is LOOP_VTAG_REGULAR, do not walk the ring". */
-#define LOOP_VTAG_KNOWN 0x40u
-#define LOOP_VTAG_REGULAR 0x80u
-#define LOOP_VTAG_PRIVATE (LOOP_VTAG_KNOWN | LOOP_VTAG_REGULAR)
+/* Vertex tag bits 0x40 and 0x80 are the library's (subd.h: keep them 0); their meanings are
+ * in topo.h's one table: loop.c marks its intermediate levels' classes with them, and
+ * loop_stream.c's patch views (a level-L 1-ring whose outer vertices lack whole rings) give
+ * an outer vertex's class with them: LOOP_VTAG_KNOWN set means "regular is
+ * LOOP_VTAG_REGULAR, do not walk the ring". */
+#define LOOP_VTAG_KNOWN TOPO_VTAG_KNOWN
+#define LOOP_VTAG_REGULAR TOPO_VTAG_REGULAR
+#define LOOP_VTAG_PRIVATE TOPO_VTAG_PRIVATE
 
 /* SUBD_OK when no vertex of m uses the library's private tag bits, else SUBD_ERR_PARAM with
  * d->vertex (d may be NULL). For the public calls that take a caller's mesh. */
@@ -69,12 +73,14 @@ static inline uint32_t loop_regular_of(uint32_t cls, uint32_t n, uint32_t bounda
     return boundary ? n == 4u : (n == 6u && i1 - i0 == 3u);
 }
 
-/* 1 when half-edge h of m is sharp: a boundary edge, or tagged CREASE on either half. */
-int subd_loop_edge_sharp(const subd_mesh *m, uint32_t h);
-
 /* Classifies vertex v of a triangle or polygon mesh with adjacency by walking its ring once
  * (bounded by num_corners whatever the input). */
 void subd_loop_classify(const subd_mesh *m, uint32_t v, loop_vinfo *o);
+
+/* The same from a walk r already begun at a non-isolated vertex (loop.c's levels, which carry
+ * no face_start: topo_ring_begin_tri), with edge tags etag and the vertex's CORNER tag; *hmin
+ * (if not NULL) gets the smallest outgoing half-edge (loop.c's vert_out choice). */
+void subd_loop_classify_ring(topo_ring *r, const uint8_t *etag, int corner_tag, loop_vinfo *o, uint32_t *hmin);
 
 /* ------------------------------------------------------------------------------------ */
 /* Weights                                                                                */

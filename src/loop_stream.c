@@ -242,8 +242,9 @@ static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint64_t
 }
 
 /* The corners of child k of a triangle whose corners are points 0..2 and whose edge j -> j+1
- * has point 3 + j: child k < 3 is (v_k, m_k, m_k-1), child 3 is (m0, m1, m2) (loop.c's order). */
-static const uint8_t child_corner[4][3] = {{0, 3, 5}, {1, 4, 3}, {2, 5, 4}, {3, 4, 5}};
+ * has point 3 + j: child k < 3 is (v_k, m_k, m_k-1), child 3 is (m0, m1, m2) (loop.c's order,
+ * topo.h's table). */
+static const uint8_t child_corner[4][3] = TOPO_LOOP_CHILD_POINTS;
 
 /* The centre's four children at the last level (one level in all), from the cache: points
  * 0..2 the corners' vertex points, 3..5 the edges' new vertices. */

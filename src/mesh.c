@@ -21,8 +21,8 @@
 #include "mesh_internal.h"
 #include "layout.h"
 #include "entry.h"
+#include "topo.h"
 
-#define TAG_VISITED 0x80u /* temporary edge_tag bit while walking boundary loops */
 
 void subd_diag_clear(subd_diag *d)
 {
@@ -304,38 +304,70 @@ static int build_twins(subd_mesh *m, uint32_t *cnt, uint32_t *sorted, subd_diag 
     return subd_fail(d, bad_st);
 }
 
-/* Fans: a manifold vertex has at most one boundary half-edge going out, and one walk
- * around it from there (or from its smallest corner if interior) reaches all of its
- * corners. One pass over the corners gathers, per vertex, the valence (in deg), the start
- * (in vert_out) and the number of boundary half-edges (in vert_tag, saturating at 2). */
+/* Boundary loops: from a boundary half-edge a->b the next one along the loop is b's
+ * outgoing boundary half-edge, vert_out[b]. Each loop is walked once (a pass-long
+ * TOPO_ETAG_VISITED bit marks the walked half-edges). */
+static uint32_t mesh_boundary_loops(subd_mesh *m, uint32_t nbe)
+{
+    uint32_t h, loops = 0;
+    if (nbe == 0) return 0;
+    for (h = 0; h < m->num_corners; h++) {
+        uint32_t g = h, steps = 0;
+        if ((m->edge_tag[h] & (SUBD_ETAG_BOUNDARY | TOPO_ETAG_VISITED)) != SUBD_ETAG_BOUNDARY) continue;
+        loops++;
+        do {
+            m->edge_tag[g] = (uint8_t)(m->edge_tag[g] | TOPO_ETAG_VISITED);
+            g = m->vert_out[subd_he_dest(m, g)];
+            steps++;
+        } while (g != h && steps <= nbe);
+    }
+    for (h = 0; h < m->num_corners; h++) m->edge_tag[h] = (uint8_t)(m->edge_tag[h] & ~TOPO_ETAG_VISITED);
+    return loops;
+}
+
+void subd_mesh_fans(subd_mesh *m, const uint8_t *keep)
+{
+    uint32_t v, c, nbe = 0, niso = 0;
+    for (v = 0; v < m->num_verts; v++) m->vert_out[v] = SUBD_NONE;
+    for (c = m->num_corners; c-- > 0;) m->vert_out[m->corner_vert[c]] = c; /* lowest corner last */
+    for (v = 0; v < m->num_verts; v++) {
+        uint8_t t = keep ? keep[v] : (uint8_t)0u;
+        if (m->vert_out[v] == SUBD_NONE) {
+            t = (uint8_t)(t | SUBD_VTAG_ISOLATED);
+            niso++;
+        }
+        m->vert_tag[v] = t;
+    }
+    for (c = 0; c < m->num_corners; c++) {
+        if (m->twin[c] == SUBD_NONE) {
+            v = m->corner_vert[c];
+            m->vert_out[v] = c;
+            m->vert_tag[v] = (uint8_t)(m->vert_tag[v] | SUBD_VTAG_BOUNDARY);
+            m->edge_tag[c] = (uint8_t)(m->edge_tag[c] | SUBD_ETAG_BOUNDARY);
+            nbe++;
+        }
+    }
+    m->num_isolated = niso;
+    m->num_boundary_edges = nbe;
+    m->num_edges = (m->num_corners + nbe) / 2u;
+    m->num_boundary_loops = mesh_boundary_loops(m, nbe);
+}
+
+/* Fans (subd_mesh_fans, the convention), then their check: a manifold vertex has at most one
+ * boundary half-edge going out, and one walk around it from there (or from its smallest
+ * corner if interior) reaches all of its corners, deg of them. A vertex with two outgoing
+ * boundary half-edges fails the same count (a walk from one never reaches the other, whose
+ * twin is none). */
 static int build_fans(subd_mesh *m, uint32_t *deg, subd_diag *d)
 {
     uint32_t v, h;
+    for (h = 0; h < m->num_corners; h++) m->edge_tag[h] = 0;
+    subd_mesh_fans(m, 0);
+    for (v = 0; v < m->num_verts; v++) deg[v] = 0;
+    for (h = 0; h < m->num_corners; h++) deg[m->corner_vert[h]]++;
     for (v = 0; v < m->num_verts; v++) {
-        deg[v] = 0;
-        m->vert_out[v] = SUBD_NONE;
-        m->vert_tag[v] = 0;
-    }
-    for (h = 0; h < m->num_corners; h++) {
-        v = m->corner_vert[h];
-        deg[v]++;
-        if (m->vert_out[v] == SUBD_NONE) m->vert_out[v] = h;
-        if (m->twin[h] == SUBD_NONE) {
-            if (m->vert_tag[v] == 0) m->vert_out[v] = h;
-            if (m->vert_tag[v] < 2u) m->vert_tag[v]++;
-        }
-    }
-    for (v = 0; v < m->num_verts; v++) {
-        uint32_t start = m->vert_out[v], nb = m->vert_tag[v], steps;
-        if (deg[v] == 0) {
-            m->vert_tag[v] = SUBD_VTAG_ISOLATED;
-            m->num_isolated++;
-            continue;
-        }
-        if (nb > 1u) {
-            d->vertex = v;
-            return subd_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
-        }
+        uint32_t start = m->vert_out[v], steps;
+        if (deg[v] == 0) continue;
         steps = 1;
         for (h = subd_ring_next(m, start, start); h != SUBD_NONE && steps <= deg[v]; h = subd_ring_next(m, start, h))
             steps++;
@@ -343,34 +375,8 @@ static int build_fans(subd_mesh *m, uint32_t *deg, subd_diag *d)
             d->vertex = v;
             return subd_fail(d, SUBD_ERR_NONMANIFOLD_VERTEX);
         }
-        m->vert_tag[v] = nb ? SUBD_VTAG_BOUNDARY : 0u;
     }
     return SUBD_OK;
-}
-
-/* Boundary loops: from a boundary half-edge a->b the next one along the loop is b's
- * outgoing boundary half-edge, vert_out[b]. Each loop is walked once. */
-static void count_boundary_loops(subd_mesh *m)
-{
-    uint32_t h, nbe = 0, loops = 0;
-    for (h = 0; h < m->num_corners; h++) {
-        m->edge_tag[h] = (m->twin[h] == SUBD_NONE) ? SUBD_ETAG_BOUNDARY : 0u;
-        if (m->twin[h] == SUBD_NONE) nbe++;
-    }
-    for (h = 0; h < m->num_corners; h++) {
-        uint32_t g = h, steps = 0;
-        if (m->edge_tag[h] != SUBD_ETAG_BOUNDARY) continue; /* interior or visited */
-        loops++;
-        do {
-            m->edge_tag[g] |= TAG_VISITED;
-            g = m->vert_out[subd_he_dest(m, g)];
-            steps++;
-        } while (g != h && steps <= nbe);
-    }
-    for (h = 0; h < m->num_corners; h++) m->edge_tag[h] &= (uint8_t)~TAG_VISITED;
-    m->num_boundary_edges = nbe;
-    m->num_boundary_loops = loops;
-    m->num_edges = (m->num_corners + nbe) / 2u;
 }
 
 int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
@@ -389,13 +395,10 @@ int subd_mesh_finish(subd_arena *a, subd_mesh *m, subd_diag *d)
         subd_arena_rewind(a, mark);
         return subd_fail(d, SUBD_ERR_NOMEM);
     }
-    m->num_isolated = 0;
     st = build_twins(m, vstart, vcorner, d);
     if (st == SUBD_OK) st = build_fans(m, vstart, d);
     subd_arena_rewind(a, mark);
-    if (st != SUBD_OK) return st;
-    count_boundary_loops(m);
-    return SUBD_OK;
+    return st;
 }
 
 static int face_list_counts(const subd_face_list *fl, mesh_counts *c, subd_diag *d)
@@ -469,19 +472,16 @@ int subd_mesh_build(subd_arena *arena, const subd_face_list *fl, subd_mesh *out,
 
 uint32_t subd_vertex_ring(const subd_mesh *m, uint32_t v, uint32_t *nbr, uint32_t max)
 {
-    uint32_t first, h, last = SUBD_NONE, n = 0;
-    if (!m || v >= m->num_verts || !m->vert_out || !m->twin || !m->corner_face || !m->vert_tag) return 0;
-    first = m->vert_out[v];
-    if (first == SUBD_NONE) return 0;
-    for (h = first; h != SUBD_NONE; h = subd_ring_next(m, first, h)) {
-        if (n < max) nbr[n] = subd_he_dest(m, h);
-        n++;
-        last = h;
-    }
-    /* On a boundary the walk ends at the face whose incoming edge is the other boundary
-     * edge; its origin is the last neighbour. */
-    if (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) {
-        if (n < max) nbr[n] = m->corner_vert[subd_he_prev(m, last)];
+    uint32_t n = 0;
+    topo_ring r;
+    if (!subd_topo_has(m, TOPO_ALWAYS | TOPO_VERT_OUT | TOPO_TWIN | TOPO_CORNER_FACE | TOPO_VERT_TAG) ||
+        v >= m->num_verts)
+        return 0;
+    /* topo.h's walk: on a boundary its tail, the origin of the incoming boundary edge, is
+     * the last neighbour */
+    topo_ring_begin(&r, m, v);
+    while (topo_ring_step(&r)) {
+        if (n < max) nbr[n] = r.nb;
         n++;
     }
     return n;

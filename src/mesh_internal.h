@@ -50,6 +50,19 @@ int subd_reader_read(const subd_reader *r, subd_arena *a, const char *buf, uint3
 /* The line of the element d names (counting scan, then line_of); 0 when none or unparsable. */
 uint32_t subd_reader_line_of(const subd_reader *r, const char *buf, uint32_t len, const subd_diag *d);
 
+/* The builder's fans, tags and counts, for a mesh whose corner_vert, face_start, corner_face
+ * and twin are set and whose edge_tag holds no BOUNDARY bit yet (the builder clears it; a
+ * scheme that makes its own twins keeps its crease bits there). Every scheme that makes a
+ * mesh without the builder calls this, so its output equals the builder's:
+ *   vert_out[v]: v's outgoing boundary half-edge when it has one (a manifold vertex has at
+ *     most one), else its lowest corner; SUBD_NONE for a vertex without corners;
+ *   vert_tag[v] = keep[v] (keep NULL: 0) | SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED as they
+ *     apply; edge_tag |= SUBD_ETAG_BOUNDARY where there is no twin;
+ *   num_isolated, num_boundary_edges, num_edges, and num_boundary_loops (from a boundary
+ *     half-edge a->b the next along its loop is vert_out[b]).
+ * O(V + C). Does not check manifoldness (the builder walks each fan afterwards). */
+void subd_mesh_fans(subd_mesh *m, const uint8_t *keep);
+
 /* Sets diag fields for an error and returns the status (for one-line error returns inside
  * a call). Public entry points end through subd_entry_fail (entry.h), which also rewinds. */
 int subd_fail(subd_diag *d, int status);

@@ -91,8 +91,9 @@ static int pia_tol_ok(subd_real tol)
 /* PARAM (pointers, options, a mesh without adjacency), then NOT_TRIANGLES (diag.face). */
 static int pia_check(const subd_mesh *in, const subd_pia_opts *o, subd_diag *d)
 {
-    if (!in || !o || !in->pos || !in->face_start || !in->corner_vert || !in->corner_face || !in->twin ||
-        !in->vert_out || !in->vert_tag || !in->edge_tag || in->num_verts == 0u)
+    if (!o || !subd_topo_has(in, TOPO_ALWAYS | TOPO_POS | TOPO_FACE_START | TOPO_CORNER_VERT | TOPO_CORNER_FACE |
+                                     TOPO_TWIN | TOPO_VERT_OUT | TOPO_VERT_TAG | TOPO_EDGE_TAG) ||
+        in->num_verts == 0u)
         return subd_fail(d, SUBD_ERR_PARAM);
     if ((o->boundary != SUBD_LOOP_BOUNDARY_PAPER && o->boundary != SUBD_LOOP_BOUNDARY_BSPLINE) ||
         (o->method != SUBD_PIA_PAPER && o->method != SUBD_PIA_FAST) || o->max_iter == 0u ||

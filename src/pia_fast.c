@@ -395,17 +395,15 @@ static void pia_phase_cg(pia_state *s, uint32_t set)
 /* The two sharp-edge neighbours of curve vertex v, in ring order (as loop_limit.c). */
 static void pia_curve_nbrs(const subd_mesh *m, uint32_t v, uint32_t *c)
 {
-    uint32_t first = m->vert_out[v], h, last = SUBD_NONE, n = 0, ns = 0;
+    uint32_t ns = 0;
+    topo_ring r;
     c[0] = c[1] = v;
-    for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h), n++) {
-        if (m->twin[h] == SUBD_NONE || (m->edge_tag[h] & SUBD_ETAG_CREASE)) {
-            if (ns < 2u) c[ns] = subd_he_dest(m, h);
+    topo_ring_begin(&r, m, v);
+    while (topo_ring_step(&r))
+        if (topo_ring_sharp(&r, m->edge_tag)) { /* topo.h's rule, as subd_loop_classify */
+            if (ns < 2u) c[ns] = r.nb;
             ns++;
         }
-        last = h;
-    }
-    if ((m->vert_tag[v] & SUBD_VTAG_BOUNDARY) && ns < 2u && last != SUBD_NONE)
-        c[ns] = m->corner_vert[subd_he_prev(m, last)];
 }
 
 /* Weight of curve neighbour u in curve vertex v's row of L: loop_limit.c's mask, by the
@@ -443,9 +441,10 @@ static subd_real pia_half_row(pia_state *s, uint32_t set, uint32_t v, int upper,
             for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], wu, x[3u * c[i] + k]);
         }
     } else {
-        uint32_t first = m->vert_out[v], h;
-        for (h = first; h != SUBD_NONE && n <= m->num_corners; h = subd_ring_next(m, first, h), n++) {
-            uint32_t u = subd_he_dest(m, h);
+        topo_ring r; /* a smooth vertex is interior: no tail */
+        topo_ring_begin(&r, m, v);
+        for (; topo_ring_step(&r); n++) {
+            uint32_t u = r.nb;
             if (!x || (upper ? u <= v : u >= v) || s->cls[u] != want) continue;
             for (k = 0; k < 3u; k++) acc[k] = subd_acc_add(acc[k], s->od[v], x[3u * u + k]);
         }

@@ -48,11 +48,13 @@
  * Adjacency: the general builder (subd_mesh_finish) would cost a validation and a bucket
  * pass with random access per step, most of a step's time on large meshes. A split only
  * cuts faces along edges of a valid manifold mesh, so the child's twins follow from the
- * parent's (q48_link_twins) and its fans from its corners (q48_fans); both give exactly the
- * arrays, tags and counts the builder would give, in O(C).
+ * parent's (q48_link_twins) and its fans from its corners (subd_mesh_fans, the builder's own
+ * convention in mesh.c); both give exactly the arrays, tags and counts the builder would
+ * give, in O(C).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
+#include "topo.h"
 #include "subd_quasi48.h"
 #include "edge_sort.h"
 #include "real_avg.h"
@@ -125,7 +127,7 @@ static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
         (o->boundary != SUBD_Q48_BOUNDARY_FIXED && o->boundary != SUBD_Q48_BOUNDARY_SMOOTH &&
          o->boundary != SUBD_Q48_BOUNDARY_NORMAL))
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->edge_tag))
+    if (!subd_topo_has(in, TOPO_IF_FACES | TOPO_TWIN | TOPO_VERT_OUT | TOPO_CORNER_FACE | TOPO_EDGE_TAG))
         return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     if (in->num_faces == 0) return subd_fail(d, SUBD_ERR_EMPTY);
@@ -162,15 +164,10 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
 
 /* ------------------------------------------------------------------------------------ */
 /* Navigation in the child meshes, whose face f is corners 3f..3f+2 (q48_split_faces writes
- * them so): the same half-edges as subd_he_next/prev and subd_ring_next, without loading
- * corner_face and face_start on every step of a walk (tri_next, tri_prev: mesh_internal.h). */
+ * them so): the same half-edges as subd_he_next/prev, without loading corner_face and
+ * face_start (tri_next, tri_prev: mesh_internal.h; rings: topo_ring_begin_tri). */
 
 static uint32_t tri_dest(const subd_mesh *m, uint32_t h) { return m->corner_vert[tri_next(h)]; }
-static uint32_t tri_ring_next(const subd_mesh *m, uint32_t first, uint32_t h)
-{
-    uint32_t t = m->twin[tri_prev(h)];
-    return (t == first) ? SUBD_NONE : t;
-}
 
 /* ------------------------------------------------------------------------------------ */
 /* Algorithm 1: refinement.                                                               */
@@ -264,60 +261,6 @@ static void q48_link_twins(const subd_mesh *m, subd_mesh *o, const uint32_t *map
     }
 }
 
-#define Q48_VISITED 0x80u /* temporary edge_tag bit while walking boundary loops */
-
-/* Boundary loops, counted as the builder counts them: from a boundary half-edge a->b the
- * next one along the loop is vert_out[b]; each loop is walked once. */
-static uint32_t q48_boundary_loops(subd_mesh *o, uint32_t nbe)
-{
-    uint32_t h, loops = 0;
-    if (nbe == 0) return 0;
-    for (h = 0; h < o->num_corners; h++) {
-        uint32_t g = h, steps = 0;
-        if ((o->edge_tag[h] & (SUBD_ETAG_BOUNDARY | Q48_VISITED)) != SUBD_ETAG_BOUNDARY) continue;
-        loops++;
-        do {
-            o->edge_tag[g] = (uint8_t)(o->edge_tag[g] | Q48_VISITED);
-            g = o->vert_out[tri_dest(o, g)];
-            steps++;
-        } while (g != h && steps <= nbe);
-    }
-    for (h = 0; h < o->num_corners; h++) o->edge_tag[h] = (uint8_t)(o->edge_tag[h] & ~Q48_VISITED);
-    return loops;
-}
-
-/* Fans, tags and counts exactly as the builder sets them (mesh.c: build_fans and
- * count_boundary_loops): vert_out[v] is v's outgoing boundary half-edge when it has one,
- * else its lowest corner (the builder's bucket order); a vertex without corners is
- * isolated. Vertex tags: the builder's bits plus the kept caller tags vkeep. */
-static void q48_fans(subd_mesh *o, const uint8_t *vkeep)
-{
-    uint32_t v, c, nbe = 0, niso = 0;
-    for (v = 0; v < o->num_verts; v++) o->vert_out[v] = SUBD_NONE;
-    for (c = o->num_corners; c-- > 0;) o->vert_out[o->corner_vert[c]] = c; /* lowest corner last */
-    for (v = 0; v < o->num_verts; v++) {
-        uint8_t t = vkeep[v];
-        if (o->vert_out[v] == SUBD_NONE) {
-            t = (uint8_t)(t | SUBD_VTAG_ISOLATED);
-            niso++;
-        }
-        o->vert_tag[v] = t;
-    }
-    for (c = 0; c < o->num_corners; c++) {
-        if (o->twin[c] == SUBD_NONE) {
-            v = o->corner_vert[c];
-            o->vert_out[v] = c;
-            o->vert_tag[v] = (uint8_t)(o->vert_tag[v] | SUBD_VTAG_BOUNDARY);
-            o->edge_tag[c] = (uint8_t)(o->edge_tag[c] | SUBD_ETAG_BOUNDARY);
-            nbe++;
-        }
-    }
-    o->num_isolated = niso;
-    o->num_boundary_edges = nbe;
-    o->num_edges = (o->num_corners + nbe) / 2u;
-    o->num_boundary_loops = q48_boundary_loops(o, nbe);
-}
-
 /* Position of the new vertex on parent half-edge h (a->b): the midpoint (Algorithm 1); with
  * smoothing, unless the vertex is pinned (a boundary or crease edge: section 4.3), Algorithm
  * 2's pass 1 replaces it by the average of its four neighbours, all old vertices, so it is
@@ -331,7 +274,7 @@ static void q48_new_position(const subd_mesh *m, uint32_t h, int smooth, subd_re
     const subd_real *p = m->pos + 3u * subd_he_origin(m, h), *q = m->pos + 3u * subd_he_dest(m, h);
     uint32_t t = m->twin[h], k;
     for (k = 0; k < 3u; k++) out[k] = subd_mid(p[k], q[k], ovf);
-    if (!smooth || t == SUBD_NONE || ((m->edge_tag[h] | m->edge_tag[t]) & SUBD_ETAG_CREASE)) return;
+    if (!smooth || topo_mesh_edge_sharp(m, h)) return; /* pinned: a boundary or crease edge */
     if (m->corner_face[t] < m->corner_face[h]) {
         uint32_t x = h;
         h = t;
@@ -392,7 +335,7 @@ static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, 
      * parent face; both have an entry per corner of the largest step's input */
     q48_split_faces(m, o, w, w->es.ord[0], w->es.mark);
     q48_link_twins(m, o, w->es.ord[0], w->es.mark);
-    q48_fans(o, w->vkeep);
+    subd_mesh_fans(o, w->vkeep); /* the builder's fans, tags and counts (mesh.c) */
     o->line_start[0] = 0;
     for (i = 0; i < m->num_lines; i++) o->line_start[i + 1u] = m->line_start[i + 1u];
     for (i = 0; i < m->num_line_verts; i++) o->line_vert[i] = m->line_vert[i];
@@ -410,22 +353,17 @@ static int q48_refine(const subd_mesh *m, subd_mesh *o, const mesh_counts *cap, 
  * neighbour (t untouched). */
 static uint32_t q48_pass2(const subd_mesh *o, uint32_t v, uint32_t nv_old, int curve, subd_real *t, uint32_t *ovf)
 {
-    uint32_t first = o->vert_out[v], n = 0, last = SUBD_NONE, steps = 0, h, k;
+    uint32_t first = o->vert_out[v], n = 0, k;
     subd_sum s[3] = {0, 0, 0};
     int bnd = o->twin[first] == SUBD_NONE;
-    for (h = first; h != SUBD_NONE && steps < o->num_corners; h = tri_ring_next(o, first, h), steps++) {
-        uint32_t u = tri_dest(o, h);
-        last = h;
-        if (u < nv_old || (bnd && curve && h != first)) continue;
+    topo_ring r; /* topo.h's walk; on a boundary its tail, the incoming boundary edge's origin,
+                  * closes the fan and counts in both modes */
+    topo_ring_begin_tri(&r, o->corner_vert, o->twin, o->num_corners, first);
+    while (topo_ring_step(&r)) {
+        uint32_t u = r.nb;
+        if (u < nv_old || (bnd && curve && !r.tail && r.he != first)) continue;
         for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * u + k]);
         n++;
-    }
-    if (bnd) { /* the incoming boundary edge's origin closes the fan */
-        uint32_t u = o->corner_vert[tri_prev(last)];
-        if (u >= nv_old) {
-            for (k = 0; k < 3u; k++) s[k] = subd_sum_add(s[k], o->pos[3u * u + k]);
-            n++;
-        }
     }
     if (n == 0) return 0;
     for (k = 0; k < 3u; k++) t[k] = subd_blend(o->pos[3u * v + k], s[k], n, ovf);
@@ -445,15 +383,17 @@ static uint32_t q48_pass2(const subd_mesh *o, uint32_t v, uint32_t nv_old, int c
 static void q48_vertex_normal(const subd_mesh *m, uint32_t v, subd_wide *n)
 {
     const subd_real *pv = m->pos + 3u * v;
-    uint32_t first = m->vert_out[v], h, steps = 0, k;
+    uint32_t k;
     int32_t sh = 0;
     subd_wide e0[3], e1[3], c[3];
+    topo_ring r; /* v's faces (v, b, c): the outgoing half-edges v -> b, c = prev's origin */
 #if SUBD_FIXED
     uint64_t big = 0;
     uint32_t nf = 0, bits;
-    for (h = first; h != SUBD_NONE && steps < m->num_corners; h = subd_ring_next(m, first, h), steps++) {
-        subd_w3_diff(m->pos + 3u * subd_he_dest(m, h), pv, e0);
-        subd_w3_diff(m->pos + 3u * m->corner_vert[subd_he_prev(m, h)], pv, e1);
+    topo_ring_begin(&r, m, v);
+    while (topo_ring_step(&r) && !r.tail) {
+        subd_w3_diff(m->pos + 3u * r.nb, pv, e0);
+        subd_w3_diff(m->pos + 3u * m->corner_vert[topo_ring_prev_he(&r, r.he)], pv, e1);
         if (subd_w3_maxabs(e0) > big) big = subd_w3_maxabs(e0);
         if (subd_w3_maxabs(e1) > big) big = subd_w3_maxabs(e1);
         nf++;
@@ -461,12 +401,12 @@ static void q48_vertex_normal(const subd_mesh *m, uint32_t v, subd_wide *n)
     bits = (61u - subd_bitlen64(nf)) / 2u;
     sh = (int32_t)subd_bitlen64(big) - (int32_t)bits;
     if (sh < 0) sh = 0;
-    steps = 0;
 #endif
     n[0] = n[1] = n[2] = 0;
-    for (h = first; h != SUBD_NONE && steps < m->num_corners; h = subd_ring_next(m, first, h), steps++) {
-        subd_w3_diff(m->pos + 3u * subd_he_dest(m, h), pv, e0);
-        subd_w3_diff(m->pos + 3u * m->corner_vert[subd_he_prev(m, h)], pv, e1);
+    topo_ring_begin(&r, m, v);
+    while (topo_ring_step(&r) && !r.tail) {
+        subd_w3_diff(m->pos + 3u * r.nb, pv, e0);
+        subd_w3_diff(m->pos + 3u * m->corner_vert[topo_ring_prev_he(&r, r.he)], pv, e1);
 #if SUBD_FIXED
         subd_w3_shift(e0, e0, sh);
         subd_w3_shift(e1, e1, sh);

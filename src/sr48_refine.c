@@ -36,6 +36,7 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_internal.h"
 #include "mesh_internal.h"
+#include "topo.h"
 #include "entry.h"
 
 /* ------------------------------------------------------------------------------------ */
@@ -46,8 +47,8 @@ static int sr48_check(const subd_mesh *in, const subd_sr48_opts *o, subd_diag *d
     int st;
     if (!in || !o || o->steps > SUBD_SR48_MAX_STEPS || (o->flags & ~SUBD_SR48_NO_SMOOTH) != 0u)
         return subd_fail(d, SUBD_ERR_PARAM);
-    if (in->num_faces && (!in->twin || !in->vert_out || !in->corner_face || !in->face_start || !in->corner_vert ||
-                          !in->pos))
+    if (!subd_topo_has(in, TOPO_IF_FACES | TOPO_TWIN | TOPO_VERT_OUT | TOPO_CORNER_FACE | TOPO_FACE_START |
+                               TOPO_CORNER_VERT | TOPO_POS))
         return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = subd_require_triangles(in, d)) != SUBD_OK) return st;
     if (in->num_faces == 0) return subd_fail(d, SUBD_ERR_EMPTY);

@@ -162,9 +162,37 @@ static void check_step(const subd_mesh *a, const subd_mesh *b, int refine_only)
     fl.line_size = fl.line_index = 0;
     subd_arena_init(&tmp, h_arena_buf, H_ARENA_BYTES);
     if (CHECK_EQ(subd_mesh_build(&tmp, &fl, &c, 0), SUBD_OK)) {
+        const uint8_t vb = SUBD_VTAG_BOUNDARY | SUBD_VTAG_ISOLATED, keep = SUBD_VTAG_CORNER | SUBD_VTAG_FIXED;
         for (j = 0; j < b->num_corners; j++) CHECK(c.twin[j] == b->twin[j]);
         for (v = 0; v < b->num_verts; v++) CHECK(c.vert_out[v] == b->vert_out[v]);
         CHECK_EQ(c.num_edges, b->num_edges);
+        /* tags: the builder's bits exactly; the caller's vertex bits kept on old vertices, none
+         * on new ones; edges: BOUNDARY exactly where the builder puts it, CREASE only on
+         * halves of a parent crease (same on both halves when the parent's were) */
+        for (v = 0; v < b->num_verts; v++) {
+            CHECK_EQ(b->vert_tag[v] & vb, c.vert_tag[v] & vb);
+            CHECK_EQ(b->vert_tag[v] & keep, v < a->num_verts ? (a->vert_tag[v] & keep) : 0u);
+            CHECK_EQ(b->vert_tag[v] & (uint8_t)~(vb | keep), 0u);
+        }
+        for (j = 0; j < b->num_corners; j++) {
+            CHECK_EQ(b->edge_tag[j] & SUBD_ETAG_BOUNDARY, c.edge_tag[j] & SUBD_ETAG_BOUNDARY);
+            CHECK_EQ(b->edge_tag[j] & (uint8_t)~(SUBD_ETAG_BOUNDARY | SUBD_ETAG_CREASE), 0u);
+            if (b->twin[j] != SUBD_NONE) {
+                uint32_t pa = b->corner_vert[j], pb = subd_he_dest(b, j), k2, crease = 0;
+                /* a crease half lies on a parent crease edge: its ends are a parent crease's
+                 * ends or the new vertex on it, so at least one end is an old vertex of a
+                 * parent crease edge */
+                for (k2 = 0; k2 < a->num_corners && (b->edge_tag[j] & SUBD_ETAG_CREASE); k2++)
+                    if ((a->edge_tag[k2] & SUBD_ETAG_CREASE) &&
+                        (a->corner_vert[k2] == pa || a->corner_vert[k2] == pb || subd_he_dest(a, k2) == pa ||
+                         subd_he_dest(a, k2) == pb))
+                        crease = 1;
+                if (b->edge_tag[j] & SUBD_ETAG_CREASE) CHECK(crease);
+            }
+        }
+        CHECK_EQ(c.num_boundary_edges, b->num_boundary_edges);
+        CHECK_EQ(c.num_boundary_loops, b->num_boundary_loops);
+        CHECK_EQ(c.num_isolated, b->num_isolated);
     }
 }
 
@@ -540,6 +568,17 @@ static void q48_tags_and_boundary(void)
         CHECK(ncrease >= 2u * 8u);
     }
     h_hash("q48_torus_tags", h_mesh_hash(&m));
+    { /* the same two steps one at a time, each checked against the builder (tags included) */
+        subd_mesh cur = in, nxt;
+        subd_q48_opts o1 = opts(1, 0);
+        uint32_t s;
+        for (s = 0; s < 2u; s++) {
+            if (!run(&a, &cur, &o1, &nxt)) return;
+            check_step(&cur, &nxt, 0);
+            cur = nxt;
+        }
+        CHECK_EQ(h_mesh_hash(&cur), h_mesh_hash(&m));
+    }
 
     /* boundary smoothing: an old boundary vertex with new boundary neighbours moves to
      * 1/2 own + 1/2 their average; new boundary vertices stay on the boundary edge */

@@ -81,12 +81,4 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre; smap (one entry per cached
  * value) is scratch, fmap (4 per parent face) holds LP_NO_SLOT on entry and on return. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap);
-/* The spellings loop_stream.c still uses (until its rewrite renames them there). */
-#define TW_NONE LP_TW_NONE
-#define TW_BORDER LP_TW_BORDER
-#define NO_SLOT LP_NO_SLOT
-#define SH_RULE LP_SH_RULE
-#define SH_CHILD LP_SH_CHILD
-#define VF_REGULAR TOPO_PF_REGULAR
-#define VF_CORNER TOPO_PF_CORNER
 #endif

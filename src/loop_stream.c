@@ -303,19 +303,19 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
     }
     for (j = 0; j < 3u; j++) {
         uint32_t h = 3u * cf + j, t = p->tw[h], j1 = (j + 1u) % 3u;
-        uint32_t ring[6], nr, start, k, lower_t = (t < TW_BORDER && t < h);
+        uint32_t ring[6], nr, start, k, lower_t = (t < LP_TW_BORDER && t < h);
         const subd_real *xm = cp + 3u * sm[j], *xa = cp + 3u * j, *xb = cp + 3u * j1;
         const subd_real *xca = cp + 3u * sm[(j + 2u) % 3u], *xbc = cp + 3u * sm[j1];
-        int sharp = (p->sh[h] & SH_CHILD) != 0u;
-        uint32_t rm = sharp ? VF_REGULAR : 0u, ra = p->cflag[j] & VF_REGULAR, rb = p->cflag[j1] & VF_REGULAR;
+        int sharp = (p->sh[h] & LP_SH_CHILD) != 0u;
+        uint32_t rm = sharp ? TOPO_PF_REGULAR : 0u, ra = p->cflag[j] & TOPO_PF_REGULAR, rb = p->cflag[j1] & TOPO_PF_REGULAR;
         ring[0] = j1; ring[1] = sm[j1]; ring[2] = sm[(j + 2u) % 3u]; ring[3] = j;
         nr = 4;
-        if (t < TW_BORDER) {
+        if (t < LP_TW_BORDER) {
             ring[4] = p->slot[tri_next(t)]; /* m(a, d) */
             ring[5] = p->slot[tri_prev(t)]; /* m(d, b) */
             nr = 6;
         }
-        if (t >= TW_BORDER) start = 0;
+        if (t >= LP_TW_BORDER) start = 0;
         else if (!lower_t) start = (j == 2u) ? 0u : 2u;
         else start = (t % 3u == 2u) ? 3u : 5u;
         if (sharp) { /* crease or boundary: its two sharp neighbours b and a, in ring order */
@@ -329,7 +329,7 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
             loop_smooth_end(vm[j], acc, ovf);
         }
         /* the halves a - m and m - b */
-        if (sharp || t >= TW_BORDER) {
+        if (sharp || t >= LP_TW_BORDER) {
             if (lower_t) {
                 loop_rule_sharp_edge(h1[j], xm, xa, rule, rm, ra, ovf);
                 loop_rule_sharp_edge(h2[j], xb, xm, rule, rb, rm, ovf);
@@ -414,16 +414,16 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
         uint32_t tw = p->tw[c];
         m.corner_vert[c] = p->cv[c];
         m.corner_face[c] = c / 3u;
-        m.twin[c] = tw < TW_BORDER ? tw : SUBD_NONE;
-        m.edge_tag[c] = (uint8_t)((tw == TW_NONE ? SUBD_ETAG_BOUNDARY : 0u) |
-                                  ((tw != TW_NONE && (p->sh[c] & SH_RULE)) ? SUBD_ETAG_CREASE : 0u));
+        m.twin[c] = tw < LP_TW_BORDER ? tw : SUBD_NONE;
+        m.edge_tag[c] = (uint8_t)((tw == LP_TW_NONE ? SUBD_ETAG_BOUNDARY : 0u) |
+                                  ((tw != LP_TW_NONE && (p->sh[c] & LP_SH_RULE)) ? SUBD_ETAG_CREASE : 0u));
     }
     for (v = 0; v < nv; v++) {
         uint8_t f = p->vflag[v];
         m.vert_out[v] = v < 3u ? p->vout[v] : SUBD_NONE;
-        m.vert_tag[v] = (uint8_t)(LOOP_VTAG_KNOWN | ((f & VF_REGULAR) ? LOOP_VTAG_REGULAR : 0u) |
-                                  ((f & VF_CORNER) ? SUBD_VTAG_CORNER : 0u) |
-                                  ((v < 3u && p->tw[p->vout[v]] == TW_NONE) ? SUBD_VTAG_BOUNDARY : 0u));
+        m.vert_tag[v] = (uint8_t)(LOOP_VTAG_KNOWN | ((f & TOPO_PF_REGULAR) ? LOOP_VTAG_REGULAR : 0u) |
+                                  ((f & TOPO_PF_CORNER) ? SUBD_VTAG_CORNER : 0u) |
+                                  ((v < 3u && p->tw[p->vout[v]] == LP_TW_NONE) ? SUBD_VTAG_BOUNDARY : 0u));
     }
     for (j = 0; j < 3u; j++) {
         subd_loop_limit_vertex(&m, r->o->boundary, p->pos, j, t.pos[j], t.normal[j], ovf);
@@ -553,7 +553,7 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     ring = (uint8_t *)subd_arena_alloc(a, ring_bytes(o->levels, limit));
     (void)stream_layout(a, o->levels, lay.n, limit, &lay);
     s->lay = lay;
-    for (f = 0; f < 4u * cap_f(3u * lay.n); f++) lay.fmap[f] = NO_SLOT; /* extract_child keeps it so */
+    for (f = 0; f < 4u * cap_f(3u * lay.n); f++) lay.fmap[f] = LP_NO_SLOT; /* extract_child keeps it so */
     s->wc.have = 0;
     s->o = *o;
     s->limit = (uint32_t)limit;

@@ -125,7 +125,7 @@ int subd_alpha_curve_plan(uint32_t m, int closed, const subd_alpha_opts *o, uint
  * The edge's alpha is (ta + tb) / (2 den), exact. Returns 0 on failure (ctx->status set). */
 static int edge_weight(curve_ctx *c, const int32_t *tag, uint32_t ia, uint32_t ib)
 {
-    int64_t num2 = tag ? (int64_t)tag[ia] + tag[ib] : 2 * (int64_t)c->o->alpha_num, f, w1;
+    int64_t num2 = tag ? (int64_t)tag[ia] + tag[ib] : 2 * (int64_t)c->o->alpha_num, f;
     int st, fresh;
     st = subd_alpha_kcache_get(&c->kc, c->o, num2, 2 * c->o->alpha_den, c->level, c->s_q32, &f, &fresh);
     if (st != SUBD_OK) {
@@ -133,29 +133,10 @@ static int edge_weight(curve_ctx *c, const int32_t *tag, uint32_t ia, uint32_t i
         return 0;
     }
     if (!fresh) return 1;
-    w1 = subd_alpha_divq(SUBD_Q32_ONE, 2 * (SUBD_Q32_ONE + f), 32, &c->ovf);
-    c->w = subd_alpha_wt_from_q32(w1, &c->ovf);
-    c->w2 = subd_alpha_wt_from_q32(2 * w1, &c->ovf);
+    subd_alpha_edge_w(f, &c->w, &c->w2, &c->ovf);
     return 1;
 }
 
-static void lerp3(subd_real *out, const subd_real *a, const subd_real *b, subd_alpha_wt w, uint32_t *ovf)
-{
-    subd_real x = subd_alpha_lerp(a[0], b[0], w, ovf), y = subd_alpha_lerp(a[1], b[1], w, ovf);
-    subd_real z = subd_alpha_lerp(a[2], b[2], w, ovf);
-    out[0] = x;
-    out[1] = y;
-    out[2] = z;
-}
-
-/* (a + b) / 2. Q16.16: ties to even, not the scalar layer's ties-up, because C runs many
- * times per level and a one-sided rounding would drift the whole curve by 1/4 LSB per
- * step (measured: 12 C steps moved a C-curve circle by 3 LSB). Float: one rounding. */
-static void mid3(subd_real *out, const subd_real *a, const subd_real *b, uint32_t *ovf)
-{
-    uint32_t i;
-    for (i = 0; i < 3u; i++) out[i] = subd_mid_of_sum_even(a[i], b[i], ovf);
-}
 
 static void copy3(subd_real *out, const subd_real *a)
 {
@@ -182,8 +163,8 @@ static int s2_closed(curve_ctx *c, subd_real *p, int32_t *t, uint32_t n)
             ta = t[i];
             tb = t[ib];
         }
-        lerp3(p + 6u * i, a, b, c->w, &c->ovf);
-        lerp3(p + 6u * i + 3u, b, a, c->w, &c->ovf);
+        subd_alpha_lerp3(p + 6u * i, a, b, c->w, &c->ovf);
+        subd_alpha_lerp3(p + 6u * i + 3u, b, a, c->w, &c->ovf);
         if (t) {
             t[2u * i] = ta;
             t[2u * i + 1u] = tb;
@@ -205,7 +186,7 @@ static int s2_open_edge(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
     /* end edge (x(L-2), 2d - x(L-2)): its first point, tag of x(L-2) on both ends */
     if (!edge_weight(c, t, L - 2u, L - 2u)) return 0;
     copy3(a, p + 3u * (L - 2u));
-    lerp3(p + 3u * (2u * L - 4u), a, d, c->w2, &c->ovf);
+    subd_alpha_lerp3(p + 3u * (2u * L - 4u), a, d, c->w2, &c->ovf);
     if (t) t[2u * L - 4u] = t[L - 2u];
     for (j = L - 3u; j >= 1u; j--) {
         int32_t ta = 0, tb = 0;
@@ -216,8 +197,8 @@ static int s2_open_edge(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
             ta = t[j];
             tb = t[j + 1u];
         }
-        lerp3(p + 6u * j, a, b, c->w, &c->ovf);
-        lerp3(p + 6u * j + 3u, b, a, c->w, &c->ovf);
+        subd_alpha_lerp3(p + 6u * j, a, b, c->w, &c->ovf);
+        subd_alpha_lerp3(p + 6u * j + 3u, b, a, c->w, &c->ovf);
         if (t) {
             t[2u * j] = ta;
             t[2u * j + 1u] = tb;
@@ -227,7 +208,7 @@ static int s2_open_edge(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
     if (!edge_weight(c, t, 1u, 1u)) return 0;
     copy3(a, p + 3u);
     copy3(b, p);
-    lerp3(p + 3u, a, b, c->w2, &c->ovf);
+    subd_alpha_lerp3(p + 3u, a, b, c->w2, &c->ovf);
     return 1; /* t[1] keeps x1's tag, which is the tag w1 inherits */
 }
 
@@ -250,8 +231,8 @@ static int s2_open_vertex(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
             ta = t[j];
             tb = t[j + 1u];
         }
-        lerp3(p + 3u * (2u * j + 1u), a, b, c->w, &c->ovf);
-        lerp3(p + 3u * (2u * j + 2u), b, a, c->w, &c->ovf);
+        subd_alpha_lerp3(p + 3u * (2u * j + 1u), a, b, c->w, &c->ovf);
+        subd_alpha_lerp3(p + 3u * (2u * j + 2u), b, a, c->w, &c->ovf);
         if (t) {
             t[2u * j + 1u] = ta;
             t[2u * j + 2u] = tb;
@@ -268,10 +249,10 @@ static void c_closed(subd_real *p, int32_t *t, uint32_t n, uint32_t *ovf)
     uint32_t i;
     copy3(first, p);
     for (i = 0; i + 1u < n; i++) {
-        mid3(p + 3u * i, p + 3u * i, p + 3u * (i + 1u), ovf);
+        subd_alpha_mid3(p + 3u * i, p + 3u * i, p + 3u * (i + 1u), ovf);
         if (t) t[i] = tag_mean(t[i], t[i + 1u]);
     }
-    mid3(p + 3u * (n - 1u), p + 3u * (n - 1u), first, ovf);
+    subd_alpha_mid3(p + 3u * (n - 1u), p + 3u * (n - 1u), first, ovf);
     if (t) t[n - 1u] = tag_mean(t[n - 1u], t0);
 }
 
@@ -285,7 +266,7 @@ static void c_open_edge(subd_real *p, int32_t *t, uint32_t L, uint32_t *ovf)
     copy3(d, p + 3u * (L - 1u));
     if (t) t[0] = t[1];
     for (j = 1; j + 2u < L; j++) {
-        mid3(p + 3u * j, p + 3u * j, p + 3u * (j + 1u), ovf);
+        subd_alpha_mid3(p + 3u * j, p + 3u * j, p + 3u * (j + 1u), ovf);
         if (t) t[j] = tag_mean(t[j], t[j + 1u]);
     }
     copy3(p + 3u * (L - 2u), d);
@@ -300,7 +281,7 @@ static void c_open_vertex(subd_real *p, int32_t *t, uint32_t L, uint32_t *ovf)
     copy3(p + 3u * L, p + 3u * (L - 1u));
     if (t) t[L] = t[L - 1u];
     for (j = L - 1u; j >= 1u; j--) {
-        mid3(p + 3u * j, p + 3u * (j - 1u), p + 3u * j, ovf);
+        subd_alpha_mid3(p + 3u * j, p + 3u * (j - 1u), p + 3u * j, ovf);
         if (t) t[j] = tag_mean(t[j - 1u], t[j]);
     }
 }

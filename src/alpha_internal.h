@@ -13,6 +13,7 @@
 #define SUBD_ALPHA_INTERNAL_H
 #include "subd_alpha.h"
 #include "mesh_internal.h"
+#include "real_avg.h" /* subd_mid_of_sum_even */
 
 #define SUBD_Q32_ONE ((int64_t)1 << 32)
 
@@ -122,5 +123,40 @@ static inline subd_alpha_diff subd_alpha_dadd(subd_alpha_diff a, subd_alpha_diff
     return subd_add(a, b, ovf);
 }
 #endif
+
+
+/* ------------------------------------------------------------------------------------ */
+/* The curve rules on points, one home for the materialising call (alpha_curve.c) and the
+ * stream (alpha_stream.c), so both compute every point with the same operations. */
+
+/* out = lerp(a, b, w) per coordinate (out may alias a or b: the three are read first). */
+static inline void subd_alpha_lerp3(subd_real *out, const subd_real *a, const subd_real *b, subd_alpha_wt w,
+                                    uint32_t *ovf)
+{
+    subd_real x = subd_alpha_lerp(a[0], b[0], w, ovf), y = subd_alpha_lerp(a[1], b[1], w, ovf);
+    subd_real z = subd_alpha_lerp(a[2], b[2], w, ovf);
+    out[0] = x;
+    out[1] = y;
+    out[2] = z;
+}
+
+/* (a + b) / 2, the averaging operator C. Q16.16: ties to even, not the scalar layer's
+ * ties-up, because C runs many times per level and a one-sided rounding would drift the whole
+ * curve by 1/4 LSB per step (measured: 12 C steps moved a C-curve circle by 3 LSB). Float:
+ * one rounding. */
+static inline void subd_alpha_mid3(subd_real *out, const subd_real *a, const subd_real *b, uint32_t *ovf)
+{
+    uint32_t i;
+    for (i = 0; i < 3u; i++) out[i] = subd_mid_of_sum_even(a[i], b[i], ovf);
+}
+
+/* An edge's weights from the kernel value f = f_n (Q32.32): w = 1 / (2 + 2 f) in Q32.32,
+ * rounded once, and w2 = 2w, each as subd_alpha_wt. */
+static inline void subd_alpha_edge_w(int64_t f, subd_alpha_wt *w, subd_alpha_wt *w2, uint32_t *ovf)
+{
+    int64_t w1 = subd_alpha_divq(SUBD_Q32_ONE, 2 * (SUBD_Q32_ONE + f), 32, ovf);
+    *w = subd_alpha_wt_from_q32(w1, ovf);
+    *w2 = subd_alpha_wt_from_q32(2 * w1, ovf);
+}
 
 #endif

@@ -135,11 +135,10 @@ static void astream_qcopy(astream_state *st, uint32_t s, const subd_real *p, int
     astream_copy3(astream_qput(st, s, tag), p);
 }
 
-/* The weights of an edge of level `level` with tag sum num2 (alpha_curve.c edge_weight:
- * w = 1 / (2 + 2 f_n) in Q32.32, rounded once; w2 = 2w). 0 on a kernel failure. */
+/* The weights of an edge of level `level` with tag sum num2 (subd_alpha_edge_w, as alpha_curve.c's edge_weight). 0 on a kernel failure. */
 static int astream_weight(astream_state *st, uint32_t level, int64_t num2)
 {
-    int64_t f, w1;
+    int64_t f;
     int s;
     if (st->wok[level] && (int64_t)st->wnum[level] == num2) return 1;
     s = subd_alpha_kernel_q32(st->o.kernel, (int32_t)num2, 2 * st->o.alpha_den, level, st->s_q32, &f);
@@ -154,9 +153,7 @@ static int astream_weight(astream_state *st, uint32_t level, int64_t num2)
          * level, which a depth-first walk may meet after a higher one */
         f = 0;
     }
-    w1 = subd_alpha_divq(SUBD_Q32_ONE, 2 * (SUBD_Q32_ONE + f), 32, &st->ovf);
-    st->w[level] = subd_alpha_wt_from_q32(w1, &st->ovf);
-    st->w2[level] = subd_alpha_wt_from_q32(2 * w1, &st->ovf);
+    subd_alpha_edge_w(f, &st->w[level], &st->w2[level], &st->ovf);
     st->wnum[level] = (int32_t)num2;
     st->wok[level] = 1u;
     return 1;
@@ -168,28 +165,14 @@ static int astream_edge(astream_state *st, uint32_t level, int32_t ta, int32_t t
     return astream_weight(st, level, num2);
 }
 
-static void astream_lerp(subd_real *o, const subd_real *a, const subd_real *b, subd_alpha_wt w, uint32_t *ovf)
-{
-    subd_real x = subd_alpha_lerp(a[0], b[0], w, ovf), y = subd_alpha_lerp(a[1], b[1], w, ovf);
-    subd_real z = subd_alpha_lerp(a[2], b[2], w, ovf);
-    o[0] = x;
-    o[1] = y;
-    o[2] = z;
-}
-
-static void astream_mid(subd_real *o, const subd_real *a, const subd_real *b, uint32_t *ovf)
-{
-    uint32_t i;
-    for (i = 0; i < 3u; i++) o[i] = subd_mid_of_sum_even(a[i], b[i], ovf);
-}
 
 /* S_2's two points of the edge (a, b): lerp(a, b, w) (tag ta), lerp(b, a, w) (tag tb). */
 static int astream_pair(astream_state *st, uint32_t s, uint32_t level, const subd_real *a, int32_t ta,
                         const subd_real *b, int32_t tb)
 {
     if (!astream_edge(st, level, ta, tb)) return 0;
-    astream_lerp(astream_qput(st, s, ta), a, b, st->w[level], &st->ovf);
-    astream_lerp(astream_qput(st, s, tb), b, a, st->w[level], &st->ovf);
+    subd_alpha_lerp3(astream_qput(st, s, ta), a, b, st->w[level], &st->ovf);
+    subd_alpha_lerp3(astream_qput(st, s, tb), b, a, st->w[level], &st->ovf);
     return 1;
 }
 
@@ -218,12 +201,12 @@ static int astream_feed_s2(astream_state *st, uint32_t s, const subd_real *p, in
         if (i == 0u) astream_qcopy(st, s, p, t);
         else if (i == 1u) {
             if (!astream_edge(st, lv, t, t)) return 0;
-            astream_lerp(astream_qput(st, s, t), p, prev, st->w2[lv], &st->ovf); /* lerp(x1, c, 2w) */
+            subd_alpha_lerp3(astream_qput(st, s, t), p, prev, st->w2[lv], &st->ovf); /* lerp(x1, c, 2w) */
         } else if (i + 1u < n) {
             if (!astream_pair(st, s, lv, prev, *tprev, p, t)) return 0;
         } else {
             if (!astream_edge(st, lv, *tprev, *tprev)) return 0;
-            astream_lerp(astream_qput(st, s, *tprev), prev, p, st->w2[lv], &st->ovf); /* lerp(x(L-2), d, 2w) */
+            subd_alpha_lerp3(astream_qput(st, s, *tprev), prev, p, st->w2[lv], &st->ovf); /* lerp(x(L-2), d, 2w) */
             astream_qcopy(st, s, p, t);
         }
     }
@@ -246,14 +229,14 @@ static void astream_feed_c(astream_state *st, uint32_t s, const subd_real *p, in
             astream_copy3(astream_slot(st, s, AS_FIRST), p);
             *astream_tag(st, s, AS_FIRST) = t;
         } else
-            astream_mid(astream_qput(st, s, astream_tmean(*tprev, t)), prev, p, &st->ovf);
+            subd_alpha_mid3(astream_qput(st, s, astream_tmean(*tprev, t)), prev, p, &st->ovf);
         if (i + 1u == n)
-            astream_mid(astream_qput(st, s, astream_tmean(t, *astream_tag(st, s, AS_FIRST))), p,
+            subd_alpha_mid3(astream_qput(st, s, astream_tmean(t, *astream_tag(st, s, AS_FIRST))), p,
                         astream_slot(st, s, AS_FIRST), &st->ovf);
     } else if (mt[AM_VC]) { /* c_open_vertex: [c, mid(c, x1) .. mid(x(L-2), d), d] */
         if (i == 0u) astream_qcopy(st, s, p, t);
         else
-            astream_mid(astream_qput(st, s, astream_tmean(*tprev, t)), prev, p, &st->ovf);
+            subd_alpha_mid3(astream_qput(st, s, astream_tmean(*tprev, t)), prev, p, &st->ovf);
         if (i > 0u && i + 1u == n) astream_qcopy(st, s, p, t);
     } else if (n < 3u) {
         astream_qcopy(st, s, p, t);
@@ -263,7 +246,7 @@ static void astream_feed_c(astream_state *st, uint32_t s, const subd_real *p, in
         } else if (i == 1u) {
             astream_qcopy(st, s, astream_slot(st, s, AS_FIRST), t);
         } else if (i + 1u < n) {
-            astream_mid(astream_qput(st, s, astream_tmean(*tprev, t)), prev, p, &st->ovf);
+            subd_alpha_mid3(astream_qput(st, s, astream_tmean(*tprev, t)), prev, p, &st->ovf);
         } else {
             astream_qcopy(st, s, p, *tprev);
         }

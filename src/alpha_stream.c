@@ -3,6 +3,8 @@
  * the point sink of the common stream interface (include/subd.h "Streams", src/stream.c),
  * bit-identical to subd_alpha_curve, in memory that depends on the level count and the
  * order only; and an adaptive mode that drops points where the curve is straight.
+ * Length (~700 lines): one concept, the curve pipeline, its two modes (uniform, chord) and
+ * its plan/begin/push entry points, which share the stage state; splitting would expose it.
  *
  * The refinement is local. One level is a chain of primitive steps: S_2 (an output pair per
  * input edge), k - 2 averages C (an output per input edge) and, on a closed polygon, the

@@ -1,5 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Loop limit positions and normals.
+ * Length (~830 lines): positions and normals share the classification, the masks and
+ * their caches; the split into two files is open work (issue 19, item 7).
  *
  * Paper: loop-progressive-interpolation.txt, formula (3) (interior limit points) and
  * section 4 (boundary rules; "six different configurations" of boundary limit points,

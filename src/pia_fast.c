@@ -2,6 +2,7 @@
 /* Progressive interpolation, the accelerated method SUBD_PIA_FAST (beyond the paper:
  * loop-progressive-interpolation.txt, sections 2-4, which pia.c follows; pia.c also holds
  * the validation, layout, errors and the driver shared with it).
+ * Length (~650 lines): the preconditioner rows and the iteration share one state.
  *
  * SUBD_PIA_FAST, beyond the paper. Two accelerations, chosen by the mesh's structure:
  *

@@ -181,14 +181,20 @@ int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48
  * neighbours differ by at most one level and there are no T-junctions. */
 typedef enum subd_adapt_mode {
     SUBD_ADAPT_UNIFORM = 0, /* every triangle at max_level                                  */
-    SUBD_ADAPT_POINT,       /* finest at `point`: level max_level - floor(d / radius), d the
-                               distance from the point to the triangle                       */
+    /* POINT, RAMP and PLANE are evaluated per diamond D of level k on its nested region
+       B(D): the bounding box, over every level-k triangle sharing a vertex with D, of the
+       level-0 mesh's piecewise-linear interpolant L (level-0 vertices at their finest
+       positions, each later vertex at the midpoint of L at its base ends). A split child
+       diamond's box lies in both parent diamonds' boxes and the predicates are monotone,
+       so the cut needs no forced split and a top-down stream takes the same decisions. */
+    SUBD_ADAPT_POINT,       /* finest at `point`: split iff dist(point, B) < (max_level - k)
+                               radius, i.e. level max_level - floor(d / radius)              */
     SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at the
                                bounding-box minimum to max_level at the maximum, evaluated at
-                               the triangle's largest coordinate x on that axis: level
+                               B's largest coordinate x on that axis: level
                                floor(max_level (x - lo) / (hi - lo)), max_level if hi = lo   */
-    SUBD_ADAPT_PLANE,       /* max_level where a triangle touches the side (x - point).normal
-                               >= 0, level 0 elsewhere (a step function)                      */
+    SUBD_ADAPT_PLANE,       /* max_level where B touches the side (x - point).normal >= 0,
+                               level 0 elsewhere (a step function)                            */
     SUBD_ADAPT_CALLBACK,    /* level = fn(ctx, the triangle's apex, b0, b1 positions)         */
     SUBD_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
 } subd_adapt_mode;
@@ -249,7 +255,9 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * so every vertex of level <= max_level is within eps of the extracted mesh (Q16.16: the
  * deviation is rounded to Q16.16 before the comparison, so within eps + 2^-16). RAMP's
  * bounding box and POINT's default radius use the vertices of levels 0..max_level. POINT,
- * Q16.16: the distance is computed to about 2^-13 of the triangle's and the point's extent.
+ * RAMP and PLANE never force a split (their regions are nested, see subd_adapt_mode), so
+ * their cut is exactly the diamonds that ask; each evaluation walks the diamond's star at
+ * its level (about 4 valence triangles, O(level) each).
  * Output vertices are the used hierarchy vertices in increasing index order; output faces
  * are the cut's triangles by level, then by hierarchy index, as (apex, b0, b1).
  * Work: UNIFORM O(triangles of levels <= max_level). The other modes: O(triangles visited:

@@ -293,7 +293,8 @@ typedef struct subd_sr48_stream_opts {
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
  *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, a mode other than
- *   SUBD_ADAPT_UNIFORM: the adaptive modes are not streamed yet), SUBD_ERR_EMPTY,
+ *   UNIFORM, PLANE and POINT with radius > 0 - RAMP, POINT's default radius, CALLBACK and
+ *   CHORD are not streamed yet -, the mode's parameters as subd_sr48_extract), SUBD_ERR_EMPTY,
  *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
  * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
 int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
@@ -317,7 +318,17 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   walks). Measured: 0.04-0.15x the faces/s of subd_sr48_build + subd_sr48_extract on the
  *   host, about 22 600 instructions per triangle on the Cortex-M4F (bench -s sr48stream,
  *   make demo).
- * Notes: triangle face = the level-0 triangle it lies in, level = max_level. Ids: a level-0
+ * Adaptive modes (PLANE, POINT with radius > 0): the triangles of subd_sr48_extract(mode,
+ *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
+ *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
+ *   decided once, top down, on the nested region of subd_adapt_mode (L's box over its star,
+ *   which the window holds); L of the level-0 window comes from one descent per window
+ *   vertex (refining and cropping towards it down to max_level), and a leaf of level
+ *   k < max_level gets its corners' max_level positions by three such descents, so a cut
+ *   costs O(window * max_level) per leaf and per level-0 window vertex on top of the
+ *   uniform work of its split triangles. Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
+ * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
+ * leaf's level). Ids: a level-0
  * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose
  * lower-index triangle is the i-th of level k-1 (i = its index minus level_tri[k-1]) gets
  * num_verts + level_tri[1] (2^(k-1) - 1) + i (num_verts, level_tri of the base): equal ids
@@ -362,6 +373,14 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_BYTES(L, N) \
     SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
+/* The plan of the adaptive modes (PLANE, POINT): L (3 subd_reals) per window vertex, per
+ * level window and in the refined window, and the level-0 window's L, vertices, triangles. */
+#define SUBD_SR48_STREAM_ADAPT_EXTRA_(L, t, v) \
+    (((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
+     SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))
+#define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
+    (SUBD_SR48_STREAM_BYTES(L, N) + \
+     SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
 
 #ifdef __cplusplus
 }

@@ -93,6 +93,7 @@
 #include "layout.h"
 #include "entry.h"
 #include "vec3w.h"
+#include "sr48_internal.h"
 
 #define EX_SPLIT 0x1u
 #define EX_WANT 0x2u
@@ -143,11 +144,10 @@ typedef struct ex_ctx {
 
 static int real_ok(subd_real x) { return subd_real_is_finite(x); }
 
-static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
+/* The mode's own parameters (sr48_internal.h: the stream checks them here too). */
+int subd_sr48_adapt_check_(const subd_adapt *ad)
 {
-    uint32_t k, i;
-    if (!h || !ad) return SUBD_ERR_PARAM;
-    if (h->steps > SUBD_SR48_MAX_STEPS || ad->max_level > h->steps) return SUBD_ERR_PARAM;
+    uint32_t i;
     switch (ad->mode) {
     case SUBD_ADAPT_UNIFORM: break;
     case SUBD_ADAPT_POINT:
@@ -170,6 +170,15 @@ static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
         break;
     default: return SUBD_ERR_PARAM;
     }
+    return SUBD_OK;
+}
+
+static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
+{
+    uint32_t k;
+    if (!h || !ad) return SUBD_ERR_PARAM;
+    if (h->steps > SUBD_SR48_MAX_STEPS || ad->max_level > h->steps) return SUBD_ERR_PARAM;
+    if (subd_sr48_adapt_check_(ad) != SUBD_OK) return SUBD_ERR_PARAM;
     /* level structure: level 0 from 0, every later level twice the one before */
     if (h->level_tri[0] != 0u) return SUBD_ERR_PARAM;
     for (k = 1; k <= h->steps + 1u; k++) {
@@ -417,12 +426,12 @@ static int ex_star_box(ex_ctx *c, uint32_t t, uint32_t k, subd_real *lo, subd_re
 
 /* POINT: dist(point, box) < n * radius (n = max_level - k levels to go). Every step is
  * monotone in the box and in n, which is all the nesting needs. */
-static int ex_point_wants(const ex_ctx *c, const subd_real *lo, const subd_real *hi, uint32_t n)
+static int ex_point_wants(const subd_adapt *ad, subd_real radius, const subd_real *lo, const subd_real *hi, uint32_t n)
 {
-    subd_wide d[3], lim = subd_wide_mulu(n, subd_wide_of(c->radius));
+    subd_wide d[3], lim = subd_wide_mulu(n, subd_wide_of(radius));
     uint32_t i;
     for (i = 0; i < 3u; i++) {
-        subd_real p = c->ad->point[i];
+        subd_real p = ad->point[i];
         d[i] = p < lo[i] ? subd_wide_diff(lo[i], p) : p > hi[i] ? subd_wide_diff(p, hi[i]) : 0;
         if (d[i] >= lim) return 0;
     }
@@ -444,21 +453,33 @@ static int ex_point_wants(const ex_ctx *c, const subd_real *lo, const subd_real 
 }
 
 /* RAMP: (k + 1)(hi - lo) <= max (x - lo), x the box's largest coordinate on the axis. */
-static int ex_ramp_wants(const ex_ctx *c, const subd_real *hi, uint32_t k)
+static int ex_ramp_wants(const subd_adapt *ad, const subd_real *rlo, const subd_real *rhi, const subd_real *hi,
+                         uint32_t k)
 {
-    uint32_t ax = c->ad->axis;
-    subd_real lo = c->lo[ax], top = c->hi[ax];
-    return subd_wide_mulu(k + 1u, subd_wide_diff(top, lo)) <= subd_wide_mulu(c->max, subd_wide_diff(hi[ax], lo));
+    uint32_t ax = ad->axis;
+    subd_real lo = rlo[ax], top = rhi[ax];
+    return subd_wide_mulu(k + 1u, subd_wide_diff(top, lo)) <= subd_wide_mulu(ad->max_level, subd_wide_diff(hi[ax], lo));
 }
 
 /* PLANE: the box's corner furthest along the normal is on the side (x - point).normal >= 0
  * (exact in Q16.16, vec3w.h). */
-static int ex_plane_wants(const ex_ctx *c, const subd_real *lo, const subd_real *hi)
+static int ex_plane_wants(const subd_adapt *ad, const subd_real *lo, const subd_real *hi)
 {
     subd_real q[3];
     uint32_t i;
-    for (i = 0; i < 3u; i++) q[i] = c->ad->normal[i] >= 0 ? hi[i] : lo[i];
-    return subd_w3_side(q, c->ad->point, c->ad->normal);
+    for (i = 0; i < 3u; i++) q[i] = ad->normal[i] >= 0 ? hi[i] : lo[i];
+    return subd_w3_side(q, ad->point, ad->normal);
+}
+
+/* POINT, RAMP or PLANE on a diamond of level k < max_level with region box (lo, hi)
+ * (sr48_internal.h: the stream takes its decisions here too). radius: POINT's (resolved);
+ * rlo, rhi: RAMP's bounding box. */
+int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
+                         const subd_real *lo, const subd_real *hi, uint32_t k)
+{
+    if (ad->mode == SUBD_ADAPT_POINT) return ex_point_wants(ad, radius, lo, hi, ad->max_level - k);
+    if (ad->mode == SUBD_ADAPT_RAMP) return ex_ramp_wants(ad, rlo, rhi, hi, k);
+    return ex_plane_wants(ad, lo, hi);
 }
 
 #if SUBD_FIXED /* Q32.32 interpolant, see ex_lin */
@@ -542,9 +563,7 @@ static int ex_wants(ex_ctx *c, uint32_t t, uint32_t k)
             c->bad = 1;
             return 0;
         }
-        if (c->ad->mode == SUBD_ADAPT_POINT) return ex_point_wants(c, lo, hi, c->max - k);
-        if (c->ad->mode == SUBD_ADAPT_RAMP) return ex_ramp_wants(c, hi, k);
-        return ex_plane_wants(c, lo, hi);
+        return subd_sr48_box_wants_(c->ad, c->radius, c->lo, c->hi, lo, hi, k);
     case SUBD_ADAPT_CALLBACK: return c->ad->fn(c->ad->ctx, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2])) > k;
     case SUBD_ADAPT_CHORD: return ex_chord_wants(c, t, k);
     default: return 1;

@@ -181,14 +181,20 @@ int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48
  * neighbours differ by at most one level and there are no T-junctions. */
 typedef enum subd_adapt_mode {
     SUBD_ADAPT_UNIFORM = 0, /* every triangle at max_level                                  */
-    SUBD_ADAPT_POINT,       /* finest at `point`: level max_level - floor(d / radius), d the
-                               distance from the point to the triangle                       */
+    /* POINT, RAMP and PLANE are evaluated per diamond D of level k on its nested region
+       B(D): the bounding box, over every level-k triangle sharing a vertex with D, of the
+       level-0 mesh's piecewise-linear interpolant L (level-0 vertices at their finest
+       positions, each later vertex at the midpoint of L at its base ends). A split child
+       diamond's box lies in both parent diamonds' boxes and the predicates are monotone,
+       so the cut needs no forced split and a top-down stream takes the same decisions. */
+    SUBD_ADAPT_POINT,       /* finest at `point`: split iff dist(point, B) < (max_level - k)
+                               radius, i.e. level max_level - floor(d / radius)              */
     SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at the
                                bounding-box minimum to max_level at the maximum, evaluated at
-                               the triangle's largest coordinate x on that axis: level
+                               B's largest coordinate x on that axis: level
                                floor(max_level (x - lo) / (hi - lo)), max_level if hi = lo   */
-    SUBD_ADAPT_PLANE,       /* max_level where a triangle touches the side (x - point).normal
-                               >= 0, level 0 elsewhere (a step function)                      */
+    SUBD_ADAPT_PLANE,       /* max_level where B touches the side (x - point).normal >= 0,
+                               level 0 elsewhere (a step function)                            */
     SUBD_ADAPT_CALLBACK,    /* level = fn(ctx, the triangle's apex, b0, b1 positions)         */
     SUBD_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
 } subd_adapt_mode;
@@ -249,7 +255,9 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * so every vertex of level <= max_level is within eps of the extracted mesh (Q16.16: the
  * deviation is rounded to Q16.16 before the comparison, so within eps + 2^-16). RAMP's
  * bounding box and POINT's default radius use the vertices of levels 0..max_level. POINT,
- * Q16.16: the distance is computed to about 2^-13 of the triangle's and the point's extent.
+ * RAMP and PLANE never force a split (their regions are nested, see subd_adapt_mode), so
+ * their cut is exactly the diamonds that ask; each evaluation walks the diamond's star at
+ * its level (about 4 valence triangles, O(level) each).
  * Output vertices are the used hierarchy vertices in increasing index order; output faces
  * are the cut's triangles by level, then by hierarchy index, as (apex, b0, b1).
  * Work: UNIFORM O(triangles of levels <= max_level). The other modes: O(triangles visited:
@@ -285,7 +293,8 @@ typedef struct subd_sr48_stream_opts {
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
  *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, a mode other than
- *   SUBD_ADAPT_UNIFORM: the adaptive modes are not streamed yet), SUBD_ERR_EMPTY,
+ *   UNIFORM, PLANE and POINT with radius > 0 - RAMP, POINT's default radius, CALLBACK and
+ *   CHORD are not streamed yet -, the mode's parameters as subd_sr48_extract), SUBD_ERR_EMPTY,
  *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
  * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
 int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
@@ -309,7 +318,17 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   walks). Measured: 0.04-0.15x the faces/s of subd_sr48_build + subd_sr48_extract on the
  *   host, about 22 600 instructions per triangle on the Cortex-M4F (bench -s sr48stream,
  *   make demo).
- * Notes: triangle face = the level-0 triangle it lies in, level = max_level. Ids: a level-0
+ * Adaptive modes (PLANE, POINT with radius > 0): the triangles of subd_sr48_extract(mode,
+ *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
+ *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
+ *   decided once, top down, on the nested region of subd_adapt_mode (L's box over its star,
+ *   which the window holds); L of the level-0 window comes from one descent per window
+ *   vertex (refining and cropping towards it down to max_level), and a leaf of level
+ *   k < max_level gets its corners' max_level positions by three such descents, so a cut
+ *   costs O(window * max_level) per leaf and per level-0 window vertex on top of the
+ *   uniform work of its split triangles. Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
+ * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
+ * leaf's level). Ids: a level-0
  * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose
  * lower-index triangle is the i-th of level k-1 (i = its index minus level_tri[k-1]) gets
  * num_verts + level_tri[1] (2^(k-1) - 1) + i (num_verts, level_tri of the base): equal ids
@@ -354,6 +373,14 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_BYTES(L, N) \
     SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
+/* The plan of the adaptive modes (PLANE, POINT): L (3 subd_reals) per window vertex, per
+ * level window and in the refined window, and the level-0 window's L, vertices, triangles. */
+#define SUBD_SR48_STREAM_ADAPT_EXTRA_(L, t, v) \
+    (((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
+     SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))
+#define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
+    (SUBD_SR48_STREAM_BYTES(L, N) + \
+     SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
 
 #ifdef __cplusplus
 }

@@ -34,17 +34,36 @@
  * renumbering, and, for RAMP and POINT's default radius only, the bounding box. UNIFORM
  * outputs all of level max, so it checks levels 0..max up front.
  *
- * Adaptation functions (all evaluated on the triangle's three corner positions, which are
- * the hierarchy's finest positions):
- *  - POINT: level max_level - floor(d / radius), i.e. split at level k iff
- *    d < (max_level - k) * radius, d the point-to-triangle distance (Ericson's Voronoi
- *    region walk). Q16.16: the three difference vectors are scaled by a power of two to
- *    below 2^13 so every dot product and every product of two dot products fits int64; the
- *    distance is then exact to about 2^-13 of the largest of |b-a|, |c-a|, |p-a|.
- *  - RAMP: level floor(max_level (x - lo) / (hi - lo)) at the largest coordinate x on the
- *    axis, i.e. split at level k iff (k + 1)(hi - lo) <= max_level (x - lo); Q16.16 exact.
- *  - PLANE: split iff a corner v has (v - point).normal >= 0; Q16.16: exact sign (the three
- *    64-bit products are summed as high and low 32-bit halves, so nothing overflows).
+ * Adaptation functions. POINT, RAMP and PLANE are evaluated on a nested region, so that
+ * a top-down decision without lookahead (subd_sr48_stream) gives the same cut:
+ *  - L is the piecewise-linear interpolant of the level-0 mesh at its vertices' finest
+ *    positions: L at a level-0 vertex is its position, L at a vertex created by splitting a
+ *    diamond is the midpoint (subd_mid) of L at its base ends (the parameter midpoint;
+ *    commutative, so every triangle that has the vertex computes the same L);
+ *  - the region of a diamond D of level k is B(D), the bounding box of L over the corners
+ *    of every level-k triangle that shares a vertex with D (its "star", walked fan by fan;
+ *    a leg neighbour is the parent of the base neighbour of the child whose base is that
+ *    leg, so no adjacency is stored);
+ *  - nesting: a child diamond D' = {c, c'} of level k+1 (c a child of p, c' of p', p and
+ *    p' sharing the leg that is c's base) touches only m, m' (the new vertices of D(p),
+ *    D(p')) and the ends of that leg, so its star lies in the children of the stars of
+ *    D(p) and of D(p'); corners of children are corners or base midpoints of their
+ *    parents and a midpoint lies between its ends in both arithmetics, so
+ *    B(D') is inside B(D(p)) and B(D(p')). Each predicate below is monotone in the box
+ *    and in the level (a coarser level asks for no less), so a diamond that asks for a
+ *    split has parent diamonds that ask too: the least conforming cut has no forced
+ *    split, it is exactly {D : pred(B(D), level of D)}, evaluable top-down;
+ *  - POINT: split a level-k diamond iff dist(point, B) < (max_level - k) * radius
+ *    (compared as squares; Q16.16 floors the per-axis distances and the limit by one
+ *    common shift to below 2^30 so the squares sum in int64);
+ *  - RAMP: split iff (k + 1)(hi - lo) <= max_level (x - lo), x = B's maximum on the axis;
+ *    Q16.16 exact;
+ *  - PLANE: split iff the corner of B furthest along the normal has (q - point).normal
+ *    >= 0; Q16.16: exact sign (the three 64-bit products are summed as high and low 32-bit
+ *    halves, vec3w.h).
+ *  The star costs O(4 valence) triangles of O(k) each (L down the child path) per
+ *  evaluation. CALLBACK and CHORD are not nested (forced splits may occur):
+ *  - CALLBACK: fn(ctx, the triangle's apex, b0, b1 finest positions) > k;
  *  - CHORD: the chordal deviation of t is the largest |P(v) - L_t(v)| over the vertices v
  *    of t's subtree down to level max_level (the "finest level" of this extraction; deeper
  *    vertices cannot be honoured, max_level triangles are never split), L_t the linear
@@ -74,6 +93,7 @@
 #include "layout.h"
 #include "entry.h"
 #include "vec3w.h"
+#include "sr48_internal.h"
 
 #define EX_SPLIT 0x1u
 #define EX_WANT 0x2u
@@ -124,11 +144,10 @@ typedef struct ex_ctx {
 
 static int real_ok(subd_real x) { return subd_real_is_finite(x); }
 
-static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
+/* The mode's own parameters (sr48_internal.h: the stream checks them here too). */
+int subd_sr48_adapt_check_(const subd_adapt *ad)
 {
-    uint32_t k, i;
-    if (!h || !ad) return SUBD_ERR_PARAM;
-    if (h->steps > SUBD_SR48_MAX_STEPS || ad->max_level > h->steps) return SUBD_ERR_PARAM;
+    uint32_t i;
     switch (ad->mode) {
     case SUBD_ADAPT_UNIFORM: break;
     case SUBD_ADAPT_POINT:
@@ -151,6 +170,15 @@ static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
         break;
     default: return SUBD_ERR_PARAM;
     }
+    return SUBD_OK;
+}
+
+static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
+{
+    uint32_t k;
+    if (!h || !ad) return SUBD_ERR_PARAM;
+    if (h->steps > SUBD_SR48_MAX_STEPS || ad->max_level > h->steps) return SUBD_ERR_PARAM;
+    if (subd_sr48_adapt_check_(ad) != SUBD_OK) return SUBD_ERR_PARAM;
     /* level structure: level 0 from 0, every later level twice the one before */
     if (h->level_tri[0] != 0u) return SUBD_ERR_PARAM;
     for (k = 1; k <= h->steps + 1u; k++) {
@@ -302,141 +330,156 @@ static int ex_ok(ex_ctx *c, uint32_t t, uint32_t k)
 
 static const subd_real *ex_pos(const ex_ctx *c, uint32_t v) { return c->h->pos + 3u * v; }
 
-/* Distances use the wide 3-vectors of vec3w.h (ex_num: subd_wide). */
-typedef subd_wide ex_num;
+/* The nested region of POINT, RAMP and PLANE (see the file comment): the box of the
+ * level-0 interpolant L over the star of t's diamond at level k. */
 
-#if SUBD_FIXED /* the algorithm differs: integer square roots in the scaled frame, unscaled by 2^s */
-/* Distances in the scaled frame come back as 16 * d (4 fraction bits) and are turned into
- * Q16.16 by the frame's power of two, saturating. */
-static subd_real ex_unscale(uint64_t d16, int32_t s)
+/* L at the corners of triangle x of level k (apex, b0, b1): from its level-0 ancestor's
+ * corners (finest positions), one base midpoint per level along the child path in x's
+ * index (child 0 = (m; apex, b0), child 1 = (m; b1, apex)). The level-0 ancestor is checked
+ * before its vertices are read; no other index is read. */
+static int ex_tri_lin(ex_ctx *c, uint32_t x, uint32_t k, subd_real *l)
 {
-    uint64_t r;
-    if (s >= 4) {
-        if (d16 != 0u && (d16 >> (63 - (s - 4))) != 0u) return SUBD_REAL_MAX;
-        r = d16 << (s - 4);
-    } else {
-        uint32_t sh = (uint32_t)(4 - s);
-        r = (d16 + ((uint64_t)1 << (sh - 1u))) >> sh;
+    const subd_sr48 *h = c->h;
+    uint32_t i = x - h->level_tri[k], a = i >> k, j, q, ovf = 0;
+    if (!ex_ok(c, a, 0)) return 0;
+    for (j = 0; j < 9u; j++) l[j] = ex_pos(c, h->tri_vert[3u * a + j / 3u])[j % 3u];
+    for (j = k; j > 0u; j--) {
+        subd_real m[3], o[6];
+        for (q = 0; q < 3u; q++) m[q] = subd_mid(l[3u + q], l[6u + q], &ovf);
+        if ((i >> (j - 1u)) & 1u) {
+            for (q = 0; q < 3u; q++) { o[q] = l[6u + q]; o[3u + q] = l[q]; }
+        } else {
+            for (q = 0; q < 3u; q++) { o[q] = l[q]; o[3u + q] = l[3u + q]; }
+        }
+        for (q = 0; q < 3u; q++) { l[q] = m[q]; l[3u + q] = o[q]; l[6u + q] = o[3u + q]; }
     }
-    return r > (uint64_t)INT32_MAX ? SUBD_REAL_MAX : (subd_real)r;
+    return 1;
 }
-static subd_real ex_len(const ex_num *q, int32_t s)
-{
-    return ex_unscale(subd_isqrt64((uint64_t)subd_w3_dot(q, q) << 8), s);
-}
-/* Distance from q (relative to a point of the line) to the line along e: |q x e| / |e|. */
-static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
-{
-    ex_num x[3];
-    uint64_t num, den, d2;
-    subd_w3_cross(q, e, x);
-    num = (uint64_t)subd_w3_dot(x, x);
-    den = (uint64_t)subd_w3_dot(e, e);
-    if (den == 0u) return ex_len(q, s);
-    d2 = ((num / den) << 8) + ((num % den) << 8) / den;
-    return ex_unscale(subd_isqrt64(d2), s);
-}
-static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
-{
-    ex_num nq = subd_w3_dot(n, q);
-    uint32_t nl = subd_isqrt64((uint64_t)subd_w3_dot(n, n));
-    if (nl == 0u) return ex_len(q, s);
-    if (nq < 0) nq = -nq;
-    return ex_unscale(((uint64_t)nq << 4) / nl, s);
-}
-#else
-static subd_real ex_len(const ex_num *q, int32_t s) { (void)s; return subd_sqrt(subd_w3_dot(q, q)); }
-static subd_real ex_line_dist(const ex_num *q, const ex_num *e, int32_t s)
-{
-    ex_num x[3], den = subd_w3_dot(e, e);
-    if (den == 0.0f) return ex_len(q, s);
-    subd_w3_cross(q, e, x);
-    return subd_sqrt(subd_w3_dot(x, x) / den);
-}
-static subd_real ex_plane_dist(const ex_num *n, const ex_num *q, int32_t s)
-{
-    ex_num nq = subd_w3_dot(n, q), nl = subd_sqrt(subd_w3_dot(n, n));
-    if (nl == 0.0f) return ex_len(q, s);
-    if (nq < 0.0f) nq = -nq;
-    return nq / nl;
-}
-#endif
 
-/* Distance from p to the triangle (a, b, c): the Voronoi-region walk of Ericson,
- * "Real-Time Collision Detection", 5.1.5, with the distance taken to the region's vertex,
- * edge line or plane. */
-static subd_real ex_point_tri_dist(const subd_real *p, const subd_real *a, const subd_real *b, const subd_real *c)
+/* The neighbour of x (level k < max, checked) across slot 0 (base), 1 (leg 0: apex-b0) or
+ * 2 (leg 1: b1-apex): a leg of x is the base of one of its children, whose base neighbour's
+ * parent is x's leg neighbour. SUBD_NONE on the boundary or when a child breaks the index
+ * rules (c->bad set). */
+static uint32_t ex_nbr(ex_ctx *c, uint32_t x, uint32_t k, uint32_t slot)
 {
-    ex_num ab[3], ac[3], ap[3], bp[3], cp[3], bc[3], n[3];
-    ex_num d1, d2, d3, d4, d5, d6, va, vb, vc;
-    int32_t s = 0;
-    subd_w3_diff(b, a, ab);
-    subd_w3_diff(c, a, ac);
-    subd_w3_diff(p, a, ap);
-#if SUBD_FIXED /* the algorithm differs: Q16.16 works in a frame scaled to 13 bits */
-    /* Scale by 2^-s so every component is below 2^13: dot products stay below 2^29 and
-     * their products below 2^59 (int64). Shrinking floors (>>), unlike subd_w3_shift's
-     * truncation: the distances' last bits, and so the adaptive cuts, depend on it. */
-    {
-        uint64_t mx = subd_w3_maxabs(ab);
-        uint32_t i;
-        if (subd_w3_maxabs(ac) > mx) mx = subd_w3_maxabs(ac);
-        if (subd_w3_maxabs(ap) > mx) mx = subd_w3_maxabs(ap);
-        if (mx == 0u) return 0;
-        s = (int32_t)subd_bitlen64(mx) - 13;
-        for (i = 0; i < 3u; i++) {
-            if (s > 0) {
-                ab[i] >>= s; ac[i] >>= s; ap[i] >>= s;
-            } else {
-                int64_t f = (int64_t)1 << (-s);
-                ab[i] *= f; ac[i] *= f; ap[i] *= f;
+    const subd_sr48 *h = c->h;
+    uint32_t ch, nb;
+    if (slot == 0u) return h->tri_base_nb[x];
+    ch = h->level_tri[k + 1u] + 2u * (x - h->level_tri[k]) + (slot - 1u);
+    if (!ex_ok(c, ch, k + 1u)) return SUBD_NONE;
+    nb = h->tri_base_nb[ch];
+    return nb == SUBD_NONE ? SUBD_NONE : h->level_tri[k] + (nb - h->level_tri[k + 1u]) / 2u;
+}
+
+/* Grows box (lo, hi) by L over the level-k triangles around vertex v, starting at x0 (which
+ * has v as a corner): the fan is walked in one direction until it closes or meets the
+ * boundary, then in the other; duplicates do not change a box. 0 on a broken hierarchy. */
+static int ex_fan_box(ex_ctx *c, uint32_t x0, uint32_t k, uint32_t v, subd_real *lo, subd_real *hi)
+{
+    const subd_sr48 *h = c->h;
+    uint32_t dir, steps, cap = h->level_tri[k + 1u] - h->level_tri[k];
+    for (dir = 0; dir < 2u; dir++) {
+        uint32_t x = x0, prev = SUBD_NONE;
+        for (steps = 0; steps <= cap; steps++) {
+            const uint32_t *tv;
+            subd_real l[9];
+            uint32_t j, s0, s1, nx;
+            if (!ex_ok(c, x, k) || !ex_tri_lin(c, x, k, l)) return 0;
+            for (j = 0; j < 9u; j++) {
+                if (l[j] < lo[j % 3u]) lo[j % 3u] = l[j];
+                if (l[j] > hi[j % 3u]) hi[j % 3u] = l[j];
             }
+            tv = h->tri_vert + 3u * x;
+            /* the two slots at v: corner 0 (apex) -> legs (slots 1, 2); b0 -> 1, 0; b1 -> 2, 0 */
+            if (tv[0] == v) { s0 = 1u; s1 = 2u; }
+            else if (tv[1] == v) { s0 = 1u; s1 = 0u; }
+            else if (tv[2] == v) { s0 = 2u; s1 = 0u; }
+            else return 0;
+            if (dir) { j = s0; s0 = s1; s1 = j; }
+            nx = ex_nbr(c, x, k, s0);
+            if (c->bad) return 0;
+            if (nx == prev && prev != SUBD_NONE) nx = ex_nbr(c, x, k, s1);
+            if (c->bad) return 0;
+            if (nx == SUBD_NONE || nx == x0) break;
+            if (nx < h->level_tri[k] || nx >= h->level_tri[k + 1u]) return 0;
+            prev = x;
+            x = nx;
         }
     }
+    return 1;
+}
+
+/* The box of L over every level-k triangle sharing a vertex with t's diamond. */
+static int ex_star_box(ex_ctx *c, uint32_t t, uint32_t k, subd_real *lo, subd_real *hi)
+{
+    const subd_sr48 *h = c->h;
+    uint32_t j, nb = h->tri_base_nb[t];
+    for (j = 0; j < 3u; j++) {
+        lo[j] = SUBD_REAL_MAX;
+        hi[j] = -SUBD_REAL_MAX;
+    }
+    for (j = 0; j < 3u; j++)
+        if (!ex_fan_box(c, t, k, h->tri_vert[3u * t + j], lo, hi)) return 0;
+    if (nb != SUBD_NONE && !ex_fan_box(c, nb, k, h->tri_vert[3u * nb], lo, hi)) return 0;
+    return 1;
+}
+
+/* POINT: dist(point, box) < n * radius (n = max_level - k levels to go). Every step is
+ * monotone in the box and in n, which is all the nesting needs. */
+static int ex_point_wants(const subd_adapt *ad, subd_real radius, const subd_real *lo, const subd_real *hi, uint32_t n)
+{
+    subd_wide d[3], lim = subd_wide_mulu(n, subd_wide_of(radius));
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        subd_real p = ad->point[i];
+        d[i] = p < lo[i] ? subd_wide_diff(lo[i], p) : p > hi[i] ? subd_wide_diff(p, hi[i]) : 0;
+        if (d[i] >= lim) return 0;
+    }
+#if SUBD_FIXED /* the algorithm differs: one common floor shift keeps the squares in int64 */
+    {
+        int32_t s = (int32_t)subd_bitlen64((uint64_t)lim) - 30;
+        uint64_t sum = 0, l2;
+        if (s < 0) s = 0;
+        for (i = 0; i < 3u; i++) sum += ((uint64_t)d[i] >> s) * ((uint64_t)d[i] >> s);
+        l2 = ((uint64_t)lim >> s) * ((uint64_t)lim >> s);
+        return sum < l2;
+    }
+#else
+    {
+        float s0 = d[0] * d[0], s1 = d[1] * d[1], s2 = d[2] * d[2];
+        return s0 + s1 + s2 < lim * lim;
+    }
 #endif
-    d1 = subd_w3_dot(ab, ap);
-    d2 = subd_w3_dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return ex_len(ap, s);
-    subd_w3_sub(ap, ab, bp);
-    d3 = subd_w3_dot(ab, bp);
-    d4 = subd_w3_dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return ex_len(bp, s);
-    vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return ex_line_dist(ap, ab, s);
-    subd_w3_sub(ap, ac, cp);
-    d5 = subd_w3_dot(ab, cp);
-    d6 = subd_w3_dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return ex_len(cp, s);
-    vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return ex_line_dist(ap, ac, s);
-    va = d3 * d6 - d5 * d4;
-    subd_w3_sub(ac, ab, bc);
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return ex_line_dist(bp, bc, s);
-    subd_w3_cross(ab, ac, n);
-    return ex_plane_dist(n, ap, s);
 }
 
-/* d < n * radius (n = max_level - k levels to go). */
-static int ex_point_wants(const ex_ctx *c, const uint32_t *v, uint32_t n)
+/* RAMP: (k + 1)(hi - lo) <= max (x - lo), x the box's largest coordinate on the axis. */
+static int ex_ramp_wants(const subd_adapt *ad, const subd_real *rlo, const subd_real *rhi, const subd_real *hi,
+                         uint32_t k)
 {
-    subd_real d = ex_point_tri_dist(c->ad->point, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2]));
-    return subd_wide_of(d) < subd_wide_mulu(n, subd_wide_of(c->radius));
+    uint32_t ax = ad->axis;
+    subd_real lo = rlo[ax], top = rhi[ax];
+    return subd_wide_mulu(k + 1u, subd_wide_diff(top, lo)) <= subd_wide_mulu(ad->max_level, subd_wide_diff(hi[ax], lo));
 }
 
-/* (k + 1)(hi - lo) <= max (x - lo), x the largest coordinate on the axis. */
-static int ex_ramp_wants(const ex_ctx *c, const uint32_t *v, uint32_t k)
+/* PLANE: the box's corner furthest along the normal is on the side (x - point).normal >= 0
+ * (exact in Q16.16, vec3w.h). */
+static int ex_plane_wants(const subd_adapt *ad, const subd_real *lo, const subd_real *hi)
 {
-    uint32_t ax = c->ad->axis, i;
-    subd_real x = ex_pos(c, v[0])[ax], lo = c->lo[ax], hi = c->hi[ax];
-    for (i = 1; i < 3u; i++)
-        if (ex_pos(c, v[i])[ax] > x) x = ex_pos(c, v[i])[ax];
-    return subd_wide_mulu(k + 1u, subd_wide_diff(hi, lo)) <= subd_wide_mulu(c->max, subd_wide_diff(x, lo));
+    subd_real q[3];
+    uint32_t i;
+    for (i = 0; i < 3u; i++) q[i] = ad->normal[i] >= 0 ? hi[i] : lo[i];
+    return subd_w3_side(q, ad->point, ad->normal);
 }
 
-/* (q - point).normal >= 0, exactly in Q16.16 (vec3w.h). */
-static int ex_plane_side(const subd_real *q, const subd_real *pt, const subd_real *nrm)
+/* POINT, RAMP or PLANE on a diamond of level k < max_level with region box (lo, hi)
+ * (sr48_internal.h: the stream takes its decisions here too). radius: POINT's (resolved);
+ * rlo, rhi: RAMP's bounding box. */
+int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
+                         const subd_real *lo, const subd_real *hi, uint32_t k)
 {
-    return subd_w3_side(q, pt, nrm);
+    if (ad->mode == SUBD_ADAPT_POINT) return ex_point_wants(ad, radius, lo, hi, ad->max_level - k);
+    if (ad->mode == SUBD_ADAPT_RAMP) return ex_ramp_wants(ad, rlo, rhi, hi, k);
+    return ex_plane_wants(ad, lo, hi);
 }
 
 #if SUBD_FIXED /* Q32.32 interpolant, see ex_lin */
@@ -511,14 +554,16 @@ static int ex_chord_wants(ex_ctx *c, uint32_t t, uint32_t k)
 static int ex_wants(ex_ctx *c, uint32_t t, uint32_t k)
 {
     const uint32_t *v = c->h->tri_vert + 3u * t;
-    uint32_t i;
+    subd_real lo[3], hi[3];
     switch (c->ad->mode) {
-    case SUBD_ADAPT_POINT: return ex_point_wants(c, v, c->max - k);
-    case SUBD_ADAPT_RAMP: return ex_ramp_wants(c, v, k);
+    case SUBD_ADAPT_POINT:
+    case SUBD_ADAPT_RAMP:
     case SUBD_ADAPT_PLANE:
-        for (i = 0; i < 3u; i++)
-            if (ex_plane_side(ex_pos(c, v[i]), c->ad->point, c->ad->normal)) return 1;
-        return 0;
+        if (!ex_star_box(c, t, k, lo, hi)) {
+            c->bad = 1;
+            return 0;
+        }
+        return subd_sr48_box_wants_(c->ad, c->radius, c->lo, c->hi, lo, hi, k);
     case SUBD_ADAPT_CALLBACK: return c->ad->fn(c->ad->ctx, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2])) > k;
     case SUBD_ADAPT_CHORD: return ex_chord_wants(c, t, k);
     default: return 1;

@@ -77,4 +77,12 @@ int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase
 int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase, uint32_t nold,
                      const sr48_sums *s);
 
+/* Adaptive cuts (sr48_extract.c), shared with the stream (sr48_stream.c): the mode's
+ * parameter check (SUBD_OK or SUBD_ERR_PARAM), and the nested-region decision of POINT,
+ * RAMP and PLANE for a diamond of level k < max_level whose region box is (lo, hi)
+ * (radius: POINT's, resolved; rlo, rhi: RAMP's bounding box). */
+int subd_sr48_adapt_check_(const subd_adapt *ad);
+int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
+                         const subd_real *lo, const subd_real *hi, uint32_t k);
+
 #endif

@@ -40,6 +40,19 @@
  * by splitting the diamond whose lower-key triangle has key K at level k-1 gets
  * V0 + T0n (2^(k-1) - 1) + K (V0, T0n: the base's vertex and triangle counts).
  *
+ * Adaptive cuts (PLANE, POINT with a radius; sr48_extract.c's nested region): every window
+ * vertex also carries L, the level-0 mesh's piecewise-linear interpolant at the finest
+ * positions of the level-0 vertices (a new vertex: subd_mid of L at its base ends, as
+ * sr48_extract.c computes it, so the bits agree). L of the level-0 window is found by one
+ * descent per vertex (s48_finest: refine and crop towards the vertex down to max_level,
+ * where its position is exact by the ring rule). At its first visit the current triangle's
+ * diamond is decided on L's box over the window triangles that touch it (the diamond lies
+ * within one ring of the current triangle, its star within two: in the window); a diamond
+ * that does not split makes the current triangle a leaf, emitted with its corners' finest
+ * positions by three descents (blocks above the current level are free then). Since the
+ * region is nested, a diamond that splits has split parents, so the top-down walk cuts
+ * exactly subd_sr48_extract's (least conforming) cut, with no lookahead.
+ *
  * Memory: the fixed state block, the overflow ring (2 triangles), L + 1 window blocks
  * (level L uses only its header), the refined window (twice the triangles), the smoothing
  * sums and the crop's maps; all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
@@ -51,6 +64,7 @@
 #include "mesh_internal.h"
 #include "real_avg.h"
 #include "stream_internal.h"
+#include "sr48_internal.h"
 
 #define S48_OUT 0xffffu /* neighbour outside the window                                  */
 #define S48_BND 0xfffeu /* the mesh boundary                                             */
@@ -67,6 +81,7 @@ typedef struct s48_win {
     subd_real *vp;
     uint32_t *vid; /* lo, hi per vertex   */
     uint8_t *vf;
+    subd_real *vl; /* adaptive modes: L (the level-0 interpolant) per vertex, else NULL */
 } s48_win;
 
 typedef struct s48_state {
@@ -77,7 +92,11 @@ typedef struct s48_state {
     uint32_t t0, k, built, err;
     uint8_t *lev;      /* levels 0..L-1 blocks of lev_size, then X                         */
     uint32_t lev_size;
-    uint32_t off[7], xoff[7];
+    uint32_t off[8], xoff[8];
+    subd_adapt ad;
+    uint32_t adapt;    /* POINT or PLANE: the nested-region cut (subd_adapt_mode)          */
+    subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
+    uint32_t *lgv, *lgvt; /* the level-0 window's vertices and a triangle at each, kept     */
     uint8_t *xblk;
     subd_sum *sum;     /* 3 per vertex (reserved as 8 bytes each in both arithmetics)     */
     uint32_t *cnt;
@@ -94,7 +113,7 @@ static uint32_t s48_cap_t(uint32_t n) { return SUBD_SR48_STREAM_WT_(n); }
 static uint32_t s48_cap_v(uint32_t n) { return SUBD_SR48_STREAM_WV_(n); }
 
 /* A window's arrays for ct triangles and cv vertices: offsets inside its block, its size. */
-static uint32_t s48_win_layout(uint32_t ct, uint32_t cv, uint32_t *off)
+static uint32_t s48_win_layout(uint32_t ct, uint32_t cv, uint32_t nl, uint32_t *off)
 {
     subd_layout y;
     uint32_t b, i;
@@ -105,6 +124,8 @@ static uint32_t s48_win_layout(uint32_t ct, uint32_t cv, uint32_t *off)
         off[i] = y.bytes;
         (void)subd_layout_take(&y, cnt[i], el[i]);
     }
+    off[7] = nl ? y.bytes : 0u; /* 0: no L (the header is at 0) */
+    if (nl) (void)subd_layout_take(&y, 3u * cv, (uint32_t)sizeof(subd_real));
     (void)subd_layout_end(&y, &b);
     return b;
 }
@@ -118,15 +139,16 @@ static void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
     w->vp = (subd_real *)(void *)(blk + off[4]);
     w->vid = (uint32_t *)(void *)(blk + off[5]);
     w->vf = blk + off[6];
+    w->vl = off[7] != 0u ? (subd_real *)(void *)(blk + off[7]) : 0;
 }
 
 /* The one layout of plan and begin (layout.h's walk). */
-static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, s48_state **ps, uint8_t **ring,
+static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t nl, s48_state **ps, uint8_t **ring,
                       uint32_t *bytes)
 {
     subd_layout y;
-    uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), xv = cv + ct, off[7];
-    uint32_t lsz = s48_win_layout(ct, cv, off), xsz = s48_win_layout(2u * ct, xv, off);
+    uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), xv = cv + ct, off[8];
+    uint32_t lsz = s48_win_layout(ct, cv, nl, off), xsz = s48_win_layout(2u * ct, xv, nl, off);
     s48_state *s;
     subd_layout_begin(&y, a);
     s = subd_layout_take(&y, 1u, SUBD_STREAM_STATE_BYTES);
@@ -136,8 +158,8 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, s48_stat
         s->wv = cv;
         s->xv = xv;
         s->lev_size = lsz;
-        (void)s48_win_layout(ct, cv, s->off);
-        (void)s48_win_layout(2u * ct, xv, s->xoff);
+        (void)s48_win_layout(ct, cv, nl, s->off);
+        (void)s48_win_layout(2u * ct, xv, nl, s->xoff);
     }
     {
         uint8_t *lev = subd_layout_take(&y, levels > 0u ? levels : 1u, lsz);
@@ -151,7 +173,13 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, s48_stat
         uint32_t *gt = subd_layout_take(&y, ct, 4u);
         uint32_t *gv = subd_layout_take(&y, cv, 4u);
         uint32_t *gvt = subd_layout_take(&y, cv, 4u);
+        subd_real *l0 = nl ? subd_layout_take(&y, 3u * cv, (uint32_t)sizeof(subd_real)) : 0;
+        uint32_t *lgv = nl ? subd_layout_take(&y, cv, 4u) : 0;
+        uint32_t *lgvt = nl ? subd_layout_take(&y, cv, 4u) : 0;
         if (s) {
+            s->l0 = l0;
+            s->lgv = lgv;
+            s->lgvt = lgvt;
             s->lev = lev;
             s->xblk = x;
             s->sum = sum;
@@ -300,7 +328,18 @@ static int s48_check(const subd_sr48 *b, const subd_sr48_stream_opts *o, uint32_
 {
     int st;
     if (!o) return SUBD_ERR_PARAM;
-    if (o->adapt.mode != SUBD_ADAPT_UNIFORM) return SUBD_ERR_PARAM; /* only UNIFORM streams so far */
+    /* UNIFORM, PLANE and POINT with an explicit radius stream so far (RAMP and POINT's
+     * default radius need the bounding box of every vertex: not yet) */
+    switch (o->adapt.mode) {
+    case SUBD_ADAPT_UNIFORM: break;
+    case SUBD_ADAPT_POINT:
+        if (!(o->adapt.radius > 0) || subd_sr48_adapt_check_(&o->adapt) != SUBD_OK) return SUBD_ERR_PARAM;
+        break;
+    case SUBD_ADAPT_PLANE:
+        if (subd_sr48_adapt_check_(&o->adapt) != SUBD_OK) return SUBD_ERR_PARAM;
+        break;
+    default: return SUBD_ERR_PARAM;
+    }
     if (o->adapt.max_level > SUBD_SR48_MAX_STEPS) return SUBD_ERR_PARAM;
     if ((st = s48_base_check(b)) != SUBD_OK) return st;
     *valence = s48_valence(b);
@@ -320,7 +359,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
     subd_diag_clear(d);
     if (!bytes) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = s48_check(base, o, &val)) != SUBD_OK) return subd_fail(d, st);
-    st = s48_layout(0, o->adapt.max_level, val, &s, &ring, &b);
+    st = s48_layout(0, o->adapt.max_level, val, o->adapt.mode != SUBD_ADAPT_UNIFORM, &s, &ring, &b);
     if (st != SUBD_OK) return subd_fail(d, st);
     *bytes = b;
     return SUBD_OK;
@@ -426,6 +465,8 @@ static int s48_build0(s48_state *s, uint32_t t0)
         for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
         s48_set_id(&w, i, s->gv[i]);
         w.vf[i] = S48_EXACT;
+        if (w.vl)
+            for (j = 0; j < 3u; j++) w.vl[3u * i + j] = s->l0[3u * i + j];
     }
     w.hd[0] = nt;
     w.hd[1] = nv;
@@ -455,6 +496,8 @@ static int s48_refine(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         x->vid[2u * i] = p->vid[2u * i];
         x->vid[2u * i + 1u] = p->vid[2u * i + 1u];
         x->vf[i] = p->vf[i];
+        if (x->vl)
+            for (j = 0; j < 3u; j++) x->vl[3u * i + j] = p->vl[3u * i + j];
     }
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
@@ -473,6 +516,8 @@ static int s48_refine(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
             exact = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT);
             for (j = 0; j < 3u; j++) x->vp[3u * m + j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
             x->vf[m] = (uint8_t)(exact ? S48_EXACT : 0u);
+            if (x->vl) /* L: the base midpoint, whatever the smoothing */
+                for (j = 0; j < 3u; j++) x->vl[3u * m + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
             s48_set_id(x, m, off + key);
         }
         s->mtab[i] = m;
@@ -597,6 +642,8 @@ static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
         w->vid[2u * v] = x->vid[2u * i];
         w->vid[2u * v + 1u] = x->vid[2u * i + 1u];
         w->vf[v] = x->vf[i];
+        if (w->vl)
+            for (j = 0; j < 3u; j++) w->vl[3u * v + j] = x->vl[3u * i + j];
     }
     for (i = 0; i < nt; i++) {
         uint16_t t = s->tmap[i];
@@ -640,6 +687,132 @@ static int s48_emit(const s48_state *s, const s48_win *w, uint32_t t, subd_strea
     return 1;
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* Adaptive cuts (POINT, PLANE): the nested region of sr48_extract.c, decided top down.     */
+
+static uint64_t s48_vid(const s48_win *w, uint32_t v)
+{
+    return ((uint64_t)w->vid[2u * v + 1u] << 32) | w->vid[2u * v];
+}
+
+/* The finest (max_level) position of the vertex with id `id`, a corner of triangle t of the
+ * level-k window (k < levels): the windows k+1.. are refined and cropped along children
+ * that keep the vertex as a corner (a corner of a triangle is a corner of one of its
+ * children), and its position is read from the last refined window, where it is exact by
+ * the ring rule (checked). Uses the blocks of levels > k and X only. 0 on failure. */
+static int s48_finest(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
+{
+    s48_win w, x, c;
+    uint32_t j, cur = t, q;
+    for (j = k; j < s->levels; j++) {
+        uint32_t ch;
+        s48_lev(s, j, &w);
+        s48_x(s, &x);
+        /* child 0 = (m; apex, b0) keeps apex and b0, child 1 = (m; b1, apex) keeps b1 */
+        ch = (s48_vid(&w, w.tv[3u * cur + 2u]) == id) ? 1u : 0u;
+        if (!s48_refine(s, &w, j, &x)) return 0;
+        if (j + 1u == s->levels) {
+            for (q = 0; q < 3u; q++) {
+                uint32_t v = x.tv[3u * (2u * cur + ch) + q];
+                if (s48_vid(&x, v) != id) continue;
+                if (!(x.vf[v] & S48_EXACT)) return 0;
+                for (j = 0; j < 3u; j++) out[j] = x.vp[3u * v + j];
+                return 1;
+            }
+            return 0;
+        }
+        s48_lev(s, j + 1u, &c);
+        if (!s48_crop(s, &x, 2u * cur, &c)) return 0;
+        cur = c.hd[3u + ch];
+        if (cur == S48_OUT) return 0;
+    }
+    return 0;
+}
+
+/* L of the level-0 window of t0 (s->l0): each vertex's finest position, by a descent from
+ * a base triangle at it. Rebuilds level 0 for every vertex; the caller rebuilds t0's. */
+static int s48_level0_lin(s48_state *s, uint32_t t0)
+{
+    s48_win w;
+    uint32_t nv, i, j;
+    for (i = 0; i < 3u * s->wv; i++) s->l0[i] = 0; /* the descents' L: defined, unused */
+    if (!s48_build0(s, t0)) return 0;
+    s48_lev(s, 0, &w);
+    nv = w.hd[1];
+    for (i = 0; i < nv; i++) {
+        s->lgv[i] = s->gv[i];
+        s->lgvt[i] = s->gvt[i];
+    }
+    for (i = 0; i < nv; i++) {
+        if (s->levels == 0u) {
+            for (j = 0; j < 3u; j++) s->l0[3u * i + j] = s->base->pos[3u * s->lgv[i] + j];
+            continue;
+        }
+        if (!s48_build0(s, s->lgvt[i])) return 0;
+        if (!s48_finest(s, 0, w.hd[2], s->lgv[i], s->l0 + 3u * i)) return 0;
+    }
+    return 1;
+}
+
+/* Does the current triangle t of the level-k window (k < levels) split its diamond? The
+ * region: L's box over the window's triangles that share a vertex with the diamond (all of
+ * them are in the window: the diamond is within one ring of t). */
+static int s48_wants(const s48_state *s, const s48_win *w, uint32_t t, uint32_t k)
+{
+    uint32_t vs[4], nv = 3, i, j, q;
+    subd_real lo[3], hi[3];
+    uint16_t nb = w->tn[3u * t];
+    for (j = 0; j < 3u; j++) vs[j] = w->tv[3u * t + j];
+    if (s48_local(nb)) vs[nv++] = w->tv[3u * nb];
+    for (j = 0; j < 3u; j++) {
+        lo[j] = SUBD_REAL_MAX;
+        hi[j] = -SUBD_REAL_MAX;
+    }
+    for (i = 0; i < w->hd[0]; i++) {
+        int touch = 0;
+        for (j = 0; j < 3u; j++)
+            for (q = 0; q < nv; q++)
+                if (w->tv[3u * i + j] == vs[q]) touch = 1;
+        if (!touch) continue;
+        for (j = 0; j < 3u; j++) {
+            const subd_real *l = w->vl + 3u * w->tv[3u * i + j];
+            for (q = 0; q < 3u; q++) {
+                if (l[q] < lo[q]) lo[q] = l[q];
+                if (l[q] > hi[q]) hi[q] = l[q];
+            }
+        }
+    }
+    return subd_sr48_box_wants_(&s->ad, s->ad.radius, lo, hi, lo, hi, k);
+}
+
+/* Emits triangle t of the level-k window as a leaf of the cut (k < levels): its corners'
+ * finest positions by descents. */
+static int s48_emit_leaf(s48_state *s, uint32_t k, uint32_t t, subd_stream_q *q, int *stop)
+{
+    subd_tri *o;
+    subd_real p[3][3];
+    uint64_t id[3];
+    uint32_t j, i;
+    s48_win w;
+    s48_lev(s, k, &w);
+    for (j = 0; j < 3u; j++) id[j] = s48_vid(&w, w.tv[3u * t + j]);
+    for (j = 0; j < 3u; j++)
+        if (!s48_finest(s, k, t, id[j], p[j])) return 0;
+    o = (subd_tri *)subd_stream_q_put(q);
+    if (!o) return 0;
+    for (j = 0; j < 3u; j++) {
+        for (i = 0; i < 3u; i++) {
+            o->pos[j][i] = p[j][i];
+            o->normal[j][i] = 0;
+        }
+        o->id[j] = id[j];
+    }
+    o->face = s->t0;
+    o->level = k;
+    *stop = subd_stream_q_commit(q);
+    return 1;
+}
+
 /* One batch: the next one or two triangles of the depth-first walk; q->ended after the last
  * level-0 triangle. */
 static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
@@ -653,6 +826,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             return SUBD_OK;
         }
         if (!s->built) {
+            if (s->adapt && !s48_level0_lin(s, s->t0)) goto fail;
             if (!s48_build0(s, s->t0)) goto fail;
             s->k = 0;
             s->built = 1;
@@ -666,6 +840,17 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             }
         }
         s48_lev(s, s->k, &w);
+        if (s->adapt && w.hd[5] == 0u && !s48_wants(s, &w, w.hd[2], s->k)) {
+            /* a leaf below max_level */
+            if (!s48_emit_leaf(s, s->k, w.hd[2], q, &stop)) goto fail;
+            if (s->k == 0u) {
+                s->t0++;
+                s->built = 0;
+            } else {
+                s->k--;
+            }
+            return stop;
+        }
         if (s->k + 1u == s->levels) {
             s48_x(s, &x);
             if (!s48_refine(s, &w, s->k, &x)) goto fail;
@@ -717,17 +902,20 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     int st;
     if (!a || !str) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = s48_check(base, o, &val)) != SUBD_OK) return subd_entry_fail(&e, st);
-    if ((st = s48_layout(0, o->adapt.max_level, val, &s, &ring, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
+    if ((st = s48_layout(0, o->adapt.max_level, val, o->adapt.mode != SUBD_ADAPT_UNIFORM, &s, &ring, &bytes)) != SUBD_OK)
+        return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(a)) {
         d->bytes_needed = bytes;
         return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    (void)s48_layout(a, o->adapt.max_level, val, &s, &ring, &bytes); /* fits */
+    (void)s48_layout(a, o->adapt.max_level, val, o->adapt.mode != SUBD_ADAPT_UNIFORM, &s, &ring, &bytes); /* fits */
     s->impl.step = s48_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;
     s->base = base;
     s->levels = o->adapt.max_level;
+    s->adapt = o->adapt.mode != SUBD_ADAPT_UNIFORM ? 1u : 0u;
+    s->ad = o->adapt;
     s->smooth = (base->flags & SUBD_SR48_NO_SMOOTH) ? 0u : 1u;
     s->nv0 = base->num_verts;
     s->n0 = base->level_tri[1];

@@ -16,6 +16,8 @@
 #include "corpus.h"
 #if H_HOST
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #define T_NOTE(...) printf(__VA_ARGS__)
 #else
 #define T_NOTE(...) ((void)0)
@@ -481,11 +483,190 @@ static void sr48s_base(void)
     (void)mark;
 }
 
+
+/* ------------------------------------------------------------------------------------ */
+/* Adaptive cuts (POINT, PLANE): the stream's triangles are subd_sr48_extract's, as a set
+ * (the stream is depth first, the extraction by level): each streamed triangle is found
+ * among the extraction's faces by its corner bits, every face exactly once; ids are a
+ * bijection onto the extraction's vertices (so welding by id gives the extraction's mesh,
+ * which is closed for a closed input). */
+#define AD_MAXF 4096u
+static subd_real real_of(double x)
+{
+#if SUBD_FIXED
+    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
+#else
+    return (float)x;
+#endif
+}
+static uint64_t g_fkey[2u * AD_MAXF];
+static uint8_t g_fhit[AD_MAXF];
+static uint32_t g_skipped;
+
+static uint64_t ad_key(const subd_real *p0, const subd_real *p1, const subd_real *p2)
+{
+    uint64_t h = 1469598103934665603u;
+    const subd_real *p[3];
+    uint32_t i, j;
+    p[0] = p0; p[1] = p1; p[2] = p2;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) {
+            h ^= subd_real_bits(p[i][j]);
+            h *= 1099511628211u;
+        }
+    return h;
+}
+static int ad_cmp(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int ad_tri(void *ctx, const subd_tri *t)
+{
+    cmp_ctx *c = (cmp_ctx *)ctx;
+    const subd_mesh *m = c->m;
+    uint64_t k[2];
+    const uint64_t *r;
+    uint32_t i, q, f;
+    k[0] = ad_key(t->pos[0], t->pos[1], t->pos[2]);
+    r = (const uint64_t *)bsearch(k, g_fkey, m->num_faces, 2u * sizeof(uint64_t), ad_cmp);
+    c->j++;
+    if (!r) {
+        c->bad++;
+        return 0;
+    }
+    f = (uint32_t)r[1];
+    if (g_fhit[f]++) c->bad++;
+    for (i = 0; i < 3u; i++) {
+        uint32_t v = m->corner_vert[3u * f + i];
+        for (q = 0; q < 3u; q++)
+            if (!h_same(t->pos[i][q], m->pos[3u * v + q])) c->bad++;
+        if (c->have[v] && c->id[v] != t->id[i]) c->bad++;
+        c->have[v] = 1;
+        c->id[v] = t->id[i];
+    }
+    return 0;
+}
+
+static void ad_case(int shape, uint32_t levels, uint32_t flags, const subd_adapt *ad0, uint32_t *faces, uint32_t *uni)
+{
+    subd_arena a, sa;
+    subd_mesh in, out;
+    subd_sr48 h, base;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_adapt_report rep;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan = 0, i;
+    subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+    if (!make_shape(shape, &a, &in)) return;
+    o.steps = levels;
+    o.flags = flags;
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    so.adapt = *ad0;
+    so.adapt.max_level = levels;
+    if (!CHECK_EQ(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), SUBD_OK)) return;
+    CHECK_EQ(rep.forced_splits, 0u); /* nested: the cut is the diamonds that ask */
+    if (!CHECK(out.num_verts <= MAXV && out.num_faces <= AD_MAXF)) return;
+    for (i = 0; i < out.num_faces; i++) {
+        const uint32_t *cv = out.corner_vert + 3u * i;
+        g_fkey[2u * i] = ad_key(out.pos + 3u * cv[0], out.pos + 3u * cv[1], out.pos + 3u * cv[2]);
+        g_fkey[2u * i + 1u] = i;
+        g_fhit[i] = 0;
+    }
+    qsort(g_fkey, out.num_faces, 2u * sizeof(uint64_t), ad_cmp);
+    /* faces are matched by their corner bits: a cut with two faces at the same corner
+     * positions (the smoothed tetrahedron's coarse cuts have coincident vertices) cannot
+     * be matched this way and is left out */
+    for (i = 1; i < out.num_faces; i++)
+        if (g_fkey[2u * i] == g_fkey[2u * i - 2u]) {
+            g_skipped++;
+            return;
+        }
+    if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+    if (!CHECK(plan <= ST_ARENA)) return;
+    subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
+    g_cc.m = &out;
+    g_cc.j = 0;
+    g_cc.bad = 0;
+    for (i = 0; i < out.num_verts; i++) g_cc.have[i] = 0;
+    sink.tri = ad_tri;
+    sink.ctx = &g_cc;
+    subd_arena_reset_peak(&sa);
+    if (!CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), SUBD_OK)) {
+        T_NOTE("shape %d levels %u flags %u mode %u: status %d face %u\n", shape, levels, flags,
+               (unsigned)ad0->mode, d.status, d.face);
+        return;
+    }
+    CHECK_EQ(sa.peak, plan);
+    CHECK_EQ(plan, SUBD_SR48_STREAM_ADAPT_BYTES(levels, base_valence(&base)));
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    CHECK_EQ(g_cc.j, out.num_faces);
+    if (!CHECK_EQ(g_cc.bad, 0u))
+        T_NOTE("shape %d levels %u flags %u mode %u\n", shape, levels, flags, (unsigned)ad0->mode);
+    for (i = 0; i < out.num_faces; i++) CHECK_EQ(g_fhit[i], 1u);
+    for (i = 0; i < out.num_verts; i++) CHECK(g_cc.have[i]);
+    CHECK(ids_distinct(&g_cc, out.num_verts));
+    CHECK_EQ(out.num_boundary_edges == 0u, in.num_boundary_edges == 0u);
+    *faces += out.num_faces;
+    *uni += rep.uniform_faces;
+}
+
+static void sr48s_adaptive(void)
+{
+    static const int shapes[6] = {S_TET, S_CUBE, S_ICO, S_TWO, S_TORUS, S_GRID};
+    static const uint32_t maxl[6] = {5, 4, 3, 5, 3, 1};
+    subd_adapt ad;
+    uint32_t si, l, f, m, faces = 0, uni = 0;
+    for (m = 0; m < 3u; m++) {
+        memset(&ad, 0, sizeof ad);
+        if (m == 0u) {
+            ad.mode = SUBD_ADAPT_PLANE;
+            ad.point[0] = real_of(0.1);
+            ad.normal[0] = real_of(1); ad.normal[1] = real_of(0.5); ad.normal[2] = real_of(0.25);
+        } else {
+            ad.mode = SUBD_ADAPT_POINT;
+            ad.point[0] = real_of(0.5); ad.point[1] = real_of(0.4); ad.point[2] = real_of(m == 1u ? 0.3 : -2);
+            ad.radius = real_of(m == 1u ? 0.15 : 0.6);
+        }
+        for (si = 0; si < 6u; si++)
+            for (f = 0; f < 2u; f++)
+                for (l = 0; l <= maxl[si]; l++) ad_case(shapes[si], l, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad, &faces, &uni);
+    }
+    /* the cuts are adaptive: fewer faces than the uniform ones */
+    CHECK(faces > 0u && faces < uni);
+    /* not streamed yet: RAMP, POINT's default radius, CALLBACK, CHORD (SUBD_ERR_PARAM) */
+    {
+        subd_arena a;
+        subd_mesh in;
+        subd_sr48 base;
+        subd_sr48_stream_opts so;
+        subd_diag d;
+        uint32_t plan = 0;
+        static const subd_adapt_mode no[4] = {SUBD_ADAPT_RAMP, SUBD_ADAPT_POINT, SUBD_ADAPT_CALLBACK, SUBD_ADAPT_CHORD};
+        subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+        if (!make_shape(S_CUBE, &a, &in) || !CHECK_EQ(subd_sr48_base(&a, &in, 0, &base, &d), SUBD_OK)) return;
+        for (m = 0; m < 4u; m++) {
+            memset(&so, 0, sizeof so);
+            so.adapt.mode = no[m];
+            so.adapt.max_level = 3;
+            so.adapt.eps = real_of(0.01);
+            CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
+        }
+    }
+    CHECK(g_skipped < 8u);
+    T_NOTE("adaptive stream = extraction on %u faces (%u cuts with coincident faces left out)\n", faces, g_skipped);
+}
+
 const test_case suite_sr48_stream[] = {
     {"sr48s_base", sr48s_base},
     {"sr48s_plan_exhaustive", sr48s_plan_exhaustive},
     {"sr48s_errors", sr48s_errors},
     {"sr48s_uniform", sr48s_uniform},
     {"sr48s_valence", sr48s_valence},
+    {"sr48s_adaptive", sr48s_adaptive},
     {0, 0},
 };

@@ -84,6 +84,18 @@ typedef struct s48_win {
     subd_real *vl; /* adaptive modes: L (the level-0 interpolant) per vertex, else NULL */
 } s48_win;
 
+/* Window vertex sv of src as vertex dv of dst: position, id, flags and (adaptive) L. */
+static void s48_vcopy(const s48_win *dst, uint32_t dv, const s48_win *src, uint32_t sv)
+{
+    uint32_t j;
+    for (j = 0; j < 3u; j++) dst->vp[3u * dv + j] = src->vp[3u * sv + j];
+    dst->vid[2u * dv] = src->vid[2u * sv];
+    dst->vid[2u * dv + 1u] = src->vid[2u * sv + 1u];
+    dst->vf[dv] = src->vf[sv];
+    if (dst->vl)
+        for (j = 0; j < 3u; j++) dst->vl[3u * dv + j] = src->vl[3u * sv + j];
+}
+
 typedef struct s48_state {
     subd_stream_impl impl; /* first: stream.c's view */
     subd_stream_ring ring;
@@ -491,14 +503,7 @@ static int s48_refine(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint64_t off = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << k) - 1u);
     uint32_t i, j, nv = nvp, ovf = 0;
-    for (i = 0; i < nvp; i++) {
-        for (j = 0; j < 3u; j++) x->vp[3u * i + j] = p->vp[3u * i + j];
-        x->vid[2u * i] = p->vid[2u * i];
-        x->vid[2u * i + 1u] = p->vid[2u * i + 1u];
-        x->vf[i] = p->vf[i];
-        if (x->vl)
-            for (j = 0; j < 3u; j++) x->vl[3u * i + j] = p->vl[3u * i + j];
-    }
+    for (i = 0; i < nvp; i++) s48_vcopy(x, i, p, i);
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
         uint16_t nb = p->tn[3u * i], m;
@@ -638,12 +643,7 @@ static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
     for (i = 0; i < nv; i++) {
         uint16_t v = s->vmap[i];
         if (v == S48_OUT) continue;
-        for (j = 0; j < 3u; j++) w->vp[3u * v + j] = x->vp[3u * i + j];
-        w->vid[2u * v] = x->vid[2u * i];
-        w->vid[2u * v + 1u] = x->vid[2u * i + 1u];
-        w->vf[v] = x->vf[i];
-        if (w->vl)
-            for (j = 0; j < 3u; j++) w->vl[3u * v + j] = x->vl[3u * i + j];
+        s48_vcopy(w, v, x, i);
     }
     for (i = 0; i < nt; i++) {
         uint16_t t = s->tmap[i];

@@ -12,12 +12,13 @@
  *  - the pull form in batches of 1, 7 and 100 gives the same triangles as the push form;
  *  - the plan equals the peak, every smaller arena fails with SUBD_ERR_NOMEM (bytes_needed =
  *    the plan, nothing emitted, arena unchanged); bad parameters; a sink's stop value. */
+#include <stdlib.h> /* qsort, bsearch: a lookup table of the extraction's faces (ties are
+                       * faces with identical corners, which the test counts, not a result) */
+#include <string.h>
 #include "harness.h"
 #include "corpus.h"
 #if H_HOST
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 #define T_NOTE(...) printf(__VA_ARGS__)
 #else
 #define T_NOTE(...) ((void)0)

@@ -22,7 +22,7 @@ qemu/run.sh "$m" "$d/selftest2.elf" 60 > "$d/selftest2.log" 2>&1; rc=$?
 expect "HardFault fails" nonzero $rc
 grep -q HARDFAULT "$d/selftest2.log"; expect "HardFault is reported" 0 $?
 qemu/run.sh "$m" "$d/selftest3.elf" 3 >/dev/null 2>&1; expect "hang times out" 124 $?
-qemu/run.sh "$m" "$d/test-fail.elf" 120 > "$d/test-fail.log" 2>&1; expect "injected CHECK failure fails the suite" 1 $?
+qemu/run.sh "$m" "$d/test-fail.elf" 600 > "$d/test-fail.log" 2>&1; expect "injected CHECK failure fails the suite" 1 $?
 grep -Eq '^[0-9]+ passed, 1 failed$' "$d/test-fail.log"; expect "injected failure is counted" 0 $?
 "$here/summary.sh" "$d/test-fail.log" >/dev/null 2>&1; expect "summary fails on it" nonzero $?
 echo "$pass passed, $fail failed"

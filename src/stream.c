@@ -27,13 +27,11 @@ void subd_stream_start(subd_stream *s, subd_arena *a, uint32_t mark, uint32_t ki
     subd_diag_clear(&s->diag);
 }
 
-/* Items are whole 32-bit words (subd_tri 104 bytes, subd_point 40), 4-aligned. */
+/* One item, copied as its own type (struct assignment: no aliasing through other types). */
 static void copy_item(uint8_t *dst, const uint8_t *src, uint32_t size)
 {
-    uint32_t *d = (uint32_t *)(void *)dst;
-    const uint32_t *x = (const uint32_t *)(const void *)src;
-    uint32_t i;
-    for (i = 0; i < size / 4u; i++) d[i] = x[i];
+    if (size == (uint32_t)sizeof(subd_tri)) *(subd_tri *)(void *)dst = *(const subd_tri *)(const void *)src;
+    else *(subd_point *)(void *)dst = *(const subd_point *)(const void *)src;
 }
 
 void *subd_stream_q_put(subd_stream_q *q)

@@ -1,5 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming semi-regular 4-8 refinement (paper: semi-regular-4-8-refinement-box-splines.txt,
+ * Length (~940 lines): the window (refine, smooth, crop, descent to the finest level) and
+ * the stream driver (plan, begin, step, adaptive decisions) share one window layout; the
+ * split into sr48_window.c and sr48_stream.c is open work (issue 19, item 7).
  * sections 4 and 6): the triangles of subd_sr48_extract's uniform cut of
  * subd_sr48_build's hierarchy, handed out one at a time through the common stream
  * interface (include/subd.h "Streams", src/stream.c), in memory that depends on the level

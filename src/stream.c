@@ -188,14 +188,21 @@ static int run_push(subd_stream *s, void *item, uint32_t kind, const subd_tri_si
     return st;
 }
 
+/* The push form's one item: a union so that it is as large as either kind (copy_item's
+ * branches see one object size whichever kind it is called with once inlined). */
+typedef union {
+    subd_tri t;
+    subd_point p;
+} stream_item;
+
 int subd_stream_run_tris(subd_stream *s, const subd_tri_sink *sink, subd_diag *diag)
 {
-    subd_tri t;
-    return run_push(s, &t, SUBD_STREAM_TRIS, sink, 0, diag);
+    stream_item it;
+    return run_push(s, &it.t, SUBD_STREAM_TRIS, sink, 0, diag);
 }
 
 int subd_stream_run_points(subd_stream *s, const subd_point_sink *sink, subd_diag *diag)
 {
-    subd_point p;
-    return run_push(s, &p, SUBD_STREAM_POINTS, 0, sink, diag);
+    stream_item it;
+    return run_push(s, &it.p, SUBD_STREAM_POINTS, 0, sink, diag);
 }

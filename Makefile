@@ -221,8 +221,10 @@ deps:
 
 # ------------------------------------------------------------------ make test
 L := $(B)/logs
+# The build runs one job per core (make test is run without -j by CI and by users).
+NPROC := $(shell nproc 2>/dev/null || echo 2)
 test: deps
-	@$(MAKE) --no-print-directory test-build
+	@$(MAKE) --no-print-directory -j$(NPROC) test-build
 	@$(MAKE) --no-print-directory test-run
 
 # make test-host: the quick loop, host float and fixed tests only (ASan+UBSan), no QEMU.
@@ -239,10 +241,10 @@ test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/te
 
 test-run:
 	@rm -rf $(L) && mkdir -p $(L)
-	@test/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf
-	@test/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
-	@test/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf 600
-	@test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf 600
+	@test/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf & \
+	 test/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
+	@test/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf 600 & \
+	 test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf 600 & wait
 	@test/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
 	@test/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
 	@if $(GNU_RUNS); then \
@@ -254,12 +256,12 @@ test-run:
 	    $(CM_OBJDUMP) $(B)/m4f-gnu/libsubd.a $(B)/host-gnu/src
 	@test/run_suite.sh "link proofs m4f-float" $(L)/link-m4f.log test/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
 	@test/run_suite.sh "link proofs m3-fixed" $(L)/link-m3.log test/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
-	@test/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/harness_selftest.sh mps2-an386 $(B)/m4f-float
-	@test/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/harness_selftest.sh mps2-an385 $(B)/m3-fixed
-	@test/run_suite.sh "subd tool" $(L)/tool.log test/tool_test.sh $(B)/bin
-	@test/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/cpp_test.sh $(B)
-	@test/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS)
-	@test/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS)
+	@test/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/harness_selftest.sh mps2-an386 $(B)/m4f-float & \
+	 test/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/harness_selftest.sh mps2-an385 $(B)/m3-fixed & wait
+	@test/run_suite.sh "subd tool" $(L)/tool.log test/tool_test.sh $(B)/bin & \
+	 test/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/cpp_test.sh $(B) & wait
+	@test/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS) & \
+	 test/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS) & wait
 	@test/run_suite.sh "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/cmake_test.sh $(B)
 	@test/run_suite.sh "amalgamation host-float tests" $(L)/amalg-float.log $(B)/amalg-float/test.elf & \
 	 test/run_suite.sh "amalgamation host-fixed tests" $(L)/amalg-fixed.log $(B)/amalg-fixed/test.elf & wait

@@ -221,6 +221,9 @@ deps:
 
 # ------------------------------------------------------------------ make test
 L := $(B)/logs
+# Seconds one device test image may run under QEMU (about 150 s on an idle core; raise it on a
+# loaded machine: make test QEMU_TIMEOUT=1800).
+QEMU_TIMEOUT ?= 600
 # The build runs one job per core (make test is run without -j by CI and by users).
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 test: deps
@@ -243,8 +246,8 @@ test-run:
 	@rm -rf $(L) && mkdir -p $(L)
 	@test/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf & \
 	 test/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
-	@test/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf 600 & \
-	 test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf 600 & wait
+	@test/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf $(QEMU_TIMEOUT) & \
+	 test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf $(QEMU_TIMEOUT) & wait
 	@test/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
 	@test/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
 	@if $(GNU_RUNS); then \

@@ -311,7 +311,7 @@ typedef struct run_ctx {
     subd_diag diag;
     subd_mesh out;
     subd_loop_opts lo;
-    subd_q48_opts qo;
+    subd_quasi48_opts qo;
     subd_alpha_opts ao;
     subd_pia_opts po;
     subd_pia_result pr;
@@ -828,7 +828,7 @@ static void section_q48(void)
             c.kind = RUN_Q48;
             c.in = &m->hm.mesh;
             c.qo.steps = steps_list[s];
-            c.qo.boundary = SUBD_Q48_BOUNDARY_FIXED;
+            c.qo.boundary = SUBD_QUASI48_BOUNDARY_FIXED;
             c.qo.flags = 0;
             c.qo.len_bits = 0;
             if (!stepped_case(&c, m->name, c.qo.steps, &ns, &runs)) continue;
@@ -1407,7 +1407,7 @@ static void section_quality(void)
         q.kind = RUN_Q48;
         q.in = &m->hm.mesh;
         q.qo.steps = 8;
-        q.qo.boundary = SUBD_Q48_BOUNDARY_FIXED;
+        q.qo.boundary = SUBD_QUASI48_BOUNDARY_FIXED;
         l.kind = RUN_LOOP;
         l.in = &m->hm.mesh;
         l.lo.levels = 4;

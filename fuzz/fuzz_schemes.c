@@ -384,7 +384,7 @@ static void pia_ok(void *x, subd_arena *a, int first)
 
 /* ---------------------------------------------------------------- quasi 4-8 */
 typedef struct q48_ctx {
-    subd_q48_opts o;
+    subd_quasi48_opts o;
     subd_mesh out;
 } q48_ctx;
 static int q48_run(void *x, subd_arena *a, subd_diag *d)
@@ -405,10 +405,10 @@ static int neg_overflows(subd_real x)
 
 /* subd_quasi48 on `in` with c's options but boundary mode b, in an arena of its plan; the
  * output is copied to malloc'd arrays (*pos, *cv; free them) and the status returned. */
-static int q48_again(const q48_ctx *c, const subd_mesh *in, subd_q48_boundary b, subd_mesh *out, subd_real **pos,
+static int q48_again(const q48_ctx *c, const subd_mesh *in, subd_quasi48_boundary b, subd_mesh *out, subd_real **pos,
                      uint32_t **cv)
 {
-    subd_q48_opts o = c->o;
+    subd_quasi48_opts o = c->o;
     o.boundary = b;
     uint32_t plan = 0;
     int st = subd_quasi48_plan(in, &o, &plan, 0);
@@ -440,14 +440,14 @@ static void q48_ok(void *x, subd_arena *a, int first)
     fz_validate_mesh(o, 1, "subd_quasi48 output");
     /* the bounds of subd_quasi48.h; vertex i of the input is vertex i of the output, and
      * without smoothing nothing moves */
-    FZ_CHECK(o->num_faces <= SUBD_Q48_MAX_FACES(g_in.num_faces, c->o.steps), "quasi48 face bound", o->num_faces, 0);
-    FZ_CHECK(o->num_verts <= SUBD_Q48_MAX_VERTS(g_in.num_verts, g_in.num_faces, c->o.steps), "quasi48 vertex bound",
+    FZ_CHECK(o->num_faces <= SUBD_QUASI48_MAX_FACES(g_in.num_faces, c->o.steps), "quasi48 face bound", o->num_faces, 0);
+    FZ_CHECK(o->num_verts <= SUBD_QUASI48_MAX_VERTS(g_in.num_verts, g_in.num_faces, c->o.steps), "quasi48 vertex bound",
              o->num_verts, 0);
     FZ_CHECK(o->num_verts >= g_in.num_verts, "quasi48 keeps the input vertices", o->num_verts, g_in.num_verts);
-    if (c->o.flags & SUBD_Q48_NO_SMOOTH)
+    if (c->o.flags & SUBD_QUASI48_NO_SMOOTH)
         FZ_CHECK(memcmp(o->pos, g_in.pos, (size_t)g_in.num_verts * 3u * sizeof(subd_real)) == 0,
                  "quasi48 NO_SMOOTH keeps the input positions", 0, 0);
-    if (!first || c->o.boundary != SUBD_Q48_BOUNDARY_NORMAL)
+    if (!first || c->o.boundary != SUBD_QUASI48_BOUNDARY_NORMAL)
         return;
     subd_mesh o2;
     subd_real *pos2;
@@ -456,8 +456,8 @@ static void q48_ok(void *x, subd_arena *a, int first)
     int planar = 1;
     for (uint32_t v = 0; v < g_in.num_verts; v++)
         planar &= subd_real_bits(g_in.pos[3u * v + 2u]) == 0u;
-    if (planar && !(c->o.flags & SUBD_Q48_NO_SMOOTH)) {
-        int st = q48_again(c, &g_in, SUBD_Q48_BOUNDARY_FIXED, &o2, &pos2, &cv2);
+    if (planar && !(c->o.flags & SUBD_QUASI48_NO_SMOOTH)) {
+        int st = q48_again(c, &g_in, SUBD_QUASI48_BOUNDARY_FIXED, &o2, &pos2, &cv2);
         FZ_CHECK(st == SUBD_OK, "quasi48 planar: FIXED succeeds too", st, 0);
         FZ_CHECK(o2.num_verts == o->num_verts && o2.num_corners == o->num_corners, "quasi48 planar counts",
                  o2.num_verts, o->num_verts);
@@ -491,7 +491,7 @@ static void q48_ok(void *x, subd_arena *a, int first)
     FZ_CHECK(rin.num_corners == g_in.num_corners && rin.num_verts == g_in.num_verts, "rotated counts", 0, 0);
     memcpy(rin.vert_tag, g_in.vert_tag, g_in.num_verts); /* the same tags (crease angle: geometric) */
     memcpy(rin.edge_tag, g_in.edge_tag, g_in.num_corners);
-    st = q48_again(c, &rin, SUBD_Q48_BOUNDARY_NORMAL, &o2, &pos2, &cv2);
+    st = q48_again(c, &rin, SUBD_QUASI48_BOUNDARY_NORMAL, &o2, &pos2, &cv2);
     FZ_CHECK(st == SUBD_OK, "quasi48 rotated: succeeds too", st, 0);
     FZ_CHECK(o2.num_verts == o->num_verts && o2.num_corners == o->num_corners, "quasi48 rotated counts",
              o2.num_verts, o->num_verts);
@@ -904,7 +904,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     memset(&qc, 0, sizeof qc);
     qc.o.steps = u8(&c) % 5u;
     uint8_t qb = u8(&c); /* all three modes (FIXED, SMOOTH, NORMAL) and invalid ones */
-    qc.o.boundary = (subd_q48_boundary)(qb < 250u ? qb % 3u : qb & 1u ? 3u : 0x7fffffffu);
+    qc.o.boundary = (subd_quasi48_boundary)(qb < 250u ? qb % 3u : qb & 1u ? 3u : 0x7fffffffu);
     qc.o.flags = u8(&c) % 3u;
     qc.o.len_bits = u8(&c) % 56u;
     st = subd_quasi48_plan(&g_in, &qc.o, &plan, 0);

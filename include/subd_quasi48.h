@@ -17,18 +17,18 @@ extern "C" {
 
 /* Largest number of binary steps one call accepts. Two binary steps make one 4-8
  * refinement (face count x4, like one Loop level), hence twice SUBD_MAX_LEVELS. */
-#define SUBD_Q48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
+#define SUBD_QUASI48_MAX_STEPS (2u * SUBD_MAX_LEVELS)
 
 /* What smoothing does with boundary vertices (refinement is the same in every mode). */
-typedef enum subd_q48_boundary {
+typedef enum subd_quasi48_boundary {
     /* Boundary vertices never move; new boundary vertices are edge midpoints, so the
      * boundary polygon keeps its shape (the paper's planar examples, figures 5-8). */
-    SUBD_Q48_BOUNDARY_FIXED = 0,
+    SUBD_QUASI48_BOUNDARY_FIXED = 0,
     /* The 1-D analogue of Algorithm 2 along each boundary curve: new boundary vertices are
      * the midpoints of their two boundary neighbours (pass 1), an old boundary vertex becomes
      * 1/2 own + 1/2 the average of its new boundary neighbours (pass 2; with both neighbours
      * new that is the cubic B-spline vertex rule 3/4, 1/8, 1/8). */
-    SUBD_Q48_BOUNDARY_SMOOTH = 1,
+    SUBD_QUASI48_BOUNDARY_SMOOTH = 1,
     /* Section 4.3: "boundary vertices are constrained to move along the surface normal
      * direction". An old boundary vertex p takes the interior rule's target t (1/2 p + 1/2
      * the average of all its new neighbours, both boundary ones included) and moves by the
@@ -41,39 +41,39 @@ typedef enum subd_q48_boundary {
      * mesh in z = 0 therefore gives bit for bit the FIXED result; a rotation by 90 degrees
      * about z (x, y) -> (-y, x) maps the output bit for bit (Q16.16: any rotation that
      * permutes and negates axes). */
-    SUBD_Q48_BOUNDARY_NORMAL = 2
-} subd_q48_boundary;
+    SUBD_QUASI48_BOUNDARY_NORMAL = 2
+} subd_quasi48_boundary;
 
-/* subd_q48_opts.flags */
-#define SUBD_Q48_NO_SMOOTH 0x1u /* refinement only (Algorithm 1 without Algorithm 2)      */
+/* subd_quasi48_opts.flags */
+#define SUBD_QUASI48_NO_SMOOTH 0x1u /* refinement only (Algorithm 1 without Algorithm 2)      */
 
-typedef struct subd_q48_opts {
-    uint32_t steps;              /* binary steps, 1..SUBD_Q48_MAX_STEPS                    */
-    subd_q48_boundary boundary;
+typedef struct subd_quasi48_opts {
+    uint32_t steps;              /* binary steps, 1..SUBD_QUASI48_MAX_STEPS                    */
+    subd_quasi48_boundary boundary;
     uint32_t flags;
     /* Length resolution of the edge sort: squared edge lengths are rounded to this many
      * significant bits (round to nearest) before they are compared, so edges whose lengths
      * differ only by the rounding of the arithmetic count as equal and go by the radial
-     * tie-break (see subd_quasi48). 0 = SUBD_Q48_LEN_BITS_DEFAULT; 1..53 accepted; 53
-     * (SUBD_Q48_LEN_BITS_EXACT) compares the squared lengths as computed (float32: the
+     * tie-break (see subd_quasi48). 0 = SUBD_QUASI48_LEN_BITS_DEFAULT; 1..53 accepted; 53
+     * (SUBD_QUASI48_LEN_BITS_EXACT) compares the squared lengths as computed (float32: the
      * float32 sum of the float32 squares of the coordinate differences, 24 bits; Q16.16:
      * the exact integer sum, exact for edges shorter than 1448 units, 53 bits beyond). */
     uint32_t len_bits;
-} subd_q48_opts;
+} subd_quasi48_opts;
 
-#define SUBD_Q48_LEN_BITS_DEFAULT 12u
-#define SUBD_Q48_LEN_BITS_EXACT 53u
+#define SUBD_QUASI48_LEN_BITS_DEFAULT 12u
+#define SUBD_QUASI48_LEN_BITS_EXACT 53u
 
 /* Upper bounds after `steps` binary steps of a triangle mesh with V vertices and F faces
  * (every split needs a face of its own, so one step adds at most F vertices and F faces):
  *   F_s <= 2^s F,   V_s <= V + (2^s - 1) F,   corners = 3 F_s. */
-#define SUBD_Q48_MAX_FACES(F, s) ((F) << (s))
-#define SUBD_Q48_MAX_VERTS(V, F, s) ((V) + (((F) << (s)) - (F)))
+#define SUBD_QUASI48_MAX_FACES(F, s) ((F) << (s))
+#define SUBD_QUASI48_MAX_VERTS(V, F, s) ((V) + (((F) << (s)) - (F)))
 
-/* subd_quasi48_opts_default: 2 binary steps, SUBD_Q48_BOUNDARY_FIXED, smoothing on,
- * len_bits SUBD_Q48_LEN_BITS_DEFAULT.
+/* subd_quasi48_opts_default: 2 binary steps, SUBD_QUASI48_BOUNDARY_FIXED, smoothing on,
+ * len_bits SUBD_QUASI48_LEN_BITS_DEFAULT.
  * Memory: none. Errors: none (NULL is ignored). Cost: O(1). */
-void subd_quasi48_opts_default(subd_q48_opts *o);
+void subd_quasi48_opts_default(subd_quasi48_opts *o);
 
 /* subd_quasi48_plan: the arena bytes subd_quasi48 uses for this input and options, in
  * *bytes (a bound: see Notes; the run never exceeds it).
@@ -95,7 +95,7 @@ void subd_quasi48_opts_default(subd_q48_opts *o);
  * (only for inputs with many isolated vertices). Everything is allocated before the first
  * step, so the measured peak equals the plan except in that case. subd_quasi48 refuses to
  * start unless that many bytes are free, so the run can never exceed the plan. */
-int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes, subd_diag *diag);
+int subd_quasi48_plan(const subd_mesh *in, const subd_quasi48_opts *o, uint32_t *bytes, subd_diag *diag);
 
 /* subd_quasi48: `steps` binary steps of quasi 4-8 subdivision of an all-triangle mesh,
  * into *out.
@@ -114,13 +114,13 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
  *     marked; so every face has at most one split edge. Every face with a split edge (a, b)
  *     and opposite vertex c becomes (a, m, c), kept at the face's index, and (m, b, c),
  *     appended in face order; faces without a split edge are copied unchanged.
- *  2. Algorithm 2 (smoothing, unless SUBD_Q48_NO_SMOOTH), in place: every new interior
+ *  2. Algorithm 2 (smoothing, unless SUBD_QUASI48_NO_SMOOTH), in place: every new interior
  *     vertex becomes the average of its (four) neighbours; then every old vertex becomes 1/2
  *     its position + 1/2 the average of its k new neighbours (k = 0: unchanged). Section 4.3:
  *     vertices tagged SUBD_VTAG_CORNER or SUBD_VTAG_FIXED, both ends of every
- *     SUBD_ETAG_CREASE edge and (SUBD_Q48_BOUNDARY_FIXED) boundary vertices do not move; new
+ *     SUBD_ETAG_CREASE edge and (SUBD_QUASI48_BOUNDARY_FIXED) boundary vertices do not move; new
  *     vertices on crease and boundary edges stay at the edge midpoint; see
- *     subd_q48_boundary for the smoothing mode.
+ *     subd_quasi48_boundary for the smoothing mode.
  * Vertex i of the input is vertex i of the output; a step's new vertices follow, in
  * split order (longest edge first). Crease tags pass to both halves of a split crease
  * edge; CORNER/FIXED tags stay with their vertices; polylines are copied. The output has
@@ -136,8 +136,22 @@ int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *byt
  * recursion; stack under 800 bytes (subd_quasi48's own frame, with every step inlined:
  * 464 / 656 bytes on Cortex-M4F / M3 (the normal mode's 64-bit projection is inlined), plus
  * at most 88 in pass 2 or 72 in the edge sort). */
-int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out,
+int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_quasi48_opts *o, subd_mesh *out,
                  subd_diag *d);
+
+/* The 0.3 names (subd_q48_*, SUBD_Q48_*), kept as aliases (deprecated, until 1.0): one
+ * name per scheme, quasi48, across its header, types, calls, file and tool command. */
+#define subd_q48_opts subd_quasi48_opts
+#define subd_q48_boundary subd_quasi48_boundary
+#define SUBD_Q48_BOUNDARY_FIXED SUBD_QUASI48_BOUNDARY_FIXED
+#define SUBD_Q48_BOUNDARY_NORMAL SUBD_QUASI48_BOUNDARY_NORMAL
+#define SUBD_Q48_BOUNDARY_SMOOTH SUBD_QUASI48_BOUNDARY_SMOOTH
+#define SUBD_Q48_NO_SMOOTH SUBD_QUASI48_NO_SMOOTH
+#define SUBD_Q48_LEN_BITS_DEFAULT SUBD_QUASI48_LEN_BITS_DEFAULT
+#define SUBD_Q48_LEN_BITS_EXACT SUBD_QUASI48_LEN_BITS_EXACT
+#define SUBD_Q48_MAX_STEPS SUBD_QUASI48_MAX_STEPS
+#define SUBD_Q48_MAX_FACES SUBD_QUASI48_MAX_FACES
+#define SUBD_Q48_MAX_VERTS SUBD_QUASI48_MAX_VERTS
 
 #ifdef __cplusplus
 }

@@ -31,7 +31,7 @@
  *    crease stays at the edge's midpoint, and both halves keep the crease tag, so a tagged
  *    polyline keeps its shape at every step.
  *  - Section 4.3, "boundary vertices are constrained to move along the surface normal
- *    direction": SUBD_Q48_BOUNDARY_NORMAL. The paper names neither the normal nor the
+ *    direction": SUBD_QUASI48_BOUNDARY_NORMAL. The paper names neither the normal nor the
  *    displacement: the displacement is the interior rule's (every new neighbour counts),
  *    the normal the area-weighted one of the vertex's faces in the step's input (read-only
  *    during pass 2, so the visiting order does not matter), and only the normal component
@@ -120,12 +120,12 @@ static int q48_layout_work(subd_arena *a, const q48_layout *L, q48_work *w, uint
     return subd_layout_end(&l, bytes);
 }
 
-static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
+static int q48_check(const subd_mesh *in, const subd_quasi48_opts *o, subd_diag *d)
 {
     int st;
-    if (!in || !o || o->steps < 1u || o->steps > SUBD_Q48_MAX_STEPS || o->len_bits > SUBD_Q48_LEN_BITS_EXACT ||
-        (o->boundary != SUBD_Q48_BOUNDARY_FIXED && o->boundary != SUBD_Q48_BOUNDARY_SMOOTH &&
-         o->boundary != SUBD_Q48_BOUNDARY_NORMAL))
+    if (!in || !o || o->steps < 1u || o->steps > SUBD_QUASI48_MAX_STEPS || o->len_bits > SUBD_QUASI48_LEN_BITS_EXACT ||
+        (o->boundary != SUBD_QUASI48_BOUNDARY_FIXED && o->boundary != SUBD_QUASI48_BOUNDARY_SMOOTH &&
+         o->boundary != SUBD_QUASI48_BOUNDARY_NORMAL))
         return subd_fail(d, SUBD_ERR_PARAM);
     if (!subd_topo_has(in, TOPO_IF_FACES | TOPO_TWIN | TOPO_VERT_OUT | TOPO_CORNER_FACE | TOPO_EDGE_TAG))
         return subd_fail(d, SUBD_ERR_PARAM);
@@ -134,7 +134,7 @@ static int q48_check(const subd_mesh *in, const subd_q48_opts *o, subd_diag *d)
     return SUBD_OK;
 }
 
-static int q48_plan(const subd_mesh *in, const subd_q48_opts *o, q48_layout *L, subd_diag *d)
+static int q48_plan(const subd_mesh *in, const subd_quasi48_opts *o, q48_layout *L, subd_diag *d)
 {
     uint32_t b, wb;
     int st;
@@ -151,7 +151,7 @@ static int q48_plan(const subd_mesh *in, const subd_q48_opts *o, q48_layout *L, 
     return SUBD_OK;
 }
 
-int subd_quasi48_plan(const subd_mesh *in, const subd_q48_opts *o, uint32_t *bytes, subd_diag *diag)
+int subd_quasi48_plan(const subd_mesh *in, const subd_quasi48_opts *o, uint32_t *bytes, subd_diag *diag)
 {
     subd_diag own, *d = subd_plan_begin(&own, diag);
     q48_layout L;
@@ -456,7 +456,7 @@ static void q48_smooth_normal(subd_mesh *o, const subd_mesh *m, uint32_t v, uint
     q48_project_normal(o->pos + 3u * v, t, n, ovf);
 }
 
-static int q48_smooth(subd_mesh *o, const subd_mesh *m, subd_q48_boundary bmode, const q48_work *w,
+static int q48_smooth(subd_mesh *o, const subd_mesh *m, subd_quasi48_boundary bmode, const q48_work *w,
                       subd_diag *d)
 {
     uint8_t *pin = w->vkeep;
@@ -467,7 +467,7 @@ static int q48_smooth(subd_mesh *o, const subd_mesh *m, subd_q48_boundary bmode,
     for (v = 0; v < nv_old; v++) {
         uint8_t t = o->vert_tag[v];
         pin[v] = (uint8_t)((t & fixed_bits) != 0 ||
-                           ((t & SUBD_VTAG_BOUNDARY) && bmode == SUBD_Q48_BOUNDARY_FIXED));
+                           ((t & SUBD_VTAG_BOUNDARY) && bmode == SUBD_QUASI48_BOUNDARY_FIXED));
     }
     for (h = 0; h < o->num_corners; h++) {
         if (o->edge_tag[h] & SUBD_ETAG_CREASE) { /* only old vertices are read below */
@@ -484,7 +484,7 @@ static int q48_smooth(subd_mesh *o, const subd_mesh *m, subd_q48_boundary bmode,
     for (c = 0; c < o->num_corners; c++) {
         v = o->corner_vert[c];
         if (v >= nv_old || pin[v] || o->vert_out[v] != c) continue;
-        if (bmode == SUBD_Q48_BOUNDARY_NORMAL && o->twin[c] == SUBD_NONE)
+        if (bmode == SUBD_QUASI48_BOUNDARY_NORMAL && o->twin[c] == SUBD_NONE)
             q48_smooth_normal(o, m, v, nv_old, &ovf);
         else
             (void)q48_pass2(o, v, nv_old, 1, o->pos + 3u * v, &ovf);
@@ -495,7 +495,7 @@ static int q48_smooth(subd_mesh *o, const subd_mesh *m, subd_q48_boundary bmode,
 
 /* ------------------------------------------------------------------------------------ */
 
-int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out, subd_diag *diag)
+int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_quasi48_opts *o, subd_mesh *out, subd_diag *diag)
 {
     subd_entry e;
     subd_diag *d = subd_entry_begin(&e, a, diag);
@@ -510,8 +510,8 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
     if ((st = q48_plan(in, o, &L, d)) != SUBD_OK) return subd_entry_fail(&e, st);
     d->bytes_needed = L.bytes;
     if (L.bytes > subd_arena_free_bytes(a)) return subd_entry_fail(&e, SUBD_ERR_NOMEM);
-    bits = o->len_bits ? o->len_bits : SUBD_Q48_LEN_BITS_DEFAULT;
-    smooth = !(o->flags & SUBD_Q48_NO_SMOOTH);
+    bits = o->len_bits ? o->len_bits : SUBD_QUASI48_LEN_BITS_DEFAULT;
+    smooth = !(o->flags & SUBD_QUASI48_NO_SMOOTH);
 
     st = subd_mesh_alloc_arrays(a, &L.out, &buf[0]);
     keep = subd_arena_mark(a);
@@ -533,11 +533,11 @@ int subd_quasi48(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, sub
     return subd_entry_ok(&e);
 }
 
-void subd_quasi48_opts_default(subd_q48_opts *o)
+void subd_quasi48_opts_default(subd_quasi48_opts *o)
 {
     if (!o) return;
     o->steps = 2;
-    o->boundary = SUBD_Q48_BOUNDARY_FIXED;
+    o->boundary = SUBD_QUASI48_BOUNDARY_FIXED;
     o->flags = 0;
-    o->len_bits = SUBD_Q48_LEN_BITS_DEFAULT;
+    o->len_bits = SUBD_QUASI48_LEN_BITS_DEFAULT;
 }

@@ -7,7 +7,7 @@
  *
  * Choices where the paper is silent:
  *  - find_clusters uses quasi 4-8's sort_edges and mark_cluster (src/edge_sort.c) with the
- *    default length resolution SUBD_Q48_LEN_BITS_DEFAULT (12 significant bits of the squared
+ *    default length resolution SUBD_QUASI48_LEN_BITS_DEFAULT (12 significant bits of the squared
  *    length, so lengths equal in exact arithmetic tie in both arithmetics and go by the
  *    radial numbering). Only interior edges can be a cluster diagonal: a boundary edge is
  *    skipped (not selected, nothing marked).
@@ -60,7 +60,7 @@ int subd_sr48_find_clusters(const subd_mesh *in, sr48_pre *w, uint32_t *clusters
 {
     uint32_t ne = subd_edge_number(in, &w->es, in->num_edges);
     if (ne != in->num_edges) return SUBD_ERR_PARAM; /* the mesh's summary does not match */
-    *clusters = subd_edge_clusters(in, &w->es, ne, SUBD_Q48_LEN_BITS_DEFAULT, 1, 0, w->sel);
+    *clusters = subd_edge_clusters(in, &w->es, ne, SUBD_QUASI48_LEN_BITS_DEFAULT, 1, 0, w->sel);
     return SUBD_OK;
 }
 

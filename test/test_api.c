@@ -7,6 +7,7 @@
  * (entry.h), checked here on calls that compute their need before they fail otherwise. */
 #include "harness.h"
 #include "corpus.h"
+#include "subd_quasi48.h"
 
 /* A quad then a triangle: the first non-triangle is face 0. */
 static const char mixed_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\nf 2 5 3\n";
@@ -46,7 +47,7 @@ static int p_pia(const subd_mesh *in, subd_diag *d, uint32_t *b)
 }
 static int p_q48(const subd_mesh *in, subd_diag *d, uint32_t *b)
 {
-    subd_q48_opts o;
+    subd_quasi48_opts o;
     subd_quasi48_opts_default(&o);
     return subd_quasi48_plan(in, &o, b, d);
 }
@@ -141,7 +142,23 @@ static void failure_has_no_need(void)
     CHECK_EQ(d.bytes_needed, 0);
 }
 
+/* The 0.3 quasi 4-8 names still compile and mean the new ones (deprecated aliases). */
+static void quasi48_old_names(void)
+{
+    subd_q48_opts o;
+    subd_quasi48_opts n;
+    subd_quasi48_opts_default(&o);
+    subd_quasi48_opts_default(&n);
+    CHECK(sizeof o == sizeof n);
+    CHECK_EQ(o.steps, n.steps);
+    CHECK_EQ((uint32_t)o.boundary, (uint32_t)SUBD_Q48_BOUNDARY_FIXED);
+    CHECK_EQ((uint32_t)SUBD_Q48_BOUNDARY_NORMAL, (uint32_t)SUBD_QUASI48_BOUNDARY_NORMAL);
+    CHECK_EQ(SUBD_Q48_NO_SMOOTH, SUBD_QUASI48_NO_SMOOTH);
+    CHECK_EQ(SUBD_Q48_MAX_FACES(3u, 2u), SUBD_QUASI48_MAX_FACES(3u, 2u));
+}
+
 const test_case suite_api[] = {
+    {"quasi48_old_names", quasi48_old_names},
     {"plans_fill_diag", plans_fill_diag},
     {"limit_opts", limit_opts},
     {"failure_has_no_need", failure_has_no_need},

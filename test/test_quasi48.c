@@ -19,11 +19,11 @@ static uint8_t g_big[BIG_BYTES] __attribute__((aligned(8)));
 static subd_real g_pos[3 * MAXV];
 static uint32_t g_idx[3 * MAXF];
 
-static subd_q48_opts opts(uint32_t steps, uint32_t flags)
+static subd_quasi48_opts opts(uint32_t steps, uint32_t flags)
 {
-    subd_q48_opts o;
+    subd_quasi48_opts o;
     o.steps = steps;
-    o.boundary = SUBD_Q48_BOUNDARY_FIXED;
+    o.boundary = SUBD_QUASI48_BOUNDARY_FIXED;
     o.flags = flags;
     o.len_bits = 0;
     return o;
@@ -92,7 +92,7 @@ static void grid_list(subd_face_list *fl, uint32_t n)
     fl->line_size = fl->line_index = 0;
 }
 
-static int run(subd_arena *a, const subd_mesh *in, const subd_q48_opts *o, subd_mesh *out)
+static int run(subd_arena *a, const subd_mesh *in, const subd_quasi48_opts *o, subd_mesh *out)
 {
     subd_diag d;
     int st = subd_quasi48(a, in, o, out, &d);
@@ -200,12 +200,12 @@ static void check_step(const subd_mesh *a, const subd_mesh *b, int refine_only)
  * last one, *mesh receives the final mesh (in arena a). */
 static uint32_t stepwise(subd_arena *a, const subd_mesh *in, uint32_t steps, uint32_t flags, subd_mesh *mesh)
 {
-    subd_q48_opts o = opts(1, flags);
+    subd_quasi48_opts o = opts(1, flags);
     subd_mesh cur = *in, nxt;
     uint32_t s;
     for (s = 0; s < steps; s++) {
         if (!run(a, &cur, &o, &nxt)) return 0;
-        check_step(&cur, &nxt, (flags & SUBD_Q48_NO_SMOOTH) != 0);
+        check_step(&cur, &nxt, (flags & SUBD_QUASI48_NO_SMOOTH) != 0);
         cur = nxt;
     }
     *mesh = cur;
@@ -218,12 +218,12 @@ static void q48_regular_polygons(void)
 {
     uint32_t n, pass, hashes = 2166136261u;
     for (pass = 0; pass < 2; pass++) {
-        uint32_t flags = pass ? 0u : SUBD_Q48_NO_SMOOTH;
+        uint32_t flags = pass ? 0u : SUBD_QUASI48_NO_SMOOTH;
         for (n = 3; n <= 6; n++) {
             subd_arena a;
             subd_face_list fl;
             subd_mesh in, m1, m4, once;
-            subd_q48_opts o = opts(4, flags);
+            subd_quasi48_opts o = opts(4, flags);
             uint32_t want = n == 6 ? 6u : 2u * n;
             subd_arena_init(&a, g_big, BIG_BYTES);
             fan_list(&fl, n, 0, 0);
@@ -282,7 +282,7 @@ static void q48_polygons_9_12(void)
 {
     uint32_t pass;
     for (pass = 0; pass < 2; pass++) {
-        uint32_t flags = pass ? 0u : SUBD_Q48_NO_SMOOTH, s;
+        uint32_t flags = pass ? 0u : SUBD_QUASI48_NO_SMOOTH, s;
         subd_arena a;
         subd_face_list fl;
         subd_mesh in, m, cur;
@@ -319,7 +319,7 @@ static void q48_warped_hexagon(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, m;
-    subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
+    subd_quasi48_opts o = opts(1, SUBD_QUASI48_NO_SMOOTH);
     uint32_t f, ovf = 0;
     subd_arena_init(&a, g_big, BIG_BYTES);
     fan_list(&fl, 6, 0, R(-1, 3));
@@ -369,7 +369,7 @@ static void q48_perturbed_hexagon(void)
             subd_arena a;
             subd_face_list fl;
             subd_mesh in;
-            subd_q48_opts o = opts(4, SUBD_Q48_NO_SMOOTH), o1 = opts(1, SUBD_Q48_NO_SMOOTH);
+            subd_quasi48_opts o = opts(4, SUBD_QUASI48_NO_SMOOTH), o1 = opts(1, SUBD_QUASI48_NO_SMOOTH);
             uint32_t v1, v4;
             subd_arena_init(&a, g_big + amp * (BIG_BYTES / 2u), BIG_BYTES / 2u);
             fan_list(&fl, 6, rad[amp], 0);
@@ -440,7 +440,7 @@ static void q48_torus(void)
                 /* one call of 4 steps gives the same mesh; report plan and peak */
                 subd_arena b;
                 subd_mesh once;
-                subd_q48_opts o4 = opts(4, 0);
+                subd_quasi48_opts o4 = opts(4, 0);
                 uint32_t plan = 0;
                 subd_arena_init(&b, g_big + BIG_BYTES / 2u, BIG_BYTES / 2u);
                 CHECK_EQ(subd_quasi48_plan(&in, &o4, &plan, 0), SUBD_OK);
@@ -477,7 +477,7 @@ static void q48_smoothing(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, m, in2, m2;
-    subd_q48_opts o = opts(3, 0);
+    subd_quasi48_opts o = opts(3, 0);
     uint32_t v, k, ovf = 0, c;
     static subd_real pos2[3 * 64];
 #if SUBD_FIXED
@@ -528,7 +528,7 @@ static void q48_tags_and_boundary(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, m;
-    subd_q48_opts o = opts(2, 0);
+    subd_quasi48_opts o = opts(2, 0);
     uint32_t v, h, moved = 0, ovf = 0;
     subd_real p0[3];
     /* torus with a fixed vertex, a corner and a crease loop (a meridian j = 0 ring) */
@@ -570,7 +570,7 @@ static void q48_tags_and_boundary(void)
     h_hash("q48_torus_tags", h_mesh_hash(&m));
     { /* the same two steps one at a time, each checked against the builder (tags included) */
         subd_mesh cur = in, nxt;
-        subd_q48_opts o1 = opts(1, 0);
+        subd_quasi48_opts o1 = opts(1, 0);
         uint32_t s;
         for (s = 0; s < 2u; s++) {
             if (!run(&a, &cur, &o1, &nxt)) return;
@@ -584,14 +584,14 @@ static void q48_tags_and_boundary(void)
      * 1/2 own + 1/2 their average; new boundary vertices stay on the boundary edge */
     {
         subd_mesh g0, g, g1;
-        subd_q48_opts o1 = opts(1, 0);
+        subd_quasi48_opts o1 = opts(1, 0);
         uint32_t checked = 0;
 #if SUBD_FIXED
         subd_real tol = 2;
 #else
         subd_real tol = 1e-6f;
 #endif
-        o1.boundary = SUBD_Q48_BOUNDARY_SMOOTH;
+        o1.boundary = SUBD_QUASI48_BOUNDARY_SMOOTH;
         grid_list(&fl, 3);
         /* the first step splits the diagonals only; the second splits boundary edges */
         if (!h_build(&a, &fl, &g0) || !run(&a, &g0, &o1, &g) || !run(&a, &g, &o1, &g1)) return;
@@ -661,10 +661,10 @@ static void tube_list(subd_face_list *fl, uint32_t nseg)
     fl->line_size = fl->line_index = 0;
 }
 
-static subd_q48_opts opts_normal(uint32_t steps)
+static subd_quasi48_opts opts_normal(uint32_t steps)
 {
-    subd_q48_opts o = opts(steps, 0);
-    o.boundary = SUBD_Q48_BOUNDARY_NORMAL;
+    subd_quasi48_opts o = opts(steps, 0);
+    o.boundary = SUBD_QUASI48_BOUNDARY_NORMAL;
     return o;
 }
 
@@ -676,7 +676,7 @@ static void q48_normal_planar(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, mf, mn;
-    subd_q48_opts of = opts(3, 0), on = opts_normal(3);
+    subd_quasi48_opts of = opts(3, 0), on = opts_normal(3);
     uint32_t v, c;
     subd_arena_init(&a, g_big, BIG_BYTES);
     grid_list(&fl, 4);
@@ -788,7 +788,7 @@ static void q48_normal_box(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, cur, nxt, m, m2, in2;
-    subd_q48_opts o1 = opts_normal(1), o3 = opts_normal(3);
+    subd_quasi48_opts o1 = opts_normal(1), o3 = opts_normal(3);
     uint32_t s, moved = 0, v, c, axis;
     double worst = 0.0;
     static subd_real pos2[3 * 64];
@@ -847,7 +847,7 @@ static void q48_normal_range(void)
     subd_face_list fl;
     subd_mesh in, out, out0;
     subd_diag d;
-    subd_q48_opts of = opts(1, 0), on = opts_normal(1);
+    subd_quasi48_opts of = opts(1, 0), on = opts_normal(1);
     uint32_t i, mark, ovf = 0;
     for (i = 0; i < 12u; i++) {
 #if SUBD_FIXED
@@ -877,7 +877,7 @@ static void q48_hexfan_file(void)
     subd_arena a;
     subd_mesh in, m;
     subd_diag d;
-    subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
+    subd_quasi48_opts o = opts(1, SUBD_QUASI48_NO_SMOOTH);
     if (!CHECK(cf != 0)) return;
     subd_arena_init(&a, g_big, BIG_BYTES);
     if (!CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &in, &d), SUBD_OK) || !run(&a, &in, &o, &m)) return;
@@ -891,10 +891,10 @@ static void q48_hexfan_file(void)
 static int q48_run(void *ctx, subd_arena *a, subd_diag *d)
 {
     h_mesh_call *c = (h_mesh_call *)ctx;
-    return subd_quasi48(a, c->in, (const subd_q48_opts *)c->opts, &c->out, d);
+    return subd_quasi48(a, c->in, (const subd_quasi48_opts *)c->opts, &c->out, d);
 }
 
-static void plan_case(const subd_mesh *in, const subd_q48_opts *o, int exact)
+static void plan_case(const subd_mesh *in, const subd_quasi48_opts *o, int exact)
 {
     uint32_t plan;
     h_mesh_call c;
@@ -914,7 +914,7 @@ static void q48_plan_exhaustive(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, in2;
-    subd_q48_opts o = opts(1, 0);
+    subd_quasi48_opts o = opts(1, 0);
     uint32_t i;
     for (i = 0; i < 9; i++) tpos[i] = 0;
     tpos[3] = SUBD_REAL_ONE;
@@ -931,8 +931,8 @@ static void q48_plan_exhaustive(void)
     if (!h_build(&a, &fl, &in2)) return;
     o = opts(3, 0);
     plan_case(&in2, &o, 0);
-    o = opts(2, SUBD_Q48_NO_SMOOTH);
-    o.boundary = SUBD_Q48_BOUNDARY_SMOOTH;
+    o = opts(2, SUBD_QUASI48_NO_SMOOTH);
+    o.boundary = SUBD_QUASI48_BOUNDARY_SMOOTH;
     plan_case(&in2, &o, 0);
     o = opts_normal(3);
     plan_case(&in2, &o, 0);
@@ -946,7 +946,7 @@ static void q48_errors(void)
     subd_face_list fl;
     subd_mesh in, q, out;
     subd_diag d;
-    subd_q48_opts o = opts(1, 0);
+    subd_quasi48_opts o = opts(1, 0);
     uint32_t plan, i, ovf = 0;
     subd_arena_init(&a, g_big, BIG_BYTES);
     fan_list(&fl, 4, 0, 0);
@@ -954,13 +954,13 @@ static void q48_errors(void)
     o.steps = 0;
     CHECK_EQ(subd_quasi48_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
-    o.steps = SUBD_Q48_MAX_STEPS + 1u;
+    o.steps = SUBD_QUASI48_MAX_STEPS + 1u;
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
     o = opts(1, 0);
-    o.len_bits = SUBD_Q48_LEN_BITS_EXACT + 1u;
+    o.len_bits = SUBD_QUASI48_LEN_BITS_EXACT + 1u;
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
     o = opts(1, 0);
-    o.boundary = (subd_q48_boundary)7;
+    o.boundary = (subd_quasi48_boundary)7;
     CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
     o = opts(1, 0);
     CHECK_EQ(subd_quasi48(0, &in, &o, &out, &d), SUBD_ERR_PARAM);
@@ -997,11 +997,11 @@ static void q48_len_bits(void)
     subd_arena a;
     subd_face_list fl;
     subd_mesh in, m;
-    subd_q48_opts o = opts(1, SUBD_Q48_NO_SMOOTH);
+    subd_quasi48_opts o = opts(1, SUBD_QUASI48_NO_SMOOTH);
     subd_arena_init(&a, g_big, BIG_BYTES);
     fan_list(&fl, 6, 0, 0);
     if (!h_build(&a, &fl, &in)) return;
-    o.len_bits = SUBD_Q48_LEN_BITS_EXACT;
+    o.len_bits = SUBD_QUASI48_LEN_BITS_EXACT;
     if (!run(&a, &in, &o, &m)) return;
     h_str("    hexagon, exact length comparison: centre valence ");
     h_u32(subd_vertex_valence(&m, 0));

@@ -494,9 +494,9 @@ static void topo_sharp_schemes(void)
                 got = pos;
                 n = 3u * in.num_verts;
             } else {
-                subd_q48_opts o;
+                subd_quasi48_opts o;
                 o.steps = 3;
-                o.boundary = SUBD_Q48_BOUNDARY_FIXED;
+                o.boundary = SUBD_QUASI48_BOUNDARY_FIXED;
                 o.flags = 0;
                 o.len_bits = 0;
                 st = subd_quasi48(use, &in, &o, &out, &d);

@@ -119,13 +119,13 @@ static int demo_limit(subd_arena *arena, const subd_mesh *in)
 
 static int demo_quasi48(subd_arena *arena, const subd_mesh *in)
 {
-    subd_q48_opts o;
+    subd_quasi48_opts o;
     subd_mesh out;
     subd_diag d;
     uint32_t plan, t0, t1, mark = start_measure(arena), insns;
     int st;
     o.steps = 4;
-    o.boundary = SUBD_Q48_BOUNDARY_FIXED;
+    o.boundary = SUBD_QUASI48_BOUNDARY_FIXED;
     o.flags = 0;
     o.len_bits = 0;
     print_str("quasi 4-8 subdivision, 4 binary steps:\n");

@@ -109,32 +109,32 @@ static int pia_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_
     return SUBD_OK;
 }
 
-static subd_q48_opts q48_opts_of(const tool_opts *o)
+static subd_quasi48_opts q48_opts_of(const tool_opts *o)
 {
-    subd_q48_opts qo;
+    subd_quasi48_opts qo;
     qo.steps = o->levels;
     qo.boundary = o->q48_boundary;
-    qo.flags = o->no_smooth ? SUBD_Q48_NO_SMOOTH : 0u;
+    qo.flags = o->no_smooth ? SUBD_QUASI48_NO_SMOOTH : 0u;
     qo.len_bits = 0;
     return qo;
 }
 
 static int q48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
-    subd_q48_opts qo = q48_opts_of(o);
+    subd_quasi48_opts qo = q48_opts_of(o);
     return subd_quasi48_plan(in, &qo, bytes, d);
 }
 
 static int q48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd_mesh *out, scheme_extra *x,
                    subd_diag *d)
 {
-    subd_q48_opts qo = q48_opts_of(o);
+    subd_quasi48_opts qo = q48_opts_of(o);
     int st = subd_quasi48(a, in, &qo, out, d);
     if (st == SUBD_OK)
         snprintf(x->json, sizeof x->json, "\"binary_steps\":%lu,\"smoothing\":%s,\"boundary\":\"%s\"",
                  (unsigned long)o->levels, o->no_smooth ? "false" : "true",
-                 o->q48_boundary == SUBD_Q48_BOUNDARY_SMOOTH   ? "smooth"
-                 : o->q48_boundary == SUBD_Q48_BOUNDARY_NORMAL ? "normal"
+                 o->q48_boundary == SUBD_QUASI48_BOUNDARY_SMOOTH   ? "smooth"
+                 : o->q48_boundary == SUBD_QUASI48_BOUNDARY_NORMAL ? "normal"
                                                                : "fixed");
     return st;
 }
@@ -635,7 +635,7 @@ const command tool_commands[] = {
     {"quasi48", "[-l N] INPUT -o OUTPUT", "quasi 4-8 subdivision, N binary steps (default 2 = one\n"
                                           "4-8 refinement); --no-smooth, --boundary fixed|smooth|normal,\n"
                                           "--tag-boundary, --crease-angle DEG",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_Q48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE | OPT_TAGS, q48_plan, q48_run, NULL},
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS, "quasi48", 2, SUBD_QUASI48_MAX_STEPS, OPT_Q48 | OPT_NO_SMOOTH | OPT_CREASE | OPT_TAGS, q48_plan, q48_run, NULL},
     {"alpha", "[-l N] INPUT -o OUTPUT", "semi-stationary alpha-subdivision: curves (OBJ l records)\n"
                                         "or the Doo-Sabin type surface; --order K, --kernel\n"
                                         "bspline|cos|poly|cosh, --alpha A, --stiffness S;\n"

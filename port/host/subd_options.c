@@ -554,9 +554,9 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
             else if (strcmp(b, "bspline") == 0) o->boundary = SUBD_LOOP_BOUNDARY_BSPLINE;
             else return tool_usage_error("bad boundary rule '%s' for '%s' (expected paper or bspline)", b, cmd->name);
         } else if (cmd->options & OPT_Q48) {
-            if (strcmp(b, "fixed") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_FIXED;
-            else if (strcmp(b, "smooth") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_SMOOTH;
-            else if (strcmp(b, "normal") == 0) o->q48_boundary = SUBD_Q48_BOUNDARY_NORMAL;
+            if (strcmp(b, "fixed") == 0) o->q48_boundary = SUBD_QUASI48_BOUNDARY_FIXED;
+            else if (strcmp(b, "smooth") == 0) o->q48_boundary = SUBD_QUASI48_BOUNDARY_SMOOTH;
+            else if (strcmp(b, "normal") == 0) o->q48_boundary = SUBD_QUASI48_BOUNDARY_NORMAL;
             else return tool_usage_error("bad boundary mode '%s' for '%s' (expected fixed, smooth or normal)", b, cmd->name);
         } else {
             return tool_usage_error("option --boundary does not apply to '%s'", cmd->name);

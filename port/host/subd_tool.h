@@ -52,7 +52,7 @@ typedef struct tool_opts {
     /* scheme options */
     const char *boundary_name;   /* --boundary, interpreted by the command               */
     subd_loop_boundary boundary; /* loop/limit/pia: paper (default) | bspline             */
-    subd_q48_boundary q48_boundary; /* quasi48: fixed (default) | smooth                  */
+    subd_quasi48_boundary q48_boundary; /* quasi48: fixed (default) | smooth                  */
     int no_smooth;               /* --no-smooth (quasi48): refinement only                */
     int tag_boundary;            /* --tag-boundary: tag boundary edges as creases first   */
     int has_crease_angle;

@@ -92,13 +92,14 @@ static uint64_t es_len_key(const subd_real *p, const subd_real *q)
 #endif
 }
 
-uint32_t subd_edge_number(const subd_mesh *m, const subd_edge_work *w, uint32_t cap)
+/* subd_edge_number's walk, forced inline into its two calls so that `tri` is a constant in
+ * each: the triangle one walks without face lookups (topo.h's TOPO_INLINE). */
+TOPO_INLINE uint32_t es_number(const subd_mesh *m, const subd_edge_work *w, uint32_t cap, int tri)
 {
     /* locals: the stores into edge_of (uint32_t) could otherwise alias m->num_corners */
     const uint32_t nc = m->num_corners, nv = m->num_verts;
     const uint32_t *twin = m->twin, *vert_out = m->vert_out;
     uint32_t *edge_of = w->edge_of, *edge_he = w->edge_he;
-    const int tri = es_all_tris(m);
     uint32_t h, v, ne = 0;
     for (h = 0; h < nc; h++) edge_of[h] = SUBD_NONE;
     for (v = 0; v < nv; v++) {
@@ -117,6 +118,11 @@ uint32_t subd_edge_number(const subd_mesh *m, const subd_edge_work *w, uint32_t 
         }
     }
     return ne;
+}
+
+uint32_t subd_edge_number(const subd_mesh *m, const subd_edge_work *w, uint32_t cap)
+{
+    return es_all_tris(m) ? es_number(m, w, cap, 1) : es_number(m, w, cap, 0);
 }
 
 /* Stable LSD radix sort of ks[0..n) (with os[0..n) alongside unless os is a null pointer) by

@@ -265,19 +265,17 @@ static void ring_begin(const loop_src *s, uint32_t v, topo_ring *it)
 static const subd_real *P(const loop_src *s, uint32_t v) { return s->pos + 3u * v; }
 
 /* Smooth rule on a level this file made: v is interior with valence n, so the ring is
- * exactly n steps of twin(prev(h)) from vert_out, in the order of the general walk. A
- * specialisation of topo_ring for the hot path (no tail, no sharpness, no end test); test
- * loop_compose holds it equal to the general walk (levels = k against k calls of one level,
- * whose every level is walked by topo_ring), bit for bit. */
+ * exactly n steps from vert_out: topo.h's fast path topo_tri_fan_step (no tail, no
+ * sharpness, no end test), which test_topo holds equal to topo_ring; test loop_compose holds
+ * the result equal to the general walk (levels = k against k calls of one level, whose
+ * every level is walked by topo_ring), bit for bit. */
 static void smooth_fast(const loop_src *s, subd_real *out, uint32_t v, uint32_t n, loop_weights w, uint32_t *ovf)
 {
     subd_acc acc[3];
     uint32_t h = s->vout[v], k, nc = 3u * s->nf;
     loop_smooth_begin(acc, w, P(s, v));
     for (k = 0; k < n; k++) {
-        uint32_t r = h % 3u;
-        loop_smooth_add(acc, w, P(s, s->cv[r == 2u ? h - 2u : h + 1u]));
-        h = s->twin[r == 0u ? h + 2u : h - 1u];
+        loop_smooth_add(acc, w, P(s, topo_tri_fan_step(s->cv, s->twin, &h)));
         if (h >= nc) break; /* cannot happen on a made level; keeps reads in bounds */
     }
     loop_smooth_end(out, acc, ovf);
@@ -407,21 +405,19 @@ static void refine_level(const loop_src *s, const loop_dst *t, subd_loop_boundar
             }
             e++;
         }
-        /* child i = (v_i, m_i, m_{i-1}), child 3 = (m0, m1, m2): topo.h's table */
+        /* child i = (v_i, m_i, m_{i-1}), child 3 = (m0, m1, m2): topo.h's table; parent
+         * edge i is split into its two halves, inner edges are untagged */
         {
-            static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS;
-            uint32_t x[6], k;
+            uint32_t x[6];
             x[0] = s->cv[h0];
             x[1] = s->cv[h0 + 1u];
             x[2] = s->cv[h0 + 2u];
             x[3] = m[0];
             x[4] = m[1];
             x[5] = m[2];
-            for (k = 0; k < 12u; k++) cv[k] = x[pts[k / 3u][k % 3u]];
-            /* parent edge i is split into its two halves; inner edges are untagged */
-            for (k = 0; k < 12u; k++) et[k] = 0;
+            topo_loop_child_corners(cv, x);
+            topo_loop_child_edge_tags(et, tag);
         }
-        for (i = 0; i < 3u; i++) et[topo_loop_first_half(i)] = et[topo_loop_second_half(i)] = tag[i];
         if (t->twin) {
             uint32_t *tt = t->twin + 12u * f;
             for (i = 0; i < 3u; i++) {

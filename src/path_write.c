@@ -2,7 +2,8 @@
 /* Point paths as text on memory buffers: plain ".xyz" lines and a plain G-code tool path,
  * for the point streams (subd_alpha.h "Streamed curves"). Numbers by subd_real_format
  * through src/text.c's sink, so the host and the device write the same bytes; two passes
- * (count, then write) as subd_obj_write, so a too-small buffer is left untouched.
+ * (count, then write) by text.c's subd_text_run, as subd_obj_write, so a too-small buffer is
+ * left untouched.
  *
  * G-code choices (the issue asks for plain G-code, no dialect): millimetres (G21) and
  * absolute coordinates (G90) in the header, a rapid move G0 to the first point, then one
@@ -20,8 +21,9 @@ typedef struct path_job {
     subd_real feed;
 } path_job;
 
-static void path_emit(const path_job *j, text_sink *k)
+static void path_emit(const void *job, text_sink *k)
 {
+    const path_job *j = (const path_job *)job;
     uint32_t i;
     static const char *const axis[3] = {"X", " Y", " Z"};
     for (i = 0; i < j->n; i++) {
@@ -53,7 +55,6 @@ int subd_path_write(const subd_point *p, uint32_t n, uint32_t first_index, uint3
                     char *buf, uint32_t cap, uint32_t *len)
 {
     path_job j;
-    text_sink k = {0, 0, 0, 0};
     if (!len || (!p && n) || (format != SUBD_PATH_XYZ && format != SUBD_PATH_GCODE) ||
         !subd_real_is_finite(feed) || feed < 0)
         return SUBD_ERR_PARAM;
@@ -62,14 +63,5 @@ int subd_path_write(const subd_point *p, uint32_t n, uint32_t first_index, uint3
     j.first = first_index;
     j.format = format;
     j.feed = feed;
-    path_emit(&j, &k);
-    if (k.overflow) return SUBD_ERR_TOO_BIG;
-    *len = k.len;
-    if (!buf) return SUBD_OK;
-    if (k.len > cap) return SUBD_ERR_NOMEM;
-    k.buf = buf;
-    k.cap = cap;
-    k.len = 0;
-    path_emit(&j, &k);
-    return SUBD_OK;
+    return subd_text_run(path_emit, &j, buf, cap, len); /* text.c's size-then-write */
 }

@@ -95,5 +95,19 @@ void subd_pia_phase_paper(pia_state *s, uint32_t set);
 
 /* pia_fast.c: SUBD_PIA_FAST from V = P with an exact lv; sets half_bnd. */
 void subd_pia_fast(pia_state *s);
+/* pia_fast.c, shared with pia_sgs.c: the W inner product <a - as, b - bs>_W over the set
+ * (as, bs may be NULL), the ratio x / y of two of them (*ok = 0 when it does not fit
+ * subd_real or y <= 0), and the end of a CG or PCG iteration (a PIA_GO_ON / PIA_DONE /
+ * PIA_SAFEGUARD verdict; see its definition). */
+enum { PIA_GO_ON, PIA_DONE, PIA_SAFEGUARD };
+pia_dotv subd_pia_dot(const pia_state *s, uint32_t set, const subd_real *a, const subd_real *as, const subd_real *b,
+                      const subd_real *bs);
+subd_real subd_pia_ratio(pia_dotv x, pia_dotv y, int *ok);
+int subd_pia_cg_advance(pia_state *s, uint32_t set, subd_real alpha, uint32_t halves, subd_real start,
+                        subd_real *best, uint32_t *stall);
+/* pia_sgs.c: the SGS-preconditioned CG phase, and 1 when every vertex of the set has the same
+ * row shape (CG weight and diagonal of L: plain CG then). */
+void subd_pia_phase_sgs(pia_state *s, uint32_t set);
+int subd_pia_uniform(pia_state *s, uint32_t set);
 
 #endif

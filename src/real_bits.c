@@ -13,6 +13,7 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "vec3w.h" /* subd_bitlen64 */
+#include "real_bits.h"
 
 /* |sig * 2^exp2| (sig < 2^63) rounded to float32 bits without sign (nearest, ties to even).
  * Returns SUBD_ERR_RANGE when the rounded value is 2^128 or more. */
@@ -56,29 +57,15 @@ static int rbits_to_real(uint32_t neg, uint64_t sig, int32_t exp2, subd_real *ou
     } else {
         mag = (sig + ((uint64_t)1 << (uint32_t)(-k - 1))) >> (uint32_t)(-k);
     }
-    if (neg) {
-        if (mag > 0x80000000u) return SUBD_ERR_RANGE;
-        *out = (subd_real)(-(int64_t)mag);
-    } else {
-        if (mag > 0x7fffffffu) return SUBD_ERR_RANGE;
-        *out = (subd_real)mag;
-    }
-    return SUBD_OK;
+    return subd_real_from_mag(neg, mag, out);
 }
 #else
-static float rbits_float(uint32_t b)
-{
-    union { uint32_t u; float f; } c;
-    c.u = b;
-    return c.f;
-}
-
 static int rbits_to_real(uint32_t neg, uint64_t sig, int32_t exp2, subd_real *out)
 {
     uint32_t bits;
     int st = rbits_to_f32(sig, exp2, &bits);
     if (st != SUBD_OK) return st;
-    *out = rbits_float(bits | (neg ? 0x80000000u : 0u));
+    *out = subd_f32_of_bits(bits | (neg ? 0x80000000u : 0u));
     return SUBD_OK;
 }
 #endif

@@ -28,6 +28,7 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
+#include "real_bits.h"
 
 #define BN_CAP 10u /* 320 bits: the bounds below never need more than 256 */
 
@@ -301,24 +302,10 @@ static int dec_to_fixed(const dec *d, subd_real *out)
         (void)bn_div_pow10(&n, (uint32_t)(-d->e));
         mag = (bn_low_u64(&n) + 1u) >> 1; /* floor(2x) -> x rounded half away from zero */
     }
-    if (d->neg) {
-        if (mag > 0x80000000u) return SUBD_ERR_RANGE;
-        *out = (subd_real)(-(int64_t)mag);
-    } else {
-        if (mag > 0x7fffffffu) return SUBD_ERR_RANGE;
-        *out = (subd_real)mag;
-    }
-    return SUBD_OK;
+    return subd_real_from_mag(d->neg ? 1u : 0u, mag, out);
 }
 
 #else
-
-static float float_from_bits(uint32_t b)
-{
-    union { uint32_t u; float f; } c;
-    c.u = b;
-    return c.f;
-}
 
 static int dec_to_float(const dec *d, subd_real *out)
 {
@@ -352,7 +339,7 @@ static int dec_to_float(const dec *d, subd_real *out)
         rc = bn_to_float_bits(&n, s, sticky, &bits);
     }
     if (rc != SUBD_OK) return rc;
-    *out = float_from_bits(bits | sign);
+    *out = subd_f32_of_bits(bits | sign);
     return SUBD_OK;
 }
 

@@ -19,6 +19,7 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
+#include "real_bits.h"
 
 #if SUBD_FIXED
 
@@ -43,12 +44,7 @@ static volatile uint32_t g_bits[7] = {0x3f800800u, 0x3f801000u, 0x3f800000u, 0x3
 #define A 0u
 #define C 1u
 
-static subd_real from_bits(uint32_t i)
-{
-    union { uint32_t u; float f; } c;
-    c.u = g_bits[i];
-    return c.f;
-}
+static subd_real from_bits(uint32_t i) { return subd_f32_of_bits(g_bits[i]); }
 
 int subd_selfcheck(void)
 {

@@ -111,12 +111,10 @@ void subd_sink_real(text_sink *k, subd_real x)
     subd_sink_chars(k, b, subd_real_format(x, b));
 }
 
-int subd_text_write(text_emit_fn emit, const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap,
-                    uint32_t *len)
+int subd_text_run(text_job_fn emit, const void *job, char *buf, uint32_t cap, uint32_t *len)
 {
     text_sink k = {0, 0, 0, 0};
-    if (!m || !len) return SUBD_ERR_PARAM;
-    emit(m, normals, &k);
+    emit(job, &k);
     if (k.overflow) return SUBD_ERR_TOO_BIG;
     *len = k.len;
     if (!buf) return SUBD_OK;
@@ -124,6 +122,30 @@ int subd_text_write(text_emit_fn emit, const subd_mesh *m, const subd_real *norm
     k.buf = buf;
     k.cap = cap;
     k.len = 0;
-    emit(m, normals, &k);
+    emit(job, &k);
     return SUBD_OK;
+}
+
+/* A mesh writer as a subd_text_run job. */
+typedef struct text_mesh_job {
+    text_emit_fn emit;
+    const subd_mesh *m;
+    const subd_real *normals;
+} text_mesh_job;
+
+static void text_mesh_emit(const void *job, text_sink *k)
+{
+    const text_mesh_job *j = (const text_mesh_job *)job;
+    j->emit(j->m, j->normals, k);
+}
+
+int subd_text_write(text_emit_fn emit, const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap,
+                    uint32_t *len)
+{
+    text_mesh_job j;
+    if (!m || !len) return SUBD_ERR_PARAM;
+    j.emit = emit;
+    j.m = m;
+    j.normals = normals;
+    return subd_text_run(text_mesh_emit, &j, buf, cap, len);
 }

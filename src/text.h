@@ -45,8 +45,14 @@ void subd_sink_str(text_sink *k, const char *s);
 void subd_sink_chars(text_sink *k, const char *s, uint32_t n);
 void subd_sink_u32(text_sink *k, uint32_t v);
 void subd_sink_real(text_sink *k, subd_real x);
-/* Runs a writer: emit() once to count (so a too-small buffer is left untouched), then once
- * more into buf. Implements the contract of subd_obj_write / subd_off_write. */
+/* Runs a writer, the one size-then-write of every text writer: emit(job) once to count (so
+ * a too-small buffer is left untouched), then once more into buf. *len = the bytes, also
+ * when buf is a null pointer (a size query); SUBD_ERR_TOO_BIG when the count does not fit
+ * 32 bits, SUBD_ERR_NOMEM when it exceeds cap. The contract of subd_obj_write,
+ * subd_off_write and subd_path_write (whose arguments the callers check first). */
+typedef void (*text_job_fn)(const void *job, text_sink *k);
+int subd_text_run(text_job_fn emit, const void *job, char *buf, uint32_t cap, uint32_t *len);
+/* subd_text_run of a mesh writer (obj.c, off.c): SUBD_ERR_PARAM without m or len. */
 typedef void (*text_emit_fn)(const subd_mesh *m, const subd_real *normals, text_sink *k);
 int subd_text_write(text_emit_fn emit, const subd_mesh *m, const subd_real *normals, char *buf, uint32_t cap,
                     uint32_t *len);

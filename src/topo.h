@@ -7,14 +7,24 @@
  *   - topo_edge_sharp: the one sharp-edge rule.
  *   - Loop's 1->4 child tables (corner order, vert_out of a child vertex, outer twins).
  *   - The table of the library's private tag bits.
- * No paper: these are the conventions of subd.h's half-edge mesh. A fast path that a scheme
- * keeps for speed (loop.c's smooth_fast, loop_patch.c's 16-bit patch walk) is a documented
- * specialisation of the helper here, and a test holds it equal to the helper on the same
- * input. */
+ * No paper: these are the conventions of subd.h's half-edge mesh. A fast path kept for speed
+ * is a documented specialisation of the helper here, and a test holds it equal to the helper
+ * on the same input: topo_tri_fan_step (loop.c's smooth vertices) lives here;
+ * loop_patch.c's 16-bit patch walk lives with its patch. */
 #ifndef SUBD_TOPO_H
 #define SUBD_TOPO_H
 #include "subd.h"
 #include "mesh_internal.h" /* tri_next, tri_prev */
+
+/* The walk's steps are forced inline (GCC, clang): inlined next to topo_ring_begin_tri, the
+ * face lookups fold away (r->fs is a known null) and the iterator lives in registers; left
+ * to its heuristics, gcc -O2 keeps topo_ring_step out of line in quasi48.c and edge_sort.c,
+ * which cost quasi 4-8 ~8% more instructions than its own walk before topo.h. */
+#if defined(__GNUC__)
+#define TOPO_INLINE static inline __attribute__((always_inline))
+#else
+#define TOPO_INLINE static inline
+#endif
 
 /* ------------------------------------------------------------------------------------ */
 /* Private tag bits: the one table.                                                       */
@@ -147,14 +157,14 @@ static inline void topo_ring_begin_tri(topo_ring *r, const uint32_t *cv, const u
     r->tail = 0;
 }
 
-static inline uint32_t topo_ring_prev_he(const topo_ring *r, uint32_t h)
+TOPO_INLINE uint32_t topo_ring_prev_he(const topo_ring *r, uint32_t h)
 {
     uint32_t f;
     if (!r->fs) return tri_prev(h);
     f = r->cf[h];
     return (h == r->fs[f]) ? r->fs[f + 1u] - 1u : h - 1u;
 }
-static inline uint32_t topo_ring_next_he(const topo_ring *r, uint32_t h)
+TOPO_INLINE uint32_t topo_ring_next_he(const topo_ring *r, uint32_t h)
 {
     uint32_t f;
     if (!r->fs) return tri_next(h);
@@ -163,7 +173,7 @@ static inline uint32_t topo_ring_next_he(const topo_ring *r, uint32_t h)
 }
 
 /* Advances to the next neighbour: 1 with r->nb, r->he, r->tail set; 0 at the end. */
-static inline int topo_ring_step(topo_ring *r)
+TOPO_INLINE int topo_ring_step(topo_ring *r)
 {
     uint32_t h = r->next, p, t;
     if (h == SUBD_NONE) {
@@ -190,6 +200,21 @@ static inline int topo_ring_step(topo_ring *r)
     return 1;
 }
 
+/* The fast path of the walk on a triangle level (corner c in face c / 3), for a vertex known
+ * to be interior whose valence n is known (loop.c's smooth vertices of the levels it made):
+ * from h = vert_out, n calls yield the neighbours topo_ring_step yields, in its order, with
+ * no tail, no sharpness and no end test; *h becomes the next outgoing half-edge (twin of
+ * prev, SUBD_NONE past a boundary, where topo_ring would turn to its tail). One remainder
+ * serves both the next and the prev corner. test_topo's topo_fan_fast holds it equal to
+ * topo_ring_step on every vertex of closed, open, creased and subdivided meshes. */
+TOPO_INLINE uint32_t topo_tri_fan_step(const uint32_t *cv, const uint32_t *twin, uint32_t *h)
+{
+    uint32_t x = *h, r = x % 3u;
+    uint32_t nb = cv[r == 2u ? x - 2u : x + 1u];
+    *h = twin[r == 0u ? x + 2u : x - 1u];
+    return nb;
+}
+
 /* 1 when r's half-edge leads to a sharp edge (the tail's is a boundary edge). */
 static inline int topo_ring_sharp(const topo_ring *r, const uint8_t *etag)
 {
@@ -204,7 +229,35 @@ static inline int topo_ring_sharp(const topo_ring *r, const uint8_t *etag)
  * points numbered v0 v1 v2 m0 m1 m2 = 0..5, corner j of child k is point
  * TOPO_LOOP_CHILD_POINTS[k][j] (an initialiser: `static const uint8_t x[4][3] = ...;` where a
  * file needs the table, so no header defines an object a file might not use). */
-#define TOPO_LOOP_CHILD_POINTS {{0u, 3u, 5u}, {1u, 4u, 3u}, {2u, 5u, 4u}, {3u, 4u, 5u}}
+#define TOPO_LOOP_CHILD_POINTS                                                                           \
+    {{TOPO_LOOP_CP(0u, 0u), TOPO_LOOP_CP(0u, 1u), TOPO_LOOP_CP(0u, 2u)},                                  \
+     {TOPO_LOOP_CP(1u, 0u), TOPO_LOOP_CP(1u, 1u), TOPO_LOOP_CP(1u, 2u)},                                  \
+     {TOPO_LOOP_CP(2u, 0u), TOPO_LOOP_CP(2u, 1u), TOPO_LOOP_CP(2u, 2u)},                                  \
+     {TOPO_LOOP_CP(3u, 0u), TOPO_LOOP_CP(3u, 1u), TOPO_LOOP_CP(3u, 2u)}}
+/* The table's one formula, a constant expression for constant k, j (so the writers below
+ * compile to straight-line stores): child i < 3 is (i, 3 + i, 3 + (i + 2) % 3), child 3 is
+ * (3, 4, 5). */
+#define TOPO_LOOP_CP(k, j)                                                                               \
+    ((k) == 3u ? 3u + (j) : (j) == 0u ? (k) : (j) == 1u ? 3u + (k) : 3u + ((k) + 2u) % 3u)
+
+/* The 12 child corners of a face (corner 3k + j = point TOPO_LOOP_CP(k, j) of
+ * x = v0 v1 v2 m0 m1 m2), written out: the hot path of loop.c's level refinement, where a
+ * loop over the table costs ~15 instructions per corner (gcc -O2 does not unroll it). */
+static inline void topo_loop_child_corners(uint32_t *cv, const uint32_t x[6])
+{
+    cv[0] = x[TOPO_LOOP_CP(0u, 0u)];
+    cv[1] = x[TOPO_LOOP_CP(0u, 1u)];
+    cv[2] = x[TOPO_LOOP_CP(0u, 2u)];
+    cv[3] = x[TOPO_LOOP_CP(1u, 0u)];
+    cv[4] = x[TOPO_LOOP_CP(1u, 1u)];
+    cv[5] = x[TOPO_LOOP_CP(1u, 2u)];
+    cv[6] = x[TOPO_LOOP_CP(2u, 0u)];
+    cv[7] = x[TOPO_LOOP_CP(2u, 1u)];
+    cv[8] = x[TOPO_LOOP_CP(2u, 2u)];
+    cv[9] = x[TOPO_LOOP_CP(3u, 0u)];
+    cv[10] = x[TOPO_LOOP_CP(3u, 1u)];
+    cv[11] = x[TOPO_LOOP_CP(3u, 2u)];
+}
 
 /* Child corners of a face are numbered 3k + j (child k, corner j), 0..11; the child corner
  * of parent face f is 12 f + that. */
@@ -215,6 +268,17 @@ static inline uint32_t topo_loop_first_half(uint32_t i) { return 3u * i; }
 static inline uint32_t topo_loop_second_half(uint32_t i) { return 3u * ((i + 1u) % 3u) + 2u; }
 /* The first child half-edge along parent half-edge h = 3f + i: 12 f + 3 i = 4 h - i. */
 static inline uint32_t topo_loop_half_first(uint32_t h) { return 4u * h - h % 3u; }
+
+/* The 12 child edge tags of a face whose parent sides carry tag[0..2]: both halves of side i
+ * keep tag[i], the inner edges (corners 3k + 1 of children 0..2, child 3's) have none.
+ * Written out for the same reason as topo_loop_child_corners. */
+static inline void topo_loop_child_edge_tags(uint8_t *et, const uint8_t tag[3])
+{
+    et[1] = et[4] = et[7] = et[9] = et[10] = et[11] = 0u;
+    et[topo_loop_first_half(0u)] = et[topo_loop_second_half(0u)] = tag[0];
+    et[topo_loop_first_half(1u)] = et[topo_loop_second_half(1u)] = tag[1];
+    et[topo_loop_first_half(2u)] = et[topo_loop_second_half(2u)] = tag[2];
+}
 
 /* vert_out of the new vertex on side i (the builder's convention, so the output equals the
  * builder's adjacency): on a boundary side its boundary half-edge m_i -> v_{i+1}, else its

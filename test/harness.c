@@ -299,6 +299,32 @@ int h_reader_sweep_at(h_reader read, const char *text, uint32_t len, uint8_t *bu
     return h_arena_sweep_at(&s, file, line);
 }
 
+int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t len, uint32_t arena_bytes, int st,
+                    uint32_t line, uint32_t face, uint32_t vert, int src_line)
+{
+    subd_arena a;
+    subd_mesh m;
+    subd_diag d;
+    uint32_t i, same = 1, bytes = 0;
+    int got, pst;
+    uint8_t *pm = (uint8_t *)&m;
+    for (i = 0; i < sizeof m; i++) pm[i] = 0x3c;
+    subd_arena_init(&a, h_arena_buf, arena_bytes);
+    subd_arena_alloc(&a, 40);
+    got = read(&a, buf, len, &m, &d);
+    for (i = 0; i < sizeof m; i++) same &= pm[i] == 0x3c;
+    pst = plan(buf, len, &bytes, 0);
+    if (!CHECK_EQ(got, st) | !CHECK_EQ(d.status, st) | !CHECK_EQ(d.line, line) | !CHECK_EQ(d.face, face) |
+        !CHECK(vert == H_ANY || d.vertex == vert) | !CHECK_EQ(subd_arena_mark(&a), 40) | !CHECK(same) |
+        !CHECK(pst == st || (pst == SUBD_OK && st <= SUBD_ERR_DEGENERATE))) {
+        h_str("    case at test line ");
+        h_u32((uint32_t)src_line);
+        h_nl();
+        return 0;
+    }
+    return 1;
+}
+
 static void run_suite(const test_case *t)
 {
     for (; t->name; t++) {

@@ -128,6 +128,18 @@ int h_reader_sweep_at(h_reader read, const char *text, uint32_t len, uint8_t *bu
 #define h_reader_sweep(read, text, len, buf, buf_bytes, plan) \
     h_reader_sweep_at((read), (text), (len), (buf), (buf_bytes), (plan), __FILE__, __LINE__)
 
+/* A reader's failure, the one check of every reader's error tests (test_stl.c, test_ply.c):
+ * read(buf[0..len)) into an arena over h_arena_buf[0..arena_bytes) that already holds a
+ * block returns st with diag status st, line, face and vertex as given (H_ANY: not checked);
+ * the arena mark and the output mesh are as before the call; the plan call either fails
+ * with the same status or passes (SUBD_OK) for the failures only the read can see
+ * (st <= SUBD_ERR_DEGENERATE: validation after parsing). On a mismatch it names the test
+ * line src_line. Returns 1 when all held. */
+#define H_ANY 0xfffffffeu
+typedef int (*h_reader_plan)(const char *, uint32_t, uint32_t *, subd_diag *);
+int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t len, uint32_t arena_bytes, int st,
+                    uint32_t line, uint32_t face, uint32_t vert, int src_line);
+
 /* A shared scratch arena buffer for tests (static, 8-aligned). */
 #define H_ARENA_BYTES (256u * 1024u)
 extern uint8_t h_arena_buf[];

@@ -168,29 +168,10 @@ static void ply_binary_types(void)
 
 /* ------------------------------------------------------------------ errors */
 
+/* harness.c's h_reader_expect for the PLY reader (vertex checked too). */
 static int expect_ply(const char *buf, uint32_t len, int st, uint32_t line, uint32_t face, uint32_t vert, int src)
 {
-    subd_arena a;
-    subd_mesh m;
-    subd_diag d;
-    uint32_t i, same = 1, plan = 0;
-    int got, pst;
-    uint8_t *pm = (uint8_t *)&m;
-    for (i = 0; i < sizeof m; i++) pm[i] = 0x3c;
-    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    subd_arena_alloc(&a, 24);
-    got = subd_ply_read(&a, buf, len, &m, &d);
-    for (i = 0; i < sizeof m; i++) same &= pm[i] == 0x3c;
-    pst = subd_ply_plan(buf, len, &plan, 0);
-    if (!CHECK_EQ(got, st) | !CHECK_EQ(d.line, line) | !CHECK_EQ(d.face, face) | !CHECK_EQ(d.vertex, vert) |
-        !CHECK_EQ(subd_arena_mark(&a), 24) | !CHECK(same) |
-        !CHECK(pst == st || (pst == SUBD_OK && st <= SUBD_ERR_DEGENERATE))) {
-        h_str("    case at test line ");
-        h_u32((uint32_t)src);
-        h_nl();
-        return 0;
-    }
-    return 1;
+    return h_reader_expect(subd_ply_read, subd_ply_plan, buf, len, H_ARENA_BYTES, st, line, face, vert, src);
 }
 #define EXPECT_LINE(txt, st, line) expect_ply((txt), slen(txt), (st), (line), SUBD_NONE, SUBD_NONE, __LINE__)
 

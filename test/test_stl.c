@@ -328,31 +328,12 @@ static void stl_ascii_same_as_obj(void)
     (void)h_reader_sweep(subd_stl_read, f->data, f->len, io_sweep, sizeof io_sweep, plan);
 }
 
-/* Reads buf[0..len) expecting status st with the given line and face; the arena mark and
- * *out unchanged. */
+/* Reads buf[0..len) expecting status st with the given line and face (harness.c's
+ * h_reader_expect: the arena mark and *out unchanged), in the lower half of h_arena_buf. */
 static int expect_at(const char *buf, uint32_t len, int st, uint32_t line, uint32_t face, int src_line)
 {
-    subd_arena a;
-    subd_mesh m;
-    subd_diag d;
-    uint32_t i, same = 1, plan = 0;
-    int got, pst;
-    uint8_t *pm = (uint8_t *)&m;
-    for (i = 0; i < sizeof m; i++) pm[i] = 0x3c;
-    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES / 2u);
-    subd_arena_alloc(&a, 40);
-    got = subd_stl_read(&a, buf, len, &m, &d);
-    for (i = 0; i < sizeof m; i++) same &= pm[i] == 0x3c;
-    pst = subd_stl_plan(buf, len, &plan, 0);
-    if (!CHECK_EQ(got, st) | !CHECK_EQ(d.status, st) | !CHECK_EQ(d.line, line) | !CHECK_EQ(d.face, face) |
-        !CHECK_EQ(subd_arena_mark(&a), 40) | !CHECK(same) |
-        !CHECK(pst == st || (pst == SUBD_OK && st <= SUBD_ERR_DEGENERATE))) {
-        h_str("    case at test line ");
-        h_u32((uint32_t)src_line);
-        h_nl();
-        return 0;
-    }
-    return 1;
+    return h_reader_expect(subd_stl_read, subd_stl_plan, buf, len, H_ARENA_BYTES / 2u, st, line, face, H_ANY,
+                           src_line);
 }
 #define EXPECT_AT(buf, len, st, line, face) expect_at((buf), (len), (st), (line), (face), __LINE__)
 #define EXPECT_TXT(txt, st, line) expect_at((txt), slen(txt), (st), (line), SUBD_NONE, __LINE__)

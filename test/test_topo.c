@@ -16,6 +16,12 @@
  *     TOPO_LOOP_CHILD_POINTS[k] of (v0, v1, v2, m0, m1, m2), m_i found by the documented
  *     numbering (input vertices, then one per edge by lower half-edge); the new vertices'
  *     vert_out equals topo_loop_new_vout (and the builder's, which test_loop checks).
+ *   - topo_loop_child_corners / topo_loop_child_edge_tags (loop.c's straight-line writers)
+ *     against the child order restated literally here.
+ *   - topo_tri_fan_step (loop.c's fast walk of smooth vertices) equals topo_ring_step on
+ *     every vertex of the triangle meshes above, of creased grids with corner tags and of
+ *     their Loop levels 1 and 2: the same neighbours and half-edges, ending at vert_out
+ *     (interior) or SUBD_NONE (boundary, where topo_ring yields its tail).
  *   - The sharp-edge rule followed by every scheme: a crease tagged on one half-edge only
  *     (either one) gives bit for bit the output of the same crease tagged on both halves:
  *     subd_loop, subd_loop_limit (positions and normals), subd_pia PAPER and FAST,
@@ -402,6 +408,35 @@ static void topo_loop_child_tables(void)
     }
 }
 
+/* The straight-line writers against the documented child order, restated here literally:
+ * child i = (v_i, m_i, m_{i-1}), child 3 = (m0, m1, m2); the edge of corner j of child k
+ * goes to corner j + 1: v_i -> m_i (side i), m_i -> m_{i-1} (inner), m_{i-1} -> v_i (side
+ * i - 1); child 3's edges are inner. */
+static void topo_loop_child_writers(void)
+{
+    static const uint8_t doc[4][3] = {{0u, 3u, 5u}, {1u, 4u, 3u}, {2u, 5u, 4u}, {3u, 4u, 5u}};
+    static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS;
+    uint32_t x[6], cv[12], k, j;
+    uint8_t et[12], tag[3] = {SUBD_ETAG_CREASE, SUBD_ETAG_BOUNDARY, SUBD_ETAG_CREASE | SUBD_ETAG_BOUNDARY};
+    for (k = 0; k < 6u; k++) x[k] = 100u + 7u * k;
+    for (k = 0; k < 12u; k++) {
+        cv[k] = SUBD_NONE;
+        et[k] = 0xffu;
+    }
+    topo_loop_child_corners(cv, x);
+    topo_loop_child_edge_tags(et, tag);
+    for (k = 0; k < 4u; k++)
+        for (j = 0; j < 3u; j++) {
+            uint8_t want = 0;
+            CHECK_EQ(pts[k][j], doc[k][j]);
+            CHECK_EQ(TOPO_LOOP_CP(k, j), doc[k][j]);
+            CHECK_EQ(cv[3u * k + j], x[doc[k][j]]);
+            if (k < 3u && j == 0u) want = tag[k];
+            if (k < 3u && j == 2u) want = tag[(k + 2u) % 3u];
+            CHECK_EQ(et[3u * k + j], want);
+        }
+}
+
 /* ------------------------------------------------------------------------------------ */
 /* Every scheme follows the rule: one-sided crease bits = two-sided ones.                 */
 
@@ -440,6 +475,78 @@ static int t_same(const subd_real *x, const subd_real *y, uint32_t n)
     for (i = 0; i < n; i++)
         if (!h_same(x[i], y[i])) return 0;
     return 1;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* The fast fan walk (topo_tri_fan_step, loop.c's smooth vertices) equals topo_ring.       */
+
+/* On every vertex of m: from vert_out, the fan step yields topo_ring_step's non-tail
+ * neighbours in order, its running half-edge is the ring's outgoing half-edge before each
+ * step, and after the last one it is back at vert_out (interior) or SUBD_NONE (boundary).
+ * Returns the number of vertices checked. */
+static uint32_t t_fan_equal(const subd_mesh *m)
+{
+    uint32_t v, checked = 0;
+    for (v = 0; v < m->num_verts; v++) {
+        topo_ring r;
+        uint32_t h = m->vert_out[v], n = 0;
+        if (h == SUBD_NONE) continue;
+        topo_ring_begin_tri(&r, m->corner_vert, m->twin, m->num_corners, h);
+        while (topo_ring_step(&r) && !r.tail) {
+            if (!CHECK(h < m->num_corners)) return checked;
+            CHECK_EQ(h, r.he);
+            CHECK_EQ(topo_tri_fan_step(m->corner_vert, m->twin, &h), r.nb);
+            n++;
+        }
+        CHECK(n > 0u);
+        CHECK_EQ(h, r.tail ? SUBD_NONE : m->vert_out[v]);
+        CHECK_EQ(r.tail, (m->vert_tag[v] & SUBD_VTAG_BOUNDARY) ? 1u : 0u);
+        checked++;
+    }
+    return checked;
+}
+
+static void topo_fan_fast(void)
+{
+    uint32_t id, side, nboundary = 0, ninterior = 0;
+    /* the triangle meshes of t_make: closed, open fans (boundary centres), a grid */
+    for (id = 0; id < T_MESHES; id++) {
+        subd_arena a;
+        subd_mesh m;
+        if (id == 21u) continue; /* quads */
+        subd_arena_init(&a, t_work, sizeof t_work);
+        if (!t_make(id, &a, &m)) return;
+        CHECK(t_fan_equal(&m) > 0u);
+    }
+    /* creased grids (a crease tagged on both halves or on one), with corner tags, and their
+     * Loop levels 1 and 2 (the levels loop.c walks with the fast path) */
+    for (side = 0; side < 3u; side++) {
+        uint32_t lv;
+        for (lv = 0; lv <= 2u; lv++) {
+            subd_arena a;
+            subd_mesh m, out;
+            subd_diag d;
+            uint32_t v;
+            subd_arena_init(&a, t_work, sizeof t_work);
+            if (!t_grid(&a, side, &m)) return;
+            m.vert_tag[0] |= SUBD_VTAG_CORNER;
+            m.vert_tag[3u * TG + 3u] |= SUBD_VTAG_CORNER;
+            if (lv > 0u) {
+                subd_loop_opts o;
+                subd_loop_opts_default(&o);
+                o.levels = lv;
+                o.flags = SUBD_LOOP_ADJACENCY;
+                if (!CHECK_OK(subd_loop(&a, &m, &o, &out, &d), &d)) return;
+                m = out;
+            }
+            CHECK(t_fan_equal(&m) == m.num_verts);
+            for (v = 0; v < m.num_verts; v++) {
+                if (m.vert_tag[v] & SUBD_VTAG_BOUNDARY) nboundary++;
+                else ninterior++;
+            }
+        }
+    }
+    CHECK(nboundary > 0u && ninterior > 0u);
 }
 
 static void topo_sharp_schemes(void)
@@ -544,5 +651,7 @@ const test_case suite_topo[] = {
     {"topo_sharp_rule", topo_sharp_rule},
     {"topo_loop_child_tables", topo_loop_child_tables},
     {"topo_sharp_schemes", topo_sharp_schemes},
+    {"topo_fan_fast", topo_fan_fast},
+    {"topo_loop_child_writers", topo_loop_child_writers},
     {0, 0}
 };

@@ -29,113 +29,6 @@
 #include "host_real.h"
 
 /* ------------------------------------------------------------------------------------ */
-/* Errors                                                                                 */
-
-static char g_error[512]; /* the last error message, for --stats on failure */
-
-void tool_error_record(const char *fmt, ...)
-{
-    va_list ap;
-    progress_pause(); /* every caller prints the message on stderr next */
-    va_start(ap, fmt);
-    vsnprintf(g_error, sizeof g_error, fmt, ap);
-    va_end(ap);
-}
-
-void tool_error(const char *fmt, ...)
-{
-    va_list ap;
-    progress_pause();
-    va_start(ap, fmt);
-    vsnprintf(g_error, sizeof g_error, fmt, ap);
-    va_end(ap);
-    fprintf(stderr, "subd: %s\n", g_error);
-}
-
-static void element_str(const subd_diag *d, char *buf, size_t n)
-{
-    buf[0] = '\0';
-    if (d->face != SUBD_NONE) snprintf(buf, n, " (face %lu)", (unsigned long)d->face);
-    else if (d->polyline != SUBD_NONE) snprintf(buf, n, " (polyline %lu)", (unsigned long)d->polyline);
-    else if (d->vertex != SUBD_NONE) snprintf(buf, n, " (vertex %lu)", (unsigned long)d->vertex);
-}
-
-/* --stats of a failed run: one JSON object with the exit status and the message. */
-static void print_failure_json(const command *cmd, int rc)
-{
-    const char *m = g_error[0] ? g_error : "failed (see stderr)";
-    printf("{\"command\":\"%s\",\"status\":\"error\",\"exit\":%d,\"message\":\"", cmd->name, rc);
-    for (; *m; m++) {
-        unsigned char c = (unsigned char)*m;
-        if (c == '"' || c == '\\') printf("\\%c", c);
-        else if (c < 0x20u) printf("\\u%04x", c);
-        else putchar(c);
-    }
-    printf("\"}\n");
-}
-
-static int arena_too_small(uint32_t needed, uint32_t have)
-{
-    tool_error_record("arena too small: needs %lu bytes, have %lu", (unsigned long)needed, (unsigned long)have);
-    fprintf(stderr, "subd: %s\n", g_error);
-    return EXIT_LIMIT;
-}
-
-/* Maps a library failure on `file` to a message and an exit status. */
-static int library_error(const char *file, int st, const subd_diag *d, int have_budget, uint32_t budget)
-{
-    char el[64];
-    if (st == SUBD_ERR_NOMEM) {
-        if (have_budget) return arena_too_small(d->bytes_needed, budget);
-        tool_error_record("%s: internal error: arena planned too small (needs %lu bytes)", file,
-                          (unsigned long)d->bytes_needed);
-        fprintf(stderr, "subd: %s\n", g_error);
-        return EXIT_LIMIT;
-    }
-    element_str(d, el, sizeof el);
-    if (!d->line && d->face != SUBD_NONE && host_format_of(file) == HOST_FMT_STL) /* binary STL: its record */
-        tool_error_record("%s: facet %lu: %s", file, (unsigned long)d->face, subd_status_str(st));
-    else if (d->line) tool_error_record("%s:%lu: %s%s", file, (unsigned long)d->line, subd_status_str(st), el);
-    else tool_error_record("%s: %s%s", file, subd_status_str(st), el);
-    fprintf(stderr, "%s\n", g_error);
-    if (st == SUBD_ERR_TOO_BIG) return EXIT_LIMIT;
-    if (st == SUBD_ERR_PARAM) return EXIT_USAGE;
-    return EXIT_INPUT;
-}
-
-/* A scheme's failure on the input mesh: a triangle-only scheme names the first polygon in
- * diag.face (the semi-regular 4-8 plans take no diag yet, so the tool finds it for them),
- * which the reader maps back to its line in the input file (subd_obj_line_of /
- * subd_off_line_of). */
-static int scheme_error(const tool_run *r, int st, subd_diag *d)
-{
-    const subd_mesh *m = &r->in.mesh;
-    uint32_t f;
-    if (st == SUBD_ERR_NOT_TRIANGLES && d->face == SUBD_NONE)
-        for (f = 0; f < m->num_faces && d->face == SUBD_NONE; f++)
-            if (m->face_start[f + 1u] - m->face_start[f] != 3u) d->face = f;
-    if (st == SUBD_ERR_NOT_TRIANGLES && d->line == 0u && d->face != SUBD_NONE) {
-        char *buf = NULL;
-        uint32_t len = 0;
-        if (host_read_file(r->o.input, &buf, &len) == 0) {
-            d->line = r->in.format == HOST_FMT_OFF   ? subd_off_line_of(buf, len, d)
-                      : r->in.format == HOST_FMT_PLY ? subd_ply_line_of(buf, len, d)
-                      : r->in.format == HOST_FMT_STL ? 0u
-                                                     : subd_obj_line_of(buf, len, d);
-            free(buf);
-        }
-    }
-    return library_error(r->o.input, st, d, r->o.has_budget, r->o.budget);
-}
-
-int tool_out_of_memory(void)
-{
-    tool_error_record("out of memory");
-    fprintf(stderr, "subd: out of memory\n");
-    return EXIT_LIMIT;
-}
-
-/* ------------------------------------------------------------------------------------ */
 /* Tag files (--tags)                                                                     */
 
 /* Applies a tag file to the input mesh with subd_tags_apply (src/tags.c): nothing is applied
@@ -148,8 +41,7 @@ static int apply_tag_file(const char *path, subd_mesh *m, int quiet)
     subd_diag d;
     int st;
     if ((st = host_read_file(path, &buf, &len)) != 0) {
-        tool_error_record("cannot read tag file '%s': %s", path, host_read_error_str(st));
-        fprintf(stderr, "subd: %s\n", g_error);
+        tool_error("cannot read tag file '%s': %s", path, host_read_error_str(st));
         return EXIT_INPUT;
     }
     st = subd_tags_apply(buf, len, m, &rep, &d);
@@ -166,7 +58,7 @@ static int apply_tag_file(const char *path, subd_mesh *m, int quiet)
                 path, (unsigned long)d.line, (unsigned long)m->num_verts, (unsigned long)m->num_faces);
         return EXIT_INPUT;
     }
-    if (st != SUBD_OK) return library_error(path, st, &d, 0, 0);
+    if (st != SUBD_OK) return tool_library_error(path, st, &d, 0, 0);
     if (!quiet) {
         progress_pause();
         fprintf(stderr, "subd: %s: %lu crease edge(s), %lu vertex tag(s), %lu alpha(s)\n", path,
@@ -243,7 +135,7 @@ static int read_overlay(tool_run *r)
         return EXIT_INPUT;
     }
     if (st == HOST_ERR_OOM) return tool_out_of_memory();
-    if (st != SUBD_OK) return library_error(r->o.with_input, st, &d, 0, 0);
+    if (st != SUBD_OK) return tool_library_error(r->o.with_input, st, &d, 0, 0);
     if (tool_render_view(&h->mesh, rm, &r->overlay_pos) != 0) return tool_out_of_memory();
     r->o.ropt.input = rm;
     return EXIT_OK;
@@ -285,19 +177,17 @@ static int run_command(tool_run *r)
     st = host_read_mesh(r->o.input, r->o.has_budget ? &r->o.budget : NULL, &r->in, &d, &ns);
     r->lib_ns += ns;
     if (st == HOST_ERR_IO) {
-        tool_error_record("cannot read '%s': %s", r->o.input, host_read_error_str(r->in.read_rc));
-        fprintf(stderr, "subd: %s\n", g_error);
+        tool_error("cannot read '%s': %s", r->o.input, host_read_error_str(r->in.read_rc));
         return EXIT_INPUT;
     }
     if (st == HOST_ERR_OOM) return tool_out_of_memory();
     if (st == HOST_ERR_FORMAT) return tool_usage_error("cannot read '%s': input must be " HOST_READABLE, r->o.input);
     if (st == SUBD_ERR_PARSE && r->in.big_endian_ply) {
-        tool_error_record("%s:%lu: big-endian PLY is not supported (ascii and binary_little_endian are)", r->o.input,
-                          (unsigned long)d.line);
-        fprintf(stderr, "%s\n", g_error);
+        tool_error_at("%s:%lu: big-endian PLY is not supported (ascii and binary_little_endian are)", r->o.input,
+                      (unsigned long)d.line);
         return EXIT_INPUT;
     }
-    if (st != SUBD_OK) return library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
+    if (st != SUBD_OK) return tool_library_error(r->o.input, st, &d, r->o.has_budget, r->o.budget);
     /* One device arena holds the input mesh and then the operation's memory above it. */
     r->planned = r->in.planned;
     r->used = r->in.arena.peak;
@@ -329,11 +219,11 @@ static int run_command(tool_run *r)
         st = cmd->plan(&r->in.mesh, &r->o, &bytes, &d);
         r->lib_ns += host_now_ns() - t0;
         if (st > 0) return st; /* an EXIT_* the plan already reported (alpha's tag file) */
-        if (st != SUBD_OK) return scheme_error(r, st, &d);
+        if (st != SUBD_OK) return tool_scheme_error(r, st, &d);
         need = (bytes > UINT32_MAX - base) ? UINT32_MAX : base + bytes;
         if (need > r->planned) r->planned = need;
         if (r->o.has_budget) {
-            if (r->planned > r->o.budget) return arena_too_small(r->planned, r->o.budget);
+            if (r->planned > r->o.budget) return tool_arena_too_small(r->planned, r->o.budget);
             a = &r->in.arena;
         } else {
             r->work_mem = host_arena_alloc(&r->work, bytes);
@@ -350,7 +240,7 @@ static int run_command(tool_run *r)
             st = cmd->run(a, &r->in.mesh, &r->o, &r->out, &r->extra, &d);
             r->lib_ns += host_now_ns() - t0;
         }
-        if (st != SUBD_OK) return scheme_error(r, st, &d);
+        if (st != SUBD_OK) return tool_scheme_error(r, st, &d);
         if (r->o.has_budget) {
             r->used = r->in.arena.peak;
         } else if (base + r->work.peak > r->used) {
@@ -404,7 +294,7 @@ int main(int argc, char **argv)
     r.cmd = cmd;
     rc = tool_parse_args(cmd, argc, argv, &r.o);
     if (rc != EXIT_OK) {
-        if (r.o.stats) print_failure_json(cmd, rc);
+        if (r.o.stats) tool_failure_json(cmd, rc);
         return rc;
     }
     /* phases: read, run (scheme commands), write (unless --stream writes as it runs) */
@@ -412,7 +302,7 @@ int main(int argc, char **argv)
                    1u + (cmd->run ? 1u : 0u) + (r.o.output && !r.o.stream ? 1u : 0u));
     rc = run_command(&r);
     progress_end(rc == EXIT_OK || rc == EXIT_NOT_CONVERGED);
-    if (rc != EXIT_OK && rc != EXIT_NOT_CONVERGED && r.o.stats) print_failure_json(cmd, rc);
+    if (rc != EXIT_OK && rc != EXIT_NOT_CONVERGED && r.o.stats) tool_failure_json(cmd, rc);
     host_mesh_free(&r.in);
     host_mesh_free(&r.overlay);
     free(r.overlay_pos);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The subd host tool's shared types: the parsed options, the command table's row, and what
  * one invocation produced. Each concept lives in its own file:
- *   subd_main.c      main, the common path (read, tag, plan, run, write, report), errors
+ *   subd_main.c      main, the common path (read, tag, plan, run, write, report)
+ *   tool_error.c     error messages, their exit statuses and the failure JSON
  *   subd_options.c   the option table: parsing argv and the --help text, both from it
  *   subd_commands.c  the command table and the scheme commands' plan and run functions
  *   subd_info.c      the `info` report (topology, valences, bounding box)
@@ -180,11 +181,23 @@ int tool_alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d);
  * SUBD_LOOP_STREAM_LIMIT. */
 subd_loop_opts tool_loop_opts(const tool_opts *o);
 
-/* Errors (subd_main.c): print the message, return the EXIT_* status. */
+/* Errors (tool_error.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);
 /* Records an error message (printf format) for the --stats JSON of a failed run; the
  * caller prints it to stderr as well. The last one recorded is reported. */
 void tool_error_record(const char *fmt, ...);
 /* Prints "subd: MESSAGE" on stderr and records it (tool_error_record). */
 void tool_error(const char *fmt, ...);
+/* Prints "MESSAGE" (one that starts with FILE:LINE) on stderr and records it. */
+void tool_error_at(const char *fmt, ...);
+/* "arena too small: needs N bytes, have M" (--arena): EXIT_LIMIT. */
+int tool_arena_too_small(uint32_t needed, uint32_t have);
+/* A library failure on `file` (its line, element, arena need): the message and the EXIT_*
+ * status (EXIT_LIMIT for NOMEM/TOO_BIG, EXIT_USAGE for PARAM, else EXIT_INPUT). */
+int tool_library_error(const char *file, int st, const subd_diag *d, int have_budget, uint32_t budget);
+/* A scheme's failure on the input mesh: tool_library_error with the input line of
+ * diag.face (the readers' line lookups). */
+int tool_scheme_error(const tool_run *r, int st, subd_diag *d);
+/* --stats of a failed run: one JSON object with the exit status and the last message. */
+void tool_failure_json(const command *cmd, int rc);
 #endif

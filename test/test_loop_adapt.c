@@ -303,6 +303,7 @@ static void loop_adapt_watertight(void)
                     subd_arena_init(&a, LA_BUF, LA_BYTES);
                     if (!la_shape(id, &a, &in)) return;
                     if (!H_HOST && (in.num_faces << (2u * L)) > 600u) continue;
+                    if (mode == SUBD_LOOP_ADAPT_CHORD && (in.num_faces << (2u * L)) > 10000u) continue; /* time */
                     la_coll_init(&c, &a, in.num_faces << (2u * L));
                     la_opts(&o, L, L % 2u ? SUBD_LOOP_BOUNDARY_PAPER : SUBD_LOOP_BOUNDARY_BSPLINE, mode, eps);
                     o.face_level = la_rand_level;
@@ -429,7 +430,7 @@ static void loop_adapt_chord(void)
     uint32_t cases = 0, fewer = 0;
     for (id = 0; id < (H_HOST ? A_COUNT : A_DEVICE); id++) {
         uint32_t L, ei;
-        for (L = 2; L <= (H_HOST ? (id >= A_TORUS ? 3u : 4u) : 2u); L++)
+        for (L = 2; L <= (H_HOST ? (id >= A_TORUS ? 2u : 3u) : 2u); L++)
             for (ei = 0; ei < 3u; ei++) {
                 subd_arena a;
                 subd_mesh in;

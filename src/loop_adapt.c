@@ -190,6 +190,7 @@ typedef struct la_state {
     const subd_mesh *in;
     subd_loop_adapt_opts o;
     uint32_t f, started, ovf;
+    uint32_t gf; /* the control face whose hierarchy la_goto descends (f, or a neighbour) */
     uint32_t pathf, depth, view_ok; /* the stack holds face pathf's levels 0..depth  */
     uint8_t path[SUBD_MAX_LEVELS + 1u];
     la_face fc;
@@ -203,11 +204,11 @@ static void la_goto(la_state *s, const uint8_t *d)
 {
     uint32_t L = s->o.loop.levels, k;
     sp_level p, q;
-    if (s->pathf != s->f) {
+    if (s->pathf != s->gf) {
         la_level_at(&s->lay, 0, &p);
-        subd_lp_build_control(s->in, s->f, &p, L);
+        subd_lp_build_control(s->in, s->gf, &p, L);
         subd_lp_fill_cache(&p, s->o.loop.boundary, 1, s->lay.wc, &s->ovf);
-        s->pathf = s->f;
+        s->pathf = s->gf;
         s->depth = 0;
         s->view_ok = 0;
     }
@@ -403,31 +404,110 @@ static int la_next(const la_face *fc, uint32_t L, la_iter *it, la_tri *t)
 
 static subd_real la_abs(subd_real x, uint32_t *ovf) { return x < 0 ? subd_neg(x, ovf) : x; }
 
-/* 1 when |x - p|_1 + margin <= eps, p = c0 + r1 (c1 - c0) + r2 (c2 - c0). */
+#if !SUBD_FIXED
+/* Float32: the Euclidean distance from x to the triangle (c0, c1, c2), or to the segment
+ * (c0, c1) when c2 is NULL (Ericson, Real-Time Collision Detection, 5.1.2 and 5.1.5: the
+ * closest point q by Voronoi regions); returns |x - q|^2. A rounding that misjudges a region
+ * gives a farther q: the bound only grows. */
+static subd_real la_dot(const subd_real *a, const subd_real *b, uint32_t *ovf)
+{
+    subd_real r = subd_mul(a[0], b[0], ovf);
+    r = subd_add(r, subd_mul(a[1], b[1], ovf), ovf);
+    return subd_add(r, subd_mul(a[2], b[2], ovf), ovf);
+}
+
+static subd_real la_dist2(const subd_real *x, const subd_real *c0, const subd_real *c1, const subd_real *c2,
+                          uint32_t *ovf)
+{
+    subd_real ab[3], ac[3], ap[3], bp[3], cp[3], q[3], e[3], d1, d2, d3, d4, d5, d6, va, vb, vc, v, w;
+    const subd_real *base = c0, *dir2 = ac;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        ab[k] = subd_sub(c1[k], c0[k], ovf);
+        ap[k] = subd_sub(x[k], c0[k], ovf);
+        bp[k] = subd_sub(x[k], c1[k], ovf);
+        ac[k] = c2 ? subd_sub(c2[k], c0[k], ovf) : 0;
+        cp[k] = c2 ? subd_sub(x[k], c2[k], ovf) : 0;
+    }
+    v = w = 0;
+    d1 = la_dot(ab, ap, ovf);
+    if (!c2) { /* the segment: t = clamp(ab.ap / ab.ab, 0, 1) */
+        d3 = la_dot(ab, ab, ovf);
+        if (d1 > 0) v = d1 >= d3 ? SUBD_REAL_ONE : subd_div(d1, d3, ovf);
+    } else {
+        d2 = la_dot(ac, ap, ovf);
+        d3 = la_dot(ab, bp, ovf);
+        d4 = la_dot(ac, bp, ovf);
+        d5 = la_dot(ab, cp, ovf);
+        d6 = la_dot(ac, cp, ovf);
+        vc = subd_sub(subd_mul(d1, d4, ovf), subd_mul(d3, d2, ovf), ovf);
+        vb = subd_sub(subd_mul(d5, d2, ovf), subd_mul(d1, d6, ovf), ovf);
+        va = subd_sub(subd_mul(d3, d6, ovf), subd_mul(d5, d4, ovf), ovf);
+        if (d1 <= 0 && d2 <= 0) {
+        } else if (d3 >= 0 && d4 <= d3) {
+            v = SUBD_REAL_ONE;
+        } else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+            v = subd_div(d1, subd_sub(d1, d3, ovf), ovf);
+        } else if (d6 >= 0 && d5 <= d6) {
+            w = SUBD_REAL_ONE;
+        } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+            w = subd_div(d2, subd_sub(d2, d6, ovf), ovf);
+        } else if (va <= 0 && subd_sub(d4, d3, ovf) >= 0 && subd_sub(d5, d6, ovf) >= 0) {
+            subd_real n = subd_sub(d4, d3, ovf);
+            w = subd_div(n, subd_add(n, subd_sub(d5, d6, ovf), ovf), ovf);
+            base = c1; /* q = c1 + w (c2 - c1) */
+            for (k = 0; k < 3u; k++) e[k] = subd_sub(c2[k], c1[k], ovf);
+            dir2 = e;
+        } else {
+            subd_real den = subd_add(subd_add(va, vb, ovf), vc, ovf);
+            v = subd_div(vb, den, ovf);
+            w = subd_div(vc, den, ovf);
+        }
+    }
+    for (k = 0; k < 3u; k++) {
+        q[k] = subd_add(base[k], subd_mul(base == c0 ? v : 0, ab[k], ovf), ovf);
+        q[k] = subd_add(q[k], subd_mul(w, dir2[k], ovf), ovf);
+        q[k] = subd_sub(x[k], q[k], ovf);
+    }
+    return la_dot(q, q, ovf);
+}
+#endif
+
+/* 1 when x lies within eps of the triangle (c0, c1, c2) (the segment (c0, c1) when c2 is
+ * NULL), with a margin for rounding. Float32: the Euclidean distance (la_dist2) plus 2^-18 of
+ * the coordinates' magnitude. Q16.16: |x - p|_1 + 8 LSB, p the point of the triangle at x's
+ * barycentric coordinates (r1, r2) in the parameter domain (|.|_2 <= |.|_1; a bound, larger
+ * than the distance: squared distances of fine levels are below Q16.16's resolution). */
 static int la_within(la_state *s, const subd_real *x, const subd_real *c0, const subd_real *c1, const subd_real *c2,
                      subd_real r1, subd_real r2)
 {
     uint32_t k, ovf = 0;
     subd_real dev = 0, mag = 0, margin;
+#if SUBD_FIXED /* why: see above; Q16.16 resolves no squared distance of a fine level */
     for (k = 0; k < 3u; k++) {
         subd_real p = subd_add(c0[k], subd_mul(r1, subd_sub(c1[k], c0[k], &ovf), &ovf), &ovf);
-        p = subd_add(p, subd_mul(r2, subd_sub(c2[k], c0[k], &ovf), &ovf), &ovf);
+        if (c2) p = subd_add(p, subd_mul(r2, subd_sub(c2[k], c0[k], &ovf), &ovf), &ovf);
         dev = subd_add(dev, la_abs(subd_sub(x[k], p, &ovf), &ovf), &ovf);
+    }
+    (void)mag;
+    margin = (subd_real)8;
+    dev = subd_add(dev, margin, &ovf);
+    return !ovf && dev <= s->o.chord;
+#else
+    (void)r1;
+    (void)r2;
+    for (k = 0; k < 3u; k++) {
         mag = subd_add(mag, la_abs(x[k], &ovf), &ovf);
         mag = subd_add(mag, la_abs(c0[k], &ovf), &ovf);
         mag = subd_add(mag, la_abs(c1[k], &ovf), &ovf);
-        mag = subd_add(mag, la_abs(c2[k], &ovf), &ovf);
+        if (c2) mag = subd_add(mag, la_abs(c2[k], &ovf), &ovf);
     }
-    /* the rounding of p: Q16.16 a few LSB per product and sum; float32 a few ulps of the
-     * magnitudes involved (2^-18 of their sum covers them) */
-#if SUBD_FIXED /* why: the rounding bound differs in kind (absolute LSB vs relative ulps) */
-    margin = (subd_real)8;
-    (void)mag;
-#else
     margin = subd_mul(mag, SUBD_REAL_FRAC(1, 262144), &ovf);
+    if (margin >= s->o.chord) return 0;
+    dev = subd_sub(s->o.chord, margin, &ovf);
+    dev = subd_mul(dev, dev, &ovf);
+    return la_dist2(x, c0, c1, c2, &ovf) <= dev && !ovf;
 #endif
-    dev = subd_add(dev, margin, &ovf);
-    return !ovf && dev <= s->o.chord;
 }
 
 /* CHORD: the level of edge j of the current face. The edge is walked from its end with the
@@ -461,7 +541,7 @@ static uint32_t la_edge_chord(la_state *s, uint32_t j)
                 x.a = u.a + (w.a - u.a) / n * (m0 + m);
                 x.b = u.b + (w.b - u.b) / n * (m0 + m);
                 la_eval_point(s, x, y, 0);
-                ok = la_within(s, y, c0, c1, c0, SUBD_REAL_FRAC(m, seg), 0);
+                ok = la_within(s, y, c0, c1, 0, SUBD_REAL_FRAC(m, seg), 0);
             }
         }
         if (ok) return e;
@@ -504,6 +584,24 @@ static int la_face_ok(la_state *s)
     return 1;
 }
 
+/* CHORD: the smallest level at which face g's uniform triangles (every edge at that level)
+ * hold its level-L limit points within eps (L: always). */
+static uint32_t la_face_own(la_state *s, uint32_t g)
+{
+    uint32_t L = s->o.loop.levels, l, j;
+    la_face keep = s->fc;
+    s->gf = g;
+    for (l = 0; l < L; l++) {
+        s->fc.l = l;
+        for (j = 0; j < 3u; j++) s->fc.e[j] = l;
+        la_face_setup_ring(&s->fc);
+        if (la_face_ok(s)) break;
+    }
+    s->fc = keep;
+    s->gf = s->f;
+    return l;
+}
+
 /* The levels of the current face and its edges. */
 static void la_face_levels(la_state *s)
 {
@@ -525,9 +623,18 @@ static void la_face_levels(la_state *s)
     }
     l = 0;
     for (j = 0; j < 3u; j++) {
+        uint32_t tw = in->twin[3u * f + j], o1, o2;
         fc->e[j] = la_edge_chord(s, j);
+        /* not below the level both faces would take uniformly (la_face_own: a function of
+         * the face alone, so both faces compute the same): a coarser edge would force its
+         * faces into transitions finer than they need */
+        o1 = la_face_own(s, f);
+        o2 = tw == SUBD_NONE ? o1 : la_face_own(s, tw / 3u);
+        if (o2 < o1) o1 = o2;
+        if (o1 > fc->e[j]) fc->e[j] = o1;
         if (fc->e[j] > l) l = fc->e[j];
     }
+    s->gf = f;
     for (; l < L; l++) {
         fc->l = l;
         la_face_setup_ring(fc);
@@ -551,6 +658,7 @@ static int la_step(void *state, subd_stream_q *q, subd_diag *d)
                 q->ended = 1;
                 return SUBD_OK;
             }
+            s->gf = s->f;
             la_face_levels(s);
             s->it.phase = s->it.j = s->it.io = s->it.ii = 0;
             s->started = 1;
@@ -644,6 +752,7 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
     s->started = 0;
     s->ovf = 0;
     s->pathf = SUBD_NONE;
+    s->gf = 0;
     s->depth = 0;
     s->view_ok = 0;
     s->impl.step = la_step;

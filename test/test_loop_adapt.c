@@ -593,7 +593,7 @@ static void loop_adapt_pull(void)
     subd_mesh ico;
     subd_loop_adapt_opts o;
     la_coll push;
-    subd_tri buf[64];
+    static subd_tri buf[64]; /* static: the device stack */
     subd_diag d;
     uint32_t b, L = 2;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);

@@ -52,8 +52,8 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  * Cost: CALLBACK: per emitted triangle O(L) patch extractions at most (descents share their
  *   upper levels). CHORD: per control face, per edge about L 2^L limit evaluations and, per
  *   level tried for the face, one evaluation of every level-L lattice point of the face:
- *   about the uniform limit stream's work per tried level (the output is adaptive, the
- *   check is exhaustive).
+ *   about the uniform limit stream's work per tried level, for the face and for each
+ *   neighbour's own level (the output is adaptive, the check is exhaustive).
  * Notes: every vertex is the limit point of a lattice point (a, b) of its control face (units
  *   1/2^L), bit-identical to the uniform limit stream at level L (subd_loop_stream with
  *   SUBD_LOOP_STREAM_LIMIT) and with its id (subd_loop.h's formula at level L), so a vertex
@@ -64,12 +64,14 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   points) and that inner triangle (level 1: a fan), so there are no T-junctions: a closed
  *   input gives a closed, consistently oriented output when welded by id.
  *   CALLBACK: l(f) = min(face_level(f), L); e = the smaller of its faces' levels.
- *   CHORD: e is the smallest level whose chord polyline holds every level-L limit point of
- *   the edge within eps (computed on the same bits by both faces), l(f) the smallest level
- *   >= its edges' at which every level-L limit point of the face lies within eps of the
- *   emitted triangle containing it (measured as |x - p|_1 plus a rounding margin, p the
- *   point of the triangle at x's barycentric coordinates), else L. Guarantee: every vertex
- *   of the uniform limit stream at level L lies within eps (Euclidean) of the emitted mesh.
+ *   CHORD: e is the larger of the smallest level whose chord polyline holds every level-L
+ *   limit point of the edge within eps (computed on the same bits by both faces) and the
+ *   smaller of its faces' own uniform levels; l(f) the smallest level >= its edges' at which
+ *   every level-L limit point of the face lies within eps of the emitted triangle containing
+ *   it (float32: Euclidean distance plus a rounding margin; Q16.16: |x - p|_1 plus 8 LSB, p
+ *   the triangle's point at x's barycentric coordinates, a larger bound), else L.
+ *   Guarantee: every vertex of the uniform limit stream at level L lies within eps
+ *   (Euclidean) of the emitted mesh.
  *   An eps below every deviation (and below the margin: 8 LSB in Q16.16, about 2^-18 of the
  *   coordinates in float32) gives the uniform limit stream bit for bit, as does CALLBACK
  *   with every face at L. */

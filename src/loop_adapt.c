@@ -20,20 +20,24 @@
  * Levels. Each control edge gets a level e, each face a level l >= its edges'.
  *   CALLBACK: l = min(callback(face), L); an edge's e = the smaller of its two faces' levels
  *     (the callback is a function of the face index, so both faces compute the same).
- *   CHORD: an edge's e is the smallest level whose chord polyline (the level-e lattice points
- *     of the edge, as limit points) holds every level-L limit point of the edge within eps; the
- *     points are the same bits from both faces and the polyline is walked from the end with the
- *     smaller control vertex, so both faces decide the same e. A face's l is the smallest level
- *     >= its edges' at which every level-L limit point of the face lies within eps of the
- *     triangle (of this face's emitted triangulation at l) that contains it in the parameter
- *     domain; at l = L this holds by construction (every level-L point is a vertex or lies on a
- *     chord its edge's e was chosen for), so l = L needs no check. "Within eps" is measured as
- *     |x - p|_1 + margin <= eps, p the point of the triangle with x's barycentric coordinates
- *     (|.|_2 <= |.|_1, and the margin covers the rounding of p: 8 LSB in Q16.16, 2^-18 of the
- *     coordinates' magnitude in float32), so the Euclidean distance to the emitted mesh is
- *     within eps. This is an exact check on the points the guarantee is about, not an
- *     estimate; its cost is about one uniform level-L pass per tried level l (the output is
- *     what is adaptive, not the work).
+ *   CHORD: an edge's e is the larger of (a) the smallest level whose chord polyline (the
+ *     level-e lattice points of the edge, as limit points) holds every level-L limit point of
+ *     the edge within eps, walked from the end with the smaller control vertex on the same
+ *     bits from both faces, and (b) the smaller of its two faces' "own" levels (the smallest
+ *     level at which the face's uniform triangles hold its level-L points within eps; a
+ *     function of that face alone), so both faces decide the same e and no edge is coarser
+ *     than both its faces would take uniformly. A face's l is the smallest level >= its
+ *     edges' at which every level-L limit point of the face lies within eps of the triangle
+ *     (of this face's triangulation at l) that contains it in the parameter domain; at l = L
+ *     this holds by construction (every level-L point is a vertex or lies on a chord its
+ *     edge's e was chosen for), so l = L needs no check. "Within eps": float32, the Euclidean
+ *     distance to that triangle (segment, for an edge) plus a rounding margin of 2^-18 of the
+ *     coordinates' magnitude; Q16.16, whose resolution cannot hold the squared distances of
+ *     fine levels, the bound |x - p|_1 + 8 LSB, p the triangle's point at x's barycentric
+ *     coordinates (>= the Euclidean distance, so Q16.16 refines more). Either way the
+ *     distance to the emitted mesh is within eps: an exact check on the points the guarantee
+ *     is about, not an estimate; its cost is about one uniform level-L pass per level tried
+ *     (the output is what is adaptive, not the work).
  * Triangulation of a face at level l (n = 2^l):
  *   - every edge at l: the uniform level-l triangles, depth first, children 0..3 (the uniform
  *     stream's order and corner order);

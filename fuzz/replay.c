@@ -4,7 +4,7 @@
  * -DFUZZ_ENTRY=fz_<target>_entry), so CI runs the fuzz checks with gcc and ASan+UBSan and
  * needs no clang. A violated check aborts (run_suite.sh counts that as a failure), after
  * this program has printed which file it was running.
- * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes) */
+ * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes, ladapt) */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <stdint.h>
@@ -17,6 +17,7 @@ int fz_off_entry(const uint8_t *data, size_t size);
 int fz_stl_entry(const uint8_t *data, size_t size);
 int fz_ply_entry(const uint8_t *data, size_t size);
 int fz_schemes_entry(const uint8_t *data, size_t size);
+int fz_ladapt_entry(const uint8_t *data, size_t size);
 
 typedef int (*entry_fn)(const uint8_t *, size_t);
 
@@ -102,6 +103,7 @@ int main(int argc, char **argv)
                       : strcmp(argv[i], "stl") == 0     ? fz_stl_entry
                       : strcmp(argv[i], "ply") == 0     ? fz_ply_entry
                       : strcmp(argv[i], "schemes") == 0 ? fz_schemes_entry
+                      : strcmp(argv[i], "ladapt") == 0  ? fz_ladapt_entry
                                                         : NULL;
         if (!fn) {
             printf("FAIL unknown target %s\n", argv[i]);

@@ -6,6 +6,7 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_patch.h"
+#include "layout.h"
 #include "mesh_internal.h"
 
 /* A level's arrays for corner valence sum s; `cache`: with the refined values; `control`:
@@ -463,4 +464,95 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
             q->h->cb[j] = (ph->cb[i] + ph->cb[i1]) / 2u;
         }
     }
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Limit mode's pieces (loop_patch.h: shared with the adaptive stream)                    */
+
+void subd_lp_view_take(struct subd_layout *y, uint32_t s, subd_mesh *w)
+{
+    uint32_t nv = cap_v(s), nf = cap_f(s);
+    w->face_start = subd_layout_take(y, nf + 1u, 4u);
+    w->corner_vert = subd_layout_take(y, nf, 12u);
+    w->corner_face = subd_layout_take(y, nf, 12u);
+    w->twin = subd_layout_take(y, nf, 12u);
+    w->vert_out = subd_layout_take(y, nv, 4u);
+    w->vert_tag = subd_layout_take(y, nv, 1u);
+    w->edge_tag = subd_layout_take(y, nf, 3u);
+}
+
+void subd_lp_view_fill(const sp_level *p, subd_mesh *m)
+{
+    uint32_t nf = p->h->nf, nv = p->h->nv, c, v;
+    m->num_verts = nv;
+    m->num_faces = nf;
+    m->num_corners = 3u * nf;
+    m->pos = p->pos;
+    m->num_lines = m->num_line_verts = 0;
+    m->line_start = m->line_vert = 0;
+    m->num_edges = m->num_boundary_edges = m->num_boundary_loops = m->num_isolated = 0;
+    for (c = 0; c <= nf; c++) m->face_start[c] = 3u * c;
+    for (c = 0; c < 3u * nf; c++) {
+        uint32_t tw = p->tw[c];
+        m->corner_vert[c] = p->cv[c];
+        m->corner_face[c] = c / 3u;
+        m->twin[c] = tw < LP_TW_BORDER ? tw : SUBD_NONE;
+        m->edge_tag[c] = (uint8_t)((tw == LP_TW_NONE ? SUBD_ETAG_BOUNDARY : 0u) |
+                                   ((tw != LP_TW_NONE && (p->sh[c] & LP_SH_RULE)) ? SUBD_ETAG_CREASE : 0u));
+    }
+    for (v = 0; v < nv; v++) {
+        uint8_t f = p->vflag[v];
+        m->vert_out[v] = v < 3u ? p->vout[v] : SUBD_NONE;
+        m->vert_tag[v] = (uint8_t)(LOOP_VTAG_KNOWN | ((f & TOPO_PF_REGULAR) ? LOOP_VTAG_REGULAR : 0u) |
+                                   ((f & TOPO_PF_CORNER) ? SUBD_VTAG_CORNER : 0u) |
+                                   ((v < 3u && p->tw[p->vout[v]] == LP_TW_NONE) ? SUBD_VTAG_BOUNDARY : 0u));
+    }
+}
+
+uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels)
+{
+    uint64_t n1 = (uint64_t)1 << levels, nm1 = n1 - 1u;
+    uint32_t h, t, u, w, tw;
+    uint64_t pos;
+    if (a == 0u && b == 0u) return in->corner_vert[3u * f];
+    if (a == n1 && b == 0u) return in->corner_vert[3u * f + 1u];
+    if (a == 0u && b == n1) return in->corner_vert[3u * f + 2u];
+    if (b == 0u) { h = 3u * f; t = a; }
+    else if ((uint64_t)a + b == n1) { h = 3u * f + 1u; t = b; }
+    else if (a == 0u) { h = 3u * f + 2u; t = (uint32_t)(n1 - b); }
+    else {
+        uint64_t am = a - 1u;
+        return (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+               (uint64_t)f * (nm1 * (nm1 - 1u) / 2u) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
+    }
+    u = in->corner_vert[h];
+    w = in->corner_vert[tri_next(h)];
+    tw = in->twin[h];
+    pos = (u < w) ? t : n1 - t;
+    if (tw != SUBD_NONE && tw < h) h = tw;
+    return (uint64_t)in->num_verts + (uint64_t)h * nm1 + pos - 1u;
+}
+
+/* Largest number of neighbours of a vertex of the input (a triangle mesh with adjacency):
+ * outgoing half-edges, plus one on a boundary. O(corners). (loop_stream.c's max_valence is
+ * the same walk.) */
+uint32_t subd_lp_max_valence(const subd_mesh *in)
+{
+    uint32_t v, best = 0;
+    for (v = 0; v < in->num_verts; v++) {
+        uint32_t h0 = in->vert_out[v], h = h0, n = 0;
+        if (h0 == SUBD_NONE || h0 >= in->num_corners) continue;
+        for (;;) {
+            uint32_t t = in->twin[tri_prev(h)];
+            n++;
+            if (t == SUBD_NONE) {
+                n++;
+                break;
+            }
+            if (t == h0 || n > in->num_corners) break;
+            h = t;
+        }
+        if (n > best) best = n;
+    }
+    return best;
 }

@@ -81,4 +81,22 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre; smap (one entry per cached
  * value) is scratch, fmap (4 per parent face) holds LP_NO_SLOT on entry and on return. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap);
+/* ------------------------------------------------------------------------------------ */
+/* Shared with the adaptive stream (loop_adapt.c): the limit mode's pieces, one home.       */
+/* (loop_stream.c keeps static copies written before these: view_layout, emit_limit's view, */
+/* vertex_id; they compute the same and can be replaced by these calls.)                   */
+
+struct subd_layout;
+/* The arrays of a subd_mesh view of a level with corner valence sum s (counted or carved by
+ * layout.h's walk; SUBD_LOOP_SVIEW_ is the same sum). */
+void subd_lp_view_take(struct subd_layout *y, uint32_t s, subd_mesh *w);
+/* Fills view m (arrays from subd_lp_view_take) with level p as a subd_mesh for
+ * subd_loop_limit_vertex: the centre's corners 0..2 have whole rings and their vert_out; an
+ * outer vertex's class is given by LOOP_VTAG_KNOWN. */
+void subd_lp_view_fill(const sp_level *p, subd_mesh *m);
+/* Global id of lattice point (a, b) (units 1/2^levels) of input face f: subd_loop.h's formula
+ * for the Loop streams. */
+uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels);
+/* Largest valence of the input (outgoing half-edges, plus one on a boundary). */
+uint32_t subd_lp_max_valence(const subd_mesh *in);
 #endif

@@ -884,5 +884,37 @@ usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.gcode"; check $?
 run "$FLOAT" alpha --stream test/data/cube_quad.obj -o "$T/x.xyz"
 is 1 && grep -q "streams curves" "$T/err"; check $? "alpha --stream on a surface: exit 1, says it streams curves"
 
+# ---------------------------------------------------------------- loop --stream --limit --chord
+# The adaptive limit stream (subd_loop_adapt_stream): welded by the tool's id gathering, a closed
+# input gives a closed 2-manifold (subd info: validation ok, no boundary edge, Euler 2 or 0);
+# fewer triangles than the uniform limit stream; a tolerance below every deviation gives the
+# uniform limit stream's file byte for byte; the options it needs.
+for b in "$FLOAT" "$FIXED"; do
+    name=$(basename "$b")
+    for m in test/data/icosahedron.obj test/data/torus_tri.obj; do
+        lv=3; [ "$m" = test/data/torus_tri.obj ] && lv=2
+        run "$b" loop -l $lv --stream --limit --chord 0.01 --stats "$m" -o "$T/ad.obj"
+        n=$(json_num triangles)
+        is 0 && json_ok "$T/out" && [ "$(json_num arena_used)" -le "$(json_num arena_planned)" ] &&
+            "$b" info "$T/ad.obj" < /dev/null > "$T/info" 2>&1 && grep -q '^validation: ok' "$T/info" &&
+            grep -q '^boundary edges: 0$' "$T/info" && grep -q "^faces: $n$" "$T/info"
+        check $? "$name loop -l $lv --stream --limit --chord 0.01 $(basename "$m"): closed 2-manifold welded by id ($n triangles)"
+        run "$b" loop -l $lv --stream --limit --chord 0.01 "$m" -o "$T/ad.stl"
+        is 0 && [ "$(wc -c < "$T/ad.stl")" -eq $((84 + 50 * n)) ]
+        check $? "$name --chord -o .stl: 84 + 50 x $n bytes"
+    done
+    run "$b" loop -l 3 --stream --limit --chord 0.05 --stats test/data/icosahedron.obj
+    [ "$(json_num triangles)" -lt 1280 ]
+    check $? "$name --chord 0.05 on the icosahedron: fewer than the uniform 1280 triangles"
+    "$b" loop -l 2 --stream --limit test/data/hexfan.obj -o "$T/u.stl" < /dev/null > /dev/null 2>&1
+    tiny=1e-30; [ "$b" = "$FIXED" ] && tiny=0.00002 # Q16.16: 1.3 LSB, below the 8 LSB margin
+    run "$b" loop -l 2 --stream --limit --chord $tiny test/data/hexfan.obj -o "$T/a.stl"
+    is 0 && cmp -s "$T/u.stl" "$T/a.stl"
+    check $? "$name --chord $tiny: the uniform limit stream's .stl byte for byte"
+done
+usage_case_pre loop --stream --chord 0.01 test/data/icosahedron.obj -o "$T/x.stl"; check $? "loop --chord without --limit: exit 1"
+usage_case_pre loop --chord 0.01 test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --chord without --stream: exit 1"
+usage_case_pre loop --stream --limit --chord 0 test/data/icosahedron.obj -o "$T/x.stl"; check $? "loop --chord 0: exit 1"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

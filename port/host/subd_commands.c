@@ -21,9 +21,24 @@ subd_loop_opts tool_loop_opts(const tool_opts *o)
     return lo;
 }
 
+/* loop --stream --limit --chord EPS: the adaptive limit stream's options. */
+subd_loop_adapt_opts tool_loop_adapt_opts(const tool_opts *o)
+{
+    subd_loop_adapt_opts ao;
+    memset(&ao, 0, sizeof ao);
+    ao.loop = tool_loop_opts(o);
+    ao.mode = SUBD_LOOP_ADAPT_CHORD;
+    ao.chord = host_real_from_double(o->adapt_val[0]);
+    return ao;
+}
+
 static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_loop_opts lo = tool_loop_opts(o);
+    if (o->stream && o->adapt_mode == SUBD_ADAPT_CHORD) { /* loop --stream --limit --chord EPS */
+        subd_loop_adapt_opts ao = tool_loop_adapt_opts(o);
+        return subd_loop_adapt_stream_plan(in, &ao, bytes, d);
+    }
     return o->stream ? subd_loop_stream_plan(in, &lo, bytes, d) : subd_loop_plan(in, &lo, bytes, d);
 }
 

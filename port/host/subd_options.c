@@ -415,7 +415,9 @@ static const tool_option options[] = {
     {"--chord", NULL, "EPS", 0, OPT_ADAPT, set_adapt_mode,
      "(adapt) refine only where a triangle is more than EPS from the\n"
      "level-MAX surface (chordal tolerance, input units); (alpha\n"
-     "--stream) only the points that keep every level-N point within EPS"},
+     "--stream) only the points that keep every level-N point within EPS;\n"
+     "(loop --stream --limit) each face at the level that keeps every\n"
+     "level-L limit point within EPS, watertight (subd_loop_adapt_stream)"},
     {"--feed", NULL, "F", 0, OPT_ALPHA, set_feed, "(alpha --stream, G-code output) feed rate F on the first G1"},
     {"--size", NULL, "WxH", 0, 0, set_size, "picture size in pixels (default 800x600, up to 8192x8192)"},
     {"--yaw", NULL, "DEG", 0, 0, set_yaw, "view rotation about the up axis (default 30)"},
@@ -495,7 +497,8 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         /* named here, where the option is known (several share one bit); --stream and
          * --limit get their own messages below */
         if (t->given & ~cmd->options & ~OPT_STREAM &&
-            !(strcmp(name, "--chord") == 0 && strcmp(cmd->name, "alpha") == 0)) /* alpha --stream --chord */
+            !(strcmp(name, "--chord") == 0 && (strcmp(cmd->name, "alpha") == 0 || strcmp(cmd->name, "loop") == 0)))
+            /* alpha --stream --chord; loop --stream --limit --chord */
             return tool_usage_error("option '%s' is not accepted by '%s' (see subd --help)", name, cmd->name);
         c.cmd = cmd;
         c.o = o;
@@ -520,6 +523,8 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         if (o->feed > 0.0 && o->output && host_format_of(o->output) != HOST_FMT_GCODE)
             return tool_usage_error("--feed goes with G-code output (.gcode, .nc)");
     }
+    if (strcmp(cmd->name, "loop") == 0 && o->adapt_mode == SUBD_ADAPT_CHORD && !(o->stream && o->limit))
+        return tool_usage_error("loop: --chord needs --stream --limit (the adaptive limit stream)");
     if (o->limit && !o->stream)
         return tool_usage_error("--limit needs --stream (for the limit of a mesh's own vertices: 'subd limit')");
     if (!host_format_readable(host_format_of(o->input)))

@@ -329,6 +329,9 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
             so.adapt.mode = SUBD_ADAPT_UNIFORM;
             so.adapt.max_level = o->levels;
             st = subd_sr48_stream(a, base, &so, &sink, d);
+        } else if (o->adapt_mode == SUBD_ADAPT_CHORD) {
+            subd_loop_adapt_opts ao = tool_loop_adapt_opts(o);
+            st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
         } else {
             st = subd_loop_stream(a, &r->in.mesh, &lo, &sink, d);
         }
@@ -375,6 +378,34 @@ static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr
     return SUBD_OK;
 }
 
+/* loop --stream --limit --chord: the triangle count is the stream's choice, so a first pass
+ * counts (STL writes it first); the ids are those of level L; the vertex count is gathered. */
+static int adapt_count_tri(void *ctx, const subd_loop_tri *t)
+{
+    (void)t;
+    ++*(uint64_t *)ctx;
+    return 0;
+}
+
+static int loop_adapt_prepare(tool_run *r, subd_arena *a, subd_diag *d, stream_counts *c)
+{
+    subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
+    subd_tri_sink sink;
+    uint64_t n = 0;
+    double t0 = host_now_ns();
+    int st;
+    sink.tri = adapt_count_tri;
+    sink.ctx = &n;
+    st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
+    r->lib_ns += host_now_ns() - t0;
+    if (st != SUBD_OK) return st;
+    c->tris = n;
+    c->verts = c->ids < 3u * n ? c->ids : 3u * n; /* a bound: the sink counts them */
+    c->verts_exact = 0;
+    c->edges = 3u * n / 2u;
+    return SUBD_OK;
+}
+
 int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
 {
     const subd_mesh *in = &r->in.mesh;
@@ -392,8 +423,12 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
             return st;
         }
     }
+    if (!r->o.sr48_stream && r->o.adapt_mode == SUBD_ADAPT_CHORD && (st = loop_adapt_prepare(r, a, d, &c)) != SUBD_OK) {
+        free(s);
+        return st;
+    }
     st = stream_into(r, a, d, s, &c, r->o.sr48_stream ? &base : NULL);
-    if (r->o.sr48_stream) c.verts = s->nv;
+    if (r->o.sr48_stream || r->o.adapt_mode == SUBD_ADAPT_CHORD) c.verts = s->nv;
     memset(m, 0, sizeof *m);
     m->num_verts = sat32(c.verts);
     m->num_faces = sat32(c.tris);
@@ -419,8 +454,11 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
     else {
         /* the stream's own arena (its plan; the mesh not counted), beside arena_planned */
         subd_loop_opts lo = tool_loop_opts(&r->o);
+        subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
         uint32_t sb = 0;
-        if (subd_loop_stream_plan(in, &lo, &sb, NULL) != SUBD_OK) sb = 0;
+        if ((r->o.adapt_mode == SUBD_ADAPT_CHORD ? subd_loop_adapt_stream_plan(in, &ao, &sb, NULL)
+                                                  : subd_loop_stream_plan(in, &lo, &sb, NULL)) != SUBD_OK)
+            sb = 0;
         snprintf(r->extra.json, sizeof r->extra.json,
                  "\"stream\":true,\"limit\":%s,\"triangles\":%llu,\"checksum\":\"%08lx\",\"stream_arena\":%lu",
                  r->o.limit ? "true" : "false", (unsigned long long)s->tris, (unsigned long)s->hash, (unsigned long)sb);

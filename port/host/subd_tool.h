@@ -180,6 +180,8 @@ int tool_alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d);
 /* The subd_loop_opts of the loop command (subd_commands.c): --stream --limit sets
  * SUBD_LOOP_STREAM_LIMIT. */
 subd_loop_opts tool_loop_opts(const tool_opts *o);
+/* loop --stream --limit --chord EPS: subd_loop_adapt_stream's options (subd_commands.c). */
+subd_loop_adapt_opts tool_loop_adapt_opts(const tool_opts *o);
 
 /* Errors (tool_error.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);

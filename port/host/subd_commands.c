@@ -152,7 +152,7 @@ static subd_sr48_opts sr48_opts_of(const tool_opts *o)
     return so;
 }
 
-static subd_adapt sr48_adapt_of(const tool_opts *o)
+subd_adapt tool_sr48_adapt(const tool_opts *o)
 {
     subd_adapt ad;
     int i;
@@ -195,6 +195,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
     subd_sr48 base;
     void *mem;
     int st = subd_sr48_base_plan(in, flags, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    /* adapt --stream: the cut's mode decides the stream's plan */
     if (st != SUBD_OK) return st;
     mem = host_arena_alloc(&tmp, bound);
     if (!mem) return SUBD_ERR_NOMEM;
@@ -202,8 +203,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
     if (st == SUBD_OK) st = subd_sr48_base_plan(in, flags, clusters, &base_bytes);
     if (st == SUBD_OK) st = subd_sr48_base(&tmp, in, flags, &base, d);
     memset(&so, 0, sizeof so);
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
-    so.adapt.max_level = o->levels;
+    so.adapt = tool_sr48_adapt(o);
     if (st == SUBD_OK) st = subd_sr48_stream_plan(&base, &so, &sb, d);
     bound = tmp.used; /* the base; its build scratch above it is given back */
     free(mem);
@@ -216,7 +216,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
 static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_sr48_opts so = sr48_opts_of(o);
-    subd_adapt ad = sr48_adapt_of(o);
+    subd_adapt ad = tool_sr48_adapt(o);
     uint32_t build = 0, extract = 0, keep;
     subd_arena tmp;
     subd_sr48 h;
@@ -242,7 +242,7 @@ static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
 {
     static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
     subd_sr48_opts so = sr48_opts_of(o);
-    subd_adapt ad = sr48_adapt_of(o);
+    subd_adapt ad = tool_sr48_adapt(o);
     subd_adapt_report rep;
     subd_sr48 h;
     uint32_t mark = subd_arena_mark(a);
@@ -651,8 +651,10 @@ const command tool_commands[] = {
      sr48_run, NULL},
     {"adapt", "-l MAX MODE INPUT -o OUTPUT", "variable-resolution semi-regular 4-8 mesh up to MAX binary\n"
                                              "steps; MODE: --point X,Y,Z [--radius R] | --ramp x|y|z |\n"
-                                             "--plane X,Y,Z,NX,NY,NZ | --chord EPS; --no-smooth",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 6, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH | OPT_ADAPT,
+                                             "--plane X,Y,Z,NX,NY,NZ | --chord EPS; --no-smooth;\n"
+                                             "--stream: one triangle at a time (all modes but --chord)",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 6, SUBD_SR48_MAX_STEPS,
+     OPT_NO_SMOOTH | OPT_ADAPT | OPT_STREAM,
      sr48_plan, sr48_run, NULL},
 };
 const size_t tool_num_commands = sizeof tool_commands / sizeof tool_commands[0];

@@ -180,6 +180,10 @@ int tool_alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d);
  * SUBD_LOOP_STREAM_LIMIT. */
 subd_loop_opts tool_loop_opts(const tool_opts *o);
 
+/* The cut of semireg48 (uniform) and adapt (subd_commands.c): the mode and its parameters,
+ * max_level = -l; used by both the materialised run and the stream. */
+subd_adapt tool_sr48_adapt(const tool_opts *o);
+
 /* Errors (subd_main.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);
 /* Records an error message (printf format) for the --stats JSON of a failed run; the

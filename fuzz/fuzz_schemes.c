@@ -384,7 +384,7 @@ static void sr48_ok(void *x, subd_arena *a, int first)
         return;
     c->ext.h = h;
     uint32_t plan = 0;
-    int st = subd_sr48_extract_plan(h, &c->ext.ad, &plan);
+    int st = subd_sr48_extract_plan(h, &c->ext.ad, &plan, 0);
     fz_status_known(st, 0, "subd_sr48_extract_plan");
     if (st == SUBD_OK)
         run_sized("subd_sr48_extract", plan, ext_run, ext_ok, &c->ext, c->r, 0);
@@ -760,7 +760,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
         g_cb_level = u8(&c);
     }
     uint32_t bound = 0;
-    int stb = subd_sr48_plan(&g_in, &rc.o, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    int stb = subd_sr48_plan(&g_in, &rc.o, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, 0);
     fz_status_known(stb, 0, "subd_sr48_plan (bound)");
     uint32_t clusters = SUBD_SR48_CLUSTERS_UNKNOWN;
     if (stb == SUBD_OK && bound <= FZ_MAX_ARENA) {
@@ -777,7 +777,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
         if (st != SUBD_OK)
             clusters = SUBD_SR48_CLUSTERS_UNKNOWN;
     }
-    st = subd_sr48_plan(&g_in, &rc.o, clusters, &plan);
+    st = subd_sr48_plan(&g_in, &rc.o, clusters, &plan, 0);
     fz_status_known(st, 0, "subd_sr48_plan");
     check_inputs("subd_sr48_plan");
     if (st == SUBD_OK && stb == SUBD_OK)

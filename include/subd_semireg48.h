@@ -96,7 +96,8 @@ typedef struct subd_sr48 {
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, steps out of range, unknown flag bits, input without
  *   adjacency, clusters more than half the faces), SUBD_ERR_NOT_TRIANGLES (diag.face: a
- *   non-triangle), SUBD_ERR_EMPTY (no faces), SUBD_ERR_TOO_BIG.
+ *   non-triangle), SUBD_ERR_EMPTY (no faces), SUBD_ERR_TOO_BIG. diag (may be NULL) gets the
+ *   status (and face) as subd_sr48_build would; bytes_needed stays 0.
  * Cost: O(corners).
  * Notes: the pre-processed size depends on how many two-face clusters find_clusters picks
  * (level 0 has 8 triangles per cluster and 6 per isolated triangle), which needs the edge
@@ -105,7 +106,8 @@ typedef struct subd_sr48 {
  * smoothing sums, and the smoothing sums of the largest later even level (per vertex 3 sums
  * and a count: 28 bytes in Q16.16, whose sums are exact 64-bit integers, 16 in float32; so
  * the two arithmetics have different plans). */
-int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes);
+int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes,
+                   subd_diag *diag);
 
 /* subd_sr48_count_clusters: the number of two-face clusters find_clusters picks for `in`
  * (section 5), in *clusters, for an exact subd_sr48_plan.
@@ -238,7 +240,7 @@ typedef struct subd_adapt_report {
 /* subd_sr48_extract_plan: the arena bytes subd_sr48_extract may use, in *bytes.
  * Memory: no arena use.
  * Errors: the parameter errors of subd_sr48_extract (SUBD_ERR_PARAM, SUBD_ERR_EMPTY,
- *   SUBD_ERR_TOO_BIG).
+ *   SUBD_ERR_TOO_BIG); diag (may be NULL) gets the status, bytes_needed stays 0.
  * Cost: O(levels).
  * Notes: exact for SUBD_ADAPT_UNIFORM (when every input
  * vertex is used by a face; unused input vertices are dropped, so the mesh is then smaller);
@@ -247,7 +249,7 @@ typedef struct subd_adapt_report {
  * levels < max_level, 80 bytes per level for CHORD). An adaptive extraction needs only the
  * bytes it uses: it fails with SUBD_ERR_NOMEM only when they are not free, and then
  * diag->bytes_needed is the exact need when the marking memory fit (else the plan). */
-int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes);
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes, subd_diag *diag);
 
 /* subd_sr48_extract: a conforming triangle mesh (validated, with adjacency) cut out of the
  * hierarchy, into *out; what was cut into *rep.
@@ -392,8 +394,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_BYTES(L, N) \
     SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
-/* The plan of the adaptive modes (PLANE, POINT): L (3 subd_reals) per window vertex, per
- * level window and in the refined window, and the level-0 window's L, vertices, triangles. */
+/* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
+ * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
+ * triangles (the adaptation box lives in the run state). */
 #define SUBD_SR48_STREAM_ADAPT_EXTRA_(L, t, v) \
     (((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
      SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))

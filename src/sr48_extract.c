@@ -301,15 +301,16 @@ static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint3
     return *bound == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
 }
 
-int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes)
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes, subd_diag *diag)
 {
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     ex_layout L;
     uint32_t b;
     int st;
-    if (!bytes) return SUBD_ERR_PARAM;
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
     st = ex_plan(h, ad, &L, &b);
     if (st == SUBD_OK) *bytes = b;
-    return st;
+    return subd_plan_end(d, st);
 }
 
 /* Lazy validation (adaptive modes): a triangle's index rules are checked the first time

@@ -726,7 +726,7 @@ static int extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd
     subd_diag d;
     uint32_t plan;
     int st;
-    if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan), SUBD_OK)) return 0;
+    if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan, 0), SUBD_OK)) return 0;
     subd_arena_reset_peak(a);
     st = subd_sr48_extract(a, h, ad, out, rep, &d);
     return CHECK_OK(st, &d);
@@ -742,7 +742,7 @@ static uint32_t run_checked(const subd_sr48 *h, const subd_adapt *ad, double tol
     cut_result dummy;
     if (!res) res = &dummy;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan), SUBD_OK)) return 0;
+    if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan, 0), SUBD_OK)) return 0;
     if (!extract(&a, h, ad, &out, &rep)) return 0;
     CHECK(a.peak <= plan);
     check_cut(h, ad, &out, &rep, tol, res);
@@ -778,7 +778,7 @@ static void sr48x_uniform(void)
             uint32_t plan, f;
             cut_result res;
             subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-            if (!CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, &plan), SUBD_OK)) return;
+            if (!CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, &plan, 0), SUBD_OK)) return;
             if (!extract(&a, &g_h, &ad, &out, &rep)) return;
             CHECK_EQ(a.peak, plan);
             CHECK_EQ(out.num_faces, g_h.level_tri[k + 1] - g_h.level_tri[k]);
@@ -951,7 +951,7 @@ static void plan_case(const subd_sr48 *h, const subd_adapt *ad)
     subd_arena a;
     extract_call c;
     h_sweep s;
-    if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_extract_plan(h, ad, &plan, 0), SUBD_OK)) return;
     if (!CHECK(plan + 64u <= H_ARENA_BYTES)) return;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (!extract(&a, h, ad, &ref, &rep)) return;
@@ -1035,7 +1035,7 @@ static void sr48x_compact(void)
         CHECK_EQ(a.used - before, used);
         CHECK_EQ(h_mesh_hash(&m2), h_mesh_hash(&out));
     }
-    CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, &plan), SUBD_OK);
+    CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, &plan, 0), SUBD_OK);
     CHECK(used < plan);
 }
 
@@ -1057,7 +1057,7 @@ static void sr48x_errors(void)
         expr_ad;                                                                             \
         CHECK_EQ(subd_sr48_extract(&a, &g_h, &ad, &out, &rep, &d), want);                    \
         CHECK_EQ(d.status, want);                                                            \
-        CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, &plan), want);                            \
+        CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, &plan, 0), want);                            \
         CHECK_EQ(a.used, 0);                                                                 \
         CHECK_EQ(out.num_faces, 777);                                                        \
     } while (0)
@@ -1083,8 +1083,18 @@ static void sr48x_errors(void)
     CHECK_EQ(subd_sr48_extract(&a, 0, &ad, &out, &rep, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_extract(&a, &g_h, 0, &out, &rep, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_extract(&a, &g_h, &ad, 0, &rep, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_extract_plan(0, &ad, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_extract_plan(&g_h, &ad, 0, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_extract_plan(0, &ad, &plan, 0), SUBD_ERR_PARAM);
+    /* the plan fills diag: status, face cleared, no bytes_needed */
+    d.face = 77u;
+    d.bytes_needed = 99u;
+    CHECK_EQ(subd_sr48_extract_plan(0, &ad, &plan, &d), SUBD_ERR_PARAM);
+    CHECK_EQ(d.status, SUBD_ERR_PARAM);
+    CHECK_EQ(d.bytes_needed, 0u);
+    CHECK_EQ(d.face, SUBD_NONE);
+    d.bytes_needed = 99u;
+    CHECK_OK(subd_sr48_extract_plan(&g_h, &ad, &plan, &d), &d);
+    CHECK_EQ(d.bytes_needed, 0u);
     /* NULL report and diag are fine */
     if (CHECK_EQ(subd_sr48_extract(&a, &g_h, &ad, &out, 0, 0), SUBD_OK)) CHECK_EQ(out.num_faces, 8);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);

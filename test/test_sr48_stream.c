@@ -460,7 +460,7 @@ static void sr48s_base(void)
     if (!CHECK_EQ(subd_sr48_base_plan(&in, 0, cl, &plan), SUBD_OK)) return;
     o.steps = 0;
     o.flags = 0;
-    if (!CHECK_EQ(subd_sr48_plan(&in, &o, cl, &plan0), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_plan(&in, &o, cl, &plan0, &d), SUBD_OK)) return;
     mark = subd_arena_mark(&a);
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
     CHECK_EQ(plan - plan0, (h.level_tri[1] / 2u * 4u + 7u) & ~7u);

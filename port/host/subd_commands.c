@@ -175,14 +175,14 @@ static int sr48_build_plan(const subd_mesh *in, const subd_sr48_opts *so, uint32
     uint32_t bound, clusters = 0;
     subd_arena tmp;
     void *mem;
-    int st = subd_sr48_plan(in, so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    int st = subd_sr48_plan(in, so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, d);
     if (st != SUBD_OK) return st;
     mem = host_arena_alloc(&tmp, bound);
     if (!mem) return SUBD_ERR_NOMEM;
     st = subd_sr48_count_clusters(&tmp, in, &clusters, d);
     free(mem);
     if (st != SUBD_OK) return st;
-    return subd_sr48_plan(in, so, clusters, bytes);
+    return subd_sr48_plan(in, so, clusters, bytes, d);
 }
 
 /* semireg48 --stream: the base mesh (exact, with the cluster count) plus the stream's plan
@@ -229,7 +229,7 @@ static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, s
     if (!mem) return SUBD_ERR_NOMEM;
     st = subd_sr48_build(&tmp, in, &so, &h, d);
     keep = tmp.used; /* the hierarchy; the build's scratch above it is given back */
-    if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &ad, &extract);
+    if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &ad, &extract, d);
     free(mem);
     if (st != SUBD_OK) return st;
     if (extract > UINT32_MAX - keep) return SUBD_ERR_TOO_BIG;

@@ -208,8 +208,8 @@ typedef enum subd_adapt_mode {
 /* CALLBACK's adaptation function: the level (0..max_level; more counts as max_level) wanted
  * for the region whose bounding box is lo[0..2] .. hi[0..2] (a diamond's nested region B, in
  * input units). Required: monotone (a box inside another never gets a higher level) and
- * pure (the same box, the same answer: the number and order of calls is unspecified; the
- * stream may ask several times for one diamond). Then the cut has no forced split and
+ * pure (the same box, the same answer: both calls ask once per evaluated triangle, so twice
+ * for a diamond of two triangles, in orders that differ). Then the cut has no forced split and
  * subd_sr48_extract and subd_sr48_stream give the same triangles. A callback that is not
  * monotone still gives a conforming cut from each call (extract: forced splits; stream: a
  * diamond is asked only once its parents split), but the two may differ.

@@ -290,8 +290,8 @@ test-run:
 # checks built with gcc and the host sanitizers ("fuzz corpus replay" suites).
 FUZZ_SECONDS ?= 60
 CLANG ?= clang
-FUZZ_TARGETS := obj off schemes stl ply ladapt
-FUZZ_COMMON  := fuzz/fuzz_check.c fuzz/fuzz_reader.c
+FUZZ_TARGETS := obj off schemes stl ply ladapt sr48s
+FUZZ_COMMON  := fuzz/fuzz_check.c fuzz/fuzz_reader.c fuzz/fuzz_mesh.c
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_CFLAGS   = $(filter-out -Werror,$(WARN)) $(INC) -Ifuzz $(DEP) -DSUBD_HOST=1 -O1 -g $(FUZZ_SAN)
 FIXED_fuzz-float := 0

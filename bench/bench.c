@@ -365,13 +365,13 @@ static int run_plan(run_ctx *c)
         uint32_t bound, clusters;
         subd_arena tmp;
         void *mem;
-        int st = subd_sr48_plan(c->in, &c->so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+        int st = subd_sr48_plan(c->in, &c->so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, &c->diag);
         if (st != SUBD_OK) return st;
         if ((double)bound > PLAN_LIMIT) return SUBD_ERR_TOO_BIG;
         if (!(mem = host_arena_alloc(&tmp, bound))) return SUBD_ERR_NOMEM;
         st = subd_sr48_count_clusters(&tmp, c->in, &clusters, &c->diag);
         free(mem);
-        return st == SUBD_OK ? subd_sr48_plan(c->in, &c->so, clusters, &c->plan) : st;
+        return st == SUBD_OK ? subd_sr48_plan(c->in, &c->so, clusters, &c->plan, &c->diag) : st;
     }
     case RUN_SR48X: return SUBD_ERR_PARAM; /* planned by section_sr48 (needs the hierarchy) */
     case RUN_STREAM: return subd_loop_stream_plan(c->in, &c->lo, &c->plan, 0);
@@ -954,7 +954,7 @@ static void sr48_extract_row(run_ctx *c, const char *mesh, const char *what)
     uint32_t xplan;
     double first, ns, t0;
     int runs, st;
-    if (subd_sr48_extract_plan(&c->h, &c->ad, &xplan) != SUBD_OK || xplan > c->arena.size - c->xmark) {
+    if (subd_sr48_extract_plan(&c->h, &c->ad, &xplan, 0) != SUBD_OK || xplan > c->arena.size - c->xmark) {
         printf("%-24s %-22s skipped (extract plan)\n", mesh, what);
         return;
     }
@@ -1034,7 +1034,7 @@ static void section_sr48(void)
                 ad.eps = D2R(1e-4 * m->diag);
                 ad.normal[0] = D2R(1.0);
                 for (ad.mode = SUBD_ADAPT_UNIFORM; ad.mode <= SUBD_ADAPT_CHORD; ad.mode++)
-                    if (ad.mode != SUBD_ADAPT_CALLBACK && subd_sr48_extract_plan(&c.h, &ad, &xp) == SUBD_OK &&
+                    if (ad.mode != SUBD_ADAPT_CALLBACK && subd_sr48_extract_plan(&c.h, &ad, &xp, 0) == SUBD_OK &&
                         xp > xmax)
                         xmax = xp;
                 run_free(&c);
@@ -1141,7 +1141,7 @@ static void section_sr48stream(void)
             double t0, tm, ts;
             so.steps = steps;
             so.flags = 0;
-            if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;
+            if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, 0) != SUBD_OK) continue;
             if ((double)bound * 2.0 > PLAN_LIMIT) continue;
             memset(&sso, 0, sizeof sso);
             sso.adapt.mode = SUBD_ADAPT_UNIFORM;

@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Corpus replay for make test: feeds every file of fuzz/corpus/<target>/ to the same entry
- * function libFuzzer calls (fuzz_obj.c, fuzz_off.c, fuzz_stl.c, fuzz_ply.c, fuzz_schemes.c, compiled here with
+ * function libFuzzer calls (fuzz_obj.c, fuzz_off.c, fuzz_stl.c, fuzz_ply.c, fuzz_schemes.c,
+ * fuzz_sr48s.c, compiled here with
  * -DFUZZ_ENTRY=fz_<target>_entry), so CI runs the fuzz checks with gcc and ASan+UBSan and
  * needs no clang. A violated check aborts (run_suite.sh counts that as a failure), after
  * this program has printed which file it was running.
- * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes, ladapt) */
+ * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes, ladapt, sr48s) */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <stdint.h>
@@ -18,6 +19,7 @@ int fz_stl_entry(const uint8_t *data, size_t size);
 int fz_ply_entry(const uint8_t *data, size_t size);
 int fz_schemes_entry(const uint8_t *data, size_t size);
 int fz_ladapt_entry(const uint8_t *data, size_t size);
+int fz_sr48s_entry(const uint8_t *data, size_t size);
 
 typedef int (*entry_fn)(const uint8_t *, size_t);
 
@@ -104,6 +106,7 @@ int main(int argc, char **argv)
                       : strcmp(argv[i], "ply") == 0     ? fz_ply_entry
                       : strcmp(argv[i], "schemes") == 0 ? fz_schemes_entry
                       : strcmp(argv[i], "ladapt") == 0  ? fz_ladapt_entry
+                      : strcmp(argv[i], "sr48s") == 0   ? fz_sr48s_entry
                                                         : NULL;
         if (!fn) {
             printf("FAIL unknown target %s\n", argv[i]);

@@ -12,7 +12,7 @@ fails=0
 summary=""
 for arith in float fixed; do
     [ $arith = float ] && bin=$bf || bin=$bx
-    for t in obj off schemes stl ply; do
+    for t in obj off schemes stl ply sr48s; do
         case $t in obj|off|stl|ply) maxlen=4096 ;; *) maxlen=512 ;; esac
         w=$out/work/$t-$arith log=$out/logs/$t-$arith.log
         mkdir -p $w

@@ -96,7 +96,8 @@ typedef struct subd_sr48 {
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, steps out of range, unknown flag bits, input without
  *   adjacency, clusters more than half the faces), SUBD_ERR_NOT_TRIANGLES (diag.face: a
- *   non-triangle), SUBD_ERR_EMPTY (no faces), SUBD_ERR_TOO_BIG.
+ *   non-triangle), SUBD_ERR_EMPTY (no faces), SUBD_ERR_TOO_BIG. diag (may be NULL) gets the
+ *   status (and face) as subd_sr48_build would; bytes_needed stays 0.
  * Cost: O(corners).
  * Notes: the pre-processed size depends on how many two-face clusters find_clusters picks
  * (level 0 has 8 triangles per cluster and 6 per isolated triangle), which needs the edge
@@ -105,7 +106,8 @@ typedef struct subd_sr48 {
  * smoothing sums, and the smoothing sums of the largest later even level (per vertex 3 sums
  * and a count: 28 bytes in Q16.16, whose sums are exact 64-bit integers, 16 in float32; so
  * the two arithmetics have different plans). */
-int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes);
+int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes,
+                   subd_diag *diag);
 
 /* subd_sr48_count_clusters: the number of two-face clusters find_clusters picks for `in`
  * (section 5), in *clusters, for an exact subd_sr48_plan.
@@ -181,32 +183,46 @@ int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48
  * neighbours differ by at most one level and there are no T-junctions. */
 typedef enum subd_adapt_mode {
     SUBD_ADAPT_UNIFORM = 0, /* every triangle at max_level                                  */
-    /* POINT, RAMP and PLANE are evaluated per diamond D of level k on its nested region
-       B(D): the bounding box, over every level-k triangle sharing a vertex with D, of the
-       level-0 mesh's piecewise-linear interpolant L (level-0 vertices at their finest
-       positions, each later vertex at the midpoint of L at its base ends). A split child
-       diamond's box lies in both parent diamonds' boxes and the predicates are monotone,
-       so the cut needs no forced split and a top-down stream takes the same decisions. */
+    /* POINT, RAMP, PLANE and CALLBACK are evaluated per diamond D of level k on its nested
+       region B(D): the bounding box, over every level-k triangle sharing a vertex with D,
+       of the level-0 mesh's piecewise-linear interpolant L (level-0 vertices at their
+       finest positions, each later vertex at the midpoint of L at its base ends). A split
+       child diamond's box lies in both parent diamonds' boxes and the predicates are
+       monotone, so the cut needs no forced split and a top-down stream takes the same
+       decisions. The adaptation box A (RAMP's range, POINT's default radius) is the box
+       of the finest positions of the level-0 triangles' corners (= the box of L over the
+       whole mesh): known before any refinement, so the stream has it too. */
     SUBD_ADAPT_POINT,       /* finest at `point`: split iff dist(point, B) < (max_level - k)
                                radius, i.e. level max_level - floor(d / radius)              */
-    SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at the
-                               bounding-box minimum to max_level at the maximum, evaluated at
-                               B's largest coordinate x on that axis: level
+    SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at A's
+                               minimum lo to max_level at A's maximum hi, evaluated at B's
+                               largest coordinate x on that axis: level
                                floor(max_level (x - lo) / (hi - lo)), max_level if hi = lo   */
     SUBD_ADAPT_PLANE,       /* max_level where B touches the side (x - point).normal >= 0,
                                level 0 elsewhere (a step function)                            */
-    SUBD_ADAPT_CALLBACK,    /* level = fn(ctx, the triangle's apex, b0, b1 positions)         */
+    SUBD_ADAPT_CALLBACK,    /* split iff fn(ctx, B's lo, B's hi) > k: fn returns the level it
+                               wants for the region (see subd_adapt_fn)                      */
     SUBD_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
 } subd_adapt_mode;
 
-typedef uint32_t (*subd_adapt_fn)(void *ctx, const subd_real *p0, const subd_real *p1, const subd_real *p2);
+/* CALLBACK's adaptation function: the level (0..max_level; more counts as max_level) wanted
+ * for the region whose bounding box is lo[0..2] .. hi[0..2] (a diamond's nested region B, in
+ * input units). Required: monotone (a box inside another never gets a higher level) and
+ * pure (the same box, the same answer: both calls ask once per evaluated triangle, so twice
+ * for a diamond of two triangles, in orders that differ). Then the cut has no forced split and
+ * subd_sr48_extract and subd_sr48_stream give the same triangles. A callback that is not
+ * monotone still gives a conforming cut from each call (extract: forced splits; stream: a
+ * diamond is asked only once its parents split), but the two may differ.
+ * Example (detail near a viewer at v, one level per r of distance): d = the distance from v
+ * to the box (0 inside), return d < max_level r ? max_level - floor(d / r) : 0. */
+typedef uint32_t (*subd_adapt_fn)(void *ctx, const subd_real *lo, const subd_real *hi);
 
 typedef struct subd_adapt {
     subd_adapt_mode mode;
     uint32_t max_level;  /* 0..hierarchy steps                                             */
     subd_real point[3];  /* POINT, PLANE                                                   */
     subd_real normal[3]; /* PLANE (need not be unit length)                                */
-    subd_real radius;    /* POINT: distance per level; 0 = bounding-box diagonal / (2 max_level) */
+    subd_real radius;    /* POINT: distance per level; 0 = A's diagonal / (2 max_level)   */
     uint32_t axis;       /* RAMP                                                           */
     subd_real eps;       /* CHORD: > 0, in input units                                     */
     subd_adapt_fn fn;    /* CALLBACK                                                       */
@@ -224,7 +240,7 @@ typedef struct subd_adapt_report {
 /* subd_sr48_extract_plan: the arena bytes subd_sr48_extract may use, in *bytes.
  * Memory: no arena use.
  * Errors: the parameter errors of subd_sr48_extract (SUBD_ERR_PARAM, SUBD_ERR_EMPTY,
- *   SUBD_ERR_TOO_BIG).
+ *   SUBD_ERR_TOO_BIG); diag (may be NULL) gets the status, bytes_needed stays 0.
  * Cost: O(levels).
  * Notes: exact for SUBD_ADAPT_UNIFORM (when every input
  * vertex is used by a face; unused input vertices are dropped, so the mesh is then smaller);
@@ -233,7 +249,7 @@ typedef struct subd_adapt_report {
  * levels < max_level, 80 bytes per level for CHORD). An adaptive extraction needs only the
  * bytes it uses: it fails with SUBD_ERR_NOMEM only when they are not free, and then
  * diag->bytes_needed is the exact need when the marking memory fit (else the plan). */
-int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes);
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes, subd_diag *diag);
 
 /* subd_sr48_extract: a conforming triangle mesh (validated, with adjacency) cut out of the
  * hierarchy, into *out; what was cut into *rep.
@@ -254,10 +270,11 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * the same hierarchy (dyadic barycentric) parameter: an upper bound of the distance to t,
  * so every vertex of level <= max_level is within eps of the extracted mesh (Q16.16: the
  * deviation is rounded to Q16.16 before the comparison, so within eps + 2^-16). RAMP's
- * bounding box and POINT's default radius use the vertices of levels 0..max_level. POINT,
- * RAMP and PLANE never force a split (their regions are nested, see subd_adapt_mode), so
- * their cut is exactly the diamonds that ask; each evaluation walks the diamond's star at
- * its level (about 4 valence triangles, O(level) each).
+ * range and POINT's default radius use the adaptation box A (subd_adapt_mode: the level-0
+ * triangles' corners). POINT, RAMP, PLANE and a monotone CALLBACK never force a split
+ * (their regions are nested, see subd_adapt_mode), so their cut is exactly the diamonds
+ * that ask; each evaluation walks the diamond's star at its level (about 4 valence
+ * triangles, O(level) each).
  * Output vertices are the used hierarchy vertices in increasing index order; output faces
  * are the cut's triangles by level, then by hierarchy index, as (apex, b0, b1).
  * Work: UNIFORM O(triangles of levels <= max_level). The other modes: O(triangles visited:
@@ -265,8 +282,8 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * splits reach) plus, for CHORD, a walk of each evaluated triangle's subtree (stopping at
  * the first vertex beyond eps): at most O(faces of level max_level * max_level); plus
  * streaming passes of 1 byte per triangle of levels < max_level (clearing the marks) and a
- * few words per vertex of levels <= max_level (used flags, renumbering; RAMP and POINT's
- * default radius: the bounding box).
+ * few words per vertex of levels <= max_level (used flags, renumbering); RAMP and POINT's
+ * default radius: O(level-0 triangles) for the adaptation box.
  * SUBD_ERR_PARAM: a NULL pointer; mode out of range; max_level > h->steps; RAMP
  * axis > 2; CHORD eps not > 0; CALLBACK fn NULL; POINT radius < 0; PLANE normal zero;
  * float: a non-finite point, normal, radius or eps; a hierarchy that breaks the index rules
@@ -292,9 +309,8 @@ typedef struct subd_sr48_stream_opts {
  * of adapt.max_level and the base mesh's largest valence only (SUBD_SR48_STREAM_BYTES).
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
- *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, a mode other than
- *   UNIFORM, PLANE and POINT with radius > 0 - RAMP, POINT's default radius, CALLBACK and
- *   CHORD are not streamed yet -, the mode's parameters as subd_sr48_extract), SUBD_ERR_EMPTY,
+ *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, CHORD - not streamed
+ *   yet -, the mode's parameters as subd_sr48_extract), SUBD_ERR_EMPTY,
  *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
  * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
 int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
@@ -318,7 +334,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   walks). Measured: 0.04-0.15x the faces/s of subd_sr48_build + subd_sr48_extract on the
  *   host, about 22 600 instructions per triangle on the Cortex-M4F (bench -s sr48stream,
  *   make demo).
- * Adaptive modes (PLANE, POINT with radius > 0): the triangles of subd_sr48_extract(mode,
+ * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
  *   decided once, top down, on the nested region of subd_adapt_mode (L's box over its star,
@@ -326,7 +342,12 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   vertex (refining and cropping towards it down to max_level), and a leaf of level
  *   k < max_level gets its corners' max_level positions by three such descents, so a cut
  *   costs O(window * max_level) per leaf and per level-0 window vertex on top of the
- *   uniform work of its split triangles. Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
+ *   uniform work of its split triangles. RAMP and POINT's default radius first find the
+ *   adaptation box A (subd_adapt_mode): the first subd_stream_next_tris call descends from
+ *   one level-0 triangle at each base vertex (the lowest-index one of its fan), O(base
+ *   vertices * window * max_level) once. CALLBACK: fn is called once per triangle of
+ *   level < max_level that is in the cut or split (as subd_sr48_extract: level 0 and the
+ *   children of split triangles). Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
  * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose
@@ -373,8 +394,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_BYTES(L, N) \
     SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
-/* The plan of the adaptive modes (PLANE, POINT): L (3 subd_reals) per window vertex, per
- * level window and in the refined window, and the level-0 window's L, vertices, triangles. */
+/* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
+ * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
+ * triangles (the adaptation box lives in the run state). */
 #define SUBD_SR48_STREAM_ADAPT_EXTRA_(L, t, v) \
     (((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
      SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))

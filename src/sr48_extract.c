@@ -301,15 +301,16 @@ static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint3
     return *bound == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
 }
 
-int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes)
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes, subd_diag *diag)
 {
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     ex_layout L;
     uint32_t b;
     int st;
-    if (!bytes) return SUBD_ERR_PARAM;
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
     st = ex_plan(h, ad, &L, &b);
     if (st == SUBD_OK) *bytes = b;
-    return st;
+    return subd_plan_end(d, st);
 }
 
 /* Lazy validation (adaptive modes): a triangle's index rules are checked the first time
@@ -483,6 +484,7 @@ int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real
 {
     if (ad->mode == SUBD_ADAPT_POINT) return ex_point_wants(ad, radius, lo, hi, ad->max_level - k);
     if (ad->mode == SUBD_ADAPT_RAMP) return ex_ramp_wants(ad, rlo, rhi, hi, k);
+    if (ad->mode == SUBD_ADAPT_CALLBACK) return ad->fn(ad->ctx, lo, hi) > k;
     return ex_plane_wants(ad, lo, hi);
 }
 
@@ -557,18 +559,17 @@ static int ex_chord_wants(ex_ctx *c, uint32_t t, uint32_t k)
 /* Does triangle t of level k < max (checked) ask for a split? */
 static int ex_wants(ex_ctx *c, uint32_t t, uint32_t k)
 {
-    const uint32_t *v = c->h->tri_vert + 3u * t;
     subd_real lo[3], hi[3];
     switch (c->ad->mode) {
     case SUBD_ADAPT_POINT:
     case SUBD_ADAPT_RAMP:
     case SUBD_ADAPT_PLANE:
+    case SUBD_ADAPT_CALLBACK:
         if (!ex_star_box(c, t, k, lo, hi)) {
             c->bad = 1;
             return 0;
         }
         return subd_sr48_box_wants_(c->ad, c->radius, c->lo, c->hi, lo, hi, k);
-    case SUBD_ADAPT_CALLBACK: return c->ad->fn(c->ad->ctx, ex_pos(c, v[0]), ex_pos(c, v[1]), ex_pos(c, v[2])) > k;
     case SUBD_ADAPT_CHORD: return ex_chord_wants(c, t, k);
     default: return 1;
     }
@@ -715,45 +716,62 @@ static int ex_next_leaf(const ex_ctx *c, uint32_t *pt, uint32_t *pk)
     return 1;
 }
 
-static void ex_bbox(ex_ctx *c, uint32_t nvert)
+/* The adaptation box (RAMP's range, POINT's default radius; subd_adapt_mode): the box of
+ * the finest positions of the corners of the level-0 triangles, i.e. of L over the whole
+ * mesh. 0 when a level-0 corner is out of range. */
+static int ex_bbox(ex_ctx *c)
 {
-    const subd_real *pos = c->h->pos;
+    const subd_sr48 *h = c->h;
+    uint32_t t, n = 3u * h->level_tri[1];
+    for (t = 0; t < n; t++)
+        if (h->tri_vert[t] >= h->level_verts[0]) return 0;
+    subd_sr48_box_grow_(h->pos, h->tri_vert, n, c->lo, c->hi, 1);
+    return 1;
+}
+
+/* Grows (lo, hi) by the n points pos + 3 idx[i] (reset first when `init`); sr48_internal.h. */
+void subd_sr48_box_grow_(const subd_real *pos, const uint32_t *idx, uint32_t n, subd_real *blo, subd_real *bhi,
+                         int init)
+{
     subd_real lo[3], hi[3]; /* locals, so the compiler keeps them in registers */
     uint32_t v, i;
-    for (i = 0; i < 3u; i++) lo[i] = hi[i] = pos[i];
-    for (v = 1; v < nvert; v++) {
-        const subd_real *p = pos + 3u * v;
+    for (i = 0; i < 3u; i++) {
+        lo[i] = init ? SUBD_REAL_MAX : blo[i];
+        hi[i] = init ? -SUBD_REAL_MAX : bhi[i];
+    }
+    for (v = 0; v < n; v++) {
+        const subd_real *p = pos + 3u * idx[v];
         for (i = 0; i < 3u; i++) {
             if (p[i] < lo[i]) lo[i] = p[i];
             if (p[i] > hi[i]) hi[i] = p[i];
         }
     }
     for (i = 0; i < 3u; i++) {
-        c->lo[i] = lo[i];
-        c->hi[i] = hi[i];
+        blo[i] = lo[i];
+        bhi[i] = hi[i];
     }
 }
 
-/* POINT's default radius: bounding-box diagonal / (2 max_level), at least one unit of the
- * last place so the level function stays defined. */
-static subd_real ex_default_radius(const ex_ctx *c)
+/* POINT's default radius (sr48_internal.h): the adaptation box's diagonal / (2 max_level),
+ * at least one unit of the last place so the level function stays defined; max > 0. */
+subd_real subd_sr48_default_radius_(const subd_real *blo, const subd_real *bhi, uint32_t max)
 {
 #if SUBD_FIXED /* the algorithm differs: integer square root, pre-shift keeps the squares in 64 bits */
     uint64_t d[3], sum = 0, diag;
     uint32_t i, sh = 0;
     for (i = 0; i < 3u; i++) {
-        d[i] = (uint64_t)((int64_t)c->hi[i] - c->lo[i]);
+        d[i] = (uint64_t)((int64_t)bhi[i] - blo[i]);
         if (d[i] >> 31) sh = 1u; /* keep each square below 2^62 */
     }
     for (i = 0; i < 3u; i++) sum += (d[i] >> sh) * (d[i] >> sh);
     diag = (uint64_t)subd_isqrt64(sum) << sh;
-    diag /= 2u * c->max;
+    diag /= 2u * max;
     if (diag == 0u) diag = 1u;
     return diag > (uint64_t)INT32_MAX ? SUBD_REAL_MAX : (subd_real)diag;
 #else
-    float dx = c->hi[0] - c->lo[0], dy = c->hi[1] - c->lo[1], dz = c->hi[2] - c->lo[2];
+    float dx = bhi[0] - blo[0], dy = bhi[1] - blo[1], dz = bhi[2] - blo[2];
     float sx = dx * dx, sy = dy * dy, sz = dz * dz;
-    float r = subd_sqrt(sx + sy + sz) / (float)(2u * c->max);
+    float r = subd_sqrt(sx + sy + sz) / (float)(2u * max);
     return r > 0.0f ? r : 1.0f;
 #endif
 }
@@ -796,9 +814,10 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
 
     /* phase 1: the cut and its counts */
     if (!c.uniform) {
-        /* the bounding box is a pass over all vertices of levels <= max: only when used */
-        if (ad->mode == SUBD_ADAPT_RAMP || (ad->mode == SUBD_ADAPT_POINT && c.radius == 0)) ex_bbox(&c, L.nvert);
-        if (ad->mode == SUBD_ADAPT_POINT && c.radius == 0) c.radius = ex_default_radius(&c);
+        /* the adaptation box: a pass over the level-0 corners, only when used */
+        if (ad->mode == SUBD_ADAPT_RAMP || (ad->mode == SUBD_ADAPT_POINT && c.radius == 0))
+            if (!ex_bbox(&c)) { st = SUBD_ERR_PARAM; goto fail; }
+        if (ad->mode == SUBD_ADAPT_POINT && c.radius == 0) c.radius = subd_sr48_default_radius_(c.lo, c.hi, c.max);
         if (!ex_mark(&c)) { st = SUBD_ERR_PARAM; goto fail; }
     }
     /* the leaves: per-level counts, and the used vertices flagged in the worklist's memory

@@ -79,10 +79,17 @@ int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pba
 
 /* Adaptive cuts (sr48_extract.c), shared with the stream (sr48_stream.c): the mode's
  * parameter check (SUBD_OK or SUBD_ERR_PARAM), and the nested-region decision of POINT,
- * RAMP and PLANE for a diamond of level k < max_level whose region box is (lo, hi)
+ * RAMP, PLANE and CALLBACK for a diamond of level k < max_level whose region box is (lo, hi)
  * (radius: POINT's, resolved; rlo, rhi: RAMP's bounding box). */
 int subd_sr48_adapt_check_(const subd_adapt *ad);
 int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
                          const subd_real *lo, const subd_real *hi, uint32_t k);
+/* The adaptation box of RAMP and POINT's default radius (subd_adapt_mode): the box of the
+ * finest positions of the level-0 triangles' corners. box_grow grows (blo, bhi) by the n
+ * points pos + 3 idx[i] (reset to empty first when init); default_radius is POINT's radius
+ * from that box for max_level max > 0. */
+void subd_sr48_box_grow_(const subd_real *pos, const uint32_t *idx, uint32_t n, subd_real *blo, subd_real *bhi,
+                         int init);
+subd_real subd_sr48_default_radius_(const subd_real *blo, const subd_real *bhi, uint32_t max);
 
 #endif

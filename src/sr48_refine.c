@@ -148,16 +148,16 @@ static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32
     return SUBD_OK;
 }
 
-int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes)
+int subd_sr48_plan(const subd_mesh *in, const subd_sr48_opts *o, uint32_t clusters, uint32_t *bytes,
+                   subd_diag *diag)
 {
+    subd_diag own, *d = subd_plan_begin(&own, diag);
     sr48_layout L;
-    subd_diag d;
     int st;
-    subd_diag_clear(&d);
-    if (!bytes) return SUBD_ERR_PARAM;
-    st = sr48_layout_calc(in, o, clusters, 0, &L, &d);
+    if (!bytes) return subd_plan_end(d, SUBD_ERR_PARAM);
+    st = sr48_layout_calc(in, o, clusters, 0, &L, d);
     if (st == SUBD_OK) *bytes = L.bytes;
-    return st;
+    return subd_plan_end(d, st);
 }
 
 /* Runs find_clusters in the free space and gives it back. */

@@ -43,7 +43,7 @@
  * by splitting the diamond whose lower-key triangle has key K at level k-1 gets
  * V0 + T0n (2^(k-1) - 1) + K (V0, T0n: the base's vertex and triangle counts).
  *
- * Adaptive cuts (PLANE, POINT with a radius; sr48_extract.c's nested region): every window
+ * Adaptive cuts (POINT, RAMP, PLANE, CALLBACK; sr48_extract.c's nested region): every window
  * vertex also carries L, the level-0 mesh's piecewise-linear interpolant at the finest
  * positions of the level-0 vertices (a new vertex: subd_mid of L at its base ends, as
  * sr48_extract.c computes it, so the bits agree). L of the level-0 window is found by one
@@ -54,7 +54,10 @@
  * that does not split makes the current triangle a leaf, emitted with its corners' finest
  * positions by three descents (blocks above the current level are free then). Since the
  * region is nested, a diamond that splits has split parents, so the top-down walk cuts
- * exactly subd_sr48_extract's (least conforming) cut, with no lookahead.
+ * exactly subd_sr48_extract's (least conforming) cut, with no lookahead. RAMP's range and
+ * POINT's default radius come from the adaptation box A (the finest positions of the base
+ * triangles' corners, subd_adapt_mode), found before the first triangle by one descent per
+ * base vertex (s48_adapt_box); CALLBACK asks fn on the same box as POINT/RAMP/PLANE.
  *
  * Memory: the fixed state block, the overflow ring (2 triangles), L + 1 window blocks
  * (level L uses only its header), the refined window (twice the triangles), the smoothing
@@ -109,7 +112,9 @@ typedef struct s48_state {
     uint32_t lev_size;
     uint32_t off[8], xoff[8];
     subd_adapt ad;
-    uint32_t adapt;    /* POINT or PLANE: the nested-region cut (subd_adapt_mode)          */
+    uint32_t adapt;    /* POINT, RAMP, PLANE, CALLBACK: the nested-region cut (subd_adapt_mode) */
+    uint32_t boxed;    /* RAMP, POINT's default radius: 0 until the adaptation box is found */
+    subd_real blo[3], bhi[3], radius; /* the adaptation box A; POINT's radius (resolved)  */
     subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
     uint32_t *lgv, *lgvt; /* the level-0 window's vertices and a triangle at each, kept     */
     uint8_t *xblk;
@@ -343,14 +348,13 @@ static int s48_check(const subd_sr48 *b, const subd_sr48_stream_opts *o, uint32_
 {
     int st;
     if (!o) return SUBD_ERR_PARAM;
-    /* UNIFORM, PLANE and POINT with an explicit radius stream so far (RAMP and POINT's
-     * default radius need the bounding box of every vertex: not yet) */
+    /* every mode but CHORD streams (the nested region, subd_adapt_mode) */
     switch (o->adapt.mode) {
     case SUBD_ADAPT_UNIFORM: break;
     case SUBD_ADAPT_POINT:
-        if (!(o->adapt.radius > 0) || subd_sr48_adapt_check_(&o->adapt) != SUBD_OK) return SUBD_ERR_PARAM;
-        break;
+    case SUBD_ADAPT_RAMP:
     case SUBD_ADAPT_PLANE:
+    case SUBD_ADAPT_CALLBACK:
         if (subd_sr48_adapt_check_(&o->adapt) != SUBD_OK) return SUBD_ERR_PARAM;
         break;
     default: return SUBD_ERR_PARAM;
@@ -691,7 +695,7 @@ static int s48_emit(const s48_state *s, const s48_win *w, uint32_t t, subd_strea
 }
 
 /* ------------------------------------------------------------------------------------ */
-/* Adaptive cuts (POINT, PLANE): the nested region of sr48_extract.c, decided top down.     */
+/* Adaptive cuts (POINT, RAMP, PLANE, CALLBACK): sr48_extract.c's nested region, top down. */
 
 static uint64_t s48_vid(const s48_win *w, uint32_t v)
 {
@@ -757,6 +761,34 @@ static int s48_level0_lin(s48_state *s, uint32_t t0)
     return 1;
 }
 
+/* The adaptation box A (RAMP, POINT's default radius; subd_adapt_mode): the finest
+ * positions of the level-0 triangles' corners, each vertex by one descent from the
+ * lowest-index triangle of its fan (so once); then POINT's radius. levels > 0. */
+static int s48_adapt_box(s48_state *s)
+{
+    const subd_sr48 *b = s->base;
+    uint32_t t, j, i, zero = 0;
+    s48_win w;
+    for (i = 0; i < 3u * s->wv; i++) s->l0[i] = 0; /* the descents' L: defined, unused */
+    subd_sr48_box_grow_(b->pos, &zero, 0, s->blo, s->bhi, 1);
+    for (t = 0; t < s->n0; t++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t v = b->tri_vert[3u * t + j], nf = s48_fan(b, v, t, s->gt, s->wt), low = 1;
+            subd_real p[3];
+            if (nf == UINT32_MAX) return 0;
+            for (i = 0; i < nf; i++)
+                if (s->gt[i] < t) low = 0;
+            if (!low) continue;
+            if (!s48_build0(s, t)) return 0;
+            s48_lev(s, 0, &w);
+            if (!s48_finest(s, 0, w.hd[2], v, p)) return 0;
+            subd_sr48_box_grow_(p, &zero, 1, s->blo, s->bhi, 0);
+        }
+    if (s->ad.mode == SUBD_ADAPT_POINT && s->radius == 0)
+        s->radius = subd_sr48_default_radius_(s->blo, s->bhi, s->levels);
+    return 1;
+}
+
 /* Does the current triangle t of the level-k window (k < levels) split its diamond? The
  * region: L's box over the window's triangles that share a vertex with the diamond (all of
  * them are in the window: the diamond is within one ring of t). */
@@ -785,7 +817,7 @@ static int s48_wants(const s48_state *s, const s48_win *w, uint32_t t, uint32_t 
             }
         }
     }
-    return subd_sr48_box_wants_(&s->ad, s->ad.radius, lo, hi, lo, hi, k);
+    return subd_sr48_box_wants_(&s->ad, s->radius, s->blo, s->bhi, lo, hi, k);
 }
 
 /* Emits triangle t of the level-k window as a leaf of the cut (k < levels): its corners'
@@ -827,6 +859,10 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         if (s->t0 >= s->n0) {
             q->ended = 1;
             return SUBD_OK;
+        }
+        if (!s->boxed) {
+            if (!s48_adapt_box(s)) goto fail;
+            s->boxed = 1;
         }
         if (!s->built) {
             if (s->adapt && !s48_level0_lin(s, s->t0)) goto fail;
@@ -919,6 +955,11 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->levels = o->adapt.max_level;
     s->adapt = o->adapt.mode != SUBD_ADAPT_UNIFORM ? 1u : 0u;
     s->ad = o->adapt;
+    s->radius = o->adapt.radius;
+    s->boxed = (s->levels > 0u && (o->adapt.mode == SUBD_ADAPT_RAMP ||
+                                   (o->adapt.mode == SUBD_ADAPT_POINT && o->adapt.radius == 0)))
+                   ? 0u
+                   : 1u;
     s->smooth = (base->flags & SUBD_SR48_NO_SMOOTH) ? 0u : 1u;
     s->nv0 = base->num_verts;
     s->n0 = base->level_tri[1];

@@ -52,10 +52,16 @@ static int p_q48(const subd_mesh *in, subd_diag *d, uint32_t *b)
     return subd_quasi48_plan(in, &o, b, d);
 }
 
+static int p_sr48(const subd_mesh *in, subd_diag *d, uint32_t *b)
+{
+    subd_sr48_opts o = {2, 0};
+    return subd_sr48_plan(in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, b, d);
+}
+
 /* The defaults are valid options (each plan succeeds with them on a triangle mesh). */
 static void plans_fill_diag(void)
 {
-    static const plan_fn plans[] = {p_loop, p_stream, p_limit, p_pia, p_q48};
+    static const plan_fn plans[] = {p_loop, p_stream, p_limit, p_pia, p_q48, p_sr48};
     subd_arena a;
     subd_mesh mixed, tri;
     uint32_t k;

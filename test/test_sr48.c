@@ -798,8 +798,8 @@ static void plan_case(const subd_mesh *in, const subd_sr48_opts *o, int exhausti
     a.used = 40; /* not at the start: count_clusters must give everything back */
     if (!CHECK_EQ(subd_sr48_count_clusters(&a, in, &clusters, &d), SUBD_OK)) return;
     CHECK_EQ(a.used, 40);
-    if (!CHECK_EQ(subd_sr48_plan(in, o, clusters, &plan), SUBD_OK)) return;
-    if (!CHECK_EQ(subd_sr48_plan(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, &bound), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_plan(in, o, clusters, &plan, 0), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_plan(in, o, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, 0), SUBD_OK)) return;
     CHECK(bound >= plan);
     if (!CHECK(plan + 64u <= H_ARENA_BYTES)) return;
     /* the exact plan is the measured peak */
@@ -874,7 +874,7 @@ static void sr48_errors(void)
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (!load_tri(&a, "test/data/hexfan.obj", &in)) return;
     o.steps = SUBD_SR48_MAX_STEPS + 1u;
-    CHECK_EQ(subd_sr48_plan(&in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_plan(&in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_ERR_PARAM);
     o = sopts(1, 0x2u);
     CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_ERR_PARAM);
@@ -883,9 +883,9 @@ static void sr48_errors(void)
     CHECK_EQ(subd_sr48_build(&a, 0, &o, &h, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_build(&a, &in, 0, &h, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_build(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_plan(&in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_plan(&in, &o, 4, &plan), SUBD_ERR_PARAM); /* 6 faces: at most 3 clusters */
-    CHECK_EQ(subd_sr48_plan(&in, &o, 3, &plan), SUBD_OK);
+    CHECK_EQ(subd_sr48_plan(&in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, 0, 0), SUBD_ERR_PARAM);
+    CHECK_EQ(subd_sr48_plan(&in, &o, 4, &plan, 0), SUBD_ERR_PARAM); /* 6 faces: at most 3 clusters */
+    CHECK_EQ(subd_sr48_plan(&in, &o, 3, &plan, 0), SUBD_OK);
     CHECK_EQ(subd_sr48_count_clusters(0, &in, &c, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_count_clusters(&a, &in, 0, &d), SUBD_ERR_PARAM);
     CHECK_EQ(a.used, subd_arena_mark(&a));
@@ -902,7 +902,13 @@ static void sr48_errors(void)
     {
         const corpus_file *cf = corpus_find("test/data/cube_quad.obj");
         if (CHECK(cf != 0) && CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &q, &d), SUBD_OK)) {
-            CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
+            d.face = 77u;
+            d.bytes_needed = 99u;
+            CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, &d), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES); /* the plan names the face as the build does */
+            CHECK_EQ(d.face, 0);
+            CHECK_EQ(d.bytes_needed, 0u);
             CHECK_EQ(subd_sr48_build(&a, &q, &o, &h, &d), SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.face, 0);
             CHECK_EQ(subd_sr48_count_clusters(&a, &q, &c, &d), SUBD_ERR_NOT_TRIANGLES);
@@ -914,7 +920,7 @@ static void sr48_errors(void)
     g_pos[3] = g_pos[4] = g_pos[5] = 0;
     g_pos[6] = g_pos[7] = g_pos[8] = 0;
     if (h_build(&a, &fl, &pts)) {
-        CHECK_EQ(subd_sr48_plan(&pts, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan), SUBD_ERR_EMPTY);
+        CHECK_EQ(subd_sr48_plan(&pts, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, 0), SUBD_ERR_EMPTY);
         CHECK_EQ(subd_sr48_build(&a, &pts, &o, &h, &d), SUBD_ERR_EMPTY);
     }
 #if !SUBD_FIXED

@@ -410,6 +410,26 @@ for mode in "--point 1.4,0,0" "--ramp z" "--plane 0,0,0,1,0,0"; do
     run "$FIXED" adapt -l 4 $mode demo/torus_12x6.obj -o "$T/am.off" --stats
     is 0 && [ "$(json_num faces)" -lt "$(json_num uniform_faces)" ]; check $? "subd-fixed adapt -l 4 $mode: fewer faces than uniform"
 done
+# adapt --stream: subd_sr48_stream's cut = subd_sr48_extract's (same face set, corner
+# coordinates as the library formats them), in a stream arena of its own; .stl by its size
+obj_faces() { awk '$1=="v"{v[++n]=$2" "$3" "$4} $1=="f"{split($2,a,"/");split($3,b,"/");split($4,c,"/");print v[a[1]]" | "v[b[1]]" | "v[c[1]]}' "$1" | sort; }
+for bin in "$FLOAT" "$FIXED"; do
+    for mode in "--point 1.4,0,0" "--point 1.4,0,0 --radius 0.3" "--ramp z" "--plane 0,0,0,1,0,0"; do
+        run "$bin" adapt -l 4 $mode demo/torus_12x6.obj -o "$T/am.off" --stats
+        nf=$(json_num faces) nu=$(json_num uniform_faces)
+        run "$bin" adapt --stream -l 4 $mode demo/torus_12x6.obj -o "$T/as.off" --stats
+        is 0 && [ "$(json_num stream_arena)" -gt 0 ] && [ "$(json_num faces)" = "$nf" ] && [ "$nf" -lt "$nu" ] &&
+            [ "$(json_num uniform_faces)" = "$nu" ] && [ "$(json_num saved_faces)" = $((nu - nf)) ] &&
+            [ "$(off_faces "$T/am.off")" = "$(off_faces "$T/as.off")" ]
+        check $? "$(basename "$bin") adapt --stream -l 4 $mode -o .off: adapt's face set, --stats faces and stream_arena"
+        run "$bin" adapt --stream -l 4 $mode demo/torus_12x6.obj -o "$T/as.obj"
+        is 0 && [ "$(off_faces "$T/am.off")" = "$(obj_faces "$T/as.obj")" ]
+        check $? "$(basename "$bin") adapt --stream -l 4 $mode -o .obj: adapt's face set"
+        run "$bin" adapt --stream -l 4 $mode demo/torus_12x6.obj -o "$T/as.stl"
+        is 0 && [ "$(wc -c < "$T/as.stl")" = $((84 + 50 * nf)) ]
+        check $? "$(basename "$bin") adapt --stream -l 4 $mode -o .stl: 84 + 50 bytes per face of adapt's cut"
+    done
+done
 usage_case_pre adapt -l 4 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt without a mode: exit 1"
 usage_case_pre adapt -l 4 --ramp w demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --ramp w: exit 1"
 usage_case_pre adapt -l 4 --ramp x --chord 1 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt with two modes: exit 1"
@@ -572,7 +592,7 @@ fi
 usage_case_pre loop --limit test/data/icosahedron.obj -o "$T/x.obj"
 grep -q -- '--limit needs --stream' "$T/err"; check $? "loop --limit without --stream: exit 1, says so"
 usage_case_pre convert --stream test/data/icosahedron.obj -o "$T/x.obj"
-grep -q -- "--stream applies to 'loop', 'semireg48' and 'alpha' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, semireg48's and alpha's"
+grep -q -- "--stream applies to 'loop', 'semireg48', 'adapt' and 'alpha' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, semireg48's, adapt's and alpha's"
 usage_case_pre limit --stream --limit test/data/icosahedron.obj -o "$T/x.obj"; check $? "limit --stream: exit 1"
 for e in png xyz; do
     usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.$e"

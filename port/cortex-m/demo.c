@@ -162,7 +162,7 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     o.flags = 0;
     print_str("semi-regular 4-8 hierarchy, 4 binary steps:\n");
     if ((st = subd_sr48_count_clusters(arena, in, &clusters, &d)) != SUBD_OK) return report_error(st, &d);
-    if ((st = subd_sr48_plan(in, &o, clusters, &plan)) != SUBD_OK) return st;
+    if ((st = subd_sr48_plan(in, &o, clusters, &plan, &d)) != SUBD_OK) return report_error(st, &d);
     kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
@@ -186,7 +186,7 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     if (ovf) return SUBD_ERR_RANGE;
     print_str("chordal extraction, eps 0.05, up to level 4:\n");
     mark2 = start_measure(arena);
-    if ((st = subd_sr48_extract_plan(&h, &ad, &plan)) != SUBD_OK) return st;
+    if ((st = subd_sr48_extract_plan(&h, &ad, &plan, &d)) != SUBD_OK) return report_error(st, &d);
     kv("arena bytes planned (bound)", plan);
     t0 = port_cycles();
     st = subd_sr48_extract(arena, &h, &ad, &out, &rep, &d);

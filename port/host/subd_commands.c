@@ -167,7 +167,7 @@ static subd_sr48_opts sr48_opts_of(const tool_opts *o)
     return so;
 }
 
-static subd_adapt sr48_adapt_of(const tool_opts *o)
+subd_adapt tool_sr48_adapt(const tool_opts *o)
 {
     subd_adapt ad;
     int i;
@@ -190,14 +190,14 @@ static int sr48_build_plan(const subd_mesh *in, const subd_sr48_opts *so, uint32
     uint32_t bound, clusters = 0;
     subd_arena tmp;
     void *mem;
-    int st = subd_sr48_plan(in, so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    int st = subd_sr48_plan(in, so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, d);
     if (st != SUBD_OK) return st;
     mem = host_arena_alloc(&tmp, bound);
     if (!mem) return SUBD_ERR_NOMEM;
     st = subd_sr48_count_clusters(&tmp, in, &clusters, d);
     free(mem);
     if (st != SUBD_OK) return st;
-    return subd_sr48_plan(in, so, clusters, bytes);
+    return subd_sr48_plan(in, so, clusters, bytes, d);
 }
 
 /* semireg48 --stream: the base mesh (exact, with the cluster count) plus the stream's plan
@@ -210,6 +210,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
     subd_sr48 base;
     void *mem;
     int st = subd_sr48_base_plan(in, flags, SUBD_SR48_CLUSTERS_UNKNOWN, &bound);
+    /* adapt --stream: the cut's mode decides the stream's plan */
     if (st != SUBD_OK) return st;
     mem = host_arena_alloc(&tmp, bound);
     if (!mem) return SUBD_ERR_NOMEM;
@@ -217,8 +218,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
     if (st == SUBD_OK) st = subd_sr48_base_plan(in, flags, clusters, &base_bytes);
     if (st == SUBD_OK) st = subd_sr48_base(&tmp, in, flags, &base, d);
     memset(&so, 0, sizeof so);
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
-    so.adapt.max_level = o->levels;
+    so.adapt = tool_sr48_adapt(o);
     if (st == SUBD_OK) st = subd_sr48_stream_plan(&base, &so, &sb, d);
     bound = tmp.used; /* the base; its build scratch above it is given back */
     free(mem);
@@ -231,7 +231,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
 static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_sr48_opts so = sr48_opts_of(o);
-    subd_adapt ad = sr48_adapt_of(o);
+    subd_adapt ad = tool_sr48_adapt(o);
     uint32_t build = 0, extract = 0, keep;
     subd_arena tmp;
     subd_sr48 h;
@@ -244,7 +244,7 @@ static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, s
     if (!mem) return SUBD_ERR_NOMEM;
     st = subd_sr48_build(&tmp, in, &so, &h, d);
     keep = tmp.used; /* the hierarchy; the build's scratch above it is given back */
-    if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &ad, &extract);
+    if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &ad, &extract, d);
     free(mem);
     if (st != SUBD_OK) return st;
     if (extract > UINT32_MAX - keep) return SUBD_ERR_TOO_BIG;
@@ -257,7 +257,7 @@ static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
 {
     static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
     subd_sr48_opts so = sr48_opts_of(o);
-    subd_adapt ad = sr48_adapt_of(o);
+    subd_adapt ad = tool_sr48_adapt(o);
     subd_adapt_report rep;
     subd_sr48 h;
     uint32_t mark = subd_arena_mark(a);
@@ -666,8 +666,10 @@ const command tool_commands[] = {
      sr48_run, NULL},
     {"adapt", "-l MAX MODE INPUT -o OUTPUT", "variable-resolution semi-regular 4-8 mesh up to MAX binary\n"
                                              "steps; MODE: --point X,Y,Z [--radius R] | --ramp x|y|z |\n"
-                                             "--plane X,Y,Z,NX,NY,NZ | --chord EPS; --no-smooth",
-     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 6, SUBD_SR48_MAX_STEPS, OPT_NO_SMOOTH | OPT_ADAPT,
+                                             "--plane X,Y,Z,NX,NY,NZ | --chord EPS; --no-smooth;\n"
+                                             "--stream: one triangle at a time (all modes but --chord)",
+     CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0, "semireg48", 6, SUBD_SR48_MAX_STEPS,
+     OPT_NO_SMOOTH | OPT_ADAPT | OPT_STREAM,
      sr48_plan, sr48_run, NULL},
 };
 const size_t tool_num_commands = sizeof tool_commands / sizeof tool_commands[0];

@@ -510,8 +510,9 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     if (!o->input) return tool_usage_error("'%s' needs an input file", cmd->name);
     /* --stream and --limit: before the output checks, which depend on them */
     if (o->stream && !(cmd->options & OPT_STREAM))
-        return tool_usage_error("--stream applies to 'loop', 'semireg48' and 'alpha' only (not '%s')", cmd->name);
-    o->sr48_stream = o->stream && strcmp(cmd->name, "semireg48") == 0;
+        return tool_usage_error("--stream applies to 'loop', 'semireg48', 'adapt' and 'alpha' only (not '%s')",
+                                cmd->name);
+    o->sr48_stream = o->stream && (strcmp(cmd->name, "semireg48") == 0 || strcmp(cmd->name, "adapt") == 0);
     if (o->limit && o->sr48_stream) return tool_usage_error("--limit applies to 'loop --stream' only");
     if (strcmp(cmd->name, "alpha") == 0) { /* alpha --stream: --chord, --feed; .xyz or G-code */
         if (o->limit) return tool_usage_error("--limit applies to 'loop --stream' only");

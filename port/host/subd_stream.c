@@ -40,6 +40,7 @@
 typedef struct stream_counts {
     uint64_t tris, verts, edges, ids;
     int verts_exact; /* verts is the count (Loop's closed form), else a bound (semireg48) */
+    int tris_bound;  /* tris is a bound (adapt --stream: the uniform count), else the count */
 } stream_counts;
 
 static stream_counts counts_of(const subd_mesh *in, uint32_t levels)
@@ -52,6 +53,7 @@ static stream_counts counts_of(const subd_mesh *in, uint32_t levels)
     c.edges = (uint64_t)in->num_edges * n + 3u * f * (n * (n - 1u) / 2u);
     c.ids = (uint64_t)in->num_verts + (uint64_t)in->num_corners * (n - 1u) + inner;
     c.verts_exact = 1;
+    c.tris_bound = 0;
     return c;
 }
 
@@ -295,7 +297,8 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     struct stat sb;
     int st = 0, regular = 0;
     double t0;
-    if (fmt == HOST_FMT_STL && c->tris > UINT32_MAX)
+    uint64_t stl_tris = c->tris;
+    if (fmt == HOST_FMT_STL && c->tris > UINT32_MAX && !c->tris_bound)
         return stream_limit("too many triangles for STL's 32-bit count", o->output);
     if ((fmt == HOST_FMT_OBJ || fmt == HOST_FMT_OFF) &&
         (c->verts >= UINT32_MAX || c->ids >= SIZE_MAX / 8u || (fmt == HOST_FMT_OFF && c->tris > UINT32_MAX / 4u)))
@@ -307,13 +310,30 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     s->max_v = sat32(c->verts);
     s->max_t = c->tris;
     if ((fmt == HOST_FMT_OBJ || fmt == HOST_FMT_OFF) && (st = gather_alloc(r, s, c)) != EXIT_OK) return st;
+    if (fmt == HOST_FMT_STL && c->tris_bound && base) {
+        /* adapt --stream to .stl: the header's count first, by a counting pass (OUTPUT may
+         * be a pipe, so it cannot be patched afterwards) */
+        subd_sr48_stream_opts so;
+        subd_loop_sink cnt;
+        memset(&so, 0, sizeof so);
+        so.adapt = tool_sr48_adapt(o);
+        cnt.tri = count_tri;
+        cnt.ctx = s;
+        t0 = host_now_ns();
+        st = subd_sr48_stream(a, base, &so, &cnt, d);
+        r->lib_ns += host_now_ns() - t0;
+        if (st != 0) return st;
+        stl_tris = s->tris;
+        s->tris = 0;
+        s->hash = 2166136261u;
+    }
     if (fmt == HOST_FMT_STL || fmt == HOST_FMT_OBJ) {
         if (!(s->f = fopen(o->output, "wb"))) {
             tool_error("cannot write '%s': %s", o->output, strerror(errno));
             return EXIT_OUTPUT;
         }
         regular = fstat(fileno(s->f), &sb) == 0 && S_ISREG(sb.st_mode);
-        if (fmt == HOST_FMT_STL) st = stl_begin(s, o, (uint32_t)c->tris);
+        if (fmt == HOST_FMT_STL) st = stl_begin(s, o, (uint32_t)stl_tris);
         else {
             s->fill = 11u;
             memcpy(s->buf, "# tinysubd\n", s->fill);
@@ -326,8 +346,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
         if (base) {
             subd_sr48_stream_opts so;
             memset(&so, 0, sizeof so);
-            so.adapt.mode = SUBD_ADAPT_UNIFORM;
-            so.adapt.max_level = o->levels;
+            so.adapt = tool_sr48_adapt(o);
             st = subd_sr48_stream(a, base, &so, &sink, d);
         } else if (o->adapt_mode == SUBD_ADAPT_CHORD) {
             subd_loop_adapt_opts ao = tool_loop_adapt_opts(o);
@@ -337,7 +356,8 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
         }
         r->lib_ns += host_now_ns() - t0;
     }
-    if (st == 0 && (s->tris != c->tris || (s->index && c->verts_exact && s->nv != c->verts))) st = SINK_COUNT;
+    if (st == 0 && (c->tris_bound ? s->tris > c->tris : s->tris != c->tris)) st = SINK_COUNT;
+    if (st == 0 && s->index && c->verts_exact && s->nv != c->verts) st = SINK_COUNT;
     if (out_close(s, o->output, regular, st == 0) != 0 && st == 0) st = SINK_WRITE;
     if (st < 0) return st; /* the library's status: subd_main.c reports it */
     if (st == SINK_WRITE) {
@@ -365,8 +385,7 @@ static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr
     double t0 = host_now_ns();
     int st = subd_sr48_base(a, &r->in.mesh, flags, base, d);
     memset(&so, 0, sizeof so);
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
-    so.adapt.max_level = r->o.levels;
+    so.adapt = tool_sr48_adapt(&r->o);
     if (st == SUBD_OK) st = subd_sr48_stream_plan(base, &so, stream_bytes, d);
     r->lib_ns += host_now_ns() - t0;
     if (st != SUBD_OK) return st;
@@ -375,6 +394,7 @@ static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr
     c->verts = c->ids < 3u * c->tris ? c->ids : 3u * c->tris; /* a bound: the sink counts them */
     c->verts_exact = 0;
     c->edges = 0;
+    c->tris_bound = tool_sr48_adapt(&r->o).mode != SUBD_ADAPT_UNIFORM;
     return SUBD_OK;
 }
 
@@ -414,6 +434,7 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
     subd_mesh *m = &r->out;
     subd_sr48 base;
     uint32_t k, stream_bytes = 0;
+    uint64_t uniform;
     int st = 0;
     if (!s) return tool_out_of_memory();
     if (r->o.sr48_stream) {
@@ -429,12 +450,14 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
     }
     st = stream_into(r, a, d, s, &c, r->o.sr48_stream ? &base : NULL);
     if (r->o.sr48_stream || r->o.adapt_mode == SUBD_ADAPT_CHORD) c.verts = s->nv;
+    uniform = c.tris;
+    if (c.tris_bound) c.tris = s->tris; /* adapt --stream: what was cut */
     memset(m, 0, sizeof *m);
     m->num_verts = sat32(c.verts);
     m->num_faces = sat32(c.tris);
     m->num_corners = sat32(3u * c.tris);
     m->num_edges = sat32(c.edges);
-    m->num_boundary_edges = sat32((uint64_t)in->num_boundary_edges << r->o.levels);
+    m->num_boundary_edges = c.tris_bound ? 0u : sat32((uint64_t)in->num_boundary_edges << r->o.levels); /* adapt: not counted */
     m->num_boundary_loops = in->num_boundary_loops;
     if (st == 0 && r->o.output && r->o.out_format == HOST_FMT_OFF) {
         /* the gathered mesh, through the library's OFF writer */
@@ -444,14 +467,18 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
         for (k = 0; k <= m->num_faces; k++) m->face_start[k] = 3u * k;
         st = tool_write_output(r);
     }
-    if (r->o.sr48_stream)
+    if (r->o.sr48_stream) {
+        static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
+        subd_adapt ad = tool_sr48_adapt(&r->o);
         snprintf(r->extra.json, sizeof r->extra.json,
-                 "\"stream\":true,\"stream_arena\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"uniform\","
-                 "\"base_triangles\":%lu,\"faces\":%llu,\"triangles\":%llu,\"checksum\":\"%08lx\"",
+                 "\"stream\":true,\"stream_arena\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\","
+                 "\"base_triangles\":%lu,\"faces\":%llu,\"triangles\":%llu,\"uniform_faces\":%llu,"
+                 "\"saved_faces\":%llu,\"checksum\":\"%08lx\"",
                  (unsigned long)stream_bytes, (unsigned long)r->o.levels, r->o.no_smooth ? "false" : "true",
-                 (unsigned long)base.level_tri[1], (unsigned long long)s->tris, (unsigned long long)s->tris,
-                 (unsigned long)s->hash);
-    else {
+                 (unsigned)ad.mode < 6u ? mode_name[ad.mode] : "?", (unsigned long)base.level_tri[1],
+                 (unsigned long long)s->tris, (unsigned long long)s->tris, (unsigned long long)uniform,
+                 (unsigned long long)(uniform - s->tris), (unsigned long)s->hash);
+    } else {
         /* the stream's own arena (its plan; the mesh not counted), beside arena_planned */
         subd_loop_opts lo = tool_loop_opts(&r->o);
         subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);

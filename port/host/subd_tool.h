@@ -183,6 +183,10 @@ subd_loop_opts tool_loop_opts(const tool_opts *o);
 /* loop --stream --limit --chord EPS: subd_loop_adapt_stream's options (subd_commands.c). */
 subd_loop_adapt_opts tool_loop_adapt_opts(const tool_opts *o);
 
+/* The cut of semireg48 (uniform) and adapt (subd_commands.c): the mode and its parameters,
+ * max_level = -l; used by both the materialised run and the stream. */
+subd_adapt tool_sr48_adapt(const tool_opts *o);
+
 /* Errors (tool_error.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);
 /* Records an error message (printf format) for the --stats JSON of a failed run; the

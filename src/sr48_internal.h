@@ -85,4 +85,11 @@ int subd_sr48_adapt_check_(const subd_adapt *ad);
 int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
                          const subd_real *lo, const subd_real *hi, uint32_t k);
 
+/* Chordal cuts of the stream (sr48_chord.c): is finest position p farther than eps from
+ * L_d(v), the linear interpolant of ancestor triangle d (corners c: apex, b0, b1, 9 reals)
+ * at the vertex v created by splitting d's descendant reached by n child steps (bit s of
+ * path: the child taken at step s, 0 = (m; apex, b0), 1 = (m; b1, apex))? n = 0: v is d's
+ * own new vertex (the midpoint of its base). 1 beyond, 0 within. */
+int subd_sr48_chord_beyond_(const subd_real *c, uint32_t path, uint32_t n, const subd_real *p, subd_real eps);
+
 #endif

@@ -383,9 +383,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
 /* The plan of CHORD: the uniform plan plus the subtree walk's state (per level: the node,
  * its child state and its corners' sources, 5 words; the star's keys,
- * 2 words per window triangle; a cache of SUBD_SR48_STREAM_CHORD_CACHE_ verdicts, 3 words
- * each) and the walk's finest positions (3 subd_reals per level + 4). */
-#define SUBD_SR48_STREAM_CHORD_CACHE_ 32u
+ * 2 words per window triangle; a direct-mapped cache of SUBD_SR48_STREAM_CHORD_CACHE_
+ * verdicts, 3 words each) and the walk's finest positions (3 subd_reals per level + 4). */
+#define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
     (SUBD_SR48_STREAM_BYTES(L, N) + \
      SUBD_SR48_SA_(4u * (5u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + 3u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \

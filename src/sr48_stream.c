@@ -75,7 +75,7 @@
 #define S48_INC 0x2u    /* smoothing scratch: some input missing                          */
 #define S48_FAR 0xffu   /* crop: vertex not reached                                       */
 #define S48_RINGS SUBD_SR48_STREAM_RINGS_
-#define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached W verdicts (key lo, hi, level | dirty) */
+#define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached W verdicts (s48c_cached)      */
 
 /* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt. */
 typedef struct s48_win {
@@ -122,7 +122,7 @@ typedef struct s48_state {
     /* CHORD (sr48_chord.c's criterion, s48_chord_wants): per walk level the triangle, the
      * child state, the corners' sources (0..2 the walked triangle's corners, 3 + j the vertex
      * level j's node creates); the star's keys; the verdict cache */
-    uint32_t chord, cn;
+    uint32_t chord;
     uint32_t *ccur, *cch, *csrc, *ckey, *cache;
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
 } s48_state;
@@ -894,28 +894,34 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
     }
 }
 
-/* The verdict cache: -1 unknown, 0 within (an ancestor-or-self is: W does not grow down
- * the hierarchy), 1 beyond (a descendant-or-self is). */
+/* The verdict cache, direct mapped (S48C_NC slots, a power of two) by key and level: -1
+ * unknown, 0 within (the triangle or one of its ancestors is: W does not grow down the
+ * hierarchy), 1 beyond. Entries: key lo, key hi, level | verdict << 8 | 1 << 9 (valid). */
+static uint32_t s48c_slot(uint64_t key, uint32_t k)
+{
+    uint64_t h = (key ^ ((uint64_t)k << 58)) * 0x9e3779b97f4a7c15u;
+    return (uint32_t)(h >> 40) & (S48C_NC - 1u);
+}
+
 static int s48c_cached(const s48_state *s, uint64_t key, uint32_t k)
 {
-    uint32_t i, n = s->cn < S48C_NC ? s->cn : S48C_NC;
-    for (i = 0; i < n; i++) {
-        const uint32_t *e = s->cache + 3u * i;
-        uint64_t ek = ((uint64_t)e[1] << 32) | e[0];
-        uint32_t lv = e[2] & 0xffu, dirty = e[2] >> 8;
-        if (!dirty && lv <= k && (key >> (k - lv)) == ek) return 0;
-        if (dirty && lv >= k && (ek >> (lv - k)) == key) return 1;
+    uint32_t d;
+    for (d = 0; d <= k; d++) {
+        const uint32_t *e = s->cache + 3u * s48c_slot(key >> d, k - d);
+        if (e[0] != (uint32_t)(key >> d) || e[1] != (uint32_t)(key >> (d + 32u)) || (e[2] & 0x2ffu) != 0x200u + k - d)
+            continue;
+        if (d == 0u) return (int)((e[2] >> 8) & 1u);
+        if (((e[2] >> 8) & 1u) == 0u) return 0;
     }
     return -1;
 }
 
 static void s48c_remember(s48_state *s, uint64_t key, uint32_t k, int dirty)
 {
-    uint32_t *e = s->cache + 3u * (s->cn % S48C_NC);
+    uint32_t *e = s->cache + 3u * s48c_slot(key, k);
     e[0] = (uint32_t)key;
     e[1] = (uint32_t)(key >> 32);
-    e[2] = k | ((uint32_t)dirty << 8);
-    s->cn = s->cn + 1u < 2u * S48C_NC ? s->cn + 1u : S48C_NC; /* slot = cn % NC, kept bounded */
+    e[2] = k | ((uint32_t)dirty << 8) | 0x200u;
 }
 
 /* CHORD's decision for the current triangle t of the level-k window: W(s) > eps for some
@@ -1141,7 +1147,10 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->built = 0;
     s->err = 0;
     s->chord = o->adapt.mode == SUBD_ADAPT_CHORD ? 1u : 0u;
-    s->cn = 0;
+    if (s->chord) {
+        uint32_t i;
+        for (i = 0; i < 3u * S48C_NC; i++) s->cache[i] = 0; /* no valid entry */
+    }
     subd_stream_start(str, a, e.mark, SUBD_STREAM_TRIS, &s->impl, 2u);
     return subd_entry_ok(&e);
 }

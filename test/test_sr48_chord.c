@@ -214,11 +214,11 @@ static uint32_t g_faces, g_exfaces, g_uni, g_cases;
 static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, const char *hash)
 {
     subd_arena a, sa;
-    subd_mesh in, out;
-    subd_sr48 h, base;
+    static subd_mesh in, out; /* static: the device's stack limit */
+    static subd_sr48 h, base;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
-    subd_adapt_report rep;
+    static subd_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
     uint32_t plan = 0, nid = 0, i, c, q, ne = 0, nb = 0, bad = 0, nv = 0;
@@ -350,15 +350,15 @@ static void sr48c_guarantee(void)
 static void sr48c_errors(void)
 {
     subd_arena a, sa;
-    subd_mesh in, out;
-    subd_sr48 base, h;
+    static subd_mesh in, out; /* static: the device's stack limit */
+    static subd_sr48 base, h;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
-    subd_adapt_report rep;
+    static subd_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
     subd_stream st;
-    subd_tri buf[7];
+    static subd_tri buf[7];
     uint32_t plan = 0, size, i, hp;
     int r, got;
     subd_real bads[3];

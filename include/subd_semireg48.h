@@ -293,8 +293,9 @@ typedef struct subd_sr48_stream_opts {
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
  *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, a mode other than
- *   UNIFORM, PLANE and POINT with radius > 0 - RAMP, POINT's default radius, CALLBACK and
- *   CHORD are not streamed yet -, the mode's parameters as subd_sr48_extract), SUBD_ERR_EMPTY,
+ *   UNIFORM, PLANE, CHORD and POINT with radius > 0 - RAMP, POINT's default radius and
+ *   CALLBACK are not streamed yet -, the mode's parameters as subd_sr48_extract: CHORD's eps
+ *   not > 0 or not finite), SUBD_ERR_EMPTY,
  *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
  * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
 int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
@@ -327,6 +328,19 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   k < max_level gets its corners' max_level positions by three such descents, so a cut
  *   costs O(window * max_level) per leaf and per level-0 window vertex on top of the
  *   uniform work of its split triangles. Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
+ * Chordal cuts (CHORD; src/sr48_chord.c has the criterion and its proof): a level-k diamond
+ *   splits iff some triangle of its star (the level-k triangles sharing a vertex with it)
+ *   has a descendant d (or is one) with subd_sr48_extract's chordal deviation E(d) > eps.
+ *   The criterion nests (a diamond that splits has parents that split), so it is decided
+ *   top down with no forced split, and every vertex of level <= max_level lies within eps
+ *   of the streamed mesh (Q16.16: eps + 2^-16, as subd_sr48_extract). It is not
+ *   subd_sr48_extract(CHORD)'s cut but contains it: measured 1.04x its faces on the test
+ *   shapes, 1.77x (eps 0.002) and 1.79x (eps 5e-4) on spot at 6 steps. Each decision
+ *   walks the subtrees of the star down to max_level with the windows of the deeper levels
+ *   (a verdict cache of SUBD_SR48_STREAM_CHORD_CACHE_ entries reuses "within" for
+ *   descendants): O(window * (max_level - k) * 2^(max_level - k)) per star triangle,
+ *   measured about 250x slower than subd_sr48_build + subd_sr48_extract(CHORD) on spot
+ *   (bench -s sr48chord). Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
  * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose

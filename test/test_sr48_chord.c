@@ -169,7 +169,7 @@ static int ch_ecmp(const void *a, const void *b)
     return x[1] < y[1] ? -1 : x[1] > y[1];
 }
 static uint8_t g_bnd[CH_MAXV];
-static uint64_t g_hedge[2u * (H_HOST ? 3u * 32768u : 3u * 1024u)];
+static uint64_t g_hedge[2u * (H_HOST ? 3u * 32768u : 3u * 2048u)];
 
 /* Boundary vertices of the hierarchy's finest level (an edge of a level-L triangle that no
  * other level-L triangle has reversed). */

@@ -37,7 +37,7 @@ enum { C_ICO, C_TORUS, C_GRID, C_HEXFAN, C_COUNT };
 #define CH_MAT_ARENA (H_ARENA_BYTES - CH_ST_ARENA)
 #define CH_MAXF (H_HOST ? 8192u : 768u)     /* streamed triangles kept */
 #define CH_MAXID (H_HOST ? 65536u : 4096u)  /* closed-form id space */
-#define CH_MAXV (H_HOST ? 16384u : 1024u)   /* hierarchy vertices */
+#define CH_MAXV (H_HOST ? 16384u : 2048u)   /* hierarchy vertices */
 
 static subd_real g_tpos[3 * 64];
 static uint32_t g_tidx[6 * 64];

@@ -16,7 +16,8 @@
  * ../shared/data/meshes/bench/ (relative to the working directory, i.e. the repository when
  * run by `make bench`) and says so when there is none. SECTIONS is a comma list of
  * parse,format,loop,limit,q48,alpha,quality,pia,sr48,sr48stream,stream,fanbuild (default: all), valence48 (only when
- * named: the semi-regular 4-8 valence transition table) and demostream (only when named,
+ * named: the semi-regular 4-8 valence transition table), sr48chord (only when named: the chordal
+ * stream against build + extract(CHORD), 6 steps, eps 0.002 and 5e-4) and demostream (only when named,
  * alone, no files read: the firmware demo's streaming step on the host, the same lines and
  * hash as port/cortex-m/demo.c prints under QEMU; compile with -DSUBD_FIXED=1 for the
  * Q16.16 hash). Build with -O2, no sanitizers.
@@ -1206,6 +1207,91 @@ static void section_sr48stream(void)
     }
 }
 
+/* Chordal stream (subd_sr48_stream, SUBD_ADAPT_CHORD) next to the materialised
+ * subd_sr48_build + subd_sr48_extract(CHORD) in the same run (only when named: -s sr48chord;
+ * one timed run each, the stream is slow): faces of the nested cut against the exact
+ * materialised cut, faces/s ratio, the stream's plan against the materialised peak. */
+static void section_sr48chord(void)
+{
+    static const double epss[2] = {0.002, 5e-4};
+    uint32_t steps = 6, e;
+    int i;
+    printf("\n== Chordal stream (subd_sr48_stream CHORD into a counting sink) next to subd_sr48_build + "
+           "subd_sr48_extract(CHORD), %u binary steps, absolute eps;\n   faces x = stream faces / extract faces; "
+           "speed = stream faces/s / materialised faces/s; reproduce: build/bench/bench -s sr48chord FILES\n",
+           (unsigned)steps);
+    printf("%-24s %8s %9s %9s %7s | %9s %8s | %9s %11s | %6s\n", "mesh", "eps", "faces", "mat faces", "faces x",
+           "stream ms", "plan", "mat ms", "mat bytes", "speed");
+    for (i = 0; i < g_nmesh; i++) {
+        bmesh *m = &g_mesh[i];
+        if (!m->tri) continue;
+        for (e = 0; e < 2u; e++) {
+            subd_arena a, b;
+            subd_sr48_opts so;
+            subd_sr48 h, base;
+            subd_sr48_stream_opts sso;
+            subd_mesh out;
+            subd_adapt_report rep;
+            subd_diag d;
+            subd_tri_sink sink;
+            sr48s_sink k2;
+            uint32_t bound = 0, xplan = 0, mh, splan = 0, mfaces;
+            void *mem, *bmem;
+            double t0, tm, ts;
+            int st;
+            so.steps = steps;
+            so.flags = 0;
+            memset(&sso, 0, sizeof sso);
+            sso.adapt.mode = SUBD_ADAPT_CHORD;
+            sso.adapt.max_level = steps;
+            sso.adapt.eps = D2R(epss[e]);
+            if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;
+            if ((double)bound * 2.0 > 2.0 * PLAN_LIMIT) { /* the bunny's 6 steps need ~1.6 GB */
+                printf("%-24s skipped (materialised above %.1f GB)\n", m->name, 2.0 * PLAN_LIMIT / 1e9);
+                continue;
+            }
+            mem = host_arena_alloc(&a, (uint32_t)((double)bound * 2.0 > 4e9 ? 4e9 : (double)bound * 2.0));
+            if (!mem) continue;
+            t0 = host_now_ns();
+            st = subd_sr48_build(&a, &m->hm.mesh, &so, &h, &d);
+            if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &sso.adapt, &xplan);
+            if (st == SUBD_OK) st = subd_sr48_extract(&a, &h, &sso.adapt, &out, &rep, &d);
+            tm = host_now_ns() - t0;
+            mh = a.peak;
+            mfaces = st == SUBD_OK ? out.num_faces : 0u;
+            free(mem);
+            if (st != SUBD_OK) {
+                printf("%-24s materialised FAILED %d\n", m->name, st);
+                continue;
+            }
+            if (subd_sr48_base_plan(&m->hm.mesh, 0, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;
+            bmem = host_arena_alloc(&b, bound + 262144u);
+            if (!bmem) continue;
+            t0 = host_now_ns();
+            st = subd_sr48_base(&b, &m->hm.mesh, 0, &base, &d);
+            if (st == SUBD_OK) st = subd_sr48_stream_plan(&base, &sso, &splan, &d);
+            k2.tris = 0;
+            k2.h = 2166136261u;
+            if (st == SUBD_OK) {
+                sink.tri = sr48s_tri;
+                sink.ctx = &k2;
+                st = subd_sr48_stream(&b, &base, &sso, &sink, &d);
+            }
+            ts = host_now_ns() - t0;
+            free(bmem);
+            if (st != SUBD_OK) {
+                printf("%-24s stream FAILED %d\n", m->name, st);
+                continue;
+            }
+            printf("%-24s %8.4g %9lu %9lu %7.3f | %9.1f %8lu | %9.1f %11lu | %6.3f\n", m->name, epss[e],
+                   (unsigned long)k2.tris, (unsigned long)mfaces, (double)k2.tris / (double)mfaces, ts / 1e6,
+                   (unsigned long)splan, tm / 1e6, (unsigned long)mh,
+                   ((double)k2.tris / ts) / ((double)mfaces / tm));
+            fflush(stdout);
+        }
+    }
+}
+
 static void section_alpha(void)
 {
     static const uint32_t orders[] = {2u, 3u, 4u};
@@ -1722,6 +1808,7 @@ int main(int argc, char **argv)
     if (section_on(sections, "sr48stream")) section_sr48stream();
     if (section_on(sections, "fanbuild")) failed += section_fanbuild();
     if (sections && section_on(sections, "valence48")) section_valence48();
+    if (sections && section_on(sections, "sr48chord")) section_sr48chord();
     for (k = 0; k < g_nmesh; k++) host_mesh_free(&g_mesh[k].hm);
     for (k = 0; k < ndef; k++) free(def[k]);
     free(def);

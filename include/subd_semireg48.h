@@ -309,8 +309,8 @@ typedef struct subd_sr48_stream_opts {
  * of adapt.max_level and the base mesh's largest valence only (SUBD_SR48_STREAM_BYTES).
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
- *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, CHORD - not streamed
- *   yet -, the mode's parameters as subd_sr48_extract), SUBD_ERR_EMPTY,
+ *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, the mode's parameters
+ *   as subd_sr48_extract: CHORD's eps not > 0 or not finite), SUBD_ERR_EMPTY,
  *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
  * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
 int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
@@ -348,6 +348,19 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   vertices * window * max_level) once. CALLBACK: fn is called once per triangle of
  *   level < max_level that is in the cut or split (as subd_sr48_extract: level 0 and the
  *   children of split triangles). Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
+ * Chordal cuts (CHORD; src/sr48_chord.c has the criterion and its proof): a level-k diamond
+ *   splits iff some triangle of its star (the level-k triangles sharing a vertex with it)
+ *   has a descendant d (or is one) with subd_sr48_extract's chordal deviation E(d) > eps.
+ *   The criterion nests (a diamond that splits has parents that split), so it is decided
+ *   top down with no forced split, and every vertex of level <= max_level lies within eps
+ *   of the streamed mesh (Q16.16: eps + 2^-16, as subd_sr48_extract). It is not
+ *   subd_sr48_extract(CHORD)'s cut but contains it: measured 1.04x its faces on the test
+ *   shapes, 1.77x (eps 0.002) and 1.79x (eps 5e-4) on spot at 6 steps. Each decision
+ *   walks the subtrees of the star down to max_level with the windows of the deeper levels
+ *   (a verdict cache of SUBD_SR48_STREAM_CHORD_CACHE_ entries reuses "within" for
+ *   descendants): O(window * (max_level - k) * 2^(max_level - k)) per star triangle,
+ *   measured about 250x slower than subd_sr48_build + subd_sr48_extract(CHORD) on spot
+ *   (bench -s sr48chord). Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
  * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose
@@ -403,6 +416,15 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
     (SUBD_SR48_STREAM_BYTES(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
+/* The plan of CHORD: the uniform plan plus the subtree walk's state (per level: the node,
+ * its child state and its corners' sources, 5 words; the star's keys,
+ * 2 words per window triangle; a direct-mapped cache of SUBD_SR48_STREAM_CHORD_CACHE_
+ * verdicts, 3 words each) and the walk's finest positions (3 subd_reals per level + 4). */
+#define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
+#define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
+    (SUBD_SR48_STREAM_BYTES(L, N) + \
+     SUBD_SR48_SA_(4u * (5u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + 3u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \
+     SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u)))
 
 #ifdef __cplusplus
 }

@@ -92,4 +92,11 @@ void subd_sr48_box_grow_(const subd_real *pos, const uint32_t *idx, uint32_t n, 
                          int init);
 subd_real subd_sr48_default_radius_(const subd_real *blo, const subd_real *bhi, uint32_t max);
 
+/* Chordal cuts of the stream (sr48_chord.c): is finest position p farther than eps from
+ * L_d(v), the linear interpolant of ancestor triangle d (corners c: apex, b0, b1, 9 reals)
+ * at the vertex v created by splitting d's descendant reached by n child steps (bit s of
+ * path: the child taken at step s, 0 = (m; apex, b0), 1 = (m; b1, apex))? n = 0: v is d's
+ * own new vertex (the midpoint of its base). 1 beyond, 0 within. */
+int subd_sr48_chord_beyond_(const subd_real *c, uint32_t path, uint32_t n, const subd_real *p, subd_real eps);
+
 #endif

@@ -59,9 +59,19 @@
  * triangles' corners, subd_adapt_mode), found before the first triangle by one descent per
  * base vertex (s48_adapt_box); CALLBACK asks fn on the same box as POINT/RAMP/PLANE.
  *
+ * Chordal cuts (CHORD; the criterion, why it nests and why it is conservative: sr48_chord.c):
+ * the current triangle's diamond splits iff a triangle of its star (as above: in the window)
+ * has W > eps, W its subtree's largest chordal deviation of subd_sr48_extract's kind. W of
+ * a star triangle is found by walking its subtree to max_level with the windows of the
+ * levels below (s48_chord_walk: free at the decision); the current triangle is walked in
+ * place, another one after rebuilding the windows 0..k along its path (s48c_path: the same
+ * calls, so the same bits), and the current path is rebuilt afterwards. A direct-mapped
+ * cache keeps verdicts by key (a "within" covers the descendants).
+ *
  * Memory: the fixed state block, the overflow ring (2 triangles), L + 1 window blocks
  * (level L uses only its header), the refined window (twice the triangles), the smoothing
- * sums and the crop's maps; all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
+ * sums and the crop's maps (CHORD: the walk's per-level state, the star's keys, the verdict
+ * cache); all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
  * which depend on the largest valence only.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -78,6 +88,7 @@
 #define S48_INC 0x2u    /* smoothing scratch: some input missing                          */
 #define S48_FAR 0xffu   /* crop: vertex not reached                                       */
 #define S48_RINGS SUBD_SR48_STREAM_RINGS_
+#define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached W verdicts (s48c_cached)      */
 
 /* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt. */
 typedef struct s48_win {
@@ -123,6 +134,12 @@ typedef struct s48_state {
     uint8_t *dist;
     uint16_t *mtab, *tmap, *vmap;
     uint32_t *gt, *gv, *gvt; /* level-0 window: triangles, vertices, a triangle at each     */
+    /* CHORD (sr48_chord.c's criterion, s48_chord_wants): per walk level the triangle, the
+     * child state, the corners' sources (0..2 the walked triangle's corners, 3 + j the vertex
+     * level j's node creates); the star's keys; the verdict cache */
+    uint32_t chord;
+    uint32_t *ccur, *cch, *csrc, *ckey, *cache;
+    subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
 } s48_state;
 SUBD_STREAM_STATE_FITS(s48_state);
 
@@ -163,8 +180,8 @@ static void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
 }
 
 /* The one layout of plan and begin (layout.h's walk). */
-static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t nl, s48_state **ps, uint8_t **ring,
-                      uint32_t *bytes)
+static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t nl, uint32_t chord, s48_state **ps,
+                      uint8_t **ring, uint32_t *bytes)
 {
     subd_layout y;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), xv = cv + ct, off[8];
@@ -196,6 +213,8 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         subd_real *l0 = nl ? subd_layout_take(&y, 3u * cv, (uint32_t)sizeof(subd_real)) : 0;
         uint32_t *lgv = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *lgvt = nl ? subd_layout_take(&y, cv, 4u) : 0;
+        uint32_t *ci = chord ? subd_layout_take(&y, 5u * (levels + 1u) + 2u * ct + 3u * S48C_NC, 4u) : 0;
+        subd_real *cp = chord ? subd_layout_take(&y, 3u * (levels + 4u), (uint32_t)sizeof(subd_real)) : 0;
         if (s) {
             s->l0 = l0;
             s->lgv = lgv;
@@ -211,6 +230,12 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->gt = gt;
             s->gv = gv;
             s->gvt = gvt;
+            s->cpos = cp;
+            s->ccur = ci;
+            s->cch = ci ? ci + (levels + 1u) : 0;
+            s->csrc = ci ? ci + 2u * (levels + 1u) : 0;
+            s->ckey = ci ? ci + 5u * (levels + 1u) : 0;
+            s->cache = ci ? ci + 5u * (levels + 1u) + 2u * ct : 0;
         }
     }
     *ps = s;
@@ -344,17 +369,26 @@ static uint32_t s48_valence(const subd_sr48 *b)
 /* ------------------------------------------------------------------------------------ */
 /* Checks and plan                                                                        */
 
+/* Does the mode keep L (the level-0 interpolant) per window vertex? (CHORD does not.) */
+static uint32_t s48_has_l(const subd_sr48_stream_opts *o)
+{
+    return o->adapt.mode != SUBD_ADAPT_UNIFORM && o->adapt.mode != SUBD_ADAPT_CHORD;
+}
+
 static int s48_check(const subd_sr48 *b, const subd_sr48_stream_opts *o, uint32_t *valence)
 {
     int st;
     if (!o) return SUBD_ERR_PARAM;
-    /* every mode but CHORD streams (the nested region, subd_adapt_mode) */
+    /* every mode streams: the nested region (POINT, RAMP, PLANE, CALLBACK; subd_adapt_mode) or
+     * the nested chordal criterion (CHORD, sr48_chord.c); the parameters as subd_sr48_extract
+     * checks them (CHORD: eps > 0 and finite) */
     switch (o->adapt.mode) {
     case SUBD_ADAPT_UNIFORM: break;
     case SUBD_ADAPT_POINT:
     case SUBD_ADAPT_RAMP:
     case SUBD_ADAPT_PLANE:
     case SUBD_ADAPT_CALLBACK:
+    case SUBD_ADAPT_CHORD:
         if (subd_sr48_adapt_check_(&o->adapt) != SUBD_OK) return SUBD_ERR_PARAM;
         break;
     default: return SUBD_ERR_PARAM;
@@ -378,7 +412,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
     subd_diag_clear(d);
     if (!bytes) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = s48_check(base, o, &val)) != SUBD_OK) return subd_fail(d, st);
-    st = s48_layout(0, o->adapt.max_level, val, o->adapt.mode != SUBD_ADAPT_UNIFORM, &s, &ring, &b);
+    st = s48_layout(0, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_ADAPT_CHORD, &s, &ring, &b);
     if (st != SUBD_OK) return subd_fail(d, st);
     *bytes = b;
     return SUBD_OK;
@@ -789,14 +823,207 @@ static int s48_adapt_box(s48_state *s)
     return 1;
 }
 
+/* CHORD (the criterion and its proof: sr48_chord.c). Rebuilds the windows of levels 0..k
+ * along the path of the level-k triangle with key `key` (T0 * 2^k + its child bits), as
+ * the walk leaves them when that triangle is current (hd[2], hd[5]): the same calls on the
+ * same input, so the same bits. 0 on failure. */
+static int s48c_path(s48_state *s, uint64_t key, uint32_t k)
+{
+    s48_win w, x, c;
+    uint32_t j;
+    if (!s48_build0(s, (uint32_t)(key >> k))) return 0;
+    for (j = 0; j < k; j++) {
+        uint32_t bit = (uint32_t)(key >> (k - 1u - j)) & 1u;
+        s48_lev(s, j, &w);
+        s48_x(s, &x);
+        s48_lev(s, j + 1u, &c);
+        w.hd[5] = bit + 1u;
+        if (!s48_refine(s, &w, j, &x) || !s48_crop(s, &x, 2u * w.hd[2], &c)) return 0;
+        c.hd[2] = c.hd[3u + bit];
+        if (c.hd[2] == S48_OUT) return 0;
+    }
+    s48_lev(s, k, &w);
+    w.hd[5] = 0;
+    return 1;
+}
+
+/* The corners' sources of the walk's node at level j, child `bit` of the node at j - 1
+ * (apex, b0, b1) with new vertex M = 3 + (j - 1): child 0 = (M; apex, b0), 1 = (M; b1, apex). */
+static void s48c_child(s48_state *s, uint32_t j, uint32_t bit)
+{
+    const uint32_t *p = s->csrc + 3u * (j - 1u);
+    uint32_t *c = s->csrc + 3u * j;
+    c[0] = 3u + (j - 1u);
+    c[1] = bit ? p[2] : p[0];
+    c[2] = bit ? p[0] : p[1];
+}
+
+/* The vertex created by the walk's node at level i (its finest position known) against
+ * the interpolant of every node from the walked triangle (level k) down to it. */
+static int s48c_test(const s48_state *s, uint32_t k, uint32_t i)
+{
+    const subd_real *p = s->cpos + 3u * (3u + i);
+    uint32_t a, l, q;
+    for (a = k; a <= i; a++) {
+        subd_real c[9];
+        uint32_t path = 0;
+        for (q = 0; q < 9u; q++) c[q] = s->cpos[3u * s->csrc[3u * a + q / 3u] + q % 3u];
+        for (l = a; l < i; l++) path |= (s->cch[l] - 1u) << (l - a);
+        if (subd_sr48_chord_beyond_(c, path, i - a, p, s->ad.eps)) return 1;
+    }
+    return 0;
+}
+
+/* W(t) > eps for triangle ts of the level-k window (k < levels)? Walks ts's subtree depth
+ * first (pre-order, child 0 first) with the windows of levels k+1.. and X (free while
+ * level k decides): each node's window is refined, then cropped to its children as the
+ * stream does, so every position is the stream's (exact by the ring rule, checked). The
+ * walked triangle's corners get their finest positions by descents (s48_finest), so does a
+ * node's new vertex (from the cropped window of its children, where it is their apex; at
+ * level max_level - 1 it is read from the refined window, the finest level); each is then
+ * tested against the interpolants of the node and its ancestors down from ts, whose
+ * corners are all known by then. 1 beyond, 0 within, -1 failure. */
+static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
+{
+    const uint32_t last = s->levels - 1u;
+    s48_win w, x, c;
+    uint32_t j = k, q;
+    s48_lev(s, k, &w);
+    for (q = 0; q < 3u; q++)
+        if (!s48_finest(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
+    s->ccur[k] = ts;
+    s->cch[k] = 0;
+    for (q = 0; q < 3u; q++) s->csrc[3u * k + q] = q;
+    for (;;) {
+        uint32_t cur = s->ccur[j], v;
+        subd_real *pm = s->cpos + 3u * (3u + j);
+        s48_lev(s, j, &w);
+        s48_x(s, &x);
+        if (!s48_refine(s, &w, j, &x)) return -1;
+        v = x.tv[6u * cur]; /* the node's new vertex */
+        if (j < last) {
+            uint64_t id = s48_vid(&x, v);
+            s48_lev(s, j + 1u, &c);
+            if (!s48_crop(s, &x, 2u * cur, &c) || c.hd[3] == S48_OUT) return -1;
+            /* its finest position: a descent from child 0 (blocks > j + 1 and X; child 0's
+             * walk rebuilds them from block j + 1) */
+            if (!s48_finest(s, j + 1u, c.hd[3], id, pm)) return -1;
+            s->cch[j] = 1u; /* in child 0 while its new vertex is tested */
+            if (s48c_test(s, k, j)) return 1;
+            j++;
+            s->ccur[j] = c.hd[3];
+            s->cch[j] = 0;
+            s48c_child(s, j, 0);
+            continue;
+        }
+        /* a leaf node: its new vertex is at the finest level in X */
+        if (!(x.vf[v] & S48_EXACT)) return -1;
+        for (q = 0; q < 3u; q++) pm[q] = x.vp[3u * v + q];
+        if (s48c_test(s, k, j)) return 1;
+        /* up to the deepest node whose child 1 is not walked yet */
+        for (;;) {
+            if (j == k) return 0;
+            j--;
+            if (s->cch[j] == 1u) break;
+        }
+        s->cch[j] = 2u;
+        s48_lev(s, j + 1u, &c); /* cropped to both children of node j, untouched below */
+        j++;
+        s->ccur[j] = c.hd[4];
+        s->cch[j] = 0;
+        s48c_child(s, j, 1u);
+        if (s->ccur[j] == S48_OUT) return -1;
+    }
+}
+
+/* The verdict cache, direct mapped (S48C_NC slots, a power of two) by key and level: -1
+ * unknown, 0 within (the triangle or one of its ancestors is: W does not grow down the
+ * hierarchy), 1 beyond. Entries: key lo, key hi, level | verdict << 8 | 1 << 9 (valid). */
+static uint32_t s48c_slot(uint64_t key, uint32_t k)
+{
+    uint64_t h = (key ^ ((uint64_t)k << 58)) * 0x9e3779b97f4a7c15u;
+    return (uint32_t)(h >> 40) & (S48C_NC - 1u);
+}
+
+static int s48c_cached(const s48_state *s, uint64_t key, uint32_t k)
+{
+    uint32_t d;
+    for (d = 0; d <= k; d++) {
+        const uint32_t *e = s->cache + 3u * s48c_slot(key >> d, k - d);
+        if (e[0] != (uint32_t)(key >> d) || e[1] != (uint32_t)(key >> (d + 32u)) || (e[2] & 0x2ffu) != 0x200u + k - d)
+            continue;
+        if (d == 0u) return (int)((e[2] >> 8) & 1u);
+        if (((e[2] >> 8) & 1u) == 0u) return 0;
+    }
+    return -1;
+}
+
+static void s48c_remember(s48_state *s, uint64_t key, uint32_t k, int dirty)
+{
+    uint32_t *e = s->cache + 3u * s48c_slot(key, k);
+    e[0] = (uint32_t)key;
+    e[1] = (uint32_t)(key >> 32);
+    e[2] = k | ((uint32_t)dirty << 8) | 0x200u;
+}
+
+/* CHORD's decision for the current triangle t of the level-k window: W(s) > eps for some
+ * s in the star of t's diamond (the window triangles that share a vertex with it; all of
+ * them are in the window, see s48_wants)? t is walked in place; another star triangle
+ * after rebuilding the windows 0..k along its path, and the current path is rebuilt after.
+ * 1 split, 0 leaf, -1 failure. */
+static int s48_chord_wants(s48_state *s, uint32_t k, uint32_t t)
+{
+    s48_win w;
+    uint32_t vs[4], nv = 3, i, j, q, ns = 1, moved = 0;
+    uint64_t cur;
+    int r = 0;
+    uint16_t nb;
+    s48_lev(s, k, &w);
+    nb = w.tn[3u * t];
+    cur = s48_key(&w, t);
+    for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
+    if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
+    s->ckey[0] = (uint32_t)cur;
+    s->ckey[1] = (uint32_t)(cur >> 32);
+    for (i = 0; i < w.hd[0]; i++) {
+        int touch = 0;
+        if (i == t) continue;
+        for (j = 0; j < 3u; j++)
+            for (q = 0; q < nv; q++)
+                if (w.tv[3u * i + j] == vs[q]) touch = 1;
+        if (!touch) continue;
+        s->ckey[2u * ns] = w.key[2u * i];
+        s->ckey[2u * ns + 1u] = w.key[2u * i + 1u];
+        ns++;
+    }
+    for (i = 0; i < ns && r == 0; i++) {
+        uint64_t key = ((uint64_t)s->ckey[2u * i + 1u] << 32) | s->ckey[2u * i];
+        r = s48c_cached(s, key, k);
+        if (r >= 0) continue;
+        if (i == 0u) {
+            r = s48_chord_walk(s, k, t);
+        } else {
+            moved = 1;
+            if (!s48c_path(s, key, k)) return -1;
+            s48_lev(s, k, &w);
+            r = s48_chord_walk(s, k, w.hd[2]);
+        }
+        if (r < 0) return -1;
+        s48c_remember(s, key, k, r);
+    }
+    if (moved && !s48c_path(s, cur, k)) return -1;
+    return r;
+}
+
 /* Does the current triangle t of the level-k window (k < levels) split its diamond? The
  * region: L's box over the window's triangles that share a vertex with the diamond (all of
  * them are in the window: the diamond is within one ring of t). */
-static int s48_wants(const s48_state *s, const s48_win *w, uint32_t t, uint32_t k)
+static int s48_wants(s48_state *s, const s48_win *w, uint32_t t, uint32_t k)
 {
     uint32_t vs[4], nv = 3, i, j, q;
     subd_real lo[3], hi[3];
     uint16_t nb = w->tn[3u * t];
+    if (s->chord) return s48_chord_wants(s, k, t); /* 1, 0, or -1: a failed walk */
     for (j = 0; j < 3u; j++) vs[j] = w->tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w->tv[3u * nb];
     for (j = 0; j < 3u; j++) {
@@ -854,7 +1081,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
 {
     s48_state *s = (s48_state *)state;
     s48_win w, x, c;
-    int stop = 0;
+    int stop = 0, wants;
     for (;;) {
         if (s->t0 >= s->n0) {
             q->ended = 1;
@@ -865,7 +1092,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             s->boxed = 1;
         }
         if (!s->built) {
-            if (s->adapt && !s48_level0_lin(s, s->t0)) goto fail;
+            if (s->adapt && !s->chord && !s48_level0_lin(s, s->t0)) goto fail;
             if (!s48_build0(s, s->t0)) goto fail;
             s->k = 0;
             s->built = 1;
@@ -879,8 +1106,9 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             }
         }
         s48_lev(s, s->k, &w);
-        if (s->adapt && w.hd[5] == 0u && !s48_wants(s, &w, w.hd[2], s->k)) {
-            /* a leaf below max_level */
+        if (s->adapt && w.hd[5] == 0u && (wants = s48_wants(s, &w, w.hd[2], s->k)) <= 0) {
+            /* a leaf below max_level (or a failed CHORD walk) */
+            if (wants < 0) goto fail;
             if (!s48_emit_leaf(s, s->k, w.hd[2], q, &stop)) goto fail;
             if (s->k == 0u) {
                 s->t0++;
@@ -941,13 +1169,15 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     int st;
     if (!a || !str) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = s48_check(base, o, &val)) != SUBD_OK) return subd_entry_fail(&e, st);
-    if ((st = s48_layout(0, o->adapt.max_level, val, o->adapt.mode != SUBD_ADAPT_UNIFORM, &s, &ring, &bytes)) != SUBD_OK)
+    if ((st = s48_layout(0, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_ADAPT_CHORD, &s, &ring,
+                         &bytes)) != SUBD_OK)
         return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(a)) {
         d->bytes_needed = bytes;
         return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    (void)s48_layout(a, o->adapt.max_level, val, o->adapt.mode != SUBD_ADAPT_UNIFORM, &s, &ring, &bytes); /* fits */
+    (void)s48_layout(a, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_ADAPT_CHORD, &s, &ring,
+                     &bytes); /* fits */
     s->impl.step = s48_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;
@@ -967,6 +1197,11 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->k = 0;
     s->built = 0;
     s->err = 0;
+    s->chord = o->adapt.mode == SUBD_ADAPT_CHORD ? 1u : 0u;
+    if (s->chord) {
+        uint32_t i;
+        for (i = 0; i < 3u * S48C_NC; i++) s->cache[i] = 0; /* no valid entry */
+    }
     subd_stream_start(str, a, e.mark, SUBD_STREAM_TRIS, &s->impl, 2u);
     return subd_entry_ok(&e);
 }

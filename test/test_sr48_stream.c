@@ -685,25 +685,7 @@ static void sr48s_adaptive(void)
     }
     /* the cuts are adaptive: fewer faces than the uniform ones */
     CHECK(faces > 0u && faces < uni);
-    /* not streamed yet: CHORD (SUBD_ERR_PARAM) */
-    {
-        subd_arena a;
-        subd_mesh in;
-        subd_sr48 base;
-        subd_sr48_stream_opts so;
-        subd_diag d;
-        uint32_t plan = 0;
-        static const subd_adapt_mode no[1] = {SUBD_ADAPT_CHORD};
-        subd_arena_init(&a, h_arena_buf, MAT_ARENA);
-        if (!make_shape(S_CUBE, &a, &in) || !CHECK_EQ(subd_sr48_base(&a, &in, 0, &base, &d), SUBD_OK)) return;
-        for (m = 0; m < 1u; m++) {
-            memset(&so, 0, sizeof so);
-            so.adapt.mode = no[m];
-            so.adapt.max_level = 3;
-            so.adapt.eps = real_of(0.01);
-            CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
-        }
-    }
+    /* every mode is streamed (CHORD: test_sr48_chord.c) */
     /* most cuts compared (the smoothed tetrahedron's coarse ones are the exceptions) */
     CHECK(8u * g_skipped < g_adcases);
     T_NOTE("adaptive stream = extraction on %u faces (%u of %u cuts with coincident faces left out)\n", faces,

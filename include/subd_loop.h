@@ -229,7 +229,26 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_(((lim) ? 1u : (L) >= 2u ? 16u : 4u) * (uint32_t)sizeof(subd_tri)) + \
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)))
+     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + \
+     SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim)))
+/* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
+ * sides 2^(t-1) + 3 and 2^(t-2) + 3 (positions, ring starts, rotations, lower sides; the
+ * second's positions also hold a quarter of the last level, side 2^(t-1)), the quarter's ids
+ * and its emission table. */
+#define SUBD_LOOP_TMIN_(L) ((uint32_t)(L) < (uint32_t)SUBD_LOOP_TILE_LEVELS ? (uint32_t)(L) : (uint32_t)SUBD_LOOP_TILE_LEVELS)
+#define SUBD_LOOP_TD_(L, lim) (((lim) || SUBD_LOOP_TMIN_(L) < 2u) ? 0u : SUBD_LOOP_TMIN_(L))
+#define SUBD_LOOP_TCNT_(s) (((s) + 1u) * ((s) + 2u) / 2u)
+#define SUBD_LOOP_TC_(t) ((t) < 2u ? 2u : (t))
+#define SUBD_LOOP_TNA_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 1u)) + 3u)
+#define SUBD_LOOP_TNB_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 2u)) + 3u)
+#define SUBD_LOOP_TQN_(t) SUBD_LOOP_TCNT_(1u << (SUBD_LOOP_TC_(t) - 1u))
+#define SUBD_LOOP_TILE_BYTES_(t) \
+    ((t) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNA_(t)) + \
+               SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
+               SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQN_(t) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQN_(t))) + \
+               2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)) + \
+               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) \
+         : 0u)
 
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */

@@ -533,12 +533,16 @@ static void sp_enter(sp_state *s, const sp_level *p)
 }
 
 /* The ids of the current quarter's vertices: lattice points of the control face, from the
- * tile face's corners (level tk's header) and the quarter's frame. */
+ * tile face's corners (level tk's header) and the quarter's frame; a point inside the control
+ * face by vertex_id's closed form at once, the others by vertex_id. */
 static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
     sp_level p;
-    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0;
+    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, lv = s->o.levels, n1 = (uint32_t)1 << lv;
     int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
+    const subd_mesh *in = s->run.in;
+    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                                   (uint64_t)s->run.f * (nm1 * (nm1 - 1u) / 2u);
     level_at(&s->lay, s->tk, &p);
     a0 = (int32_t)p.h->ca[0];
     b0 = (int32_t)p.h->cb[0];
@@ -550,8 +554,14 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
         for (x = 0; x + y <= m; x++, k++) {
             int32_t gx = org[0] + (int32_t)x * e1[0] + (int32_t)y * e2[0];
             int32_t gy = org[1] + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint64_t id = vertex_id(s->run.in, s->run.f, (uint32_t)(a0 + gx * ea + gy * fa), (uint32_t)(b0 + gx * eb + gy * fb),
-                                    s->o.levels);
+            uint32_t a = (uint32_t)(a0 + gx * ea + gy * fa), b = (uint32_t)(b0 + gx * eb + gy * fb);
+            uint64_t id;
+            if (a >= 1u && b >= 1u && a + b < n1) { /* vertex_id's face interior */
+                uint32_t am = a - 1u;
+                id = base + (uint64_t)am * nm1 - (uint64_t)am * (am + 1u) / 2u + (b - 1u);
+            } else {
+                id = vertex_id(in, s->run.f, a, b, lv);
+            }
             tl->qid[2u * k] = (uint32_t)id;
             tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
         }
@@ -559,15 +569,24 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
 
 /* The tile's triangles, quarter by quarter, each quarter's in subd_loop's order (its table);
  * stops when the caller's buffer is full (ton stays set: the next step goes on here).
- * Returns 0, SUBD_ERR_RANGE or the sink's value. */
+ * Push form: the sink gets the one item each time (const), so the fields that do not change
+ * within the call (face, level, zero normals) are written once and each triangle writes its
+ * positions and ids. Returns 0, SUBD_ERR_RANGE or the sink's value. */
 SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
 {
     lt_tile tl;
-    uint32_t n;
+    uint32_t n, tj, j, k;
     int st;
+    subd_tri *one = (subd_tri *)(void *)q->one;
     subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth);
     n = 1u << (2u * (tl.depth - 1u));
     if (s->ovf) return SUBD_ERR_RANGE;
+    if (one) {
+        one->face = s->run.f;
+        one->level = s->o.levels;
+        for (j = 0; j < 3u; j++)
+            for (k = 0; k < 3u; k++) one->normal[j][k] = 0;
+    }
     while (s->tq < 4u) {
         if (!s->tready) {
             int32_t org[2], e1[2], e2[2];
@@ -577,24 +596,37 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
             s->tready = 1;
             s->tj = 0;
         }
-        while (s->tj < n) {
-            const uint8_t *ix = tl.tab + 3u * s->tj;
+        for (tj = s->tj; tj < n; tj++) {
+            const uint8_t *ix = tl.tab + 3u * tj;
+            const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];
+            const uint32_t *i0 = tl.qid + 2u * ix[0], *i1 = tl.qid + 2u * ix[1], *i2 = tl.qid + 2u * ix[2];
+            subd_real p00 = x0[0], p01 = x0[1], p02 = x0[2], p10 = x1[0], p11 = x1[1], p12 = x1[2];
+            subd_real p20 = x2[0], p21 = x2[1], p22 = x2[2];
+            uint64_t d0 = (uint64_t)i0[0] | ((uint64_t)i0[1] << 32), d1 = (uint64_t)i1[0] | ((uint64_t)i1[1] << 32);
+            uint64_t d2 = (uint64_t)i2[0] | ((uint64_t)i2[1] << 32);
             subd_tri *t;
-            uint32_t j, k;
-            if (subd_stream_q_full(q)) return 0;
-            t = out_tri(&s->run);
-            for (j = 0; j < 3u; j++) {
-                const subd_real *x = tl.qpos + 3u * ix[j];
-                const uint32_t *id = tl.qid + 2u * ix[j];
-                for (k = 0; k < 3u; k++) {
-                    t->pos[j][k] = x[k];
-                    t->normal[j][k] = 0;
-                }
-                t->id[j] = (uint64_t)id[0] | ((uint64_t)id[1] << 32);
+            if (one) {
+                if (q->stop) break;
+                t = one;
+            } else {
+                if (q->n >= q->max) break; /* the caller's buffer is full */
+                t = out_tri(&s->run);
+                for (j = 0; j < 3u; j++)
+                    for (k = 0; k < 3u; k++) t->normal[j][k] = 0;
             }
-            s->tj++;
-            if ((st = subd_stream_q_commit(q)) != 0) return st;
+            t->pos[0][0] = p00; t->pos[0][1] = p01; t->pos[0][2] = p02;
+            t->pos[1][0] = p10; t->pos[1][1] = p11; t->pos[1][2] = p12;
+            t->pos[2][0] = p20; t->pos[2][1] = p21; t->pos[2][2] = p22;
+            t->id[0] = d0;
+            t->id[1] = d1;
+            t->id[2] = d2;
+            if ((st = subd_stream_q_commit(q)) != 0) {
+                s->tj = tj + 1u;
+                return st;
+            }
         }
+        s->tj = tj;
+        if (tj < n) return 0;
         s->tq++;
         s->tready = 0;
     }

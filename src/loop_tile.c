@@ -120,7 +120,7 @@ void subd_lt_table(const lt_tile *tl)
 
 /* Level t + 1 point at (px, py) / 2 of level t (side s): *even = 1 and (ui, uj) the old
  * vertex, or *even = 0 and the edge d of U(ui, uj) it halves. */
-static void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui, uint32_t *uj, uint32_t *d)
+static inline void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui, uint32_t *uj, uint32_t *d)
 {
     *even = 0;
     if (px & 1u) {
@@ -145,40 +145,43 @@ static void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui, uint3
 }
 
 /* Position of the level t + 1 point (px, py) / 2 of grid g (side s): the smooth vertex rule
- * of valence 6 from the vertex's ring start, or the interior edge rule from the lower side. */
-static void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
-                     uint32_t *ovf)
+ * of valence 6 from the vertex's ring start, or the interior edge rule from the lower side.
+ * Indices from U(ui, uj)'s: vertex (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j,
+ * the length of row j), + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. */
+static inline void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
+                            uint32_t *ovf)
 {
-    uint32_t ui, uj, d;
+    uint32_t ui, uj, d, l0, row;
     int even;
+    const subd_real *P = g->pos;
     lt_classify(px, py, &even, &ui, &uj, &d);
+    l0 = lt_vi(s, ui, uj);
+    row = s + 1u - uj;
     if (even) {
-        uint32_t v = lt_vi(s, ui, uj), dd = g->dir[v], k, row = s + 1u - uj;
-        /* index offsets of the six directions on row uj */
-        uint32_t off[6];
+        uint32_t dd = g->dir[l0], k, off[6];
         subd_acc acc[3];
         off[0] = 1u;
         off[1] = row;
         off[2] = row - 1u;
-        off[3] = (uint32_t)-1;
+        off[3] = (uint32_t)0u - 1u;
         off[4] = (uint32_t)0u - (row + 1u);
         off[5] = (uint32_t)0u - row;
-        loop_smooth_begin(acc, w, g->pos + 3u * v);
-        for (k = 0; k < 6u; k++) loop_smooth_add(acc, w, g->pos + 3u * (v + off[(dd + k) % 6u]));
+        loop_smooth_begin(acc, w, P + 3u * l0);
+        for (k = 0; k < 6u; k++, dd = dd == 5u ? 0u : dd + 1u) loop_smooth_add(acc, w, P + 3u * (l0 + off[dd]));
         loop_smooth_end(out, acc, ovf);
     } else {
-        uint32_t l0 = lt_vi(s, ui, uj), l1 = l0 + 1u, l2 = lt_vi(s, ui, uj + 1u), a, b, c, e;
+        uint32_t a, b, c, e;
         if (d == 0u) {
-            a = l0; b = l1; c = l2; e = lt_vi(s, ui + 1u, uj - 1u);
+            a = l0; b = l0 + 1u; c = l0 + row; e = l0 - row;
         } else if (d == 1u) {
-            a = l1; b = l2; c = l0; e = lt_vi(s, ui + 1u, uj + 1u);
+            a = l0 + 1u; b = l0 + row; c = l0; e = l0 + row + 1u;
         } else {
-            a = l2; b = l0; c = l1; e = lt_vi(s, ui - 1u, uj + 1u);
+            a = l0 + row; b = l0; c = l0 + 1u; e = l0 + row - 1u;
         }
         if (((uint32_t)g->low[l0] >> d) & 1u)
-            loop_rule_edge(out, g->pos + 3u * a, g->pos + 3u * b, g->pos + 3u * c, g->pos + 3u * e, ovf);
+            loop_rule_edge(out, P + 3u * a, P + 3u * b, P + 3u * c, P + 3u * e, ovf);
         else
-            loop_rule_edge(out, g->pos + 3u * b, g->pos + 3u * a, g->pos + 3u * e, g->pos + 3u * c, ovf);
+            loop_rule_edge(out, P + 3u * b, P + 3u * a, P + 3u * e, P + 3u * c, ovf);
     }
 }
 
@@ -252,19 +255,21 @@ static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2
  * and lower sides too (not for the level the tile ends at). */
 static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, loop_weights w, uint32_t *ovf)
 {
-    uint32_t s2 = 2u * s - 3u, I, J;
+    uint32_t s2 = 2u * s - 3u, I, J, lo = 0, v = 0; /* the flag in a register, not through *ovf */
     for (J = 0; J <= s2; J++)
-        for (I = 0; I + J <= s2; I++) {
-            uint32_t v = lt_vi(s2, I, J);
+        for (I = 0; I + J <= s2; I++, v++) { /* v = lt_vi(s2, I, J) */
             if ((I == 0u && J == 0u) || (I == s2 && J == 0u) || (I == 0u && J == s2)) continue;
-            lt_point(g, s, I + 1u, J + 1u, w, h->pos + 3u * v, ovf);
-            if (meta) {
+            lt_point(g, s, I + 1u, J + 1u, w, h->pos + 3u * v, &lo);
+            /* ring starts: the next level's old vertices are this level's face's, at
+             * I, J >= 1, I + J <= s2 - 1 */
+            if (meta && I >= 1u && J >= 1u && I + J + 1u <= s2) {
                 uint32_t ui, uj, d;
                 int even;
                 lt_classify(I + 1u, J + 1u, &even, &ui, &uj, &d);
                 h->dir[v] = even ? g->dir[lt_vi(s, ui, uj)] : lt_new_dir(g, s, ui, uj, d);
             }
         }
+    *ovf |= lo;
     if (meta) lt_faces(g, s, h, s2);
 }
 
@@ -357,7 +362,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
                      int32_t e2[2])
 {
     const lt_grid *g = &tl->g[0]; /* level depth - 1 */
-    uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), x, y;
+    uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), x, y, lo = 0;
     int32_t im = (int32_t)m, ox, oy;
     loop_weights w = subd_loop_weights_of(wc, 6u, ovf);
     /* the quarter's corner 0 and edge directions in the last level, relative to the tile
@@ -375,6 +380,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
     for (y = 0; y <= m; y++)
         for (x = 0; x + y <= m; x++) {
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            lt_point(g, s, (uint32_t)px, (uint32_t)py, w, tl->qpos + 3u * lt_vi(m, x, y), ovf);
+            lt_point(g, s, (uint32_t)px, (uint32_t)py, w, tl->qpos + 3u * lt_vi(m, x, y), &lo);
         }
+    *ovf |= lo;
 }

@@ -148,8 +148,10 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  * computes them, handed to sink->tri one triangle at a time instead of stored.
  * Memory: exactly subd_loop_stream_plan's bytes at the peak, independent of the mesh: the
  *   run state (SUBD_STREAM_STATE_BYTES), the overflow ring of one batch (16 triangles; one
- *   level: 4; limit mode: 1; 104 bytes each), and one control face's 1-ring per level,
- *   refined depth first (an explicit stack, no recursion); nothing stays in it after the
+ *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
+ *   refined depth first (an explicit stack, no recursion), and from 2 levels on (not in limit
+ *   mode) one regular tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (2.5 KB at 4), where
+ *   regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
  *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.
@@ -206,7 +208,8 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * valence up to N; k >= 1: at most one corner above valence 6): positions, flags, ring
  * starts, corners, twins, sharp bits and the refined values of the level (the last two
  * levels are emitted from level L-2's); limit mode adds level L and a subd_mesh view of it;
- * then the scratch of one extraction. */
+ * then the scratch of one extraction and (L >= 2, not limit mode) the regular tile
+ * (SUBD_LOOP_TILE_BYTES_; SUBD_LOOP_TILE_LEVELS in subd_config.h). */
 #define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
 #define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
 #define SUBD_LOOP_SN_(N) ((uint32_t)(N) < 6u ? 6u : (uint32_t)(N))

@@ -17,6 +17,11 @@
  * stencils are read off L-2's topology without building the four level L-1 patches); one
  * level in all emits from level 0 (emit_children); limit mode goes down to level L and moves
  * the centre's corners to the limit with loop_limit.c's masks (emit_limit).
+ * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, at most L; not in
+ * limit mode) a patch whose centre has three smooth valence-6 corners is not refined depth
+ * first: its last t levels are made breadth first on a triangular grid, each vertex once, and
+ * its 4^t triangles go out quarter by quarter in the same order (tile_emit, resumable when
+ * the caller's buffer is full). Other patches take the general path below.
  *
  * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
  * in the same order. loop.c sums a vertex's ring from vert_out (the boundary half-edge, else

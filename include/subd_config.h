@@ -43,4 +43,14 @@
 #define SUBD_ARENA_ALIGN 8u
 #endif
 
+/* Levels the Loop stream refines breadth first in one regular tile (src/loop_tile.c): 2..5,
+ * or 0 for none. More levels spread a patch's cost over more triangles (4^levels per tile)
+ * and take more arena (SUBD_LOOP_STREAM_BYTES: 2.5 KB at 4, 7.4 KB at 5). */
+#ifndef SUBD_LOOP_TILE_LEVELS
+#define SUBD_LOOP_TILE_LEVELS 4
+#endif
+#if SUBD_LOOP_TILE_LEVELS != 0 && (SUBD_LOOP_TILE_LEVELS < 2 || SUBD_LOOP_TILE_LEVELS > 5)
+#error "SUBD_LOOP_TILE_LEVELS must be 0 or in 2..5"
+#endif
+
 #endif

@@ -58,15 +58,14 @@ static void add_face(const sp_level *p, uint32_t *nf, uint32_t f)
 static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
 {
     uint32_t i, nv = p->h->nv;
-    loop_vinfo c;
     for (i = 0; i < nv; i++)
         if (p->cvert[i] == v) return (uint16_t)i;
     p->cvert[nv] = v;
     p->pos[3u * nv] = in->pos[3u * v];
     p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
     p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
-    subd_loop_classify(in, v, &c);
-    p->vflag[nv] = (uint8_t)((c.regular ? TOPO_PF_REGULAR : 0u) | ((in->vert_tag[v] & SUBD_VTAG_CORNER) ? TOPO_PF_CORNER : 0u));
+    /* the regular bit is set by subd_lp_build_control where a sharp edge reads it */
+    p->vflag[nv] = (uint8_t)((in->vert_tag[v] & SUBD_VTAG_CORNER) ? TOPO_PF_CORNER : 0u);
     p->vout[nv] = LP_TW_NONE;
     p->h->nv = nv + 1u;
     return (uint16_t)nv;
@@ -111,6 +110,18 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
                 p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)LP_TW_BORDER;
             }
         }
+    /* A vertex's regular bit (its whole ring, subd_loop_classify on the input) is read only
+     * by the sharp-edge rule of an edge at it, and a regular vertex has sharp edges: so only
+     * the ends of the patch's sharp edges are classified (the walk is most of a control
+     * patch's cost on a mesh without creases). */
+    for (lf = 0; lf < 3u * nf; lf++)
+        if (p->sh[lf] != 0u)
+            for (j = 0; j < 2u; j++) {
+                uint32_t u = p->cv[j ? tri_next(lf) : lf];
+                loop_vinfo c;
+                subd_loop_classify(in, p->cvert[u], &c);
+                if (c.regular) p->vflag[u] = (uint8_t)(p->vflag[u] | TOPO_PF_REGULAR);
+            }
     for (j = 0; j < 3u; j++) { /* the input's vert_out, as loop.c's first level walks it */
         uint32_t h = in->vert_out[in->corner_vert[3u * f + j]];
         p->vout[j] = (uint16_t)(3u * find_face(p, nf, h / 3u) + h % 3u);

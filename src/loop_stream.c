@@ -17,6 +17,11 @@
  * stencils are read off L-2's topology without building the four level L-1 patches); one
  * level in all emits from level 0 (emit_children); limit mode goes down to level L and moves
  * the centre's corners to the limit with loop_limit.c's masks (emit_limit).
+ * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, at most L; not in
+ * limit mode) a patch whose centre has three smooth valence-6 corners is not refined depth
+ * first: its last t levels are made breadth first on a triangular grid, each vertex once, and
+ * its 4^t triangles go out quarter by quarter in the same order (tile_emit, resumable when
+ * the caller's buffer is full). Other patches take the general path below.
  *
  * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
  * in the same order. loop.c sums a vertex's ring from vert_out (the boundary half-edge, else
@@ -49,6 +54,7 @@
 #include "layout.h"
 #include "loop_internal.h"
 #include "loop_patch.h"
+#include "loop_tile.h"
 #include "mesh_internal.h"
 #include "stream_internal.h"
 
@@ -58,6 +64,13 @@
  * at each visit of the depth-first walk (several times per emitted batch), so the offsets
  * are computed once. It is the same idea as a carving walk: one function (level_layout)
  * computes every offset, and plan and run both get them from stream_layout. */
+/* The arrays of limit mode's subd_mesh view of level L (the rest of the mesh is filled at
+ * each use; only the arrays live in the run state). */
+typedef struct sp_view {
+    uint32_t *face_start, *corner_vert, *corner_face, *twin, *vert_out;
+    uint8_t *vert_tag, *edge_tag;
+} sp_view;
+
 typedef struct sp_layout {
     uint32_t n;         /* the largest valence, at least 6                                */
     uint32_t off0[A_N]; /* level 0's arrays, inside lev0                                   */
@@ -65,15 +78,24 @@ typedef struct sp_layout {
     sp_head *head;      /* L + 1 level headers                                             */
     uint8_t *lev0;      /* level 0's block                                                 */
     uint8_t *lev1;      /* levels 1, 2, ...: blocks of size1 bytes, one after the other     */
-    subd_mesh view;     /* limit mode: level L's patch as a subd_mesh (arrays only) for
+    sp_view view;       /* limit mode: level L's patch as a subd_mesh (arrays only) for
                          * loop_limit.c's masks                                             */
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
+    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2      */
+    uint32_t tdepth;       /* levels a tile refines: min(SUBD_LOOP_TILE_LEVELS, L); 0: none */
     uint32_t size1, total;
 } sp_layout;
 
+/* Levels of a tile: SUBD_LOOP_TILE_LEVELS, at most L; none below 2 and in limit mode. */
+static uint32_t tile_depth(uint32_t levels, int limit)
+{
+    uint32_t t = levels < (uint32_t)SUBD_LOOP_TILE_LEVELS ? levels : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+    return (limit || t < 2u) ? 0u : t;
+}
+
 /* The limit mode's mesh view of a level with corner valence sum s (SUBD_LOOP_SVIEW_ is
  * the same sum): 32-bit arrays, as subd_mesh has them. */
-static void view_layout(subd_layout *y, uint32_t s, subd_mesh *w)
+static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 {
     uint32_t nv = cap_v(s), nf = cap_f(s);
     w->face_start = subd_layout_take(y, nf + 1u, 4u);
@@ -109,6 +131,8 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
     l->smap = subd_layout_take(&y, s0, 2u);
     l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
+    l->tdepth = tile_depth(levels, limit);
+    l->tile = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_layout(l->tdepth, 0)) : 0;
     return subd_layout_end(&y, &l->total);
 }
 
@@ -400,8 +424,15 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
 {
     const sp_head *ph = p->h;
     uint32_t nf = ph->nf, nv = ph->nv, c, v, j;
-    subd_mesh m = lay->view;
+    subd_mesh m;
     subd_tri t;
+    m.face_start = lay->view.face_start;
+    m.corner_vert = lay->view.corner_vert;
+    m.corner_face = lay->view.corner_face;
+    m.twin = lay->view.twin;
+    m.vert_out = lay->view.vert_out;
+    m.vert_tag = lay->view.vert_tag;
+    m.edge_tag = lay->view.edge_tag;
     m.num_verts = nv;
     m.num_faces = nf;
     m.num_corners = 3u * nf;
@@ -449,6 +480,9 @@ typedef struct sp_state {
     subd_loop_opts o;
     loop_wcache wc;
     uint32_t k, depth, ovf, started, limit;
+    /* the regular tile: at level tk; ton while its triangles go out: quarter tq, its
+     * triangle tj, tready once the quarter's positions and ids are made */
+    uint32_t tk, ton, tq, tj, tready;
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 
@@ -472,8 +506,141 @@ static uint32_t stream_total(const sp_layout *l, uint32_t levels, int limit)
     return b;
 }
 
+/* Up one level from the current one, or on to the next control face. */
+static void sp_up(sp_state *s)
+{
+    if (s->k == 0u) {
+        s->started = 0;
+        s->run.f++;
+    } else {
+        s->k--;
+    }
+}
+
+/* Level s->k (p) was just built: a regular tile from here when this is the tile's level and
+ * p is regular; else its cache (a level above the emitting one caches everything its
+ * children's 1-rings need; the emitting level only its centre's six values; limit mode's
+ * level L none). */
+static void sp_enter(sp_state *s, const sp_level *p)
+{
+    const subd_loop_opts *o = &s->o;
+    if (s->lay.tdepth && s->k == s->tk) {
+        lt_tile tl;
+        subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth);
+        if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
+            s->ton = 1;
+            s->tq = s->tj = s->tready = 0;
+            return;
+        }
+    }
+    if (s->k < s->depth || !s->limit)
+        subd_lp_fill_cache(p, o->boundary, s->k < s->depth || o->levels >= 2u, &s->wc, &s->ovf);
+}
+
+/* The ids of the current quarter's vertices: lattice points of the control face, from the
+ * tile face's corners (level tk's header) and the quarter's frame; a point inside the control
+ * face by vertex_id's closed form at once, the others by vertex_id. */
+static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
+{
+    sp_level p;
+    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, lv = s->o.levels, n1 = (uint32_t)1 << lv;
+    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
+    const subd_mesh *in = s->run.in;
+    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                                   (uint64_t)s->run.f * (nm1 * (nm1 - 1u) / 2u);
+    level_at(&s->lay, s->tk, &p);
+    a0 = (int32_t)p.h->ca[0];
+    b0 = (int32_t)p.h->cb[0];
+    ea = ((int32_t)p.h->ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
+    eb = ((int32_t)p.h->cb[1] - b0) / n;
+    fa = ((int32_t)p.h->ca[2] - a0) / n;
+    fb = ((int32_t)p.h->cb[2] - b0) / n;
+    for (y = 0; y <= m; y++)
+        for (x = 0; x + y <= m; x++, k++) {
+            int32_t gx = org[0] + (int32_t)x * e1[0] + (int32_t)y * e2[0];
+            int32_t gy = org[1] + (int32_t)x * e1[1] + (int32_t)y * e2[1];
+            uint32_t a = (uint32_t)(a0 + gx * ea + gy * fa), b = (uint32_t)(b0 + gx * eb + gy * fb);
+            uint64_t id;
+            if (a >= 1u && b >= 1u && a + b < n1) { /* vertex_id's face interior */
+                uint32_t am = a - 1u;
+                id = base + (uint64_t)am * nm1 - (uint64_t)am * (am + 1u) / 2u + (b - 1u);
+            } else {
+                id = vertex_id(in, s->run.f, a, b, lv);
+            }
+            tl->qid[2u * k] = (uint32_t)id;
+            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
+        }
+}
+
+/* The tile's triangles, quarter by quarter, each quarter's in subd_loop's order (its table);
+ * stops when the caller's buffer is full (ton stays set: the next step goes on here).
+ * Push form: the sink gets the one item each time (const), so the fields that do not change
+ * within the call (face, level, zero normals) are written once and each triangle writes its
+ * positions and ids. Returns 0, SUBD_ERR_RANGE or the sink's value. */
+SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
+{
+    lt_tile tl;
+    uint32_t n, tj, j, k;
+    int st;
+    subd_tri *one = (subd_tri *)(void *)q->one;
+    subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth);
+    n = 1u << (2u * (tl.depth - 1u));
+    if (s->ovf) return SUBD_ERR_RANGE;
+    if (one) {
+        one->face = s->run.f;
+        one->level = s->o.levels;
+        for (j = 0; j < 3u; j++)
+            for (k = 0; k < 3u; k++) one->normal[j][k] = 0;
+    }
+    while (s->tq < 4u) {
+        if (!s->tready) {
+            int32_t org[2], e1[2], e2[2];
+            subd_lt_quarter(&tl, s->tq, &s->wc, &s->ovf, org, e1, e2);
+            if (s->ovf) return SUBD_ERR_RANGE;
+            tile_ids(s, &tl, org, e1, e2);
+            s->tready = 1;
+            s->tj = 0;
+        }
+        for (tj = s->tj; tj < n; tj++) {
+            const uint8_t *ix = tl.tab + 3u * tj;
+            const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];
+            const uint32_t *i0 = tl.qid + 2u * ix[0], *i1 = tl.qid + 2u * ix[1], *i2 = tl.qid + 2u * ix[2];
+            subd_real p00 = x0[0], p01 = x0[1], p02 = x0[2], p10 = x1[0], p11 = x1[1], p12 = x1[2];
+            subd_real p20 = x2[0], p21 = x2[1], p22 = x2[2];
+            uint64_t d0 = (uint64_t)i0[0] | ((uint64_t)i0[1] << 32), d1 = (uint64_t)i1[0] | ((uint64_t)i1[1] << 32);
+            uint64_t d2 = (uint64_t)i2[0] | ((uint64_t)i2[1] << 32);
+            subd_tri *t;
+            if (one) {
+                if (q->stop) break;
+                t = one;
+            } else {
+                if (q->n >= q->max) break; /* the caller's buffer is full */
+                t = out_tri(&s->run);
+                for (j = 0; j < 3u; j++)
+                    for (k = 0; k < 3u; k++) t->normal[j][k] = 0;
+            }
+            t->pos[0][0] = p00; t->pos[0][1] = p01; t->pos[0][2] = p02;
+            t->pos[1][0] = p10; t->pos[1][1] = p11; t->pos[1][2] = p12;
+            t->pos[2][0] = p20; t->pos[2][1] = p21; t->pos[2][2] = p22;
+            t->id[0] = d0;
+            t->id[1] = d1;
+            t->id[2] = d2;
+            if ((st = subd_stream_q_commit(q)) != 0) {
+                s->tj = tj + 1u;
+                return st;
+            }
+        }
+        s->tj = tj;
+        if (tj < n) return 0;
+        s->tq++;
+        s->tready = 0;
+    }
+    s->ton = 0;
+    return 0;
+}
+
 /* One batch: walks on from where the last step stopped to the next emitting visit and emits
- * there; q->ended after the last face. */
+ * there (a tile: as much of it as the caller takes); q->ended after the last face. */
 static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
 {
     sp_state *s = (sp_state *)state;
@@ -483,6 +650,15 @@ static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
     int st;
     s->run.q = q;
     for (;;) {
+        if (s->ton) {
+            if ((st = tile_emit(s, q)) != 0) {
+                d->face = s->run.f;
+                return st;
+            }
+            if (s->ton) return SUBD_OK; /* the caller's buffer is full */
+            sp_up(s);
+            return SUBD_OK;
+        }
         if (!s->started) {
             if (s->run.f >= in->num_faces) {
                 q->ended = 1;
@@ -490,11 +666,10 @@ static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
             }
             level_at(&s->lay, 0, &p);
             subd_lp_build_control(in, s->run.f, &p, o->levels);
-            /* a level above the emitting one caches everything its children's 1-rings need;
-             * the emitting level only its centre's six values (limit mode: none) */
-            subd_lp_fill_cache(&p, o->boundary, s->depth > 0u || o->levels >= 2u, &s->wc, &s->ovf);
             s->k = 0;
             s->started = 1;
+            sp_enter(s, &p);
+            continue;
         }
         if (s->ovf) {
             d->face = s->run.f;
@@ -514,18 +689,12 @@ static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
             uint32_t c = p.h->child++;
             level_at(&s->lay, s->k + 1u, &qv);
             subd_lp_extract_child(&p, &qv, c, s->lay.smap, s->lay.fmap);
-            if (s->k + 1u < s->depth || !s->limit)
-                subd_lp_fill_cache(&qv, o->boundary, s->k + 1u < s->depth || o->levels >= 2u, &s->wc, &s->ovf);
             s->k++;
+            sp_enter(s, &qv);
             continue;
         }
         /* this level is done: up one, or on to the next control face */
-        if (s->k == 0u) {
-            s->started = 0;
-            s->run.f++;
-        } else {
-            s->k--;
-        }
+        sp_up(s);
         if (st) return SUBD_OK;
     }
 }
@@ -567,6 +736,14 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->k = 0;
     s->ovf = 0;
     s->started = 0;
+    s->ton = 0;
+    /* the tile's level: L - its depth (loop_tile.h); its emission table, once */
+    s->tk = o->levels - lay.tdepth;
+    if (lay.tdepth) {
+        lt_tile tl;
+        subd_lt_carve(&tl, lay.tile, lay.tdepth);
+        subd_lt_table(&tl);
+    }
     s->impl.step = sp_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;

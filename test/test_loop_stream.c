@@ -9,6 +9,7 @@
  * emitted; a sink that stops after k triangles gets k and its status back. */
 #include "harness.h"
 #include "corpus.h"
+#include "../src/loop_tile.h"
 
 /* A tetrahedron (valence 3) and a cube of triangles (valence 4 and 5) as OBJ text. */
 static const char tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
@@ -279,7 +280,8 @@ static void stream_plan(void)
         o.flags = SUBD_LOOP_STREAM_LIMIT;
         CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2, 0), &d0);
         CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES_LIMIT(l, 6));
-        CHECK(p2 > p1);
+        /* limit mode keeps level L-1 and L and a mesh view, but has no regular tile */
+        CHECK(SUBD_LOOP_TILE_LEVELS == 0 || l < 2u ? p2 > p1 : p2 != p1);
         o.flags = 0;
         CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2, 0), &d0);
         CHECK_EQ(p2, p1);
@@ -464,6 +466,180 @@ static void stream_range(void)
     else CHECK_EQ(count, 4u * in.num_faces);
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* Regular tiles (src/loop_tile.c) meeting irregular patches                              */
+
+/* An n x n grid of quads split along one diagonal (interior valence 6, a boundary), with
+ * heights that vary (exact in both arithmetics); `flip`: the middle quad split along the
+ * other diagonal (two valence-5 and two valence-7 vertices next to regular regions);
+ * `crease`: the horizontal edges of row n/2 tagged crease (a crease across a regular
+ * region, ending at the boundary). */
+static int make_grid(subd_arena *a, uint32_t n, int flip, int crease, subd_mesh *m)
+{
+    static uint32_t idx[6u * 8u * 8u];
+    static subd_real pos[3u * 9u * 9u];
+    subd_face_list fl = {0, 0, 0, 0, idx, 0, 0, 0};
+    uint32_t i, j, k = 0, h;
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++) {
+            uint32_t v = j * (n + 1u) + i;
+            pos[3u * v] = SUBD_REAL_FRAC((int32_t)i, 1);
+            pos[3u * v + 1u] = SUBD_REAL_FRAC((int32_t)j, 1);
+            pos[3u * v + 2u] = SUBD_REAL_FRAC((int32_t)((i * 7u + j * 3u) % 5u), 4);
+        }
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            uint32_t va = j * (n + 1u) + i, vb = va + 1u, vc = va + n + 2u, vd = va + n + 1u;
+            if (flip && i == n / 2u && j == n / 2u) {
+                idx[k++] = va; idx[k++] = vb; idx[k++] = vd;
+                idx[k++] = vb; idx[k++] = vc; idx[k++] = vd;
+            } else {
+                idx[k++] = va; idx[k++] = vb; idx[k++] = vc;
+                idx[k++] = va; idx[k++] = vc; idx[k++] = vd;
+            }
+        }
+    fl.num_verts = (n + 1u) * (n + 1u);
+    fl.pos = pos;
+    fl.num_faces = 2u * n * n;
+    if (!h_build(a, &fl, m)) return 0;
+    if (crease)
+        for (h = 0; h < m->num_corners; h++) {
+            uint32_t u = m->corner_vert[h], w = m->corner_vert[h % 3u == 2u ? h - 2u : h + 1u];
+            if (u / (n + 1u) == n / 2u && w / (n + 1u) == n / 2u) subd_edge_tag_set(m, h, SUBD_ETAG_CREASE);
+        }
+    return 1;
+}
+
+/* Brute force: control face f can start a tile (loop_tile.c's "regular"): each corner in
+ * exactly six faces, every half-edge from it with a twin and no crease on either half, no
+ * CORNER tag; and the faces that touch f are 13 with 12 vertices in all. */
+static int brute_regular(const subd_mesh *m, uint32_t f)
+{
+    uint32_t c, g, h, k, nf = 0, nv = 0, vs[64];
+    for (c = 0; c < 3u; c++) {
+        uint32_t v = m->corner_vert[3u * f + c], deg = 0;
+        if (m->vert_tag[v] & SUBD_VTAG_CORNER) return 0;
+        for (h = 0; h < m->num_corners; h++) {
+            if (m->corner_vert[h] != v) continue;
+            deg++;
+            if (m->twin[h] == SUBD_NONE || m->twin[h % 3u == 0u ? h + 2u : h - 1u] == SUBD_NONE) return 0;
+            if ((m->edge_tag[h] | m->edge_tag[m->twin[h]]) & SUBD_ETAG_CREASE) return 0;
+        }
+        if (deg != 6u) return 0;
+    }
+    for (g = 0; g < m->num_faces; g++) {
+        int touch = 0;
+        for (c = 0; c < 3u; c++)
+            for (k = 0; k < 3u; k++)
+                if (m->corner_vert[3u * g + c] == m->corner_vert[3u * f + k]) touch = 1;
+        if (!touch) continue;
+        nf++;
+        for (c = 0; c < 3u; c++) {
+            uint32_t v = m->corner_vert[3u * g + c], seen = 0;
+            for (k = 0; k < nv; k++)
+                if (vs[k] == v) seen = 1;
+            if (!seen && nv < 64u) vs[nv++] = v;
+        }
+    }
+    return nf == 13u && nv == 12u;
+}
+
+/* subd_lt_start on every control face's patch agrees with brute_regular; returns the number
+ * of regular faces. */
+static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
+{
+    uint32_t off[A_N], bytes = subd_lp_level_layout(3u * 16u, 0, 1, off), f, n = 0, mark = subd_arena_mark(a);
+    uint8_t *blk = (uint8_t *)subd_arena_alloc(a, bytes), *tb = (uint8_t *)subd_arena_alloc(a, subd_lt_layout(4u, 0));
+    sp_head head;
+    sp_level p;
+    lt_tile tl;
+    loop_wcache wc;
+    uint32_t ovf = 0;
+    if (!CHECK(blk != 0 && tb != 0)) return 0;
+    wc.have = 0;
+    p.h = &head;
+    p.pos = (subd_real *)(void *)(blk + off[A_POS]);
+    p.vflag = blk + off[A_VFLAG];
+    p.vout = (uint16_t *)(void *)(blk + off[A_VOUT]);
+    p.cv = (uint16_t *)(void *)(blk + off[A_CV]);
+    p.tw = (uint16_t *)(void *)(blk + off[A_TW]);
+    p.slot = (uint16_t *)(void *)(blk + off[A_SLOT]);
+    p.sh = blk + off[A_SH];
+    p.cpos = 0;
+    p.cflag = 0;
+    p.cface = (uint32_t *)(void *)(blk + off[A_CFACE]);
+    p.cvert = (uint32_t *)(void *)(blk + off[A_CVERT]);
+    subd_lt_carve(&tl, tb, 4u);
+    for (f = 0; f < m->num_faces; f++) {
+        int r;
+        subd_lp_build_control(m, f, &p, 4u);
+        r = subd_lt_start(&tl, &p, &wc, &ovf);
+        CHECK_EQ(r, brute_regular(m, f));
+        n += (uint32_t)r;
+    }
+    CHECK_EQ(ovf, 0);
+    subd_arena_rewind(a, mark);
+    return n;
+}
+
+/* Tiles next to a valence-5 and a valence-7 vertex, across a crease, along a boundary, and
+ * (host) at level 6: the stream equals subd_loop bit for bit, both rules; the tile test
+ * agrees with the brute-force one and finds both kinds of patch. Levels 2-3 (tiles of 2 and
+ * 3 levels at level 0) also on the device, with a hash; 4-5 (tiles at levels 0 and 1) and
+ * level 6 (tiles at level 2; the icosahedron's next to its valence-5 vertices) on the host;
+ * the torus is regular everywhere (every control face starts a tile at level 4). */
+static void stream_tiles(void)
+{
+    uint32_t hash = 2166136261u, id, levels, nreg;
+    g_streams = g_skipped = 0;
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        nreg = count_tiles(&a, &in);
+        CHECK(nreg > 0u && nreg < in.num_faces);
+        for (levels = 2; levels <= 3u; levels++) {
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &hash);
+        }
+    }
+    h_hash("stream_tiles", hash);
+#if H_HOST
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        for (levels = 4; levels <= 5u; levels++) {
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &hash);
+        }
+        compare_one(&a, &in, 6, id ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+    }
+    {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_shape(S_ICO, &a, &in)) return;
+        compare_one(&a, &in, 6, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_shape(S_TORUS, &a, &in)) return;
+        CHECK_EQ(count_tiles(&a, &in), in.num_faces); /* valence 6 everywhere */
+        compare_one(&a, &in, 4, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+    }
+    CHECK_EQ(g_skipped, 0);
+    CHECK_EQ(g_streams, 8u + 2u * 5u + 2u);
+#else
+    CHECK_EQ(g_streams + g_skipped, 8u);
+#endif
+    h_str("  tile streams compared ");
+    h_u32(g_streams);
+    h_str(", skipped ");
+    h_u32(g_skipped);
+    h_nl();
+}
+
 const test_case suite_loop_stream[] = {
     {"stream_equals_loop", stream_equals_loop},
     {"stream_hashes", stream_hashes},
@@ -472,5 +648,6 @@ const test_case suite_loop_stream[] = {
     {"stream_sink_stop", stream_sink_stop},
     {"stream_errors", stream_errors},
     {"stream_range", stream_range},
+    {"stream_tiles", stream_tiles},
     {0, 0},
 };

@@ -1,0 +1,59 @@
+/* SPDX-License-Identifier: MIT */
+/* Private interface of streaming Loop's regular tiles (loop_tile.c): where the 1-ring patch of
+ * a face is regular (its three corners smooth, valence 6, interior, no sharp edge), the last
+ * levels are refined breadth first on a triangular grid (index arithmetic, no topology), each
+ * vertex once, bit-identical to subd_loop (the ring starts and the lower sides of subd_loop's
+ * levels are carried into the grid: see loop_tile.c). loop_stream.c decides where a tile
+ * starts, holds its memory in the stream's layout and emits its triangles. */
+#ifndef SUBD_LOOP_TILE_H
+#define SUBD_LOOP_TILE_H
+#include "loop_patch.h"
+
+/* Grid of level t of a tile: the 1-ring of the tile's face refined t times, a triangle of side
+ * 2^t + 3 (less its three corners) in lattice coordinates (i, j), i + j <= side, vertex
+ * (i, j) at row start(j) + i. Up triangle U(i, j) = (i, j), (i+1, j), (i, j+1); down triangle
+ * D(i, j) = (i+1, j), (i+1, j+1), (i, j+1); both are indexed like vertex (i, j). */
+typedef struct lt_grid {
+    subd_real *pos; /* 3 per vertex                                                         */
+    uint8_t *dir;   /* ring start of each vertex: lattice direction 0..5 of its vert_out     */
+    uint8_t *rot;   /* 2 per index: U's and D's rotation (which lattice corner is corner 0)  */
+    uint8_t *low;   /* per U: bit d set when U's half-edge d is its edge's lower half-edge   */
+} lt_grid;
+
+/* A tile of depth t (2 <= t <= SUBD_LOOP_TILE_LEVELS): levels 0..t-1 in two grids used in
+ * turn, then the last level one quarter (a child of the tile's face at level t - 1) at a time:
+ * its positions (qpos, reusing a grid's positions), its ids (qid, 2 words each) and the
+ * emission order of its triangles (tab: 3 quarter-vertex indices per triangle, subd_loop's
+ * depth-first order; filled once per stream by subd_lt_table). */
+typedef struct lt_tile {
+    lt_grid g[2];
+    subd_real *qpos;
+    uint32_t *qid;
+    uint8_t *tab;
+    uint32_t depth;
+} lt_tile;
+
+enum { LT_APOS, LT_ADIR, LT_AROT, LT_ALOW, LT_BPOS, LT_BDIR, LT_BROT, LT_BLOW, LT_QID, LT_TAB, LT_N };
+
+/* Vertices of a triangular grid of side s. */
+static inline uint32_t lt_count(uint32_t s) { return (s + 1u) * (s + 2u) / 2u; }
+/* Vertex (i, j) of a grid of side s. */
+static inline uint32_t lt_vi(uint32_t s, uint32_t i, uint32_t j) { return j * (2u * s + 3u - j) / 2u + i; }
+
+/* The arrays of a tile of depth t as offsets in its block (off may be NULL; returns its
+ * bytes). The SUBD_LOOP_TILE_BYTES_ sum in subd_loop.h is the same. */
+uint32_t subd_lt_layout(uint32_t t, uint32_t off[LT_N]);
+/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets). */
+void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t);
+/* Fills the emission table of a quarter (4^(t-1) triangles). */
+void subd_lt_table(const lt_tile *tl);
+/* Level 0 of a tile from patch p (its centre's 1-ring): 1 when p is regular (then levels
+ * 1..t-1 are refined too), 0 when it is not (nothing useful is written). */
+int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf);
+/* The last level's positions of quarter c (0..3: child c of the tile's face at level t - 1,
+ * subd_loop's child order) into qpos, in the quarter's own frame (corner k of the child at
+ * lattice corner k of the quarter grid); *org, *e1, *e2: its frame in the tile's last level
+ * (grid coordinates relative to the tile face's corner 0), for the ids. */
+void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
+                     int32_t e2[2]);
+#endif

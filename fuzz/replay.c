@@ -2,7 +2,7 @@
 /* Corpus replay for make test: feeds every file of fuzz/corpus/<target>/ to the same entry
  * function libFuzzer calls (fuzz_obj.c, fuzz_off.c, fuzz_stl.c, fuzz_ply.c, fuzz_schemes.c, compiled here with
  * -DFUZZ_ENTRY=fz_<target>_entry), so CI runs the fuzz checks with gcc and ASan+UBSan and
- * needs no clang. A violated check aborts (run_suite.sh counts that as a failure), after
+ * needs no clang. A violated check aborts (test/scripts/run_suite.sh counts that as a failure), after
  * this program has printed which file it was running.
  * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes) */
 #define _POSIX_C_SOURCE 200809L

@@ -137,7 +137,7 @@ endef
 $(foreach v,m4f-float m3-fixed,$(eval $(call cm_variant,$(v))))
 
 # m4f-gnu: the M4F library as an integrator might build it (-std=gnu11 -O2, no
-# -ffp-contract=off); test/contract_proofs.sh requires zero fused multiply-adds in it.
+# -ffp-contract=off); test/scripts/contract_proofs.sh requires zero fused multiply-adds in it.
 $(B)/m4f-gnu/src/%.o: src/%.c $(MK) | dirs
 	$(CM_CC) $(ARCH_m4f-float) $(GNU_WARN) $(SRC_WARN) -O2 -DSUBD_FIXED=0 $(INC) $(DEP) -c $< -o $@
 $(B)/m4f-gnu/libsubd.a: $(SRC:%.c=$(B)/m4f-gnu/%.o)
@@ -177,7 +177,7 @@ dirs:
 # include path: it needs only tinysubd.h beside it): with the host-float / host-fixed flags and
 # sanitizers, linked with those variants' test objects (the same tests, the same hashes), and
 # with the Cortex-M flags (-Werror, -Wstack-usage) for the link proofs; m4f-gnu as an
-# integrator might build it, for the no-fused-multiply-add proof (test/amalgamate_test.sh).
+# integrator might build it, for the no-fused-multiply-add proof (test/scripts/amalgamate_test.sh).
 AMALG := dist/tinysubd.c dist/tinysubd.h
 $(AMALG) &: tools/amalgamate.sh $(SRC) $(wildcard src/*.h include/*.h)
 	tools/amalgamate.sh dist
@@ -234,9 +234,9 @@ test: deps
 test-host:
 	@$(MAKE) --no-print-directory $(B)/host-float/test.elf $(B)/host-fixed/test.elf
 	@rm -rf $(L) && mkdir -p $(L)
-	@test/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf
-	@test/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
-	@test/summary.sh $(L)/*.log
+	@test/scripts/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf
+	@test/scripts/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
+	@test/scripts/summary.sh $(L)/*.log
 
 test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/test-fail.elf \
             m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool \
@@ -244,43 +244,43 @@ test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/te
 
 test-run:
 	@rm -rf $(L) && mkdir -p $(L)
-	@test/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf & \
-	 test/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
-	@test/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf $(QEMU_TIMEOUT) & \
-	 test/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf $(QEMU_TIMEOUT) & wait
-	@test/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
-	@test/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
+	@test/scripts/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf & \
+	 test/scripts/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
+	@test/scripts/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf $(QEMU_TIMEOUT) & \
+	 test/scripts/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf $(QEMU_TIMEOUT) & wait
+	@test/scripts/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/scripts/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
+	@test/scripts/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/scripts/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
 	@if $(GNU_RUNS); then \
-	    test/run_suite.sh "host-gnu tests (gnu11 -O2 $(GNU_MARCH))" $(L)/host-gnu.log $(B)/host-gnu/test.elf; \
-	    test/run_suite.sh "hashes host-float = host-gnu" $(L)/hash-gnu.log test/compare_hashes.sh \
+	    test/scripts/run_suite.sh "host-gnu tests (gnu11 -O2 $(GNU_MARCH))" $(L)/host-gnu.log $(B)/host-gnu/test.elf; \
+	    test/scripts/run_suite.sh "hashes host-float = host-gnu" $(L)/hash-gnu.log test/scripts/compare_hashes.sh \
 	        $(L)/host-float.log $(L)/host-gnu.log float32; \
 	else echo "== host-gnu tests: skipped (this CPU cannot run $(GNU_MARCH) code: no AVX2/FMA)"; fi
-	@test/run_suite.sh "contraction proofs (gnu11 builds)" $(L)/contract.log test/contract_proofs.sh \
+	@test/scripts/run_suite.sh "contraction proofs (gnu11 builds)" $(L)/contract.log test/scripts/contract_proofs.sh \
 	    $(CM_OBJDUMP) $(B)/m4f-gnu/libsubd.a $(B)/host-gnu/src
-	@test/run_suite.sh "link proofs m4f-float" $(L)/link-m4f.log test/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
-	@test/run_suite.sh "link proofs m3-fixed" $(L)/link-m3.log test/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
-	@test/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/harness_selftest.sh mps2-an386 $(B)/m4f-float & \
-	 test/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/harness_selftest.sh mps2-an385 $(B)/m3-fixed & wait
-	@test/run_suite.sh "subd tool" $(L)/tool.log test/tool_test.sh $(B)/bin & \
-	 test/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/cpp_test.sh $(B) & wait
-	@test/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS) & \
-	 test/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS) & wait
-	@test/run_suite.sh "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/cmake_test.sh $(B)
-	@test/run_suite.sh "amalgamation host-float tests" $(L)/amalg-float.log $(B)/amalg-float/test.elf & \
-	 test/run_suite.sh "amalgamation host-fixed tests" $(L)/amalg-fixed.log $(B)/amalg-fixed/test.elf & wait
-	@test/run_suite.sh "hashes host-float = amalgamation" $(L)/hash-amalg-float.log test/compare_hashes.sh \
+	@test/scripts/run_suite.sh "link proofs m4f-float" $(L)/link-m4f.log test/scripts/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
+	@test/scripts/run_suite.sh "link proofs m3-fixed" $(L)/link-m3.log test/scripts/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
+	@test/scripts/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/scripts/harness_selftest.sh mps2-an386 $(B)/m4f-float & \
+	 test/scripts/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/scripts/harness_selftest.sh mps2-an385 $(B)/m3-fixed & wait
+	@test/scripts/run_suite.sh "subd tool" $(L)/tool.log test/scripts/tool_test.sh $(B)/bin & \
+	 test/scripts/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/scripts/cpp_test.sh $(B) & wait
+	@test/scripts/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS) & \
+	 test/scripts/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS) & wait
+	@test/scripts/run_suite.sh "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/scripts/cmake_test.sh $(B)
+	@test/scripts/run_suite.sh "amalgamation host-float tests" $(L)/amalg-float.log $(B)/amalg-float/test.elf & \
+	 test/scripts/run_suite.sh "amalgamation host-fixed tests" $(L)/amalg-fixed.log $(B)/amalg-fixed/test.elf & wait
+	@test/scripts/run_suite.sh "hashes host-float = amalgamation" $(L)/hash-amalg-float.log test/scripts/compare_hashes.sh \
 	    $(L)/host-float.log $(L)/amalg-float.log float32
-	@test/run_suite.sh "hashes host-fixed = amalgamation" $(L)/hash-amalg-fixed.log test/compare_hashes.sh \
+	@test/scripts/run_suite.sh "hashes host-fixed = amalgamation" $(L)/hash-amalg-fixed.log test/scripts/compare_hashes.sh \
 	    $(L)/host-fixed.log $(L)/amalg-fixed.log q16.16
-	@test/run_suite.sh "link proofs amalgamation m4f-float" $(L)/link-amalg-m4f.log test/link_proofs.sh $(CM_NM) \
+	@test/scripts/run_suite.sh "link proofs amalgamation m4f-float" $(L)/link-amalg-m4f.log test/scripts/link_proofs.sh $(CM_NM) \
 	    $(B)/amalg-m4f-float/libtinysubd.a m4f-float
-	@test/run_suite.sh "link proofs amalgamation m3-fixed" $(L)/link-amalg-m3.log test/link_proofs.sh $(CM_NM) \
+	@test/scripts/run_suite.sh "link proofs amalgamation m3-fixed" $(L)/link-amalg-m3.log test/scripts/link_proofs.sh $(CM_NM) \
 	    $(B)/amalg-m3-fixed/libtinysubd.a m3-fixed
-	@test/run_suite.sh "amalgamation (tools/amalgamate.sh)" $(L)/amalg.log test/amalgamate_test.sh \
+	@test/scripts/run_suite.sh "amalgamation (tools/amalgamate.sh)" $(L)/amalg.log test/scripts/amalgamate_test.sh \
 	    $(CM_OBJDUMP) $(B)/amalg-m4f-gnu/tinysubd.o
-	@test/run_suite.sh "header template (include/*.h)" $(L)/headers.log test/header_check.sh include
-	@test/run_suite.sh "SPDX license lines" $(L)/spdx.log test/spdx_check.sh .
-	@test/summary.sh $(L)/*.log
+	@test/scripts/run_suite.sh "header template (include/*.h)" $(L)/headers.log test/scripts/header_check.sh include
+	@test/scripts/run_suite.sh "SPDX license lines" $(L)/spdx.log test/scripts/spdx_check.sh .
+	@test/scripts/summary.sh $(L)/*.log
 
 # ------------------------------------------------------------------ fuzzing (make fuzz)
 # make fuzz [FUZZ_SECONDS=N]: libFuzzer targets (clang, ASan+UBSan, no recovery) for the OBJ
@@ -341,11 +341,11 @@ test-build: $(B)/host-float/fuzz-replay $(B)/host-fixed/fuzz-replay
 .PHONY: fuzz fuzz-build
 
 # ------------------------------------------------------------------ CMake integration
-# CMakeLists.txt, cmake/ and examples/ as a consumer uses them (test/cmake_test.sh): the example
+# CMakeLists.txt, cmake/ and examples/ as a consumer uses them (test/scripts/cmake_test.sh): the example
 # via add_subdirectory and via cmake --install + find_package, both arithmetics, and the library
 # cross-built for Cortex-M4F with cmake/arm-none-eabi.cmake. Build trees in $(B)/cmake.
 cmake-test: deps
-	@test/cmake_test.sh $(B)
+	@test/scripts/cmake_test.sh $(B)
 .PHONY: cmake-test
 
 # ------------------------------------------------------------------ make demo / bench

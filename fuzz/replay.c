@@ -3,7 +3,7 @@
  * function libFuzzer calls (fuzz_obj.c, fuzz_off.c, fuzz_stl.c, fuzz_ply.c, fuzz_schemes.c,
  * fuzz_sr48s.c, compiled here with
  * -DFUZZ_ENTRY=fz_<target>_entry), so CI runs the fuzz checks with gcc and ASan+UBSan and
- * needs no clang. A violated check aborts (run_suite.sh counts that as a failure), after
+ * needs no clang. A violated check aborts (test/scripts/run_suite.sh counts that as a failure), after
  * this program has printed which file it was running.
  * usage: replay TARGET DIR [TARGET DIR ...]   (TARGET: obj, off, stl, ply, schemes, ladapt, sr48s) */
 #define _POSIX_C_SOURCE 200809L

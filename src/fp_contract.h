@@ -7,7 +7,7 @@
  * -std=gnu11 means -ffp-contract=fast (only -std=c99/c11 or -ffp-contract=off do not), and
  * the library must not depend on the integrator passing either.
  *
- * This header is the first #include of every .c file in src/ (test/contract_proofs.sh checks), so the
+ * This header is the first #include of every .c file in src/ (test/scripts/contract_proofs.sh checks), so the
  * pragmas cover every function of the translation unit, subd_real.h's inline operations
  * included (contraction is decided per function after inlining, by the caller's setting):
  *   GCC:   #pragma GCC optimize("fp-contract=off"): each function defined after it is compiled

@@ -3,7 +3,7 @@
  * SUBD_ERR_ARITH when the arithmetic is made to differ at run time: rounding modes other than
  * to-nearest (fenv on the host, FPSCR.RMode on the Cortex-M4F) and flush-to-zero (MXCSR.FTZ
  * on x86, FPSCR.FZ on the Cortex-M4F). The compile-time half (contraction) is covered by the
- * host-gnu suite and test/contract_proofs.sh. */
+ * host-gnu suite and test/scripts/contract_proofs.sh. */
 #include "harness.h"
 
 #if H_HOST && !SUBD_FIXED

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Test helper of test/tool_test.sh (compiled there with cc): prints the corners of a
+/* Test helper of test/scripts/tool_test.sh (compiled there with cc): prints the corners of a
  * triangle file, one line per corner in face order, as the hex bits of float32 coordinates,
  * so outputs of different formats compare with cmp/sort:
  *   tri_dump FILE.stl   "x y z" per corner; checks the binary STL layout (size = 84 + 50 n,

@@ -3,7 +3,7 @@
 # Every source, header, script, build and linker file carries "SPDX-License-Identifier: MIT"
 # in its first three lines (issue 14). Data (meshes, corpora, pictures) and prose (*.md,
 # LICENSE) are not source. Lists the repository's files with git when it can, else find.
-# usage: test/spdx_check.sh [ROOT]
+# usage: test/scripts/spdx_check.sh [ROOT]
 cd "${1:-.}" || exit 1
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then list="git ls-files"; else list="find . -type f ! -path ./build/* ! -path ./dist/* ! -path ./.git/*"; fi
 n=0 bad=0

@@ -6,13 +6,13 @@
 # the option table behind --help, usage and I/O errors.
 # Needs only sh, coreutils, grep, sed, awk, od and a C compiler ($CC or cc, for test/tools/tri_dump.c). Prints one "ok - ..." / "not ok - ..." line per
 # check (details of a failure follow, indented) and ends with "N passed, M failed".
-# usage: test/tool_test.sh BIN_DIR      (BIN_DIR holds subd and subd-fixed)
+# usage: test/scripts/tool_test.sh BIN_DIR      (BIN_DIR holds subd and subd-fixed)
 if [ $# -ne 1 ]; then
     echo "usage: $0 BIN_DIR" >&2
     exit 2
 fi
 case $1 in /*) BIN=$1 ;; *) BIN=$(pwd)/$1 ;; esac
-cd "$(dirname "$0")/.." || exit 2 # repo root: messages name test/bad/FILE as given
+cd "$(dirname "$0")/../.." || exit 2 # repo root: messages name test/bad/FILE as given
 FLOAT=$BIN/subd
 FIXED=$BIN/subd-fixed
 T=$(mktemp -d "${TMPDIR:-/tmp}/subd_tool_test.XXXXXX") || exit 2

@@ -5,7 +5,7 @@
 # text has the sections "Memory:", "Errors:" and "Cost:" (a summary first; "Notes:" optional;
 # prototypes written one after another share the comment above the first), and no header
 # names a file outside the repository (papers are cited by authors, title and year).
-# usage: test/header_check.sh [include-dir]
+# usage: test/scripts/header_check.sh [include-dir]
 dir=${1:-include}
 fails=0
 for h in "$dir"/*.h; do

@@ -1,0 +1,46 @@
+/* SPDX-License-Identifier: MIT */
+/* What loop_limit.c (positions, public calls) and loop_limit_normal.c (normals) share,
+ * private: the vertex class type, the regularity of a neighbour, the per-call trig table of
+ * the tangent masks, and the normal of one vertex. No paper beyond loop_limit.c's header. */
+#ifndef SUBD_LOOP_LIMIT_INTERNAL_H
+#define SUBD_LOOP_LIMIT_INTERNAL_H
+#include "subd.h"
+#include "loop_internal.h"
+#include "loop_rules.h"
+
+/* Vertex classes: loop_rules.h (the one classification of loop.c, loop_limit.c and pia.c). */
+typedef loop_vinfo lim_vert;
+
+/* The class of neighbour v (regular or not, for the paper's curve rules): from its ring, or
+ * given by LOOP_VTAG_KNOWN (loop_stream.c's patch views, where v's ring may be cut). */
+static inline int lim_regular(const subd_mesh *m, uint32_t v)
+{
+    lim_vert c;
+    if (m->vert_tag[v] & LOOP_VTAG_KNOWN) return (m->vert_tag[v] & LOOP_VTAG_REGULAR) != 0u;
+    subd_loop_classify(m, v, &c);
+    return (int)c.regular;
+}
+
+/* Per-call table of the interior tangent weights subd_cos_turns(j, n), subd_sin_turns(j, n)
+ * for the common valences LIM_TRIG_LO..LIM_TRIG_HI, j = 0..n/2, each valence filled on its
+ * first use (the integer trig was most of the normals' time). The other half of the ring
+ * follows bit for bit from the exact range reduction of trig.c: cos((n-j)/n) == cos(j/n),
+ * sin((n-j)/n) == -sin(j/n) in Q62, and subd_real_from_q62 rounds the magnitude, so the
+ * negation commutes with it (sin is 0 only at j = 0 and n/2, which are stored). Lives in
+ * subd_loop_limit's frame: no global state, no arena memory. */
+#define LIM_TRIG_LO 4u
+#define LIM_TRIG_HI 8u
+#define LIM_TRIG_SLOTS 19u /* sum of (n/2 + 1) for n = LIM_TRIG_LO..LIM_TRIG_HI */
+
+typedef struct lim_trig {
+    uint32_t filled; /* bit n: valence n present */
+    subd_real c[LIM_TRIG_SLOTS], s[LIM_TRIG_SLOTS];
+} lim_trig;
+
+/* The unit limit normal of vertex v of class c (control points ctrl, rule b) into out[3];
+ * tab: the caller's trig table (filled = 0 before its first use in a call), or NULL.
+ * loop_limit_normal.c; loop_limit.c calls it by its former static name lim_normal. */
+void subd_loop_limit_normal(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
+                            const lim_vert *c, lim_trig *tab, subd_real *out);
+#define lim_normal subd_loop_limit_normal
+#endif

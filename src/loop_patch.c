@@ -545,8 +545,7 @@ uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t
 }
 
 /* Largest number of neighbours of a vertex of the input (a triangle mesh with adjacency):
- * outgoing half-edges, plus one on a boundary. O(corners). (loop_stream.c's max_valence is
- * the same walk.) */
+ * outgoing half-edges, plus one on a boundary. O(corners). */
 uint32_t subd_lp_max_valence(const subd_mesh *in)
 {
     uint32_t v, best = 0;

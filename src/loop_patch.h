@@ -82,9 +82,8 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
  * value) is scratch, fmap (4 per parent face) holds LP_NO_SLOT on entry and on return. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap);
 /* ------------------------------------------------------------------------------------ */
-/* Shared with the adaptive stream (loop_adapt.c): the limit mode's pieces, one home.       */
-/* (loop_stream.c keeps static copies written before these: view_layout, emit_limit's view, */
-/* vertex_id; they compute the same and can be replaced by these calls.)                   */
+/* The Loop streams' shared pieces (loop_stream.c, loop_adapt.c): limit mode's mesh view,   */
+/* the closed-form vertex ids, the input's largest valence.                                */
 
 struct subd_layout;
 /* The arrays of a subd_mesh view of a level with corner valence sum s (counted or carved by

@@ -93,18 +93,20 @@ static uint32_t tile_depth(uint32_t levels, int limit)
     return (limit || t < 2u) ? 0u : t;
 }
 
-/* The limit mode's mesh view of a level with corner valence sum s (SUBD_LOOP_SVIEW_ is
- * the same sum): 32-bit arrays, as subd_mesh has them. */
+/* The limit mode's mesh view of a level with corner valence sum s: loop_patch.c's layout of
+ * it (SUBD_LOOP_SVIEW_ is the same sum); only the arrays are kept in the run state (a whole
+ * subd_mesh would not fit SUBD_STREAM_STATE_BYTES). */
 static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 {
-    uint32_t nv = cap_v(s), nf = cap_f(s);
-    w->face_start = subd_layout_take(y, nf + 1u, 4u);
-    w->corner_vert = subd_layout_take(y, nf, 12u);
-    w->corner_face = subd_layout_take(y, nf, 12u);
-    w->twin = subd_layout_take(y, nf, 12u);
-    w->vert_out = subd_layout_take(y, nv, 4u);
-    w->vert_tag = subd_layout_take(y, nv, 1u);
-    w->edge_tag = subd_layout_take(y, nf, 3u);
+    subd_mesh v;
+    subd_lp_view_take(y, s, &v);
+    w->face_start = v.face_start;
+    w->corner_vert = v.corner_vert;
+    w->corner_face = v.corner_face;
+    w->twin = v.twin;
+    w->vert_out = v.vert_out;
+    w->vert_tag = v.vert_tag;
+    w->edge_tag = v.edge_tag;
 }
 
 /* The one layout (layout.h's walk: counts with a == NULL, carves otherwise;
@@ -158,35 +160,12 @@ static void level_at(const sp_layout *l, uint32_t k, sp_level *lv)
 /* Input                                                                                  */
 
 
-/* Largest number of neighbours of a vertex of the input (a triangle mesh with adjacency):
- * outgoing half-edges, plus one on a boundary. O(corners). */
-static uint32_t max_valence(const subd_mesh *in)
-{
-    uint32_t v, best = 0;
-    for (v = 0; v < in->num_verts; v++) {
-        uint32_t h0 = in->vert_out[v], h = h0, n = 0;
-        if (h0 == SUBD_NONE || h0 >= in->num_corners) continue;
-        for (;;) {
-            uint32_t t = in->twin[tri_prev(h)];
-            n++;
-            if (t == SUBD_NONE) {
-                n++;
-                break;
-            }
-            if (t == h0 || n > in->num_corners) break;
-            h = t;
-        }
-        if (n > best) best = n;
-    }
-    return best;
-}
-
 static int stream_check(const subd_mesh *in, const subd_loop_opts *o, sp_layout *l, subd_diag *d)
 {
     uint32_t n;
     int st = subd_loop_check(in, o, SUBD_LOOP_STREAM_LIMIT, d);
     if (st != SUBD_OK) return st;
-    n = max_valence(in);
+    n = subd_lp_max_valence(in);
     if (n > SUBD_LOOP_STREAM_MAX_VALENCE) return subd_fail(d, SUBD_ERR_TOO_BIG);
     return stream_layout(0, o->levels, n, (o->flags & SUBD_LOOP_STREAM_LIMIT) != 0u, l);
 }
@@ -206,32 +185,6 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
 
 /* ------------------------------------------------------------------------------------ */
 /* Ids and emission                                                                       */
-
-/* Global id of the lattice point (a, b) of input face f (see subd_loop.h). */
-static uint64_t vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels)
-{
-    uint64_t n1 = (uint64_t)1 << levels, nm1 = n1 - 1u;
-    uint32_t h, t, u, w, tw;
-    uint64_t pos;
-    if (a == 0u && b == 0u) return in->corner_vert[3u * f];
-    if (a == n1 && b == 0u) return in->corner_vert[3u * f + 1u];
-    if (a == 0u && b == n1) return in->corner_vert[3u * f + 2u];
-    if (b == 0u) { h = 3u * f; t = a; }
-    else if ((uint64_t)a + b == n1) { h = 3u * f + 1u; t = b; }
-    else if (a == 0u) { h = 3u * f + 2u; t = (uint32_t)(n1 - b); }
-    else {
-        uint64_t am = a - 1u;
-        return (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-               (uint64_t)f * (nm1 * (nm1 - 1u) / 2u) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
-    }
-    /* on edge h = u -> w, t steps from u */
-    u = in->corner_vert[h];
-    w = in->corner_vert[tri_next(h)];
-    tw = in->twin[h];
-    pos = (u < w) ? t : n1 - t;
-    if (tw != SUBD_NONE && tw < h) h = tw;
-    return (uint64_t)in->num_verts + (uint64_t)h * nm1 + pos - 1u;
-}
 
 typedef struct sp_run {
     const subd_mesh *in;
@@ -282,8 +235,8 @@ SUBD_NOINLINE static int emit_children(const sp_run *r, const sp_level *p)
         uint32_t j1 = (j + 1u) % 3u;
         pt[j] = p->cpos + 3u * j;
         pt[3u + j] = p->cpos + 3u * p->slot[3u * ph->cf + j];
-        id[j] = vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
-        id[3u + j] = vertex_id(r->in, r->f, (ph->ca[j] + ph->ca[j1]) / 2u, (ph->cb[j] + ph->cb[j1]) / 2u,
+        id[j] = subd_lp_vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
+        id[3u + j] = subd_lp_vertex_id(r->in, r->f, (ph->ca[j] + ph->ca[j1]) / 2u, (ph->cb[j] + ph->cb[j1]) / 2u,
                                r->o->levels);
     }
     for (c = 0; c < 4u; c++) {
@@ -386,11 +339,11 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
         pt[6u + i] = h1[i];
         pt[9u + i] = h2[i];
         pt[12u + i] = in[i];
-        id[i] = vertex_id(r->in, r->f, ph->ca[i], ph->cb[i], lv);
-        id[3u + i] = vertex_id(r->in, r->f, mai, mbi, lv);
-        id[6u + i] = vertex_id(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv);
-        id[9u + i] = vertex_id(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv);
-        id[12u + i] = vertex_id(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv);
+        id[i] = subd_lp_vertex_id(r->in, r->f, ph->ca[i], ph->cb[i], lv);
+        id[3u + i] = subd_lp_vertex_id(r->in, r->f, mai, mbi, lv);
+        id[6u + i] = subd_lp_vertex_id(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv);
+        id[9u + i] = subd_lp_vertex_id(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv);
+        id[12u + i] = subd_lp_vertex_id(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv);
     }
     /* child c of the centre as points: its corners and, on its edges j -> j+1, the new
      * points; then its children in subd_loop's order (child_corner) */
@@ -423,7 +376,7 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
 SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, uint32_t *ovf)
 {
     const sp_head *ph = p->h;
-    uint32_t nf = ph->nf, nv = ph->nv, c, v, j;
+    uint32_t j;
     subd_mesh m;
     subd_tri t;
     m.face_start = lay->view.face_start;
@@ -433,32 +386,10 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
     m.vert_out = lay->view.vert_out;
     m.vert_tag = lay->view.vert_tag;
     m.edge_tag = lay->view.edge_tag;
-    m.num_verts = nv;
-    m.num_faces = nf;
-    m.num_corners = 3u * nf;
-    m.pos = p->pos;
-    m.num_lines = m.num_line_verts = 0;
-    m.line_start = m.line_vert = 0;
-    m.num_edges = m.num_boundary_edges = m.num_boundary_loops = m.num_isolated = 0;
-    for (c = 0; c <= nf; c++) m.face_start[c] = 3u * c;
-    for (c = 0; c < 3u * nf; c++) {
-        uint32_t tw = p->tw[c];
-        m.corner_vert[c] = p->cv[c];
-        m.corner_face[c] = c / 3u;
-        m.twin[c] = tw < LP_TW_BORDER ? tw : SUBD_NONE;
-        m.edge_tag[c] = (uint8_t)((tw == LP_TW_NONE ? SUBD_ETAG_BOUNDARY : 0u) |
-                                  ((tw != LP_TW_NONE && (p->sh[c] & LP_SH_RULE)) ? SUBD_ETAG_CREASE : 0u));
-    }
-    for (v = 0; v < nv; v++) {
-        uint8_t f = p->vflag[v];
-        m.vert_out[v] = v < 3u ? p->vout[v] : SUBD_NONE;
-        m.vert_tag[v] = (uint8_t)(LOOP_VTAG_KNOWN | ((f & TOPO_PF_REGULAR) ? LOOP_VTAG_REGULAR : 0u) |
-                                  ((f & TOPO_PF_CORNER) ? SUBD_VTAG_CORNER : 0u) |
-                                  ((v < 3u && p->tw[p->vout[v]] == LP_TW_NONE) ? SUBD_VTAG_BOUNDARY : 0u));
-    }
+    subd_lp_view_fill(p, &m);
     for (j = 0; j < 3u; j++) {
         subd_loop_limit_vertex(&m, r->o->boundary, p->pos, j, t.pos[j], t.normal[j], ovf);
-        t.id[j] = vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
+        t.id[j] = subd_lp_vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
     }
     if (*ovf) return SUBD_ERR_RANGE;
     t.face = r->f;
@@ -565,7 +496,7 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
                 uint32_t am = a - 1u;
                 id = base + (uint64_t)am * nm1 - (uint64_t)am * (am + 1u) / 2u + (b - 1u);
             } else {
-                id = vertex_id(in, s->run.f, a, b, lv);
+                id = subd_lp_vertex_id(in, s->run.f, a, b, lv);
             }
             tl->qid[2u * k] = (uint32_t)id;
             tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);

@@ -34,7 +34,7 @@
  * (issue 20, item 4). W is computed by walking the subtree with the stream's own windows
  * (sr48_stream.c, s48_chord_walk); this file holds the arithmetic of one test.
  *
- * Rounding (the same as sr48_extract.c's ex_beyond, so the two cuts use one test): L is
+ * Rounding (subd_sr48_extract's CHORD uses this same test): L is
  * carried in Q32.32 in Q16.16 builds (16 halvings exact, then rounded to Q16.16 and
  * compared per axis and as a sum of squares in 64 bits: within eps + 2^-16), in float as
  * (a + b) * 0.5f (a relative error of a few ulp of the coordinates per level). */
@@ -42,17 +42,15 @@
 #include "sr48_internal.h"
 
 #if SUBD_FIXED /* the representation differs: Q16.16 keeps the interpolant in Q32.32 */
-typedef int64_t sr48c_lin;
-static sr48c_lin sr48c_of(subd_real x) { return (int64_t)x * 65536; }
-static sr48c_lin sr48c_mid(sr48c_lin a, sr48c_lin b) { return (a + b) >> 1; }
+subd_sr48_lin subd_sr48_lin_of_(subd_real x) { return (int64_t)x * 65536; }
+subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b) { return (a + b) >> 1; }
 #else
-typedef float sr48c_lin;
-static sr48c_lin sr48c_of(subd_real x) { return x; }
-static sr48c_lin sr48c_mid(sr48c_lin a, sr48c_lin b) { return (a + b) * 0.5f; }
+subd_sr48_lin subd_sr48_lin_of_(subd_real x) { return x; }
+subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b) { return (a + b) * 0.5f; }
 #endif
 
-/* |P - L| > eps (sr48_extract.c's ex_beyond). */
-static int sr48c_beyond(const subd_real *p, const sr48c_lin *l, subd_real eps)
+/* |P - L| > eps (subd_sr48_extract's CHORD and the stream's). */
+int subd_sr48_beyond_(const subd_real *p, const subd_sr48_lin *l, subd_real eps)
 {
 #if SUBD_FIXED /* the algorithm differs: Q32.32 differences, an early exit keeps the squares in 64 bits */
     uint64_t sum = 0, e = (uint64_t)eps;
@@ -73,20 +71,20 @@ static int sr48c_beyond(const subd_real *p, const sr48c_lin *l, subd_real eps)
 
 int subd_sr48_chord_beyond_(const subd_real *c, uint32_t path, uint32_t n, const subd_real *p, subd_real eps)
 {
-    sr48c_lin l[9], t[9], m[3];
+    subd_sr48_lin l[9], t[9], m[3];
     uint32_t i, s;
-    for (i = 0; i < 9u; i++) l[i] = sr48c_of(c[i]);
+    for (i = 0; i < 9u; i++) l[i] = subd_sr48_lin_of_(c[i]);
     for (s = 0; s < n; s++) {
         /* child 0 = (m; apex, b0), child 1 = (m; b1, apex) */
         uint32_t bit = (path >> s) & 1u;
         for (i = 0; i < 3u; i++) {
-            m[i] = sr48c_mid(l[3u + i], l[6u + i]);
+            m[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
             t[i] = m[i];
             t[3u + i] = bit ? l[6u + i] : l[i];
             t[6u + i] = bit ? l[i] : l[3u + i];
         }
         for (i = 0; i < 9u; i++) l[i] = t[i];
     }
-    for (i = 0; i < 3u; i++) m[i] = sr48c_mid(l[3u + i], l[6u + i]);
-    return sr48c_beyond(p, m, eps);
+    for (i = 0; i < 3u; i++) m[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
+    return subd_sr48_beyond_(p, m, eps);
 }

@@ -106,11 +106,7 @@
 /* A node of the chordal-deviation walk: the triangle, its level and the linear
  * interpolant of the walk's root at its three corners (apex, b0, b1). The arena reserves
  * EX_CNODE_BYTES per node in both arithmetics so the plan does not depend on the build. */
-#if SUBD_FIXED /* the representation differs: Q16.16 keeps the interpolant in Q32.32 */
-typedef int64_t ex_lin; /* Q32.32 */
-#else
-typedef float ex_lin;
-#endif
+typedef subd_sr48_lin ex_lin; /* sr48_internal.h: Q32.32 in Q16.16 */
 typedef struct ex_cnode {
     uint32_t tri, level;
     ex_lin l[9];
@@ -488,34 +484,6 @@ int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real
     return ex_plane_wants(ad, lo, hi);
 }
 
-#if SUBD_FIXED /* Q32.32 interpolant, see ex_lin */
-static ex_lin ex_lin_of(subd_real x) { return (int64_t)x * 65536; }
-static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) >> 1; }
-#else
-static ex_lin ex_lin_of(subd_real x) { return x; }
-static ex_lin ex_lin_mid(ex_lin a, ex_lin b) { return (a + b) * 0.5f; }
-#endif
-
-/* |P - L| > eps. */
-static int ex_beyond(const subd_real *p, const ex_lin *l, subd_real eps)
-{
-#if SUBD_FIXED /* the algorithm differs: Q32.32 differences, an early exit keeps the squares in 64 bits */
-    uint64_t sum = 0, e = (uint64_t)eps;
-    uint32_t i;
-    for (i = 0; i < 3u; i++) {
-        int64_t d = ((int64_t)p[i] * 65536 - l[i] + 32768) >> 16;
-        uint64_t ad = (uint64_t)(d < 0 ? -d : d);
-        if (ad > e) return 1;
-        sum += ad * ad;
-    }
-    return sum > e * e;
-#else
-    float d0 = p[0] - l[0], d1 = p[1] - l[1], d2 = p[2] - l[2];
-    float s0 = d0 * d0, s1 = d1 * d1, s2 = d2 * d2;
-    return s0 + s1 + s2 > eps * eps;
-#endif
-}
-
 /* Chordal deviation of t (level k < max, checked) beyond eps: depth-first walk of t's
  * subtree down to level max, stopping at the first vertex that deviates. Stack: pop one
  * node, push its two children, so at most (max - k) + 1 <= max + 1 entries. Each node is
@@ -527,7 +495,7 @@ static int ex_chord_wants(ex_ctx *c, uint32_t t, uint32_t k)
     uint32_t sp = 1, i;
     st[0].tri = t;
     st[0].level = k;
-    for (i = 0; i < 9u; i++) st[0].l[i] = ex_lin_of(ex_pos(c, h->tri_vert[3u * t + i / 3u])[i % 3u]);
+    for (i = 0; i < 9u; i++) st[0].l[i] = subd_sr48_lin_of_(ex_pos(c, h->tri_vert[3u * t + i / 3u])[i % 3u]);
     while (sp > 0u) {
         ex_cnode nd = st[--sp];
         uint32_t kk = nd.level, c0, m;
@@ -535,8 +503,8 @@ static int ex_chord_wants(ex_ctx *c, uint32_t t, uint32_t k)
         if (!ex_ok(c, nd.tri, kk)) return 0; /* before reading its child's apex */
         c0 = h->level_tri[kk + 1u] + 2u * (nd.tri - h->level_tri[kk]);
         m = h->tri_vert[3u * c0];
-        for (i = 0; i < 3u; i++) lm[i] = ex_lin_mid(nd.l[3u + i], nd.l[6u + i]);
-        if (ex_beyond(ex_pos(c, m), lm, c->ad->eps)) return 1;
+        for (i = 0; i < 3u; i++) lm[i] = subd_sr48_lin_mid_(nd.l[3u + i], nd.l[6u + i]);
+        if (subd_sr48_beyond_(ex_pos(c, m), lm, c->ad->eps)) return 1;
         if (kk + 1u >= c->max) continue;
         if (sp + 2u > c->max + 1u) return 1; /* cannot happen (see above); stay in bounds */
         /* child 2i = (m; apex, b0), child 2i+1 = (m; b1, apex) */

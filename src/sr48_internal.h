@@ -92,6 +92,18 @@ void subd_sr48_box_grow_(const subd_real *pos, const uint32_t *idx, uint32_t n, 
                          int init);
 subd_real subd_sr48_default_radius_(const subd_real *blo, const subd_real *bhi, uint32_t max);
 
+/* The chordal test (sr48_chord.c), one home for subd_sr48_extract's and the stream's: the
+ * linear interpolant of a triangle's corners at a dyadic point, Q32.32 in Q16.16 (so 16
+ * halvings are exact) and float in float32, and |P - L| > eps on it. */
+#if SUBD_FIXED /* the representation differs: Q16.16 keeps the interpolant in Q32.32 */
+typedef int64_t subd_sr48_lin;
+#else
+typedef float subd_sr48_lin;
+#endif
+subd_sr48_lin subd_sr48_lin_of_(subd_real x);
+subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b);
+int subd_sr48_beyond_(const subd_real *p, const subd_sr48_lin *l, subd_real eps);
+
 /* Chordal cuts of the stream (sr48_chord.c): is finest position p farther than eps from
  * L_d(v), the linear interpolant of ancestor triangle d (corners c: apex, b0, b1, 9 reals)
  * at the vertex v created by splitting d's descendant reached by n child steps (bit s of

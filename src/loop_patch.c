@@ -566,3 +566,18 @@ uint32_t subd_lp_max_valence(const subd_mesh *in)
     }
     return best;
 }
+
+void subd_lp_level_bind(uint8_t *b, const uint32_t *off, sp_level *lv)
+{
+    lv->pos = (subd_real *)(void *)(b + off[A_POS]);
+    lv->vflag = b + off[A_VFLAG];
+    lv->vout = (uint16_t *)(void *)(b + off[A_VOUT]);
+    lv->cv = (uint16_t *)(void *)(b + off[A_CV]);
+    lv->tw = (uint16_t *)(void *)(b + off[A_TW]);
+    lv->slot = (uint16_t *)(void *)(b + off[A_SLOT]);
+    lv->sh = b + off[A_SH];
+    lv->cpos = (subd_real *)(void *)(b + off[A_CPOS]);
+    lv->cflag = b + off[A_CFLAG];
+    lv->cface = (uint32_t *)(void *)(b + off[A_CFACE]);
+    lv->cvert = (uint32_t *)(void *)(b + off[A_CVERT]);
+}

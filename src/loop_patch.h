@@ -58,6 +58,9 @@ static inline uint32_t cap_v(uint32_t s) { return s - 3u; }
  * `cache`: with the refined values; `control`: with the input face and vertex of each local
  * element. SUBD_LOOP_SLEV_ in subd_loop.h is the same sum. */
 uint32_t subd_lp_level_layout(uint32_t s, int cache, int control, uint32_t off[A_N]);
+/* Points level lv's arrays into block b at the offsets subd_lp_level_layout gave (the
+ * header lv->h is the caller's). */
+void subd_lp_level_bind(uint8_t *b, const uint32_t *off, sp_level *lv);
 
 /* Level 0 for input face f: every face around its corners, sorted; corners 0..2 are f's. */
 void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels);

@@ -143,17 +143,7 @@ static void level_at(const sp_layout *l, uint32_t k, sp_level *lv)
     const uint32_t *off = k == 0u ? l->off0 : l->off1;
     uint8_t *b = k == 0u ? l->lev0 : l->lev1 + (k - 1u) * l->size1;
     lv->h = l->head + k;
-    lv->pos = (subd_real *)(void *)(b + off[A_POS]);
-    lv->vflag = b + off[A_VFLAG];
-    lv->vout = (uint16_t *)(void *)(b + off[A_VOUT]);
-    lv->cv = (uint16_t *)(void *)(b + off[A_CV]);
-    lv->tw = (uint16_t *)(void *)(b + off[A_TW]);
-    lv->slot = (uint16_t *)(void *)(b + off[A_SLOT]);
-    lv->sh = b + off[A_SH];
-    lv->cpos = (subd_real *)(void *)(b + off[A_CPOS]);
-    lv->cflag = b + off[A_CFLAG];
-    lv->cface = (uint32_t *)(void *)(b + off[A_CFACE]);
-    lv->cvert = (uint32_t *)(void *)(b + off[A_CVERT]);
+    subd_lp_level_bind(b, off, lv);
 }
 
 /* ------------------------------------------------------------------------------------ */

@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming semi-regular 4-8 refinement (paper: semi-regular-4-8-refinement-box-splines.txt,
- * Length (~940 lines): the window (refine, smooth, crop, descent to the finest level) and
- * the stream driver (plan, begin, step, adaptive decisions) share one window layout; the
- * split into sr48_window.c and sr48_stream.c is open work (issue 19, item 7).
- * sections 4 and 6): the triangles of subd_sr48_extract's uniform cut of
+ * sections 4 and 6).
+ * Length (~1 220 lines): three pieces share one window layout and state - the window
+ * (refine, smooth, crop, descent to the finest level), the CHORD walk over the deeper windows
+ * (its test and proof are in sr48_chord.c) and the stream driver (plan, begin, step,
+ * adaptive decisions); the split into sr48_window.c, the chord walk and sr48_stream.c behind
+ * a private window header is open work (issue 19, item 7; issue 20).
+ * What it streams: the triangles of subd_sr48_extract's uniform cut of
  * subd_sr48_build's hierarchy, handed out one at a time through the common stream
  * interface (include/subd.h "Streams", src/stream.c), in memory that depends on the level
  * count and the base mesh's largest valence only.
@@ -1075,6 +1078,18 @@ static int s48_emit_leaf(s48_state *s, uint32_t k, uint32_t t, subd_stream_q *q,
     return 1;
 }
 
+/* Back up one level after a triangle's subtree is done: to the parent, or at level 0 to the
+ * next base triangle (whose window is built on the next step). */
+static void s48_up(s48_state *s)
+{
+    if (s->k == 0u) {
+        s->t0++;
+        s->built = 0;
+    } else {
+        s->k--;
+    }
+}
+
 /* One batch: the next one or two triangles of the depth-first walk; q->ended after the last
  * level-0 triangle. */
 static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
@@ -1110,12 +1125,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             /* a leaf below max_level (or a failed CHORD walk) */
             if (wants < 0) goto fail;
             if (!s48_emit_leaf(s, s->k, w.hd[2], q, &stop)) goto fail;
-            if (s->k == 0u) {
-                s->t0++;
-                s->built = 0;
-            } else {
-                s->k--;
-            }
+            s48_up(s);
             return stop;
         }
         if (s->k + 1u == s->levels) {
@@ -1124,12 +1134,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             if (!s48_emit(s, &x, 2u * w.hd[2], q, &stop)) goto fail;
             if (stop) return stop;
             if (!s48_emit(s, &x, 2u * w.hd[2] + 1u, q, &stop)) goto fail;
-            if (s->k == 0u) {
-                s->t0++;
-                s->built = 0;
-            } else {
-                s->k--;
-            }
+            s48_up(s);
             return stop;
         }
         if (w.hd[5] == 0u) {

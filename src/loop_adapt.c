@@ -2,6 +2,9 @@
 /* Adaptive Loop limit stream (include/subd_loop_adapt.h): each control face emitted at its own
  * level 0..L with watertight transitions, every vertex a level-L limit point (the uniform limit
  * stream's bits and ids), to a chord tolerance or at levels a callback chooses.
+ * Length (~770 lines): the level choice (edge and face chord tests, callback) and the
+ * emission (uniform interior, transition rings) share the per-face lattice walk and its
+ * state; splitting the level choice into its own file is open work (issue 22).
  *
  * Paper: loop-progressive-interpolation.txt, sections 1 and 4 (the rules, through
  * loop_patch.c's patches and loop_limit.c's masks; nothing here computes a new rule). The

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Variable-resolution extraction from the semi-regular 4-8 hierarchy of right triangles.
  * Length (~870 lines): two concepts that should be two files, the adaptation geometry (the
- * nested star box, POINT/RAMP/PLANE/CALLBACK tests, chordal deviation) and the cut (marks,
+ * nested star box, POINT/RAMP/PLANE/CALLBACK tests, the chordal walk; its test is in
+ * sr48_chord.c) and the cut (marks,
  * forced splits, output); the split is open work (issue 19, item 7), kept together this
  * release because the stream shares the box test through sr48_internal.h.
  *

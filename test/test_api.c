@@ -8,6 +8,7 @@
 #include "harness.h"
 #include "corpus.h"
 #include "subd_quasi48.h"
+#include "subd_semireg48.h" /* the deprecated header name still works */
 
 /* A quad then a triangle: the first non-triangle is face 0. */
 static const char mixed_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\nf 2 5 3\n";
@@ -163,8 +164,29 @@ static void quasi48_old_names(void)
     CHECK_EQ(SUBD_Q48_MAX_FACES(3u, 2u), SUBD_QUASI48_MAX_FACES(3u, 2u));
 }
 
+/* The 0.3 names of the semi-regular 4-8 types (subd_adapt*, SUBD_ADAPT_*, the header
+ * subd_semireg48.h) still compile and mean the same (deprecated aliases, until 1.0). */
+static void sr48_old_names(void)
+{
+    subd_adapt o;
+    subd_sr48_adapt n;
+    subd_adapt_report r;
+    subd_adapt_fn fn = 0;
+    CHECK(sizeof o == sizeof n);
+    CHECK(sizeof r == sizeof(subd_sr48_adapt_report));
+    CHECK(sizeof(subd_adapt_mode) == sizeof(subd_sr48_adapt_mode));
+    CHECK(fn == (subd_sr48_adapt_fn)0);
+    CHECK_EQ((uint32_t)SUBD_ADAPT_UNIFORM, (uint32_t)SUBD_SR48_ADAPT_UNIFORM);
+    CHECK_EQ((uint32_t)SUBD_ADAPT_POINT, (uint32_t)SUBD_SR48_ADAPT_POINT);
+    CHECK_EQ((uint32_t)SUBD_ADAPT_RAMP, (uint32_t)SUBD_SR48_ADAPT_RAMP);
+    CHECK_EQ((uint32_t)SUBD_ADAPT_PLANE, (uint32_t)SUBD_SR48_ADAPT_PLANE);
+    CHECK_EQ((uint32_t)SUBD_ADAPT_CALLBACK, (uint32_t)SUBD_SR48_ADAPT_CALLBACK);
+    CHECK_EQ((uint32_t)SUBD_ADAPT_CHORD, (uint32_t)SUBD_SR48_ADAPT_CHORD);
+}
+
 const test_case suite_api[] = {
     {"quasi48_old_names", quasi48_old_names},
+    {"sr48_old_names", sr48_old_names},
     {"plans_fill_diag", plans_fill_diag},
     {"limit_opts", limit_opts},
     {"failure_has_no_need", failure_has_no_need},

@@ -97,11 +97,7 @@ typedef struct astream_state {
     /* adaptive */
     uint32_t adaptive, blk_base, blk_cnt, sp, ended, wrapped, last_done;
     uint32_t stk[2u * 10u]; /* spans: 1 + log2(ASTREAM_BLOCK) = 9 at most */
-#if SUBD_FIXED
-    int64_t eps_raw;
-#else
-    float eps;
-#endif
+    subd_real eps; /* the chord tolerance as given (astream_near adds its own margin) */
 } astream_state;
 SUBD_STREAM_STATE_FITS(astream_state);
 
@@ -377,6 +373,7 @@ static int astream_pull(astream_state *st, subd_real *p)
 static int astream_near(const astream_state *st, const subd_real *A, const subd_real *B, const subd_real *P)
 {
     int64_t u[3], d[3], us[3], ds[3], num, den, t, e;
+    const int64_t eps_raw = (int64_t)st->eps - 1; /* one unit of margin for rounding Q, below */
     uint64_t sum = 0, big = 0, lim;
     uint32_t k, ovf = 0;
     int32_t sh;
@@ -399,15 +396,15 @@ static int astream_near(const astream_state *st, const subd_real *A, const subd_
     if (den <= 0 || num <= 0) t = 0;
     else if (num >= den) t = SUBD_Q32_ONE;
     else t = subd_alpha_divq(num, den, 32, &ovf);
-    if (ovf || st->eps_raw <= 0) return 0;
+    if (ovf || eps_raw <= 0) return 0;
     /* Q = A + t u, rounded to units: within 0.87 units of the segment; eps_raw has that margin */
     for (k = 0; k < 3u; k++) {
         e = d[k] - subd_alpha_mulq(u[k], t, 32, &ovf);
         if (e < 0) e = -e;
-        if (e > st->eps_raw) return 0;
+        if (e > eps_raw) return 0;
         sum += (uint64_t)e * (uint64_t)e;
     }
-    lim = (uint64_t)st->eps_raw * (uint64_t)st->eps_raw;
+    lim = (uint64_t)eps_raw * (uint64_t)eps_raw;
     return !ovf && sum <= lim;
 }
 #else
@@ -673,13 +670,8 @@ int subd_alpha_curve_stream_begin(subd_arena *arena, const subd_real *pos, uint3
     st->kerr = SUBD_OK;
     st->kerr_level = 0;
     st->dry = 0;
-#if SUBD_FIXED /* one unit of margin for the rounding of the segment point (astream_near) */
-    st->eps_raw = (int64_t)chord - 1;
-    st->adaptive = chord > 0 ? 1u : 0u;
-#else
     st->eps = chord;
-    st->adaptive = chord > 0.0f ? 1u : 0u;
-#endif
+    st->adaptive = chord > 0 ? 1u : 0u;
     astream_setup(st);
     if (astream_may_fail(st)) { /* the dry run: what subd_alpha_curve would report */
         subd_real p[3];

@@ -139,44 +139,6 @@ int subd_pia_plan(const subd_mesh *in, const subd_pia_opts *o, uint32_t *bytes, 
 /* ------------------------------------------------------------------------------------ */
 /* Sets, errors, L                                                                        */
 
-/* |p - l|^2 for one vertex. */
-pia_sq subd_pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf)
-{
-    uint32_t k;
-#if SUBD_FIXED /* why: the saturated differences squared exactly in 64 bits (vec3w.h's exact
-                * differences would need 33 bits and its dot product 30-bit components) */
-    uint64_t s = 0;
-    for (k = 0; k < 3u; k++) {
-        int64_t r = subd_sub(p[k], l[k], ovf); /* |r| <= 2^31 after saturation */
-        s += (uint64_t)(r * r);
-    }
-#else
-    float s = 0.0f;
-    for (k = 0; k < 3u; k++) {
-        float r = subd_sub(p[k], l[k], ovf);
-        float r2 = r * r;
-        s = s + r2;
-    }
-    (void)subd_chk(s, ovf);
-#endif
-    return s;
-}
-
-subd_real subd_pia_root(pia_sq s, uint32_t *ovf)
-{
-#if SUBD_FIXED /* why: the integer square root of pia_dist2's exact 64-bit square */
-    uint32_t r = subd_isqrt64(s);
-    if (r > (uint32_t)INT32_MAX) {
-        *ovf |= 1u;
-        return INT32_MAX;
-    }
-    return (subd_real)r;
-#else
-    (void)ovf;
-    return subd_sqrt(s);
-#endif
-}
-
 /* Max over the set of |P - L V| (with the current lv). */
 subd_real subd_pia_max_err(pia_state *s, uint32_t set)
 {
@@ -185,10 +147,10 @@ subd_real subd_pia_max_err(pia_state *s, uint32_t set)
     uint32_t i;
     for (i = 0; i < m->num_verts; i++) {
         if (!pia_in_set(s, i, set)) continue;
-        e = subd_pia_dist2(&m->pos[3u * i], &s->lv[3u * i], &s->ovf);
+        e = subd_w3_dist2(&m->pos[3u * i], &s->lv[3u * i], &s->ovf);
         if (e > best) best = e;
     }
-    return subd_pia_root(best, &s->ovf);
+    return subd_w3_dist_root(best, &s->ovf);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -281,7 +243,7 @@ int subd_pia(subd_arena *a, const subd_mesh *in, const subd_pia_opts *o, subd_re
         res.boundary.max_err = subd_pia_max_err(&s, PIA_SET_BOUNDARY);
         res.interior.max_err = subd_pia_max_err(&s, PIA_SET_INTERIOR);
         for (i = 0; i < in->num_verts; i++) {
-            subd_real ei = subd_pia_root(subd_pia_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf);
+            subd_real ei = subd_w3_dist_root(subd_w3_dist2(&in->pos[3u * i], &s.lv[3u * i], &s.ovf), &s.ovf);
             uint32_t j = (in->vert_tag[i] & SUBD_VTAG_BOUNDARY) ? 0u : 1u;
             sum = subd_sum_add(sum, ei);
             part[j] = subd_sum_add(part[j], ei);

@@ -300,12 +300,12 @@ int subd_pia_cg_advance(pia_state *s, uint32_t set, subd_real alpha, uint32_t ha
             s->v[k] = subd_add(s->v[k], subd_mul(alpha, s->p[k], &s->ovf), &s->ovf);
             s->lv[k] = subd_add(s->lv[k], subd_mul(alpha, s->q[k], &s->ovf), &s->ovf);
         }
-        d2 = subd_pia_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
+        d2 = subd_w3_dist2(&P[3u * i], &s->lv[3u * i], &s->ovf);
         if (d2 > e2) e2 = d2;
     }
     s->lv_true = 0;
     s->half += halves;
-    err = subd_pia_root(e2, &s->ovf);
+    err = subd_w3_dist_root(e2, &s->ovf);
     if (!s->ovf && err <= s->o->tol) {
         pia_limit(s);
         err = subd_pia_max_err(s, set);

@@ -8,6 +8,7 @@
 #define SUBD_PIA_INTERNAL_H
 #include "subd.h"
 #include "loop_internal.h"
+#include "vec3w.h" /* subd_dist_sq, subd_w3_dist2, subd_w3_dist_root */
 
 #define PIA_STALL 10u         /* iterations without a new minimum that end a phase        */
 #define PIA_TOL_MIN_LSB 2     /* Q16.16: smallest accepted tol, in units of 2^-16         */
@@ -24,8 +25,8 @@ enum { PIA_SET_ALL, PIA_SET_BOUNDARY, PIA_SET_INTERIOR, PIA_SET_CURVE, PIA_SET_S
 
 /* Why the #if: the errors and the CG inner products are computed exactly in integers in
  * Q16.16 (no float in the fixed build; see "Arithmetic" above), in float32 as plain sums. */
+typedef subd_dist_sq pia_sq; /* squared distance (vec3w.h) */
 #if SUBD_FIXED
-typedef uint64_t pia_sq; /* squared distance in LSB^2: 3 * (2^31)^2 < 2^64 */
 /* A weighted dot product: the 128-bit two's complement integer (hi, lo) times 2^e. */
 typedef struct pia_dotv {
     uint64_t lo;
@@ -33,7 +34,6 @@ typedef struct pia_dotv {
     int32_t e;
 } pia_dotv;
 #else
-typedef float pia_sq;
 typedef float pia_dotv;
 #endif
 
@@ -87,8 +87,6 @@ static inline int pia_budget(const pia_state *s, uint32_t h)
 }
 
 /* pia.c */
-pia_sq subd_pia_dist2(const subd_real *p, const subd_real *l, uint32_t *ovf); /* |p - l|^2        */
-subd_real subd_pia_root(pia_sq s, uint32_t *ovf);                            /* sqrt, in range    */
 subd_real subd_pia_max_err(pia_state *s, uint32_t set);                      /* max |P - L V|     */
 int subd_pia_stalled(subd_real err, uint32_t k, subd_real *best, uint32_t *stall);
 void subd_pia_phase_paper(pia_state *s, uint32_t set);

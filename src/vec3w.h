@@ -28,6 +28,12 @@
  *    the product rounded into a temporary, then the sum.
  *  - subd_wide_mulu(n, x) = n * x: Q16.16 exact while |x| < 2^31 and n < 2^32; float32 one
  *    rounding. subd_wide_of(x): x widened (exact in both).
+ *  - subd_w3_dist2(p, q, ovf) (vec3w.c): |p - q|^2 of saturated differences (subd_sub),
+ *    Q16.16 exact in 64 bits (vec3w's exact differences would need 33 bits and its dot
+ *    product 30-bit components), float32 rounded per product and summed left to right, an
+ *    infinite sum flagged in *ovf; subd_w3_dist_root(s, ovf): its square root as a subd_real
+ *    (Q16.16: the integer root rounded to nearest, saturated to INT32_MAX with *ovf set).
+ *    PIA's error measure (pia.c, pia_fast.c).
  *  - subd_w3_span_*, subd_w3_side, subd_w3_add_ratio: see their comments below.
  * All but subd_w3_unit are static inline; none has side effects but subd_w3_add_ratio's on
  * p and *ovf; o may alias t. */
@@ -38,8 +44,10 @@
 
 #if SUBD_FIXED
 typedef int64_t subd_wide;
+typedef uint64_t subd_dist_sq; /* a squared distance in LSB^2, exact: 3 * (2^31)^2 < 2^64 */
 #else
 typedef float subd_wide;
+typedef float subd_dist_sq; /* a squared distance, a plain left-to-right sum */
 #endif
 
 static inline subd_wide subd_wide_of(subd_real x) { return (subd_wide)x; }
@@ -251,5 +259,7 @@ static inline void subd_w3_add_ratio(subd_real *p, subd_wide num, subd_wide den,
 #endif
 
 void subd_w3_unit(const subd_wide *c, subd_real *out);
+subd_dist_sq subd_w3_dist2(const subd_real *p, const subd_real *q, uint32_t *ovf);
+subd_real subd_w3_dist_root(subd_dist_sq s, uint32_t *ovf);
 
 #endif

@@ -476,26 +476,32 @@ static void s48_set_id(s48_win *w, uint32_t v, uint64_t id)
 static int s48_build0(s48_state *s, uint32_t t0)
 {
     const subd_sr48 *b = s->base;
-    uint32_t nt = 0, nv = 0, i, j, q;
+    uint32_t nt = 0, nv = 0, i, j, q, u, p;
     s48_win w;
     s48_lev(s, 0, &w);
-    for (j = 0; j < 3u; j++) {
-        s->gv[nv] = b->tri_vert[3u * t0 + j];
-        s->gvt[nv] = t0;
-        s->dist[nv++] = 0;
-    }
+    /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
+     * that one window serves both (s48_step) */
+    for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t vx = b->tri_vert[3u * p + j], seen = 0;
+            for (u = 0; u < nv; u++)
+                if (s->gv[u] == vx) seen = 1;
+            if (seen) continue;
+            s->gv[nv] = vx;
+            s->gvt[nv] = p;
+            s->dist[nv++] = 0;
+        }
     for (q = 0; q < nv; q++) {
         uint32_t x = s->gv[q], nf, f;
         if (s->dist[q] >= S48_RINGS) continue;
-        nf = s48_fan(b, x, s->gvt[q], 0, 0xffffu);
+        /* the whole fan at the free tail of gt, then merged (deduplicated): a triangle
+         * appended at nt can only overwrite fan entries already read (nt grows by at most
+         * one per entry read, and nt + nf <= wt) */
+        nf = s48_fan(b, x, s->gvt[q], s->gt + nt, s->wt - nt);
         if (nf == UINT32_MAX) return 0;
-        /* the whole fan into the free tail of gt, then merged (deduplicated) */
-        /* the fan at gt's tail: a triangle appended at nt can only overwrite fan entries
-         * already read (nt grows by at most one per entry read, and nt + nf <= wt) */
-        if (nt + nf > s->wt) return 0;
-        (void)s48_fan(b, x, s->gvt[q], s->gt + (s->wt - nf), nf);
+        for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
         for (f = 0; f < nf; f++) {
-            uint32_t tt = s->gt[s->wt - nf + f], dup = 0, u;
+            uint32_t tt = s->gt[s->wt - nf + f], dup = 0;
             for (i = 0; i < nt; i++)
                 if (s->gt[i] == tt) dup = 1;
             if (dup) continue;
@@ -525,7 +531,8 @@ static int s48_build0(s48_state *s, uint32_t t0)
     for (i = 0; i < nt; i++) {
         uint32_t tt = s->gt[i];
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * tt + j], u = 0, nb, lo, hi;
+            uint32_t vx = b->tri_vert[3u * tt + j], nb, lo, hi;
+            u = 0;
             while (s->gv[u] != vx) u++; /* present: added with the triangle */
             w.tv[3u * i + j] = (uint16_t)u;
             nb = s48_base_nbr(b, tt, j);
@@ -544,6 +551,7 @@ static int s48_build0(s48_state *s, uint32_t t0)
         }
         s48_set_key(&w, i, tt);
         if (tt == t0) w.hd[2] = i;
+        if (tt == (t0 | 1u)) w.hd[4] = i;
     }
     for (i = 0; i < nv; i++) {
         for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
@@ -1200,6 +1208,14 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         if (!s->boxed) {
             if (!s48_adapt_box(s)) goto fail;
             s->boxed = 1;
+        }
+        if (!s->built && !s->adapt && (s->t0 & 1u) && s->levels > 0u) {
+            /* the sibling of the last base triangle: the same level-0 window */
+            s48_lev(s, 0, &w);
+            w.hd[2] = w.hd[4];
+            w.hd[5] = 0;
+            s->k = 0;
+            s->built = 1;
         }
         if (!s->built) {
             if (s->adapt && !s->chord && !s48_level0_lin(s, s->t0)) goto fail;

@@ -409,8 +409,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #endif
 #define SUBD_SR48_STREAM_TM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_TILE_LEVELS ? SUBD_SR48_MAX_(L, 1u) : SUBD_SR48_STREAM_TILE_LEVELS)
-#define SUBD_SR48_STREAM_TT_(n, m) ((1u << (m)) + 5u * SUBD_SR48_STREAM_N_(n) + 96u)
-#define SUBD_SR48_STREAM_TV_(n, m) ((1u << ((m) - 1u)) + 4u * SUBD_SR48_STREAM_N_(n) + 64u)
+#define SUBD_SR48_STREAM_TT_(n, m) (SUBD_SR48_STREAM_WT_(n) + (1u << (m)) + (1u << ((m) - 1u)) + 16u)
+#define SUBD_SR48_STREAM_TV_(n, m) (SUBD_SR48_STREAM_WV_(n) + (1u << ((m) - 1u)) + (1u << ((m) - 2u)) + 16u)
 /* The plan of nl level windows of t triangles and v vertices, a tile window of at, av when
  * tile is 1, the refined window of twice max(t, at) triangles and its working arrays. */
 #define SUBD_SR48_STREAM_G_(nl, t, v, tile, at, av) \

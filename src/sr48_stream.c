@@ -26,6 +26,15 @@
  * after an even level (subd_sr48_smooth's rule), then cropped to the rings of the next
  * current triangle. The last level is not stored: the two children of the current level
  * L-1 triangle are emitted from the refined (uncropped) window: one internal batch.
+ * Uniform tiles: the last m = SUBD_SR48_STREAM_TILE_LEVELS levels (all when L <= m) are not
+ * walked one triangle at a time: the current level L-m triangle's window is refined m times
+ * breadth first, each time cropped to the rings of the set of its descendants at that level
+ * (contiguous in the refined window, which is sorted by key), and its 2^m descendants are
+ * emitted from the last refined window in key order (s48_tile). The tile window contains
+ * every window the depth-first walk would crop for one of the descendants (rings of a union
+ * are the union of the rings), so the exactness argument below carries over, and the
+ * triangles and their order are unchanged. The level-0 window of a uniform stream holds the
+ * rings of both children of a hybrid triangle (base triangles 2H, 2H + 1) and serves both.
  *
  * Exactness. A vertex's position is exact when every input of its rule was: a new vertex
  * needs its diamond's two apexes (both triangles in the window; a boundary half-diamond
@@ -71,11 +80,11 @@
  * calls, so the same bits), and the current path is rebuilt afterwards. A direct-mapped
  * cache keeps verdicts by key (a "within" covers the descendants).
  *
- * Memory: the fixed state block, the overflow ring (2 triangles), L + 1 window blocks
- * (level L uses only its header), the refined window (twice the triangles), the smoothing
- * sums and the crop's maps (CHORD: the walk's per-level state, the star's keys, the verdict
- * cache); all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
- * which depend on the largest valence only.
+ * Memory: the fixed state block, the overflow ring (2 triangles), L window blocks (uniform:
+ * L - m + 1, then the tile window), the refined window (twice the triangles of the larger of
+ * the two), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
+ * star's keys, the verdict cache); all sized by the window capacities of
+ * SUBD_SR48_STREAM_BYTES, which depend on the largest valence (and the tile's m) only.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "entry.h"

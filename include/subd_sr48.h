@@ -399,14 +399,40 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_WIN_(t, v) \
     (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(8u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
      SUBD_SR48_SA_(8u * (v)) + SUBD_SR48_SA_(v))
-#define SUBD_SR48_STREAM_BYTES_WTV_(L, t, v) \
+#define SUBD_SR48_MAX_(a, b) ((uint32_t)(a) > (uint32_t)(b) ? (uint32_t)(a) : (uint32_t)(b))
+/* Uniform tiles: the last SUBD_SR48_STREAM_TILE_LEVELS levels (fewer when max_level is
+ * smaller) are refined breadth first: the tile window holds the current triangle's
+ * descendants one level above max_level with their rings, at most SUBD_SR48_STREAM_TT_(N, m)
+ * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). */
+#ifndef SUBD_SR48_STREAM_TILE_LEVELS
+#define SUBD_SR48_STREAM_TILE_LEVELS 6u
+#endif
+#define SUBD_SR48_STREAM_TM_(L) \
+    ((uint32_t)(L) < SUBD_SR48_STREAM_TILE_LEVELS ? SUBD_SR48_MAX_(L, 1u) : SUBD_SR48_STREAM_TILE_LEVELS)
+#define SUBD_SR48_STREAM_TT_(n, m) (SUBD_SR48_STREAM_WT_(n) + (1u << (m)) + (1u << ((m) - 1u)) + 16u)
+#define SUBD_SR48_STREAM_TV_(n, m) (SUBD_SR48_STREAM_WV_(n) + (1u << ((m) - 1u)) + (1u << ((m) - 2u)) + 16u)
+/* The plan of nl level windows of t triangles and v vertices, a tile window of at, av when
+ * tile is 1, the refined window of twice max(t, at) triangles and its working arrays. */
+#define SUBD_SR48_STREAM_G_(nl, t, v, tile, at, av) \
     (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
-     ((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_WIN_(t, v) + SUBD_SR48_WIN_(2u * (t), (v) + (t)) + \
-     SUBD_SR48_SA_(24u * ((v) + (t))) + SUBD_SR48_SA_(4u * ((v) + (t))) + SUBD_SR48_SA_((v) + (t)) + \
-     SUBD_SR48_SA_(2u * (t)) + SUBD_SR48_SA_(4u * (t)) + SUBD_SR48_SA_(2u * ((v) + (t))) + SUBD_SR48_SA_(4u * (t)) + \
+     (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + (uint32_t)(tile) * SUBD_SR48_WIN_(at, av) + \
+     SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t)))
+#define SUBD_SR48_STREAM_X_(t, v, mt, xv) \
+    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(24u * (xv)) + SUBD_SR48_SA_(4u * (xv)) + SUBD_SR48_SA_(xv) + \
+     SUBD_SR48_SA_(2u * (mt)) + SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + \
      2u * SUBD_SR48_SA_(4u * (v)))
+/* Without tiles (the adaptive modes): max(L, 1) level windows. */
+#define SUBD_SR48_STREAM_DFS_BYTES_(L, N) \
+    SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
+                        SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
 #define SUBD_SR48_STREAM_BYTES(L, N) \
-    SUBD_SR48_STREAM_BYTES_WTV_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
+    SUBD_SR48_STREAM_G_((uint32_t)(L) + 1u - SUBD_SR48_STREAM_TM_(L) > 0u ? (uint32_t)(L) + 1u - SUBD_SR48_STREAM_TM_(L) \
+                                                                        : 1u, \
+                        SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TM_(L) > 1u ? 1u : 0u, \
+                        SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)) \
+                                                     : SUBD_SR48_STREAM_WT_(N), \
+                        SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L)) \
+                                                     : SUBD_SR48_STREAM_WV_(N))
 /* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
  * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
  * triangles (the adaptation box lives in the run state). */
@@ -414,7 +440,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
     (((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
      SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
-    (SUBD_SR48_STREAM_BYTES(L, N) + \
+    (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
 /* The plan of CHORD: the uniform plan plus the subtree walk's state (per level: the node,
  * its child state and its corners' sources, 5 words; the star's keys,
@@ -422,7 +448,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * verdicts, 3 words each) and the walk's finest positions (3 subd_reals per level + 4). */
 #define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
-    (SUBD_SR48_STREAM_BYTES(L, N) + \
+    (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_SA_(4u * (5u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + 3u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \
      SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u)))
 

@@ -26,6 +26,15 @@
  * after an even level (subd_sr48_smooth's rule), then cropped to the rings of the next
  * current triangle. The last level is not stored: the two children of the current level
  * L-1 triangle are emitted from the refined (uncropped) window: one internal batch.
+ * Uniform tiles: the last m = SUBD_SR48_STREAM_TILE_LEVELS levels (all when L <= m) are not
+ * walked one triangle at a time: the current level L-m triangle's window is refined m times
+ * breadth first, each time cropped to the rings of the set of its descendants at that level
+ * (contiguous in the refined window, which is sorted by key), and its 2^m descendants are
+ * emitted from the last refined window in key order (s48_tile). The tile window contains
+ * every window the depth-first walk would crop for one of the descendants (rings of a union
+ * are the union of the rings), so the exactness argument below carries over, and the
+ * triangles and their order are unchanged. The level-0 window of a uniform stream holds the
+ * rings of both children of a hybrid triangle (base triangles 2H, 2H + 1) and serves both.
  *
  * Exactness. A vertex's position is exact when every input of its rule was: a new vertex
  * needs its diamond's two apexes (both triangles in the window; a boundary half-diamond
@@ -71,11 +80,11 @@
  * calls, so the same bits), and the current path is rebuilt afterwards. A direct-mapped
  * cache keeps verdicts by key (a "within" covers the descendants).
  *
- * Memory: the fixed state block, the overflow ring (2 triangles), L + 1 window blocks
- * (level L uses only its header), the refined window (twice the triangles), the smoothing
- * sums and the crop's maps (CHORD: the walk's per-level state, the star's keys, the verdict
- * cache); all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
- * which depend on the largest valence only.
+ * Memory: the fixed state block, the overflow ring (2 triangles), L window blocks (uniform:
+ * L - m + 1, then the tile window), the refined window (twice the triangles of the larger of
+ * the two), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
+ * star's keys, the verdict cache); all sized by the window capacities of
+ * SUBD_SR48_STREAM_BYTES, which depend on the largest valence (and the tile's m) only.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "entry.h"
@@ -105,15 +114,19 @@ typedef struct s48_win {
 } s48_win;
 
 /* Window vertex sv of src as vertex dv of dst: position, id, flags and (adaptive) L. */
-static void s48_vcopy(const s48_win *dst, uint32_t dv, const s48_win *src, uint32_t sv)
+static inline void s48_vcopy(const s48_win *dst, uint32_t dv, const s48_win *src, uint32_t sv)
 {
-    uint32_t j;
-    for (j = 0; j < 3u; j++) dst->vp[3u * dv + j] = src->vp[3u * sv + j];
+    dst->vp[3u * dv] = src->vp[3u * sv];
+    dst->vp[3u * dv + 1u] = src->vp[3u * sv + 1u];
+    dst->vp[3u * dv + 2u] = src->vp[3u * sv + 2u];
     dst->vid[2u * dv] = src->vid[2u * sv];
     dst->vid[2u * dv + 1u] = src->vid[2u * sv + 1u];
     dst->vf[dv] = src->vf[sv];
-    if (dst->vl)
-        for (j = 0; j < 3u; j++) dst->vl[3u * dv + j] = src->vl[3u * sv + j];
+    if (dst->vl) {
+        dst->vl[3u * dv] = src->vl[3u * sv];
+        dst->vl[3u * dv + 1u] = src->vl[3u * sv + 1u];
+        dst->vl[3u * dv + 2u] = src->vl[3u * sv + 2u];
+    }
 }
 
 typedef struct s48_state {
@@ -121,17 +134,20 @@ typedef struct s48_state {
     subd_stream_ring ring;
     const subd_sr48 *base;
     uint32_t levels, smooth, wt, wv, xv, nv0, n0;
+    uint32_t at, av;   /* the tile window's capacities (uniform)                           */
+    uint32_t tm, tile; /* the tile's levels m; tile: m > 1 (uniform)                       */
+    uint32_t tcur, tend; /* uniform: X's triangles still to emit (tcur < tend: a tile is out) */
     uint32_t t0, k, built, err;
-    uint8_t *lev;      /* levels 0..L-1 blocks of lev_size, then X                         */
+    uint8_t *lev;      /* level windows 0..L-1 (uniform: 0..L-m), blocks of lev_size       */
+    uint8_t *ablk, *xblk; /* the tile window A (uniform), the refined window X          */
     uint32_t lev_size;
-    uint32_t off[8], xoff[8];
+    uint32_t off[8], aoff[8], xoff[8];
     subd_sr48_adapt ad;
     uint32_t adapt;    /* POINT, RAMP, PLANE, CALLBACK: the nested-region cut (subd_sr48_adapt_mode) */
     uint32_t boxed;    /* RAMP, POINT's default radius: 0 until the adaptation box is found */
     subd_real blo[3], bhi[3], radius; /* the adaptation box A; POINT's radius (resolved)  */
     subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
     uint32_t *lgv, *lgvt; /* the level-0 window's vertices and a triangle at each, kept     */
-    uint8_t *xblk;
     subd_sum *sum;     /* 3 per vertex (reserved as 8 bytes each in both arithmetics)     */
     uint32_t *cnt;
     uint8_t *dist;
@@ -182,13 +198,27 @@ static void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
     w->vl = off[7] != 0u ? (subd_real *)(void *)(blk + off[7]) : 0;
 }
 
-/* The one layout of plan and begin (layout.h's walk). */
+/* The tile's depth m (uniform mode): the last m levels are refined breadth first. */
+static uint32_t s48_tile_levels(uint32_t levels, uint32_t uniform)
+{
+    if (!uniform) return 1u;
+    return levels < SUBD_SR48_STREAM_TILE_LEVELS ? (levels > 0u ? levels : 1u) : SUBD_SR48_STREAM_TILE_LEVELS;
+}
+
+/* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
+ * windows, the tile window A (the current level L-m triangle's descendants at one level
+ * below max_level, with their rings) and X of twice A; otherwise levels 0..L-1 and X. */
 static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t nl, uint32_t chord, s48_state **ps,
                       uint8_t **ring, uint32_t *bytes)
 {
     subd_layout y;
-    uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), xv = cv + ct, off[8];
-    uint32_t lsz = s48_win_layout(ct, cv, nl, off), xsz = s48_win_layout(2u * ct, xv, nl, off);
+    const uint32_t m = s48_tile_levels(levels, !nl && !chord), tile = m > 1u;
+    const uint32_t nlev = levels >= m ? levels - m + 1u : 1u;
+    uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
+    uint32_t at = tile ? SUBD_SR48_STREAM_TT_(valence, m) : ct, av = tile ? SUBD_SR48_STREAM_TV_(valence, m) : cv;
+    uint32_t mt = at > ct ? at : ct, xv = (av > cv ? av : cv) + mt;
+    uint32_t lsz = s48_win_layout(ct, cv, nl, off), asz = tile ? s48_win_layout(at, av, nl, off) : 0u;
+    uint32_t xsz = s48_win_layout(2u * mt, xv, nl, off);
     s48_state *s;
     subd_layout_begin(&y, a);
     s = subd_layout_take(&y, 1u, SUBD_STREAM_STATE_BYTES);
@@ -196,19 +226,25 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     if (s) {
         s->wt = ct;
         s->wv = cv;
+        s->at = at;
+        s->av = av;
         s->xv = xv;
+        s->tm = m;
+        s->tile = tile;
         s->lev_size = lsz;
         (void)s48_win_layout(ct, cv, nl, s->off);
-        (void)s48_win_layout(2u * ct, xv, nl, s->xoff);
+        (void)s48_win_layout(at, av, nl, s->aoff);
+        (void)s48_win_layout(2u * mt, xv, nl, s->xoff);
     }
     {
-        uint8_t *lev = subd_layout_take(&y, levels > 0u ? levels : 1u, lsz);
+        uint8_t *lev = subd_layout_take(&y, nlev, lsz);
+        uint8_t *ab = tile ? subd_layout_take(&y, 1u, asz) : 0;
         uint8_t *x = subd_layout_take(&y, 1u, xsz);
         subd_sum *sum = subd_layout_take(&y, 3u * xv, 8u);
         uint32_t *cnt = subd_layout_take(&y, xv, 4u);
         uint8_t *dist = subd_layout_take(&y, xv, 1u);
-        uint16_t *mtab = subd_layout_take(&y, ct, 2u);
-        uint16_t *tmap = subd_layout_take(&y, 2u * ct, 2u);
+        uint16_t *mtab = subd_layout_take(&y, mt, 2u);
+        uint16_t *tmap = subd_layout_take(&y, 2u * mt, 2u);
         uint16_t *vmap = subd_layout_take(&y, xv, 2u);
         uint32_t *gt = subd_layout_take(&y, ct, 4u);
         uint32_t *gv = subd_layout_take(&y, cv, 4u);
@@ -223,6 +259,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->lgv = lgv;
             s->lgvt = lgvt;
             s->lev = lev;
+            s->ablk = ab;
             s->xblk = x;
             s->sum = sum;
             s->cnt = cnt;
@@ -448,26 +485,32 @@ static void s48_set_id(s48_win *w, uint32_t v, uint64_t id)
 static int s48_build0(s48_state *s, uint32_t t0)
 {
     const subd_sr48 *b = s->base;
-    uint32_t nt = 0, nv = 0, i, j, q;
+    uint32_t nt = 0, nv = 0, i, j, q, u, p;
     s48_win w;
     s48_lev(s, 0, &w);
-    for (j = 0; j < 3u; j++) {
-        s->gv[nv] = b->tri_vert[3u * t0 + j];
-        s->gvt[nv] = t0;
-        s->dist[nv++] = 0;
-    }
+    /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
+     * that one window serves both (s48_step) */
+    for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t vx = b->tri_vert[3u * p + j], seen = 0;
+            for (u = 0; u < nv; u++)
+                if (s->gv[u] == vx) seen = 1;
+            if (seen) continue;
+            s->gv[nv] = vx;
+            s->gvt[nv] = p;
+            s->dist[nv++] = 0;
+        }
     for (q = 0; q < nv; q++) {
         uint32_t x = s->gv[q], nf, f;
         if (s->dist[q] >= S48_RINGS) continue;
-        nf = s48_fan(b, x, s->gvt[q], 0, 0xffffu);
+        /* the whole fan at the free tail of gt, then merged (deduplicated): a triangle
+         * appended at nt can only overwrite fan entries already read (nt grows by at most
+         * one per entry read, and nt + nf <= wt) */
+        nf = s48_fan(b, x, s->gvt[q], s->gt + nt, s->wt - nt);
         if (nf == UINT32_MAX) return 0;
-        /* the whole fan into the free tail of gt, then merged (deduplicated) */
-        /* the fan at gt's tail: a triangle appended at nt can only overwrite fan entries
-         * already read (nt grows by at most one per entry read, and nt + nf <= wt) */
-        if (nt + nf > s->wt) return 0;
-        (void)s48_fan(b, x, s->gvt[q], s->gt + (s->wt - nf), nf);
+        for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
         for (f = 0; f < nf; f++) {
-            uint32_t tt = s->gt[s->wt - nf + f], dup = 0, u;
+            uint32_t tt = s->gt[s->wt - nf + f], dup = 0;
             for (i = 0; i < nt; i++)
                 if (s->gt[i] == tt) dup = 1;
             if (dup) continue;
@@ -497,7 +540,8 @@ static int s48_build0(s48_state *s, uint32_t t0)
     for (i = 0; i < nt; i++) {
         uint32_t tt = s->gt[i];
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * tt + j], u = 0, nb, lo, hi;
+            uint32_t vx = b->tri_vert[3u * tt + j], nb, lo, hi;
+            u = 0;
             while (s->gv[u] != vx) u++; /* present: added with the triangle */
             w.tv[3u * i + j] = (uint16_t)u;
             nb = s48_base_nbr(b, tt, j);
@@ -516,6 +560,7 @@ static int s48_build0(s48_state *s, uint32_t t0)
         }
         s48_set_key(&w, i, tt);
         if (tt == t0) w.hd[2] = i;
+        if (tt == (t0 | 1u)) w.hd[4] = i;
     }
     for (i = 0; i < nv; i++) {
         for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
@@ -529,6 +574,9 @@ static int s48_build0(s48_state *s, uint32_t t0)
     return 1;
 }
 
+#ifdef S48_DBG
+uint32_t s48_dbg[40];
+#endif
 static int s48_local(uint16_t n) { return n < S48_BND; }
 
 static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32_t m, int boundary_ok)
@@ -547,6 +595,9 @@ static int s48_refine(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint64_t off = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << k) - 1u);
     uint32_t i, j, nv = nvp, ovf = 0;
+#ifdef S48_DBG
+    s48_dbg[30] += nt; s48_dbg[31]++;
+#endif
     for (i = 0; i < nvp; i++) s48_vcopy(x, i, p, i);
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
@@ -648,14 +699,18 @@ static int s48_refine(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     return 1;
 }
 
-/* Crops X to the triangles within S48_RINGS vertex rings of X's triangles c0 and c0 + 1
- * (the current triangle's children) into window w, in order. */
-static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
+/* Crops X to the triangles within S48_RINGS vertex rings of X's triangles c0 .. c0 + n - 1
+ * (the current triangle's descendants: contiguous, X being sorted by key) into window w of
+ * capacity ct triangles, cv vertices, in order; w's hd[3] is c0's index in w, hd[4] c0 + 1's. */
+static int s48_crop_n(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv)
 {
     const uint32_t nt = x->hd[0], nv = x->hd[1];
     uint32_t i, j, r, kt = 0, kv = 0;
+#ifdef S48_DBG
+    s48_dbg[32] += nt; s48_dbg[33]++;
+#endif
     for (i = 0; i < nv; i++) s->dist[i] = S48_FAR;
-    for (j = 0; j < 6u; j++) s->dist[x->tv[3u * c0 + j]] = 0;
+    for (j = 0; j < 3u * n; j++) s->dist[x->tv[3u * c0 + j]] = 0;
     for (r = 1; r < S48_RINGS; r++)
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = x->tv + 3u * i;
@@ -676,11 +731,11 @@ static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
             s->tmap[i] = S48_OUT;
             continue;
         }
-        if (kt >= s->wt) return 0;
+        if (kt >= ct) return 0;
         s->tmap[i] = (uint16_t)kt++;
         for (j = 0; j < 3u; j++)
             if (s->vmap[tv[j]] == S48_OUT) {
-                if (kv >= s->wv) return 0;
+                if (kv >= cv) return 0;
                 s->vmap[tv[j]] = (uint16_t)kv++;
             }
     }
@@ -693,9 +748,9 @@ static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
         uint16_t t = s->tmap[i];
         if (t == S48_OUT) continue;
         for (j = 0; j < 3u; j++) {
-            uint16_t n = x->tn[3u * i + j];
+            uint16_t nb = x->tn[3u * i + j];
             w->tv[3u * t + j] = s->vmap[x->tv[3u * i + j]];
-            w->tn[3u * t + j] = s48_local(n) ? s->tmap[n] : n;
+            w->tn[3u * t + j] = s48_local(nb) ? s->tmap[nb] : nb;
         }
         w->key[2u * t] = x->key[2u * i];
         w->key[2u * t + 1u] = x->key[2u * i + 1u];
@@ -705,6 +760,12 @@ static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
     w->hd[3] = s->tmap[c0];
     w->hd[4] = s->tmap[c0 + 1u];
     return 1;
+}
+
+/* s48_crop_n to the current triangle's two children c0, c0 + 1, into a level window. */
+static int s48_crop(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
+{
+    return s48_crop_n(s, x, c0, 2u, w, s->wt, s->wv);
 }
 
 /* Window w's triangle t as a stream triangle; 0 when a corner is not exact. *stop: the push
@@ -728,6 +789,51 @@ static int s48_emit(const s48_state *s, const s48_win *w, uint32_t t, subd_strea
     o->face = s->t0;
     o->level = s->levels;
     *stop = subd_stream_q_commit(q);
+    return 1;
+}
+
+/* Uniform tiles: the current triangle t of the level-k window w (k = L - m) refined
+ * breadth first down to max_level: m - 1 times refined into X and cropped into the tile
+ * window A to the rings of t's descendants (contiguous in X: X is sorted by key), then
+ * refined once more into X, whose t's 2^m descendants s->tcur .. s->tend - 1 are emitted
+ * in key order by s48_tile_emit. A contains every window the depth-first walk would crop
+ * for one descendant (a union of rings), so every emitted corner is exact (checked). */
+static int s48_tile(s48_state *s, const s48_win *w, uint32_t t)
+{
+    s48_win x, a;
+    const s48_win *p = w;
+    uint32_t j, lo = t, n = 1;
+    s48_x(s, &x);
+    s48_win_at(s->ablk, s->aoff, &a);
+    for (j = 0; j < s->tm; j++) {
+        if (!s48_refine(s, p, s->k + j, &x)) return 0;
+        lo *= 2u;
+        n *= 2u;
+        if (j + 1u == s->tm) break;
+        if (!s48_crop_n(s, &x, lo, n, &a, s->at, s->av)) return 0;
+#ifdef S48_DBG
+        if (a.hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = a.hd[0];
+        if (a.hd[1] > s48_dbg[2u * j + 1u]) s48_dbg[2u * j + 1u] = a.hd[1];
+#endif
+        lo = a.hd[3];
+        p = &a;
+    }
+    s->tcur = lo;
+    s->tend = lo + n;
+    return 1;
+}
+
+/* The tile's triangles not handed out yet, until the caller's buffer is full or the sink
+ * stops. 0 when a corner is not exact. */
+static int s48_tile_emit(s48_state *s, subd_stream_q *q, int *stop)
+{
+    s48_win x;
+    s48_x(s, &x);
+    while (s->tcur < s->tend && !subd_stream_q_full(q)) {
+        if (!s48_emit(s, &x, s->tcur, q, stop)) return 0;
+        s->tcur++;
+        if (*stop) return 1;
+    }
     return 1;
 }
 
@@ -1098,6 +1204,12 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
     s48_win w, x, c;
     int stop = 0, wants;
     for (;;) {
+        if (s->tcur < s->tend) { /* a tile being handed out */
+            if (!s48_tile_emit(s, q, &stop)) goto fail;
+            if (stop || s->tcur < s->tend) return stop;
+            s48_up(s);
+            return SUBD_OK;
+        }
         if (s->t0 >= s->n0) {
             q->ended = 1;
             return SUBD_OK;
@@ -1105,6 +1217,14 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         if (!s->boxed) {
             if (!s48_adapt_box(s)) goto fail;
             s->boxed = 1;
+        }
+        if (!s->built && !s->adapt && (s->t0 & 1u) && s->levels > 0u) {
+            /* the sibling of the last base triangle: the same level-0 window */
+            s48_lev(s, 0, &w);
+            w.hd[2] = w.hd[4];
+            w.hd[5] = 0;
+            s->k = 0;
+            s->built = 1;
         }
         if (!s->built) {
             if (s->adapt && !s->chord && !s48_level0_lin(s, s->t0)) goto fail;
@@ -1127,6 +1247,10 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             if (!s48_emit_leaf(s, s->k, w.hd[2], q, &stop)) goto fail;
             s48_up(s);
             return stop;
+        }
+        if (s->tile && s->k + s->tm == s->levels) {
+            if (!s48_tile(s, &w, w.hd[2])) goto fail;
+            continue;
         }
         if (s->k + 1u == s->levels) {
             s48_x(s, &x);
@@ -1200,6 +1324,8 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->n0 = base->level_tri[1];
     s->t0 = 0;
     s->k = 0;
+    s->tcur = 0;
+    s->tend = 0;
     s->built = 0;
     s->err = 0;
     s->chord = o->adapt.mode == SUBD_SR48_ADAPT_CHORD ? 1u : 0u;

@@ -3,7 +3,8 @@
  * calls: subd_sr48_build(steps = L) then subd_sr48_extract(UNIFORM, L). On closed and open
  * shapes (tetrahedron: valence 3 input vertices; cube of triangles; icosahedron; a hexagon
  * fan; an open 8x8 grid; two triangles with an isolated-triangle pre-processing; the torus),
- * levels 0..4, smoothing on and off, both arithmetics:
+ * levels 0..7 (uniform tiles alone up to SUBD_SR48_STREAM_TILE_LEVELS, below depth-first
+ * levels beyond), smoothing on and off, both arithmetics:
  *  - the j-th streamed triangle is the extraction's face j: same corners (apex, b0, b1) with
  *    the same position bits;
  *  - ids: one id per extraction vertex and one vertex per id (a bijection), level-0 ids =
@@ -281,7 +282,9 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
 
 static void sr48s_uniform(void)
 {
-    static const uint32_t maxl[S_COUNT] = {6, 4, 3, 5, 1, 6, 3, 4};
+    /* 7 > SUBD_SR48_STREAM_TILE_LEVELS (6): depth-first levels above a tile (7 levels only
+     * where the materialised hierarchy fits the test arena: the two-triangle shape) */
+    static const uint32_t maxl[S_COUNT] = {6, 4, 3, 5, 1, 7, 3, 4};
     int s;
     uint32_t l, f;
     for (s = 0; s < S_COUNT; s++)

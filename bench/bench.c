@@ -1245,7 +1245,7 @@ static void section_sr48chord(void)
             sso.adapt.mode = SUBD_ADAPT_CHORD;
             sso.adapt.max_level = steps;
             sso.adapt.eps = D2R(epss[e]);
-            if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;
+            if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, 0) != SUBD_OK) continue;
             if ((double)bound * 2.0 > 2.0 * PLAN_LIMIT) { /* the bunny's 6 steps need ~1.6 GB */
                 printf("%-24s skipped (materialised above %.1f GB)\n", m->name, 2.0 * PLAN_LIMIT / 1e9);
                 continue;
@@ -1254,7 +1254,7 @@ static void section_sr48chord(void)
             if (!mem) continue;
             t0 = host_now_ns();
             st = subd_sr48_build(&a, &m->hm.mesh, &so, &h, &d);
-            if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &sso.adapt, &xplan);
+            if (st == SUBD_OK) st = subd_sr48_extract_plan(&h, &sso.adapt, &xplan, 0);
             if (st == SUBD_OK) st = subd_sr48_extract(&a, &h, &sso.adapt, &out, &rep, &d);
             tm = host_now_ns() - t0;
             mh = a.peak;

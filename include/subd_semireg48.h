@@ -417,13 +417,17 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
     (SUBD_SR48_STREAM_BYTES(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
 /* The plan of CHORD: the uniform plan plus the subtree walk's state (per level: the node,
- * its child state and its corners' sources, 5 words; the star's keys,
- * 2 words per window triangle; a direct-mapped cache of SUBD_SR48_STREAM_CHORD_CACHE_
- * verdicts, 3 words each) and the walk's finest positions (3 subd_reals per level + 4). */
-#define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
+ * its child state, its corners' sources and whether it counts, 6 words; the star's keys,
+ * 2 words per window triangle), the decided diamond's descendant diamonds of its first
+ * SUBD_SR48_STREAM_CHORD_EXACT_ levels below (at most 2 * 4^j triangles j levels down, 3
+ * words each, and a count per level; src/sr48_chord.c) and the walk's finest positions
+ * (3 subd_reals per level + 4). */
+#define SUBD_SR48_STREAM_CHORD_EXACT_ 3u
+#define SUBD_SR48_STREAM_CHORD_DESC_ (2u * ((1u << (2u * (SUBD_SR48_STREAM_CHORD_EXACT_ + 1u))) - 1u) / 3u)
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
     (SUBD_SR48_STREAM_BYTES(L, N) + \
-     SUBD_SR48_SA_(4u * (5u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + 3u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \
+     SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
+                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_)) + \
      SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u)))
 
 #ifdef __cplusplus

@@ -349,18 +349,18 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   level < max_level that is in the cut or split (as subd_sr48_extract: level 0 and the
  *   children of split triangles). Plan: SUBD_SR48_STREAM_ADAPT_BYTES.
  * Chordal cuts (CHORD; src/sr48_chord.c has the criterion and its proof): a level-k diamond
- *   splits iff some triangle of its star (the level-k triangles sharing a vertex with it)
- *   has a descendant d (or is one) with subd_sr48_extract's chordal deviation E(d) > eps.
- *   The criterion nests (a diamond that splits has parents that split), so it is decided
- *   top down with no forced split, and every vertex of level <= max_level lies within eps
- *   of the streamed mesh (Q16.16: eps + 2^-16, as subd_sr48_extract). It is not
- *   subd_sr48_extract(CHORD)'s cut but contains it: measured 1.04x its faces on the test
- *   shapes, 1.77x (eps 0.002) and 1.79x (eps 5e-4) on spot at 6 steps. Each decision
- *   walks the subtrees of the star down to max_level with the windows of the deeper levels
- *   (a verdict cache of SUBD_SR48_STREAM_CHORD_CACHE_ entries reuses "within" for
- *   descendants): O(window * (max_level - k) * 2^(max_level - k)) per star triangle,
- *   measured about 250x slower than subd_sr48_build + subd_sr48_extract(CHORD) on spot
- *   (bench -s sr48chord). Plan: SUBD_SR48_STREAM_CHORD_BYTES.
+ *   D splits iff a triangle d of S(D) has subd_sr48_extract's chordal deviation E(d) > eps;
+ *   S(D) is D and the diamonds whose split forces D's (the way subd_sr48_extract's forced
+ *   splits propagate) for SUBD_SR48_STREAM_CHORD_EXACT_ levels below D, then every
+ *   triangle under the stars of the deepest of those diamonds. The criterion nests (a
+ *   diamond that splits has parents that split), so it is decided top down with no forced
+ *   split, and every vertex of level <= max_level lies within eps of the streamed mesh
+ *   (Q16.16: eps + 2^-16, as subd_sr48_extract). It is not subd_sr48_extract(CHORD)'s cut
+ *   but contains it: measured 1.000x its faces on the test shapes, @SPOT@ on spot at 6
+ *   steps. Each decision walks the subtrees under D's star that may hold a triangle of
+ *   S(D) down to max_level with the windows of the deeper levels: O(window * (max_level - k)
+ *   * 2^(max_level - k)) per star triangle, measured @SPEED@ (bench -s sr48chord).
+ *   Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
  * vertex keeps its base index; the vertex created at level k >= 1 by the diamond whose

@@ -63,18 +63,20 @@
  * base vertex (s48_adapt_box); CALLBACK asks fn on the same box as POINT/RAMP/PLANE.
  *
  * Chordal cuts (CHORD; the criterion, why it nests and why it is conservative: sr48_chord.c):
- * the current triangle's diamond splits iff a triangle of its star (as above: in the window)
- * has W > eps, W its subtree's largest chordal deviation of subd_sr48_extract's kind. W of
- * a star triangle is found by walking its subtree to max_level with the windows of the
- * levels below (s48_chord_walk: free at the decision); the current triangle is walked in
- * place, another one after rebuilding the windows 0..k along its path (s48c_path: the same
- * calls, so the same bits), and the current path is rebuilt afterwards. A direct-mapped
- * cache keeps verdicts by key (a "within" covers the descendants).
+ * the current triangle's diamond D splits iff a triangle of S(D) (the diamonds whose split
+ * forces D's, S48C_M levels down, then the stars of the deepest of them) has a chordal
+ * deviation of subd_sr48_extract's kind above eps. F(D)'s first levels come from the
+ * level-k window's adjacency (s48c_desc); S(D) lies under D's star (in the window), whose
+ * triangles are walked to max_level with the windows of the levels below (s48_chord_walk:
+ * free at the decision; a triangle whose subtree cannot hold a member is skipped,
+ * s48c_may); the current triangle is walked in place, another one after rebuilding the
+ * windows 0..k along its path (s48c_path: the same calls, so the same bits), and the
+ * current path is rebuilt afterwards.
  *
  * Memory: the fixed state block, the overflow ring (2 triangles), L + 1 window blocks
  * (level L uses only its header), the refined window (twice the triangles), the smoothing
- * sums and the crop's maps (CHORD: the walk's per-level state, the star's keys, the verdict
- * cache); all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
+ * sums and the crop's maps (CHORD: the walk's per-level state, the star's keys, F(D)'s
+ * first levels); all sized by the window capacities of SUBD_SR48_STREAM_BYTES,
  * which depend on the largest valence only.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */

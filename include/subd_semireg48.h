@@ -356,8 +356,8 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   diamond that splits has parents that split), so it is decided top down with no forced
  *   split, and every vertex of level <= max_level lies within eps of the streamed mesh
  *   (Q16.16: eps + 2^-16, as subd_sr48_extract). It is not subd_sr48_extract(CHORD)'s cut
- *   but contains it: measured 1.000x its faces on the test shapes, 1.15x (eps 0.002) on spot
- *   at 6 steps. Each decision walks the subtrees under D's star that may hold a triangle of
+ *   but contains it: measured 1.000x its faces on the test shapes, 1.15x (eps 0.002) and
+ *   1.08x (eps 5e-4) on spot at 6 steps. Each decision walks the subtrees under D's star that may hold a triangle of
  *   S(D) down to max_level with the windows of the deeper levels: O(window * (max_level - k)
  *   * 2^(max_level - k)) per star triangle, measured 166 s of CPU on spot at 6 steps and
  *   eps 0.002, against 0.21 s for subd_sr48_build + subd_sr48_extract(CHORD) (bench -s

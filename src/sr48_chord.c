@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Chordal cuts of the streamed semi-regular 4-8 surface (SUBD_ADAPT_CHORD in
+/* Chordal cuts of the streamed semi-regular 4-8 surface (SUBD_SR48_ADAPT_CHORD in
  * subd_sr48_stream, src/sr48_stream.c): the deviation test of one vertex against the linear
  * interpolant of one ancestor triangle. Paper: semi-regular-4-8-refinement-box-splines.txt,
  * section 3 (a diamond is split as a whole, splits force their parents: the restricted
@@ -49,7 +49,7 @@
  * How far from it: the stream also counts triangles that are not active in the
  * materialised cut, and the ring of star(G) around F(D) from level k + M on, where
  * deviations are about 2^-M of level k's on a smooth surface (E scales with the squared
- * edge length, which halves per level). Measured: subd_semireg48.h. The criterion of
+ * edge length, which halves per level). Measured: subd_sr48.h. The criterion of
  * 0.4.0 (every triangle under star(D), about 4x F(D)'s area near level k) cut 1.77x.
  *
  * Where S(D) lies: F(D) is under star(D) (the lemma, by induction along the chain), so is

@@ -10,29 +10,57 @@
  * of vertex v at the finest level max_level (subd_sr48_build's), L_d the linear
  * interpolation of triangle d's corners P at dyadic parameters (the parameter of a split
  * vertex is the midpoint of its node's base, as in sr48_extract.c's walk), and
- *   E(d)  = max |P(v) - L_d(v)| over the vertices v created inside d's subtree down to
- *           max_level (subd_sr48_extract's exact chordal deviation of d),
- *   W(t)  = max E(d) over t and its descendants of levels < max_level (saturated: W of a
- *           child is at most W of its parent, because its descendants are a subset),
- *   star(D) = the level-k triangles that share a vertex with diamond D (sr48_extract.c's
- *           nested region: the star of a child diamond lies in the children of the stars
- *           of both parent diamonds).
- * The stream splits a level-k diamond D iff W(s) > eps for some s in star(D). Nested: a
- * child diamond's star is made of children of triangles of both parents' stars, and W does
- * not grow from parent to child (the computed values are the same numbers: E(d) depends on
- * d only), so a diamond that splits has parents that split - the cut is exactly the set of
- * diamonds that ask, decided top down with no lookahead and no forced split. Conservative:
- * a leaf t of the cut (its diamond does not split) has E(t) <= W(t) <= eps, so every
- * finest-level vertex created inside t lies within eps of the emitted triangle (L_t(v) is a
- * point of it), up to the rounding documented below; every finest vertex lies in some leaf.
- * The cut contains subd_sr48_extract(CHORD)'s (a diamond whose triangle has E > eps has
- * W > eps, and its forced parents are split by nesting): more faces, never fewer.
+ *   E(d)    = max |P(v) - L_d(v)| over the vertices v created inside d's subtree down to
+ *             max_level (subd_sr48_extract's exact chordal deviation of d; d asks for a
+ *             split iff E(d) > eps),
+ *   star(D) = the triangles of D's level that share a vertex with diamond D,
+ *   F(D)    = the diamonds whose split forces D's: a child diamond of D (a child c of a
+ *             triangle of D with c's base neighbour, a child of a leg neighbour) needs both
+ *             its triangles' parents split, so D and the leg neighbour's diamond; F(D) is
+ *             the closure: level k + 1 the diamonds of the children of D's triangles,
+ *             level j + 1 those of the children of level j's triangles. The materialised
+ *             cut splits D iff a diamond of {D} + F(D) has a triangle that asks (forced
+ *             splits travel exactly along this relation), evaluated on active triangles.
+ *   S(D)    = for D of level k and M = SUBD_SR48_STREAM_CHORD_EXACT_ (3): the triangles of
+ *             {D} + F(D) of levels k .. k + M - 1, and every triangle of level >= k + M in
+ *             the subtrees of star(G) for the diamonds G of F(D) of level k + M (none when
+ *             k + M >= max_level: then S(D) is all of {D} + F(D) below max_level).
+ * The stream splits a level-k diamond D iff E(d) > eps for some d in S(D).
  *
- * Why exact and not an a-priori bound from the level-k control net (second differences
- * times the box spline's contraction): a rigorous constant needs the contraction at
- * extraordinary vertices, with smoothing on and off, in both arithmetics; not derived yet
- * (issue 20, item 4). W is computed by walking the subtree with the stream's own windows
- * (sr48_stream.c, s48_chord_walk); this file holds the arithmetic of one test.
+ * Lemma (stars nest; sr48_extract.c's nested region): for a child diamond D' of level
+ * k + 1 and each of its two parent diamonds P (the diamonds of its triangles' parents),
+ * star(D') lies in the children of star(P): D' touches only the two new vertices of its
+ * parents and the ends of the leg between them, and a triangle at such a vertex is a
+ * child of a level-k triangle at it or at the leg's ends.
+ * Nested: let D' split (E(d) > eps for a d in S(D')), D' a child diamond of D (D is one of
+ * its parents, D' is in F(D)). (a) d in {D'} + F(D') of level < k + 1 + M: that set is in
+ * F(D) (a closure), so d is in F(D) at a level k + 1 .. k + M: in the first part of S(D) below
+ * k + M, else d's diamond is a G of level k + M and d is in star(G). (b) d of level
+ * >= k + 1 + M under star(H) for H in F(D') of level k + 1 + M: a parent diamond P of H is
+ * in F(D') at level k + M (H is forced through a chain), so in F(D), and by the lemma d
+ * lies under star(P): in the second part of S(D). So S(D') is in S(D) and D splits: a
+ * diamond that splits has parents that split, the cut is exactly the set of diamonds that
+ * ask, decided top down with no lookahead and no forced split.
+ * Conservative: D is in S(D), so a leaf t of the cut (its diamond does not split) has
+ * E(t) <= eps: every finest-level vertex created inside t lies within eps of the emitted
+ * triangle (L_t(v) is a point of it), up to the rounding below; every finest vertex lies
+ * in some leaf. The cut contains subd_sr48_extract(CHORD)'s: a diamond split there has a
+ * diamond in {D} + F(D) with a triangle that asks, and that triangle is in S(D).
+ * How far from it: the stream also counts triangles that are not active in the
+ * materialised cut, and the ring of star(G) around F(D) from level k + M on, where
+ * deviations are about 2^-M of level k's on a smooth surface (E scales with the squared
+ * edge length, which halves per level). Measured: subd_sr48.h. The criterion of
+ * 0.4.0 (every triangle under star(D), about 4x F(D)'s area near level k) cut 1.77x.
+ *
+ * Where S(D) lies: F(D) is under star(D) (the lemma, by induction along the chain), so is
+ * every star(G) of level k + M; the stream walks the subtrees of star(D)'s triangles that
+ * may hold a member (sr48_stream.c, s48c_may) with its windows, finds F(D)'s first M + 1
+ * levels from the level-k window's adjacency by the refinement's local neighbour rule
+ * (every triangle asked for is under star(D), so in the window), and does not enter a
+ * level k + M triangle outside the stars of F(D)'s. Why exact and not an a-priori bound
+ * from the level-k control net (second differences times the box spline's contraction):
+ * a rigorous constant needs the contraction at extraordinary vertices, with smoothing on
+ * and off, in both arithmetics; not derived (issue 20, item 4).
  *
  * Rounding (subd_sr48_extract's CHORD uses this same test): L is
  * carried in Q32.32 in Q16.16 builds (16 halvings exact, then rounded to Q16.16 and

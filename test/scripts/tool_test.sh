@@ -501,6 +501,22 @@ for bin in "$FLOAT" "$FIXED"; do
     ni=$(json_num faces)
     is 0 && [ "$ni" -lt "$(json_num uniform_faces)" ] && tri_dist_check 0.05 $slack "$T/cu.off" "$T/ci.obj" 2> "$T/err"
     check $? "$name adapt --stream --chord 0.05 -l 4 icosahedron: every level-4 vertex within eps of the $ni streamed faces"
+    # semireg48 --stream in every output format: semireg48's triangles, one checksum, --stats counts
+    run "$bin" semireg48 -l 3 test/data/icosahedron.obj -o "$T/sm.off" --stats
+    nm=$(json_num faces)
+    ok=0 sum=
+    for fmt in off obj stl none; do
+        if [ $fmt = none ]; then run "$bin" semireg48 --stream -l 3 test/data/icosahedron.obj --stats
+        else run "$bin" semireg48 --stream -l 3 test/data/icosahedron.obj -o "$T/ss.$fmt" --stats; fi
+        s1=$(sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/\1/p' "$T/out")
+        { is 0 && [ "$(json_num triangles)" = "$nm" ] && [ "$(json_num uniform_faces)" = "$nm" ] &&
+            [ "$(json_num saved_faces)" = 0 ] && [ "$(json_num stream_arena)" -gt 0 ] && [ -n "$s1" ] &&
+            { [ -z "$sum" ] || [ "$s1" = "$sum" ]; }; } || ok=1
+        sum=$s1
+    done
+    [ $ok = 0 ] && [ "$(off_faces "$T/sm.off")" = "$(off_faces "$T/ss.off")" ] &&
+        [ "$(off_faces "$T/sm.off")" = "$(obj_faces "$T/ss.obj")" ] && [ "$(wc -c < "$T/ss.stl")" = $((84 + 50 * nm)) ]
+    check $? "$name semireg48 --stream -l 3 -o .off/.obj/.stl/none: semireg48's $nm triangles, one checksum, --stats counts"
 done
 usage_case_pre adapt -l 4 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt without a mode: exit 1"
 usage_case_pre adapt -l 4 --ramp w demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --ramp w: exit 1"

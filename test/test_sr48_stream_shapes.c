@@ -13,7 +13,7 @@
  * device, whose RAM and time are small); both arithmetics through the build.
  *
  * For every cut, independently of the stream's code:
- *  - ids: the closed form of include/subd_semireg48.h recomputed from the hierarchy of
+ *  - ids: the closed form of include/subd_sr48.h recomputed from the hierarchy of
  *    subd_sr48_build(steps = L) (a level-0 vertex keeps its index; the vertex made at level k
  *    by the diamond whose lower triangle is the i-th of level k-1 gets V0 + T0 (2^(k-1) - 1) +
  *    i); every streamed corner's id names a hierarchy vertex whose position has the corner's
@@ -315,18 +315,18 @@ static uint32_t sh_view_level(void *ctx, const subd_real *lo, const subd_real *h
 }
 
 /* One cut of one shape: every property of the file comment. */
-static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_adapt *ad0, const char *hash)
+static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_sr48_adapt *ad0, const char *hash)
 {
     subd_arena a, sa;
     static subd_mesh in, out; /* static: the device's stack limit */
     static subd_sr48 h, base;
-    static subd_adapt_report rep;
+    static subd_sr48_adapt_report rep;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
     subd_diag d;
     subd_tri_sink sink;
     uint32_t plan = 0, want, nid = 0, i, c, q, bad = 0, ne = 0, nb = 0, nvert = 0, nused = 0, val, low = 0;
-    int chord = ad0->mode == SUBD_ADAPT_CHORD, uniform = ad0->mode == SUBD_ADAPT_UNIFORM;
+    int chord = ad0->mode == SUBD_SR48_ADAPT_CHORD, uniform = ad0->mode == SUBD_SR48_ADAPT_UNIFORM;
     subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
     if (!sh_shape(shape, &a, &in)) return;
     o.steps = levels;
@@ -527,28 +527,28 @@ static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_adapt
 /* The adaptation settings: UNIFORM, PLANE, POINT (radius 0.15; 0.6 from below), RAMP x, y,
  * z, POINT's default radius, CALLBACK, CHORD 0.05 and 0.01. */
 #define SH_SETTINGS 11u
-static void sh_setting(uint32_t m, subd_adapt *ad)
+static void sh_setting(uint32_t m, subd_sr48_adapt *ad)
 {
     memset(ad, 0, sizeof *ad);
     switch (m) {
-    case 0: ad->mode = SUBD_ADAPT_UNIFORM; break;
+    case 0: ad->mode = SUBD_SR48_ADAPT_UNIFORM; break;
     case 1:
-        ad->mode = SUBD_ADAPT_PLANE;
+        ad->mode = SUBD_SR48_ADAPT_PLANE;
         ad->point[0] = sh_real(0.1);
         ad->normal[0] = sh_real(1); ad->normal[1] = sh_real(0.5); ad->normal[2] = sh_real(0.25);
         break;
     case 2: case 3:
-        ad->mode = SUBD_ADAPT_POINT;
+        ad->mode = SUBD_SR48_ADAPT_POINT;
         ad->point[0] = sh_real(0.5); ad->point[1] = sh_real(0.4); ad->point[2] = sh_real(m == 2u ? 0.3 : -2);
         ad->radius = sh_real(m == 2u ? 0.15 : 0.6);
         break;
-    case 4: case 5: case 6: ad->mode = SUBD_ADAPT_RAMP; ad->axis = m - 4u; break;
+    case 4: case 5: case 6: ad->mode = SUBD_SR48_ADAPT_RAMP; ad->axis = m - 4u; break;
     case 7:
-        ad->mode = SUBD_ADAPT_POINT;
+        ad->mode = SUBD_SR48_ADAPT_POINT;
         ad->point[0] = sh_real(0.5); ad->point[1] = sh_real(0.4); ad->point[2] = sh_real(0.3);
         break;
-    case 8: ad->mode = SUBD_ADAPT_CALLBACK; ad->fn = sh_view_level; break;
-    default: ad->mode = SUBD_ADAPT_CHORD; ad->eps = sh_real(m == 9u ? 0.05 : 0.01); break;
+    case 8: ad->mode = SUBD_SR48_ADAPT_CALLBACK; ad->fn = sh_view_level; break;
+    default: ad->mode = SUBD_SR48_ADAPT_CHORD; ad->eps = sh_real(m == 9u ? 0.05 : 0.01); break;
     }
 }
 
@@ -560,7 +560,7 @@ static void sr48sh_shapes(void)
                                            H_HOST ? 1u : 0u, H_HOST ? 4u : 2u, H_HOST ? 3u : 1u};
     static const char *const names[P_BIPYR] = {"sr48sh_tet", "sr48sh_cube", "sr48sh_ico", "sr48sh_hexfan",
                                                 "sr48sh_grid", "sr48sh_two", "sr48sh_torus"};
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     uint32_t s, l, f, m;
     for (m = 0; m < SH_SETTINGS; m++) {
         sh_setting(m, &ad);
@@ -591,7 +591,7 @@ static void sr48sh_shapes(void)
  * at level 1), smoothing on and off. */
 static void sr48sh_valences(void)
 {
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     uint32_t m, f;
     g_vmin = 99;
     g_vmax = 0;

@@ -4,7 +4,7 @@
  *
  * The mesh is test/data/icosahedron.obj, read from the same bytes the host tool reads (the
  * test corpus, build/gen/corpus.c, is linked into the demo). Its base mesh (subd_sr48_base)
- * stays in the main arena; then subd_sr48_stream cuts it with SUBD_ADAPT_CHORD (eps 0.01,
+ * stays in the main arena; then subd_sr48_stream cuts it with SUBD_SR48_ADAPT_CHORD (eps 0.01,
  * DSR_STEPS binary steps) into a checksum sink (the FNV-1a of `subd ... --stream --stats`),
  * in a static buffer of SUBD_SR48_STREAM_CHORD_BYTES(DSR_STEPS, 10) bytes (the base's largest
  * valence is 10): the demo checks buffer = plan = the arena's peak. 9 steps: the least at
@@ -114,11 +114,11 @@ static int dsr_closed(const subd_sr48 *b)
 
 /* The closed form against subd_sr48_build at DSR_CHECK_STEPS: counts, kept bytes, extract
  * plan. */
-static int dsr_check_counts(subd_arena *arena, const subd_mesh *m, const subd_sr48 *base, const subd_adapt *ad)
+static int dsr_check_counts(subd_arena *arena, const subd_mesh *m, const subd_sr48 *base, const subd_sr48_adapt *ad)
 {
     subd_sr48_opts o;
     subd_sr48 h, c;
-    subd_adapt a2 = *ad;
+    subd_sr48_adapt a2 = *ad;
     subd_diag d;
     uint32_t mark = subd_arena_mark(arena), kept, k, p1 = 0, p2 = 0;
     int st, ok;
@@ -142,7 +142,7 @@ static int dsr_check_counts(subd_arena *arena, const subd_mesh *m, const subd_sr
 
 /* One stream of the base into the checksum sink in dsr_buf: plan, buffer, peak, hash and
  * instructions per face printed. */
-static int dsr_stream(const subd_sr48 *base, const subd_adapt *ad, uint32_t *faces)
+static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t *faces)
 {
     subd_sr48_stream_opts so;
     subd_arena sa;
@@ -187,7 +187,7 @@ int demo_sr48_chord(subd_arena *arena)
     subd_mesh m;
     subd_sr48 base, c;
     subd_sr48_opts o;
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     subd_diag d;
     uint32_t mark = subd_arena_mark(arena), clusters = 0, build = 0, extract = 0, kept, mat, faces = 0;
     int st;
@@ -200,7 +200,7 @@ int demo_sr48_chord(subd_arena *arena)
     dsr_kv("input mesh + base mesh arena bytes (main arena)", subd_arena_mark(arena) - mark);
     dsr_kv("base triangles", base.level_tri[1]);
     memset(&ad, 0, sizeof ad);
-    ad.mode = SUBD_ADAPT_CHORD;
+    ad.mode = SUBD_SR48_ADAPT_CHORD;
     ad.max_level = DSR_STEPS;
     p = eps_text;
     if ((st = subd_real_parse(&p, eps_text + 4, &ad.eps)) != SUBD_OK) return dsr_fail("eps", st, 0);
@@ -236,7 +236,7 @@ int demo_sr48_chord(subd_arena *arena)
 
     print_str("uniform stream, 6 binary steps (same base):\n");
     memset(&ad, 0, sizeof ad);
-    ad.mode = SUBD_ADAPT_UNIFORM;
+    ad.mode = SUBD_SR48_ADAPT_UNIFORM;
     ad.max_level = DSR_UNIFORM_STEPS;
     if ((st = dsr_stream(&base, &ad, &faces)) != SUBD_OK) return st;
     subd_arena_rewind(arena, mark);

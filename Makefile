@@ -130,6 +130,9 @@ $(B)/$(1)/selftest%.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/selftest%.o
 	$$(CM_LINK_$(1)) $$^ -o $$@
 $(B)/$(1)/demo.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/port/cortex-m/demo.o $(B)/$(1)/libsubd.a
 	$$(CM_LINK_$(1)) $$^ -o $$@
+# The 4-8 chordal stream step of the demo reads test/data/icosahedron.obj from the corpus.
+$(B)/$(1)/demo.elf: $(B)/$(1)/port/cortex-m/demo_sr48.o $(B)/$(1)/gen/corpus.o
+$(B)/$(1)/port/cortex-m/demo_sr48.o: | $(B)/gen/corpus.h
 # Kept (not deleted as intermediates), so a build with nothing changed does nothing.
 .SECONDARY: $(foreach n,0 1 2 3,$(B)/$(1)/selftest$(n).o)
 $(1)-images: $(B)/$(1)/test.elf $(B)/$(1)/test-fail.elf $(foreach n,0 1 2 3,$(B)/$(1)/selftest$(n).elf)
@@ -355,9 +358,9 @@ demo: deps
 demo-run: $(B)/m4f-float/demo.elf $(B)/m3-fixed/demo.elf tool
 	@mkdir -p $(B)/demo
 	@echo "== firmware demo, Cortex-M4F float32 (QEMU mps2-an386)"
-	@qemu/run.sh mps2-an386 $(B)/m4f-float/demo.elf 120
+	@{ qemu/run.sh mps2-an386 $(B)/m4f-float/demo.elf 600; echo $$? > $(B)/demo/m4f-float.rc; } | tee $(B)/demo/m4f-float.log; exit $$(cat $(B)/demo/m4f-float.rc)
 	@echo "== firmware demo, Cortex-M3 Q16.16 (QEMU mps2-an385)"
-	@qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 120
+	@{ qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 600; echo $$? > $(B)/demo/m3-fixed.rc; } | tee $(B)/demo/m3-fixed.log; exit $$(cat $(B)/demo/m3-fixed.rc)
 	@echo "== host tool (pictures in $(B)/demo/)"
 	@demo/host_demo.sh $(B)/bin $(B)/demo
 

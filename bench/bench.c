@@ -20,7 +20,8 @@
  * stream against build + extract(CHORD), 6 steps, eps 0.002 and 5e-4) and demostream (only when named,
  * alone, no files read: the firmware demo's streaming step on the host, the same lines and
  * hash as port/cortex-m/demo.c prints under QEMU; compile with -DSUBD_FIXED=1 for the
- * Q16.16 hash). Build with -O2, no sanitizers.
+ * Q16.16 hash) and sr48table (only when named, alone: the 4-8 stream's arena table from the
+ * plan macros). Build with -O2, no sanitizers.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -1727,6 +1728,37 @@ static char **list_objs(const char *dir, int *n)
     return list;
 }
 
+/* The semi-regular 4-8 stream's memory table (README): SUBD_SR48_STREAM_BYTES, and the plans of
+ * the adaptive modes and of CHORD, for binary steps 2..16 and base valences 4, 8, 12, 16, 32,
+ * computed from the header's macros (each equal to subd_sr48_stream_plan: test_sr48_stream*.c),
+ * so the table follows any change of the layout. No files read. */
+static int section_sr48table(void)
+{
+    static const uint32_t val[5] = {4, 8, 12, 16, 32};
+    uint32_t m, l, v;
+    printf("tinysubd %s: semi-regular 4-8 stream arena bytes (reproduce: build/bench/bench -s sr48table)\n"
+           "rows: binary steps L (adapt.max_level); columns: the base mesh's largest valence N (values below 8 "
+           "count as 8);\nthe plan depends on nothing else (not on the mesh size or the output).\n",
+           SUBD_VERSION);
+    for (m = 0; m < 3u; m++) {
+        printf("\n%s\n%5s", m == 0u ? "uniform: SUBD_SR48_STREAM_BYTES(L, N)"
+                             : m == 1u ? "POINT, RAMP, PLANE, CALLBACK: SUBD_SR48_STREAM_ADAPT_BYTES(L, N)"
+                                       : "CHORD: SUBD_SR48_STREAM_CHORD_BYTES(L, N)", "L");
+        for (v = 0; v < 5u; v++) printf(" %9s%-2u", "N=", val[v]);
+        printf("\n");
+        for (l = 2; l <= SUBD_SR48_MAX_STEPS; l++) {
+            printf("%5u", l);
+            for (v = 0; v < 5u; v++)
+                printf(" %11u", m == 0u ? SUBD_SR48_STREAM_BYTES(l, val[v])
+                                : m == 1u ? SUBD_SR48_STREAM_ADAPT_BYTES(l, val[v]) : SUBD_SR48_STREAM_CHORD_BYTES(l, val[v]));
+            printf("\n");
+        }
+    }
+    printf("\ntarget (issue 20): uniform at L = 16, N = 16 <= 16384 bytes: %u (%.2fx)\n", SUBD_SR48_STREAM_BYTES(16, 16),
+           (double)SUBD_SR48_STREAM_BYTES(16, 16) / 16384.0);
+    return 0;
+}
+
 static int section_on(const char *sections, const char *name)
 {
     const char *p = sections;
@@ -1746,7 +1778,8 @@ static int usage(int rc)
 {
     fprintf(rc ? stderr : stdout,
             "usage: bench [-t SECONDS] [-s parse,format,loop,limit,q48,alpha,quality,pia,sr48,sr48stream,stream,fanbuild,valence48] [FILE.obj ...]\n"
-            "       bench -s demostream\n");
+            "       bench -s demostream\n"
+            "       bench -s sr48table\n");
     return rc;
 }
 
@@ -1771,6 +1804,7 @@ int main(int argc, char **argv)
         }
     }
     if (sections && strcmp(sections, "demostream") == 0) return section_demostream();
+    if (sections && strcmp(sections, "sr48table") == 0) return section_sr48table();
     nfiles = argc - i;
     files = argv + i;
     if (nfiles == 0) {

@@ -65,3 +65,25 @@ echo "-- alpha tags (semi-stationary paper, section 3, figure 4(d))"
 # cos kernel, S_3: the tagged corner is pulled in; the untagged run beside it for comparison
 run alpha_tags_fig4d alpha --order 3 --kernel cos -l 4 --tags demo/fig4d_alpha.tags test/data/cube_quad.obj --yaw 45 --pitch 0
 run alpha_tags_fig4d_untagged alpha --order 3 --kernel cos -l 4 test/data/cube_quad.obj --yaw 45 --pitch 0
+
+echo "-- semi-regular 4-8 streams: the firmware demo's checksums = the host tool's"
+# port/cortex-m/demo_sr48.c streams test/data/icosahedron.obj (chordal, eps 0.01, 9 binary
+# steps; uniform, 6 steps) under QEMU; `make demo` keeps each image's output in OUT_DIR/*.log.
+# The tool's --stats checksum is the same FNV-1a over the same triangles' position bits.
+sr48_device_sum() { # LOG SECTION_START: the first checksum after the section's title line
+    awk -v s="$2" 'index($0, s) == 1 { f = 1 } f && $1 == "checksum" { print $2; exit }' "$1" | sed 's/^0x//'
+}
+sr48_host_sum() { "$@" --stats | sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/\1/p'; }
+for v in "m4f-float subd" "m3-fixed subd-fixed"; do
+    set -- $v
+    log=$out/$1.log
+    [ -f "$log" ] || { echo "no $log (run make demo): not compared"; continue; }
+    hc=$(sr48_host_sum "$bin/$2" adapt --stream --chord 0.01 -l 9 test/data/icosahedron.obj)
+    hu=$(sr48_host_sum "$bin/$2" semireg48 --stream -l 6 test/data/icosahedron.obj)
+    dc=$(sr48_device_sum "$log" "chordal stream, eps 0.01") du=$(sr48_device_sum "$log" "uniform stream, 6 binary")
+    echo "$1: chordal checksum device $dc, host $hc; uniform device $du, host $hu"
+    if [ -z "$hc" ] || [ "$hc" != "$dc" ] || [ -z "$hu" ] || [ "$hu" != "$du" ]; then
+        echo "FAILED: the device's 4-8 stream checksums differ from $2's" >&2
+        exit 1
+    fi
+done

@@ -11,6 +11,7 @@
 #include "print.h"
 #include "port_cm.h"
 #include "demo_mesh.h"
+#include "demo_sr48.h" /* the 4-8 chordal stream step (demo_sr48.c) */
 
 /* The whole memory budget of the demo. The plan calls below say exactly how much of it
  * each step needs; the demo checks before it builds. */
@@ -393,6 +394,7 @@ int main(void)
     subd_arena_init(&arena, arena_buf, sizeof arena_buf);
     st = demo_icosahedron(&arena);
     if (st == SUBD_OK) st = demo_stream(&arena);
+    if (st == SUBD_OK) st = demo_sr48_chord(&arena);
     kv("stack bytes used", port_stack_used());
     if (st != SUBD_OK) {
         print_str("demo failed: ");

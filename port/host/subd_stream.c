@@ -287,6 +287,39 @@ static int gather_alloc(tool_run *r, stream_sink *s, const stream_counts *c)
     return EXIT_OK;
 }
 
+/* The triangle count of a stream that chooses its own cut (adapt --stream: subd_sr48_stream
+ * of base with the command's adaptation, every mode but uniform; loop --stream --limit --chord:
+ * subd_loop_adapt_stream when base is NULL), by one pass into a counting sink: STL's header
+ * needs it first and OUTPUT may be a pipe, so it cannot be patched afterwards. The one home
+ * of the tool's counting passes. */
+static int adapt_count_tri(void *ctx, const subd_loop_tri *t)
+{
+    (void)t;
+    ++*(uint64_t *)ctx;
+    return 0;
+}
+
+static int stream_count_pass(tool_run *r, subd_arena *a, subd_diag *d, const subd_sr48 *base, uint64_t *n)
+{
+    subd_tri_sink sink;
+    double t0 = host_now_ns();
+    int st;
+    *n = 0;
+    sink.tri = adapt_count_tri;
+    sink.ctx = n;
+    if (base) {
+        subd_sr48_stream_opts so;
+        memset(&so, 0, sizeof so);
+        so.adapt = tool_sr48_adapt(&r->o);
+        st = subd_sr48_stream(a, base, &so, &sink, d);
+    } else {
+        subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
+        st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
+    }
+    r->lib_ns += host_now_ns() - t0;
+    return st;
+}
+
 static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s, const stream_counts *c,
                        const subd_sr48 *base)
 {
@@ -313,19 +346,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     if (fmt == HOST_FMT_STL && c->tris_bound && base) {
         /* adapt --stream to .stl: the header's count first, by a counting pass (OUTPUT may
          * be a pipe, so it cannot be patched afterwards) */
-        subd_sr48_stream_opts so;
-        subd_loop_sink cnt;
-        memset(&so, 0, sizeof so);
-        so.adapt = tool_sr48_adapt(o);
-        cnt.tri = count_tri;
-        cnt.ctx = s;
-        t0 = host_now_ns();
-        st = subd_sr48_stream(a, base, &so, &cnt, d);
-        r->lib_ns += host_now_ns() - t0;
-        if (st != 0) return st;
-        stl_tris = s->tris;
-        s->tris = 0;
-        s->hash = 2166136261u;
+        if ((st = stream_count_pass(r, a, d, base, &stl_tris)) != 0) return st;
     }
     if (fmt == HOST_FMT_STL || fmt == HOST_FMT_OBJ) {
         if (!(s->f = fopen(o->output, "wb"))) {
@@ -399,25 +420,12 @@ static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr
 }
 
 /* loop --stream --limit --chord: the triangle count is the stream's choice, so a first pass
- * counts (STL writes it first); the ids are those of level L; the vertex count is gathered. */
-static int adapt_count_tri(void *ctx, const subd_loop_tri *t)
-{
-    (void)t;
-    ++*(uint64_t *)ctx;
-    return 0;
-}
-
+ * counts (stream_count_pass; STL writes it first, the gathering sinks size by it); the ids are
+ * those of level L; the vertex count is gathered. */
 static int loop_adapt_prepare(tool_run *r, subd_arena *a, subd_diag *d, stream_counts *c)
 {
-    subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
-    subd_tri_sink sink;
     uint64_t n = 0;
-    double t0 = host_now_ns();
-    int st;
-    sink.tri = adapt_count_tri;
-    sink.ctx = &n;
-    st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
-    r->lib_ns += host_now_ns() - t0;
+    int st = stream_count_pass(r, a, d, NULL, &n);
     if (st != SUBD_OK) return st;
     c->tris = n;
     c->verts = c->ids < 3u * n ? c->ids : 3u * n; /* a bound: the sink counts them */

@@ -430,6 +430,94 @@ for bin in "$FLOAT" "$FIXED"; do
         check $? "$(basename "$bin") adapt --stream -l 4 $mode -o .stl: 84 + 50 bytes per face of adapt's cut"
     done
 done
+# adapt --stream --chord: subd_sr48_stream's chordal cut (not subd_sr48_extract's exact one,
+# but containing it: at least its faces, fewer than uniform). Every output format gets the same
+# triangles (.obj = .off face sets, .stl by its size, one checksum with and without -o); the
+# .obj (vertices by id) reads back as a closed genus-1 mesh: welded by id, crack-free. On the
+# icosahedron: every vertex of the uniform level-4 cut (all hierarchy vertices) lies within
+# eps of the streamed triangles (brute force in awk, double; slack 1e-6, Q16.16 4 / 65536).
+tri_dist_check() { # EPS SLACK UNIFORM.off STREAM.obj: exit 0 when every vertex is within EPS + SLACK
+    awk -v eps="$1" -v slack="$2" '
+        FNR == 1 { file++ }
+        file == 1 && FNR == 2 { nv = $1 }
+        file == 1 && FNR > 2 && FNR <= 2 + nv { px[++np] = $1; py[np] = $2; pz[np] = $3 }
+        file == 2 && $1 == "v" { vx[++n] = $2; vy[n] = $3; vz[n] = $4 }
+        file == 2 && $1 == "f" { split($2, a, "/"); split($3, b, "/"); split($4, c, "/"); ta[++nt] = a[1]; tb[nt] = b[1]; tc[nt] = c[1] }
+        function closest(x, y, z, A, B, C,   abx, aby, abz, acx, acy, acz, apx, apy, apz, bpx, bpy, bpz, cpx, cpy, cpz, d1, d2_, d3, d4, d5, d6, va, vb, vc, v, w, den, qx, qy, qz) {
+            abx = vx[B] - vx[A]; aby = vy[B] - vy[A]; abz = vz[B] - vz[A]
+            acx = vx[C] - vx[A]; acy = vy[C] - vy[A]; acz = vz[C] - vz[A]
+            apx = x - vx[A]; apy = y - vy[A]; apz = z - vz[A]
+            bpx = x - vx[B]; bpy = y - vy[B]; bpz = z - vz[B]
+            cpx = x - vx[C]; cpy = y - vy[C]; cpz = z - vz[C]
+            d1 = abx * apx + aby * apy + abz * apz; d2_ = acx * apx + acy * apy + acz * apz
+            d3 = abx * bpx + aby * bpy + abz * bpz; d4 = acx * bpx + acy * bpy + acz * bpz
+            d5 = abx * cpx + aby * cpy + abz * cpz; d6 = acx * cpx + acy * cpy + acz * cpz
+            if (d1 <= 0 && d2_ <= 0) { qx = vx[A]; qy = vy[A]; qz = vz[A] }
+            else if (d3 >= 0 && d4 <= d3) { qx = vx[B]; qy = vy[B]; qz = vz[B] }
+            else if (d6 >= 0 && d5 <= d6) { qx = vx[C]; qy = vy[C]; qz = vz[C] }
+            else if ((vc = d1 * d4 - d3 * d2_) <= 0 && d1 >= 0 && d3 <= 0) { v = d1 / (d1 - d3); qx = vx[A] + v * abx; qy = vy[A] + v * aby; qz = vz[A] + v * abz }
+            else if ((vb = d5 * d2_ - d1 * d6) <= 0 && d2_ >= 0 && d6 <= 0) { w = d2_ / (d2_ - d6); qx = vx[A] + w * acx; qy = vy[A] + w * acy; qz = vz[A] + w * acz }
+            else if ((va = d3 * d6 - d5 * d4) <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) { w = (d4 - d3) / ((d4 - d3) + (d5 - d6)); qx = vx[B] + w * (vx[C] - vx[B]); qy = vy[B] + w * (vy[C] - vy[B]); qz = vz[B] + w * (vz[C] - vz[B]) }
+            else { den = 1 / (va + vb + vc); v = vb * den; w = vc * den; qx = vx[A] + abx * v + acx * w; qy = vy[A] + aby * v + acy * w; qz = vz[A] + abz * v + acz * w }
+            return (x - qx) * (x - qx) + (y - qy) * (y - qy) + (z - qz) * (z - qz)
+        }
+        END {
+            if (np == 0 || nt == 0) exit 1
+            lim = (eps + slack) * (eps + slack)
+            for (i = 1; i <= np; i++) {
+                best = 1e300
+                for (t = 1; t <= nt && best > lim; t++) { dd = closest(px[i], py[i], pz[i], ta[t], tb[t], tc[t]); if (dd < best) best = dd }
+                if (best > lim) { printf "vertex %d at %g from the cut\n", i, sqrt(best) > "/dev/stderr"; exit 1 }
+            }
+            exit 0
+        }' "$3" "$4"
+}
+for bin in "$FLOAT" "$FIXED"; do
+    name=$(basename "$bin")
+    run "$bin" adapt -l 4 --chord 0.02 demo/torus_12x6.obj -o "$T/cm.off" --stats
+    nx=$(json_num faces) nu=$(json_num uniform_faces)
+    run "$bin" adapt --stream -l 4 --chord 0.02 demo/torus_12x6.obj -o "$T/cs.off" --stats
+    nf=$(json_num faces) sum=$(sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/\1/p' "$T/out")
+    is 0 && [ "$(json_num stream_arena)" -gt 0 ] && [ -n "$nx" ] && [ "$nf" -ge "$nx" ] && [ "$nf" -lt "$nu" ] &&
+        [ "$(json_num uniform_faces)" = "$nu" ] && [ "$(json_num saved_faces)" = $((nu - nf)) ] && grep -q '"adapt":"chord"' "$T/out"
+    check $? "$name adapt --stream --chord 0.02 -l 4 torus -o .off: $nf faces, at least adapt --chord's $nx, fewer than uniform $nu"
+    run "$bin" adapt --stream -l 4 --chord 0.02 demo/torus_12x6.obj -o "$T/cs.obj" --stats
+    is 0 && [ "$(json_num faces)" = "$nf" ] && grep -q "\"checksum\":\"$sum\"" "$T/out" &&
+        [ "$(off_faces "$T/cs.off")" = "$(obj_faces "$T/cs.obj")" ]
+    check $? "$name adapt --stream --chord -o .obj: the .off's face set and checksum"
+    run "$bin" adapt --stream -l 4 --chord 0.02 demo/torus_12x6.obj -o "$T/cs.stl" --stats
+    is 0 && [ "$(wc -c < "$T/cs.stl")" = $((84 + 50 * nf)) ] && grep -q "\"checksum\":\"$sum\"" "$T/out"
+    check $? "$name adapt --stream --chord -o .stl: its count first (a counting pass), 84 + 50 x $nf bytes, same checksum"
+    run "$bin" adapt --stream -l 4 --chord 0.02 demo/torus_12x6.obj --stats
+    is 0 && [ "$(json_num faces)" = "$nf" ] && grep -q "\"checksum\":\"$sum\"" "$T/out"
+    check $? "$name adapt --stream --chord --stats without -o: the same faces and checksum"
+    run "$bin" info "$T/cs.obj"
+    is 0 && grep -q '^genus: 1$' "$T/out" && grep -q '^boundary edges: 0$' "$T/out" && grep -q "^faces: $nf$" "$T/out"
+    check $? "$name adapt --stream --chord .obj welded by id: a closed genus-1 mesh (crack-free)"
+    slack=0.000001
+    [ "$bin" = "$FIXED" ] && slack=0.00006104
+    run "$bin" semireg48 -l 4 test/data/icosahedron.obj -o "$T/cu.off"
+    run "$bin" adapt --stream -l 4 --chord 0.05 test/data/icosahedron.obj -o "$T/ci.obj" --stats
+    ni=$(json_num faces)
+    is 0 && [ "$ni" -lt "$(json_num uniform_faces)" ] && tri_dist_check 0.05 $slack "$T/cu.off" "$T/ci.obj" 2> "$T/err"
+    check $? "$name adapt --stream --chord 0.05 -l 4 icosahedron: every level-4 vertex within eps of the $ni streamed faces"
+    # semireg48 --stream in every output format: semireg48's triangles, one checksum, --stats counts
+    run "$bin" semireg48 -l 3 test/data/icosahedron.obj -o "$T/sm.off" --stats
+    nm=$(json_num faces)
+    ok=0 sum=
+    for fmt in off obj stl none; do
+        if [ $fmt = none ]; then run "$bin" semireg48 --stream -l 3 test/data/icosahedron.obj --stats
+        else run "$bin" semireg48 --stream -l 3 test/data/icosahedron.obj -o "$T/ss.$fmt" --stats; fi
+        s1=$(sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/\1/p' "$T/out")
+        { is 0 && [ "$(json_num triangles)" = "$nm" ] && [ "$(json_num uniform_faces)" = "$nm" ] &&
+            [ "$(json_num saved_faces)" = 0 ] && [ "$(json_num stream_arena)" -gt 0 ] && [ -n "$s1" ] &&
+            { [ -z "$sum" ] || [ "$s1" = "$sum" ]; }; } || ok=1
+        sum=$s1
+    done
+    [ $ok = 0 ] && [ "$(off_faces "$T/sm.off")" = "$(off_faces "$T/ss.off")" ] &&
+        [ "$(off_faces "$T/sm.off")" = "$(obj_faces "$T/ss.obj")" ] && [ "$(wc -c < "$T/ss.stl")" = $((84 + 50 * nm)) ]
+    check $? "$name semireg48 --stream -l 3 -o .off/.obj/.stl/none: semireg48's $nm triangles, one checksum, --stats counts"
+done
 usage_case_pre adapt -l 4 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt without a mode: exit 1"
 usage_case_pre adapt -l 4 --ramp w demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt --ramp w: exit 1"
 usage_case_pre adapt -l 4 --ramp x --chord 1 demo/torus_12x6.obj -o "$T/x.obj"; check $? "adapt with two modes: exit 1"

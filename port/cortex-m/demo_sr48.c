@@ -1,0 +1,244 @@
+/* SPDX-License-Identifier: MIT */
+/* Firmware demo, issue 20: a chordal cut of the semi-regular 4-8 surface streamed in a static
+ * buffer, where the materialised hierarchy would not fit the board's RAM.
+ *
+ * The mesh is test/data/icosahedron.obj, read from the same bytes the host tool reads (the
+ * test corpus, build/gen/corpus.c, is linked into the demo). Its base mesh (subd_sr48_base)
+ * stays in the main arena; then subd_sr48_stream cuts it with SUBD_SR48_ADAPT_CHORD (eps 0.01,
+ * DSR_STEPS binary steps) into a checksum sink (the FNV-1a of `subd ... --stream --stats`),
+ * in a static buffer of SUBD_SR48_STREAM_CHORD_BYTES(DSR_STEPS, 10) bytes (the base's largest
+ * valence is 10): the demo checks buffer = plan = the arena's peak. 9 steps: the least at
+ * which the materialised path needs more than the board's 4 MiB (the chordal stream's time
+ * grows with the uniform level's faces, so more steps only make the demo slower). The host reproduces the checksum with
+ *     subd adapt --stream --chord 0.01 -l 9 test/data/icosahedron.obj --stats
+ * (demo/host_demo.sh compares it with this demo's output, and the uniform one below with
+ * subd semireg48 --stream -l 6 ... --stats).
+ *
+ * What the materialised path would need at DSR_STEPS: subd_sr48_plan (the build's exact peak,
+ * with subd_sr48_count_clusters) and, above the kept hierarchy, subd_sr48_extract_plan(CHORD).
+ * The hierarchy is not built, so the extract plan is asked of a hierarchy header with the
+ * counts of DSR_STEPS in closed form (closed base: every triangle is in a diamond, so level k
+ * has T0 2^k triangles and level k + 1 adds T0 2^(k-1) vertices) and the kept bytes are its
+ * three arrays (pos, tri_vert, tri_base_nb); both are checked against a real build at
+ * DSR_CHECK_STEPS first, so the closed form cannot drift from the library's layout.
+ * Instructions are counted as in demo.c (QEMU -icount: ticks x PORT_QEMU_INSNS_PER_TICK),
+ * sink included (about 150 instructions per triangle). */
+#include <string.h>
+#include "subd.h"
+#include "print.h"
+#include "port_cm.h"
+#include "corpus.h"
+#include "demo_sr48.h"
+
+#define DSR_MESH "test/data/icosahedron.obj"
+#define DSR_STEPS 9u        /* binary steps of the chordal cut                           */
+#define DSR_VALENCE 10u     /* the base's largest valence the static buffer is sized for */
+#define DSR_UNIFORM_STEPS 6u /* the uniform stream's steps (instructions per face)       */
+#define DSR_CHECK_STEPS 3u  /* the closed form checked against a real build              */
+#define DSR_RAM (4u * 1024u * 1024u) /* mps2-an386 / an385: 4 MiB of RAM (linker/mps2_*.ld)  */
+
+static uint8_t dsr_buf[SUBD_SR48_STREAM_CHORD_BYTES(DSR_STEPS, DSR_VALENCE)] __attribute__((aligned(8)));
+
+static void dsr_kv(const char *key, uint32_t v)
+{
+    print_str("  ");
+    print_str(key);
+    print_str(" ");
+    print_u32(v);
+    print_nl();
+}
+
+static int dsr_fail(const char *what, int st, const subd_diag *d)
+{
+    print_str("  error: ");
+    print_str(what);
+    print_str(": ");
+    print_str(subd_status_str(st));
+    if (st == SUBD_ERR_NOMEM && d) {
+        print_str(", needs ");
+        print_u32(d->bytes_needed);
+    }
+    print_nl();
+    return st == SUBD_OK ? SUBD_ERR_PARAM : st;
+}
+
+/* The checksum sink (FNV-1a over the little-endian bytes of every coordinate's bits, as
+ * port/cortex-m/demo.c's and the tool's). */
+typedef struct dsr_hash {
+    uint32_t h, tris;
+} dsr_hash;
+static int dsr_hash_tri(void *ctx, const subd_tri *t)
+{
+    dsr_hash *k = (dsr_hash *)ctx;
+    uint32_t c, q, i, w;
+    for (c = 0; c < 3u; c++)
+        for (q = 0; q < 3u; q++) {
+            w = subd_real_bits(t->pos[c][q]);
+            for (i = 0; i < 4u; i++) k->h = (k->h ^ ((w >> (8u * i)) & 0xffu)) * 16777619u;
+        }
+    k->tris++;
+    return 0;
+}
+
+static uint32_t dsr_align(uint32_t n) { return (n + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u); }
+
+/* The hierarchy header of `steps` binary steps over a closed base, in closed form (see the
+ * file comment); the arrays point at the base's (the plan reads counts only). Returns its
+ * arrays' bytes. */
+static uint32_t dsr_counts(const subd_sr48 *base, uint32_t steps, subd_sr48 *h)
+{
+    uint32_t k, t0 = base->level_tri[1], v = base->num_verts;
+    *h = *base;
+    h->steps = steps;
+    h->level_tri[0] = 0;
+    for (k = 0; k <= steps; k++) {
+        h->level_tri[k + 1u] = h->level_tri[k] + (t0 << k);
+        h->level_verts[k] = v;
+        v += (t0 << k) / 2u;
+    }
+    h->num_verts = h->level_verts[steps];
+    h->num_tris = h->level_tri[steps + 1u];
+    h->hyb_base_nb = 0;
+    return dsr_align(12u * h->num_verts) + dsr_align(12u * h->num_tris) + dsr_align(4u * h->num_tris);
+}
+
+static int dsr_closed(const subd_sr48 *b)
+{
+    uint32_t t;
+    for (t = 0; t < b->level_tri[1]; t++)
+        if (b->tri_base_nb[t] == SUBD_NONE) return 0;
+    for (t = 0; t < b->level_tri[1] / 2u; t++)
+        if (b->hyb_base_nb[t] == SUBD_NONE) return 0;
+    return 1;
+}
+
+/* The closed form against subd_sr48_build at DSR_CHECK_STEPS: counts, kept bytes, extract
+ * plan. */
+static int dsr_check_counts(subd_arena *arena, const subd_mesh *m, const subd_sr48 *base, const subd_sr48_adapt *ad)
+{
+    subd_sr48_opts o;
+    subd_sr48 h, c;
+    subd_sr48_adapt a2 = *ad;
+    subd_diag d;
+    uint32_t mark = subd_arena_mark(arena), kept, k, p1 = 0, p2 = 0;
+    int st, ok;
+    o.steps = DSR_CHECK_STEPS;
+    o.flags = 0;
+    a2.max_level = DSR_CHECK_STEPS;
+    if ((st = subd_sr48_build(arena, m, &o, &h, &d)) != SUBD_OK) return dsr_fail("subd_sr48_build", st, &d);
+    kept = dsr_counts(base, DSR_CHECK_STEPS, &c);
+    ok = kept == subd_arena_mark(arena) - mark && c.num_verts == h.num_verts && c.num_tris == h.num_tris;
+    for (k = 0; k <= DSR_CHECK_STEPS; k++) ok = ok && c.level_verts[k] == h.level_verts[k] && c.level_tri[k] == h.level_tri[k];
+    if (ok && (subd_sr48_extract_plan(&h, &a2, &p1, 0) != SUBD_OK || subd_sr48_extract_plan(&c, &a2, &p2, 0) != SUBD_OK))
+        ok = 0;
+    subd_arena_rewind(arena, mark);
+    if (!ok || p1 != p2) {
+        print_str("  error: the closed-form hierarchy counts differ from subd_sr48_build's\n");
+        return SUBD_ERR_PARAM;
+    }
+    dsr_kv("closed-form hierarchy counts = subd_sr48_build's at binary steps", DSR_CHECK_STEPS);
+    return SUBD_OK;
+}
+
+/* One stream of the base into the checksum sink in dsr_buf: plan, buffer, peak, hash and
+ * instructions per face printed. */
+static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t *faces)
+{
+    subd_sr48_stream_opts so;
+    subd_arena sa;
+    subd_diag d;
+    subd_tri_sink sink;
+    dsr_hash k;
+    uint32_t plan = 0, t0, t1;
+    uint64_t insns;
+    int st;
+    so.adapt = *ad;
+    if ((st = subd_sr48_stream_plan(base, &so, &plan, &d)) != SUBD_OK) return dsr_fail("subd_sr48_stream_plan", st, &d);
+    dsr_kv("stream arena bytes planned (subd_sr48_stream_plan)", plan);
+    if (plan > sizeof dsr_buf) return dsr_fail("the static buffer is below the plan", SUBD_ERR_NOMEM, 0);
+    subd_arena_init(&sa, dsr_buf, plan);
+    k.h = 2166136261u;
+    k.tris = 0;
+    sink.tri = dsr_hash_tri;
+    sink.ctx = &k;
+    t0 = port_cycles();
+    st = subd_sr48_stream(&sa, base, &so, &sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return dsr_fail("subd_sr48_stream", st, &d);
+    insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    dsr_kv("stream arena bytes used (peak)", sa.peak);
+    dsr_kv("output faces", k.tris);
+    print_str("  checksum ");
+    print_hex32(k.h);
+    print_nl();
+    print_str("  instructions, stream + checksum sink ");
+    print_u64(insns);
+    print_nl();
+    dsr_kv("instructions per output face", k.tris ? (uint32_t)(insns / k.tris) : 0u);
+    if (sa.peak != plan) return dsr_fail("the peak differs from the plan", SUBD_ERR_PARAM, 0);
+    *faces = k.tris;
+    return SUBD_OK;
+}
+
+int demo_sr48_chord(subd_arena *arena)
+{
+    const corpus_file *f = corpus_find(DSR_MESH);
+    const char *eps_text = "0.01", *p;
+    subd_mesh m;
+    subd_sr48 base, c;
+    subd_sr48_opts o;
+    subd_sr48_adapt ad;
+    subd_diag d;
+    uint32_t mark = subd_arena_mark(arena), clusters = 0, build = 0, extract = 0, kept, mat, faces = 0;
+    int st;
+    print_str("semi-regular 4-8 chordal stream (" DSR_MESH ", eps 0.01, 9 binary steps):\n");
+    if (!f) return dsr_fail("mesh not linked", SUBD_ERR_PARAM, 0);
+    if ((st = subd_obj_read(arena, f->data, f->len, &m, &d)) != SUBD_OK) return dsr_fail("subd_obj_read", st, &d);
+    if ((st = subd_sr48_count_clusters(arena, &m, &clusters, &d)) != SUBD_OK)
+        return dsr_fail("subd_sr48_count_clusters", st, &d);
+    if ((st = subd_sr48_base(arena, &m, 0, &base, &d)) != SUBD_OK) return dsr_fail("subd_sr48_base", st, &d);
+    dsr_kv("input mesh + base mesh arena bytes (main arena)", subd_arena_mark(arena) - mark);
+    dsr_kv("base triangles", base.level_tri[1]);
+    memset(&ad, 0, sizeof ad);
+    ad.mode = SUBD_SR48_ADAPT_CHORD;
+    ad.max_level = DSR_STEPS;
+    p = eps_text;
+    if ((st = subd_real_parse(&p, eps_text + 4, &ad.eps)) != SUBD_OK) return dsr_fail("eps", st, 0);
+    if (!dsr_closed(&base)) return dsr_fail("the closed form needs a closed mesh", SUBD_ERR_PARAM, 0);
+    if ((st = dsr_check_counts(arena, &m, &base, &ad)) != SUBD_OK) return st;
+
+    /* the materialised path at DSR_STEPS, from the plans */
+    o.steps = DSR_STEPS;
+    o.flags = 0;
+    if ((st = subd_sr48_plan(&m, &o, clusters, &build, &d)) != SUBD_OK) return dsr_fail("subd_sr48_plan", st, &d);
+    kept = dsr_counts(&base, DSR_STEPS, &c);
+    if ((st = subd_sr48_extract_plan(&c, &ad, &extract, &d)) != SUBD_OK)
+        return dsr_fail("subd_sr48_extract_plan", st, &d);
+    mat = kept + extract > build ? kept + extract : build;
+    dsr_kv("materialised: subd_sr48_build plan (peak)", build);
+    dsr_kv("materialised: hierarchy kept", kept);
+    dsr_kv("materialised: + subd_sr48_extract_plan(CHORD)", extract);
+    dsr_kv("materialised: bytes needed, max(build, kept + extract)", mat);
+    dsr_kv("board RAM bytes", DSR_RAM);
+    dsr_kv("static stream buffer bytes, SUBD_SR48_STREAM_CHORD_BYTES(9, 10)", (uint32_t)sizeof dsr_buf);
+    if (mat <= DSR_RAM) return dsr_fail("the materialised hierarchy would fit the RAM", SUBD_ERR_PARAM, 0);
+
+    print_str("chordal stream, eps 0.01, 9 binary steps:\n");
+    if ((st = dsr_stream(&base, &ad, &faces)) != SUBD_OK) return st;
+    dsr_kv("faces of uniform level 9", base.level_tri[1] << DSR_STEPS);
+    {
+        subd_sr48_stream_opts so;
+        uint32_t plan = 0;
+        so.adapt = ad;
+        if (subd_sr48_stream_plan(&base, &so, &plan, 0) != SUBD_OK || plan != sizeof dsr_buf)
+            return dsr_fail("the static buffer is not the plan", SUBD_ERR_PARAM, 0);
+    }
+
+    print_str("uniform stream, 6 binary steps (same base):\n");
+    memset(&ad, 0, sizeof ad);
+    ad.mode = SUBD_SR48_ADAPT_UNIFORM;
+    ad.max_level = DSR_UNIFORM_STEPS;
+    if ((st = dsr_stream(&base, &ad, &faces)) != SUBD_OK) return st;
+    subd_arena_rewind(arena, mark);
+    return SUBD_OK;
+}

@@ -1,0 +1,616 @@
+/* SPDX-License-Identifier: MIT */
+/* The semi-regular 4-8 stream (subd_sr48_stream) against the materialised hierarchy, every
+ * mode on every shape (issue 20's "Done when"), with a face-set comparison that does not
+ * depend on positions, so cuts with coincident faces are compared too.
+ *
+ * Shapes: tetrahedron (closed, input valence 3; smoothed, its coarse cuts have distinct
+ * vertices at identical positions), cube of triangles (closed), icosahedron (closed), hexagon
+ * fan (open), 8x8 grid (open), two triangles + one (pre-processing splits an isolated
+ * triangle; open), torus (closed, genus 1) and closed bipyramids whose apexes have valence
+ * 3..12 (the base then has vertices of valence 4 to 12: checked).
+ * Modes: UNIFORM, POINT (radius, default radius), RAMP (x, y, z), PLANE, CALLBACK (a monotone
+ * viewer function), CHORD (two tolerances); smoothing on and off; levels 0.. (fewer on the
+ * device, whose RAM and time are small); both arithmetics through the build.
+ *
+ * For every cut, independently of the stream's code:
+ *  - ids: the closed form of include/subd_sr48.h recomputed from the hierarchy of
+ *    subd_sr48_build(steps = L) (a level-0 vertex keeps its index; the vertex made at level k
+ *    by the diamond whose lower triangle is the i-th of level k-1 gets V0 + T0 (2^(k-1) - 1) +
+ *    i); every streamed corner's id names a hierarchy vertex whose position has the corner's
+ *    bits;
+ *  - every streamed triangle is a hierarchy triangle: the one of level t.level below level-0
+ *    triangle t.face with exactly these corners (apex, b0, b1) in this order;
+ *  - UNIFORM, POINT, RAMP, PLANE, CALLBACK: the streamed set is subd_sr48_extract's: the
+ *    extraction's vertices are the used hierarchy vertices in increasing order, so a streamed
+ *    triangle's corners name extraction vertices by rank; each extraction face is hit exactly
+ *    once (faces are matched by vertex numbers, not positions: coincident faces are told
+ *    apart), the used vertices have the extraction's bits, and the ids are a bijection onto
+ *    them; UNIFORM also in the extraction's order;
+ *  - CHORD: every hierarchy vertex (level <= L) lies within eps (+ 2^-16 per axis in Q16.16,
+ *    1e-6 in float32) of the nearest streamed triangle (brute force, double); the cut has at
+ *    least subd_sr48_extract(CHORD)'s faces and at most the uniform cut's;
+ *  - conformity, welded by id: no directed edge twice; an edge without its reverse joins two
+ *    boundary vertices of the hierarchy (found from the base's boundary edges and the
+ *    half-diamonds' new vertices); a closed input gives none (a closed 2-manifold); V - E + F
+ *    is the input's Euler characteristic;
+ *  - the arena: plan = the mode's macro (SUBD_SR48_STREAM_BYTES / _ADAPT_ / _CHORD_) = the
+ *    peak, and the arena is given back. */
+#include <stdlib.h> /* qsort, bsearch: the extraction's faces and the welded edges, sorted */
+#include <string.h>
+#include "harness.h"
+#include "corpus.h"
+#if H_HOST
+#include <stdio.h>
+#define SH_NOTE(...) printf(__VA_ARGS__)
+#else
+#define SH_NOTE(...) ((void)0)
+#endif
+
+#define SH_ST_ARENA (96u * 1024u) /* the stream's arena: the top of h_arena_buf */
+#define SH_MAT_ARENA (H_ARENA_BYTES - SH_ST_ARENA)
+#define SH_MAXF (H_HOST ? 16384u : 1024u)  /* streamed triangles kept */
+#define SH_MAXID (H_HOST ? 65536u : 4096u) /* closed-form id space */
+#define SH_MAXV (H_HOST ? 32768u : 2048u)  /* hierarchy vertices */
+
+static const char sh_tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+static const char sh_cube_obj[] =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
+    "f 4 1 5\nf 4 5 8\n";
+static const char sh_two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
+
+enum { P_TET, P_CUBE, P_ICO, P_HEXFAN, P_GRID, P_TWO, P_TORUS, P_BIPYR, P_COUNT };
+
+static subd_real sh_real(double x)
+{
+#if SUBD_FIXED
+    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
+#else
+    return (float)x;
+#endif
+}
+
+/* A closed bipyramid: n equator vertices on the unit circle (z alternating 0, 1/8), apexes
+ * at z = +-1 of valence n. */
+static subd_real g_bpos[3 * 18];
+static uint32_t g_bidx[3 * 32];
+static int sh_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
+{
+    subd_face_list fl;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        double ang = 6.283185307179586 * (double)i / (double)n, c = 1, s = 0, x = ang, term = x;
+        uint32_t k;
+        /* cos and sin by their series in double (no libm in the device tests) */
+        for (k = 1; k < 30u; k++) {
+            term = -term * x * x / (double)((2u * k) * (2u * k + 1u));
+            s += term;
+        }
+        s += x;
+        term = 1;
+        for (k = 1; k < 30u; k++) {
+            term = -term * x * x / (double)((2u * k - 1u) * (2u * k));
+            c += term;
+        }
+        g_bpos[3 * i] = sh_real(c);
+        g_bpos[3 * i + 1] = sh_real(s);
+        g_bpos[3 * i + 2] = sh_real((i & 1u) ? 0.125 : 0.0);
+        g_bidx[6 * i] = n; g_bidx[6 * i + 1] = i; g_bidx[6 * i + 2] = (i + 1u) % n;
+        g_bidx[6 * i + 3] = n + 1u; g_bidx[6 * i + 4] = (i + 1u) % n; g_bidx[6 * i + 5] = i;
+    }
+    g_bpos[3 * n] = 0; g_bpos[3 * n + 1] = 0; g_bpos[3 * n + 2] = h_int(1);
+    g_bpos[3 * n + 3] = 0; g_bpos[3 * n + 4] = 0; g_bpos[3 * n + 5] = -h_int(1);
+    memset(&fl, 0, sizeof fl);
+    fl.num_verts = n + 2u;
+    fl.pos = g_bpos;
+    fl.num_faces = 2u * n;
+    fl.index = g_bidx;
+    return h_build(a, &fl, m);
+}
+
+static subd_real g_tpos[3 * 64];
+static uint32_t g_tidx[6 * 64];
+static uint32_t g_bn = 5; /* the bipyramid's apex valence */
+
+static int sh_text(subd_arena *a, const char *txt, subd_mesh *m)
+{
+    subd_diag d;
+    return CHECK_EQ(subd_obj_read(a, txt, (uint32_t)strlen(txt), m, &d), SUBD_OK);
+}
+
+static int sh_shape(int id, subd_arena *a, subd_mesh *m)
+{
+    const corpus_file *f = 0;
+    subd_diag d;
+    switch (id) {
+    case P_TET: return sh_text(a, sh_tet_obj, m);
+    case P_CUBE: return sh_text(a, sh_cube_obj, m);
+    case P_TWO: return sh_text(a, sh_two_obj, m);
+    case P_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
+    case P_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
+    case P_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
+    case P_BIPYR: return sh_bipyramid(a, m, g_bn);
+    case P_TORUS: {
+        subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
+        return h_build(a, &fl, m);
+    }
+    default: return 0;
+    }
+    if (!CHECK(f != 0)) return 0;
+    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* The sink: every triangle kept. */
+typedef struct sh_sink {
+    uint32_t n, over;
+} sh_sink;
+static uint64_t g_id[3u * SH_MAXF];
+static subd_real g_pos[9u * SH_MAXF];
+static uint32_t g_face[SH_MAXF], g_level[SH_MAXF];
+static sh_sink g_s;
+
+static int sh_tri(void *ctx, const subd_tri *t)
+{
+    sh_sink *k = (sh_sink *)ctx;
+    uint32_t c, q;
+    if (k->n >= SH_MAXF) {
+        k->over = 1;
+        return 0;
+    }
+    for (c = 0; c < 3u; c++) {
+        g_id[3u * k->n + c] = t->id[c];
+        for (q = 0; q < 3u; q++) g_pos[9u * k->n + 3u * c + q] = t->pos[c][q];
+    }
+    g_face[k->n] = t->face;
+    g_level[k->n] = t->level;
+    k->n++;
+    return 0;
+}
+
+/* The closed-form ids over the hierarchy: g_map[id] = hierarchy vertex (SUBD_NONE: no vertex). */
+static uint32_t g_map[SH_MAXID];
+static int sh_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *nid)
+{
+    uint32_t nv0 = h->level_verts[0], n0 = h->level_tri[1], k, i;
+    uint32_t n = nv0 + n0 * ((1u << levels) - 1u);
+    if (!CHECK(n <= SH_MAXID)) return 0;
+    for (i = 0; i < n; i++) g_map[i] = SUBD_NONE;
+    for (i = 0; i < nv0; i++) g_map[i] = i;
+    for (k = 1; k <= levels; k++)
+        for (i = 0; i < (n0 << (k - 1u)); i++) {
+            uint32_t t = h->level_tri[k - 1u] + i, nb = h->tri_base_nb[t];
+            if (nb != SUBD_NONE && nb < t) continue; /* the diamond's lower triangle names it */
+            g_map[nv0 + n0 * ((1u << (k - 1u)) - 1u) + i] = h->tri_vert[3u * (h->level_tri[k] + 2u * i)];
+        }
+    *nid = n;
+    return 1;
+}
+
+/* Boundary vertices of the hierarchy, from its structure: the ends of level-0 base edges
+ * without a neighbour, the three vertices on a hybrid triangle's boundary base edge (its
+ * ends and the level-0 vertex that split it), and the new vertex of every half-diamond. */
+static uint8_t g_bnd[SH_MAXV];
+static void sh_boundary(const subd_sr48 *h, const subd_sr48 *base, uint32_t levels)
+{
+    uint32_t k, t, H;
+    for (t = 0; t < h->num_verts && t < SH_MAXV; t++) g_bnd[t] = 0;
+    for (H = 0; H < base->level_tri[1] / 2u; H++)
+        if (base->hyb_base_nb[H] == SUBD_NONE) {
+            /* children 2H = (m; c, a), 2H+1 = (m; b, c): the base a-b is split at m */
+            g_bnd[base->tri_vert[3u * (2u * H)]] = 1;
+            g_bnd[base->tri_vert[3u * (2u * H) + 2u]] = 1;
+            g_bnd[base->tri_vert[3u * (2u * H + 1u) + 1u]] = 1;
+        }
+    for (k = 0; k <= levels; k++)
+        for (t = h->level_tri[k]; t < h->level_tri[k + 1u]; t++) {
+            if (h->tri_base_nb[t] != SUBD_NONE) continue;
+            g_bnd[h->tri_vert[3u * t + 1u]] = 1;
+            g_bnd[h->tri_vert[3u * t + 2u]] = 1;
+            if (k < levels) g_bnd[h->tri_vert[3u * (h->level_tri[k + 1u] + 2u * (t - h->level_tri[k]))]] = 1;
+        }
+}
+
+/* Squared distance from p to triangle (a, b, c) in double (closest point by regions). */
+static double sh_dot(const double *u, const double *v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+static double sh_tri_dist2(const double *p, const double *a, const double *b, const double *c)
+{
+    double ab[3], ac[3], ap[3], bp[3], cp[3], q[3], d1, d2, d3, d4, d5, d6, va, vb, vc, v, w, den;
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        ab[i] = b[i] - a[i];
+        ac[i] = c[i] - a[i];
+        ap[i] = p[i] - a[i];
+        bp[i] = p[i] - b[i];
+        cp[i] = p[i] - c[i];
+    }
+    d1 = sh_dot(ab, ap);
+    d2 = sh_dot(ac, ap);
+    d3 = sh_dot(ab, bp);
+    d4 = sh_dot(ac, bp);
+    d5 = sh_dot(ab, cp);
+    d6 = sh_dot(ac, cp);
+    if (d1 <= 0 && d2 <= 0) {
+        for (i = 0; i < 3u; i++) q[i] = a[i];
+    } else if (d3 >= 0 && d4 <= d3) {
+        for (i = 0; i < 3u; i++) q[i] = b[i];
+    } else if (d6 >= 0 && d5 <= d6) {
+        for (i = 0; i < 3u; i++) q[i] = c[i];
+    } else if ((vc = d1 * d4 - d3 * d2) <= 0 && d1 >= 0 && d3 <= 0) {
+        v = d1 / (d1 - d3);
+        for (i = 0; i < 3u; i++) q[i] = a[i] + v * ab[i];
+    } else if ((vb = d5 * d2 - d1 * d6) <= 0 && d2 >= 0 && d6 <= 0) {
+        w = d2 / (d2 - d6);
+        for (i = 0; i < 3u; i++) q[i] = a[i] + w * ac[i];
+    } else if ((va = d3 * d6 - d5 * d4) <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (i = 0; i < 3u; i++) q[i] = b[i] + w * (c[i] - b[i]);
+    } else {
+        den = 1.0 / (va + vb + vc);
+        v = vb * den;
+        w = vc * den;
+        for (i = 0; i < 3u; i++) q[i] = a[i] + ab[i] * v + ac[i] * w;
+    }
+    for (i = 0; i < 3u; i++) q[i] = p[i] - q[i];
+    return sh_dot(q, q);
+}
+
+static uint64_t g_key[2u * SH_MAXF];  /* extraction faces: (corner key, face), sorted   */
+static uint8_t g_hit[SH_MAXF];
+static uint32_t g_rank[SH_MAXV];      /* hierarchy vertex -> extraction vertex + 1       */
+static uint64_t g_edge[2u * 3u * SH_MAXF];
+static uint16_t g_cnt[SH_MAXV];
+
+static int sh_cmp2(const void *a, const void *b)
+{
+    const uint64_t *x = (const uint64_t *)a, *y = (const uint64_t *)b;
+    if (x[0] != y[0]) return x[0] < y[0] ? -1 : 1;
+    return x[1] < y[1] ? -1 : x[1] > y[1];
+}
+static int sh_cmp1(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+static uint64_t sh_fkey(uint32_t a, uint32_t b, uint32_t c)
+{
+    return ((uint64_t)a << 42) | ((uint64_t)b << 21) | (uint64_t)c;
+}
+
+static uint32_t sh_valence(const subd_sr48 *b, uint32_t *lowest)
+{
+    uint32_t t, best = 0, low = 0xffffffffu;
+    if (b->num_verts > SH_MAXV) return 0;
+    for (t = 0; t < b->num_verts; t++) g_cnt[t] = 0;
+    for (t = 0; t < 3u * b->level_tri[1]; t++)
+        if (++g_cnt[b->tri_vert[t]] > best) best = g_cnt[b->tri_vert[t]];
+    for (t = 0; t < b->num_verts; t++)
+        if (g_cnt[t] && g_cnt[t] < low) low = g_cnt[t];
+    if (lowest) *lowest = low;
+    return best;
+}
+
+/* What the cases covered (printed on the host, some checked at the end). */
+static uint32_t g_cases, g_coincident, g_faces, g_chord_faces, g_chord_exact, g_uni, g_vmin = 99, g_vmax;
+static uint32_t g_modes_seen;
+
+/* CALLBACK: a viewer at g_view, one level per g_vr of distance from the box (monotone). */
+static double g_view[3] = {0.6, 0.2, 0.9}, g_vr = 0.25;
+static uint32_t g_want_max;
+static uint32_t sh_view_level(void *ctx, const subd_real *lo, const subd_real *hi)
+{
+    double d2 = 0, lim;
+    uint32_t i, n;
+    (void)ctx;
+    for (i = 0; i < 3u; i++) {
+        double l = h_dbl(lo[i]), u = h_dbl(hi[i]);
+        double e = g_view[i] < l ? l - g_view[i] : g_view[i] > u ? g_view[i] - u : 0;
+        d2 += e * e;
+    }
+    for (n = 0; n <= g_want_max; n++) {
+        lim = (double)(g_want_max - n) * g_vr;
+        if (lim * lim <= d2) return n;
+    }
+    return g_want_max;
+}
+
+/* One cut of one shape: every property of the file comment. */
+static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_sr48_adapt *ad0, const char *hash)
+{
+    subd_arena a, sa;
+    static subd_mesh in, out; /* static: the device's stack limit */
+    static subd_sr48 h, base;
+    static subd_sr48_adapt_report rep;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan = 0, want, nid = 0, i, c, q, bad = 0, ne = 0, nb = 0, nvert = 0, nused = 0, val, low = 0;
+    int chord = ad0->mode == SUBD_SR48_ADAPT_CHORD, uniform = ad0->mode == SUBD_SR48_ADAPT_UNIFORM;
+    subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
+    if (!sh_shape(shape, &a, &in)) return;
+    o.steps = levels;
+    o.flags = flags;
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    so.adapt = *ad0;
+    so.adapt.max_level = levels;
+    g_want_max = levels;
+    if (!CHECK_EQ(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), SUBD_OK)) {
+        SH_NOTE("shape %d levels %u flags %u mode %u: extract status %d needs %u\n", shape, levels, flags,
+                (unsigned)ad0->mode, d.status, d.bytes_needed);
+        return;
+    }
+    if (!CHECK(out.num_faces <= SH_MAXF && h.num_verts <= SH_MAXV)) return;
+    if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) {
+        SH_NOTE("shape %d levels %u: base status %d needs %u\n", shape, levels, d.status, d.bytes_needed);
+        return;
+    }
+    val = sh_valence(&base, &low);
+    if (val > g_vmax) g_vmax = val;
+    if (low < g_vmin) g_vmin = low;
+    if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+    want = chord ? SUBD_SR48_STREAM_CHORD_BYTES(levels, val)
+                 : uniform ? SUBD_SR48_STREAM_BYTES(levels, val) : SUBD_SR48_STREAM_ADAPT_BYTES(levels, val);
+    CHECK_EQ(plan, want);
+    if (!CHECK(plan <= SH_ST_ARENA)) return;
+    subd_arena_init(&sa, h_arena_buf + SH_MAT_ARENA, SH_ST_ARENA);
+    g_s.n = 0;
+    g_s.over = 0;
+    sink.tri = sh_tri;
+    sink.ctx = &g_s;
+    subd_arena_reset_peak(&sa);
+    if (!CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), SUBD_OK)) {
+        SH_NOTE("shape %d levels %u flags %u mode %u: status %d\n", shape, levels, flags, (unsigned)ad0->mode,
+                d.status);
+        return;
+    }
+    CHECK_EQ(sa.peak, plan);
+    CHECK_EQ(subd_arena_mark(&sa), 0u);
+    if (!CHECK_EQ(g_s.over, 0u)) return;
+    g_cases++;
+    g_modes_seen |= 1u << (uint32_t)ad0->mode;
+    if (hash) { /* host = device: the streamed triangles' bits and ids, in order */
+        uint32_t hv = 2166136261u;
+        for (i = 0; i < 9u * g_s.n; i++) {
+            uint32_t b = subd_real_bits(g_pos[i]);
+            hv = h_fnv(hv, &b, 4);
+        }
+        for (i = 0; i < 3u * g_s.n; i++) hv = h_fnv(hv, &g_id[i], 8);
+        h_hash(hash, hv);
+    }
+
+    /* ids -> hierarchy vertices, bits; every triangle a hierarchy triangle */
+    if (!sh_id_map(&h, levels, &nid)) return;
+    for (i = 0; i < h.num_verts; i++) g_rank[i] = 0;
+    for (i = 0; i < g_s.n; i++) {
+        uint32_t v[3], k = g_level[i], f = g_face[i], t, t0;
+        for (c = 0; c < 3u; c++) {
+            uint64_t id = g_id[3u * i + c];
+            v[c] = id < nid ? g_map[(uint32_t)id] : SUBD_NONE;
+            if (v[c] == SUBD_NONE || v[c] >= h.num_verts) {
+                bad++;
+                v[c] = 0;
+                continue;
+            }
+            g_rank[v[c]] = 1;
+            for (q = 0; q < 3u; q++)
+                if (!h_same(g_pos[9u * i + 3u * c + q], h.pos[3u * v[c] + q])) bad++;
+        }
+        if (k > levels || f >= h.level_tri[1] || (uniform && k != levels)) {
+            bad++;
+            continue;
+        }
+        t0 = h.level_tri[k] + (f << k);
+        for (t = t0; t < t0 + (1u << k); t++)
+            if (h.tri_vert[3u * t] == v[0] && h.tri_vert[3u * t + 1u] == v[1] && h.tri_vert[3u * t + 2u] == v[2])
+                break;
+        if (t == t0 + (1u << k)) bad++;
+    }
+    if (!CHECK_EQ(bad, 0u))
+        SH_NOTE("shape %d levels %u flags %u mode %u: %u id/position/triangle mismatches\n", shape, levels, flags,
+                (unsigned)ad0->mode, bad);
+    /* used hierarchy vertices -> their rank (the extraction's numbering) */
+    for (i = 0; i < h.num_verts; i++)
+        if (g_rank[i]) g_rank[i] = ++nused;
+
+    if (!chord) {
+        /* the extraction's faces by vertex numbers; coincident corner positions counted */
+        uint32_t coinc = 0;
+        CHECK_EQ(nused, out.num_verts);
+        CHECK_EQ(g_s.n, out.num_faces);
+        for (i = 0; i < out.num_faces; i++) {
+            const uint32_t *cv = out.corner_vert + 3u * i;
+            g_key[2u * i] = sh_fkey(cv[0], cv[1], cv[2]);
+            g_key[2u * i + 1u] = i;
+            g_hit[i] = 0;
+        }
+        qsort(g_key, out.num_faces, 2u * sizeof(uint64_t), sh_cmp2);
+        for (i = 0; i + 1u < out.num_faces && !coinc; i++) {
+            const uint32_t *x = out.corner_vert + 3u * i;
+            uint32_t j;
+            for (j = i + 1u; j < out.num_faces && !coinc; j++) {
+                const uint32_t *y = out.corner_vert + 3u * j;
+                uint32_t same = 1;
+                for (c = 0; c < 9u && same; c++)
+                    same = h_same(out.pos[3u * x[c / 3u] + c % 3u], out.pos[3u * y[c / 3u] + c % 3u]);
+                coinc = same;
+            }
+            if (!H_HOST) break; /* the device looks at the first face only (time) */
+        }
+        if (coinc) g_coincident++;
+        bad = 0;
+        for (i = 0; i < g_s.n; i++) {
+            uint64_t k[2];
+            const uint64_t *r;
+            uint32_t r3[3], f;
+            for (c = 0; c < 3u; c++) {
+                uint64_t id = g_id[3u * i + c];
+                uint32_t v = id < nid ? g_map[(uint32_t)id] : SUBD_NONE;
+                r3[c] = v < h.num_verts && g_rank[v] ? g_rank[v] - 1u : 0x1fffffu;
+            }
+            k[0] = sh_fkey(r3[0], r3[1], r3[2]);
+            k[1] = 0;
+            r = (const uint64_t *)bsearch(k, g_key, out.num_faces, 2u * sizeof(uint64_t), sh_cmp1);
+            if (!r) {
+                bad++;
+                continue;
+            }
+            f = (uint32_t)r[1];
+            if (g_hit[f]++) bad++;
+            if (uniform && f != i) bad++; /* UNIFORM: the extraction's order */
+            for (c = 0; c < 3u; c++)
+                for (q = 0; q < 3u; q++)
+                    if (!h_same(g_pos[9u * i + 3u * c + q], out.pos[3u * r3[c] + q])) bad++;
+        }
+        for (i = 0; i < out.num_faces; i++)
+            if (g_hit[i] != 1u) bad++;
+        if (!CHECK_EQ(bad, 0u))
+            SH_NOTE("shape %d levels %u flags %u mode %u: face set differs (%u)\n", shape, levels, flags,
+                    (unsigned)ad0->mode, bad);
+        g_faces += g_s.n;
+    } else {
+        /* the guarantee: every hierarchy vertex within eps of the streamed mesh */
+        double eps = h_dbl(so.adapt.eps), slack = SUBD_FIXED ? 4.0 / 65536.0 : 1e-6, worst = 0;
+        for (i = 0; i < h.num_verts; i++) {
+            double p[3], best = 1e300;
+            for (q = 0; q < 3u; q++) p[q] = h_dbl(h.pos[3u * i + q]);
+            for (c = 0; c < g_s.n && best > 0; c++) {
+                double t[3][3], dd;
+                uint32_t r;
+                for (r = 0; r < 3u; r++)
+                    for (q = 0; q < 3u; q++) t[r][q] = h_dbl(g_pos[9u * c + 3u * r + q]);
+                dd = sh_tri_dist2(p, t[0], t[1], t[2]);
+                if (dd < best) best = dd;
+            }
+            if (best > worst) worst = best;
+        }
+        if (!CHECK(worst <= (eps + slack) * (eps + slack)))
+            SH_NOTE("shape %d levels %u flags %u eps %g: worst squared distance %g\n", shape, levels, flags, eps, worst);
+        CHECK(g_s.n >= out.num_faces);
+        CHECK(g_s.n <= rep.uniform_faces);
+        g_chord_faces += g_s.n;
+        g_chord_exact += out.num_faces;
+    }
+    g_uni += rep.uniform_faces;
+
+    /* welded by id: conforming; the boundary on the hierarchy's boundary; Euler */
+    if (!CHECK(h.num_verts <= SH_MAXV)) return;
+    sh_boundary(&h, &base, levels);
+    for (i = 0; i < g_s.n; i++)
+        for (c = 0; c < 3u; c++) {
+            g_edge[2u * ne] = g_id[3u * i + c];
+            g_edge[2u * ne + 1u] = g_id[3u * i + (c + 1u) % 3u];
+            ne++;
+        }
+    qsort(g_edge, ne, 2u * sizeof(uint64_t), sh_cmp2);
+    bad = 0;
+    for (i = 0; i < ne; i++) {
+        uint64_t r[2];
+        if (i > 0u && g_edge[2u * i] == g_edge[2u * i - 2u] && g_edge[2u * i + 1u] == g_edge[2u * i - 1u]) bad++;
+        if (i == 0u || g_edge[2u * i] != g_edge[2u * i - 2u]) nvert++;
+        r[0] = g_edge[2u * i + 1u];
+        r[1] = g_edge[2u * i];
+        if (bsearch(r, g_edge, ne, 2u * sizeof(uint64_t), sh_cmp2)) continue;
+        nb++;
+        if (r[0] >= nid || r[1] >= nid || !g_bnd[g_map[(uint32_t)r[0]]] || !g_bnd[g_map[(uint32_t)r[1]]]) bad++;
+    }
+    if (!CHECK_EQ(bad, 0u))
+        SH_NOTE("shape %d levels %u flags %u mode %u: %u welding faults\n", shape, levels, flags, (unsigned)ad0->mode,
+                bad);
+    CHECK_EQ(nb == 0u, in.num_boundary_edges == 0u);
+    /* every vertex starts an edge (a closed fan or a boundary fan): the distinct ids */
+    CHECK_EQ(nvert, nused);
+    CHECK_EQ((int32_t)nvert - (int32_t)((ne - nb) / 2u + nb) + (int32_t)g_s.n,
+             (int32_t)(in.num_verts - in.num_isolated) - (int32_t)in.num_edges + (int32_t)in.num_faces);
+}
+
+/* The adaptation settings: UNIFORM, PLANE, POINT (radius 0.15; 0.6 from below), RAMP x, y,
+ * z, POINT's default radius, CALLBACK, CHORD 0.05 and 0.01. */
+#define SH_SETTINGS 11u
+static void sh_setting(uint32_t m, subd_sr48_adapt *ad)
+{
+    memset(ad, 0, sizeof *ad);
+    switch (m) {
+    case 0: ad->mode = SUBD_SR48_ADAPT_UNIFORM; break;
+    case 1:
+        ad->mode = SUBD_SR48_ADAPT_PLANE;
+        ad->point[0] = sh_real(0.1);
+        ad->normal[0] = sh_real(1); ad->normal[1] = sh_real(0.5); ad->normal[2] = sh_real(0.25);
+        break;
+    case 2: case 3:
+        ad->mode = SUBD_SR48_ADAPT_POINT;
+        ad->point[0] = sh_real(0.5); ad->point[1] = sh_real(0.4); ad->point[2] = sh_real(m == 2u ? 0.3 : -2);
+        ad->radius = sh_real(m == 2u ? 0.15 : 0.6);
+        break;
+    case 4: case 5: case 6: ad->mode = SUBD_SR48_ADAPT_RAMP; ad->axis = m - 4u; break;
+    case 7:
+        ad->mode = SUBD_SR48_ADAPT_POINT;
+        ad->point[0] = sh_real(0.5); ad->point[1] = sh_real(0.4); ad->point[2] = sh_real(0.3);
+        break;
+    case 8: ad->mode = SUBD_SR48_ADAPT_CALLBACK; ad->fn = sh_view_level; break;
+    default: ad->mode = SUBD_SR48_ADAPT_CHORD; ad->eps = sh_real(m == 9u ? 0.05 : 0.01); break;
+    }
+}
+
+/* Every setting on the fixed shapes, smoothing on and off, levels 0..maxl (the device: a
+ * subset, levels <= 2, CHORD at <= 1: its RAM and its time limit). */
+static void sr48sh_shapes(void)
+{
+    static const uint32_t maxl[P_BIPYR] = {H_HOST ? 4u : 2u, H_HOST ? 3u : 2u, H_HOST ? 3u : 1u, H_HOST ? 3u : 2u,
+                                           H_HOST ? 1u : 0u, H_HOST ? 4u : 2u, H_HOST ? 3u : 1u};
+    static const char *const names[P_BIPYR] = {"sr48sh_tet", "sr48sh_cube", "sr48sh_ico", "sr48sh_hexfan",
+                                                "sr48sh_grid", "sr48sh_two", "sr48sh_torus"};
+    subd_sr48_adapt ad;
+    uint32_t s, l, f, m;
+    for (m = 0; m < SH_SETTINGS; m++) {
+        sh_setting(m, &ad);
+        for (s = 0; s < P_BIPYR; s++)
+            for (f = 0; f < 2u; f++)
+                for (l = 0; l <= maxl[s]; l++) {
+                    uint32_t lim = maxl[s];
+                    if (m >= 9u) lim = H_HOST ? (lim > 2u ? 2u + (s == P_TET || s == P_TWO) : lim) : (lim > 1u ? 1u : lim);
+                    if (!H_HOST && f && m != 0u && m != 9u) continue;
+                    if (l > lim) continue;
+                    /* hashes where the host and the device both run the case */
+                    sh_case((int)s, l, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad,
+                            (l == 1u && !f && s != P_GRID && (m == 0u || m == 8u || m == 9u)) ? names[s] : 0);
+                }
+    }
+    /* every mode was streamed; the tetrahedron's coincident faces were compared */
+    CHECK_EQ(g_modes_seen, 0x3fu);
+    if (H_HOST) CHECK(g_coincident > 0u);
+    CHECK(g_chord_faces >= g_chord_exact && g_chord_faces > 0u);
+    SH_NOTE("stream = extraction: %u cuts (%u with coincident faces), %u faces; chord %u faces against %u "
+            "exact (%.3fx)\n",
+            g_cases, g_coincident, g_faces, g_chord_faces, g_chord_exact,
+            (double)g_chord_faces / (double)(g_chord_exact ? g_chord_exact : 1u));
+}
+
+/* Bipyramids with apexes of valence 3..12: every mode at level 2 (UNIFORM, PLANE, POINT,
+ * RAMP z, POINT's default radius, CALLBACK, CHORD 0.05; the device: UNIFORM, PLANE and CHORD
+ * at level 1), smoothing on and off. */
+static void sr48sh_valences(void)
+{
+    subd_sr48_adapt ad;
+    uint32_t m, f;
+    g_vmin = 99;
+    g_vmax = 0;
+    for (g_bn = 3; g_bn <= 12u; g_bn++)
+        for (m = 0; m < SH_SETTINGS; m++) {
+            if (m == 3u || m == 4u || m == 5u || m == 10u) continue;
+            if (!H_HOST && m != 0u && m != 1u && m != 9u) continue;
+            sh_setting(m, &ad);
+            for (f = 0; f < 2u; f++) sh_case(P_BIPYR, H_HOST ? 2u : 1u, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad, 0);
+        }
+    g_bn = 5;
+    /* the bases have vertices of valence 4 (regular 4-8) up to 12 (the apexes) */
+    CHECK_EQ(g_vmin, 4u);
+    CHECK_EQ(g_vmax, 12u);
+    SH_NOTE("bipyramids n = 3..12: base valences %u..%u\n", g_vmin, g_vmax);
+}
+
+const test_case suite_sr48_stream_shapes[] = {
+    {"sr48sh_shapes", sr48sh_shapes},
+    {"sr48sh_valences", sr48sh_valences},
+    {0, 0},
+};

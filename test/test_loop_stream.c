@@ -649,7 +649,7 @@ static void stream_tiles(void)
  * (tiles everywhere). */
 static void stream_tiles_limit(void)
 {
-    uint32_t hash = 2166136261u, id, levels;
+    uint32_t hash = 2166136261u, id;
     g_streams = g_skipped = 0;
     for (id = 0; id < 2u; id++) {
         subd_arena a;
@@ -664,6 +664,7 @@ static void stream_tiles_limit(void)
     for (id = 0; id < 2u; id++) {
         subd_arena a;
         subd_mesh in;
+        uint32_t levels;
         subd_arena_init(&a, CMP_BUF, CMP_BYTES);
         if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
         for (levels = 3; levels <= 5u; levels++) {

@@ -149,8 +149,8 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  * Memory: exactly subd_loop_stream_plan's bytes at the peak, independent of the mesh: the
  *   run state (SUBD_STREAM_STATE_BYTES), the overflow ring of one batch (16 triangles; one
  *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
- *   refined depth first (an explicit stack, no recursion), and from 2 levels on (not in limit
- *   mode) one regular tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (2.5 KB at 4), where
+ *   refined depth first (an explicit stack, no recursion), and from 2 levels on one regular
+ *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (2.5 KB at 4; limit mode 4.0 KB), where
  *   regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
@@ -207,8 +207,9 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * Per level k <= L-2 (limit mode: k <= L-1; k = 0: the control face's 1-ring, corners of
  * valence up to N; k >= 1: at most one corner above valence 6): positions, flags, ring
  * starts, corners, twins, sharp bits and the refined values of the level (the last two
- * levels are emitted from level L-2's); limit mode adds level L and a subd_mesh view of it;
- * then the scratch of one extraction and (L >= 2, not limit mode) the regular tile
+ * levels are emitted from level L-2's); limit mode adds level L, a subd_mesh view of it and
+ * the limit masks' caches;
+ * then the scratch of one extraction and (L >= 2) the regular tile
  * (SUBD_LOOP_TILE_BYTES_; SUBD_LOOP_TILE_LEVELS in subd_config.h). */
 #define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
 #define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
@@ -233,24 +234,29 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
      ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + \
-     SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim)))
+     SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+/* limit mode's masks: the limit masks' per-valence caches and the valence-6 masks */
+#define SUBD_LOOP_SMASK_ 352u
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
  * sides 2^(t-1) + 3 and 2^(t-2) + 3 (positions, ring starts, rotations, lower sides; the
- * second's positions also hold a quarter of the last level, side 2^(t-1)), the quarter's ids
- * and its emission table. */
+ * second's positions also hold a quarter of the last level, side 2^(t-1); limit mode: with a
+ * one-vertex margin, side 2^(t-1) + 3), the quarter's ids and its emission table; limit mode
+ * adds the quarter's limit positions and normals. */
 #define SUBD_LOOP_TMIN_(L) ((uint32_t)(L) < (uint32_t)SUBD_LOOP_TILE_LEVELS ? (uint32_t)(L) : (uint32_t)SUBD_LOOP_TILE_LEVELS)
-#define SUBD_LOOP_TD_(L, lim) (((lim) || SUBD_LOOP_TMIN_(L) < 2u) ? 0u : SUBD_LOOP_TMIN_(L))
+#define SUBD_LOOP_TD_(L) (SUBD_LOOP_TMIN_(L) < 2u ? 0u : SUBD_LOOP_TMIN_(L))
 #define SUBD_LOOP_TCNT_(s) (((s) + 1u) * ((s) + 2u) / 2u)
 #define SUBD_LOOP_TC_(t) ((t) < 2u ? 2u : (t))
 #define SUBD_LOOP_TNA_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 1u)) + 3u)
 #define SUBD_LOOP_TNB_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 2u)) + 3u)
 #define SUBD_LOOP_TQN_(t) SUBD_LOOP_TCNT_(1u << (SUBD_LOOP_TC_(t) - 1u))
-#define SUBD_LOOP_TILE_BYTES_(t) \
+#define SUBD_LOOP_TQM_(t, lim) ((lim) ? SUBD_LOOP_TNA_(t) : SUBD_LOOP_TQN_(t))
+#define SUBD_LOOP_TILE_BYTES_(t, lim) \
     ((t) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNA_(t)) + \
                SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
-               SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQN_(t) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQN_(t))) + \
+               SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQM_(t, lim) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQM_(t, lim))) + \
                2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)) + \
-               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) \
+               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) + \
+               ((lim) ? 2u * SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
          : 0u)
 
 /* ------------------------------------------------------------------------------------ */

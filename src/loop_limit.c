@@ -153,9 +153,8 @@ static uint64_t lim_div_q62(uint64_t num, uint64_t den)
  * |p_i - v| * 2^-29 instead of 2^-17 - several LSB at high valence - while w * (p_i - v) <
  * 2^28 * 2^32 and any sum of them with sum |w_i| <= 1 stay below 2^61); the differences
  * and products are exact in 64 bits and lim_finish rounds once at 2^-28, which equals
- * rounding (1 - sum w_i) v + sum w_i p_i exactly. */
+ * rounding (1 - sum w_i) v + sum w_i p_i exactly. The type lim_w: loop_limit_internal.h. */
 #if SUBD_FIXED
-typedef int64_t lim_w;
 #define LIM_W_FRAC(num, den) ((lim_w)((((int64_t)(num) << 29) + (den)) / (2 * (int64_t)(den)))) /* num >= 0 */
 static lim_w lim_w_from_q62(uint64_t q) { return (lim_w)((q + ((uint64_t)1 << 33)) >> 34); }
 static subd_wide lim_madd_w(subd_wide acc, lim_w w, subd_wide d) { return acc + w * d; }
@@ -165,7 +164,6 @@ static subd_real lim_finish(subd_real v, subd_wide acc, uint32_t *ovf)
     return subd_real_sat((int64_t)v + ((acc + ((int64_t)1 << 27)) >> 28), ovf);
 }
 #else
-typedef float lim_w;
 #define LIM_W_FRAC(num, den) SUBD_REAL_FRAC(num, den)
 static lim_w lim_w_from_q62(uint64_t q) { return subd_real_from_q62((int64_t)q); }
 #define lim_madd_w subd_wide_madd
@@ -182,7 +180,7 @@ static lim_w lim_chi(uint32_t n)
     return lim_w_from_q62((r + n / 2u) / n);
 }
 
-#define LIM_CACHE 16u /* valences 2..17 cached per call, on the stack */
+/* LIM_CACHE (valences 2..17 cached per call, on the stack): loop_limit_internal.h */
 
 static lim_w lim_chi_cached(lim_w *cache, uint32_t n)
 {
@@ -370,6 +368,46 @@ void subd_loop_limit_vertex(const subd_mesh *m, subd_loop_boundary b, const subd
     lim_classify(m, v, &c);
     lim_position(m, b, ctrl, v, &c, cache, pos, ovf);
     if (normal) lim_normal(m, b, ctrl, v, &c, &tab, normal);
+}
+
+void subd_loop_limit_vertex_cached(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
+                                   lim_cache *lc, subd_real *pos, subd_real *normal, uint32_t *ovf)
+{
+    lim_vert c;
+    lim_classify(m, v, &c);
+    lim_position(m, b, ctrl, v, &c, lc->chi, pos, ovf);
+    if (normal) lim_normal(m, b, ctrl, v, &c, &lc->tab, normal);
+}
+
+void subd_loop_limit_cache_init(lim_cache *lc)
+{
+    uint32_t k;
+    for (k = 0; k < LIM_CACHE; k++) lc->chi[k] = (lim_w)0;
+    lc->tab.filled = 0;
+}
+
+void subd_loop_limit_reg6_init(lim_reg6 *k)
+{
+    k->chi = lim_chi(6u);
+    subd_loop_limit_reg6_trig(k);
+}
+
+/* lim_position's smooth branch for valence 6 with the ring given (same sums, same order). */
+void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *pos,
+                          subd_real *nrm, uint32_t *ovf)
+{
+    subd_wide s0 = (subd_wide)0, s1 = (subd_wide)0, s2 = (subd_wide)0;
+    uint32_t i;
+    for (i = 0; i < 6u; i++) {
+        const subd_real *p = nb[i];
+        s0 += subd_wide_diff(p[0], pv[0]);
+        s1 += subd_wide_diff(p[1], pv[1]);
+        s2 += subd_wide_diff(p[2], pv[2]);
+    }
+    pos[0] = lim_finish(pv[0], k->chi * s0, ovf);
+    pos[1] = lim_finish(pv[1], k->chi * s1, ovf);
+    pos[2] = lim_finish(pv[2], k->chi * s2, ovf);
+    subd_loop_limit_reg6_normal(k, pv, nb, nrm);
 }
 
 /* The one layout (layout.h's walk: counts with a == NULL, carves otherwise): positions,

@@ -37,6 +37,42 @@ typedef struct lim_trig {
     subd_real c[LIM_TRIG_SLOTS], s[LIM_TRIG_SLOTS];
 } lim_trig;
 
+/* The position masks' weights (loop_limit.c): Q28 in an int64 in Q16.16, float in float32.
+ * Why the #if: the masks' own precision, not a scalar twin (loop_limit.c, "Position weights"). */
+#if SUBD_FIXED
+typedef int64_t lim_w;
+#else
+typedef float lim_w;
+#endif
+
+/* Per-call caches of subd_loop_limit_vertex_cached: chi of valences 2..17 (0: not yet) and the
+ * trig table. subd_loop_limit_cache_init empties them. */
+#define LIM_CACHE 16u
+typedef struct lim_cache {
+    lim_w chi[LIM_CACHE];
+    lim_trig tab;
+} lim_cache;
+void subd_loop_limit_cache_init(lim_cache *lc);
+/* subd_loop_limit_vertex with the caller's caches (loop_stream.c keeps one per stream). */
+void subd_loop_limit_vertex_cached(const subd_mesh *m, subd_loop_boundary b, const subd_real *ctrl, uint32_t v,
+                                   lim_cache *lc, subd_real *pos, subd_real *normal, uint32_t *ovf);
+
+/* The masks of a smooth vertex of valence 6 (every vertex inside loop_tile.c's regular
+ * tiles), computed once: chi(6) and cos, sin(2 pi j/6) as the trig table gives them.
+ * subd_loop_limit_reg6: the limit position and unit normal of centre pv with its ring nb
+ * (from vert_out, counter-clockwise), bit for bit as subd_loop_limit computes a smooth
+ * valence-6 vertex (the same sums in the same order: loop_limit.c's lim_position, then
+ * loop_limit_normal.c's lim_smooth_tangents and lim_unit_cross). */
+typedef struct lim_reg6 {
+    lim_w chi;
+    subd_real c[6], s[6];
+} lim_reg6;
+void subd_loop_limit_reg6_init(lim_reg6 *k);
+void subd_loop_limit_reg6_trig(lim_reg6 *k); /* loop_limit_normal.c: c and s */
+void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *pos,
+                          subd_real *nrm, uint32_t *ovf);
+void subd_loop_limit_reg6_normal(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *nrm);
+
 /* The unit limit normal of vertex v of class c (control points ctrl, rule b) into out[3];
  * tab: the caller's trig table (filled = 0 before its first use in a call), or NULL.
  * loop_limit_normal.c; loop_limit.c calls it by its former static name lim_normal. */

@@ -102,6 +102,32 @@ static void lim_smooth_tangents(const subd_mesh *m, const subd_real *ctrl, uint3
     }
 }
 
+void subd_loop_limit_reg6_trig(lim_reg6 *k)
+{
+    lim_trig tab;
+    uint32_t j;
+    tab.filled = 0;
+    for (j = 0; j < 6u; j++) lim_sincos(&tab, j, 6u, &k->c[j], &k->s[j]);
+}
+
+/* lim_smooth_tangents (i0 = 0) and lim_unit_cross for valence 6 with the ring given. */
+void subd_loop_limit_reg6_normal(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *nrm)
+{
+    subd_wide t1[3], t2[3];
+    uint32_t i, c;
+    for (c = 0; c < 3u; c++) t1[c] = t2[c] = (subd_wide)0;
+    for (i = 0; i < 6u; i++) {
+        const subd_real *p = nb[i];
+        subd_real wc = k->c[i], ws = k->s[i];
+        for (c = 0; c < 3u; c++) {
+            subd_wide d = subd_wide_diff(p[c], pv[c]);
+            t1[c] = subd_wide_madd(t1[c], wc, d);
+            t2[c] = subd_wide_madd(t2[c], ws, d);
+        }
+    }
+    lim_unit_cross(t1, t2, nrm);
+}
+
 /* The unit normal of one side of a boundary or crease vertex: ring positions s .. s+k-1
  * (mod n), whose first and last are the sharp neighbours. w8v: 8 times the stationary
  * weight of v on its sharp edges' new vertices; w8a, w8b: 8 times the level-0 weights at

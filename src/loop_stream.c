@@ -17,11 +17,15 @@
  * stencils are read off L-2's topology without building the four level L-1 patches); one
  * level in all emits from level 0 (emit_children); limit mode goes down to level L and moves
  * the centre's corners to the limit with loop_limit.c's masks (emit_limit).
- * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, at most L; not in
- * limit mode) a patch whose centre has three smooth valence-6 corners is not refined depth
- * first: its last t levels are made breadth first on a triangular grid, each vertex once, and
- * its 4^t triangles go out quarter by quarter in the same order (tile_emit, resumable when
- * the caller's buffer is full). Other patches take the general path below.
+ * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, at most L) a patch
+ * whose centre has three smooth valence-6 corners is not refined depth first: its last t
+ * levels are made breadth first on a triangular grid, each vertex once, and its 4^t
+ * triangles go out quarter by quarter in the same order (tile_emit, resumable when the
+ * caller's buffer is full). In limit mode each quarter's vertices are moved to the limit on
+ * the grid too, with the valence-6 masks computed once per stream (loop_limit.c's
+ * subd_loop_limit_reg6, the same sums as subd_loop_limit's). Other patches take the general
+ * path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
+ * table cached in the run state, so once per valence and stream).
  *
  * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
  * in the same order. loop.c sums a vertex's ring from vert_out (the boundary half-edge, else
@@ -71,6 +75,16 @@ typedef struct sp_view {
     uint8_t *vert_tag, *edge_tag;
 } sp_view;
 
+/* Limit mode's masks, kept for the whole stream: loop_limit.c's caches (chi and the trig
+ * table once per valence, not per vertex) and the tiles' valence-6 masks. A block of
+ * SUBD_LOOP_SMASK_ bytes in the arena (a fixed size: the plan is the same for both
+ * arithmetics, whose lim_w differ). */
+typedef struct sp_masks {
+    lim_cache lc;
+    lim_reg6 lk;
+} sp_masks;
+typedef char sp_masks_fit[sizeof(sp_masks) <= SUBD_LOOP_SMASK_ ? 1 : -1];
+
 typedef struct sp_layout {
     uint32_t n;         /* the largest valence, at least 6                                */
     uint32_t off0[A_N]; /* level 0's arrays, inside lev0                                   */
@@ -82,15 +96,16 @@ typedef struct sp_layout {
                          * loop_limit.c's masks                                             */
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
     uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2      */
+    sp_masks *mk;          /* limit mode: the limit masks' caches                          */
     uint32_t tdepth;       /* levels a tile refines: min(SUBD_LOOP_TILE_LEVELS, L); 0: none */
     uint32_t size1, total;
 } sp_layout;
 
-/* Levels of a tile: SUBD_LOOP_TILE_LEVELS, at most L; none below 2 and in limit mode. */
-static uint32_t tile_depth(uint32_t levels, int limit)
+/* Levels of a tile: SUBD_LOOP_TILE_LEVELS, at most L; none below 2. */
+static uint32_t tile_depth(uint32_t levels)
 {
     uint32_t t = levels < (uint32_t)SUBD_LOOP_TILE_LEVELS ? levels : (uint32_t)SUBD_LOOP_TILE_LEVELS;
-    return (limit || t < 2u) ? 0u : t;
+    return t < 2u ? 0u : t;
 }
 
 /* The limit mode's mesh view of a level with corner valence sum s: loop_patch.c's layout of
@@ -133,8 +148,9 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
     l->smap = subd_layout_take(&y, s0, 2u);
     l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
-    l->tdepth = tile_depth(levels, limit);
-    l->tile = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_layout(l->tdepth, 0)) : 0;
+    l->tdepth = tile_depth(levels);
+    l->tile = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_layout(l->tdepth, limit, 0)) : 0;
+    l->mk = limit ? (sp_masks *)(void *)subd_layout_take(&y, 1u, SUBD_LOOP_SMASK_) : 0;
     return subd_layout_end(&y, &l->total);
 }
 
@@ -363,7 +379,8 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
 /* Limit mode: the centre of level L's patch, each corner moved to its limit position with its
  * unit limit normal by loop_limit.c's masks on a subd_mesh view of the patch (the corners'
  * rings are whole; an outer vertex's class is given by LOOP_VTAG_KNOWN). */
-SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, uint32_t *ovf)
+SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, lim_cache *lc,
+                                    uint32_t *ovf)
 {
     const sp_head *ph = p->h;
     uint32_t j;
@@ -378,7 +395,7 @@ SUBD_NOINLINE static int emit_limit(const sp_run *r, const sp_level *p, const sp
     m.edge_tag = lay->view.edge_tag;
     subd_lp_view_fill(p, &m);
     for (j = 0; j < 3u; j++) {
-        subd_loop_limit_vertex(&m, r->o->boundary, p->pos, j, t.pos[j], t.normal[j], ovf);
+        subd_loop_limit_vertex_cached(&m, r->o->boundary, p->pos, j, lc, t.pos[j], t.normal[j], ovf);
         t.id[j] = subd_lp_vertex_id(r->in, r->f, ph->ca[j], ph->cb[j], r->o->levels);
     }
     if (*ovf) return SUBD_ERR_RANGE;
@@ -447,7 +464,7 @@ static void sp_enter(sp_state *s, const sp_level *p)
     const subd_loop_opts *o = &s->o;
     if (s->lay.tdepth && s->k == s->tk) {
         lt_tile tl;
-        subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth);
+        subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
             s->ton = 1;
             s->tq = s->tj = s->tready = 0;
@@ -503,8 +520,11 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
     lt_tile tl;
     uint32_t n, tj, j, k;
     int st;
+    const subd_real *nr;
     subd_tri *one = (subd_tri *)(void *)q->one;
-    subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth);
+    subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth, (int)s->limit);
+    tl.lk = s->limit ? &s->lay.mk->lk : 0;
+    nr = tl.qnrm;
     n = 1u << (2u * (tl.depth - 1u));
     if (s->ovf) return SUBD_ERR_RANGE;
     if (one) {
@@ -537,9 +557,13 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
             } else {
                 if (q->n >= q->max) break; /* the caller's buffer is full */
                 t = out_tri(&s->run);
-                for (j = 0; j < 3u; j++)
-                    for (k = 0; k < 3u; k++) t->normal[j][k] = 0;
+                if (!nr)
+                    for (j = 0; j < 3u; j++)
+                        for (k = 0; k < 3u; k++) t->normal[j][k] = 0;
             }
+            if (nr) /* limit mode: the unit limit normals */
+                for (j = 0; j < 3u; j++)
+                    for (k = 0; k < 3u; k++) t->normal[j][k] = nr[3u * ix[j] + k];
             t->pos[0][0] = p00; t->pos[0][1] = p01; t->pos[0][2] = p02;
             t->pos[1][0] = p10; t->pos[1][1] = p11; t->pos[1][2] = p12;
             t->pos[2][0] = p20; t->pos[2][1] = p21; t->pos[2][2] = p22;
@@ -599,7 +623,7 @@ static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
         level_at(&s->lay, s->k, &p);
         st = 0;
         if (s->k == s->depth) {
-            st = s->limit ? emit_limit(&s->run, &p, &s->lay, &s->ovf)
+            st = s->limit ? emit_limit(&s->run, &p, &s->lay, &s->lay.mk->lc, &s->ovf)
                  : o->levels >= 2u ? emit_grandchildren(&s->run, &p, &s->wc, &s->ovf) : emit_children(&s->run, &p);
             if (st != 0) {
                 d->face = s->run.f;
@@ -662,8 +686,12 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->tk = o->levels - lay.tdepth;
     if (lay.tdepth) {
         lt_tile tl;
-        subd_lt_carve(&tl, lay.tile, lay.tdepth);
+        subd_lt_carve(&tl, lay.tile, lay.tdepth, limit);
         subd_lt_table(&tl);
+    }
+    if (limit) {
+        subd_loop_limit_cache_init(&lay.mk->lc);
+        if (lay.tdepth) subd_loop_limit_reg6_init(&lay.mk->lk);
     }
     s->impl.step = sp_step;
     s->impl.ring = &s->ring;

@@ -53,10 +53,13 @@ static const uint8_t lt_doff[3][2] = {{1u, 0u}, {1u, 1u}, {0u, 1u}};
 
 static uint32_t lt_side(uint32_t t) { return (1u << t) + 3u; }
 
-uint32_t subd_lt_layout(uint32_t t, uint32_t off[LT_N])
+uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
 {
     uint32_t own[LT_N], b = 0, nA = lt_count(lt_side(t - 1u)), nB = lt_count(lt_side(t - 2u)), m = 1u << (t - 1u);
-    uint32_t qn = lt_count(m), nb = nB > qn ? nB : qn, rs = 3u * (uint32_t)sizeof(subd_real);
+    uint32_t qn = lt_count(m), rs = 3u * (uint32_t)sizeof(subd_real);
+    /* the second grid's positions also hold the last level's quarter (limit mode: with its
+     * margin, a grid of side m + 3 = the first grid's) */
+    uint32_t nq = limit ? nA : qn, nb = nB > nq ? nB : nq, nl = limit ? qn : 0u;
     if (!off) off = own;
     off[LT_APOS] = b; subd_size_add(&b, nA, rs);
     off[LT_ADIR] = b; subd_size_add(&b, nA, 1u);
@@ -68,13 +71,15 @@ uint32_t subd_lt_layout(uint32_t t, uint32_t off[LT_N])
     off[LT_BLOW] = b; subd_size_add(&b, nB, 1u);
     off[LT_QID] = b;  subd_size_add(&b, qn, 8u);
     off[LT_TAB] = b;  subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
+    off[LT_LPOS] = b; subd_size_add(&b, nl, rs);
+    off[LT_LNRM] = b; subd_size_add(&b, nl, rs);
     return b;
 }
 
-void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t)
+void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t, int limit)
 {
     uint32_t off[LT_N];
-    (void)subd_lt_layout(t, off);
+    (void)subd_lt_layout(t, limit, off);
     tl->g[0].pos = (subd_real *)(void *)(block + off[LT_APOS]);
     tl->g[0].dir = block + off[LT_ADIR];
     tl->g[0].rot = block + off[LT_AROT];
@@ -83,7 +88,10 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t)
     tl->g[1].dir = block + off[LT_BDIR];
     tl->g[1].rot = block + off[LT_BROT];
     tl->g[1].low = block + off[LT_BLOW];
-    tl->qpos = tl->g[1].pos;
+    tl->mpos = tl->g[1].pos;
+    tl->qpos = limit ? (subd_real *)(void *)(block + off[LT_LPOS]) : tl->g[1].pos;
+    tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
+    tl->lk = 0;
     tl->qid = (uint32_t *)(void *)(block + off[LT_QID]);
     tl->tab = block + off[LT_TAB];
     tl->depth = t;
@@ -210,6 +218,16 @@ static uint8_t lt_new_dir(const lt_grid *g, uint32_t s, uint32_t ui, uint32_t uj
     return (uint8_t)(ci == 2u ? 2u * k + 1u : 2u * ((k + 1u) % 3u) + 1u);
 }
 
+/* Ring start (lattice direction of vert_out) of the level t + 1 point (px, py) / 2 of grid g
+ * (side s), a point of the tile's face. */
+static uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py)
+{
+    uint32_t ui, uj, d;
+    int even;
+    lt_classify(px, py, &even, &ui, &uj, &d);
+    return even ? g->dir[lt_vi(s, ui, uj)] : lt_new_dir(g, s, ui, uj, d);
+}
+
 /* Faces of level t + 1 (side s2) from those of level t (side s): rotations and lower sides. */
 static void lt_put_u(const lt_grid *h, uint32_t s2, uint32_t i, uint32_t j, uint32_t r, uint32_t low)
 {
@@ -262,12 +280,7 @@ static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, 
             lt_point(g, s, I + 1u, J + 1u, w, h->pos + 3u * v, &lo);
             /* ring starts: the next level's old vertices are this level's face's, at
              * I, J >= 1, I + J <= s2 - 1 */
-            if (meta && I >= 1u && J >= 1u && I + J + 1u <= s2) {
-                uint32_t ui, uj, d;
-                int even;
-                lt_classify(I + 1u, J + 1u, &even, &ui, &uj, &d);
-                h->dir[v] = even ? g->dir[lt_vi(s, ui, uj)] : lt_new_dir(g, s, ui, uj, d);
-            }
+            if (meta && I >= 1u && J >= 1u && I + J + 1u <= s2) h->dir[v] = (uint8_t)lt_dir_at(g, s, I + 1u, J + 1u);
         }
     *ovf |= lo;
     if (meta) lt_faces(g, s, h, s2);
@@ -358,6 +371,43 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
     return 1;
 }
 
+/* Limit mode's quarter c (frame ox, oy, e1, e2 as in subd_lt_quarter; g: level depth - 1,
+ * side s): its last-level positions with a one-vertex margin into mpos (a grid of side
+ * m + 3 less its corners: the quarter at (1, 1)), then each quarter vertex's limit position
+ * and normal from its ring there, started at its vert_out (the level's ring start in the
+ * tile's lattice, turned into the quarter's: the quarter's lattice directions are the tile's
+ * turned by qrot[c] sixths, counter-clockwise, as e1 is direction qrot[c]). */
+static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, uint32_t s, int32_t ox, int32_t oy,
+                             const int32_t e1[2], const int32_t e2[2], loop_weights w, uint32_t *lo)
+{
+    static const uint8_t qrot[4] = {0u, 2u, 4u, 1u};
+    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, X, Y, v = 0, x, y, k = 0;
+    const subd_real *M = tl->mpos;
+    for (Y = 0; Y <= S; Y++)
+        for (X = 0; X + Y <= S; X++, v++) { /* v = lt_vi(S, X, Y) */
+            int32_t qx = (int32_t)X - 1, qy = (int32_t)Y - 1;
+            if ((X == 0u && Y == 0u) || (X == S && Y == 0u) || (X == 0u && Y == S)) continue;
+            lt_point(g, s, (uint32_t)(ox + qx * e1[0] + qy * e2[0]), (uint32_t)(oy + qx * e1[1] + qy * e2[1]), w,
+                     tl->mpos + 3u * v, lo);
+        }
+    for (y = 0; y <= m; y++) {
+        uint32_t row = S - y, l0 = lt_vi(S, 1u, y + 1u), off[6];
+        off[0] = 1u;
+        off[1] = row;
+        off[2] = row - 1u;
+        off[3] = (uint32_t)0u - 1u;
+        off[4] = (uint32_t)0u - (row + 1u);
+        off[5] = (uint32_t)0u - row;
+        for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
+            int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
+            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u, j;
+            const subd_real *nb[6];
+            for (j = 0; j < 6u; j++, d = d == 5u ? 0u : d + 1u) nb[j] = M + 3u * (l0 + off[d]);
+            subd_loop_limit_reg6(tl->lk, M + 3u * l0, nb, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
+        }
+    }
+}
+
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
                      int32_t e2[2])
 {
@@ -377,6 +427,11 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
     /* grid coordinates are the tile face's plus one, and lt_point takes them plus one */
     ox = org[0] + 2;
     oy = org[1] + 2;
+    if (tl->lk) {
+        lt_limit_quarter(tl, c, g, s, ox, oy, e1, e2, w, &lo);
+        *ovf |= lo;
+        return;
+    }
     for (y = 0; y <= m; y++)
         for (x = 0; x + y <= m; x++) {
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];

@@ -8,6 +8,7 @@
 #ifndef SUBD_LOOP_TILE_H
 #define SUBD_LOOP_TILE_H
 #include "loop_patch.h"
+#include "loop_limit_internal.h"
 
 /* Grid of level t of a tile: the 1-ring of the tile's face refined t times, a triangle of side
  * 2^t + 3 (less its three corners) in lattice coordinates (i, j), i + j <= side, vertex
@@ -31,27 +32,34 @@ typedef struct lt_tile {
     uint32_t *qid;
     uint8_t *tab;
     uint32_t depth;
+    /* limit mode (lk set by the caller after subd_lt_carve): qpos and qnrm are the quarter's
+     * limit positions and unit normals, from its last-level positions with a one-vertex
+     * margin (mpos: a grid of side 2^(t-1) + 3 in the quarter's frame, in the second grid's
+     * positions); else qnrm is NULL and qpos the last level's positions. */
+    subd_real *qnrm, *mpos;
+    const lim_reg6 *lk;
 } lt_tile;
 
-enum { LT_APOS, LT_ADIR, LT_AROT, LT_ALOW, LT_BPOS, LT_BDIR, LT_BROT, LT_BLOW, LT_QID, LT_TAB, LT_N };
+enum { LT_APOS, LT_ADIR, LT_AROT, LT_ALOW, LT_BPOS, LT_BDIR, LT_BROT, LT_BLOW, LT_QID, LT_TAB, LT_LPOS, LT_LNRM, LT_N };
 
 /* Vertices of a triangular grid of side s. */
 static inline uint32_t lt_count(uint32_t s) { return (s + 1u) * (s + 2u) / 2u; }
 /* Vertex (i, j) of a grid of side s. */
 static inline uint32_t lt_vi(uint32_t s, uint32_t i, uint32_t j) { return j * (2u * s + 3u - j) / 2u + i; }
 
-/* The arrays of a tile of depth t as offsets in its block (off may be NULL; returns its
- * bytes). The SUBD_LOOP_TILE_BYTES_ sum in subd_loop.h is the same. */
-uint32_t subd_lt_layout(uint32_t t, uint32_t off[LT_N]);
-/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets). */
-void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t);
+/* The arrays of a tile of depth t (limit: limit mode's too) as offsets in its block (off may
+ * be NULL; returns its bytes). The SUBD_LOOP_TILE_BYTES_ sum in subd_loop.h is the same. */
+uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N]);
+/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets); lk = NULL. */
+void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t, int limit);
 /* Fills the emission table of a quarter (4^(t-1) triangles). */
 void subd_lt_table(const lt_tile *tl);
 /* Level 0 of a tile from patch p (its centre's 1-ring): 1 when p is regular (then levels
  * 1..t-1 are refined too), 0 when it is not (nothing useful is written). */
 int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf);
 /* The last level's positions of quarter c (0..3: child c of the tile's face at level t - 1,
- * subd_loop's child order) into qpos, in the quarter's own frame (corner k of the child at
+ * subd_loop's child order) into qpos (limit mode: their limit positions, and normals into
+ * qnrm), in the quarter's own frame (corner k of the child at
  * lattice corner k of the quarter grid); *org, *e1, *e2: its frame in the tile's last level
  * (grid coordinates relative to the tile face's corner 0), for the ids. */
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],

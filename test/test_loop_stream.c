@@ -280,8 +280,8 @@ static void stream_plan(void)
         o.flags = SUBD_LOOP_STREAM_LIMIT;
         CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2, 0), &d0);
         CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES_LIMIT(l, 6));
-        /* limit mode keeps level L-1 and L and a mesh view, but has no regular tile */
-        CHECK(SUBD_LOOP_TILE_LEVELS == 0 || l < 2u ? p2 > p1 : p2 != p1);
+        /* limit mode keeps level L-1 and L, a mesh view, the masks' caches and a bigger tile */
+        CHECK(p2 > p1);
         o.flags = 0;
         CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2, 0), &d0);
         CHECK_EQ(p2, p1);
@@ -549,7 +549,7 @@ static int brute_regular(const subd_mesh *m, uint32_t f)
 static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
 {
     uint32_t off[A_N], bytes = subd_lp_level_layout(3u * 16u, 0, 1, off), f, n = 0, mark = subd_arena_mark(a);
-    uint8_t *blk = (uint8_t *)subd_arena_alloc(a, bytes), *tb = (uint8_t *)subd_arena_alloc(a, subd_lt_layout(4u, 0));
+    uint8_t *blk = (uint8_t *)subd_arena_alloc(a, bytes), *tb = (uint8_t *)subd_arena_alloc(a, subd_lt_layout(4u, 0, 0));
     sp_head head;
     sp_level p;
     lt_tile tl;
@@ -569,7 +569,7 @@ static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
     p.cflag = 0;
     p.cface = (uint32_t *)(void *)(blk + off[A_CFACE]);
     p.cvert = (uint32_t *)(void *)(blk + off[A_CVERT]);
-    subd_lt_carve(&tl, tb, 4u);
+    subd_lt_carve(&tl, tb, 4u, 0);
     for (f = 0; f < m->num_faces; f++) {
         int r;
         subd_lp_build_control(m, f, &p, 4u);
@@ -640,6 +640,63 @@ static void stream_tiles(void)
     h_nl();
 }
 
+/* Limit mode on regular tiles (loop_tile.c's lt_limit_quarter): limit positions and normals
+ * equal subd_loop_limit of subd_loop's output bit for bit where tiles meet a valence-5 and a
+ * valence-7 vertex, a crease across a regular region and a boundary, both rules: level 2
+ * (tiles of 2 levels at level 0) on the device too, with a hash; on the host levels 3-5
+ * (tiles of 3 and 4 levels at level 0, 4 at level 1), level 6 on the two grids and the
+ * icosahedron (tiles at level 2, next to its valence-5 vertices), and the torus at level 4
+ * (tiles everywhere). */
+static void stream_tiles_limit(void)
+{
+    uint32_t hash = 2166136261u, id;
+    g_streams = g_skipped = 0;
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
+        compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_BSPLINE, SUBD_LOOP_STREAM_LIMIT, &hash);
+    }
+    h_hash("stream_tiles_limit", hash);
+#if H_HOST
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        uint32_t levels;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        for (levels = 3; levels <= 5u; levels++) {
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, SUBD_LOOP_STREAM_LIMIT, &hash);
+        }
+        compare_one(&a, &in, 6, id ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT,
+                    &hash);
+    }
+    {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_shape(S_ICO, &a, &in)) return;
+        compare_one(&a, &in, 6, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_shape(S_TORUS, &a, &in)) return;
+        compare_one(&a, &in, 4, SUBD_LOOP_BOUNDARY_BSPLINE, SUBD_LOOP_STREAM_LIMIT, &hash);
+    }
+    CHECK_EQ(g_skipped, 0);
+    CHECK_EQ(g_streams, 4u + 2u * 7u + 2u);
+#else
+    CHECK_EQ(g_skipped, 0);
+    CHECK_EQ(g_streams, 4u);
+#endif
+    h_str("  limit tile streams compared ");
+    h_u32(g_streams);
+    h_str(", skipped ");
+    h_u32(g_skipped);
+    h_nl();
+}
+
 const test_case suite_loop_stream[] = {
     {"stream_equals_loop", stream_equals_loop},
     {"stream_hashes", stream_hashes},
@@ -649,5 +706,6 @@ const test_case suite_loop_stream[] = {
     {"stream_errors", stream_errors},
     {"stream_range", stream_range},
     {"stream_tiles", stream_tiles},
+    {"stream_tiles_limit", stream_tiles_limit},
     {0, 0},
 };

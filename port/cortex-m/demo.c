@@ -22,6 +22,9 @@ static uint8_t arena_buf[96 * 1024] __attribute__((aligned(8)));
 static uint8_t stream_arena[SUBD_LOOP_STREAM_BYTES(DEMO_STREAM_LEVELS, DEMO_GEO_MAX_VALENCE)]
     __attribute__((aligned(8)));
 typedef char stream_arena_within_16k[sizeof stream_arena <= 16u * 1024u ? 1 : -1];
+/* The same stream in limit mode (limit positions and normals): its own plan. */
+static uint8_t stream_limit_arena[SUBD_LOOP_STREAM_BYTES_LIMIT(DEMO_STREAM_LEVELS, DEMO_GEO_MAX_VALENCE)]
+    __attribute__((aligned(8)));
 /* The semi-regular 4-8 stream's own arena: 8 binary steps, base valence up to 8 (the
  * icosahedron's level 0). The materialised hierarchy of 8 steps would take ~1 MB. */
 #define DEMO_SR48_STEPS 8u
@@ -376,6 +379,21 @@ static int demo_stream(subd_arena *arena)
     if (count != hs.tris) return SUBD_ERR_PARAM;
     kv64("instructions, stream + counting sink", insns_count);
     kv("instructions per triangle, stream + counting sink", (uint32_t)(insns_count / count));
+    /* limit mode: limit positions and unit normals, same triangles */
+    o.flags = SUBD_LOOP_STREAM_LIMIT;
+    if ((st = subd_loop_stream_plan(&m, &o, &plan, 0)) != SUBD_OK) return st;
+    kv("limit stream arena bytes planned", plan);
+    if (plan > sizeof stream_limit_arena) return SUBD_ERR_NOMEM;
+    subd_arena_init(&sa, stream_limit_arena, sizeof stream_limit_arena);
+    count = 0;
+    t0 = port_cycles();
+    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return report_error(st, &d);
+    insns_count = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    if (count != hs.tris) return SUBD_ERR_PARAM;
+    kv64("instructions, limit stream + counting sink", insns_count);
+    kv("instructions per triangle, limit stream + counting sink", (uint32_t)(insns_count / count));
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }

@@ -357,7 +357,7 @@ demo-run: $(B)/m4f-float/demo.elf $(B)/m3-fixed/demo.elf tool
 	@echo "== firmware demo, Cortex-M4F float32 (QEMU mps2-an386)"
 	@qemu/run.sh mps2-an386 $(B)/m4f-float/demo.elf 300 > $(B)/demo/m4f.log; st=$$?; cat $(B)/demo/m4f.log; exit $$st
 	@echo "== firmware demo, Cortex-M3 Q16.16 (QEMU mps2-an385)"
-	@qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 120
+	@qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 300
 	@echo "== host tool (pictures in $(B)/demo/)"
 	@demo/host_demo.sh $(B)/bin $(B)/demo
 	@$(MAKE) --no-print-directory demo-pipe-check

@@ -322,8 +322,8 @@ typedef struct run_ctx {
     subd_alpha_curve_out co;
     subd_sr48_opts so;     /* RUN_SR48: build the hierarchy                                */
     subd_sr48 h;           /* RUN_SR48X: extract from this hierarchy (built once, below)   */
-    subd_adapt ad;
-    subd_adapt_report rep;
+    subd_sr48_adapt ad;
+    subd_sr48_adapt_report rep;
     uint32_t xmark;        /* RUN_SR48X: arena mark above the hierarchy                    */
     subd_loop_sink sink;   /* RUN_STREAM: subd_loop_stream with lo into the checksum sink  */
     demo_hash hash;
@@ -1029,13 +1029,13 @@ static void section_sr48(void)
             /* one arena for the hierarchy and the largest extraction above it */
             {
                 uint32_t xmax = 0, xp, keep = c.arena.used;
-                subd_adapt ad;
+                subd_sr48_adapt ad;
                 memset(&ad, 0, sizeof ad);
                 ad.max_level = steps;
                 ad.eps = D2R(1e-4 * m->diag);
                 ad.normal[0] = D2R(1.0);
-                for (ad.mode = SUBD_ADAPT_UNIFORM; ad.mode <= SUBD_ADAPT_CHORD; ad.mode++)
-                    if (ad.mode != SUBD_ADAPT_CALLBACK && subd_sr48_extract_plan(&c.h, &ad, &xp, 0) == SUBD_OK &&
+                for (ad.mode = SUBD_SR48_ADAPT_UNIFORM; ad.mode <= SUBD_SR48_ADAPT_CHORD; ad.mode++)
+                    if (ad.mode != SUBD_SR48_ADAPT_CALLBACK && subd_sr48_extract_plan(&c.h, &ad, &xp, 0) == SUBD_OK &&
                         xp > xmax)
                         xmax = xp;
                 run_free(&c);
@@ -1064,20 +1064,20 @@ static void section_sr48(void)
         }
         memset(&c.ad, 0, sizeof c.ad);
         c.ad.max_level = steps;
-        c.ad.mode = SUBD_ADAPT_UNIFORM;
+        c.ad.mode = SUBD_SR48_ADAPT_UNIFORM;
         snprintf(what, sizeof what, "uniform %u", (unsigned)steps);
         sr48_extract_row(&c, m->name, what);
-        c.ad.mode = SUBD_ADAPT_POINT;
+        c.ad.mode = SUBD_SR48_ADAPT_POINT;
         for (k = 0; k < 3u; k++) c.ad.point[k] = D2R(hi[k]);
         sr48_extract_row(&c, m->name, "point (bbox corner)");
-        c.ad.mode = SUBD_ADAPT_RAMP;
+        c.ad.mode = SUBD_SR48_ADAPT_RAMP;
         c.ad.axis = 0;
         sr48_extract_row(&c, m->name, "ramp x");
-        c.ad.mode = SUBD_ADAPT_PLANE;
+        c.ad.mode = SUBD_SR48_ADAPT_PLANE;
         for (k = 0; k < 3u; k++) c.ad.point[k] = D2R(0.5 * (lo[k] + hi[k]));
         c.ad.normal[0] = D2R(1.0);
         sr48_extract_row(&c, m->name, "plane x > mid");
-        c.ad.mode = SUBD_ADAPT_CHORD;
+        c.ad.mode = SUBD_SR48_ADAPT_CHORD;
         c.ad.eps = D2R(1e-3 * m->diag);
         snprintf(what, sizeof what, "chord 1e-3 x diag");
         sr48_extract_row(&c, m->name, what);
@@ -1133,7 +1133,7 @@ static void section_sr48stream(void)
             subd_sr48 h, base;
             subd_sr48_stream_opts sso;
             subd_mesh out;
-            subd_adapt_report rep;
+            subd_sr48_adapt_report rep;
             subd_diag d;
             subd_tri_sink sink;
             sr48s_sink k1, k2;
@@ -1145,7 +1145,7 @@ static void section_sr48stream(void)
             if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound, 0) != SUBD_OK) continue;
             if ((double)bound * 2.0 > PLAN_LIMIT) continue;
             memset(&sso, 0, sizeof sso);
-            sso.adapt.mode = SUBD_ADAPT_UNIFORM;
+            sso.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
             sso.adapt.max_level = steps;
             /* materialised: build + extract in one arena */
             mem = host_arena_alloc(&a, (uint32_t)((double)bound * 2.0 > 4e9 ? 4e9 : (double)bound * 2.0));
@@ -1207,7 +1207,7 @@ static void section_sr48stream(void)
     }
 }
 
-/* Chordal stream (subd_sr48_stream, SUBD_ADAPT_CHORD) next to the materialised
+/* Chordal stream (subd_sr48_stream, SUBD_SR48_ADAPT_CHORD) next to the materialised
  * subd_sr48_build + subd_sr48_extract(CHORD) in the same run (only when named: -s sr48chord;
  * one timed run each, the stream is slow): faces of the nested cut against the exact
  * materialised cut, faces/s ratio, the stream's plan against the materialised peak. */
@@ -1231,7 +1231,7 @@ static void section_sr48chord(void)
             subd_sr48 h, base;
             subd_sr48_stream_opts sso;
             subd_mesh out;
-            subd_adapt_report rep;
+            subd_sr48_adapt_report rep;
             subd_diag d;
             subd_tri_sink sink;
             sr48s_sink k2;
@@ -1242,7 +1242,7 @@ static void section_sr48chord(void)
             so.steps = steps;
             so.flags = 0;
             memset(&sso, 0, sizeof sso);
-            sso.adapt.mode = SUBD_ADAPT_CHORD;
+            sso.adapt.mode = SUBD_SR48_ADAPT_CHORD;
             sso.adapt.max_level = steps;
             sso.adapt.eps = D2R(epss[e]);
             if (subd_sr48_plan(&m->hm.mesh, &so, SUBD_SR48_CLUSTERS_UNKNOWN, &bound) != SUBD_OK) continue;

@@ -343,9 +343,9 @@ static uint32_t adapt_cb(void *ctx, const subd_real *lo, const subd_real *hi)
 
 typedef struct ext_ctx {
     const subd_sr48 *h;
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     subd_mesh out;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
 } ext_ctx;
 static int ext_run(void *x, subd_arena *a, subd_diag *d)
 {
@@ -746,8 +746,8 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     rc.o.flags = u8(&c) % 3u;
     rc.r = u8(&c);
     {
-        subd_adapt *ad = &rc.ext.ad;
-        ad->mode = (subd_adapt_mode)(u8(&c) % 7u);
+        subd_sr48_adapt *ad = &rc.ext.ad;
+        ad->mode = (subd_sr48_adapt_mode)(u8(&c) % 7u);
         ad->max_level = u8(&c) % (rc.o.steps + 2u);
         for (int k = 0; k < 3; k++) {
             ad->point[k] = fz_coord(0, u8(&c), 0);

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* libFuzzer target: the semi-regular 4-8 base mesh (subd_sr48_base) and its stream
- * (subd_sr48_stream, include/subd_semireg48.h) on a small mesh decoded from the input bytes
+ * (subd_sr48_stream, include/subd_sr48.h) on a small mesh decoded from the input bytes
  * (fuzz_mesh.h), against the materialising calls.
  *
  * The bytes choose the mesh, the smoothing flags (also invalid ones), the cut (every mode,
@@ -97,7 +97,7 @@ static int count_tri(void *ctx, const subd_tri *t)
 
 /* The reference: build(steps = max_level) and extract; 1 with *out filled (arena kept open
  * in *fa for the caller to close), 0 when it does not fit or fails (status in *st). */
-static int reference(const subd_mesh *in, uint32_t flags, const subd_adapt *ad, fz_arena *fa, subd_mesh *out,
+static int reference(const subd_mesh *in, uint32_t flags, const subd_sr48_adapt *ad, fz_arena *fa, subd_mesh *out,
                      int *pst, int *xplan_st)
 {
     subd_sr48_opts o = {ad->max_level, flags};
@@ -202,9 +202,9 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     /* the cut */
     subd_sr48_stream_opts so;
     memset(&so, 0, sizeof so);
-    subd_adapt *ad = &so.adapt;
+    subd_sr48_adapt *ad = &so.adapt;
     uint8_t mb = u8(&c);
-    ad->mode = (subd_adapt_mode)(mb < 250u ? mb % 6u : 6u + (mb & 1u) * 100u);
+    ad->mode = (subd_sr48_adapt_mode)(mb < 250u ? mb % 6u : 6u + (mb & 1u) * 100u);
     uint8_t lb = u8(&c);
     ad->max_level = lb < 250u ? lb % 5u : SUBD_SR48_MAX_STEPS + 1u;
     for (int k = 0; k < 3; k++) {
@@ -233,7 +233,7 @@ int FUZZ_ENTRY(const uint8_t *data, size_t size)
     subd_mesh out;
     int rst = 0, xps = 1;
     int have = reference(&in, flags, ad, &ra, &out, &rst, &xps);
-    int streams = ad->mode != SUBD_ADAPT_CHORD;
+    int streams = ad->mode != SUBD_SR48_ADAPT_CHORD;
     if (xps != 1 && streams)
         FZ_CHECK(xps == sps, "stream plan status = extraction plan status", sps, xps);
 

@@ -541,7 +541,7 @@ int subd_stream_run_points(subd_stream *s, const subd_point_sink *sink, subd_dia
 #include "subd_loop.h"
 #include "subd_quasi48.h"
 #include "subd_alpha.h"
-#include "subd_semireg48.h"
+#include "subd_sr48.h"
 #include "subd_tags.h"
 #include "subd_loop_adapt.h"
 

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Chordal cuts of the streamed semi-regular 4-8 surface (SUBD_ADAPT_CHORD in
+/* Chordal cuts of the streamed semi-regular 4-8 surface (SUBD_SR48_ADAPT_CHORD in
  * subd_sr48_stream, src/sr48_stream.c): the deviation test of one vertex against the linear
  * interpolant of one ancestor triangle. Paper: semi-regular-4-8-refinement-box-splines.txt,
  * section 3 (a diamond is split as a whole, splits force their parents: the restricted

@@ -94,7 +94,7 @@
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "mesh_internal.h"
-#include "subd_semireg48.h"
+#include "subd_sr48.h"
 #include "layout.h"
 #include "entry.h"
 #include "vec3w.h"
@@ -127,7 +127,7 @@ typedef struct ex_layout {
 
 typedef struct ex_ctx {
     const subd_sr48 *h;
-    const subd_adapt *ad;
+    const subd_sr48_adapt *ad;
     uint32_t max, uniform;
     uint8_t *mark;
     uint32_t *work;    /* worklist, then per-vertex used flags                          */
@@ -146,27 +146,27 @@ typedef struct ex_ctx {
 static int real_ok(subd_real x) { return subd_real_is_finite(x); }
 
 /* The mode's own parameters (sr48_internal.h: the stream checks them here too). */
-int subd_sr48_adapt_check_(const subd_adapt *ad)
+int subd_sr48_adapt_check_(const subd_sr48_adapt *ad)
 {
     uint32_t i;
     switch (ad->mode) {
-    case SUBD_ADAPT_UNIFORM: break;
-    case SUBD_ADAPT_POINT:
+    case SUBD_SR48_ADAPT_UNIFORM: break;
+    case SUBD_SR48_ADAPT_POINT:
         for (i = 0; i < 3u; i++) if (!real_ok(ad->point[i])) return SUBD_ERR_PARAM;
         if (!real_ok(ad->radius) || ad->radius < 0) return SUBD_ERR_PARAM;
         break;
-    case SUBD_ADAPT_RAMP:
+    case SUBD_SR48_ADAPT_RAMP:
         if (ad->axis > 2u) return SUBD_ERR_PARAM;
         break;
-    case SUBD_ADAPT_PLANE:
+    case SUBD_SR48_ADAPT_PLANE:
         for (i = 0; i < 3u; i++)
             if (!real_ok(ad->point[i]) || !real_ok(ad->normal[i])) return SUBD_ERR_PARAM;
         if (ad->normal[0] == 0 && ad->normal[1] == 0 && ad->normal[2] == 0) return SUBD_ERR_PARAM;
         break;
-    case SUBD_ADAPT_CALLBACK:
+    case SUBD_SR48_ADAPT_CALLBACK:
         if (!ad->fn) return SUBD_ERR_PARAM;
         break;
-    case SUBD_ADAPT_CHORD:
+    case SUBD_SR48_ADAPT_CHORD:
         if (!real_ok(ad->eps) || !(ad->eps > 0)) return SUBD_ERR_PARAM;
         break;
     default: return SUBD_ERR_PARAM;
@@ -174,7 +174,7 @@ int subd_sr48_adapt_check_(const subd_adapt *ad)
     return SUBD_OK;
 }
 
-static int ex_check_params(const subd_sr48 *h, const subd_adapt *ad)
+static int ex_check_params(const subd_sr48 *h, const subd_sr48_adapt *ad)
 {
     uint32_t k;
     if (!h || !ad) return SUBD_ERR_PARAM;
@@ -249,11 +249,11 @@ static int ex_layout_vmap(subd_arena *a, const ex_layout *L, uint32_t **vmap, ui
 }
 
 /* The one layout of phase 1 (layout.h). With a == NULL it only counts (c may be NULL). */
-static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_adapt *ad)
+static int ex_layout_phase1(subd_arena *a, ex_layout *L, ex_ctx *c, const subd_sr48_adapt *ad)
 {
     uint32_t nwork = (L->uniform || L->nvert > L->ntri) ? L->nvert : L->ntri;
     uint32_t nf = L->uniform ? 0u : L->max + 1u;
-    uint32_t ncs = (!L->uniform && ad->mode == SUBD_ADAPT_CHORD) ? L->max + 1u : 0u;
+    uint32_t ncs = (!L->uniform && ad->mode == SUBD_SR48_ADAPT_CHORD) ? L->max + 1u : 0u;
     subd_layout l;
     ex_ctx tmp;
     ex_ctx *p = c ? c : &tmp;
@@ -285,12 +285,12 @@ static uint32_t ex_need(const ex_layout *L, uint32_t nv, uint32_t nf)
     return subd_bytes_max(b, L->phase1);
 }
 
-static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint32_t *bound)
+static int ex_plan(const subd_sr48 *h, const subd_sr48_adapt *ad, ex_layout *L, uint32_t *bound)
 {
     int st = ex_check_params(h, ad);
     if (st != SUBD_OK) return st;
     L->max = ad->max_level;
-    L->uniform = (ad->mode == SUBD_ADAPT_UNIFORM) || ad->max_level == 0u;
+    L->uniform = (ad->mode == SUBD_SR48_ADAPT_UNIFORM) || ad->max_level == 0u;
     L->ntri = h->level_tri[L->max];
     L->nvert = h->level_verts[L->max];
     if ((st = ex_layout_phase1(0, L, 0, ad)) != SUBD_OK) return st;
@@ -298,7 +298,7 @@ static int ex_plan(const subd_sr48 *h, const subd_adapt *ad, ex_layout *L, uint3
     return *bound == UINT32_MAX ? SUBD_ERR_TOO_BIG : SUBD_OK;
 }
 
-int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes, subd_diag *diag)
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_sr48_adapt *ad, uint32_t *bytes, subd_diag *diag)
 {
     subd_diag own, *d = subd_plan_begin(&own, diag);
     ex_layout L;
@@ -428,7 +428,7 @@ static int ex_star_box(ex_ctx *c, uint32_t t, uint32_t k, subd_real *lo, subd_re
 
 /* POINT: dist(point, box) < n * radius (n = max_level - k levels to go). Every step is
  * monotone in the box and in n, which is all the nesting needs. */
-static int ex_point_wants(const subd_adapt *ad, subd_real radius, const subd_real *lo, const subd_real *hi, uint32_t n)
+static int ex_point_wants(const subd_sr48_adapt *ad, subd_real radius, const subd_real *lo, const subd_real *hi, uint32_t n)
 {
     subd_wide d[3], lim = subd_wide_mulu(n, subd_wide_of(radius));
     uint32_t i;
@@ -455,7 +455,7 @@ static int ex_point_wants(const subd_adapt *ad, subd_real radius, const subd_rea
 }
 
 /* RAMP: (k + 1)(hi - lo) <= max (x - lo), x the box's largest coordinate on the axis. */
-static int ex_ramp_wants(const subd_adapt *ad, const subd_real *rlo, const subd_real *rhi, const subd_real *hi,
+static int ex_ramp_wants(const subd_sr48_adapt *ad, const subd_real *rlo, const subd_real *rhi, const subd_real *hi,
                          uint32_t k)
 {
     uint32_t ax = ad->axis;
@@ -465,7 +465,7 @@ static int ex_ramp_wants(const subd_adapt *ad, const subd_real *rlo, const subd_
 
 /* PLANE: the box's corner furthest along the normal is on the side (x - point).normal >= 0
  * (exact in Q16.16, vec3w.h). */
-static int ex_plane_wants(const subd_adapt *ad, const subd_real *lo, const subd_real *hi)
+static int ex_plane_wants(const subd_sr48_adapt *ad, const subd_real *lo, const subd_real *hi)
 {
     subd_real q[3];
     uint32_t i;
@@ -476,12 +476,12 @@ static int ex_plane_wants(const subd_adapt *ad, const subd_real *lo, const subd_
 /* POINT, RAMP or PLANE on a diamond of level k < max_level with region box (lo, hi)
  * (sr48_internal.h: the stream takes its decisions here too). radius: POINT's (resolved);
  * rlo, rhi: RAMP's bounding box. */
-int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
+int subd_sr48_box_wants_(const subd_sr48_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
                          const subd_real *lo, const subd_real *hi, uint32_t k)
 {
-    if (ad->mode == SUBD_ADAPT_POINT) return ex_point_wants(ad, radius, lo, hi, ad->max_level - k);
-    if (ad->mode == SUBD_ADAPT_RAMP) return ex_ramp_wants(ad, rlo, rhi, hi, k);
-    if (ad->mode == SUBD_ADAPT_CALLBACK) return ad->fn(ad->ctx, lo, hi) > k;
+    if (ad->mode == SUBD_SR48_ADAPT_POINT) return ex_point_wants(ad, radius, lo, hi, ad->max_level - k);
+    if (ad->mode == SUBD_SR48_ADAPT_RAMP) return ex_ramp_wants(ad, rlo, rhi, hi, k);
+    if (ad->mode == SUBD_SR48_ADAPT_CALLBACK) return ad->fn(ad->ctx, lo, hi) > k;
     return ex_plane_wants(ad, lo, hi);
 }
 
@@ -530,16 +530,16 @@ static int ex_wants(ex_ctx *c, uint32_t t, uint32_t k)
 {
     subd_real lo[3], hi[3];
     switch (c->ad->mode) {
-    case SUBD_ADAPT_POINT:
-    case SUBD_ADAPT_RAMP:
-    case SUBD_ADAPT_PLANE:
-    case SUBD_ADAPT_CALLBACK:
+    case SUBD_SR48_ADAPT_POINT:
+    case SUBD_SR48_ADAPT_RAMP:
+    case SUBD_SR48_ADAPT_PLANE:
+    case SUBD_SR48_ADAPT_CALLBACK:
         if (!ex_star_box(c, t, k, lo, hi)) {
             c->bad = 1;
             return 0;
         }
         return subd_sr48_box_wants_(c->ad, c->radius, c->lo, c->hi, lo, hi, k);
-    case SUBD_ADAPT_CHORD: return ex_chord_wants(c, t, k);
+    case SUBD_SR48_ADAPT_CHORD: return ex_chord_wants(c, t, k);
     default: return 1;
     }
 }
@@ -685,7 +685,7 @@ static int ex_next_leaf(const ex_ctx *c, uint32_t *pt, uint32_t *pk)
     return 1;
 }
 
-/* The adaptation box (RAMP's range, POINT's default radius; subd_adapt_mode): the box of
+/* The adaptation box (RAMP's range, POINT's default radius; subd_sr48_adapt_mode): the box of
  * the finest positions of the corners of the level-0 triangles, i.e. of L over the whole
  * mesh. 0 when a level-0 corner is out of range. */
 static int ex_bbox(ex_ctx *c)
@@ -747,8 +747,8 @@ subd_real subd_sr48_default_radius_(const subd_real *blo, const subd_real *bhi, 
 
 /* ------------------------------------------------------------------------------------ */
 
-int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
-                      subd_adapt_report *rep, subd_diag *diag)
+int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_sr48_adapt *ad, subd_mesh *out,
+                      subd_sr48_adapt_report *rep, subd_diag *diag)
 {
     subd_entry e;
     subd_diag *d = subd_entry_begin(&e, a, diag);
@@ -756,7 +756,7 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     ex_ctx c;
     mesh_counts mc;
     subd_mesh m;
-    subd_adapt_report r;
+    subd_sr48_adapt_report r;
     uint32_t next[SUBD_SR48_MAX_STEPS + 1u];
     uint32_t bound = 0, need, mark0, arr0, arr1, nv, nf, v, k, t, f, nvert;
     uint32_t *vmap, *used;
@@ -784,9 +784,9 @@ int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, s
     /* phase 1: the cut and its counts */
     if (!c.uniform) {
         /* the adaptation box: a pass over the level-0 corners, only when used */
-        if (ad->mode == SUBD_ADAPT_RAMP || (ad->mode == SUBD_ADAPT_POINT && c.radius == 0))
+        if (ad->mode == SUBD_SR48_ADAPT_RAMP || (ad->mode == SUBD_SR48_ADAPT_POINT && c.radius == 0))
             if (!ex_bbox(&c)) { st = SUBD_ERR_PARAM; goto fail; }
-        if (ad->mode == SUBD_ADAPT_POINT && c.radius == 0) c.radius = subd_sr48_default_radius_(c.lo, c.hi, c.max);
+        if (ad->mode == SUBD_SR48_ADAPT_POINT && c.radius == 0) c.radius = subd_sr48_default_radius_(c.lo, c.hi, c.max);
         if (!ex_mark(&c)) { st = SUBD_ERR_PARAM; goto fail; }
     }
     /* the leaves: per-level counts, and the used vertices flagged in the worklist's memory

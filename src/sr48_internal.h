@@ -81,10 +81,10 @@ int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pba
  * parameter check (SUBD_OK or SUBD_ERR_PARAM), and the nested-region decision of POINT,
  * RAMP, PLANE and CALLBACK for a diamond of level k < max_level whose region box is (lo, hi)
  * (radius: POINT's, resolved; rlo, rhi: RAMP's bounding box). */
-int subd_sr48_adapt_check_(const subd_adapt *ad);
-int subd_sr48_box_wants_(const subd_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
+int subd_sr48_adapt_check_(const subd_sr48_adapt *ad);
+int subd_sr48_box_wants_(const subd_sr48_adapt *ad, subd_real radius, const subd_real *rlo, const subd_real *rhi,
                          const subd_real *lo, const subd_real *hi, uint32_t k);
-/* The adaptation box of RAMP and POINT's default radius (subd_adapt_mode): the box of the
+/* The adaptation box of RAMP and POINT's default radius (subd_sr48_adapt_mode): the box of the
  * finest positions of the level-0 triangles' corners. box_grow grows (blo, bhi) by the n
  * points pos + 3 idx[i] (reset to empty first when init); default_radius is POINT's radius
  * from that box for max_level max > 0. */

@@ -3,7 +3,7 @@
  * (paper: semi-regular-4-8-refinement-box-splines.txt, section 4), the factored
  * four-direction (Zwart-Powell) box-spline smoothing (section 6), planning and the build
  * driver. The pre-processing (section 5) is in sr48_pre.c; the layout is documented in
- * include/subd_semireg48.h.
+ * include/subd_sr48.h.
  *
  * Choices where the paper is silent:
  *  - Base neighbours need no adjacency and no scratch: a triangle's leg neighbours are its

@@ -59,7 +59,7 @@
  * region is nested, a diamond that splits has split parents, so the top-down walk cuts
  * exactly subd_sr48_extract's (least conforming) cut, with no lookahead. RAMP's range and
  * POINT's default radius come from the adaptation box A (the finest positions of the base
- * triangles' corners, subd_adapt_mode), found before the first triangle by one descent per
+ * triangles' corners, subd_sr48_adapt_mode), found before the first triangle by one descent per
  * base vertex (s48_adapt_box); CALLBACK asks fn on the same box as POINT/RAMP/PLANE.
  *
  * Chordal cuts (CHORD; the criterion, why it nests and why it is conservative: sr48_chord.c):
@@ -125,8 +125,8 @@ typedef struct s48_state {
     uint8_t *lev;      /* levels 0..L-1 blocks of lev_size, then X                         */
     uint32_t lev_size;
     uint32_t off[8], xoff[8];
-    subd_adapt ad;
-    uint32_t adapt;    /* POINT, RAMP, PLANE, CALLBACK: the nested-region cut (subd_adapt_mode) */
+    subd_sr48_adapt ad;
+    uint32_t adapt;    /* POINT, RAMP, PLANE, CALLBACK: the nested-region cut (subd_sr48_adapt_mode) */
     uint32_t boxed;    /* RAMP, POINT's default radius: 0 until the adaptation box is found */
     subd_real blo[3], bhi[3], radius; /* the adaptation box A; POINT's radius (resolved)  */
     subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
@@ -375,23 +375,23 @@ static uint32_t s48_valence(const subd_sr48 *b)
 /* Does the mode keep L (the level-0 interpolant) per window vertex? (CHORD does not.) */
 static uint32_t s48_has_l(const subd_sr48_stream_opts *o)
 {
-    return o->adapt.mode != SUBD_ADAPT_UNIFORM && o->adapt.mode != SUBD_ADAPT_CHORD;
+    return o->adapt.mode != SUBD_SR48_ADAPT_UNIFORM && o->adapt.mode != SUBD_SR48_ADAPT_CHORD;
 }
 
 static int s48_check(const subd_sr48 *b, const subd_sr48_stream_opts *o, uint32_t *valence)
 {
     int st;
     if (!o) return SUBD_ERR_PARAM;
-    /* every mode streams: the nested region (POINT, RAMP, PLANE, CALLBACK; subd_adapt_mode) or
+    /* every mode streams: the nested region (POINT, RAMP, PLANE, CALLBACK; subd_sr48_adapt_mode) or
      * the nested chordal criterion (CHORD, sr48_chord.c); the parameters as subd_sr48_extract
      * checks them (CHORD: eps > 0 and finite) */
     switch (o->adapt.mode) {
-    case SUBD_ADAPT_UNIFORM: break;
-    case SUBD_ADAPT_POINT:
-    case SUBD_ADAPT_RAMP:
-    case SUBD_ADAPT_PLANE:
-    case SUBD_ADAPT_CALLBACK:
-    case SUBD_ADAPT_CHORD:
+    case SUBD_SR48_ADAPT_UNIFORM: break;
+    case SUBD_SR48_ADAPT_POINT:
+    case SUBD_SR48_ADAPT_RAMP:
+    case SUBD_SR48_ADAPT_PLANE:
+    case SUBD_SR48_ADAPT_CALLBACK:
+    case SUBD_SR48_ADAPT_CHORD:
         if (subd_sr48_adapt_check_(&o->adapt) != SUBD_OK) return SUBD_ERR_PARAM;
         break;
     default: return SUBD_ERR_PARAM;
@@ -415,7 +415,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
     subd_diag_clear(d);
     if (!bytes) return subd_fail(d, SUBD_ERR_PARAM);
     if ((st = s48_check(base, o, &val)) != SUBD_OK) return subd_fail(d, st);
-    st = s48_layout(0, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_ADAPT_CHORD, &s, &ring, &b);
+    st = s48_layout(0, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_SR48_ADAPT_CHORD, &s, &ring, &b);
     if (st != SUBD_OK) return subd_fail(d, st);
     *bytes = b;
     return SUBD_OK;
@@ -798,7 +798,7 @@ static int s48_level0_lin(s48_state *s, uint32_t t0)
     return 1;
 }
 
-/* The adaptation box A (RAMP, POINT's default radius; subd_adapt_mode): the finest
+/* The adaptation box A (RAMP, POINT's default radius; subd_sr48_adapt_mode): the finest
  * positions of the level-0 triangles' corners, each vertex by one descent from the
  * lowest-index triangle of its fan (so once); then POINT's radius. levels > 0. */
 static int s48_adapt_box(s48_state *s)
@@ -821,7 +821,7 @@ static int s48_adapt_box(s48_state *s)
             if (!s48_finest(s, 0, w.hd[2], v, p)) return 0;
             subd_sr48_box_grow_(p, &zero, 1, s->blo, s->bhi, 0);
         }
-    if (s->ad.mode == SUBD_ADAPT_POINT && s->radius == 0)
+    if (s->ad.mode == SUBD_SR48_ADAPT_POINT && s->radius == 0)
         s->radius = subd_sr48_default_radius_(s->blo, s->bhi, s->levels);
     return 1;
 }
@@ -1174,25 +1174,25 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     int st;
     if (!a || !str) return subd_entry_fail(&e, SUBD_ERR_PARAM);
     if ((st = s48_check(base, o, &val)) != SUBD_OK) return subd_entry_fail(&e, st);
-    if ((st = s48_layout(0, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_ADAPT_CHORD, &s, &ring,
+    if ((st = s48_layout(0, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_SR48_ADAPT_CHORD, &s, &ring,
                          &bytes)) != SUBD_OK)
         return subd_entry_fail(&e, st);
     if (bytes > subd_arena_free_bytes(a)) {
         d->bytes_needed = bytes;
         return subd_entry_fail(&e, SUBD_ERR_NOMEM);
     }
-    (void)s48_layout(a, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_ADAPT_CHORD, &s, &ring,
+    (void)s48_layout(a, o->adapt.max_level, val, s48_has_l(o), o->adapt.mode == SUBD_SR48_ADAPT_CHORD, &s, &ring,
                      &bytes); /* fits */
     s->impl.step = s48_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;
     s->base = base;
     s->levels = o->adapt.max_level;
-    s->adapt = o->adapt.mode != SUBD_ADAPT_UNIFORM ? 1u : 0u;
+    s->adapt = o->adapt.mode != SUBD_SR48_ADAPT_UNIFORM ? 1u : 0u;
     s->ad = o->adapt;
     s->radius = o->adapt.radius;
-    s->boxed = (s->levels > 0u && (o->adapt.mode == SUBD_ADAPT_RAMP ||
-                                   (o->adapt.mode == SUBD_ADAPT_POINT && o->adapt.radius == 0)))
+    s->boxed = (s->levels > 0u && (o->adapt.mode == SUBD_SR48_ADAPT_RAMP ||
+                                   (o->adapt.mode == SUBD_SR48_ADAPT_POINT && o->adapt.radius == 0)))
                    ? 0u
                    : 1u;
     s->smooth = (base->flags & SUBD_SR48_NO_SMOOTH) ? 0u : 1u;
@@ -1202,7 +1202,7 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->k = 0;
     s->built = 0;
     s->err = 0;
-    s->chord = o->adapt.mode == SUBD_ADAPT_CHORD ? 1u : 0u;
+    s->chord = o->adapt.mode == SUBD_SR48_ADAPT_CHORD ? 1u : 0u;
     if (s->chord) {
         uint32_t i;
         for (i = 0; i < 3u * S48C_NC; i++) s->cache[i] = 0; /* no valid entry */

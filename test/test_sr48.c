@@ -8,7 +8,7 @@
  * cleanly), errors, and output hashes for host = QEMU. Everything fits the shared 256 KiB
  * test arena. */
 #include "harness.h"
-#include "subd_semireg48.h"
+#include "subd_sr48.h"
 #include "corpus.h"
 
 #define MAXV 4096

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Chordal cuts of the streamed semi-regular 4-8 surface (subd_sr48_stream with
- * SUBD_ADAPT_CHORD, src/sr48_stream.c + src/sr48_chord.c), checked against independent
+ * SUBD_SR48_ADAPT_CHORD, src/sr48_stream.c + src/sr48_chord.c), checked against independent
  * computations on the materialised hierarchy subd_sr48_build(steps = L):
  *  - the guarantee, brute force: every vertex of the hierarchy (all of level L's vertices,
  *    the uniform cut's) lies within eps (+ the rounding slack: 2^-16 per axis in Q16.16) of
@@ -218,7 +218,7 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
     static subd_sr48 h, base;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
-    static subd_adapt_report rep;
+    static subd_sr48_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
     uint32_t plan = 0, nid = 0, i, c, q, ne = 0, nb = 0, bad = 0, nv = 0;
@@ -229,7 +229,7 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
     memset(&so, 0, sizeof so);
-    so.adapt.mode = SUBD_ADAPT_CHORD;
+    so.adapt.mode = SUBD_SR48_ADAPT_CHORD;
     so.adapt.max_level = levels;
     so.adapt.eps = ch_real(eps);
     {
@@ -354,7 +354,7 @@ static void sr48c_errors(void)
     static subd_sr48 base, h;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
-    static subd_adapt_report rep;
+    static subd_sr48_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
     subd_stream st;
@@ -369,7 +369,7 @@ static void sr48c_errors(void)
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
     if (!CHECK_EQ(subd_sr48_base(&a, &in, 0, &base, &d), SUBD_OK)) return;
     memset(&so, 0, sizeof so);
-    so.adapt.mode = SUBD_ADAPT_CHORD;
+    so.adapt.mode = SUBD_SR48_ADAPT_CHORD;
     so.adapt.max_level = 2;
     bads[0] = 0;
     bads[1] = ch_real(-0.01);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Variable-resolution extraction from the semi-regular 4-8 hierarchy (src/sr48_extract.c,
  * paper section 3 and 7). Hierarchies are built here by an independent routine that
- * follows the index rules of subd_semireg48.h (a square = one diamond, a cube = six
+ * follows the index rules of subd_sr48.h (a square = one diamond, a cube = six
  * diamonds projected to the unit sphere; vertices carry integer parameters so every
  * position is a function of the parameter), and, when the scheme's builder is linked, by
  * subd_sr48_build from the corpus meshes.
@@ -24,7 +24,7 @@
  *  - UNIFORM is level k of the hierarchy (counts from level_tri / level_verts), plan = peak;
  *  - every too-small arena fails cleanly, bad parameters, output hashes for host = QEMU. */
 #include "harness.h"
-#include "subd_semireg48.h"
+#include "subd_sr48.h"
 #include "corpus.h"
 #include <stdlib.h>
 #if H_HOST
@@ -242,7 +242,7 @@ static int build_cube(uint32_t steps)
 
 typedef struct tctx {
     const subd_sr48 *h;
-    const subd_adapt *ad;
+    const subd_sr48_adapt *ad;
     double lo[3], hi[3], radius;
     uint32_t max;
 } tctx;
@@ -347,13 +347,13 @@ static uint32_t cb_level(void *ctx, const subd_real *lo, const subd_real *hi)
 static double margin(const tctx *c, uint32_t t, uint32_t k)
 {
     const subd_sr48 *h = c->h;
-    const subd_adapt *ad = c->ad;
+    const subd_sr48_adapt *ad = c->ad;
     double p[3][3], blo[3], bhi[3], m = -1e300;
     uint32_t i;
     for (i = 0; i < 3; i++) hpos(h, h->tri_vert[3 * t + i], p[i]);
     switch (ad->mode) {
-    case SUBD_ADAPT_UNIFORM: return 1;
-    case SUBD_ADAPT_POINT: {
+    case SUBD_SR48_ADAPT_UNIFORM: return 1;
+    case SUBD_SR48_ADAPT_POINT: {
         double d2 = 0, r = (double)(c->max - k) * c->radius;
         star_box(h, t, k, blo, bhi);
         for (i = 0; i < 3; i++) {
@@ -362,12 +362,12 @@ static double margin(const tctx *c, uint32_t t, uint32_t k)
         }
         return r - dsqrt(d2);
     }
-    case SUBD_ADAPT_RAMP: {
+    case SUBD_SR48_ADAPT_RAMP: {
         double lo = c->lo[ad->axis], hi = c->hi[ad->axis];
         star_box(h, t, k, blo, bhi);
         return (double)c->max * (bhi[ad->axis] - lo) - (double)(k + 1) * (hi - lo) + 1e-12;
     }
-    case SUBD_ADAPT_PLANE:
+    case SUBD_SR48_ADAPT_PLANE:
         star_box(h, t, k, blo, bhi);
         for (i = 0; i < 8; i++) {
             double s = 0;
@@ -377,7 +377,7 @@ static double margin(const tctx *c, uint32_t t, uint32_t k)
             if (s > m) m = s;
         }
         return m + 1e-12;
-    case SUBD_ADAPT_CALLBACK: {
+    case SUBD_SR48_ADAPT_CALLBACK: {
         double near;
         uint32_t lv;
         star_box(h, t, k, blo, bhi);
@@ -385,13 +385,13 @@ static double margin(const tctx *c, uint32_t t, uint32_t k)
         if (near < 1e-4) return 0; /* too close to call (the library's box is rounded) */
         return (double)lv - (double)k - 0.5;
     }
-    case SUBD_ADAPT_CHORD:
+    case SUBD_SR48_ADAPT_CHORD:
         return chord_dev(c, t, k, p[0], p[1], p[2]) - h_dbl(ad->eps);
     }
     return 0;
 }
 
-static void tctx_init(tctx *c, const subd_sr48 *h, const subd_adapt *ad)
+static void tctx_init(tctx *c, const subd_sr48 *h, const subd_sr48_adapt *ad)
 {
     uint32_t v, i, nv;
     double p[3], dg;
@@ -412,7 +412,7 @@ static void tctx_init(tctx *c, const subd_sr48 *h, const subd_adapt *ad)
     sub3(c->hi, c->lo, p);
     dg = dsqrt(dot3(p, p));
     c->radius = h_dbl(ad->radius);
-    if (ad->mode == SUBD_ADAPT_POINT && ad->radius == 0 && c->max > 0) c->radius = dg / (2.0 * c->max);
+    if (ad->mode == SUBD_SR48_ADAPT_POINT && ad->radius == 0 && c->max > 0) c->radius = dg / (2.0 * c->max);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -481,7 +481,7 @@ static int same_bits(const subd_real *a, const subd_real *b)
     return h_same(a[0], b[0]) && h_same(a[1], b[1]) && h_same(a[2], b[2]);
 }
 
-static void check_cut(const subd_sr48 *h, const subd_adapt *ad, const subd_mesh *out, const subd_adapt_report *rep,
+static void check_cut(const subd_sr48 *h, const subd_sr48_adapt *ad, const subd_mesh *out, const subd_sr48_adapt_report *rep,
                       double tol, cut_result *res)
 {
     tctx c;
@@ -640,8 +640,8 @@ static void check_cut(const subd_sr48 *h, const subd_adapt *ad, const subd_mesh 
     if (res->ambiguous == 0) CHECK_EQ(rep->forced_splits, res->forced);
     /* POINT, RAMP and PLANE are nested (a wanted split's parent diamonds want theirs): the
      * least conforming cut needs no forced split */
-    if (ad->mode == SUBD_ADAPT_POINT || ad->mode == SUBD_ADAPT_RAMP || ad->mode == SUBD_ADAPT_PLANE ||
-        ad->mode == SUBD_ADAPT_CALLBACK) { /* CALLBACK: cb_level is monotone */
+    if (ad->mode == SUBD_SR48_ADAPT_POINT || ad->mode == SUBD_SR48_ADAPT_RAMP || ad->mode == SUBD_SR48_ADAPT_PLANE ||
+        ad->mode == SUBD_SR48_ADAPT_CALLBACK) { /* CALLBACK: cb_level is monotone */
         CHECK_EQ(rep->forced_splits, 0);
         if (res->ambiguous == 0) CHECK_EQ(res->forced, 0);
     }
@@ -663,7 +663,7 @@ static void chord_walk(const subd_sr48 *h, uint32_t max, uint32_t t, uint32_t k,
     chord_walk(h, max, c0, k + 1, a, b, c);
     chord_walk(h, max, c0 + 1, k + 1, a, b, c);
 }
-static double chord_worst(const subd_sr48 *h, const subd_adapt *ad, const subd_mesh *out)
+static double chord_worst(const subd_sr48 *h, const subd_sr48_adapt *ad, const subd_mesh *out)
 {
     uint32_t f, i;
     g_worst = 0;
@@ -706,9 +706,9 @@ static double chord_worst(const subd_sr48 *h, const subd_adapt *ad, const subd_m
 
 /* ------------------------------------------------------------------------------------ */
 
-static subd_adapt adapt(subd_adapt_mode mode, uint32_t max)
+static subd_sr48_adapt adapt(subd_sr48_adapt_mode mode, uint32_t max)
 {
-    subd_adapt a;
+    subd_sr48_adapt a;
     uint32_t i;
     a.mode = mode;
     a.max_level = max;
@@ -721,7 +721,7 @@ static subd_adapt adapt(subd_adapt_mode mode, uint32_t max)
     return a;
 }
 
-static int extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out, subd_adapt_report *rep)
+static int extract(subd_arena *a, const subd_sr48 *h, const subd_sr48_adapt *ad, subd_mesh *out, subd_sr48_adapt_report *rep)
 {
     subd_diag d;
     uint32_t plan;
@@ -733,11 +733,11 @@ static int extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd
 }
 
 /* Extract into a fresh arena, run every property check, return the face count. */
-static uint32_t run_checked(const subd_sr48 *h, const subd_adapt *ad, double tol, const char *hash, cut_result *res)
+static uint32_t run_checked(const subd_sr48 *h, const subd_sr48_adapt *ad, double tol, const char *hash, cut_result *res)
 {
     subd_arena a;
     subd_mesh out;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     uint32_t plan;
     cut_result dummy;
     if (!res) res = &dummy;
@@ -746,7 +746,7 @@ static uint32_t run_checked(const subd_sr48 *h, const subd_adapt *ad, double tol
     if (!extract(&a, h, ad, &out, &rep)) return 0;
     CHECK(a.peak <= plan);
     check_cut(h, ad, &out, &rep, tol, res);
-    if (ad->mode == SUBD_ADAPT_CHORD) {
+    if (ad->mode == SUBD_SR48_ADAPT_CHORD) {
         double w = chord_worst(h, ad, &out);
         double slack = SUBD_FIXED ? 4.0 / 65536.0 : 1e-6;
         if (!CHECK(w <= h_dbl(ad->eps) + slack)) {
@@ -771,10 +771,10 @@ static void sr48x_uniform(void)
         uint32_t steps = pass ? 5 : 6;
         if (!(pass ? build_cube(steps) : build_square(steps))) return;
         for (k = 0; k <= steps; k++) {
-            subd_adapt ad = adapt(SUBD_ADAPT_UNIFORM, k);
+            subd_sr48_adapt ad = adapt(SUBD_SR48_ADAPT_UNIFORM, k);
             subd_arena a;
             subd_mesh out;
-            subd_adapt_report rep;
+            subd_sr48_adapt_report rep;
             uint32_t plan, f;
             cut_result res;
             subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
@@ -800,7 +800,7 @@ static void sr48x_uniform(void)
 
 static void sr48x_point(void)
 {
-    subd_adapt ad = adapt(SUBD_ADAPT_POINT, 6);
+    subd_sr48_adapt ad = adapt(SUBD_SR48_ADAPT_POINT, 6);
     cut_result res;
     uint32_t n;
     if (!build_cube(6)) return;
@@ -814,7 +814,7 @@ static void sr48x_point(void)
     ad.point[0] = real_of(30); ad.radius = real_of(0.001);
     CHECK_EQ(run_checked(&g_h, &ad, 2e-3, 0, &res), 12);
     if (!build_square(8)) return;
-    ad = adapt(SUBD_ADAPT_POINT, 8);
+    ad = adapt(SUBD_SR48_ADAPT_POINT, 8);
     ad.point[0] = real_of(0.3); ad.point[1] = real_of(0.7); ad.point[2] = real_of(0.1);
     n = run_checked(&g_h, &ad, 2e-3, "sr48x_square_point", &res);
     CHECK(n > 0 && n < 512u);
@@ -825,16 +825,16 @@ static void sr48x_ramp_plane(void)
     uint32_t ax;
     cut_result res;
     static const char *names[3] = {"sr48x_cube_ramp_x", "sr48x_cube_ramp_y", "sr48x_cube_ramp_z"};
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     uint32_t n;
     if (!build_cube(6)) return;
     for (ax = 0; ax < 3; ax++) {
-        ad = adapt(SUBD_ADAPT_RAMP, 6);
+        ad = adapt(SUBD_SR48_ADAPT_RAMP, 6);
         ad.axis = ax;
         n = run_checked(&g_h, &ad, 1e-6, names[ax], &res);
         CHECK(n > 12 && n < 12u * 64u);
     }
-    ad = adapt(SUBD_ADAPT_PLANE, 6);
+    ad = adapt(SUBD_SR48_ADAPT_PLANE, 6);
     ad.point[0] = real_of(0.25); ad.normal[0] = real_of(1); ad.normal[1] = real_of(0.5);
     n = run_checked(&g_h, &ad, 1e-6, "sr48x_cube_plane", &res);
     CHECK(n > 12 && n < 12u * 64u);
@@ -845,7 +845,7 @@ static void sr48x_ramp_plane(void)
     ad.normal[1] = 0;
     CHECK_EQ(run_checked(&g_h, &ad, 1e-6, 0, &res), 12u * 64u);
     if (!build_square(8)) return;
-    ad = adapt(SUBD_ADAPT_RAMP, 8);
+    ad = adapt(SUBD_SR48_ADAPT_RAMP, 8);
     ad.axis = 1;
     n = run_checked(&g_h, &ad, 1e-6, "sr48x_square_ramp", &res);
     CHECK(n > 2 && n < 512u);
@@ -853,11 +853,11 @@ static void sr48x_ramp_plane(void)
 
 static void sr48x_callback(void)
 {
-    subd_adapt ad = adapt(SUBD_ADAPT_CALLBACK, 6);
+    subd_sr48_adapt ad = adapt(SUBD_SR48_ADAPT_CALLBACK, 6);
     cut_result res;
     subd_arena a;
     subd_mesh out;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     uint32_t n;
     if (!build_cube(6)) return;
     ad.fn = cb_level;
@@ -879,10 +879,10 @@ static void sr48x_chord(void)
     uint32_t i, prev = 0;
     if (!build_cube(6)) return;
     for (i = 0; i < 4; i++) {
-        subd_adapt ad = adapt(SUBD_ADAPT_CHORD, 6);
+        subd_sr48_adapt ad = adapt(SUBD_SR48_ADAPT_CHORD, 6);
         subd_arena a;
         subd_mesh out;
-        subd_adapt_report rep;
+        subd_sr48_adapt_report rep;
         ad.eps = real_of(eps_list[i]);
         (void)run_checked(&g_h, &ad, 1e-5, i == 2 ? "sr48x_cube_chord" : 0, &res);
         subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
@@ -904,14 +904,14 @@ static void sr48x_chord(void)
     }
     /* a flat surface: nothing deviates, level 0 is within any tolerance */
     {
-        subd_adapt ad = adapt(SUBD_ADAPT_CHORD, 6);
+        subd_sr48_adapt ad = adapt(SUBD_SR48_ADAPT_CHORD, 6);
         uint32_t v;
         if (!build_square(6)) return;
         for (v = 0; v < g_h.num_verts; v++) g_pos[3 * v + 2] = 0;
         ad.eps = real_of(1e-4);
         CHECK_EQ(run_checked(&g_h, &ad, 1e-6, 0, &res), 2);
         build_square(8);
-        ad = adapt(SUBD_ADAPT_CHORD, 8);
+        ad = adapt(SUBD_SR48_ADAPT_CHORD, 8);
         ad.eps = real_of(0.002);
         (void)run_checked(&g_h, &ad, 1e-5, "sr48x_square_chord", &res);
     }
@@ -922,9 +922,9 @@ static void sr48x_chord(void)
  * the same mesh; UNIFORM's need is the plan and its peak. */
 typedef struct extract_call {
     const subd_sr48 *h;
-    const subd_adapt *ad;
+    const subd_sr48_adapt *ad;
     subd_mesh out;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     uint32_t h0; /* the reference mesh's hash */
 } extract_call;
 
@@ -942,11 +942,11 @@ static void extract_ok(void *ctx, const subd_arena *a, const subd_diag *d)
     CHECK_EQ(h_mesh_hash(&c->out), c->h0);
 }
 
-static void plan_case(const subd_sr48 *h, const subd_adapt *ad)
+static void plan_case(const subd_sr48 *h, const subd_sr48_adapt *ad)
 {
     uint32_t plan, size, need, peak, h0, ref_used;
     subd_mesh out, ref;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     subd_diag d;
     subd_arena a;
     extract_call c;
@@ -973,7 +973,7 @@ static void plan_case(const subd_sr48 *h, const subd_adapt *ad)
     need = s.need;
     peak = s.peak;
     CHECK(need > 0 && peak <= need);
-    if (ad->mode == SUBD_ADAPT_UNIFORM) {
+    if (ad->mode == SUBD_SR48_ADAPT_UNIFORM) {
         CHECK_EQ(need, plan);
         CHECK_EQ(peak, plan);
     }
@@ -992,20 +992,20 @@ static void plan_case(const subd_sr48 *h, const subd_adapt *ad)
 
 static void sr48x_plan_exhaustive(void)
 {
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     if (!build_square(4)) return;
-    ad = adapt(SUBD_ADAPT_UNIFORM, 4);
+    ad = adapt(SUBD_SR48_ADAPT_UNIFORM, 4);
     plan_case(&g_h, &ad);
-    ad = adapt(SUBD_ADAPT_UNIFORM, 0);
+    ad = adapt(SUBD_SR48_ADAPT_UNIFORM, 0);
     plan_case(&g_h, &ad);
-    ad = adapt(SUBD_ADAPT_POINT, 4);
+    ad = adapt(SUBD_SR48_ADAPT_POINT, 4);
     ad.point[0] = real_of(0.1); ad.point[1] = real_of(0.2);
     plan_case(&g_h, &ad);
-    ad = adapt(SUBD_ADAPT_CHORD, 4);
+    ad = adapt(SUBD_SR48_ADAPT_CHORD, 4);
     ad.eps = real_of(0.01);
     plan_case(&g_h, &ad);
     if (!build_cube(3)) return;
-    ad = adapt(SUBD_ADAPT_PLANE, 3);
+    ad = adapt(SUBD_SR48_ADAPT_PLANE, 3);
     ad.normal[2] = real_of(1);
     plan_case(&g_h, &ad);
 }
@@ -1013,10 +1013,10 @@ static void sr48x_plan_exhaustive(void)
 /* The result occupies exactly its own arrays: the marks are given back. */
 static void sr48x_compact(void)
 {
-    subd_adapt ad = adapt(SUBD_ADAPT_CHORD, 6);
+    subd_sr48_adapt ad = adapt(SUBD_SR48_ADAPT_CHORD, 6);
     subd_arena a;
     subd_mesh out;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     subd_face_list fl;
     uint32_t used, plan;
     if (!build_cube(6)) return;
@@ -1041,10 +1041,10 @@ static void sr48x_compact(void)
 
 static void sr48x_errors(void)
 {
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     subd_arena a;
     subd_mesh out;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     subd_diag d;
     subd_sr48 bad;
     uint32_t plan, i;
@@ -1053,7 +1053,7 @@ static void sr48x_errors(void)
     out.num_faces = 777;
 #define BAD(expr_ad, want)                                                                   \
     do {                                                                                     \
-        ad = adapt(SUBD_ADAPT_UNIFORM, 2);                                                   \
+        ad = adapt(SUBD_SR48_ADAPT_UNIFORM, 2);                                                   \
         expr_ad;                                                                             \
         CHECK_EQ(subd_sr48_extract(&a, &g_h, &ad, &out, &rep, &d), want);                    \
         CHECK_EQ(d.status, want);                                                            \
@@ -1061,24 +1061,24 @@ static void sr48x_errors(void)
         CHECK_EQ(a.used, 0);                                                                 \
         CHECK_EQ(out.num_faces, 777);                                                        \
     } while (0)
-    BAD(ad.mode = (subd_adapt_mode)17, SUBD_ERR_PARAM);
+    BAD(ad.mode = (subd_sr48_adapt_mode)17, SUBD_ERR_PARAM);
     BAD(ad.max_level = 4, SUBD_ERR_PARAM);
-    BAD((ad.mode = SUBD_ADAPT_RAMP, ad.axis = 3), SUBD_ERR_PARAM);
-    BAD((ad.mode = SUBD_ADAPT_CHORD, ad.eps = 0), SUBD_ERR_PARAM);
-    BAD((ad.mode = SUBD_ADAPT_CHORD, ad.eps = real_of(-1)), SUBD_ERR_PARAM);
-    BAD(ad.mode = SUBD_ADAPT_CALLBACK, SUBD_ERR_PARAM);
-    BAD((ad.mode = SUBD_ADAPT_POINT, ad.radius = real_of(-1)), SUBD_ERR_PARAM);
-    BAD(ad.mode = SUBD_ADAPT_PLANE, SUBD_ERR_PARAM); /* zero normal */
+    BAD((ad.mode = SUBD_SR48_ADAPT_RAMP, ad.axis = 3), SUBD_ERR_PARAM);
+    BAD((ad.mode = SUBD_SR48_ADAPT_CHORD, ad.eps = 0), SUBD_ERR_PARAM);
+    BAD((ad.mode = SUBD_SR48_ADAPT_CHORD, ad.eps = real_of(-1)), SUBD_ERR_PARAM);
+    BAD(ad.mode = SUBD_SR48_ADAPT_CALLBACK, SUBD_ERR_PARAM);
+    BAD((ad.mode = SUBD_SR48_ADAPT_POINT, ad.radius = real_of(-1)), SUBD_ERR_PARAM);
+    BAD(ad.mode = SUBD_SR48_ADAPT_PLANE, SUBD_ERR_PARAM); /* zero normal */
 #if !SUBD_FIXED
     {
         union { uint32_t u; float f; } nan;
         nan.u = 0x7fc00000u;
-        BAD((ad.mode = SUBD_ADAPT_CHORD, ad.eps = nan.f), SUBD_ERR_PARAM);
-        BAD((ad.mode = SUBD_ADAPT_POINT, ad.point[1] = nan.f), SUBD_ERR_PARAM);
+        BAD((ad.mode = SUBD_SR48_ADAPT_CHORD, ad.eps = nan.f), SUBD_ERR_PARAM);
+        BAD((ad.mode = SUBD_SR48_ADAPT_POINT, ad.point[1] = nan.f), SUBD_ERR_PARAM);
     }
 #endif
 #undef BAD
-    ad = adapt(SUBD_ADAPT_UNIFORM, 2);
+    ad = adapt(SUBD_SR48_ADAPT_UNIFORM, 2);
     CHECK_EQ(subd_sr48_extract(0, &g_h, &ad, &out, &rep, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_extract(&a, 0, &ad, &out, &rep, &d), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_extract(&a, &g_h, 0, &out, &rep, &d), SUBD_ERR_PARAM);
@@ -1110,7 +1110,7 @@ static void sr48x_errors(void)
         case 4: g_tv[3 * 4] = g_h.num_verts + 7; break; /* vertex out of range */
         case 5: bad.tri_vert = 0; break;
         }
-        ad = adapt(SUBD_ADAPT_UNIFORM, 3);
+        ad = adapt(SUBD_SR48_ADAPT_UNIFORM, 3);
         CHECK_EQ(subd_sr48_extract(&a, &bad, &ad, &out, &rep, &d), SUBD_ERR_PARAM);
         CHECK_EQ(a.used, 0);
         CHECK_EQ(out.num_faces, 777);
@@ -1134,7 +1134,7 @@ static void sr48x_corpus(void)
         subd_diag d;
         subd_sr48 h;
         subd_sr48_opts o;
-        subd_adapt ad;
+        subd_sr48_adapt ad;
         cut_result res;
         uint32_t keep, m;
         if (!CHECK(cf != 0)) return;
@@ -1154,21 +1154,21 @@ static void sr48x_corpus(void)
         h.tri_vert = g_tv; h.tri_base_nb = g_nb; h.pos = g_pos;
         g_h = h;
         g_have_par = 0;
-        ad = adapt(SUBD_ADAPT_UNIFORM, h.steps);
+        ad = adapt(SUBD_SR48_ADAPT_UNIFORM, h.steps);
         CHECK_EQ(run_checked(&g_h, &ad, 0, 0, &res), h.level_tri[h.steps + 1] - h.level_tri[h.steps]);
-        ad = adapt(SUBD_ADAPT_CHORD, h.steps);
+        ad = adapt(SUBD_SR48_ADAPT_CHORD, h.steps);
         ad.eps = real_of(0.02);
         (void)run_checked(&g_h, &ad, 1e-5, cases[i].hash, &res);
-        ad = adapt(SUBD_ADAPT_POINT, h.steps);
+        ad = adapt(SUBD_SR48_ADAPT_POINT, h.steps);
         ad.point[0] = h.pos[0]; ad.point[1] = h.pos[1]; ad.point[2] = h.pos[2];
         (void)run_checked(&g_h, &ad, 2e-3, 0, &res);
-        ad = adapt(SUBD_ADAPT_RAMP, h.steps);
+        ad = adapt(SUBD_SR48_ADAPT_RAMP, h.steps);
         ad.axis = 2;
         (void)run_checked(&g_h, &ad, 1e-6, 0, &res);
-        ad = adapt(SUBD_ADAPT_PLANE, h.steps);
+        ad = adapt(SUBD_SR48_ADAPT_PLANE, h.steps);
         ad.normal[0] = real_of(1);
         (void)run_checked(&g_h, &ad, 1e-6, 0, &res);
-        ad = adapt(SUBD_ADAPT_CALLBACK, h.steps);
+        ad = adapt(SUBD_SR48_ADAPT_CALLBACK, h.steps);
         ad.fn = cb_level;
         (void)run_checked(&g_h, &ad, 1e-9, 0, &res);
     }

@@ -214,7 +214,7 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
     subd_sr48 h, base;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
     uint32_t plan = 0, i, ph, pn, b;
@@ -223,7 +223,7 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
     o.steps = levels;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = levels;
     if (!CHECK_EQ(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), SUBD_OK)) {
         T_NOTE("shape %d levels %u: extract needs %u\n", shape, levels, d.bytes_needed);
@@ -328,7 +328,7 @@ static void sr48s_plan_exhaustive(void)
     uint32_t plan, size, n;
     int st;
     if (!make_base(S_TET, &a, 0, &base, &in)) return;
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = 3;
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
     sink.tri = count_tri;
@@ -371,7 +371,7 @@ static void sr48s_errors(void)
     static uint32_t nb[1024];
     if (!make_base(S_ICO, &a, 0, &base, &in)) return;
     subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = 2;
     sink.tri = stop_at;
     sink.ctx = &n;
@@ -390,9 +390,9 @@ static void sr48s_errors(void)
     so.adapt.max_level = SUBD_SR48_MAX_STEPS + 1u;
     CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
     so.adapt.max_level = 2;
-    so.adapt.mode = (subd_adapt_mode)77;
+    so.adapt.mode = (subd_sr48_adapt_mode)77;
     CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_ERR_PARAM);
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     /* a base that is not subd_sr48_base's: a hierarchy (no hyb_base_nb), steps > 0, broken
      * neighbours or vertices; each refused before anything is emitted */
     o.steps = 1;
@@ -572,14 +572,14 @@ static uint32_t view_level(void *ctx, const subd_real *lo, const subd_real *hi)
     return g_vmax;
 }
 
-static void ad_case(int shape, uint32_t levels, uint32_t flags, const subd_adapt *ad0, uint32_t *faces, uint32_t *uni)
+static void ad_case(int shape, uint32_t levels, uint32_t flags, const subd_sr48_adapt *ad0, uint32_t *faces, uint32_t *uni)
 {
     subd_arena a, sa;
     subd_mesh in, out;
     subd_sr48 h, base;
     subd_sr48_opts o;
     subd_sr48_stream_opts so;
-    subd_adapt_report rep;
+    subd_sr48_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
     uint32_t plan = 0, i, xcalls;
@@ -649,27 +649,27 @@ static void sr48s_adaptive(void)
 {
     static const int shapes[6] = {S_TET, S_CUBE, S_ICO, S_TWO, S_TORUS, S_GRID};
     static const uint32_t maxl[6] = {5, 4, 3, 5, 3, 1};
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     uint32_t si, l, f, m, faces = 0, uni = 0;
     for (m = 0; m < 8u; m++) {
         memset(&ad, 0, sizeof ad);
         if (m == 0u) {
-            ad.mode = SUBD_ADAPT_PLANE;
+            ad.mode = SUBD_SR48_ADAPT_PLANE;
             ad.point[0] = real_of(0.1);
             ad.normal[0] = real_of(1); ad.normal[1] = real_of(0.5); ad.normal[2] = real_of(0.25);
         } else if (m >= 3u && m <= 5u) { /* RAMP along each axis: the adaptation box */
-            ad.mode = SUBD_ADAPT_RAMP;
+            ad.mode = SUBD_SR48_ADAPT_RAMP;
             ad.axis = m - 3u;
         } else if (m == 6u) { /* POINT's default radius: the adaptation box */
-            ad.mode = SUBD_ADAPT_POINT;
+            ad.mode = SUBD_SR48_ADAPT_POINT;
             ad.point[0] = real_of(0.5); ad.point[1] = real_of(0.4); ad.point[2] = real_of(0.3);
         } else if (m == 7u) {
-            ad.mode = SUBD_ADAPT_CALLBACK;
+            ad.mode = SUBD_SR48_ADAPT_CALLBACK;
             ad.fn = view_level;
             g_view[0] = 0.6; g_view[1] = 0.2; g_view[2] = 0.9;
             g_vr = 0.25;
         } else {
-            ad.mode = SUBD_ADAPT_POINT;
+            ad.mode = SUBD_SR48_ADAPT_POINT;
             ad.point[0] = real_of(0.5); ad.point[1] = real_of(0.4); ad.point[2] = real_of(m == 1u ? 0.3 : -2);
             ad.radius = real_of(m == 1u ? 0.15 : 0.6);
         }
@@ -721,7 +721,7 @@ static void sr48s_adapt_errors(void)
     for (m = 0; m < 3u; m++) {
         memset(&so, 0, sizeof so);
         so.adapt.max_level = 3;
-        so.adapt.mode = m == 0u ? SUBD_ADAPT_RAMP : m == 1u ? SUBD_ADAPT_POINT : SUBD_ADAPT_CALLBACK;
+        so.adapt.mode = m == 0u ? SUBD_SR48_ADAPT_RAMP : m == 1u ? SUBD_SR48_ADAPT_POINT : SUBD_SR48_ADAPT_CALLBACK;
         so.adapt.axis = 2;
         so.adapt.fn = view_level;
         if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;

@@ -151,8 +151,8 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
 {
     subd_sr48_opts o;
     subd_sr48 h;
-    subd_adapt ad;
-    subd_adapt_report rep;
+    subd_sr48_adapt ad;
+    subd_sr48_adapt_report rep;
     subd_mesh out;
     subd_diag d;
     uint32_t plan, clusters, t0, t1, mark = start_measure(arena), mark2, insns;
@@ -174,7 +174,7 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     kv("triangles (all levels)", h.num_tris);
     kv("instructions per triangle", insns / h.num_tris);
 
-    ad.mode = SUBD_ADAPT_CHORD;
+    ad.mode = SUBD_SR48_ADAPT_CHORD;
     ad.max_level = 4;
     ad.eps = subd_div(subd_from_int(1, &ovf), subd_from_int(20, &ovf), &ovf); /* 0.05 units */
     ad.point[0] = ad.point[1] = ad.point[2] = 0;
@@ -237,7 +237,7 @@ static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
     print_str("semi-regular 4-8 stream, uniform, 8 binary steps:\n");
     if ((st = subd_sr48_base(arena, in, 0, &base, &d)) != SUBD_OK) return report_error(st, &d);
     kv("base mesh arena bytes", arena->peak - mark);
-    so.adapt.mode = SUBD_ADAPT_UNIFORM;
+    so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = DEMO_SR48_STEPS;
     if ((st = subd_sr48_stream_plan(&base, &so, &plan, &d)) != SUBD_OK) return report_error(st, &d);
     kv("stream arena bytes planned", plan);

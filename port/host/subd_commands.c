@@ -35,7 +35,7 @@ subd_loop_adapt_opts tool_loop_adapt_opts(const tool_opts *o)
 static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_loop_opts lo = tool_loop_opts(o);
-    if (o->stream && o->adapt_mode == SUBD_ADAPT_CHORD) { /* loop --stream --limit --chord EPS */
+    if (o->stream && o->adapt_mode == SUBD_SR48_ADAPT_CHORD) { /* loop --stream --limit --chord EPS */
         subd_loop_adapt_opts ao = tool_loop_adapt_opts(o);
         return subd_loop_adapt_stream_plan(in, &ao, bytes, d);
     }
@@ -167,9 +167,9 @@ static subd_sr48_opts sr48_opts_of(const tool_opts *o)
     return so;
 }
 
-subd_adapt tool_sr48_adapt(const tool_opts *o)
+subd_sr48_adapt tool_sr48_adapt(const tool_opts *o)
 {
-    subd_adapt ad;
+    subd_sr48_adapt ad;
     int i;
     memset(&ad, 0, sizeof ad);
     ad.mode = o->adapt_mode;
@@ -231,7 +231,7 @@ static int sr48_stream_plan(const subd_mesh *in, const tool_opts *o, uint32_t *b
 static int sr48_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {
     subd_sr48_opts so = sr48_opts_of(o);
-    subd_adapt ad = tool_sr48_adapt(o);
+    subd_sr48_adapt ad = tool_sr48_adapt(o);
     uint32_t build = 0, extract = 0, keep;
     subd_arena tmp;
     subd_sr48 h;
@@ -257,8 +257,8 @@ static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
 {
     static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
     subd_sr48_opts so = sr48_opts_of(o);
-    subd_adapt ad = tool_sr48_adapt(o);
-    subd_adapt_report rep;
+    subd_sr48_adapt ad = tool_sr48_adapt(o);
+    subd_sr48_adapt_report rep;
     subd_sr48 h;
     uint32_t mark = subd_arena_mark(a);
     int st = subd_sr48_build(a, in, &so, &h, d);
@@ -276,7 +276,7 @@ static int sr48_run(subd_arena *a, const subd_mesh *in, const tool_opts *o, subd
              (unsigned long)h.num_clusters, (unsigned long)h.num_isolated, (unsigned long)h.num_tris,
              (unsigned long)rep.faces, (unsigned long)rep.uniform_faces,
              (unsigned long)(rep.uniform_faces - rep.faces), (unsigned long)rep.forced_splits);
-    if (!o->stats && !o->quiet && ad.mode != SUBD_ADAPT_UNIFORM) {
+    if (!o->stats && !o->quiet && ad.mode != SUBD_SR48_ADAPT_UNIFORM) {
         progress_pause();
         fprintf(stderr, "adapt: %lu triangles (uniform level %lu: %lu, saved %lu), %lu forced splits\n",
                 (unsigned long)rep.faces, (unsigned long)o->levels, (unsigned long)rep.uniform_faces,
@@ -510,7 +510,7 @@ int tool_alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
     const subd_mesh *in = &r->in.mesh;
     const tool_opts *o = &r->o;
     uint32_t fmt = o->out_format == HOST_FMT_XYZ ? SUBD_PATH_XYZ : SUBD_PATH_GCODE, l, k, m, emitted = 0;
-    subd_real chord = o->adapt_mode == SUBD_ADAPT_CHORD ? host_real_from_double(o->adapt_val[0]) : 0;
+    subd_real chord = o->adapt_mode == SUBD_SR48_ADAPT_CHORD ? host_real_from_double(o->adapt_val[0]) : 0;
     subd_real feed = o->feed > 0.0 ? host_real_from_double(o->feed) : 0;
     int32_t *tags = NULL;
     alpha_tagging t;
@@ -621,7 +621,7 @@ done:
     r->out.num_verts = emitted;
     snprintf(r->extra.json, sizeof r->extra.json,
              "\"order\":%lu,\"geometry\":\"curves\",\"stream\":true,\"chord\":%g,\"points\":%lu,\"checksum\":\"%08lx\"",
-             (unsigned long)o->alpha.order, o->adapt_mode == SUBD_ADAPT_CHORD ? o->adapt_val[0] : 0.0,
+             (unsigned long)o->alpha.order, o->adapt_mode == SUBD_SR48_ADAPT_CHORD ? o->adapt_val[0] : 0.0,
              (unsigned long)emitted, (unsigned long)hash);
     return st;
 }

@@ -291,25 +291,25 @@ static int set_adapt_mode(const opt_ctx *c)
 {
     tool_opts *o = c->o;
     const char *val = c->val;
-    if (o->adapt_mode != SUBD_ADAPT_UNIFORM)
+    if (o->adapt_mode != SUBD_SR48_ADAPT_UNIFORM)
         return tool_usage_error("give one adaptation mode (--point, --ramp, --plane or --chord)");
     if (strcmp(c->name, "--point") == 0) {
         if (parse_doubles(val, 3, o->adapt_val)) return tool_usage_error("bad point '%s' (expected X,Y,Z)", val);
-        o->adapt_mode = SUBD_ADAPT_POINT;
+        o->adapt_mode = SUBD_SR48_ADAPT_POINT;
     } else if (strcmp(c->name, "--plane") == 0) {
         if (parse_doubles(val, 6, o->adapt_val) ||
             (o->adapt_val[3] == 0.0 && o->adapt_val[4] == 0.0 && o->adapt_val[5] == 0.0))
             return tool_usage_error("bad plane '%s' (expected X,Y,Z,NX,NY,NZ with a nonzero normal)", val);
-        o->adapt_mode = SUBD_ADAPT_PLANE;
+        o->adapt_mode = SUBD_SR48_ADAPT_PLANE;
     } else if (strcmp(c->name, "--ramp") == 0) {
         if (strlen(val) != 1 || val[0] < 'x' || val[0] > 'z')
             return tool_usage_error("bad ramp axis '%s' (expected x, y or z)", val);
         o->adapt_axis = (uint32_t)(val[0] - 'x');
-        o->adapt_mode = SUBD_ADAPT_RAMP;
+        o->adapt_mode = SUBD_SR48_ADAPT_RAMP;
     } else { /* --chord */
         if (parse_double(val, 0.0, 1e30, &o->adapt_val[0]) || !(o->adapt_val[0] > 0.0))
             return tool_usage_error("bad chordal tolerance '%s' (a positive number, input units)", val);
-        o->adapt_mode = SUBD_ADAPT_CHORD;
+        o->adapt_mode = SUBD_SR48_ADAPT_CHORD;
     }
     return EXIT_OK;
 }
@@ -516,7 +516,7 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     if (o->limit && o->sr48_stream) return tool_usage_error("--limit applies to 'loop --stream' only");
     if (strcmp(cmd->name, "alpha") == 0) { /* alpha --stream: --chord, --feed; .xyz or G-code */
         if (o->limit) return tool_usage_error("--limit applies to 'loop --stream' only");
-        if (!o->stream && o->adapt_mode == SUBD_ADAPT_CHORD) return tool_usage_error("alpha: --chord needs --stream");
+        if (!o->stream && o->adapt_mode == SUBD_SR48_ADAPT_CHORD) return tool_usage_error("alpha: --chord needs --stream");
         if (!o->stream && o->feed > 0.0) return tool_usage_error("alpha: --feed needs --stream (and G-code output)");
         if (o->stream && o->output && host_format_of(o->output) != HOST_FMT_XYZ &&
             host_format_of(o->output) != HOST_FMT_GCODE)
@@ -524,7 +524,7 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
         if (o->feed > 0.0 && o->output && host_format_of(o->output) != HOST_FMT_GCODE)
             return tool_usage_error("--feed goes with G-code output (.gcode, .nc)");
     }
-    if (strcmp(cmd->name, "loop") == 0 && o->adapt_mode == SUBD_ADAPT_CHORD && !(o->stream && o->limit))
+    if (strcmp(cmd->name, "loop") == 0 && o->adapt_mode == SUBD_SR48_ADAPT_CHORD && !(o->stream && o->limit))
         return tool_usage_error("loop: --chord needs --stream --limit (the adaptive limit stream)");
     if (o->limit && !o->stream)
         return tool_usage_error("--limit needs --stream (for the limit of a mesh's own vertices: 'subd limit')");
@@ -576,9 +576,9 @@ int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o)
     o->alpha.levels = o->levels;
     if ((cmd->flags & CMD_LEVELS) && !(cmd->flags & CMD_LEVEL0) && cmd->run && o->levels == 0)
         return tool_usage_error("'%s' needs at least one level (-l 1..%lu)", cmd->name, (unsigned long)cmd->max_levels);
-    if ((cmd->options & OPT_ADAPT) && o->adapt_mode == SUBD_ADAPT_UNIFORM)
+    if ((cmd->options & OPT_ADAPT) && o->adapt_mode == SUBD_SR48_ADAPT_UNIFORM)
         return tool_usage_error("'%s' needs an adaptation mode (--point, --ramp, --plane or --chord)", cmd->name);
-    if (o->radius > 0.0 && o->adapt_mode != SUBD_ADAPT_POINT) return tool_usage_error("--radius goes with --point");
+    if (o->radius > 0.0 && o->adapt_mode != SUBD_SR48_ADAPT_POINT) return tool_usage_error("--radius goes with --point");
     return EXIT_OK;
 }
 

@@ -348,7 +348,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
             memset(&so, 0, sizeof so);
             so.adapt = tool_sr48_adapt(o);
             st = subd_sr48_stream(a, base, &so, &sink, d);
-        } else if (o->adapt_mode == SUBD_ADAPT_CHORD) {
+        } else if (o->adapt_mode == SUBD_SR48_ADAPT_CHORD) {
             subd_loop_adapt_opts ao = tool_loop_adapt_opts(o);
             st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
         } else {
@@ -376,7 +376,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
 
 /* semireg48 --stream: the base mesh (subd_sr48_base) in the arena, then subd_sr48_stream
  * above it. Counts: n0 2^L triangles (n0 = the base's triangles); ids below
- * V0 + n0 (2^L - 1) (subd_semireg48.h); the vertex count is what the sink gathers. */
+ * V0 + n0 (2^L - 1) (subd_sr48.h); the vertex count is what the sink gathers. */
 static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr48 *base, stream_counts *c,
                                uint32_t *stream_bytes)
 {
@@ -394,7 +394,7 @@ static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr
     c->verts = c->ids < 3u * c->tris ? c->ids : 3u * c->tris; /* a bound: the sink counts them */
     c->verts_exact = 0;
     c->edges = 0;
-    c->tris_bound = tool_sr48_adapt(&r->o).mode != SUBD_ADAPT_UNIFORM;
+    c->tris_bound = tool_sr48_adapt(&r->o).mode != SUBD_SR48_ADAPT_UNIFORM;
     return SUBD_OK;
 }
 
@@ -444,12 +444,12 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
             return st;
         }
     }
-    if (!r->o.sr48_stream && r->o.adapt_mode == SUBD_ADAPT_CHORD && (st = loop_adapt_prepare(r, a, d, &c)) != SUBD_OK) {
+    if (!r->o.sr48_stream && r->o.adapt_mode == SUBD_SR48_ADAPT_CHORD && (st = loop_adapt_prepare(r, a, d, &c)) != SUBD_OK) {
         free(s);
         return st;
     }
     st = stream_into(r, a, d, s, &c, r->o.sr48_stream ? &base : NULL);
-    if (r->o.sr48_stream || r->o.adapt_mode == SUBD_ADAPT_CHORD) c.verts = s->nv;
+    if (r->o.sr48_stream || r->o.adapt_mode == SUBD_SR48_ADAPT_CHORD) c.verts = s->nv;
     uniform = c.tris;
     if (c.tris_bound) c.tris = s->tris; /* adapt --stream: what was cut */
     memset(m, 0, sizeof *m);
@@ -469,7 +469,7 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
     }
     if (r->o.sr48_stream) {
         static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
-        subd_adapt ad = tool_sr48_adapt(&r->o);
+        subd_sr48_adapt ad = tool_sr48_adapt(&r->o);
         snprintf(r->extra.json, sizeof r->extra.json,
                  "\"stream\":true,\"stream_arena\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\","
                  "\"base_triangles\":%lu,\"faces\":%llu,\"triangles\":%llu,\"uniform_faces\":%llu,"
@@ -483,7 +483,7 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
         subd_loop_opts lo = tool_loop_opts(&r->o);
         subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
         uint32_t sb = 0;
-        if ((r->o.adapt_mode == SUBD_ADAPT_CHORD ? subd_loop_adapt_stream_plan(in, &ao, &sb, NULL)
+        if ((r->o.adapt_mode == SUBD_SR48_ADAPT_CHORD ? subd_loop_adapt_stream_plan(in, &ao, &sb, NULL)
                                                   : subd_loop_stream_plan(in, &lo, &sb, NULL)) != SUBD_OK)
             sb = 0;
         snprintf(r->extra.json, sizeof r->extra.json,

@@ -64,7 +64,7 @@ typedef struct tool_opts {
     uint32_t max_iter;           /* --max-iter K (pia)                                    */
     subd_pia_method method;      /* --method paper|fast (pia)                             */
     subd_alpha_opts alpha;       /* --order, --kernel, --alpha, --stiffness (alpha)       */
-    subd_adapt_mode adapt_mode;  /* adapt: --point, --ramp, --plane or --chord            */
+    subd_sr48_adapt_mode adapt_mode;  /* adapt: --point, --ramp, --plane or --chord            */
     double adapt_val[6];         /* the point (and plane normal), or the chord tolerance  */
     uint32_t adapt_axis;         /* --ramp x|y|z                                          */
     double radius;               /* --radius R (adapt --point)                            */
@@ -185,7 +185,7 @@ subd_loop_adapt_opts tool_loop_adapt_opts(const tool_opts *o);
 
 /* The cut of semireg48 (uniform) and adapt (subd_commands.c): the mode and its parameters,
  * max_level = -l; used by both the materialised run and the stream. */
-subd_adapt tool_sr48_adapt(const tool_opts *o);
+subd_sr48_adapt tool_sr48_adapt(const tool_opts *o);
 
 /* Errors (tool_error.c): print the message, return the EXIT_* status. */
 int tool_out_of_memory(void);

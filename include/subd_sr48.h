@@ -23,8 +23,8 @@
  * Then subd_sr48_extract cuts a crack-free mesh out of the hierarchy: uniform at one level,
  * or with a resolution that follows an adaptation function (section 7), or the coarsest
  * mesh within a chordal tolerance of the finest level. */
-#ifndef SUBD_SEMIREG48_H
-#define SUBD_SEMIREG48_H
+#ifndef SUBD_SR48_H
+#define SUBD_SR48_H
 
 #include "subd.h"
 
@@ -181,8 +181,8 @@ int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48
  * first splits the (at most two) coarser diamonds its triangles come from ("forced
  * splits", the restricted hierarchy), with an explicit stack in the arena. So edge
  * neighbours differ by at most one level and there are no T-junctions. */
-typedef enum subd_adapt_mode {
-    SUBD_ADAPT_UNIFORM = 0, /* every triangle at max_level                                  */
+typedef enum subd_sr48_adapt_mode {
+    SUBD_SR48_ADAPT_UNIFORM = 0, /* every triangle at max_level                                  */
     /* POINT, RAMP, PLANE and CALLBACK are evaluated per diamond D of level k on its nested
        region B(D): the bounding box, over every level-k triangle sharing a vertex with D,
        of the level-0 mesh's piecewise-linear interpolant L (level-0 vertices at their
@@ -192,18 +192,18 @@ typedef enum subd_adapt_mode {
        decisions. The adaptation box A (RAMP's range, POINT's default radius) is the box
        of the finest positions of the level-0 triangles' corners (= the box of L over the
        whole mesh): known before any refinement, so the stream has it too. */
-    SUBD_ADAPT_POINT,       /* finest at `point`: split iff dist(point, B) < (max_level - k)
+    SUBD_SR48_ADAPT_POINT,       /* finest at `point`: split iff dist(point, B) < (max_level - k)
                                radius, i.e. level max_level - floor(d / radius)              */
-    SUBD_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at A's
+    SUBD_SR48_ADAPT_RAMP,        /* level rising linearly along `axis` (0, 1, 2) from 0 at A's
                                minimum lo to max_level at A's maximum hi, evaluated at B's
                                largest coordinate x on that axis: level
                                floor(max_level (x - lo) / (hi - lo)), max_level if hi = lo   */
-    SUBD_ADAPT_PLANE,       /* max_level where B touches the side (x - point).normal >= 0,
+    SUBD_SR48_ADAPT_PLANE,       /* max_level where B touches the side (x - point).normal >= 0,
                                level 0 elsewhere (a step function)                            */
-    SUBD_ADAPT_CALLBACK,    /* split iff fn(ctx, B's lo, B's hi) > k: fn returns the level it
-                               wants for the region (see subd_adapt_fn)                      */
-    SUBD_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
-} subd_adapt_mode;
+    SUBD_SR48_ADAPT_CALLBACK,    /* split iff fn(ctx, B's lo, B's hi) > k: fn returns the level it
+                               wants for the region (see subd_sr48_adapt_fn)                      */
+    SUBD_SR48_ADAPT_CHORD        /* split exactly the triangles whose chordal deviation exceeds eps */
+} subd_sr48_adapt_mode;
 
 /* CALLBACK's adaptation function: the level (0..max_level; more counts as max_level) wanted
  * for the region whose bounding box is lo[0..2] .. hi[0..2] (a diamond's nested region B, in
@@ -215,41 +215,41 @@ typedef enum subd_adapt_mode {
  * diamond is asked only once its parents split), but the two may differ.
  * Example (detail near a viewer at v, one level per r of distance): d = the distance from v
  * to the box (0 inside), return d < max_level r ? max_level - floor(d / r) : 0. */
-typedef uint32_t (*subd_adapt_fn)(void *ctx, const subd_real *lo, const subd_real *hi);
+typedef uint32_t (*subd_sr48_adapt_fn)(void *ctx, const subd_real *lo, const subd_real *hi);
 
-typedef struct subd_adapt {
-    subd_adapt_mode mode;
+typedef struct subd_sr48_adapt {
+    subd_sr48_adapt_mode mode;
     uint32_t max_level;  /* 0..hierarchy steps                                             */
     subd_real point[3];  /* POINT, PLANE                                                   */
     subd_real normal[3]; /* PLANE (need not be unit length)                                */
     subd_real radius;    /* POINT: distance per level; 0 = A's diagonal / (2 max_level)   */
     uint32_t axis;       /* RAMP                                                           */
     subd_real eps;       /* CHORD: > 0, in input units                                     */
-    subd_adapt_fn fn;    /* CALLBACK                                                       */
+    subd_sr48_adapt_fn fn;    /* CALLBACK                                                       */
     void *ctx;
-} subd_adapt;
+} subd_sr48_adapt;
 
 /* What an extraction produced. */
-typedef struct subd_adapt_report {
+typedef struct subd_sr48_adapt_report {
     uint32_t faces;         /* output triangles                                             */
     uint32_t uniform_faces; /* triangles of uniform level max_level (saved = the difference)  */
     uint32_t forced_splits; /* diamonds split only to keep the mesh conforming              */
     uint32_t level_faces[SUBD_SR48_MAX_STEPS + 1]; /* output triangles per level            */
-} subd_adapt_report;
+} subd_sr48_adapt_report;
 
 /* subd_sr48_extract_plan: the arena bytes subd_sr48_extract may use, in *bytes.
  * Memory: no arena use.
  * Errors: the parameter errors of subd_sr48_extract (SUBD_ERR_PARAM, SUBD_ERR_EMPTY,
  *   SUBD_ERR_TOO_BIG); diag (may be NULL) gets the status, bytes_needed stays 0.
  * Cost: O(levels).
- * Notes: exact for SUBD_ADAPT_UNIFORM (when every input
+ * Notes: exact for SUBD_SR48_ADAPT_UNIFORM (when every input
  * vertex is used by a face; unused input vertices are dropped, so the mesh is then smaller);
  * for the other modes the bound of the uniform max_level mesh (an adaptive mesh never has
  * more triangles or vertices) plus the marking memory (1 byte and 4 bytes per triangle of
  * levels < max_level, 80 bytes per level for CHORD). An adaptive extraction needs only the
  * bytes it uses: it fails with SUBD_ERR_NOMEM only when they are not free, and then
  * diag->bytes_needed is the exact need when the marking memory fit (else the plan). */
-int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *bytes, subd_diag *diag);
+int subd_sr48_extract_plan(const subd_sr48 *h, const subd_sr48_adapt *ad, uint32_t *bytes, subd_diag *diag);
 
 /* subd_sr48_extract: a conforming triangle mesh (validated, with adjacency) cut out of the
  * hierarchy, into *out; what was cut into *rep.
@@ -270,9 +270,9 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * the same hierarchy (dyadic barycentric) parameter: an upper bound of the distance to t,
  * so every vertex of level <= max_level is within eps of the extracted mesh (Q16.16: the
  * deviation is rounded to Q16.16 before the comparison, so within eps + 2^-16). RAMP's
- * range and POINT's default radius use the adaptation box A (subd_adapt_mode: the level-0
+ * range and POINT's default radius use the adaptation box A (subd_sr48_adapt_mode: the level-0
  * triangles' corners). POINT, RAMP, PLANE and a monotone CALLBACK never force a split
- * (their regions are nested, see subd_adapt_mode), so their cut is exactly the diamonds
+ * (their regions are nested, see subd_sr48_adapt_mode), so their cut is exactly the diamonds
  * that ask; each evaluation walks the diamond's star at its level (about 4 valence
  * triangles, O(level) each).
  * Output vertices are the used hierarchy vertices in increasing index order; output faces
@@ -291,14 +291,14 @@ int subd_sr48_extract_plan(const subd_sr48 *h, const subd_adapt *ad, uint32_t *b
  * extraction visits - each is checked before its indices are used, a damaged part the cut
  * never reaches goes unnoticed, and an arena too small for the marks gives SUBD_ERR_NOMEM
  * first. */
-int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_adapt *ad, subd_mesh *out,
-                      subd_adapt_report *rep, subd_diag *diag);
+int subd_sr48_extract(subd_arena *a, const subd_sr48 *h, const subd_sr48_adapt *ad, subd_mesh *out,
+                      subd_sr48_adapt_report *rep, subd_diag *diag);
 
 /* --------------------------------------------------------------------------------------
  * Streaming (the common stream interface of subd.h, "Streams"). */
 
 typedef struct subd_sr48_stream_opts {
-    subd_adapt adapt; /* the cut; adapt.max_level is the finest level: binary steps above
+    subd_sr48_adapt adapt; /* the cut; adapt.max_level is the finest level: binary steps above
                          level 0, whose positions every emitted vertex has                */
 } subd_sr48_stream_opts;
 
@@ -337,13 +337,13 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
- *   decided once, top down, on the nested region of subd_adapt_mode (L's box over its star,
+ *   decided once, top down, on the nested region of subd_sr48_adapt_mode (L's box over its star,
  *   which the window holds); L of the level-0 window comes from one descent per window
  *   vertex (refining and cropping towards it down to max_level), and a leaf of level
  *   k < max_level gets its corners' max_level positions by three such descents, so a cut
  *   costs O(window * max_level) per leaf and per level-0 window vertex on top of the
  *   uniform work of its split triangles. RAMP and POINT's default radius first find the
- *   adaptation box A (subd_adapt_mode): the first subd_stream_next_tris call descends from
+ *   adaptation box A (subd_sr48_adapt_mode): the first subd_stream_next_tris call descends from
  *   one level-0 triangle at each base vertex (the lowest-index one of its fan), O(base
  *   vertices * window * max_level) once. CALLBACK: fn is called once per triangle of
  *   level < max_level that is in the cut or split (as subd_sr48_extract: level 0 and the

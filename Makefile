@@ -128,7 +128,7 @@ $(B)/$(1)/test-fail.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/test-fail.o \
 	$$(CM_LINK_$(1)) $$^ -o $$@
 $(B)/$(1)/selftest%.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/selftest%.o
 	$$(CM_LINK_$(1)) $$^ -o $$@
-$(B)/$(1)/demo.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/port/cortex-m/demo.o $(B)/$(1)/libsubd.a
+$(B)/$(1)/demo.elf: $(CM_PORT:%.c=$(B)/$(1)/%.o) $(B)/$(1)/port/cortex-m/demo.o $(B)/$(1)/port/cortex-m/demo_pipe.o $(B)/$(1)/libsubd.a
 	$$(CM_LINK_$(1)) $$^ -o $$@
 # The 4-8 chordal stream step of the demo reads test/data/icosahedron.obj from the corpus.
 $(B)/$(1)/demo.elf: $(B)/$(1)/port/cortex-m/demo_sr48.o $(B)/$(1)/gen/corpus.o
@@ -363,6 +363,21 @@ demo-run: $(B)/m4f-float/demo.elf $(B)/m3-fixed/demo.elf tool
 	@{ qemu/run.sh mps2-an385 $(B)/m3-fixed/demo.elf 600; echo $$? > $(B)/demo/m3-fixed.rc; } | tee $(B)/demo/m3-fixed.log; exit $$(cat $(B)/demo/m3-fixed.rc)
 	@echo "== host tool (pictures in $(B)/demo/)"
 	@demo/host_demo.sh $(B)/bin $(B)/demo
+	@$(MAKE) --no-print-directory demo-pipe-check
+
+# The pipeline demo (port/cortex-m/demo_pipe.c): its input as a C string, the brute-force
+# measure the host half runs (demo/host_demo.sh), and the device checksum against the host's.
+$(B)/gen/demo_pipe_obj.h: demo/spot_control_tri.obj $(MK) | dirs
+	{ echo '/* generated from $< by the Makefile: its bytes and a 0 */'; echo 'static const char demo_pipe_obj[] = {'; \
+	  od -An -v -tu1 $< | sed -e 's/\([0-9][0-9]*\)/\1,/g'; echo '0};'; } > $@
+$(foreach v,m4f-float m3-fixed,$(B)/$(v)/port/cortex-m/demo_pipe.o): $(B)/gen/demo_pipe_obj.h
+$(B)/bin/adapt_measure: test/tools/adapt_measure.c $(SRC) $(MK) | dirs
+	$(HOST_CC) -std=c99 -O2 $(INC) -DSUBD_FIXED=0 test/tools/adapt_measure.c $(SRC) -lm -o $@
+demo-run: $(B)/bin/adapt_measure
+demo-pipe-check:
+	@dev=$$(sed -n 's/^  pipeline checksum //p' $(B)/demo/m4f-float.log); \
+	host=$$(sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/0x\1/p' $(B)/demo/pipe_stream_stats.json); \
+	echo "== pipeline checksum: Cortex-M4F $$dev, host tool $$host"; test -n "$$dev" && test "$$dev" = "$$host"
 
 bench: deps
 	@$(MAKE) --no-print-directory bench-run

@@ -87,3 +87,14 @@ for v in "m4f-float subd" "m3-fixed subd-fixed"; do
         exit 1
     fi
 done
+echo "-- the pipeline (issue 22): points -> progressive interpolation -> adaptive limit stream to a chord tolerance"
+# The host half of port/cortex-m/demo_pipe.c, the same file and numbers (tol 2^-12, max level 3,
+# eps 2^-7): the fitted control mesh, the adaptive stream's checksum (`make demo` compares it with
+# the Cortex-M4F's), the adaptive mesh drawn with its edges, and the uniform level that meets the
+# same tolerance, found by brute force in double (adapt_measure, built by `make demo`).
+"$bin/subd" pia --method paper --tol 0.000244140625 demo/spot_control_tri.obj -o "$out/pipe_fit.obj"
+"$bin/subd" loop -l 3 --stream --limit --chord 0.0078125 "$out/pipe_fit.obj" --stats > "$out/pipe_stream_stats.json"
+sed -n 's/.*"triangles":\([0-9]*\),"checksum":"\([0-9a-f]*\)".*/  host: adaptive triangles \1, checksum 0x\2/p' "$out/pipe_stream_stats.json"
+"$bin/subd" loop -l 3 --stream --limit --chord 0.0078125 "$out/pipe_fit.obj" -o "$out/pipe_adaptive.obj"
+run pipe_spot_adaptive render "$out/pipe_adaptive.obj" --edges --size 1000x700
+"$bin/adapt_measure" "$out/pipe_fit.obj" 3 0.0078125 | sed 's/^/  /'

@@ -53,7 +53,9 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   upper levels). CHORD: per control face, per edge about L 2^L limit evaluations and, per
  *   level tried for the face, one evaluation of every level-L lattice point of the face:
  *   about the uniform limit stream's work per tried level, for the face and for each
- *   neighbour's own level (the output is adaptive, the check is exhaustive).
+ *   neighbour's own level (the output is adaptive, the check is exhaustive); all of it twice
+ *   (a pass before the first triangle decides between the adaptive cut and the uniform
+ *   fallback, see CHORD below).
  * Notes: every vertex is the limit point of a lattice point (a, b) of its control face (units
  *   1/2^L), bit-identical to the uniform limit stream at level L (subd_loop_stream with
  *   SUBD_LOOP_STREAM_LIMIT) and with its id (subd_loop.h's formula at level L), so a vertex
@@ -68,8 +70,14 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   limit point of the edge within eps (computed on the same bits by both faces) and the
  *   smaller of its faces' own uniform levels; l(f) the smallest level >= its edges' at which
  *   every level-L limit point of the face lies within eps of the emitted triangle containing
- *   it (float32: Euclidean distance plus a rounding margin; Q16.16: |x - p|_1 plus 8 LSB, p
- *   the triangle's point at x's barycentric coordinates, a larger bound), else L.
+ *   it or of one of the face's emitted triangles near it (the 3 x 3 lattice cells around
+ *   it, the ring triangles beside it) (float32: Euclidean distance plus a rounding margin;
+ *   Q16.16: |x - p|_1 plus 8 LSB, p a point of the triangle: x's barycentric coordinates,
+ *   negative ones set to 0; a larger bound), else L. Fallback: before the first triangle the
+ *   stream counts the adaptive cut's triangles; when they exceed the 4^U F of the uniform
+ *   level U = the largest of the faces' own levels (the smallest level whose uniform
+ *   triangles hold the face's level-L points by the same check) and every face passes the
+ *   check at U, every face is emitted at U instead (same guarantee, fewer triangles).
  *   Guarantee: every vertex of the uniform limit stream at level L lies within eps
  *   (Euclidean) of the emitted mesh.
  *   An eps below every deviation (and below the margin: 8 LSB in Q16.16, about 2^-18 of the

@@ -33,7 +33,15 @@
  *     edges' at which every level-L limit point of the face lies within eps of the triangle
  *     (of this face's triangulation at l) that contains it in the parameter domain; at l = L
  *     this holds by construction (every level-L point is a vertex or lies on a chord its
- *     edge's e was chosen for), so l = L needs no check. "Within eps": float32, the Euclidean
+ *     edge's e was chosen for), so l = L needs no check. A point farther than eps from its
+ *     own triangle may still be near another emitted triangle of the face (the limit
+ *     parametrisation is not the chord's: near extraordinary vertices a point lies over the
+ *     neighbouring triangle): the check tries the face's triangles in the 3 x 3 level-l
+ *     cells around it and the ring triangles beside it (la_near_holds; any emitted triangle
+ *     is a sound witness), which took the icosahedron (eps 0.001) and the cube (eps 0.003)
+ *     from 4x the uniform count to 1x. The neighbouring FACES' triangles are not tried (their
+ *     levels are decided from this face's: a cycle), so a level that only they make
+ *     sufficient is missed (open work). "Within eps": float32, the Euclidean
  *     distance to that triangle (segment, for an edge) plus a rounding margin of 2^-18 of the
  *     coordinates' magnitude; Q16.16, whose resolution cannot hold the squared distances of
  *     fine levels, the bound |x - p|_1 + 8 LSB, p the triangle's point at x's barycentric
@@ -41,6 +49,11 @@
  *     distance to the emitted mesh is within eps: an exact check on the points the guarantee
  *     is about, not an estimate; its cost is about one uniform level-L pass per level tried
  *     (the output is what is adaptive, not the work).
+ *   CHORD fallback (la_prepass): the level choice runs once over the whole mesh before the
+ *     first triangle, counting the adaptive cut's triangles A and taking U = the largest
+ *     own level; if A > 4^U F and every face passes the check at U (checked again: a face's
+ *     own level is only the first that passes), every face is emitted at U, uniformly: the
+ *     stream never emits more than that uniform level, at the price of a second pass.
  * Triangulation of a face at level l (n = 2^l):
  *   - every edge at l: the uniform level-l triangles, depth first, children 0..3 (the uniform
  *     stream's order and corner order);
@@ -172,6 +185,7 @@ typedef struct la_face {
     uint32_t l, e[3]; /* face and edge levels                                        */
     uint32_t trans;   /* some edge coarser than l                                    */
     uint32_t no, ni;  /* ring: outer and inner loop vertex counts                    */
+    uint32_t own;     /* CHORD: the face's own uniform level (la_face_own)          */
 } la_face;
 
 typedef struct la_iter {
@@ -192,6 +206,8 @@ typedef struct la_state {
     uint8_t path[SUBD_MAX_LEVELS + 1u];
     la_face fc;
     la_iter it;
+    uint32_t pre; /* CHORD: the pre-pass (la_prepass) has run                        */
+    uint32_t uni; /* CHORD: every face at this uniform level, or SUBD_NONE: adaptive */
 } la_state;
 SUBD_STREAM_STATE_FITS(la_state);
 
@@ -546,8 +562,81 @@ static uint32_t la_edge_chord(la_state *s, uint32_t j)
     return L;
 }
 
-/* CHORD: 1 when every level-L lattice point of the face lies within eps of the triangle of
- * the face's triangulation (s->fc) that contains it. */
+/* Barycentric weights (w0, w1, w2) of x in triangle t (sum: its doubled area > 0), negative
+ * ones set to 0: the weights of a point OF the triangle (x's own point when t contains x). */
+static int64_t la_bary(const la_tri *t, la_pt x, int64_t *w1, int64_t *w2)
+{
+    int64_t area = la_cross(t->p[0], t->p[1], t->p[2]), a1 = la_cross(t->p[2], t->p[0], x);
+    int64_t a2 = la_cross(t->p[0], t->p[1], x), a0 = area - a1 - a2;
+    if (a0 < 0) a0 = 0;
+    if (a1 < 0) a1 = 0;
+    if (a2 < 0) a2 = 0;
+    *w1 = a1;
+    *w2 = a2;
+    return a0 + a1 + a2;
+}
+
+/* 1 when y (the limit point of lattice point x) lies within eps of emitted triangle t. */
+static int la_tri_holds(la_state *s, const la_tri *t, la_pt x, const subd_real *y)
+{
+    subd_real c[3][3];
+    int64_t w1, w2, sum = la_bary(t, x, &w1, &w2);
+    uint32_t k;
+    for (k = 0; k < 3u; k++) la_eval_point(s, t->p[k], c[k], 0);
+    return sum > 0 && la_within(s, y, c[0], c[1], c[2], SUBD_REAL_FRAC(w1, sum), SUBD_REAL_FRAC(w2, sum));
+}
+
+/* CHORD, when y is farther than eps from the triangle containing x: 1 when another triangle
+ * of the face's triangulation (s->fc) near x holds it (all of them are emitted, so any is a
+ * sound witness): the uniform level-l triangles of the 3 x 3 lattice cells around x that the
+ * triangulation keeps, then the ring triangles whose lattice box, one level-l step wider,
+ * holds x. A subset (the nearest in the parameter domain), to bound the work: each
+ * candidate costs three limit evaluations. */
+static int la_near_holds(la_state *s, la_pt x, const subd_real *y)
+{
+    const la_face *fc = &s->fc;
+    uint32_t L = s->o.loop.levels, l = fc->l, up, k;
+    int32_t n = (int32_t)1 << L, step = n >> l, m = (int32_t)1 << l, ci = x.a / step, cj = x.b / step, i, j;
+    la_tri t;
+    la_iter it;
+    t.sub = LA_NO_SUB;
+    for (j = cj - 1; j <= cj + 1; j++)
+        for (i = ci - 1; i <= ci + 1; i++)
+            for (up = 0; up < 2u; up++) {
+                uint32_t keep = 1;
+                if (i < 0 || j < 0 || i + j + (up ? 2 : 1) > m) continue;
+                /* cell (i, j): (i, j) (i+1, j) (i, j+1), and (i+1, j) (i+1, j+1) (i, j+1) */
+                t.p[0].a = up ? (i + 1) * step : i * step;
+                t.p[0].b = j * step;
+                t.p[1].a = (i + 1) * step;
+                t.p[1].b = up ? (j + 1) * step : j * step;
+                t.p[2].a = i * step;
+                t.p[2].b = (j + 1) * step;
+                if (fc->trans)
+                    for (k = 0; k < 3u; k++)
+                        if (l < 2u || t.p[k].a < step || t.p[k].b < step || t.p[k].a + t.p[k].b > n - step) keep = 0;
+                if (keep && la_tri_holds(s, &t, x, y)) return 1;
+            }
+    if (!fc->trans) return 0;
+    it.phase = 1;
+    it.j = it.io = it.ii = 0;
+    while (la_next(fc, L, &it, &t)) {
+        la_pt lo = t.p[0], hi = t.p[0];
+        for (k = 1; k < 3u; k++) {
+            if (t.p[k].a < lo.a) lo.a = t.p[k].a;
+            if (t.p[k].b < lo.b) lo.b = t.p[k].b;
+            if (t.p[k].a > hi.a) hi.a = t.p[k].a;
+            if (t.p[k].b > hi.b) hi.b = t.p[k].b;
+        }
+        if (x.a < lo.a - step || x.a > hi.a + step || x.b < lo.b - step || x.b > hi.b + step) continue;
+        if (la_tri_holds(s, &t, x, y)) return 1;
+    }
+    return 0;
+}
+
+/* CHORD: 1 when every level-L lattice point of the face lies within eps of the face's
+ * triangulation (s->fc): of the triangle that contains it, else of one near it
+ * (la_near_holds). */
 static int la_face_ok(la_state *s)
 {
     uint32_t L = s->o.loop.levels, k;
@@ -573,7 +662,8 @@ static int la_face_ok(la_state *s)
                 int64_t w0 = area - w1 - w2;
                 if (w0 < 0 || w1 < 0 || w2 < 0 || w0 == area || w1 == area || w2 == area) continue;
                 la_eval_point(s, x, y, 0);
-                if (!la_within(s, y, c[0], c[1], c[2], SUBD_REAL_FRAC(w1, area), SUBD_REAL_FRAC(w2, area)))
+                if (!la_within(s, y, c[0], c[1], c[2], SUBD_REAL_FRAC(w1, area), SUBD_REAL_FRAC(w2, area)) &&
+                    !la_near_holds(s, x, y))
                     return 0;
             }
         if (s->ovf) return 0;
@@ -603,7 +693,7 @@ static uint32_t la_face_own(la_state *s, uint32_t g)
 static void la_face_levels(la_state *s)
 {
     const subd_mesh *in = s->in;
-    uint32_t L = s->o.loop.levels, j, f = s->f, l;
+    uint32_t L = s->o.loop.levels, j, f = s->f, l, own;
     la_face *fc = &s->fc;
     if (s->o.mode == SUBD_LOOP_ADAPT_CALLBACK) {
         uint32_t lf = s->o.face_level(s->o.user, f);
@@ -619,19 +709,20 @@ static void la_face_levels(la_state *s)
         return;
     }
     l = 0;
+    own = la_face_own(s, f);
     for (j = 0; j < 3u; j++) {
-        uint32_t tw = in->twin[3u * f + j], o1, o2;
+        uint32_t tw = in->twin[3u * f + j], o1 = own, o2;
         fc->e[j] = la_edge_chord(s, j);
         /* not below the level both faces would take uniformly (la_face_own: a function of
          * the face alone, so both faces compute the same): a coarser edge would force its
          * faces into transitions finer than they need */
-        o1 = la_face_own(s, f);
         o2 = tw == SUBD_NONE ? o1 : la_face_own(s, tw / 3u);
         if (o2 < o1) o1 = o2;
         if (o1 > fc->e[j]) fc->e[j] = o1;
         if (fc->e[j] > l) l = fc->e[j];
     }
     s->gf = f;
+    fc->own = own;
     for (; l < L; l++) {
         fc->l = l;
         la_face_setup_ring(fc);
@@ -639,6 +730,49 @@ static void la_face_levels(la_state *s)
     }
     fc->l = L;
     la_face_setup_ring(fc);
+}
+
+/* Every face at uniform level u (CHORD's fallback). */
+static void la_face_uniform(la_face *fc, uint32_t u)
+{
+    fc->l = fc->e[0] = fc->e[1] = fc->e[2] = u;
+    la_face_setup_ring(fc);
+}
+
+/* CHORD, before the first triangle: the adaptive cut's triangle count A and the uniform
+ * level U = the largest own level (la_face_own) over the faces; when A exceeds the 4^U F
+ * triangles of level U and every face passes the chord check at U (la_face_ok: a face's own
+ * level is the first that passes, a higher one is checked again), the stream emits level U
+ * instead (s->uni), a cut with the same guarantee and fewer triangles. One pass of the level
+ * choice over the mesh (the emission pass repeats it): about twice the work, no memory. */
+static int la_prepass(la_state *s, subd_diag *d)
+{
+    uint32_t L = s->o.loop.levels, F = s->in->num_faces, f, u = 0, ok = 1;
+    uint64_t adapt = 0;
+    la_iter it;
+    la_tri t;
+    for (f = 0; f < F; f++) {
+        s->f = s->gf = f;
+        la_face_levels(s);
+        if (s->ovf) break;
+        it.phase = it.j = it.io = it.ii = 0;
+        while (la_next(&s->fc, L, &it, &t)) adapt++;
+        if (s->fc.own > u) u = s->fc.own;
+    }
+    if (!s->ovf && adapt > ((uint64_t)F << (2u * u)) && u < L)
+        for (f = 0; ok && f < F; f++) {
+            s->f = s->gf = f;
+            la_face_uniform(&s->fc, u);
+            ok = la_face_ok(s) && !s->ovf;
+        }
+    if (s->ovf) {
+        d->face = s->f;
+        return SUBD_ERR_RANGE;
+    }
+    s->uni = adapt > ((uint64_t)F << (2u * u)) && ok ? u : SUBD_NONE;
+    s->f = s->gf = 0;
+    s->pre = 1;
+    return SUBD_OK;
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -651,12 +785,17 @@ static int la_step(void *state, subd_stream_q *q, subd_diag *d)
     la_tri t;
     for (;;) {
         if (!s->started) {
+            if (s->o.mode == SUBD_LOOP_ADAPT_CHORD && !s->pre) {
+                int st = la_prepass(s, d);
+                if (st != SUBD_OK) return st;
+            }
             if (s->f >= s->in->num_faces) {
                 q->ended = 1;
                 return SUBD_OK;
             }
             s->gf = s->f;
-            la_face_levels(s);
+            if (s->o.mode == SUBD_LOOP_ADAPT_CHORD && s->uni != SUBD_NONE) la_face_uniform(&s->fc, s->uni);
+            else la_face_levels(s);
             s->it.phase = s->it.j = s->it.io = s->it.ii = 0;
             s->started = 1;
         }
@@ -752,6 +891,8 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
     s->gf = 0;
     s->depth = 0;
     s->view_ok = 0;
+    s->pre = 0;
+    s->uni = SUBD_NONE;
     s->impl.step = la_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;

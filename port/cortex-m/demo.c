@@ -413,6 +413,7 @@ int main(void)
     st = demo_icosahedron(&arena);
     if (st == SUBD_OK) st = demo_stream(&arena);
     if (st == SUBD_OK) st = demo_sr48_chord(&arena);
+    if (st == SUBD_OK) { extern int demo_pipe(void); st = demo_pipe(); } /* demo_pipe.c: issue 22's pipeline */
     kv("stack bytes used", port_stack_used());
     if (st != SUBD_OK) {
         print_str("demo failed: ");

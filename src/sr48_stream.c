@@ -138,7 +138,7 @@ typedef struct s48_state {
     const subd_sr48 *base;
     uint32_t levels, smooth, wt, wv, xv, nv0, n0;
     uint32_t at, av;   /* the tile window's capacities (uniform)                           */
-    uint32_t tm, tile; /* the tile's levels m; tile: m > 1 (uniform)                       */
+    uint32_t tm;       /* the tile's levels m (uniform; 1: no tile, s48_tile_levels)       */
     uint32_t tcur, tend; /* uniform: X's triangles still to emit (tcur < tend: a tile is out) */
     uint32_t t0, k, built, err;
     uint8_t *lev;      /* level windows 0..L-1 (uniform: 0..L-m), blocks of lev_size       */
@@ -160,7 +160,6 @@ typedef struct s48_state {
      * child state, the corners' sources (0..2 the walked triangle's corners, 3 + j the vertex
      * level j's node creates), whether it counts; the star's keys; the decided diamond's
      * descendants per level (count, then packed window triangle + path, key lo, key hi) */
-    uint32_t chord;
     uint32_t *ccur, *cch, *csrc, *cfl, *ckey, *cdn, *cdesc;
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
 } s48_state;
@@ -234,7 +233,6 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         s->av = av;
         s->xv = xv;
         s->tm = m;
-        s->tile = tile;
         s->lev_size = lsz;
         (void)s48_win_layout(ct, cv, nl, s->off);
         (void)s48_win_layout(at, av, nl, s->aoff);
@@ -1281,7 +1279,7 @@ static int s48_wants(s48_state *s, const s48_win *w, uint32_t t, uint32_t k)
     uint32_t vs[4], nv = 3, i, j, q;
     subd_real lo[3], hi[3];
     uint16_t nb = w->tn[3u * t];
-    if (s->chord) return s48_chord_wants(s, k, t); /* 1, 0, or -1: a failed walk */
+    if (s->ad.mode == SUBD_SR48_ADAPT_CHORD) return s48_chord_wants(s, k, t); /* 1, 0, or -1: a failed walk */
     for (j = 0; j < 3u; j++) vs[j] = w->tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w->tv[3u * nb];
     for (j = 0; j < 3u; j++) {
@@ -1376,7 +1374,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             s->built = 1;
         }
         if (!s->built) {
-            if (s->adapt && !s->chord && !s48_level0_lin(s, s->t0)) goto fail;
+            if (s->adapt && s->ad.mode != SUBD_SR48_ADAPT_CHORD && !s48_level0_lin(s, s->t0)) goto fail;
             if (!s48_build0(s, s->t0)) goto fail;
             s->k = 0;
             s->built = 1;
@@ -1397,7 +1395,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             s48_up(s);
             return stop;
         }
-        if (s->tile && s->k + s->tm == s->levels) {
+        if (s->tm > 1u && s->k + s->tm == s->levels) {
             if (!s48_tile(s, &w, w.hd[2])) goto fail;
             continue;
         }
@@ -1477,7 +1475,6 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->tend = 0;
     s->built = 0;
     s->err = 0;
-    s->chord = o->adapt.mode == SUBD_SR48_ADAPT_CHORD ? 1u : 0u;
     subd_stream_start(str, a, e.mark, SUBD_STREAM_TRIS, &s->impl, 2u);
     return subd_entry_ok(&e);
 }

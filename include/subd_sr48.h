@@ -328,12 +328,14 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
  *   overflowed: cannot happen within the valence the plan was made for).
- * Cost: O(window) per internal batch of 2 triangles (the two children of a level
- *   max_level-1 triangle: one refinement of the level max_level-1 window, about 60
- *   triangles), O(window * valence) per level-0 triangle more (its window is gathered by fan
- *   walks). Measured: 0.04-0.15x the faces/s of subd_sr48_build + subd_sr48_extract on the
- *   host, about 22 600 instructions per triangle on the Cortex-M4F (bench -s sr48stream,
- *   make demo).
+ * Cost: uniform: per tile of 2^m triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 6)
+ *   m breadth-first refinements of its descendants plus a two-ring margin (about 8 refined
+ *   and 11 cropped triangles per output face); adaptive modes: O(window) per internal batch
+ *   of 2 triangles (one refinement of the level max_level-1 window, about 60 triangles);
+ *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
+ *   Measured (uniform): 0.05x / 0.24x / 0.57x the faces/s of subd_sr48_build +
+ *   subd_sr48_extract on spot at 2 / 4 / 6 steps, about 4 700 instructions per triangle on
+ *   the Cortex-M4F at 8 steps (bench -s sr48stream, make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
@@ -390,8 +392,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * SUBD_SR48_STREAM_WV_(N) vertices (measured: 56 and 40 on regular regions, 4N + 24 and
  * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
- * overflow ring (2 triangles), max(L, 1) level windows (20 bytes per triangle, 21 per
- * vertex), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
+ * overflow ring (2 triangles), the level windows (20 bytes per triangle, 21 per vertex;
+ * uniform: L - m + 1 of them and the tile window, see SUBD_SR48_STREAM_TILE_LEVELS;
+ * otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
  * (28 bytes per vertex in both arithmetics) and the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))

@@ -152,6 +152,19 @@ static inline void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui
     }
 }
 
+/* The index offsets of a grid vertex's six neighbours (i, j) + (1, 0), (0, 1), (-1, 1),
+ * (-1, 0), (0, -1), (1, -1), for a vertex in a row of `row` vertices of the row-major
+ * triangular grid (lt_vi); unsigned wrap-around gives the negative ones. */
+static inline void lt_ring_offsets(uint32_t row, uint32_t *off)
+{
+    off[0] = 1u;
+    off[1] = row;
+    off[2] = row - 1u;
+    off[3] = (uint32_t)0u - 1u;
+    off[4] = (uint32_t)0u - (row + 1u);
+    off[5] = (uint32_t)0u - row;
+}
+
 /* Position of the level t + 1 point (px, py) / 2 of grid g (side s): the smooth vertex rule
  * of valence 6 from the vertex's ring start, or the interior edge rule from the lower side.
  * Indices from U(ui, uj)'s: vertex (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j,
@@ -168,12 +181,7 @@ static inline void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t 
     if (even) {
         uint32_t dd = g->dir[l0], k, off[6];
         subd_acc acc[3];
-        off[0] = 1u;
-        off[1] = row;
-        off[2] = row - 1u;
-        off[3] = (uint32_t)0u - 1u;
-        off[4] = (uint32_t)0u - (row + 1u);
-        off[5] = (uint32_t)0u - row;
+        lt_ring_offsets(row, off);
         loop_smooth_begin(acc, w, P + 3u * l0);
         for (k = 0; k < 6u; k++, dd = dd == 5u ? 0u : dd + 1u) loop_smooth_add(acc, w, P + 3u * (l0 + off[dd]));
         loop_smooth_end(out, acc, ovf);
@@ -220,7 +228,7 @@ static uint8_t lt_new_dir(const lt_grid *g, uint32_t s, uint32_t ui, uint32_t uj
 
 /* Ring start (lattice direction of vert_out) of the level t + 1 point (px, py) / 2 of grid g
  * (side s), a point of the tile's face. */
-static uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py)
+static inline uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py)
 {
     uint32_t ui, uj, d;
     int even;
@@ -392,12 +400,7 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         }
     for (y = 0; y <= m; y++) {
         uint32_t row = S - y, l0 = lt_vi(S, 1u, y + 1u), off[6];
-        off[0] = 1u;
-        off[1] = row;
-        off[2] = row - 1u;
-        off[3] = (uint32_t)0u - 1u;
-        off[4] = (uint32_t)0u - (row + 1u);
-        off[5] = (uint32_t)0u - row;
+        lt_ring_offsets(row, off);
         for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
             uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u, j;

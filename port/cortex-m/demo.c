@@ -206,27 +206,6 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     return SUBD_OK;
 }
 
-/* FNV-1a over the little-endian bytes of every emitted coordinate's bits (the tool's
- * --stats "checksum" of `subd semireg48 --stream`). */
-typedef struct sr48_hash {
-    uint32_t h, tris;
-} sr48_hash;
-static int sr48_hash_tri(void *ctx, const subd_tri *t)
-{
-    sr48_hash *k = (sr48_hash *)ctx;
-    uint32_t c, q, i, w;
-    for (c = 0; c < 3u; c++)
-        for (q = 0; q < 3u; q++) {
-            w = subd_real_bits(t->pos[c][q]);
-            for (i = 0; i < 4u; i++) k->h = (k->h ^ ((w >> (8u * i)) & 0xffu)) * 16777619u;
-        }
-    k->tris++;
-    return 0;
-}
-
-/* The semi-regular 4-8 surface streamed: the base mesh (subd_sr48_base) in the arena, then
- * DEMO_SR48_STEPS binary steps, uniform, through a checksum sink, in a static buffer of
- * SUBD_SR48_STREAM_BYTES. Host: subd semireg48 --stream --stats -l 8 (the same OBJ). */
 static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
 {
     subd_sr48 base;
@@ -234,7 +213,7 @@ static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
     subd_arena sa;
     subd_diag d;
     subd_tri_sink sink;
-    sr48_hash k;
+    demo_hash k;
     uint32_t plan, t0, t1, mark = start_measure(arena);
     uint64_t insns;
     int st;
@@ -247,9 +226,8 @@ static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
     kv("stream arena bytes planned", plan);
     kv("static buffer bytes", (uint32_t)sizeof sr48_stream_arena);
     subd_arena_init(&sa, sr48_stream_arena, sizeof sr48_stream_arena);
-    k.h = 2166136261u;
-    k.tris = 0;
-    sink.tri = sr48_hash_tri;
+    demo_hash_init(&k); /* the tool's --stats checksum */
+    sink.tri = demo_hash_tri;
     sink.ctx = &k;
     t0 = port_cycles();
     st = subd_sr48_stream(&sa, &base, &so, &sink, &d);

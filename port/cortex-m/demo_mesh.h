@@ -13,7 +13,9 @@
  *
  * The checksum is 32-bit FNV-1a over the four little-endian bytes of subd_real_bits of every
  * emitted position coordinate (corner 0 x y z, corner 1, corner 2), triangle by triangle in
- * emission order, starting from the FNV offset basis 2166136261. Header-only, no heap. */
+ * emission order, starting from the FNV offset basis 2166136261 (the tool's --stats
+ * "checksum"): the one checksum sink of demo.c, demo_sr48.c and demo_pipe.c. Header-only
+ * (static inline: a file uses what it needs), no heap. */
 #ifndef DEMO_MESH_H
 #define DEMO_MESH_H
 
@@ -36,7 +38,7 @@ typedef struct demo_geo {
 
 /* Builds the geodesic sphere's face list in g (fl points into g). Returns SUBD_OK, or
  * SUBD_ERR_RANGE if the projection overflowed (it cannot: |coordinates| < 2). */
-static int demo_geo_build(demo_geo *g, subd_face_list *fl)
+static inline int demo_geo_build(demo_geo *g, subd_face_list *fl)
 {
     /* the icosahedron of demo.c's OBJ text, times 1000, and its 20 faces (0-based) */
     static const int16_t ico_v[12][3] = {
@@ -109,7 +111,7 @@ typedef struct demo_hash {
     uint32_t tris;
 } demo_hash;
 
-static void demo_hash_init(demo_hash *s)
+static inline void demo_hash_init(demo_hash *s)
 {
     s->h = DEMO_FNV_BASIS;
     s->tris = 0;
@@ -117,7 +119,7 @@ static void demo_hash_init(demo_hash *s)
 
 /* 32-bit FNV-1a of one triangle's nine coordinates (little-endian bytes of their bits):
  * corners c[0], c[1], c[2], three coordinates each. */
-static uint32_t demo_hash_pos(uint32_t h, const subd_real *const c[3])
+static inline uint32_t demo_hash_pos(uint32_t h, const subd_real *const c[3])
 {
     uint32_t i, k, b;
     for (i = 0; i < 3u; i++)
@@ -131,7 +133,7 @@ static uint32_t demo_hash_pos(uint32_t h, const subd_real *const c[3])
     return h;
 }
 
-static int demo_hash_tri(void *ctx, const subd_loop_tri *t)
+static inline int demo_hash_tri(void *ctx, const subd_loop_tri *t)
 {
     demo_hash *s = (demo_hash *)ctx;
     const subd_real *c[3];
@@ -144,7 +146,7 @@ static int demo_hash_tri(void *ctx, const subd_loop_tri *t)
 }
 
 /* The cheapest sink (counts): for the stream's own instruction count. */
-static int demo_count_tri(void *ctx, const subd_loop_tri *t)
+static inline int demo_count_tri(void *ctx, const subd_loop_tri *t)
 {
     (void)t;
     ++*(uint32_t *)ctx;

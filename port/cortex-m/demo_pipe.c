@@ -22,6 +22,7 @@
 #include "subd.h"
 #include "print.h"
 #include "port_cm.h"
+#include "demo_mesh.h" /* the checksum sink (demo_hash_tri) */
 #include "demo_pipe_obj.h" /* static const char demo_pipe_obj[]: the OBJ text */
 
 #define DEMO_PIPE_LEVELS 3u
@@ -33,22 +34,6 @@ static uint8_t pipe_arena[48 * 1024] __attribute__((aligned(8)));
 static uint8_t pipe_stream_arena[SUBD_LOOP_ADAPT_STREAM_BYTES(DEMO_PIPE_LEVELS, DEMO_PIPE_MAX_VALENCE)]
     __attribute__((aligned(8)));
 
-typedef struct pipe_hash {
-    uint32_t h, tris;
-} pipe_hash;
-
-static int pipe_hash_tri(void *ctx, const subd_tri *t)
-{
-    pipe_hash *k = (pipe_hash *)ctx;
-    uint32_t c, q, i, w;
-    for (c = 0; c < 3u; c++)
-        for (q = 0; q < 3u; q++) {
-            w = subd_real_bits(t->pos[c][q]);
-            for (i = 0; i < 4u; i++) k->h = (k->h ^ ((w >> (8u * i)) & 0xffu)) * 16777619u;
-        }
-    k->tris++;
-    return 0;
-}
 
 static void pipe_kv(const char *key, uint32_t v)
 {
@@ -84,7 +69,7 @@ int demo_pipe(void)
     subd_tri_sink sink;
     subd_diag d;
     subd_real *pos = 0;
-    pipe_hash k;
+    demo_hash k;
     uint32_t plan, v, maxval = 0, t0, t1, n = (uint32_t)sizeof demo_pipe_obj - 1u;
     uint64_t insns;
     int st;
@@ -126,9 +111,8 @@ int demo_pipe(void)
     pipe_kv("stream arena bytes (static)", (uint32_t)sizeof pipe_stream_arena);
     pipe_kv("stream arena bytes planned", plan);
     subd_arena_init(&sa, pipe_stream_arena, sizeof pipe_stream_arena);
-    k.h = 2166136261u;
-    k.tris = 0;
-    sink.tri = pipe_hash_tri;
+    demo_hash_init(&k);
+    sink.tri = demo_hash_tri;
     sink.ctx = &k;
     t0 = port_cycles();
     st = subd_loop_adapt_stream(&sa, &fit, &ao, &sink, &d);

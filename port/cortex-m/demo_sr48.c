@@ -27,6 +27,7 @@
 #include "subd.h"
 #include "print.h"
 #include "port_cm.h"
+#include "demo_mesh.h" /* the checksum sink (demo_hash_tri) */
 #include "corpus.h"
 #include "demo_sr48.h"
 
@@ -62,23 +63,6 @@ static int dsr_fail(const char *what, int st, const subd_diag *d)
     return st == SUBD_OK ? SUBD_ERR_PARAM : st;
 }
 
-/* The checksum sink (FNV-1a over the little-endian bytes of every coordinate's bits, as
- * port/cortex-m/demo.c's and the tool's). */
-typedef struct dsr_hash {
-    uint32_t h, tris;
-} dsr_hash;
-static int dsr_hash_tri(void *ctx, const subd_tri *t)
-{
-    dsr_hash *k = (dsr_hash *)ctx;
-    uint32_t c, q, i, w;
-    for (c = 0; c < 3u; c++)
-        for (q = 0; q < 3u; q++) {
-            w = subd_real_bits(t->pos[c][q]);
-            for (i = 0; i < 4u; i++) k->h = (k->h ^ ((w >> (8u * i)) & 0xffu)) * 16777619u;
-        }
-    k->tris++;
-    return 0;
-}
 
 static uint32_t dsr_align(uint32_t n) { return (n + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u); }
 
@@ -148,7 +132,7 @@ static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t
     subd_arena sa;
     subd_diag d;
     subd_tri_sink sink;
-    dsr_hash k;
+    demo_hash k;
     uint32_t plan = 0, t0, t1;
     uint64_t insns;
     int st;
@@ -157,9 +141,8 @@ static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t
     dsr_kv("stream arena bytes planned (subd_sr48_stream_plan)", plan);
     if (plan > sizeof dsr_buf) return dsr_fail("the static buffer is below the plan", SUBD_ERR_NOMEM, 0);
     subd_arena_init(&sa, dsr_buf, plan);
-    k.h = 2166136261u;
-    k.tris = 0;
-    sink.tri = dsr_hash_tri;
+    demo_hash_init(&k);
+    sink.tri = demo_hash_tri;
     sink.ctx = &k;
     t0 = port_cycles();
     st = subd_sr48_stream(&sa, base, &so, &sink, &d);

@@ -25,10 +25,10 @@ extern "C" {
  * says so; a patch release changes neither API, plans nor output bits. From 1.0 on, output
  * bits and plans change only in a major release. */
 #define SUBD_VERSION_MAJOR 0
-#define SUBD_VERSION_MINOR 4
+#define SUBD_VERSION_MINOR 5
 #define SUBD_VERSION_PATCH 0
 #define SUBD_VERSION_NUMBER (SUBD_VERSION_MAJOR * 10000 + SUBD_VERSION_MINOR * 100 + SUBD_VERSION_PATCH)
-#define SUBD_VERSION "0.4.0"
+#define SUBD_VERSION "0.5.0"
 
 /* subd_version: SUBD_VERSION_NUMBER of the library linked (compare with the header's to
  * catch a mismatch). Memory: none. Errors: none. Cost: O(1). */

@@ -2,9 +2,10 @@
 /* Adaptive Loop limit stream (include/subd_loop_adapt.h): each control face emitted at its own
  * level 0..L with watertight transitions, every vertex a level-L limit point (the uniform limit
  * stream's bits and ids), to a chord tolerance or at levels a callback chooses.
- * Length (~770 lines): the level choice (edge and face chord tests, callback) and the
- * emission (uniform interior, transition rings) share the per-face lattice walk and its
- * state; splitting the level choice into its own file is open work (issue 22).
+ * Length (~910 lines): the level choice (edge and face chord tests with the nearby-triangle
+ * search and the uniform fallback's counting pass, callback) and the emission (uniform
+ * interior, transition rings) share the per-face lattice walk and its state; splitting the
+ * level choice into its own file behind a private header is open work (issue 22).
  *
  * Paper: loop-progressive-interpolation.txt, sections 1 and 4 (the rules, through
  * loop_patch.c's patches and loop_limit.c's masks; nothing here computes a new rule). The

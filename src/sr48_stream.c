@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming semi-regular 4-8 refinement (paper: semi-regular-4-8-refinement-box-splines.txt,
  * sections 4 and 6).
- * Length (~1 220 lines): three pieces share one window layout and state - the window
- * (refine, smooth, crop, descent to the finest level), the CHORD walk over the deeper windows
- * (its test and proof are in sr48_chord.c) and the stream driver (plan, begin, step,
- * adaptive decisions); the split into sr48_window.c, the chord walk and sr48_stream.c behind
+ * Length (~1 490 lines): four pieces share one window layout and state - the window
+ * (refine, smooth, crop, descent to the finest level), the uniform tile (s48_tile), the CHORD
+ * walk over the deeper windows and the forcing diamonds (its test and proof are in
+ * sr48_chord.c) and the stream driver (plan, begin, step, adaptive decisions); the split into sr48_window.c, the chord walk and sr48_stream.c behind
  * a private window header is open work (issue 19, item 7; issue 20).
  * What it streams: the triangles of subd_sr48_extract's uniform cut of
  * subd_sr48_build's hierarchy, handed out one at a time through the common stream

@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /* Chordal cuts of the streamed semi-regular 4-8 surface (SUBD_SR48_ADAPT_CHORD in
- * subd_sr48_stream, src/sr48_stream.c): the deviation test of one vertex against the linear
- * interpolant of one ancestor triangle. Paper: semi-regular-4-8-refinement-box-splines.txt,
- * section 3 (a diamond is split as a whole, splits force their parents: the restricted
- * hierarchy) and section 7 (adaptive extraction); the chordal tolerance is beyond the paper,
- * as in sr48_extract.c.
+ * subd_sr48_stream, src/sr48_stream.c; its walk: src/sr48_chord_walk.c): the deviation test
+ * of one vertex against the linear interpolant of one ancestor triangle. Paper:
+ * semi-regular-4-8-refinement-box-splines.txt, section 3 (a diamond is split as a whole,
+ * splits force their parents: the restricted hierarchy) and section 7 (adaptive extraction);
+ * the chordal tolerance is beyond the paper, as in sr48_adapt.c.
  *
  * The criterion (design note; the choices where the paper is silent). P(v) is the position
  * of vertex v at the finest level max_level (subd_sr48_build's), L_d the linear
  * interpolation of triangle d's corners P at dyadic parameters (the parameter of a split
- * vertex is the midpoint of its node's base, as in sr48_extract.c's walk), and
+ * vertex is the midpoint of its node's base, as in sr48_adapt.c's walk), and
  *   E(d)    = max |P(v) - L_d(v)| over the vertices v created inside d's subtree down to
  *             max_level (subd_sr48_extract's exact chordal deviation of d; d asks for a
  *             split iff E(d) > eps),
@@ -27,7 +27,7 @@
  *             k + M >= max_level: then S(D) is all of {D} + F(D) below max_level).
  * The stream splits a level-k diamond D iff E(d) > eps for some d in S(D).
  *
- * Lemma (stars nest; sr48_extract.c's nested region): for a child diamond D' of level
+ * Lemma (stars nest; sr48_adapt.c's nested region): for a child diamond D' of level
  * k + 1 and each of its two parent diamonds P (the diamonds of its triangles' parents),
  * star(D') lies in the children of star(P): D' touches only the two new vertices of its
  * parents and the ends of the leg between them, and a triangle at such a vertex is a
@@ -54,7 +54,7 @@
  *
  * Where S(D) lies: F(D) is under star(D) (the lemma, by induction along the chain), so is
  * every star(G) of level k + M; the stream walks the subtrees of star(D)'s triangles that
- * may hold a member (sr48_stream.c, s48c_may) with its windows, finds F(D)'s first M + 1
+ * may hold a member (sr48_chord_walk.c, s48c_may) with its windows, finds F(D)'s first M + 1
  * levels from the level-k window's adjacency by the refinement's local neighbour rule
  * (every triangle asked for is under star(D), so in the window), and does not enter a
  * level k + M triangle outside the stars of F(D)'s. Why exact and not an a-priori bound

@@ -77,8 +77,8 @@ int subd_sr48_step(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase
 int subd_sr48_smooth(subd_sr48 *h, uint32_t k, const uint32_t *pnb, uint32_t pbase, uint32_t nold,
                      const sr48_sums *s);
 
-/* Adaptive cuts (sr48_extract.c), shared with the stream (sr48_stream.c): the mode's
- * parameter check (SUBD_OK or SUBD_ERR_PARAM), and the nested-region decision of POINT,
+/* Adaptive cuts (sr48_adapt.c, subd_sr48_extract's adaptation geometry), shared with the
+ * stream (sr48_stream.c): the mode's parameter check (SUBD_OK or SUBD_ERR_PARAM), and the nested-region decision of POINT,
  * RAMP, PLANE and CALLBACK for a diamond of level k < max_level whose region box is (lo, hi)
  * (radius: POINT's, resolved; rlo, rhi: RAMP's bounding box). */
 int subd_sr48_adapt_check_(const subd_sr48_adapt *ad);

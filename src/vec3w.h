@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Wide 3-vectors: differences, dot and cross products of subd_reals that must not lose
  * bits (face normals, tangents, point-triangle distances), written once for both
- * arithmetics. Used by crease.c, sr48_extract.c and loop_limit.c (limit tangents and
+ * arithmetics. Used by crease.c, sr48_adapt.c and loop_limit.c (limit tangents and
  * normals: subd_w3_normalize + subd_w3_cross + subd_w3_unit).
  *
  * subd_wide is int64_t in the Q16.16 build (values in units of 2^-16, exact) and float in

@@ -1,0 +1,357 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming semi-regular 4-8 refinement: the CHORD criterion's walk (paper:
+ * semi-regular-4-8-refinement-box-splines.txt, sections 4 and 6; the criterion, why it nests
+ * and why it is conservative: sr48_chord.c, whose test this file calls; the windows it
+ * walks: sr48_window.c; the private interface: sr48_stream_internal.h). Kept apart from
+ * sr48_chord.c, which subd_sr48_extract shares: this file needs the stream's windows.
+ *
+ *
+ * Chordal cuts (CHORD; the criterion, why it nests and why it is conservative: sr48_chord.c):
+ * the current triangle's diamond D splits iff a triangle of S(D) (the diamonds whose split
+ * forces D's, S48C_M levels down, then the stars of the deepest of them) has a chordal
+ * deviation of subd_sr48_extract's kind above eps. F(D)'s first levels come from the
+ * level-k window's adjacency (s48c_desc); S(D) lies under D's star (in the window), whose
+ * triangles are walked to max_level with the windows of the levels below (s48_chord_walk:
+ * free at the decision; a triangle whose subtree cannot hold a member is skipped,
+ * s48c_may); the current triangle is walked in place, another one after rebuilding the
+ *
+ * The walk's per-level state, the star's keys and F(D)'s first levels are blocks of the
+ * stream's state (s48_state's c* members, sized by sr48_stream.c's layout).
+ */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "sr48_stream_internal.h"
+
+/* CHORD (the criterion and its proof: sr48_chord.c). Rebuilds the windows of levels 0..k
+ * along the path of the level-k triangle with key `key` (T0 * 2^k + its child bits), as
+ * the walk leaves them when that triangle is current (hd[2], hd[5]): the same calls on the
+ * same input, so the same bits. 0 on failure. */
+static int s48c_path(s48_state *s, uint64_t key, uint32_t k)
+{
+    s48_win w, x, c;
+    uint32_t j;
+    if (!subd_s48_build0_(s, (uint32_t)(key >> k))) return 0;
+    for (j = 0; j < k; j++) {
+        uint32_t bit = (uint32_t)(key >> (k - 1u - j)) & 1u;
+        s48_lev(s, j, &w);
+        s48_x(s, &x);
+        s48_lev(s, j + 1u, &c);
+        w.hd[5] = bit + 1u;
+        if (!subd_s48_refine_(s, &w, j, &x) || !subd_s48_crop_(s, &x, 2u * w.hd[2], &c)) return 0;
+        c.hd[2] = c.hd[3u + bit];
+        if (c.hd[2] == S48_OUT) return 0;
+    }
+    s48_lev(s, k, &w);
+    w.hd[5] = 0;
+    return 1;
+}
+
+/* The corners' sources of the walk's node at level j, child `bit` of the node at j - 1
+ * (apex, b0, b1) with new vertex M = 3 + (j - 1): child 0 = (M; apex, b0), 1 = (M; b1, apex). */
+static void s48c_child(s48_state *s, uint32_t j, uint32_t bit)
+{
+    const uint32_t *p = s->csrc + 3u * (j - 1u);
+    uint32_t *c = s->csrc + 3u * j;
+    c[0] = 3u + (j - 1u);
+    c[1] = bit ? p[2] : p[0];
+    c[2] = bit ? p[0] : p[1];
+}
+
+/* CHORD's counting region (the criterion and its proof: sr48_chord.c). The level-(k + d)
+ * triangle (i, p), d <= S48C_M, is window-k triangle i's descendant along the d child bits
+ * of p (the first step the highest bit); its key is key(i) * 2^d + p. Packed: i << 8 | p. */
+
+/* Its neighbour across slot `slot` (0 base, 1 leg 0, 2 leg 1) by the local form of the
+ * refinement's rule (subd_s48_refine_): child 0 has base child 1 of the parent's leg-0
+ * neighbour, leg 0 its sibling, leg 1 child 1 of the parent's base neighbour; child 1 has
+ * base child 0 of the parent's leg-1 neighbour, leg 0 child 0 of the parent's base
+ * neighbour, leg 1 its sibling. 1 found (*oi, *op), 0 the mesh boundary, -1 outside
+ * window k. */
+static int s48c_nbr(const s48_win *w, uint32_t i, uint32_t p, uint32_t d, uint32_t slot, uint32_t *oi,
+                    uint32_t *op)
+{
+    uint32_t push = 0, np = 0, q;
+    for (q = 0; q <= S48C_M; q++) { /* at most d + 1 <= S48C_M + 1 rounds */
+        uint32_t b = p & 1u;
+        if (d == 0u) {
+            uint16_t n = w->tn[3u * i + slot];
+            if (n == S48_BND) return 0;
+            if (n == S48_OUT) return -1;
+            i = n;
+            p = 0;
+            break;
+        }
+        if (b == 0u && slot == 1u) {
+            p |= 1u;
+            break;
+        }
+        if (b == 1u && slot == 2u) {
+            p &= ~1u;
+            break;
+        }
+        push |= (1u - b) << np; /* the answer is that child of the parent's neighbour */
+        np++;
+        slot = b == 0u ? (slot == 0u ? 1u : 0u) : (slot == 0u ? 2u : 0u);
+        p >>= 1;
+        d--;
+    }
+    while (np > 0u) { /* the last parent-level step is the first child bit */
+        np--;
+        p = (p << 1) | ((push >> np) & 1u);
+    }
+    *oi = i;
+    *op = p;
+    return 1;
+}
+
+/* The first entry of level d's descendants (3 words each; at most 2 * 4^d of them). */
+static uint32_t s48c_off(uint32_t d) { return 2u * ((1u << (2u * d)) - 1u) / 3u; }
+
+/* Is `v` (word `w` of the entries: 0 packed, 1 key) in level d's sorted descendants? */
+static int s48c_has(const s48_state *s, uint32_t d, uint64_t v, uint32_t wd)
+{
+    const uint32_t *e = s->cdesc + 3u * s48c_off(d);
+    uint32_t lo = 0, hi = s->cdn[d];
+    while (lo < hi) {
+        uint32_t mid = (lo + hi) / 2u;
+        uint64_t m = wd == 0u ? e[3u * mid] : (((uint64_t)e[3u * mid + 2u] << 32) | e[3u * mid + 1u]);
+        if (m == v) return 1;
+        if (m < v) lo = mid + 1u;
+        else hi = mid;
+    }
+    return 0;
+}
+
+/* The diamonds whose split forces the split of the current triangle t's diamond (t in the
+ * level-k window), level by level down to k + min(S48C_M, levels - 1 - k): level k is t and
+ * its base neighbour; level d + 1 is the children of level d and their base neighbours
+ * (the other triangle of each child's diamond: a diamond of level d + 1 forces both
+ * diamonds its triangles' parents belong to). Each level sorted (by packed form, which is
+ * key order: the window is sorted by key). All of them lie in the subtrees of t's star,
+ * so every neighbour asked for is in the window (sr48_chord.c); 0 if not. */
+static int s48c_desc(s48_state *s, uint32_t k, uint32_t t)
+{
+    s48_win w;
+    uint32_t m = s->levels - 1u - k, d, n, x, b, q;
+    uint16_t nb;
+    s48_lev(s, k, &w);
+    if (m > S48C_M) m = S48C_M;
+    nb = w.tn[3u * t];
+    if (nb == S48_OUT) return 0;
+    for (d = 0; d <= S48C_M; d++) s->cdn[d] = 0;
+    for (d = 0; d <= m; d++) {
+        uint32_t *e = s->cdesc + 3u * s48c_off(d);
+        n = 0;
+        if (d == 0u) {
+            e[0] = t << 8;
+            n = 1;
+            if (s48_local(nb)) e[3u * n++] = (uint32_t)nb << 8;
+        } else {
+            const uint32_t *pe = s->cdesc + 3u * s48c_off(d - 1u);
+            for (x = 0; x < s->cdn[d - 1u]; x++)
+                for (b = 0; b < 2u; b++) {
+                    uint32_t i = pe[3u * x] >> 8, p = ((pe[3u * x] & 0xffu) << 1) | b, oi, op;
+                    int r;
+                    e[3u * n++] = (i << 8) | p;
+                    r = s48c_nbr(&w, i, p, d, 0, &oi, &op);
+                    if (r < 0) return 0;
+                    /* a base neighbour whose parent is of level d - 1's set is a child above;
+                     * base neighbours are a bijection, so no other duplicate */
+                    if (r == 0 || s48c_has(s, d - 1u, (oi << 8) | (op >> 1), 0)) continue;
+                    e[3u * n++] = (oi << 8) | op;
+                }
+        }
+        for (x = 1; x < n; x++) { /* insertion sort by packed form */
+            uint32_t v = e[3u * x];
+            q = x;
+            while (q > 0u && e[3u * (q - 1u)] > v) {
+                e[3u * q] = e[3u * (q - 1u)];
+                q--;
+            }
+            e[3u * q] = v;
+        }
+        for (x = 0; x < n; x++) {
+            uint64_t key = (s48_key(&w, e[3u * x] >> 8) << d) | (e[3u * x] & 0xffu);
+            e[3u * x + 1u] = (uint32_t)key;
+            e[3u * x + 2u] = (uint32_t)(key >> 32);
+        }
+        s->cdn[d] = n;
+    }
+    return 1;
+}
+
+/* Does the walk's node cur (window w of level j >= k) count for the diamond decided at
+ * level k: levels k .. k + S48C_M - 1 the descendant diamonds, level k + S48C_M the star
+ * of the descendant diamonds of that level (a triangle sharing a vertex with one; its
+ * star is in the window), deeper levels through their level k + S48C_M ancestor (the walk
+ * does not enter a subtree that does not count there). */
+static uint32_t s48c_counts(const s48_state *s, uint32_t k, uint32_t j, const s48_win *w, uint32_t cur)
+{
+    uint32_t d = j - k, i, a, b;
+    if (d < S48C_M) return (uint32_t)s48c_has(s, d, s48_key(w, cur), 1u);
+    if (d > S48C_M) return 1u;
+    for (i = 0; i < w->hd[0]; i++) {
+        int touch = 0;
+        for (a = 0; a < 3u; a++)
+            for (b = 0; b < 3u; b++)
+                if (w->tv[3u * i + a] == w->tv[3u * cur + b]) touch = 1;
+        if (touch && s48c_has(s, d, s48_key(w, i), 1u)) return 1u;
+    }
+    return 0u;
+}
+
+/* May the subtree of triangle i of the level-k window (k < levels, after s48c_desc) hold a
+ * counting node? Yes if i is an ancestor of a descendant of the deepest level kept (they
+ * cover the shallower ones) or, when that level is k + S48C_M, shares a vertex with one (a
+ * triangle sharing a vertex with a level k + S48C_M descendant has its level-k ancestor
+ * equal to or sharing a vertex with the descendant's: a shared vertex inside a level-k
+ * edge makes the two ancestors the triangles of that edge). */
+static int s48c_may(const s48_state *s, const s48_win *w, uint32_t k, uint32_t i)
+{
+    uint32_t m = s->levels - 1u - k, x, a, b, q, prev = 0xffffffffu;
+    const uint32_t *e;
+    if (m > S48C_M) m = S48C_M;
+    e = s->cdesc + 3u * s48c_off(m);
+    for (x = 0; x < s->cdn[m]; x++) {
+        q = e[3u * x] >> 8; /* sorted: equal ancestors are consecutive */
+        if (q == prev) continue;
+        prev = q;
+        if (q == i) return 1;
+        if (m < S48C_M) continue;
+        for (a = 0; a < 3u; a++)
+            for (b = 0; b < 3u; b++)
+                if (w->tv[3u * q + a] == w->tv[3u * i + b]) return 1;
+    }
+    return 0;
+}
+
+/* The vertex created by the walk's node at level i (its finest position known) against
+ * the interpolant of every node from the walked triangle (level k) down to it that counts
+ * (s48c_counts). */
+static int s48c_test(const s48_state *s, uint32_t k, uint32_t i)
+{
+    const subd_real *p = s->cpos + 3u * (3u + i);
+    uint32_t a, l, q;
+    for (a = k; a <= i; a++) {
+        subd_real c[9];
+        uint32_t path = 0;
+        if (!s->cfl[a]) continue;
+        for (q = 0; q < 9u; q++) c[q] = s->cpos[3u * s->csrc[3u * a + q / 3u] + q % 3u];
+        for (l = a; l < i; l++) path |= (s->cch[l] - 1u) << (l - a);
+        if (subd_sr48_chord_beyond_(c, path, i - a, p, s->ad.eps)) return 1;
+    }
+    return 0;
+}
+
+/* Is some counting node of triangle ts's subtree (ts of the level-k window, k < levels)
+ * beyond eps? Walks the subtree depth first (pre-order, child 0 first) with the windows of
+ * levels k+1.. and X (free while level k decides): each node's window is refined, then
+ * cropped to its children as the stream does, so every position is the stream's (exact
+ * by the ring rule, checked); a node of level k + S48C_M that does not count is not
+ * entered. The walked triangle's corners get their finest positions by descents
+ * (subd_s48_finest_), so does a node's new vertex (from the cropped window of its children,
+ * where it is their apex; at level max_level - 1 it is read from the refined window, the
+ * finest level); each is then tested against the interpolants of the counting nodes on
+ * its path from ts, whose corners are all known by then. 1 beyond, 0 within, -1 failure. */
+static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
+{
+    const uint32_t last = s->levels - 1u;
+    s48_win w, x, c;
+    uint32_t j = k, q;
+    s48_lev(s, k, &w);
+    for (q = 0; q < 3u; q++)
+        if (!subd_s48_finest_(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
+    s->ccur[k] = ts;
+    s->cch[k] = 0;
+    for (q = 0; q < 3u; q++) s->csrc[3u * k + q] = q;
+    for (;;) {
+        uint32_t cur = s->ccur[j], v;
+        subd_real *pm = s->cpos + 3u * (3u + j);
+        s48_lev(s, j, &w);
+        s->cfl[j] = s48c_counts(s, k, j, &w, cur);
+        if (j - k != S48C_M || s->cfl[j]) {
+            s48_x(s, &x);
+            if (!subd_s48_refine_(s, &w, j, &x)) return -1;
+            v = x.tv[6u * cur]; /* the node's new vertex */
+            if (j < last) {
+                uint64_t id = s48_vid(&x, v);
+                s48_lev(s, j + 1u, &c);
+                if (!subd_s48_crop_(s, &x, 2u * cur, &c) || c.hd[3] == S48_OUT) return -1;
+                /* its finest position: a descent from child 0 (blocks > j + 1 and X; child
+                 * 0's walk rebuilds them from block j + 1) */
+                if (!subd_s48_finest_(s, j + 1u, c.hd[3], id, pm)) return -1;
+                s->cch[j] = 1u; /* in child 0 while its new vertex is tested */
+                if (s48c_test(s, k, j)) return 1;
+                j++;
+                s->ccur[j] = c.hd[3];
+                s->cch[j] = 0;
+                s48c_child(s, j, 0);
+                continue;
+            }
+            /* a leaf node: its new vertex is at the finest level in X */
+            if (!(x.vf[v] & S48_EXACT)) return -1;
+            for (q = 0; q < 3u; q++) pm[q] = x.vp[3u * v + q];
+            if (s48c_test(s, k, j)) return 1;
+        }
+        /* up to the deepest node whose child 1 is not walked yet */
+        for (;;) {
+            if (j == k) return 0;
+            j--;
+            if (s->cch[j] == 1u) break;
+        }
+        s->cch[j] = 2u;
+        s48_lev(s, j + 1u, &c); /* cropped to both children of node j, untouched below */
+        j++;
+        s->ccur[j] = c.hd[4];
+        s->cch[j] = 0;
+        s48c_child(s, j, 1u);
+        if (s->ccur[j] == S48_OUT) return -1;
+    }
+}
+
+/* CHORD's decision for the current triangle t of the level-k window: is some counting node
+ * (s48c_counts) beyond eps? The counting region lies in the subtrees of the star of t's
+ * diamond (the window triangles that share a vertex with it; all of them are in the
+ * window, see s48_wants), so those are walked: t in place, another one after rebuilding
+ * the windows 0..k along its path, and the current path is rebuilt after. 1 split, 0
+ * leaf, -1 failure. */
+int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
+{
+    s48_win w;
+    uint32_t vs[4], nv = 3, i, j, q, ns = 1, moved = 0;
+    uint64_t cur;
+    int r = 0;
+    uint16_t nb;
+    if (!s48c_desc(s, k, t)) return -1;
+    s48_lev(s, k, &w);
+    nb = w.tn[3u * t];
+    cur = s48_key(&w, t);
+    for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
+    if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
+    s->ckey[0] = (uint32_t)cur;
+    s->ckey[1] = (uint32_t)(cur >> 32);
+    for (i = 0; i < w.hd[0]; i++) {
+        int touch = 0;
+        if (i == t) continue;
+        for (j = 0; j < 3u; j++)
+            for (q = 0; q < nv; q++)
+                if (w.tv[3u * i + j] == vs[q]) touch = 1;
+        if (!touch || !s48c_may(s, &w, k, i)) continue;
+        s->ckey[2u * ns] = w.key[2u * i];
+        s->ckey[2u * ns + 1u] = w.key[2u * i + 1u];
+        ns++;
+    }
+    for (i = 0; i < ns && r == 0; i++) {
+        uint64_t key = ((uint64_t)s->ckey[2u * i + 1u] << 32) | s->ckey[2u * i];
+        if (i == 0u) {
+            r = s48_chord_walk(s, k, t);
+        } else {
+            moved = 1;
+            if (!s48c_path(s, key, k)) return -1;
+            s48_lev(s, k, &w);
+            r = s48_chord_walk(s, k, w.hd[2]);
+        }
+        if (r < 0) return -1;
+    }
+    if (moved && !s48c_path(s, cur, k)) return -1;
+    return r;
+}

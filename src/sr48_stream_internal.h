@@ -1,0 +1,155 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming semi-regular 4-8 refinement, private interface between its four files (paper:
+ * semi-regular-4-8-refinement-box-splines.txt, sections 4 and 6; the method, the exactness
+ * argument and the bit-identity with subd_sr48_build are in sr48_window.c's header):
+ *   sr48_window.c      the per-level window: the base mesh's adjacency, level 0's window,
+ *                      the refinement of a window as a whole (with smoothing), the crop to
+ *                      the rings of a set of triangles, the descent to the finest level;
+ *   sr48_tile.c        the breadth-first uniform tile of the last SUBD_SR48_STREAM_TILE_LEVELS
+ *                      levels and the emission of a window triangle;
+ *   sr48_chord_walk.c  CHORD's walk over the deeper windows and its forcing diamonds (the
+ *                      criterion and its proof: sr48_chord.c);
+ *   sr48_stream.c      the driver: capacities and layout, plan, begin, the depth-first step.
+ * One window layout and one state block (s48_state) serve all four. The window's accessors
+ * are static inline here: they are on the hot path of every refinement and walk. Names
+ * shared across the files are subd_s48_*_ (unique in src/: the library is also one
+ * translation unit, make amalgamate). */
+#ifndef SUBD_SR48_STREAM_INTERNAL_H
+#define SUBD_SR48_STREAM_INTERNAL_H
+#include "subd.h"
+#include "real_avg.h"
+#include "stream_internal.h"
+#include "sr48_internal.h"
+
+#define S48_OUT 0xffffu /* neighbour outside the window                                  */
+#define S48_BND 0xfffeu /* the mesh boundary                                             */
+#define S48_EXACT 0x1u  /* vertex flag: position final and bit-exact                     */
+#define S48_INC 0x2u    /* smoothing scratch: some input missing                          */
+#define S48_FAR 0xffu   /* crop: vertex not reached                                       */
+#define S48_RINGS SUBD_SR48_STREAM_RINGS_
+#define S48C_M SUBD_SR48_STREAM_CHORD_EXACT_ /* CHORD: levels of exact descendants (sr48_chord.c) */
+#define S48C_ND SUBD_SR48_STREAM_CHORD_DESC_  /* CHORD: their capacity, triangles              */
+
+/* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt. */
+typedef struct s48_win {
+    uint32_t *hd;
+    uint16_t *tv, *tn;
+    uint32_t *key; /* lo, hi per triangle */
+    subd_real *vp;
+    uint32_t *vid; /* lo, hi per vertex   */
+    uint8_t *vf;
+    subd_real *vl; /* adaptive modes: L (the level-0 interpolant) per vertex, else NULL */
+} s48_win;
+
+/* Window vertex sv of src as vertex dv of dst: position, id, flags and (adaptive) L. */
+static inline void s48_vcopy(const s48_win *dst, uint32_t dv, const s48_win *src, uint32_t sv)
+{
+    dst->vp[3u * dv] = src->vp[3u * sv];
+    dst->vp[3u * dv + 1u] = src->vp[3u * sv + 1u];
+    dst->vp[3u * dv + 2u] = src->vp[3u * sv + 2u];
+    dst->vid[2u * dv] = src->vid[2u * sv];
+    dst->vid[2u * dv + 1u] = src->vid[2u * sv + 1u];
+    dst->vf[dv] = src->vf[sv];
+    if (dst->vl) {
+        dst->vl[3u * dv] = src->vl[3u * sv];
+        dst->vl[3u * dv + 1u] = src->vl[3u * sv + 1u];
+        dst->vl[3u * dv + 2u] = src->vl[3u * sv + 2u];
+    }
+}
+
+typedef struct s48_state {
+    subd_stream_impl impl; /* first: stream.c's view */
+    subd_stream_ring ring;
+    const subd_sr48 *base;
+    uint32_t levels, smooth, wt, wv, xv, nv0, n0;
+    uint32_t at, av;   /* the tile window's capacities (uniform)                           */
+    uint32_t tm;       /* the tile's levels m (uniform; 1: no tile, s48_tile_levels)       */
+    uint32_t tcur, tend; /* uniform: X's triangles still to emit (tcur < tend: a tile is out) */
+    uint32_t t0, k, built, err;
+    uint8_t *lev;      /* level windows 0..L-1 (uniform: 0..L-m), blocks of lev_size       */
+    uint8_t *ablk, *xblk; /* the tile window A (uniform), the refined window X          */
+    uint32_t lev_size;
+    uint32_t off[8], aoff[8], xoff[8];
+    subd_sr48_adapt ad;
+    uint32_t adapt;    /* POINT, RAMP, PLANE, CALLBACK: the nested-region cut (subd_sr48_adapt_mode) */
+    uint32_t boxed;    /* RAMP, POINT's default radius: 0 until the adaptation box is found */
+    subd_real blo[3], bhi[3], radius; /* the adaptation box A; POINT's radius (resolved)  */
+    subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
+    uint32_t *lgv, *lgvt; /* the level-0 window's vertices and a triangle at each, kept     */
+    subd_sum *sum;     /* 3 per vertex (reserved as 8 bytes each in both arithmetics)     */
+    uint32_t *cnt;
+    uint8_t *dist;
+    uint16_t *mtab, *tmap, *vmap;
+    uint32_t *gt, *gv, *gvt; /* level-0 window: triangles, vertices, a triangle at each     */
+    /* CHORD (sr48_chord.c's criterion, subd_s48_chord_wants_): per walk level the triangle, the
+     * child state, the corners' sources (0..2 the walked triangle's corners, 3 + j the vertex
+     * level j's node creates), whether it counts; the star's keys; the decided diamond's
+     * descendants per level (count, then packed window triangle + path, key lo, key hi) */
+    uint32_t *ccur, *cch, *csrc, *cfl, *ckey, *cdn, *cdesc;
+    subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
+} s48_state;
+
+/* Window access (hot: every level of every walk), shared by the four files. */
+static inline void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
+{
+    w->hd = (uint32_t *)(void *)(blk + off[0]);
+    w->tv = (uint16_t *)(void *)(blk + off[1]);
+    w->tn = (uint16_t *)(void *)(blk + off[2]);
+    w->key = (uint32_t *)(void *)(blk + off[3]);
+    w->vp = (subd_real *)(void *)(blk + off[4]);
+    w->vid = (uint32_t *)(void *)(blk + off[5]);
+    w->vf = blk + off[6];
+    w->vl = off[7] != 0u ? (subd_real *)(void *)(blk + off[7]) : 0;
+}
+static inline void s48_lev(const s48_state *s, uint32_t k, s48_win *w)
+{
+    s48_win_at(s->lev + k * s->lev_size, s->off, w);
+}
+static inline void s48_x(const s48_state *s, s48_win *w) { s48_win_at(s->xblk, s->xoff, w); }
+
+static inline uint64_t s48_key(const s48_win *w, uint32_t t)
+{
+    return ((uint64_t)w->key[2u * t + 1u] << 32) | w->key[2u * t];
+}
+static inline uint64_t s48_vid(const s48_win *w, uint32_t v)
+{
+    return ((uint64_t)w->vid[2u * v + 1u] << 32) | w->vid[2u * v];
+}
+/* Is window neighbour n a window triangle (not OUT, not BND)? */
+static inline int s48_local(uint16_t n) { return n < S48_BND; }
+
+#ifdef S48_DBG /* capacity statistics of a debug build (sr48_window.c) */
+extern uint32_t s48_dbg[40];
+#endif
+
+/* The base mesh (sr48_window.c): SUBD_OK when b is a usable subd_sr48_base, and the largest
+ * number of triangles around a base vertex. */
+int subd_s48_base_check_(const subd_sr48 *b);
+uint32_t subd_s48_valence_(const subd_sr48 *b);
+
+/* Windows (sr48_window.c): level 0's window around base triangle t0; window p of level k
+ * refined into X; X cropped to the rings of its triangles c0 .. c0 + n - 1 into w (capacity
+ * ct, cv), or to the current triangle's two children into a level window. 0 on failure. */
+int subd_s48_build0_(s48_state *s, uint32_t t0);
+int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x);
+int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv);
+int subd_s48_crop_(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w);
+
+/* Descents (sr48_window.c): the finest position of vertex `id`, a corner of triangle t of
+ * the level-k window; L of the level-0 window of t0; the adaptation box. 0 on failure. */
+int subd_s48_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out);
+int subd_s48_level0_lin_(s48_state *s, uint32_t t0);
+int subd_s48_adapt_box_(s48_state *s);
+
+/* Emission and the uniform tile (sr48_tile.c): window w's triangle t as a stream triangle;
+ * the tile of the current triangle t of the level-k window w; its triangles not handed out
+ * yet. 0 on failure (a corner not exact). */
+int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream_q *q, int *stop);
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t);
+int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop);
+
+/* CHORD's decision for the current triangle t of the level-k window (sr48_chord_walk.c):
+ * 1 split, 0 leaf, -1 failure. */
+int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t);
+
+#endif

@@ -1,0 +1,91 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming semi-regular 4-8 refinement: the breadth-first uniform tile and the emission of
+ * a window triangle (paper: semi-regular-4-8-refinement-box-splines.txt, sections 4 and 6;
+ * the window and its exactness argument: sr48_window.c; the private interface:
+ * sr48_stream_internal.h).
+ *
+ * Uniform tiles: the last m = SUBD_SR48_STREAM_TILE_LEVELS levels (all when L <= m) are not
+ * walked one triangle at a time: the current level L-m triangle's window is refined m times
+ * breadth first, each time cropped to the rings of the set of its descendants at that level
+ * (contiguous in the refined window, which is sorted by key), and its 2^m descendants are
+ * emitted from the last refined window in key order (subd_s48_tile_). The tile window contains
+ * every window the depth-first walk would crop for one of the descendants (rings of a union
+ * are the union of the rings), so the exactness argument of sr48_window.c carries over, and the
+ * triangles and their order are unchanged. The level-0 window of a uniform stream holds the
+ * rings of both children of a hybrid triangle (base triangles 2H, 2H + 1) and serves both.
+ *
+ * The tile window A and the refined window X are blocks of the stream's state; the level
+ * windows above L - m are unused while a tile is handed out. A tile's triangles leave in
+ * batches as large as the caller's buffer (subd_s48_tile_emit_), the rest at the next step.
+ */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "sr48_stream_internal.h"
+
+/* Window w's triangle t as a stream triangle; 0 when a corner is not exact. *stop: the push
+ * form's sink value (non-zero: stop the stream with it). */
+int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream_q *q, int *stop)
+{
+    subd_tri *o;
+    uint32_t j, i;
+    for (j = 0; j < 3u; j++)
+        if (!(w->vf[w->tv[3u * t + j]] & S48_EXACT)) return 0;
+    o = (subd_tri *)subd_stream_q_put(q);
+    if (!o) return 0;
+    for (j = 0; j < 3u; j++) {
+        uint32_t v = w->tv[3u * t + j];
+        for (i = 0; i < 3u; i++) {
+            o->pos[j][i] = w->vp[3u * v + i];
+            o->normal[j][i] = 0;
+        }
+        o->id[j] = ((uint64_t)w->vid[2u * v + 1u] << 32) | w->vid[2u * v];
+    }
+    o->face = s->t0;
+    o->level = s->levels;
+    *stop = subd_stream_q_commit(q);
+    return 1;
+}
+
+/* Uniform tiles: the current triangle t of the level-k window w (k = L - m) refined
+ * breadth first down to max_level: m - 1 times refined into X and cropped into the tile
+ * window A to the rings of t's descendants (contiguous in X: X is sorted by key), then
+ * refined once more into X, whose t's 2^m descendants s->tcur .. s->tend - 1 are emitted
+ * in key order by subd_s48_tile_emit_. A contains every window the depth-first walk would crop
+ * for one descendant (a union of rings), so every emitted corner is exact (checked). */
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
+{
+    s48_win x, a;
+    const s48_win *p = w;
+    uint32_t j, lo = t, n = 1;
+    s48_x(s, &x);
+    s48_win_at(s->ablk, s->aoff, &a);
+    for (j = 0; j < s->tm; j++) {
+        if (!subd_s48_refine_(s, p, s->k + j, &x)) return 0;
+        lo *= 2u;
+        n *= 2u;
+        if (j + 1u == s->tm) break;
+        if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return 0;
+#ifdef S48_DBG
+        if (a.hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = a.hd[0];
+        if (a.hd[1] > s48_dbg[2u * j + 1u]) s48_dbg[2u * j + 1u] = a.hd[1];
+#endif
+        lo = a.hd[3];
+        p = &a;
+    }
+    s->tcur = lo;
+    s->tend = lo + n;
+    return 1;
+}
+
+/* The tile's triangles not handed out yet, until the caller's buffer is full or the sink
+ * stops. 0 when a corner is not exact. */
+int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
+{
+    s48_win x;
+    s48_x(s, &x);
+    while (s->tcur < s->tend && !subd_stream_q_full(q)) {
+        if (!subd_s48_emit_(s, &x, s->tcur, q, stop)) return 0;
+        s->tcur++;
+        if (*stop) return 1;
+    }
+    return 1;
+}

@@ -1,0 +1,568 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming semi-regular 4-8 refinement: the per-level window (paper:
+ * semi-regular-4-8-refinement-box-splines.txt, sections 4 and 6; the private interface and
+ * the other files of the stream: sr48_stream_internal.h). What it keeps: the local control
+ * net of one level around the current triangle, refined, smoothed and cropped level by
+ * level, so that every position it hands out is subd_sr48_build's, bit for bit.
+ *
+ * Method. Every level-0 triangle T0 of the base mesh (subd_sr48_base) is refined depth
+ * first, child 0 before child 1, so triangles come out in the hierarchy's index order at
+ * the last level. Level k keeps a window: the level-k triangles within S48_RINGS vertex
+ * rings of the current triangle's children (a triangle is in ring r when it shares a
+ * vertex with ring r-1), each with its three vertices, its base, leg-0 and leg-1
+ * neighbours as window indices (or OUT of the window, or BND: the mesh boundary) and its
+ * global key (T0 * 2^k + the child path = its index within level k of the hierarchy). The
+ * window of level k+1 is the window of level k refined as a whole (every diamond split,
+ * subd_sr48_step's rule, the children's neighbours by the local form of its rule:
+ * for t = (c; a, b) with base neighbour N, leg neighbours L0 (c-a) and L1 (b-c), child 0
+ * = (m; c, a) has base child 1 of L0, leg 0 child 1 of t, leg 1 child 1 of N; child 1 =
+ * (m; b, c) has base child 0 of L1, leg 0 child 0 of N, leg 1 child 0 of t), smoothed
+ * after an even level (subd_sr48_smooth's rule), then cropped to the rings of the next
+ * current triangle. The last level is not stored: the two children of the current level
+ * L-1 triangle are emitted from the refined (uncropped) window: one internal batch.
+ *
+ * Exactness. A vertex's position is exact when every input of its rule was: a new vertex
+ * needs its diamond's two apexes (both triangles in the window; a boundary half-diamond
+ * its base ends), an older vertex smoothed after an even level needs its whole fan in the
+ * window (no window triangle at it has an OUT neighbour across an edge at it) and every
+ * new neighbour exact. Each window vertex carries that flag; an emitted corner that is not
+ * exact would be a bug of the ring count (the window too small for the dependency cone),
+ * reported as SUBD_ERR_TOO_BIG rather than emitted (test_sr48_stream checks it never
+ * happens, by comparing every position with subd_sr48_build's).
+ *
+ * Bit-identity with subd_sr48_build: a new vertex is the same subd_mid of the same two
+ * positions (the apex of the diamond's lower-index triangle first); a smoothed vertex sums
+ * its new neighbours in the order of the diamonds' lower triangle index, which is the
+ * window's order (windows are kept sorted by key: children of sorted parents are sorted,
+ * and cropping filters in order). Q16.16 sums are exact anyway.
+ *
+ * Ids (closed form): a level-0 vertex keeps its index; the vertex created at level k >= 1
+ * by splitting the diamond whose lower-key triangle has key K at level k-1 gets
+ * V0 + T0n (2^(k-1) - 1) + K (V0, T0n: the base's vertex and triangle counts).
+ *
+ * Descents (adaptive cuts, CHORD): the finest position of a vertex is found by refining and
+ * cropping towards it down to max_level, where it is exact by the ring rule
+ * (subd_s48_finest_); L of the level-0 window (subd_s48_level0_lin_) and the adaptation box
+ * (subd_s48_adapt_box_) are descents of the level-0 vertices.
+ */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "layout.h"
+#include "mesh_internal.h"
+#include "real_avg.h"
+#include "sr48_stream_internal.h"
+
+/* ------------------------------------------------------------------------------------ */
+/* The base mesh                                                                          */
+
+/* Neighbour of level-0 triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c). */
+static uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
+{
+    uint32_t g;
+    if (slot == 0u) return b->tri_base_nb[t];
+    if ((t & 1u) == 0u && slot == 1u) return t + 1u;
+    if ((t & 1u) == 1u && slot == 2u) return t - 1u;
+    g = b->hyb_base_nb[t >> 1];
+    if (g == SUBD_NONE) return SUBD_NONE;
+    return (t & 1u) == 0u ? 2u * g + 1u : 2u * g;
+}
+
+/* The two ends of slot s of a triangle with vertices v = (c, a, b). */
+static void s48_slot_ends(const uint32_t *v, uint32_t s, uint32_t *p, uint32_t *q)
+{
+    *p = s == 0u ? v[1] : s == 1u ? v[0] : v[2];
+    *q = s == 0u ? v[2] : s == 1u ? v[1] : v[0];
+}
+
+static void s48_tri_verts(const subd_sr48 *b, uint32_t t, uint32_t *v)
+{
+    v[0] = b->tri_vert[3u * t];
+    v[1] = b->tri_vert[3u * t + 1u];
+    v[2] = b->tri_vert[3u * t + 2u];
+}
+
+/* The base mesh's rules (checked once, before any walk): level 0 only, vertices in range
+ * and distinct, every neighbour in range, pointing back across the same edge reversed. */
+int subd_s48_base_check_(const subd_sr48 *b)
+{
+    uint32_t n0, t, s, v[3], u[3];
+    if (!b || b->steps != 0u || !b->pos || !b->tri_vert || !b->tri_base_nb || !b->hyb_base_nb) return SUBD_ERR_PARAM;
+    if ((b->flags & ~SUBD_SR48_NO_SMOOTH) != 0u) return SUBD_ERR_PARAM;
+    n0 = b->level_tri[1];
+    if (b->level_tri[0] != 0u || n0 != b->num_tris || (n0 & 1u) != 0u || b->num_verts != b->level_verts[0])
+        return SUBD_ERR_PARAM;
+    if (n0 == 0u) return SUBD_ERR_EMPTY;
+    if (n0 >= 0x0fffffffu || b->num_verts >= 0x0fffffffu) return SUBD_ERR_TOO_BIG;
+    for (t = 0; t < n0 / 2u; t++)
+        if (b->hyb_base_nb[t] != SUBD_NONE && b->hyb_base_nb[t] >= n0 / 2u) return SUBD_ERR_PARAM;
+    for (t = 0; t < n0; t++) {
+        s48_tri_verts(b, t, v);
+        if (v[0] >= b->num_verts || v[1] >= b->num_verts || v[2] >= b->num_verts || v[0] == v[1] || v[1] == v[2] ||
+            v[0] == v[2])
+            return SUBD_ERR_PARAM;
+        if (b->tri_base_nb[t] != SUBD_NONE && b->tri_base_nb[t] >= n0) return SUBD_ERR_PARAM;
+    }
+    for (t = 0; t < n0; t++) {
+        s48_tri_verts(b, t, v);
+        for (s = 0; s < 3u; s++) {
+            uint32_t n = s48_base_nbr(b, t, s), p, q, r, ok = 0;
+            if (n == SUBD_NONE) continue;
+            s48_slot_ends(v, s, &p, &q);
+            s48_tri_verts(b, n, u);
+            for (r = 0; r < 3u; r++) {
+                uint32_t p2, q2;
+                s48_slot_ends(u, r, &p2, &q2);
+                if (p2 == q && q2 == p && s48_base_nbr(b, n, r) == t) ok = 1;
+            }
+            if (!ok) return SUBD_ERR_PARAM;
+        }
+    }
+    return SUBD_OK;
+}
+
+static uint32_t s48_pos_of(const uint32_t *v, uint32_t x) { return v[0] == x ? 0u : v[1] == x ? 1u : 2u; }
+
+/* The two slots at corner position p: (c: 1, 2), (a: 1, 0), (b: 0, 2). */
+static uint32_t s48_slot_at(uint32_t p, uint32_t j)
+{
+    static const uint8_t tab[3][2] = {{1u, 2u}, {1u, 0u}, {0u, 2u}};
+    return tab[p][j];
+}
+
+/* Walks the fan of vertex x of the base from triangle t (which holds x): every triangle
+ * around x, each once, into out (when not NULL, at most cap); returns the count, or
+ * UINT32_MAX beyond cap. Around an interior vertex it comes back to t; at a boundary vertex
+ * it walks the other way from t too. */
+static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+{
+    uint32_t n = 0, dir, lim = b->level_tri[1] + 1u;
+    if (out && cap) out[n] = t;
+    n++;
+    for (dir = 0; dir < 2u; dir++) {
+        uint32_t cur = t, v[3], p, q, slot, i;
+        s48_tri_verts(b, cur, v);
+        slot = s48_slot_at(s48_pos_of(v, x), dir);
+        for (i = 0; i < lim; i++) {
+            uint32_t nx = s48_base_nbr(b, cur, slot), w;
+            s48_slot_ends(v, slot, &p, &q);
+            w = p == x ? q : p; /* the edge's other end */
+            if (nx == SUBD_NONE) break;
+            if (nx == t) return n; /* around: interior vertex */
+            if (n >= cap) return UINT32_MAX;
+            if (out) out[n] = nx;
+            n++;
+            cur = nx;
+            s48_tri_verts(b, cur, v);
+            {
+                uint32_t px = s48_pos_of(v, x), s0 = s48_slot_at(px, 0), s1 = s48_slot_at(px, 1), e0, e1;
+                s48_slot_ends(v, s0, &e0, &e1);
+                slot = (e0 == w || e1 == w) ? s1 : s0; /* leave by the other edge at x */
+            }
+        }
+        if (i == lim) return UINT32_MAX;
+    }
+    return n;
+}
+
+/* Largest number of triangles around a base vertex. */
+uint32_t subd_s48_valence_(const subd_sr48 *b)
+{
+    uint32_t t, j, best = 0;
+    for (t = 0; t < b->level_tri[1]; t++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t n = s48_fan(b, b->tri_vert[3u * t + j], t, 0, 0xffffu);
+            if (n > best) best = n;
+        }
+    return best;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Windows                                                                                */
+
+static void s48_set_key(s48_win *w, uint32_t t, uint64_t k)
+{
+    w->key[2u * t] = (uint32_t)k;
+    w->key[2u * t + 1u] = (uint32_t)(k >> 32);
+}
+static void s48_set_id(s48_win *w, uint32_t v, uint64_t id)
+{
+    w->vid[2u * v] = (uint32_t)id;
+    w->vid[2u * v + 1u] = (uint32_t)(id >> 32);
+}
+
+/* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
+ * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
+ * by index; local vertices and neighbours. 0 when a capacity is exceeded. */
+int subd_s48_build0_(s48_state *s, uint32_t t0)
+{
+    const subd_sr48 *b = s->base;
+    uint32_t nt = 0, nv = 0, i, j, q, u, p;
+    s48_win w;
+    s48_lev(s, 0, &w);
+    /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
+     * that one window serves both (s48_step) */
+    for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t vx = b->tri_vert[3u * p + j], seen = 0;
+            for (u = 0; u < nv; u++)
+                if (s->gv[u] == vx) seen = 1;
+            if (seen) continue;
+            s->gv[nv] = vx;
+            s->gvt[nv] = p;
+            s->dist[nv++] = 0;
+        }
+    for (q = 0; q < nv; q++) {
+        uint32_t x = s->gv[q], nf, f;
+        if (s->dist[q] >= S48_RINGS) continue;
+        /* the whole fan at the free tail of gt, then merged (deduplicated): a triangle
+         * appended at nt can only overwrite fan entries already read (nt grows by at most
+         * one per entry read, and nt + nf <= wt) */
+        nf = s48_fan(b, x, s->gvt[q], s->gt + nt, s->wt - nt);
+        if (nf == UINT32_MAX) return 0;
+        for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
+        for (f = 0; f < nf; f++) {
+            uint32_t tt = s->gt[s->wt - nf + f], dup = 0;
+            for (i = 0; i < nt; i++)
+                if (s->gt[i] == tt) dup = 1;
+            if (dup) continue;
+            for (j = 0; j < 3u; j++) {
+                uint32_t vx = b->tri_vert[3u * tt + j], seen = 0;
+                for (u = 0; u < nv; u++)
+                    if (s->gv[u] == vx) seen = 1;
+                if (seen) continue;
+                if (nv >= s->wv) return 0;
+                s->gv[nv] = vx;
+                s->gvt[nv] = tt;
+                s->dist[nv++] = (uint8_t)(s->dist[q] + 1u);
+            }
+            s->gt[nt++] = tt;
+        }
+    }
+    /* sort the triangles (insertion sort: at most wt of them) */
+    for (i = 1; i < nt; i++) {
+        uint32_t x = s->gt[i];
+        j = i;
+        while (j > 0u && s->gt[j - 1u] > x) {
+            s->gt[j] = s->gt[j - 1u];
+            j--;
+        }
+        s->gt[j] = x;
+    }
+    for (i = 0; i < nt; i++) {
+        uint32_t tt = s->gt[i];
+        for (j = 0; j < 3u; j++) {
+            uint32_t vx = b->tri_vert[3u * tt + j], nb, lo, hi;
+            u = 0;
+            while (s->gv[u] != vx) u++; /* present: added with the triangle */
+            w.tv[3u * i + j] = (uint16_t)u;
+            nb = s48_base_nbr(b, tt, j);
+            if (nb == SUBD_NONE) {
+                w.tn[3u * i + j] = S48_BND;
+                continue;
+            }
+            lo = 0;
+            hi = nt;
+            while (lo < hi) {
+                uint32_t mid = (lo + hi) / 2u;
+                if (s->gt[mid] < nb) lo = mid + 1u;
+                else hi = mid;
+            }
+            w.tn[3u * i + j] = (lo < nt && s->gt[lo] == nb) ? (uint16_t)lo : S48_OUT;
+        }
+        s48_set_key(&w, i, tt);
+        if (tt == t0) w.hd[2] = i;
+        if (tt == (t0 | 1u)) w.hd[4] = i;
+    }
+    for (i = 0; i < nv; i++) {
+        for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
+        s48_set_id(&w, i, s->gv[i]);
+        w.vf[i] = S48_EXACT;
+        if (w.vl)
+            for (j = 0; j < 3u; j++) w.vl[3u * i + j] = s->l0[3u * i + j];
+    }
+    w.hd[0] = nt;
+    w.hd[1] = nv;
+    return 1;
+}
+
+#ifdef S48_DBG
+uint32_t s48_dbg[40];
+#endif
+
+static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32_t m, int boundary_ok)
+{
+    uint32_t q;
+    if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
+    for (q = 0; q < 3u; q++) s->sum[3u * v + q] = subd_sum_add(s->sum[3u * v + q], x->vp[3u * m + q]);
+    s->cnt[v]++;
+    if (!(x->vf[m] & S48_EXACT)) s->dist[v] |= S48_INC;
+}
+
+/* Refines window p (level k) as a whole into X (level k+1), smoothing after an even level.
+ * 0 on a capacity or range failure (s->err says which). */
+int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
+{
+    const uint32_t nt = p->hd[0], nvp = p->hd[1];
+    const uint64_t off = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << k) - 1u);
+    uint32_t i, j, nv = nvp, ovf = 0;
+#ifdef S48_DBG
+    s48_dbg[30] += nt; s48_dbg[31]++;
+#endif
+    for (i = 0; i < nvp; i++) s48_vcopy(x, i, p, i);
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = p->tv + 3u * i;
+        uint16_t nb = p->tn[3u * i], m;
+        uint64_t key = s48_key(p, i);
+        if (s48_local(nb) && nb < i) {
+            m = s->mtab[nb];
+        } else {
+            uint32_t e0 = tv[1], e1 = tv[2], exact;
+            if (nv >= s->xv) return 0;
+            m = (uint16_t)nv++;
+            if (s48_local(nb) && s->smooth) {
+                e0 = tv[0];
+                e1 = p->tv[3u * nb];
+            }
+            exact = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT);
+            for (j = 0; j < 3u; j++) x->vp[3u * m + j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
+            x->vf[m] = (uint8_t)(exact ? S48_EXACT : 0u);
+            if (x->vl) /* L: the base midpoint, whatever the smoothing */
+                for (j = 0; j < 3u; j++) x->vl[3u * m + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
+            s48_set_id(x, m, off + key);
+        }
+        s->mtab[i] = m;
+        x->tv[6u * i] = m;
+        x->tv[6u * i + 1u] = tv[0];
+        x->tv[6u * i + 2u] = tv[1];
+        x->tv[6u * i + 3u] = m;
+        x->tv[6u * i + 4u] = tv[2];
+        x->tv[6u * i + 5u] = tv[0];
+        s48_set_key(x, 2u * i, 2u * key);
+        s48_set_key(x, 2u * i + 1u, 2u * key + 1u);
+    }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
+    }
+    for (i = 0; i < nt; i++) {
+        uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
+        uint16_t *c0 = x->tn + 6u * i, *c1 = c0 + 3;
+        c0[0] = s48_local(l0) ? (uint16_t)(2u * l0 + 1u) : l0;
+        c0[1] = (uint16_t)(2u * i + 1u);
+        c0[2] = s48_local(nb) ? (uint16_t)(2u * nb + 1u) : nb;
+        c1[0] = s48_local(l1) ? (uint16_t)(2u * l1) : l1;
+        c1[1] = s48_local(nb) ? (uint16_t)(2u * nb) : nb;
+        c1[2] = (uint16_t)(2u * i);
+    }
+    x->hd[0] = 2u * nt;
+    x->hd[1] = nv;
+    if (s->smooth && ((k + 1u) & 1u) == 0u) {
+        for (i = 0; i < nvp; i++) {
+            s->cnt[i] = 0;
+            s->dist[i] = 0;
+            for (j = 0; j < 3u; j++) s->sum[3u * i + j] = 0;
+        }
+        for (i = 0; i < nt; i++) {
+            const uint16_t *tv = p->tv + 3u * i;
+            uint32_t sl;
+            if (p->tn[3u * i] == S48_BND) {
+                s->cnt[tv[1]] = 0x80000000u;
+                s->cnt[tv[2]] = 0x80000000u;
+            }
+            for (sl = 0; sl < 3u; sl++)
+                if (p->tn[3u * i + sl] == S48_OUT) { /* the edge's ends miss part of their fan */
+                    s->dist[sl == 0u ? tv[1] : sl == 1u ? tv[0] : tv[2]] |= S48_INC;
+                    s->dist[sl == 0u ? tv[2] : sl == 1u ? tv[1] : tv[0]] |= S48_INC;
+                }
+        }
+        for (i = 0; i < nt; i++) {
+            const uint16_t *tv = p->tv + 3u * i;
+            uint16_t nb = p->tn[3u * i];
+            uint32_t m = s->mtab[i];
+            if (nb == S48_BND) {
+                s48_scatter(s, x, tv[1], m, 1);
+                s48_scatter(s, x, tv[2], m, 1);
+                s48_scatter(s, x, tv[0], m, 0);
+            } else if (nb == S48_OUT) {
+                s->dist[tv[0]] |= S48_INC;
+            } else if (i < nb) {
+                s48_scatter(s, x, tv[1], m, 0);
+                s48_scatter(s, x, tv[2], m, 0);
+                s48_scatter(s, x, tv[0], m, 0);
+                s48_scatter(s, x, p->tv[3u * nb], m, 0);
+            }
+        }
+        for (i = 0; i < nvp; i++) {
+            uint32_t n = s->cnt[i] & ~0x80000000u;
+            if (n == 0u || (s->dist[i] & S48_INC)) {
+                x->vf[i] = 0;
+                continue;
+            }
+            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s->sum[3u * i + j], n, &ovf);
+            x->vf[i] = S48_EXACT;
+        }
+        if (ovf) {
+            s->err = (uint32_t)(-SUBD_ERR_RANGE);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Crops X to the triangles within S48_RINGS vertex rings of X's triangles c0 .. c0 + n - 1
+ * (the current triangle's descendants: contiguous, X being sorted by key) into window w of
+ * capacity ct triangles, cv vertices, in order; w's hd[3] is c0's index in w, hd[4] c0 + 1's. */
+int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv)
+{
+    const uint32_t nt = x->hd[0], nv = x->hd[1];
+    uint32_t i, j, r, kt = 0, kv = 0;
+#ifdef S48_DBG
+    s48_dbg[32] += nt; s48_dbg[33]++;
+#endif
+    for (i = 0; i < nv; i++) s->dist[i] = S48_FAR;
+    for (j = 0; j < 3u * n; j++) s->dist[x->tv[3u * c0 + j]] = 0;
+    for (r = 1; r < S48_RINGS; r++)
+        for (i = 0; i < nt; i++) {
+            const uint16_t *tv = x->tv + 3u * i;
+            uint32_t md = s->dist[tv[0]];
+            if (s->dist[tv[1]] < md) md = s->dist[tv[1]];
+            if (s->dist[tv[2]] < md) md = s->dist[tv[2]];
+            if (md + 1u > r) continue;
+            for (j = 0; j < 3u; j++)
+                if (s->dist[tv[j]] > r) s->dist[tv[j]] = (uint8_t)r;
+        }
+    for (i = 0; i < nv; i++) s->vmap[i] = S48_OUT;
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i;
+        uint32_t md = s->dist[tv[0]];
+        if (s->dist[tv[1]] < md) md = s->dist[tv[1]];
+        if (s->dist[tv[2]] < md) md = s->dist[tv[2]];
+        if (md + 1u > S48_RINGS) {
+            s->tmap[i] = S48_OUT;
+            continue;
+        }
+        if (kt >= ct) return 0;
+        s->tmap[i] = (uint16_t)kt++;
+        for (j = 0; j < 3u; j++)
+            if (s->vmap[tv[j]] == S48_OUT) {
+                if (kv >= cv) return 0;
+                s->vmap[tv[j]] = (uint16_t)kv++;
+            }
+    }
+    for (i = 0; i < nv; i++) {
+        uint16_t v = s->vmap[i];
+        if (v == S48_OUT) continue;
+        s48_vcopy(w, v, x, i);
+    }
+    for (i = 0; i < nt; i++) {
+        uint16_t t = s->tmap[i];
+        if (t == S48_OUT) continue;
+        for (j = 0; j < 3u; j++) {
+            uint16_t nb = x->tn[3u * i + j];
+            w->tv[3u * t + j] = s->vmap[x->tv[3u * i + j]];
+            w->tn[3u * t + j] = s48_local(nb) ? s->tmap[nb] : nb;
+        }
+        w->key[2u * t] = x->key[2u * i];
+        w->key[2u * t + 1u] = x->key[2u * i + 1u];
+    }
+    w->hd[0] = kt;
+    w->hd[1] = kv;
+    w->hd[3] = s->tmap[c0];
+    w->hd[4] = s->tmap[c0 + 1u];
+    return 1;
+}
+
+/* subd_s48_crop_n_ to the current triangle's two children c0, c0 + 1, into a level window. */
+int subd_s48_crop_(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w)
+{
+    return subd_s48_crop_n_(s, x, c0, 2u, w, s->wt, s->wv);
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Adaptive cuts (POINT, RAMP, PLANE, CALLBACK): sr48_adapt.c's nested region, top down. */
+
+/* The finest (max_level) position of the vertex with id `id`, a corner of triangle t of the
+ * level-k window (k < levels): the windows k+1.. are refined and cropped along children
+ * that keep the vertex as a corner (a corner of a triangle is a corner of one of its
+ * children), and its position is read from the last refined window, where it is exact by
+ * the ring rule (checked). Uses the blocks of levels > k and X only. 0 on failure. */
+int subd_s48_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
+{
+    s48_win w, x, c;
+    uint32_t j, cur = t, q;
+    for (j = k; j < s->levels; j++) {
+        uint32_t ch;
+        s48_lev(s, j, &w);
+        s48_x(s, &x);
+        /* child 0 = (m; apex, b0) keeps apex and b0, child 1 = (m; b1, apex) keeps b1 */
+        ch = (s48_vid(&w, w.tv[3u * cur + 2u]) == id) ? 1u : 0u;
+        if (!subd_s48_refine_(s, &w, j, &x)) return 0;
+        if (j + 1u == s->levels) {
+            for (q = 0; q < 3u; q++) {
+                uint32_t v = x.tv[3u * (2u * cur + ch) + q];
+                if (s48_vid(&x, v) != id) continue;
+                if (!(x.vf[v] & S48_EXACT)) return 0;
+                for (j = 0; j < 3u; j++) out[j] = x.vp[3u * v + j];
+                return 1;
+            }
+            return 0;
+        }
+        s48_lev(s, j + 1u, &c);
+        if (!subd_s48_crop_(s, &x, 2u * cur, &c)) return 0;
+        cur = c.hd[3u + ch];
+        if (cur == S48_OUT) return 0;
+    }
+    return 0;
+}
+
+/* L of the level-0 window of t0 (s->l0): each vertex's finest position, by a descent from
+ * a base triangle at it. Rebuilds level 0 for every vertex; the caller rebuilds t0's. */
+int subd_s48_level0_lin_(s48_state *s, uint32_t t0)
+{
+    s48_win w;
+    uint32_t nv, i, j;
+    for (i = 0; i < 3u * s->wv; i++) s->l0[i] = 0; /* the descents' L: defined, unused */
+    if (!subd_s48_build0_(s, t0)) return 0;
+    s48_lev(s, 0, &w);
+    nv = w.hd[1];
+    for (i = 0; i < nv; i++) {
+        s->lgv[i] = s->gv[i];
+        s->lgvt[i] = s->gvt[i];
+    }
+    for (i = 0; i < nv; i++) {
+        if (s->levels == 0u) {
+            for (j = 0; j < 3u; j++) s->l0[3u * i + j] = s->base->pos[3u * s->lgv[i] + j];
+            continue;
+        }
+        if (!subd_s48_build0_(s, s->lgvt[i])) return 0;
+        if (!subd_s48_finest_(s, 0, w.hd[2], s->lgv[i], s->l0 + 3u * i)) return 0;
+    }
+    return 1;
+}
+
+/* The adaptation box A (RAMP, POINT's default radius; subd_sr48_adapt_mode): the finest
+ * positions of the level-0 triangles' corners, each vertex by one descent from the
+ * lowest-index triangle of its fan (so once); then POINT's radius. levels > 0. */
+int subd_s48_adapt_box_(s48_state *s)
+{
+    const subd_sr48 *b = s->base;
+    uint32_t t, j, i, zero = 0;
+    s48_win w;
+    for (i = 0; i < 3u * s->wv; i++) s->l0[i] = 0; /* the descents' L: defined, unused */
+    subd_sr48_box_grow_(b->pos, &zero, 0, s->blo, s->bhi, 1);
+    for (t = 0; t < s->n0; t++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t v = b->tri_vert[3u * t + j], nf = s48_fan(b, v, t, s->gt, s->wt), low = 1;
+            subd_real p[3];
+            if (nf == UINT32_MAX) return 0;
+            for (i = 0; i < nf; i++)
+                if (s->gt[i] < t) low = 0;
+            if (!low) continue;
+            if (!subd_s48_build0_(s, t)) return 0;
+            s48_lev(s, 0, &w);
+            if (!subd_s48_finest_(s, 0, w.hd[2], v, p)) return 0;
+            subd_sr48_box_grow_(p, &zero, 1, s->blo, s->bhi, 0);
+        }
+    if (s->ad.mode == SUBD_SR48_ADAPT_POINT && s->radius == 0)
+        s->radius = subd_sr48_default_radius_(s->blo, s->bhi, s->levels);
+    return 1;
+}

@@ -680,7 +680,7 @@ fi
 usage_case_pre loop --limit test/data/icosahedron.obj -o "$T/x.obj"
 grep -q -- '--limit needs --stream' "$T/err"; check $? "loop --limit without --stream: exit 1, says so"
 usage_case_pre convert --stream test/data/icosahedron.obj -o "$T/x.obj"
-grep -q -- "--stream applies to 'loop', 'semireg48', 'adapt' and 'alpha' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, semireg48's, adapt's and alpha's"
+grep -q -- "--stream applies to 'loop', 'alpha' and 'sr48' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, alpha's and sr48's"
 usage_case_pre limit --stream --limit test/data/icosahedron.obj -o "$T/x.obj"; check $? "limit --stream: exit 1"
 for e in png xyz; do
     usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.$e"

@@ -238,7 +238,7 @@ static int alpha_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
     const tool_opts *o = &r->o;
     uint32_t fmt = o->out_format == HOST_FMT_XYZ ? SUBD_PATH_XYZ : SUBD_PATH_GCODE, l, k, m, emitted = 0;
     uint32_t stream_arena = 0; /* the largest polyline's stream plan (the points not counted) */
-    subd_real chord = o->adapt_mode == SUBD_SR48_ADAPT_CHORD ? host_real_from_double(o->adapt_val[0]) : 0;
+    subd_real chord = o->has_chord ? host_real_from_double(o->chord) : 0;
     subd_real feed = o->feed > 0.0 ? host_real_from_double(o->feed) : 0;
     int32_t *tags = NULL;
     alpha_tagging t;
@@ -352,7 +352,7 @@ done:
     snprintf(r->extra.json, sizeof r->extra.json,
              "\"order\":%lu,\"geometry\":\"curves\",\"stream\":true,\"chord\":%g,\"points\":%lu,\"checksum\":\"%08lx\","
              "\"stream_arena\":%lu",
-             (unsigned long)o->alpha.order, o->adapt_mode == SUBD_SR48_ADAPT_CHORD ? o->adapt_val[0] : 0.0,
+             (unsigned long)o->alpha.order, o->has_chord ? o->chord : 0.0,
              (unsigned long)emitted, (unsigned long)hash, (unsigned long)stream_arena);
     return st;
 }
@@ -436,7 +436,7 @@ static int alpha_check(const command *cmd, tool_opts *o)
 {
     (void)cmd;
     if (o->limit) return tool_usage_error("--limit applies to 'loop --stream' only");
-    if (!o->stream && o->adapt_mode == SUBD_SR48_ADAPT_CHORD) return tool_usage_error("alpha: --chord needs --stream");
+    if (!o->stream && o->has_chord) return tool_usage_error("alpha: --chord needs --stream");
     if (!o->stream && o->feed > 0.0) return tool_usage_error("alpha: --feed needs --stream (and G-code output)");
     if (o->stream && o->output && host_format_of(o->output) != HOST_FMT_XYZ &&
         host_format_of(o->output) != HOST_FMT_GCODE)

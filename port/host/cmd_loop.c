@@ -29,11 +29,11 @@ static subd_loop_adapt_opts loop_adapt_opts_of(const tool_opts *o)
     memset(&ao, 0, sizeof ao);
     ao.loop = loop_opts_of(o);
     ao.mode = SUBD_LOOP_ADAPT_CHORD;
-    ao.chord = host_real_from_double(o->adapt_val[0]);
+    ao.chord = host_real_from_double(o->chord);
     return ao;
 }
 
-static int loop_chord(const tool_opts *o) { return o->adapt_mode == SUBD_SR48_ADAPT_CHORD; }
+static int loop_chord(const tool_opts *o) { return o->has_chord; }
 
 static int loop_plan(const subd_mesh *in, const tool_opts *o, uint32_t *bytes, subd_diag *d)
 {

@@ -41,7 +41,7 @@ static subd_sr48_adapt sr48_adapt_of(const tool_opts *o)
     }
     ad.radius = host_real_from_double(o->radius);
     ad.axis = o->adapt_axis;
-    ad.eps = host_real_from_double(o->adapt_val[0]);
+    ad.eps = host_real_from_double(o->chord);
     return ad;
 }
 
@@ -217,8 +217,8 @@ static int set_adapt_mode(const opt_ctx *c)
 {
     tool_opts *o = c->o;
     const char *val = c->val;
-    if (o->adapt_mode != SUBD_SR48_ADAPT_UNIFORM)
-        return tool_usage_error("give one adaptation mode (--point, --ramp, --plane or --chord)");
+    if (o->mode_given) return tool_usage_error("give one adaptation mode (--point, --ramp, --plane or --chord)");
+    o->mode_given = 1;
     if (strcmp(c->name, "--point") == 0) {
         if (tool_parse_doubles(val, 3, o->adapt_val)) return tool_usage_error("bad point '%s' (expected X,Y,Z)", val);
         o->adapt_mode = SUBD_SR48_ADAPT_POINT;
@@ -267,6 +267,7 @@ static int sr48_check(const command *cmd, tool_opts *o)
 static int sr48_finish(const command *cmd, tool_opts *o)
 {
     (void)cmd;
+    if (o->has_chord) o->adapt_mode = SUBD_SR48_ADAPT_CHORD; /* the shared --chord is a mode here */
     if (!o->has_levels && o->adapt_mode != SUBD_SR48_ADAPT_UNIFORM) o->levels = SR48_MODE_LEVELS;
     if (o->radius > 0.0 && o->adapt_mode != SUBD_SR48_ADAPT_POINT) return tool_usage_error("--radius goes with --point");
     return EXIT_OK;
@@ -275,7 +276,7 @@ static int sr48_finish(const command *cmd, tool_opts *o)
 /* adapt (deprecated): a mode is required. */
 static int adapt_finish(const command *cmd, tool_opts *o)
 {
-    if (o->adapt_mode == SUBD_SR48_ADAPT_UNIFORM)
+    if (o->adapt_mode == SUBD_SR48_ADAPT_UNIFORM && !o->has_chord)
         return tool_usage_error("'%s' needs an adaptation mode (--point, --ramp, --plane or --chord)", cmd->name);
     return sr48_finish(cmd, o);
 }

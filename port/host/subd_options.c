@@ -180,11 +180,12 @@ static int set_tags(const opt_ctx *c)
 static int set_chord(const opt_ctx *c)
 {
     tool_opts *o = c->o;
-    if (o->adapt_mode != SUBD_SR48_ADAPT_UNIFORM)
+    if (o->mode_given)
         return tool_usage_error("give one adaptation mode (--point, --ramp, --plane or --chord)");
-    if (tool_parse_double(c->val, 0.0, 1e30, &o->adapt_val[0]) || !(o->adapt_val[0] > 0.0))
+    if (tool_parse_double(c->val, 0.0, 1e30, &o->chord) || !(o->chord > 0.0))
         return tool_usage_error("bad chordal tolerance '%s' (a positive number, input units)", c->val);
-    o->adapt_mode = SUBD_SR48_ADAPT_CHORD;
+    o->has_chord = 1;
+    o->mode_given = 1;
     return EXIT_OK;
 }
 

@@ -68,7 +68,10 @@ typedef struct tool_opts {
     uint32_t max_iter;           /* --max-iter K (pia)                                    */
     subd_pia_method method;      /* --method paper|fast (pia)                             */
     subd_alpha_opts alpha;       /* --order, --kernel, --alpha, --stiffness (alpha)       */
-    subd_sr48_adapt_mode adapt_mode;  /* sr48: --point, --ramp, --plane or --chord; --chord (loop, alpha) */
+    subd_sr48_adapt_mode adapt_mode;  /* sr48: --point, --ramp, --plane (--chord: set by sr48's finish) */
+    int has_chord;               /* --chord EPS given (sr48, alpha --stream, loop --stream --limit) */
+    int mode_given;              /* a mode option (--point, --ramp, --plane, --chord): one at most */
+    double chord;                /* its EPS, input units                                  */
     double adapt_val[6];         /* the point (and plane normal), or the chord tolerance  */
     uint32_t adapt_axis;         /* --ramp x|y|z                                          */
     double radius;               /* --radius R (sr48 --point)                             */

@@ -4,6 +4,8 @@
  *   subd_main.c      main, the common path (read, tag, plan, run, write, report)
  *   tool_error.c     error messages, their exit statuses and the failure JSON (tool_error.h:
  *                    includes no other tool header, so there is no include circle)
+ *   tool_parse.c     option values' parsers and the description builder (a leaf too: the
+ *                    scheme modules use it, not the parser, which reaches them by the table)
  *   subd_options.c   the shared options: parsing argv and the --help text, both from the
  *                    option rows (the shared table and the rows each scheme module owns)
  *   subd_commands.c  the command table: the plain commands (info, convert, render) and the
@@ -33,6 +35,7 @@
 #include "render.h"
 #include "progress.h"
 #include "tool_error.h"
+#include "tool_parse.h"
 
 #if SUBD_FIXED
 #define ARITHMETIC "q16.16"
@@ -54,12 +57,14 @@ typedef struct tool_opts {
     const char *with_input; /* --with-input FILE: drawn over the picture (render.h)        */
     int no_labels;        /* --no-labels: no captions in the picture                      */
     int quiet;            /* --quiet: no progress line, no informational notes on stderr  */
-    /* scheme options */
-    const char *boundary_name;   /* --boundary, interpreted by the command               */
+    /* scheme options: the shared ones (subd_options.c) and those of the scheme modules,
+     * each read by the modules named */
+    const char *boundary_name;   /* --boundary, interpreted by the command's finish       */
     subd_loop_boundary boundary; /* loop/limit/pia: paper (default) | bspline             */
-    subd_quasi48_boundary q48_boundary; /* quasi48: fixed (default) | smooth                  */
-    int no_smooth;               /* --no-smooth (quasi48): refinement only                */
-    int tag_boundary;            /* --tag-boundary: tag boundary edges as creases first   */
+    subd_quasi48_boundary q48_boundary; /* quasi48: fixed (default) | smooth | normal         */
+    int no_smooth;               /* --no-smooth (quasi48, sr48): refinement only          */
+    int tag_boundary;            /* --tag-boundary (quasi48): boundary edges tagged as creases
+                                  * by the common path, with --crease-angle and --tags    */
     int has_crease_angle;
     double crease_deg;           /* --crease-angle DEG: tag sharper edges as creases      */
     const char *tags;            /* --tags FILE: crease edges, corner and fixed vertices  */
@@ -72,7 +77,7 @@ typedef struct tool_opts {
     int has_chord;               /* --chord EPS given (sr48, alpha --stream, loop --stream --limit) */
     int mode_given;              /* a mode option (--point, --ramp, --plane, --chord): one at most */
     double chord;                /* its EPS, input units                                  */
-    double adapt_val[6];         /* the point (and plane normal), or the chord tolerance  */
+    double adapt_val[6];         /* sr48: the point (and plane normal)                    */
     uint32_t adapt_axis;         /* --ramp x|y|z                                          */
     double radius;               /* --radius R (sr48 --point)                             */
     int stream;                  /* --stream: the command's stream (command.stream)        */
@@ -82,14 +87,14 @@ typedef struct tool_opts {
 } tool_opts;
 
 /* Scheme options, as bits: each command lists the ones it accepts. */
-#define OPT_BOUNDARY 0x01u
+#define OPT_BOUNDARY 0x01u /* --boundary (its value checked by the command's finish) */
 #define OPT_CREASE 0x02u
 #define OPT_NORMALS 0x04u
 #define OPT_TOL 0x08u
 #define OPT_MAX_ITER 0x10u
 #define OPT_METHOD 0x20u
-#define OPT_Q48 0x40u /* --tag-boundary, --boundary fixed|smooth */
-#define OPT_ALPHA 0x80u /* --order, --kernel, --alpha, --stiffness */
+#define OPT_Q48 0x40u /* --tag-boundary */
+#define OPT_ALPHA 0x80u /* --order, --kernel, --alpha, --stiffness, --feed */
 #define OPT_NO_SMOOTH 0x100u /* --no-smooth */
 #define OPT_ADAPT 0x200u /* --point, --ramp, --plane, --radius */
 #define OPT_STREAM 0x400u /* --stream, --limit */
@@ -213,13 +218,6 @@ extern const command tool_cmd_loop, tool_cmd_limit, tool_cmd_pia, tool_cmd_quasi
  * EXIT_OK or EXIT_USAGE (message printed); -h/--help prints the help and exits. */
 int tool_parse_args(const command *cmd, int argc, char **argv, tool_opts *o);
 void tool_usage(FILE *f);
-/* Value parsers for the option rows: 0, or -1 when s is not one. */
-int tool_parse_u32(const char *s, uint32_t max, uint32_t *out);
-int tool_parse_double(const char *s, double lo, double hi, double *out);
-/* n comma-separated numbers (coordinates within +-1e6). */
-int tool_parse_doubles(const char *s, int n, double *out);
-/* Appends printf text to buf[k..n) (truncating), returns the new k: for describe. */
-size_t tool_describe_add(char *buf, size_t k, size_t n, const char *fmt, ...);
 
 /* Reports and output (subd_info.c, subd_write.c). Each returns an EXIT_* status. */
 int tool_info_report(FILE *f, const tool_run *r);

@@ -290,9 +290,14 @@ static size_t sr48_describe(const tool_opts *o, char *buf, size_t k, size_t n)
     return k;
 }
 
+/* What the three spellings share: the functions, the options, the level range. */
+#define SR48_DESCRIPTOR                                                                              \
+    .canonical = "sr48", .scheme = "sr48", .max_levels = SUBD_SR48_MAX_STEPS, .opts = sr48_options,    \
+    .num_opts = sizeof sr48_options / sizeof sr48_options[0], .check = sr48_check, .plan = sr48_plan, \
+    .run = sr48_run, .stream = sr48_stream, .describe = sr48_describe
+
 const command tool_cmd_sr48 = {
     .name = "sr48",
-    .canonical = "sr48",
     .synopsis = "[-l N] [MODE] INPUT -o OUTPUT",
     .summary = "semi-regular 4-8 refinement with Zwart-Powell box-spline\n"
                "smoothing, N binary steps after pre-processing (default 2;\n"
@@ -301,60 +306,34 @@ const command tool_cmd_sr48 = {
                "[--radius R] | --ramp x|y|z | --plane X,Y,Z,NX,NY,NZ |\n"
                "--chord EPS; --no-smooth; --stream: one triangle at a time",
     .flags = CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0,
-    .scheme = "sr48",
     .default_levels = 2,
-    .max_levels = SUBD_SR48_MAX_STEPS,
     .options = OPT_NO_SMOOTH | OPT_ADAPT | OPT_CHORD | OPT_STREAM,
-    .opts = sr48_options,
-    .num_opts = sizeof sr48_options / sizeof sr48_options[0],
-    .check = sr48_check,
     .finish = sr48_finish,
-    .plan = sr48_plan,
-    .run = sr48_run,
-    .stream = sr48_stream,
-    .describe = sr48_describe,
+    SR48_DESCRIPTOR,
 };
 
 /* Deprecated until 1.0: `semireg48 ...` = `sr48 ...` without a mode. */
 const command tool_cmd_semireg48 = {
     .name = "semireg48",
-    .canonical = "sr48",
     .synopsis = "(deprecated)",
     .summary = "the 0.5 name of 'sr48' without a MODE, kept until 1.0",
     .flags = CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0 | CMD_DEPRECATED,
-    .scheme = "sr48",
     .default_levels = 2,
-    .max_levels = SUBD_SR48_MAX_STEPS,
     .options = OPT_NO_SMOOTH | OPT_STREAM,
-    .opts = sr48_options,
-    .num_opts = sizeof sr48_options / sizeof sr48_options[0],
-    .check = sr48_check,
     .finish = sr48_finish,
-    .plan = sr48_plan,
-    .run = sr48_run,
-    .stream = sr48_stream,
-    .describe = sr48_describe,
+    SR48_DESCRIPTOR,
 };
 
 /* Deprecated until 1.0: `adapt -l MAX MODE ...` = `sr48 -l MAX MODE ...` (MODE required,
  * -l default 6). */
 const command tool_cmd_adapt = {
     .name = "adapt",
-    .canonical = "sr48",
     .synopsis = "(deprecated)",
     .summary = "the 0.5 name of 'sr48' with a MODE (required; -l default 6),\n"
                "kept until 1.0",
     .flags = CMD_OUTPUT_REQUIRED | CMD_LEVELS | CMD_LEVEL0 | CMD_DEPRECATED,
-    .scheme = "sr48",
     .default_levels = SR48_MODE_LEVELS,
-    .max_levels = SUBD_SR48_MAX_STEPS,
     .options = OPT_NO_SMOOTH | OPT_ADAPT | OPT_CHORD | OPT_STREAM,
-    .opts = sr48_options,
-    .num_opts = sizeof sr48_options / sizeof sr48_options[0],
-    .check = sr48_check,
     .finish = adapt_finish,
-    .plan = sr48_plan,
-    .run = sr48_run,
-    .stream = sr48_stream,
-    .describe = sr48_describe,
+    SR48_DESCRIPTOR,
 };

@@ -49,7 +49,7 @@ HOST_FLAGS_host-gnu := -DSUBD_HOST=1 -DSUBD_FIXED=0 -O2 $(GNU_MARCH)
 # Runs host-gnu's tests only where the CPU can execute them.
 GNU_RUNS := [ -z "$(GNU_MARCH)" ] || { grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; } 2>/dev/null
 HOST_TEST_PORT := port/host/test_port.c port/print.c port/host/png.c port/host/render.c port/host/render_text.c
-TOOL_PORT      := port/host/subd_main.c port/host/tool_error.c port/host/subd_options.c port/host/subd_commands.c port/host/subd_info.c port/host/subd_write.c port/host/subd_stream.c port/host/progress.c port/host/fileio.c port/host/png.c port/host/render.c port/host/render_text.c
+TOOL_PORT      := port/host/subd_main.c port/host/tool_error.c port/host/tool_parse.c port/host/subd_options.c port/host/subd_commands.c port/host/cmd_loop.c port/host/cmd_pia.c port/host/cmd_quasi48.c port/host/cmd_alpha.c port/host/cmd_sr48.c port/host/subd_info.c port/host/subd_write.c port/host/subd_stream.c port/host/progress.c port/host/fileio.c port/host/png.c port/host/render.c port/host/render_text.c
 
 define host_variant
 $(B)/$(1)/src/%.o: src/%.c $(MK) | dirs

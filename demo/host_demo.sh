@@ -50,15 +50,15 @@ run alpha_doo_sabin_spot alpha -l 2 test/data/spot_control_mesh.obj
 run alpha_s3_cube alpha --order 3 -l 3 test/data/cube_quad.obj
 
 echo "-- semi-regular 4-8 refinement and variable resolution (the paper's figures 17-20)"
-run semireg48_hexfan_preprocessed semireg48 -l 0 --no-smooth test/data/hexfan.obj $top
-run semireg48_hexfan_4steps_refine semireg48 -l 4 --no-smooth test/data/hexfan.obj $top
-run semireg48_hexfan_4steps_smooth semireg48 -l 4 test/data/hexfan.obj $top
-run semireg48_pentagon_prism_4steps semireg48 -l 4 demo/pentagon_prism.obj
-run semireg48_spot_2steps semireg48 -l 2 demo/spot_triangulated.obj
-run adapt_torus_point adapt -l 6 --point 1.4,0,0 demo/torus_12x6.obj --pitch 60
-run adapt_torus_ramp adapt -l 6 --ramp x demo/torus_12x6.obj --pitch 60
-run adapt_torus_plane adapt -l 6 --plane 0,0,0,1,0,0 demo/torus_12x6.obj --pitch 60
-run adapt_spot_chord adapt -l 6 --chord 0.002 demo/spot_triangulated.obj --edges --size 1200x700
+run semireg48_hexfan_preprocessed sr48 -l 0 --no-smooth test/data/hexfan.obj $top
+run semireg48_hexfan_4steps_refine sr48 -l 4 --no-smooth test/data/hexfan.obj $top
+run semireg48_hexfan_4steps_smooth sr48 -l 4 test/data/hexfan.obj $top
+run semireg48_pentagon_prism_4steps sr48 -l 4 demo/pentagon_prism.obj
+run semireg48_spot_2steps sr48 -l 2 demo/spot_triangulated.obj
+run adapt_torus_point sr48 -l 6 --point 1.4,0,0 demo/torus_12x6.obj --pitch 60
+run adapt_torus_ramp sr48 -l 6 --ramp x demo/torus_12x6.obj --pitch 60
+run adapt_torus_plane sr48 -l 6 --plane 0,0,0,1,0,0 demo/torus_12x6.obj --pitch 60
+run adapt_spot_chord sr48 -l 6 --chord 0.002 demo/spot_triangulated.obj --edges --size 1200x700
 
 echo "-- alpha tags (semi-stationary paper, section 3, figure 4(d))"
 # one cube corner (vertex 1, at (-1,-1,-1)) tagged alpha = 9 rad, the rest 0;
@@ -78,8 +78,8 @@ for v in "m4f-float subd" "m3-fixed subd-fixed"; do
     set -- $v
     log=$out/$1.log
     [ -f "$log" ] || { echo "no $log (run make demo): not compared"; continue; }
-    hc=$(sr48_host_sum "$bin/$2" adapt --stream --chord 0.01 -l 9 test/data/icosahedron.obj)
-    hu=$(sr48_host_sum "$bin/$2" semireg48 --stream -l 6 test/data/icosahedron.obj)
+    hc=$(sr48_host_sum "$bin/$2" sr48 --stream --chord 0.01 -l 9 test/data/icosahedron.obj)
+    hu=$(sr48_host_sum "$bin/$2" sr48 --stream -l 6 test/data/icosahedron.obj)
     dc=$(sr48_device_sum "$log" "chordal stream, eps 0.01") du=$(sr48_device_sum "$log" "uniform stream, 6 binary")
     echo "$1: chordal checksum device $dc, host $hc; uniform device $du, host $hu"
     if [ -z "$hc" ] || [ "$hc" != "$dc" ] || [ -z "$hu" ] || [ "$hu" != "$du" ]; then

@@ -7,10 +7,11 @@
  * sized by the reader's plan call -> apply tags (--tag-boundary, --crease-angle, --tags through
  * the library's tag-file parser) -> plan and run the command's operation (scheme commands)
  * -> write OUTPUT by extension (.obj/.off via the library writers, .png via the renderer) ->
- * human report and/or --stats JSON. loop --stream replaces run and write by subd_loop_stream into
- * a sink that writes OUTPUT (subd_stream.c). A scheme command is one row in the command table
- * (subd_commands.c) with a plan and a run function; everything else (options, arena budget,
- * errors, exit codes, output, stats) is shared. subd_tool.h says which file owns what.
+ * human report and/or --stats JSON. --stream replaces run and write by the command's stream
+ * into a sink that writes OUTPUT (subd_stream.c for triangles). A scheme command is one
+ * descriptor (subd_tool.h: command) in its module (cmd_*.c) with plan, run and stream
+ * functions; everything else (options, arena budget, errors, exit codes, output, stats) is
+ * shared and names no scheme. subd_tool.h says which file owns what.
  *
  * Exit status: 0 ok, 1 usage, 2 bad input, 3 resource limit, 4 output not writable, 5 pia
  * did not reach --tol (output written). With --stats a failure still prints one JSON object.
@@ -85,32 +86,17 @@ static void progress_phase_file(const char *verb, const char *path)
 }
 
 /* The command with the options that change its result, e.g. "alpha -l 5 --kernel cos
- * --alpha 1/4": the progress phase and the picture's caption. */
+ * --alpha 1/4": the progress phase and the picture's caption. The scheme's one name (a
+ * deprecated spelling describes itself by the new one), -l, the scheme's own options
+ * (command.describe), --tags. */
 static void describe_command(const tool_run *r, char *buf, size_t n)
 {
-    static const char *const kernel[] = {"bspline", "cos", "poly", "cosh"};
-    static const char *const adapt[] = {"", "--point", "--ramp", "--plane", "", "--chord"};
     const tool_opts *o = &r->o;
     const command *cmd = r->cmd;
-    size_t k = 0;
-#define ADD(...) (k += (size_t)snprintf(buf + k, k < n ? n - k : 0u, __VA_ARGS__), k = k < n ? k : n)
-    ADD("%s", cmd->name);
-    if (cmd->flags & CMD_LEVELS) ADD(" -l %lu", (unsigned long)o->levels);
-    if (o->stream) ADD(" --stream%s", o->limit ? " --limit" : "");
-    if (o->no_smooth) ADD(" --no-smooth");
-    if ((o->given & OPT_TOL) && (cmd->options & OPT_TOL)) ADD(" --tol %g", o->tol);
-    if ((cmd->options & OPT_BOUNDARY) && o->boundary == SUBD_LOOP_BOUNDARY_BSPLINE) ADD(" --boundary bspline");
-    if (o->has_crease_angle) ADD(" --crease-angle %g", o->crease_deg);
-    if (cmd->options & OPT_ALPHA) {
-        if (o->alpha.order != 2u) ADD(" --order %lu", (unsigned long)o->alpha.order);
-        if (o->alpha.kernel != SUBD_ALPHA_BSPLINE && (unsigned)o->alpha.kernel < 4u)
-            ADD(" --kernel %s", kernel[o->alpha.kernel]);
-        if (o->alpha.kernel != SUBD_ALPHA_BSPLINE)
-            ADD(" --alpha %ld/%ld", (long)o->alpha.alpha_num, (long)o->alpha.alpha_den);
-    }
-    if ((cmd->options & OPT_ADAPT) && (unsigned)o->adapt_mode < 6u) ADD(" %s", adapt[o->adapt_mode]);
-    if (o->tags) ADD(" --tags %s", base_name(o->tags)); /* tags change the result: say so */
-#undef ADD
+    size_t k = tool_describe_add(buf, 0, n, "%s", cmd->canonical);
+    if (cmd->flags & CMD_LEVELS) k = tool_describe_add(buf, k, n, " -l %lu", (unsigned long)o->levels);
+    if (cmd->describe) k = cmd->describe(o, buf, k, n);
+    if (o->tags) k = tool_describe_add(buf, k, n, " --tags %s", base_name(o->tags)); /* tags change the result */
 }
 
 /* "642 vertices, 1280 faces" or, for polylines, "129 points, 1 curve". */
@@ -165,6 +151,11 @@ static void picture_captions(tool_run *r)
 
 /* ------------------------------------------------------------------------------------ */
 /* The common path                                                                        */
+
+static int tool_scheme_error(const tool_run *r, int st, subd_diag *d)
+{
+    return tool_input_error(r->o.input, r->in.format, &r->in.mesh, st, d, r->o.has_budget, r->o.budget);
+}
 
 static int run_command(tool_run *r)
 {
@@ -231,9 +222,9 @@ static int run_command(tool_run *r)
             a = &r->work;
         }
         if (r->o.stream) {
-            /* loop --stream: the triangles go straight to OUTPUT's sink (subd_stream.c),
-             * which also times the library call */
-            st = strcmp(cmd->name, "alpha") == 0 ? tool_alpha_stream_run(r, a, &d) : tool_stream_run(r, a, &d);
+            /* --stream: the triangles (points) go straight to OUTPUT (subd_stream.c for
+             * triangles), and the stream times its library calls */
+            st = cmd->stream(r, a, &d);
             if (st > 0) return st;
         } else {
             t0 = host_now_ns();
@@ -260,13 +251,11 @@ static int run_command(tool_run *r)
         if (st != EXIT_OK) return st;
     }
     if (r->o.stats) tool_print_stats(stdout, r);
-    if (r->extra.not_converged) {
+    if (r->extra.warning[0]) {
         progress_pause();
-        fprintf(stderr, "subd: pia: tolerance %.9g not reached: max error %.9g after --max-iter %lu iterations\n",
-                r->o.tol, r->extra.max_err, (unsigned long)r->o.max_iter);
-        return EXIT_NOT_CONVERGED; /* the --stats object above says "converged":false */
+        fprintf(stderr, "%s", r->extra.warning);
     }
-    return EXIT_OK;
+    return r->extra.exit_status; /* pia: EXIT_NOT_CONVERGED, the --stats object above says why */
 }
 
 int main(int argc, char **argv)
@@ -294,7 +283,7 @@ int main(int argc, char **argv)
     r.cmd = cmd;
     rc = tool_parse_args(cmd, argc, argv, &r.o);
     if (rc != EXIT_OK) {
-        if (r.o.stats) tool_failure_json(cmd, rc);
+        if (r.o.stats) tool_failure_json(cmd->name, rc);
         return rc;
     }
     /* phases: read, run (scheme commands), write (unless --stream writes as it runs) */
@@ -302,7 +291,7 @@ int main(int argc, char **argv)
                    1u + (cmd->run ? 1u : 0u) + (r.o.output && !r.o.stream ? 1u : 0u));
     rc = run_command(&r);
     progress_end(rc == EXIT_OK || rc == EXIT_NOT_CONVERGED);
-    if (rc != EXIT_OK && rc != EXIT_NOT_CONVERGED && r.o.stats) tool_failure_json(cmd, rc);
+    if (rc != EXIT_OK && rc != EXIT_NOT_CONVERGED && r.o.stats) tool_failure_json(cmd->name, rc);
     host_mesh_free(&r.in);
     host_mesh_free(&r.overlay);
     free(r.overlay_pos);

@@ -1,9 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* subd tool: loop --stream. subd_loop_stream hands over the level-L triangles one at a time
- * (include/subd_loop.h); the sinks here take them, by OUTPUT's format:
+/* subd tool: the triangle streams' output, for every scheme. A scheme module (cmd_loop.c,
+ * cmd_sr48.c) hands over a tool_stream (subd_tool.h): one pass of its triangles into a
+ * subd_tri_sink (include/subd.h) and its counts at the level; the sinks here take them, by
+ * OUTPUT's format, and name no scheme:
  *   .stl   binary STL streamed straight to the file through one fixed 64 KiB buffer, so the
- *          memory is independent of the output. The triangle count 4^L F is written first
- *          (known in advance, so OUTPUT may be a pipe; checked against the emitted count).
+ *          memory is independent of the output. The triangle count (Loop: 4^L F) is written
+ *          first (known in advance, or for an adaptive cut found by a counting pass, so OUTPUT
+ *          may be a pipe; checked against the emitted count). The 80-byte header names the
+ *          command's scheme (command.canonical).
  *          Facet normal: the unit normal of the triangle's positions (cross product in
  *          double; (0,0,0) for a degenerate triangle), also with --limit: the per-vertex
  *          limit normals go to OBJ vn records only.
@@ -31,31 +35,9 @@
 #include "host_real.h"
 
 #define STREAM_BUF 65536u
-/* Sink statuses: positive, so subd_loop_stream returns them unchanged (subd_loop.h). */
+/* Sink statuses: positive, so the library's streams return them unchanged (subd.h). */
 #define SINK_WRITE 1 /* OUTPUT could not be written (errno in err)                       */
 #define SINK_COUNT 2 /* more ids, vertices or triangles than the closed forms say        */
-
-/* The level-L counts in closed form (subd_loop.h): triangles 4^L F, the vertices some
- * triangle uses, edges, and the size of the id space. */
-typedef struct stream_counts {
-    uint64_t tris, verts, edges, ids;
-    int verts_exact; /* verts is the count (Loop's closed form), else a bound (semireg48) */
-    int tris_bound;  /* tris is a bound (adapt --stream: the uniform count), else the count */
-} stream_counts;
-
-static stream_counts counts_of(const subd_mesh *in, uint32_t levels)
-{
-    uint64_t n = (uint64_t)1 << levels, f = in->num_faces;
-    uint64_t inner = f * ((n - 1u) * (n - 2u) / 2u);
-    stream_counts c;
-    c.tris = f * n * n;
-    c.verts = (uint64_t)(in->num_verts - in->num_isolated) + (uint64_t)in->num_edges * (n - 1u) + inner;
-    c.edges = (uint64_t)in->num_edges * n + 3u * f * (n * (n - 1u) / 2u);
-    c.ids = (uint64_t)in->num_verts + (uint64_t)in->num_corners * (n - 1u) + inner;
-    c.verts_exact = 1;
-    c.tris_bound = 0;
-    return c;
-}
 
 typedef struct stream_sink {
     FILE *f;           /* OUTPUT (.stl, .obj), else NULL                              */
@@ -93,7 +75,7 @@ static unsigned char *out_room(stream_sink *s, uint32_t n)
     return s->buf + s->fill;
 }
 
-static void hash_tri(stream_sink *s, const subd_loop_tri *t)
+static void hash_tri(stream_sink *s, const subd_tri *t)
 {
     uint32_t h = s->hash, c, k, i;
     for (c = 0; c < 3u; c++)
@@ -106,7 +88,7 @@ static void hash_tri(stream_sink *s, const subd_loop_tri *t)
     if (!(s->tris & 0xfffu)) progress_update(s->tris, s->max_t); /* progress.h: stores a number */
 }
 
-static int count_tri(void *ctx, const subd_loop_tri *t)
+static int count_tri(void *ctx, const subd_tri *t)
 {
     hash_tri((stream_sink *)ctx, t);
     return 0;
@@ -132,7 +114,7 @@ static void put_f32le(unsigned char *p, double x)
 }
 
 /* One facet: normal, three vertices (float32 LE), attribute 0. */
-static int stl_tri(void *ctx, const subd_loop_tri *t)
+static int stl_tri(void *ctx, const subd_tri *t)
 {
     stream_sink *s = (stream_sink *)ctx;
     unsigned char *o = out_room(s, 50u);
@@ -161,12 +143,12 @@ static int stl_tri(void *ctx, const subd_loop_tri *t)
 
 /* 80-byte header (not starting with "solid", which would announce ASCII STL) and the
  * triangle count. */
-static int stl_begin(stream_sink *s, const tool_opts *o, uint32_t tris)
+static int stl_begin(stream_sink *s, const tool_run *r, uint32_t tris)
 {
     char head[96];
     unsigned char *p = out_room(s, 84u);
-    int n = snprintf(head, sizeof head, "tinysubd %s stream, level %lu, %s%s", o->sr48_stream ? "semireg48" : "loop",
-                     (unsigned long)o->levels, ARITHMETIC, o->limit ? ", limit" : "");
+    int n = snprintf(head, sizeof head, "tinysubd %s stream, level %lu, %s%s", r->cmd->canonical,
+                     (unsigned long)r->o.levels, ARITHMETIC, s->limit ? ", limit" : "");
     if (!p) return SINK_WRITE;
     memset(p, ' ', 80u);
     memcpy(p, head, n > 80 ? 80u : (size_t)n);
@@ -192,7 +174,7 @@ static int gather_id(stream_sink *s, uint64_t id, uint32_t *num, int *fresh)
     return 0;
 }
 
-static int obj_tri(void *ctx, const subd_loop_tri *t)
+static int obj_tri(void *ctx, const subd_tri *t)
 {
     stream_sink *s = (stream_sink *)ctx;
     uint32_t c, num[3], n = 0;
@@ -224,7 +206,7 @@ static int obj_tri(void *ctx, const subd_loop_tri *t)
     return 0;
 }
 
-static int off_tri(void *ctx, const subd_loop_tri *t)
+static int off_tri(void *ctx, const subd_tri *t)
 {
     stream_sink *s = (stream_sink *)ctx;
     uint64_t j = s->tris;
@@ -287,46 +269,35 @@ static int gather_alloc(tool_run *r, stream_sink *s, const stream_counts *c)
     return EXIT_OK;
 }
 
-/* The triangle count of a stream that chooses its own cut (adapt --stream: subd_sr48_stream
- * of base with the command's adaptation, every mode but uniform; loop --stream --limit --chord:
- * subd_loop_adapt_stream when base is NULL), by one pass into a counting sink: STL's header
- * needs it first and OUTPUT may be a pipe, so it cannot be patched afterwards. The one home
- * of the tool's counting passes. */
-static int adapt_count_tri(void *ctx, const subd_loop_tri *t)
+/* The triangle count of a stream that chooses its own cut (an adaptive cut: STL's header
+ * needs it first and OUTPUT may be a pipe, so it cannot be patched afterwards), by one pass
+ * into a counting sink. The one home of the tool's counting passes. */
+static int stream_count_tri(void *ctx, const subd_tri *t)
 {
     (void)t;
     ++*(uint64_t *)ctx;
     return 0;
 }
 
-static int stream_count_pass(tool_run *r, subd_arena *a, subd_diag *d, const subd_sr48 *base, uint64_t *n)
+int tool_stream_count(tool_run *r, subd_arena *a, const tool_stream *ts, subd_diag *d, uint64_t *n)
 {
     subd_tri_sink sink;
     double t0 = host_now_ns();
     int st;
     *n = 0;
-    sink.tri = adapt_count_tri;
+    sink.tri = stream_count_tri;
     sink.ctx = n;
-    if (base) {
-        subd_sr48_stream_opts so;
-        memset(&so, 0, sizeof so);
-        so.adapt = tool_sr48_adapt(&r->o);
-        st = subd_sr48_stream(a, base, &so, &sink, d);
-    } else {
-        subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
-        st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
-    }
+    st = ts->pass(ts->ctx, a, &sink, d);
     r->lib_ns += host_now_ns() - t0;
     return st;
 }
 
-static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s, const stream_counts *c,
-                       const subd_sr48 *base)
+static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s, const tool_stream *ts)
 {
     const tool_opts *o = &r->o;
+    const stream_counts *c = &ts->c;
     host_format fmt = o->output ? o->out_format : HOST_FMT_UNKNOWN;
-    subd_loop_opts lo = tool_loop_opts(o);
-    subd_loop_sink sink;
+    subd_tri_sink sink;
     struct stat sb;
     int st = 0, regular = 0;
     double t0;
@@ -337,16 +308,15 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
         (c->verts >= UINT32_MAX || c->ids >= SIZE_MAX / 8u || (fmt == HOST_FMT_OFF && c->tris > UINT32_MAX / 4u)))
         return stream_limit("too many vertices for indexed output (.stl has no limit but 2^32 triangles)",
                             o->output);
-    s->limit = o->limit;
+    s->limit = ts->limit;
     s->hash = 2166136261u;
     s->ids = c->ids;
     s->max_v = sat32(c->verts);
     s->max_t = c->tris;
     if ((fmt == HOST_FMT_OBJ || fmt == HOST_FMT_OFF) && (st = gather_alloc(r, s, c)) != EXIT_OK) return st;
-    if (fmt == HOST_FMT_STL && c->tris_bound && base) {
-        /* adapt --stream to .stl: the header's count first, by a counting pass (OUTPUT may
-         * be a pipe, so it cannot be patched afterwards) */
-        if ((st = stream_count_pass(r, a, d, base, &stl_tris)) != 0) return st;
+    if (fmt == HOST_FMT_STL && c->tris_bound) {
+        /* an adaptive cut to .stl: the header's count first, by a counting pass */
+        if ((st = tool_stream_count(r, a, ts, d, &stl_tris)) != 0) return st;
     }
     if (fmt == HOST_FMT_STL || fmt == HOST_FMT_OBJ) {
         if (!(s->f = fopen(o->output, "wb"))) {
@@ -354,7 +324,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
             return EXIT_OUTPUT;
         }
         regular = fstat(fileno(s->f), &sb) == 0 && S_ISREG(sb.st_mode);
-        if (fmt == HOST_FMT_STL) st = stl_begin(s, o, (uint32_t)stl_tris);
+        if (fmt == HOST_FMT_STL) st = stl_begin(s, r, (uint32_t)stl_tris);
         else {
             s->fill = 11u;
             memcpy(s->buf, "# tinysubd\n", s->fill);
@@ -364,17 +334,7 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     sink.ctx = s;
     if (st == 0) {
         t0 = host_now_ns();
-        if (base) {
-            subd_sr48_stream_opts so;
-            memset(&so, 0, sizeof so);
-            so.adapt = tool_sr48_adapt(o);
-            st = subd_sr48_stream(a, base, &so, &sink, d);
-        } else if (o->adapt_mode == SUBD_SR48_ADAPT_CHORD) {
-            subd_loop_adapt_opts ao = tool_loop_adapt_opts(o);
-            st = subd_loop_adapt_stream(a, &r->in.mesh, &ao, &sink, d);
-        } else {
-            st = subd_loop_stream(a, &r->in.mesh, &lo, &sink, d);
-        }
+        st = ts->pass(ts->ctx, a, &sink, d);
         r->lib_ns += host_now_ns() - t0;
     }
     if (st == 0 && (c->tris_bound ? s->tris > c->tris : s->tris != c->tris)) st = SINK_COUNT;
@@ -395,77 +355,25 @@ static int stream_into(tool_run *r, subd_arena *a, subd_diag *d, stream_sink *s,
     return 0;
 }
 
-/* semireg48 --stream: the base mesh (subd_sr48_base) in the arena, then subd_sr48_stream
- * above it. Counts: n0 2^L triangles (n0 = the base's triangles); ids below
- * V0 + n0 (2^L - 1) (subd_sr48.h); the vertex count is what the sink gathers. */
-static int sr48_stream_prepare(tool_run *r, subd_arena *a, subd_diag *d, subd_sr48 *base, stream_counts *c,
-                               uint32_t *stream_bytes)
-{
-    uint32_t flags = r->o.no_smooth ? SUBD_SR48_NO_SMOOTH : 0u;
-    subd_sr48_stream_opts so;
-    double t0 = host_now_ns();
-    int st = subd_sr48_base(a, &r->in.mesh, flags, base, d);
-    memset(&so, 0, sizeof so);
-    so.adapt = tool_sr48_adapt(&r->o);
-    if (st == SUBD_OK) st = subd_sr48_stream_plan(base, &so, stream_bytes, d);
-    r->lib_ns += host_now_ns() - t0;
-    if (st != SUBD_OK) return st;
-    c->tris = (uint64_t)base->level_tri[1] << r->o.levels;
-    c->ids = (uint64_t)base->num_verts + (uint64_t)base->level_tri[1] * (((uint64_t)1 << r->o.levels) - 1u);
-    c->verts = c->ids < 3u * c->tris ? c->ids : 3u * c->tris; /* a bound: the sink counts them */
-    c->verts_exact = 0;
-    c->edges = 0;
-    c->tris_bound = tool_sr48_adapt(&r->o).mode != SUBD_SR48_ADAPT_UNIFORM;
-    return SUBD_OK;
-}
-
-/* loop --stream --limit --chord: the triangle count is the stream's choice, so a first pass
- * counts (stream_count_pass; STL writes it first, the gathering sinks size by it); the ids are
- * those of level L; the vertex count is gathered. */
-static int loop_adapt_prepare(tool_run *r, subd_arena *a, subd_diag *d, stream_counts *c)
-{
-    uint64_t n = 0;
-    int st = stream_count_pass(r, a, d, NULL, &n);
-    if (st != SUBD_OK) return st;
-    c->tris = n;
-    c->verts = c->ids < 3u * n ? c->ids : 3u * n; /* a bound: the sink counts them */
-    c->verts_exact = 0;
-    c->edges = 3u * n / 2u;
-    return SUBD_OK;
-}
-
-int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
+int tool_stream_write(tool_run *r, subd_arena *a, tool_stream *ts, subd_diag *d, stream_result *res)
 {
     const subd_mesh *in = &r->in.mesh;
-    stream_counts c = counts_of(in, r->o.levels);
+    stream_counts c = ts->c;
     stream_sink *s = (stream_sink *)calloc(1, sizeof *s);
     subd_mesh *m = &r->out;
-    subd_sr48 base;
-    uint32_t k, stream_bytes = 0;
-    uint64_t uniform;
-    int st = 0;
+    uint32_t k;
+    int st;
+    memset(res, 0, sizeof *res);
     if (!s) return tool_out_of_memory();
-    if (r->o.sr48_stream) {
-        st = sr48_stream_prepare(r, a, d, &base, &c, &stream_bytes);
-        if (st != SUBD_OK) {
-            free(s);
-            return st;
-        }
-    }
-    if (!r->o.sr48_stream && r->o.adapt_mode == SUBD_SR48_ADAPT_CHORD && (st = loop_adapt_prepare(r, a, d, &c)) != SUBD_OK) {
-        free(s);
-        return st;
-    }
-    st = stream_into(r, a, d, s, &c, r->o.sr48_stream ? &base : NULL);
-    if (r->o.sr48_stream || r->o.adapt_mode == SUBD_SR48_ADAPT_CHORD) c.verts = s->nv;
-    uniform = c.tris;
-    if (c.tris_bound) c.tris = s->tris; /* adapt --stream: what was cut */
+    st = stream_into(r, a, d, s, ts);
+    if (!c.verts_exact) c.verts = s->nv;
+    if (c.tris_bound) c.tris = s->tris; /* an adaptive cut: what was cut */
     memset(m, 0, sizeof *m);
     m->num_verts = sat32(c.verts);
     m->num_faces = sat32(c.tris);
     m->num_corners = sat32(3u * c.tris);
     m->num_edges = sat32(c.edges);
-    m->num_boundary_edges = c.tris_bound ? 0u : sat32((uint64_t)in->num_boundary_edges << r->o.levels); /* adapt: not counted */
+    m->num_boundary_edges = sat32(c.boundary_edges);
     m->num_boundary_loops = in->num_boundary_loops;
     if (st == 0 && r->o.output && r->o.out_format == HOST_FMT_OFF) {
         /* the gathered mesh, through the library's OFF writer */
@@ -475,29 +383,9 @@ int tool_stream_run(tool_run *r, subd_arena *a, subd_diag *d)
         for (k = 0; k <= m->num_faces; k++) m->face_start[k] = 3u * k;
         st = tool_write_output(r);
     }
-    if (r->o.sr48_stream) {
-        static const char *const mode_name[] = {"uniform", "point", "ramp", "plane", "callback", "chord"};
-        subd_sr48_adapt ad = tool_sr48_adapt(&r->o);
-        snprintf(r->extra.json, sizeof r->extra.json,
-                 "\"stream\":true,\"stream_arena\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\","
-                 "\"base_triangles\":%lu,\"faces\":%llu,\"triangles\":%llu,\"uniform_faces\":%llu,"
-                 "\"saved_faces\":%llu,\"checksum\":\"%08lx\"",
-                 (unsigned long)stream_bytes, (unsigned long)r->o.levels, r->o.no_smooth ? "false" : "true",
-                 (unsigned)ad.mode < 6u ? mode_name[ad.mode] : "?", (unsigned long)base.level_tri[1],
-                 (unsigned long long)s->tris, (unsigned long long)s->tris, (unsigned long long)uniform,
-                 (unsigned long long)(uniform - s->tris), (unsigned long)s->hash);
-    } else {
-        /* the stream's own arena (its plan; the mesh not counted), beside arena_planned */
-        subd_loop_opts lo = tool_loop_opts(&r->o);
-        subd_loop_adapt_opts ao = tool_loop_adapt_opts(&r->o);
-        uint32_t sb = 0;
-        if ((r->o.adapt_mode == SUBD_SR48_ADAPT_CHORD ? subd_loop_adapt_stream_plan(in, &ao, &sb, NULL)
-                                                  : subd_loop_stream_plan(in, &lo, &sb, NULL)) != SUBD_OK)
-            sb = 0;
-        snprintf(r->extra.json, sizeof r->extra.json,
-                 "\"stream\":true,\"limit\":%s,\"triangles\":%llu,\"checksum\":\"%08lx\",\"stream_arena\":%lu",
-                 r->o.limit ? "true" : "false", (unsigned long long)s->tris, (unsigned long)s->hash, (unsigned long)sb);
-    }
+    res->tris = s->tris;
+    res->hash = s->hash;
+    res->verts = s->nv;
     free(s->index);
     free(s);
     return st;

@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
-/* The subd tool's error reporting, in one place: the last message (for the --stats JSON of a
- * failed run), the messages of library failures (FILE:LINE, the element diag names, arena
- * limits) and their exit statuses. Every other tool file calls these; this file calls only
- * the library, the readers' line lookups and the progress line, so no tool file depends on
- * subd_main.c. */
+/* The subd tool's error reporting, in one place (tool_error.h): the last message (for the
+ * --stats JSON of a failed run), usage errors, the messages of library failures (FILE:LINE,
+ * the element diag names, arena limits) and their exit statuses. Every other tool file calls
+ * these; this file calls only the library, the readers' line lookups and the progress line,
+ * so it includes no other tool header and no tool file depends on subd_main.c. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "subd_tool.h"
-#include "host_real.h"
+#include "tool_error.h"
+#include "progress.h"
 
 /* ------------------------------------------------------------------------------------ */
 /* Errors                                                                                 */
@@ -57,10 +57,10 @@ static void error_element_str(const subd_diag *d, char *buf, size_t n)
 }
 
 /* --stats of a failed run: one JSON object with the exit status and the message. */
-void tool_failure_json(const command *cmd, int rc)
+void tool_failure_json(const char *command, int rc)
 {
     const char *m = g_error[0] ? g_error : "failed (see stderr)";
-    printf("{\"command\":\"%s\",\"status\":\"error\",\"exit\":%d,\"message\":\"", cmd->name, rc);
+    printf("{\"command\":\"%s\",\"status\":\"error\",\"exit\":%d,\"message\":\"", command, rc);
     for (; *m; m++) {
         unsigned char c = (unsigned char)*m;
         if (c == '"' || c == '\\') printf("\\%c", c);
@@ -98,12 +98,11 @@ int tool_library_error(const char *file, int st, const subd_diag *d, int have_bu
 }
 
 /* A scheme's failure on the input mesh: a triangle-only scheme names the first polygon in
- * diag.face (the semi-regular 4-8 plans take no diag yet, so the tool finds it for them),
- * which the reader maps back to its line in the input file (subd_obj_line_of /
- * subd_off_line_of). */
-int tool_scheme_error(const tool_run *r, int st, subd_diag *d)
+ * diag.face (found here when a plan left it out), which the reader maps back to its line in
+ * the input file (subd_obj_line_of / subd_off_line_of / subd_ply_line_of). */
+int tool_input_error(const char *file, host_format fmt, const subd_mesh *m, int st, subd_diag *d, int have_budget,
+                     uint32_t budget)
 {
-    const subd_mesh *m = &r->in.mesh;
     uint32_t f;
     if (st == SUBD_ERR_NOT_TRIANGLES && d->face == SUBD_NONE)
         for (f = 0; f < m->num_faces && d->face == SUBD_NONE; f++)
@@ -111,15 +110,15 @@ int tool_scheme_error(const tool_run *r, int st, subd_diag *d)
     if (st == SUBD_ERR_NOT_TRIANGLES && d->line == 0u && d->face != SUBD_NONE) {
         char *buf = NULL;
         uint32_t len = 0;
-        if (host_read_file(r->o.input, &buf, &len) == 0) {
-            d->line = r->in.format == HOST_FMT_OFF   ? subd_off_line_of(buf, len, d)
-                      : r->in.format == HOST_FMT_PLY ? subd_ply_line_of(buf, len, d)
-                      : r->in.format == HOST_FMT_STL ? 0u
-                                                     : subd_obj_line_of(buf, len, d);
+        if (host_read_file(file, &buf, &len) == 0) {
+            d->line = fmt == HOST_FMT_OFF   ? subd_off_line_of(buf, len, d)
+                      : fmt == HOST_FMT_PLY ? subd_ply_line_of(buf, len, d)
+                      : fmt == HOST_FMT_STL ? 0u
+                                            : subd_obj_line_of(buf, len, d);
             free(buf);
         }
     }
-    return tool_library_error(r->o.input, st, d, r->o.has_budget, r->o.budget);
+    return tool_library_error(file, st, d, have_budget, budget);
 }
 
 int tool_out_of_memory(void)
@@ -128,3 +127,24 @@ int tool_out_of_memory(void)
     return EXIT_LIMIT;
 }
 
+
+/* After a usage error: the synopsis and where the rest is, not the whole help (the
+ * specific message above it stays visible). */
+void tool_usage_short(FILE *f)
+{
+    fprintf(f, "usage: subd COMMAND [options] INPUT [-o OUTPUT]\n"
+               "run 'subd --help' for the commands, options and exit codes\n");
+}
+
+int tool_usage_error(const char *fmt, ...)
+{
+    va_list ap;
+    char msg[512];
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "subd: %s\n", msg);
+    tool_error_record("%s", msg);
+    tool_usage_short(stderr);
+    return EXIT_USAGE;
+}

@@ -680,7 +680,7 @@ fi
 usage_case_pre loop --limit test/data/icosahedron.obj -o "$T/x.obj"
 grep -q -- '--limit needs --stream' "$T/err"; check $? "loop --limit without --stream: exit 1, says so"
 usage_case_pre convert --stream test/data/icosahedron.obj -o "$T/x.obj"
-grep -q -- "--stream applies to 'loop', 'semireg48', 'adapt' and 'alpha' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, semireg48's, adapt's and alpha's"
+grep -q -- "--stream applies to 'loop', 'alpha' and 'sr48' only" "$T/err"; check $? "convert --stream: exit 1, says --stream is loop's, alpha's and sr48's"
 usage_case_pre limit --stream --limit test/data/icosahedron.obj -o "$T/x.obj"; check $? "limit --stream: exit 1"
 for e in png xyz; do
     usage_case_pre loop --stream test/data/icosahedron.obj -o "$T/x.$e"
@@ -1023,6 +1023,103 @@ done
 usage_case_pre loop --stream --chord 0.01 test/data/icosahedron.obj -o "$T/x.stl"; check $? "loop --chord without --limit: exit 1"
 usage_case_pre loop --chord 0.01 test/data/icosahedron.obj -o "$T/x.obj"; check $? "loop --chord without --stream: exit 1"
 usage_case_pre loop --stream --limit --chord 0 test/data/icosahedron.obj -o "$T/x.stl"; check $? "loop --chord 0: exit 1"
+
+# ---------------------------------------------------------------- sr48: one name per scheme
+# 'sr48' is the semi-regular 4-8 command (include/subd_sr48.h: subd_sr48_*): uniform at -l N,
+# or a MODE (--point, --ramp, --plane, --chord) for a variable-resolution cut up to level N.
+# 'semireg48' and 'adapt' are its deprecated 0.5 spellings (until 1.0): the same bytes in every
+# output format, uniform and each mode, materialised and streamed, in both arithmetics; their
+# --stats differ from sr48's in "command" only.
+stats_norm() { sed 's/"command":"[a-z0-9]*"//; s/"time_ms":[0-9.]*//; s/"file":"[^"]*"//g' "$1"; }
+alias_case() { # BIN OLD_COMMAND INPUT EXT ARGS...: OLD_COMMAND ARGS vs sr48 ARGS
+    ab=$1 old=$2 in=$3 ext=$4
+    shift 4
+    run "$ab" "$old" "$@" "$in" -o "$T/old.$ext" --stats
+    orc=$rc
+    stats_norm "$T/out" > "$T/old.stats"
+    grep -q "\"command\":\"$old\"" "$T/out" || orc=99
+    run "$ab" sr48 "$@" "$in" -o "$T/new.$ext" --stats
+    stats_norm "$T/out" > "$T/new.stats"
+    [ "$orc" -eq 0 ] && is 0 && grep -q '"command":"sr48"' "$T/out" && grep -q '"scheme":"sr48"' "$T/out" &&
+        cmp -s "$T/old.$ext" "$T/new.$ext" && cmp -s "$T/old.stats" "$T/new.stats"
+    check $? "$(basename "$ab") $old $* -o .$ext = sr48 $* byte for byte (file and --stats but \"command\")"
+}
+for b in "$FLOAT" "$FIXED"; do
+    ico=test/data/icosahedron.obj tor=demo/torus_12x6.obj
+    alias_case "$b" semireg48 $ico obj -l 3
+    alias_case "$b" semireg48 $ico off -l 0 --no-smooth
+    alias_case "$b" semireg48 $ico obj
+    for e in stl obj off; do alias_case "$b" semireg48 $ico $e -l 3 --stream; done
+    alias_case "$b" adapt $tor obj -l 4 --point 1.4,0,0 --radius 0.5
+    alias_case "$b" adapt $tor off -l 4 --ramp x
+    alias_case "$b" adapt $tor obj -l 4 --plane 0,0,0,1,0,0
+    alias_case "$b" adapt $tor obj -l 4 --chord 0.02 --no-smooth
+    alias_case "$b" adapt $tor off --ramp y
+    for e in stl obj; do alias_case "$b" adapt $tor $e -l 4 --stream --ramp x; done
+    for e in stl off; do alias_case "$b" adapt $tor $e -l 4 --stream --chord 0.02; done
+done
+alias_case "$FLOAT" semireg48 test/data/icosahedron.obj png -l 2
+alias_case "$FLOAT" adapt demo/torus_12x6.obj png -l 4 --ramp x
+# the picture and the STL header name the scheme by its one name, whatever the spelling
+run "$FLOAT" adapt -l 3 --stream --ramp x demo/torus_12x6.obj -o "$T/h.stl"
+is 0 && [ "$(head -c 13 "$T/h.stl")" = "tinysubd sr48" ]; check $? "adapt --stream -o .stl: the header says 'tinysubd sr48'"
+# -l: 2 without a mode (semireg48's default), 6 with one (adapt's)
+run "$FLOAT" sr48 test/data/icosahedron.obj -o "$T/x.obj" --stats
+is 0 && [ "$(json_num levels)" = 2 ] && [ "$(json_num binary_steps)" = 2 ]; check $? "sr48 without -l: 2 binary steps"
+run "$FLOAT" sr48 --ramp x demo/torus_12x6.obj -o "$T/x.obj" --stats
+is 0 && [ "$(json_num levels)" = 6 ] && [ "$(json_num uniform_faces)" = 36864 ]; check $? "sr48 --ramp x without -l: up to level 6 (36864 uniform faces)"
+usage_case_pre sr48 -l 4 --ramp x --chord 1 demo/torus_12x6.obj -o "$T/x.obj"
+grep -q "give one adaptation mode" "$T/err"; check $? "sr48 with two modes: exit 1, says give one"
+usage_case_pre sr48 -l 4 --ramp x --radius 1 demo/torus_12x6.obj -o "$T/x.obj"; check $? "sr48 --radius without --point: exit 1"
+usage_case_pre sr48 -l 17 test/data/icosahedron.obj -o "$T/x.obj"; check $? "sr48 -l 17: exit 1"
+usage_case_pre sr48 --stream --limit test/data/icosahedron.obj -o "$T/x.stl"
+grep -q -- "--limit applies to 'loop --stream' only" "$T/err"; check $? "sr48 --stream --limit: exit 1, --limit is loop's"
+usage_case_pre semireg48 --ramp x test/data/icosahedron.obj -o "$T/x.obj"
+grep -q "not accepted by 'semireg48'" "$T/err"; check $? "semireg48 --ramp x: exit 1 (the old spelling keeps its 0.5 options)"
+usage_case_pre sr48 --tags "$T/c1.tags" test/data/icosahedron.obj -o "$T/x.obj"; check $? "sr48 --tags: exit 1"
+run "$FLOAT" --help
+is 0 && grep -q '^  sr48 ' "$T/out" && grep -q '^  semireg48 (deprecated)' "$T/out" && grep -q '^  adapt .*(deprecated)' "$T/out" &&
+    [ "$(grep -c '^  --point X,Y,Z' "$T/out")" = 1 ]
+check $? "--help lists sr48, semireg48 and adapt as deprecated, each option once"
+
+# ---------------------------------------------------------------- stream_arena
+# --stats of every stream reports stream_arena, the stream's own plan (the mesh not counted):
+# > 0, below arena_planned, the same in both arithmetics (plans do not depend on them), and
+# arena_planned - stream_arena, the input's part, is one number for every stream of one input
+# (the level, --limit, --chord, a mode change the stream's part only).
+for fam in loop sr48 alpha; do
+    case $fam in
+    loop) in=test/data/icosahedron.obj
+        set -- "loop -l 2 --stream" "loop -l 3 --stream" "loop -l 3 --stream --limit" "loop -l 3 --stream --limit --chord 0.01" ;;
+    sr48) in=test/data/icosahedron.obj
+        set -- "sr48 -l 3 --stream" "sr48 -l 4 --stream --ramp x" "sr48 -l 4 --stream --chord 0.02" "semireg48 -l 2 --stream" \
+            "adapt -l 4 --stream --point 0,0,1" ;;
+    alpha) in=demo/square.obj
+        set -- "alpha -l 4 --stream" "alpha -l 5 --stream" "alpha -l 5 --stream --chord 0.01" "alpha --order 4 -l 3 --stream" ;;
+    esac
+    base=""
+    for a in "$@"; do
+        run "$FLOAT" $a "$in" --stats
+        sa=$(json_num stream_arena) pl=$(json_num arena_planned)
+        run "$FIXED" $a "$in" --stats
+        ok=1
+        is 0 && [ -n "$sa" ] && [ "$sa" -gt 0 ] && [ "$sa" -lt "$pl" ] && [ "$(json_num stream_arena)" = "$sa" ] &&
+            [ "$(json_num arena_planned)" = "$pl" ] && { [ -z "$base" ] || [ $((pl - sa)) = "$base" ]; } && ok=0
+        [ -z "$base" ] && base=$((pl - sa))
+        check $ok "$a --stats: stream_arena $sa > 0, below arena_planned $pl, the same in both arithmetics, planned - stream = $base"
+    done
+done
+# alpha: SUBD_ALPHA_CURVE_STREAM_BYTES(L, K) (subd_alpha.h) grows by 176 L K bytes, for every
+# curve: one more level costs 176 K (K even: every term 8-aligned), the same on another curve
+for k in 2 4; do
+    run "$FLOAT" alpha --order $k -l 4 --stream demo/square.obj --stats
+    s4=$(json_num stream_arena)
+    run "$FLOAT" alpha --order $k -l 5 --stream demo/square.obj --stats
+    s5=$(json_num stream_arena)
+    run "$FLOAT" alpha --order $k -l 5 --stream --chord 0.01 demo/ellipse_control.obj --stats
+    is 0 && [ -n "$s4" ] && [ $((s5 - s4)) = $((176 * k)) ] && [ "$(json_num stream_arena)" = "$s5" ]
+    check $? "alpha --order $k --stream: stream_arena -l 4 -> -l 5 grows by 176 x $k, the same on another curve with --chord"
+done
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -10,9 +10,9 @@
  * valence is 10): the demo checks buffer = plan = the arena's peak. 9 steps: the least at
  * which the materialised path needs more than the board's 4 MiB (the chordal stream's time
  * grows with the uniform level's faces, so more steps only make the demo slower). The host reproduces the checksum with
- *     subd adapt --stream --chord 0.01 -l 9 test/data/icosahedron.obj --stats
+ *     subd sr48 --stream --chord 0.01 -l 9 test/data/icosahedron.obj --stats
  * (demo/host_demo.sh compares it with this demo's output, and the uniform one below with
- * subd semireg48 --stream -l 6 ... --stats).
+ * subd sr48 --stream -l 6 ... --stats).
  *
  * What the materialised path would need at DSR_STEPS: subd_sr48_plan (the build's exact peak,
  * with subd_sr48_count_clusters) and, above the kept hierarchy, subd_sr48_extract_plan(CHORD).

@@ -81,8 +81,9 @@ $(B)/bin/subd: $(SRC:%.c=$(B)/tool-float/%.o) $(TOOL_PORT:%.c=$(B)/tool-float/%.
 $(B)/bin/subd-fixed: $(SRC:%.c=$(B)/tool-fixed/%.o) $(TOOL_PORT:%.c=$(B)/tool-fixed/%.o)
 	$(HOST_CC) $^ -lm -o $@
 tool: $(B)/bin/subd $(B)/bin/subd-fixed
-# The benchmark: the library, bench/bench.c and the file reader at -O2 (variant bench-float).
-$(B)/bench/bench: $(B)/bench-float/bench/bench.o $(SRC:%.c=$(B)/bench-float/%.o) $(B)/bench-float/port/host/fileio.o
+# The benchmark: the library, bench/*.c and the file reader at -O2 (variant bench-float).
+BENCH_SRC := $(wildcard bench/*.c)
+$(B)/bench/bench: $(BENCH_SRC:%.c=$(B)/bench-float/%.o) $(SRC:%.c=$(B)/bench-float/%.o) $(B)/bench-float/port/host/fileio.o
 	$(HOST_CC) $^ -lm -o $@
 
 # ------------------------------------------------------------------ Cortex-M variants

@@ -11,6 +11,7 @@
 #include "print.h"
 #include "port_cm.h"
 #include "demo_mesh.h"
+#include "demo_print.h" /* demo_kv, demo_fail: the report lines */
 #include "demo_sr48.h" /* the 4-8 chordal stream step (demo_sr48.c) */
 
 /* The whole memory budget of the demo. The plan calls below say exactly how much of it
@@ -40,37 +41,12 @@ static const char icosahedron_obj[] =
     "f 3 4 12\nf 3 11 4\nf 3 5 11\nf 3 6 5\nf 3 12 6\nf 4 11 7\nf 4 7 8\nf 4 8 12\n"
     "f 5 9 11\nf 6 12 10\nf 7 11 9\nf 8 10 12\n";
 
-static void kv(const char *key, uint32_t v)
-{
-    print_str("  ");
-    print_str(key);
-    print_str(" ");
-    print_u32(v);
-    print_nl();
-}
-
 /* Marks the arena and starts a new peak measurement there, so each step's peak can be
  * compared with its own plan. */
-static void kv64(const char *key, uint64_t v);
-static void kv_hex(const char *key, uint32_t v);
-
 static uint32_t start_measure(subd_arena *a)
 {
     subd_arena_reset_peak(a);
     return subd_arena_mark(a);
-}
-
-static int report_error(int st, const subd_diag *d)
-{
-    print_str("  error: ");
-    print_str(subd_status_str(st));
-    if (st == SUBD_ERR_NOMEM) {
-        print_str(", needs ");
-        print_u32(d->bytes_needed);
-        print_str(" bytes");
-    }
-    print_nl();
-    return st;
 }
 
 /* Loop subdivision, level 3, of the mesh: plan, check the budget, run, report. */
@@ -86,18 +62,18 @@ static int demo_loop(subd_arena *arena, const subd_mesh *in)
     o.flags = 0;
     print_str("Loop subdivision, 3 levels:\n");
     if ((st = subd_loop_plan(in, &o, &plan, 0)) != SUBD_OK) return st;
-    kv("arena bytes planned", plan);
+    demo_kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
     st = subd_loop(arena, in, &o, &out, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    kv("arena bytes used (peak)", arena->peak - mark);
-    kv("output vertices", out.num_verts);
-    kv("output faces", out.num_faces);
-    kv("instructions", insns);
-    kv("instructions per output face", insns / out.num_faces);
+    demo_kv("arena bytes used (peak)", arena->peak - mark);
+    demo_kv("output vertices", out.num_verts);
+    demo_kv("output faces", out.num_faces);
+    demo_kv("instructions", insns);
+    demo_kv("instructions per output face", insns / out.num_faces);
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }
@@ -110,13 +86,13 @@ static int demo_limit(subd_arena *arena, const subd_mesh *in)
     int st;
     print_str("Loop limit positions and normals:\n");
     if ((st = subd_loop_limit_plan(in, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0)) != SUBD_OK) return st;
-    kv("arena bytes planned", plan);
+    demo_kv("arena bytes planned", plan);
     t0 = port_cycles();
     st = subd_loop_limit(arena, in, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
-    kv("arena bytes used (peak)", arena->peak - mark);
-    kv("instructions per vertex", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK / in->num_verts);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
+    demo_kv("arena bytes used (peak)", arena->peak - mark);
+    demo_kv("instructions per vertex", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK / in->num_verts);
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }
@@ -134,16 +110,16 @@ static int demo_quasi48(subd_arena *arena, const subd_mesh *in)
     o.len_bits = 0;
     print_str("quasi 4-8 subdivision, 4 binary steps:\n");
     if ((st = subd_quasi48_plan(in, &o, &plan, 0)) != SUBD_OK) return st;
-    kv("arena bytes planned", plan);
+    demo_kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
     st = subd_quasi48(arena, in, &o, &out, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    kv("arena bytes used (peak)", arena->peak - mark);
-    kv("output faces", out.num_faces);
-    kv("instructions per output face", insns / out.num_faces);
+    demo_kv("arena bytes used (peak)", arena->peak - mark);
+    demo_kv("output faces", out.num_faces);
+    demo_kv("instructions per output face", insns / out.num_faces);
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }
@@ -165,18 +141,18 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     o.steps = 4;
     o.flags = 0;
     print_str("semi-regular 4-8 hierarchy, 4 binary steps:\n");
-    if ((st = subd_sr48_count_clusters(arena, in, &clusters, &d)) != SUBD_OK) return report_error(st, &d);
-    if ((st = subd_sr48_plan(in, &o, clusters, &plan, &d)) != SUBD_OK) return report_error(st, &d);
-    kv("arena bytes planned", plan);
+    if ((st = subd_sr48_count_clusters(arena, in, &clusters, &d)) != SUBD_OK) return demo_fail(0, st, &d);
+    if ((st = subd_sr48_plan(in, &o, clusters, &plan, &d)) != SUBD_OK) return demo_fail(0, st, &d);
+    demo_kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
     st = subd_sr48_build(arena, in, &o, &h, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    kv("arena bytes used (peak)", arena->peak - mark);
-    kv("triangles (all levels)", h.num_tris);
-    kv("instructions per triangle", insns / h.num_tris);
+    demo_kv("arena bytes used (peak)", arena->peak - mark);
+    demo_kv("triangles (all levels)", h.num_tris);
+    demo_kv("instructions per triangle", insns / h.num_tris);
 
     ad.mode = SUBD_SR48_ADAPT_CHORD;
     ad.max_level = 4;
@@ -190,18 +166,18 @@ static int demo_semireg48(subd_arena *arena, const subd_mesh *in)
     if (ovf) return SUBD_ERR_RANGE;
     print_str("chordal extraction, eps 0.05, up to level 4:\n");
     mark2 = start_measure(arena);
-    if ((st = subd_sr48_extract_plan(&h, &ad, &plan, &d)) != SUBD_OK) return report_error(st, &d);
-    kv("arena bytes planned (bound)", plan);
+    if ((st = subd_sr48_extract_plan(&h, &ad, &plan, &d)) != SUBD_OK) return demo_fail(0, st, &d);
+    demo_kv("arena bytes planned (bound)", plan);
     t0 = port_cycles();
     st = subd_sr48_extract(arena, &h, &ad, &out, &rep, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns = (t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    kv("arena bytes used (peak)", arena->peak - mark2);
-    kv("output faces", rep.faces);
-    kv("faces of uniform level 4", rep.uniform_faces);
-    kv("forced splits", rep.forced_splits);
-    kv("instructions per output face", insns / rep.faces);
+    demo_kv("arena bytes used (peak)", arena->peak - mark2);
+    demo_kv("output faces", rep.faces);
+    demo_kv("faces of uniform level 4", rep.uniform_faces);
+    demo_kv("forced splits", rep.forced_splits);
+    demo_kv("instructions per output face", insns / rep.faces);
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }
@@ -218,13 +194,13 @@ static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
     uint64_t insns;
     int st;
     print_str("semi-regular 4-8 stream, uniform, 8 binary steps:\n");
-    if ((st = subd_sr48_base(arena, in, 0, &base, &d)) != SUBD_OK) return report_error(st, &d);
-    kv("base mesh arena bytes", arena->peak - mark);
+    if ((st = subd_sr48_base(arena, in, 0, &base, &d)) != SUBD_OK) return demo_fail(0, st, &d);
+    demo_kv("base mesh arena bytes", arena->peak - mark);
     so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = DEMO_SR48_STEPS;
-    if ((st = subd_sr48_stream_plan(&base, &so, &plan, &d)) != SUBD_OK) return report_error(st, &d);
-    kv("stream arena bytes planned", plan);
-    kv("static buffer bytes", (uint32_t)sizeof sr48_stream_arena);
+    if ((st = subd_sr48_stream_plan(&base, &so, &plan, &d)) != SUBD_OK) return demo_fail(0, st, &d);
+    demo_kv("stream arena bytes planned", plan);
+    demo_kv("static buffer bytes", (uint32_t)sizeof sr48_stream_arena);
     subd_arena_init(&sa, sr48_stream_arena, sizeof sr48_stream_arena);
     demo_hash_init(&k); /* the tool's --stats checksum */
     sink.tri = demo_hash_tri;
@@ -232,13 +208,13 @@ static int demo_sr48_stream(subd_arena *arena, const subd_mesh *in)
     t0 = port_cycles();
     st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    kv("stream arena bytes used (peak)", sa.peak);
-    kv("triangles", k.tris);
-    kv_hex("checksum", k.h);
-    kv64("instructions, stream + checksum sink", insns);
-    kv("instructions per triangle", (uint32_t)(insns / k.tris));
+    demo_kv("stream arena bytes used (peak)", sa.peak);
+    demo_kv("triangles", k.tris);
+    demo_kv_hex("checksum", k.h);
+    demo_kv64("instructions, stream + checksum sink", insns);
+    demo_kv("instructions per triangle", (uint32_t)(insns / k.tris));
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }
@@ -251,7 +227,7 @@ static int demo_icosahedron(subd_arena *arena)
     int st = subd_obj_plan(icosahedron_obj, sizeof icosahedron_obj - 1u, &plan, &d);
     print_str("icosahedron from OBJ text:\n");
     if (st != SUBD_OK) return st;
-    kv("arena bytes planned", plan);
+    demo_kv("arena bytes planned", plan);
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
     t0 = port_cycles();
     st = subd_obj_read(arena, icosahedron_obj, sizeof icosahedron_obj - 1u, &m, &d);
@@ -260,17 +236,17 @@ static int demo_icosahedron(subd_arena *arena)
         print_str("  at line ");
         print_u32(d.line);
         print_nl();
-        return report_error(st, &d);
+        return demo_fail(0, st, &d);
     }
-    kv("arena bytes used (peak)", arena->peak - mark);
-    kv("vertices", m.num_verts);
-    kv("faces", m.num_faces);
-    kv("edges", m.num_edges);
+    demo_kv("arena bytes used (peak)", arena->peak - mark);
+    demo_kv("vertices", m.num_verts);
+    demo_kv("faces", m.num_faces);
+    demo_kv("edges", m.num_edges);
     print_str("  euler characteristic ");
     print_i32(subd_mesh_euler(&m));
     print_nl();
-    kv("valence of vertex 0", subd_vertex_valence(&m, 0));
-    kv("instructions (parse + validate + adjacency)", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK);
+    demo_kv("valence of vertex 0", subd_vertex_valence(&m, 0));
+    demo_kv("instructions (parse + validate + adjacency)", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK);
     /* the schemes work on the mesh just read, above it in the same arena */
     if ((st = demo_loop(arena, &m)) != SUBD_OK) return st;
     if ((st = demo_limit(arena, &m)) != SUBD_OK) return st;
@@ -279,24 +255,6 @@ static int demo_icosahedron(subd_arena *arena)
     if ((st = demo_sr48_stream(arena, &m)) != SUBD_OK) return st;
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
-}
-
-static void kv64(const char *key, uint64_t v)
-{
-    print_str("  ");
-    print_str(key);
-    print_str(" ");
-    print_u64(v);
-    print_nl();
-}
-
-static void kv_hex(const char *key, uint32_t v)
-{
-    print_str("  ");
-    print_str(key);
-    print_str(" ");
-    print_hex32(v);
-    print_nl();
 }
 
 /* Streaming Loop, level 6, of the geodesic sphere: build the control mesh in the main arena,
@@ -319,19 +277,19 @@ static int demo_stream(subd_arena *arena)
     if ((st = demo_geo_build(&geo, &fl)) != SUBD_OK) return st;
     if ((st = subd_mesh_plan(&fl, &plan)) != SUBD_OK) return st;
     if (plan > subd_arena_free_bytes(arena)) return SUBD_ERR_NOMEM;
-    if ((st = subd_mesh_build(arena, &fl, &m, &d)) != SUBD_OK) return report_error(st, &d);
+    if ((st = subd_mesh_build(arena, &fl, &m, &d)) != SUBD_OK) return demo_fail(0, st, &d);
     for (v = 0; v < m.num_verts; v++)
         if (subd_vertex_valence(&m, v) > maxval) maxval = subd_vertex_valence(&m, v);
-    kv("control vertices", m.num_verts);
-    kv("control faces", m.num_faces);
-    kv("max valence", maxval);
-    kv("control mesh arena bytes (in the main arena)", arena->used - mark);
+    demo_kv("control vertices", m.num_verts);
+    demo_kv("control faces", m.num_faces);
+    demo_kv("max valence", maxval);
+    demo_kv("control mesh arena bytes (in the main arena)", arena->used - mark);
     o.levels = DEMO_STREAM_LEVELS;
     o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
     o.flags = 0;
     if ((st = subd_loop_stream_plan(&m, &o, &plan, 0)) != SUBD_OK) return st;
-    kv("stream arena bytes (static)", (uint32_t)sizeof stream_arena);
-    kv("stream arena bytes planned", plan);
+    demo_kv("stream arena bytes (static)", (uint32_t)sizeof stream_arena);
+    demo_kv("stream arena bytes planned", plan);
     if (plan > sizeof stream_arena) return SUBD_ERR_NOMEM;
     subd_arena_init(&sa, stream_arena, sizeof stream_arena);
     demo_hash_init(&hs);
@@ -340,38 +298,38 @@ static int demo_stream(subd_arena *arena)
     t0 = port_cycles();
     st = subd_loop_stream(&sa, &m, &o, &sink, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns_hash = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    kv("stream arena bytes used (peak)", sa.peak);
-    kv("triangles", hs.tris);
-    kv_hex("position hash (FNV-1a)", hs.h);
-    kv64("instructions, stream + checksum sink", insns_hash);
-    kv("instructions per triangle, stream + checksum sink", (uint32_t)(insns_hash / hs.tris));
+    demo_kv("stream arena bytes used (peak)", sa.peak);
+    demo_kv("triangles", hs.tris);
+    demo_kv_hex("position hash (FNV-1a)", hs.h);
+    demo_kv64("instructions, stream + checksum sink", insns_hash);
+    demo_kv("instructions per triangle, stream + checksum sink", (uint32_t)(insns_hash / hs.tris));
     sink.tri = demo_count_tri;
     sink.ctx = &count;
     t0 = port_cycles();
     st = subd_loop_stream(&sa, &m, &o, &sink, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns_count = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
     if (count != hs.tris) return SUBD_ERR_PARAM;
-    kv64("instructions, stream + counting sink", insns_count);
-    kv("instructions per triangle, stream + counting sink", (uint32_t)(insns_count / count));
+    demo_kv64("instructions, stream + counting sink", insns_count);
+    demo_kv("instructions per triangle, stream + counting sink", (uint32_t)(insns_count / count));
     /* limit mode: limit positions and unit normals, same triangles */
     o.flags = SUBD_LOOP_STREAM_LIMIT;
     if ((st = subd_loop_stream_plan(&m, &o, &plan, 0)) != SUBD_OK) return st;
-    kv("limit stream arena bytes planned", plan);
+    demo_kv("limit stream arena bytes planned", plan);
     if (plan > sizeof stream_limit_arena) return SUBD_ERR_NOMEM;
     subd_arena_init(&sa, stream_limit_arena, sizeof stream_limit_arena);
     count = 0;
     t0 = port_cycles();
     st = subd_loop_stream(&sa, &m, &o, &sink, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return report_error(st, &d);
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
     insns_count = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
     if (count != hs.tris) return SUBD_ERR_PARAM;
-    kv64("instructions, limit stream + counting sink", insns_count);
-    kv("instructions per triangle, limit stream + counting sink", (uint32_t)(insns_count / count));
+    demo_kv64("instructions, limit stream + counting sink", insns_count);
+    demo_kv("instructions per triangle, limit stream + counting sink", (uint32_t)(insns_count / count));
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }
@@ -392,7 +350,7 @@ int main(void)
     if (st == SUBD_OK) st = demo_stream(&arena);
     if (st == SUBD_OK) st = demo_sr48_chord(&arena);
     if (st == SUBD_OK) { extern int demo_pipe(void); st = demo_pipe(); } /* demo_pipe.c: issue 22's pipeline */
-    kv("stack bytes used", port_stack_used());
+    demo_kv("stack bytes used", port_stack_used());
     if (st != SUBD_OK) {
         print_str("demo failed: ");
         print_str(subd_status_str(st));

@@ -23,6 +23,7 @@
 #include "print.h"
 #include "port_cm.h"
 #include "demo_mesh.h" /* the checksum sink (demo_hash_tri) */
+#include "demo_print.h" /* demo_kv, demo_fail: the report lines */
 #include "demo_pipe_obj.h" /* static const char demo_pipe_obj[]: the OBJ text */
 
 #define DEMO_PIPE_LEVELS 3u
@@ -34,30 +35,6 @@ static uint8_t pipe_arena[48 * 1024] __attribute__((aligned(8)));
 static uint8_t pipe_stream_arena[SUBD_LOOP_ADAPT_STREAM_BYTES(DEMO_PIPE_LEVELS, DEMO_PIPE_MAX_VALENCE)]
     __attribute__((aligned(8)));
 
-
-static void pipe_kv(const char *key, uint32_t v)
-{
-    print_str("  ");
-    print_str(key);
-    print_str(" ");
-    print_u32(v);
-    print_nl();
-}
-
-static int pipe_fail(const char *what, int st, const subd_diag *d)
-{
-    print_str("  ");
-    print_str(what);
-    print_str(" failed: ");
-    print_str(subd_status_str(st));
-    if (st == SUBD_ERR_NOMEM) {
-        print_str(", needs ");
-        print_u32(d->bytes_needed);
-        print_str(" bytes");
-    }
-    print_nl();
-    return st;
-}
 
 int demo_pipe(void)
 {
@@ -75,28 +52,28 @@ int demo_pipe(void)
     int st;
     print_str("pipeline: points -> progressive interpolation -> adaptive Loop limit stream to a chord tolerance:\n");
     subd_arena_init(&a, pipe_arena, sizeof pipe_arena);
-    if ((st = subd_obj_read(&a, demo_pipe_obj, n, &m, &d)) != SUBD_OK) return pipe_fail("reading the points", st, &d);
+    if ((st = subd_obj_read(&a, demo_pipe_obj, n, &m, &d)) != SUBD_OK) return demo_fail("reading the points", st, &d);
     for (v = 0; v < m.num_verts; v++)
         if (subd_vertex_valence(&m, v) > maxval) maxval = subd_vertex_valence(&m, v);
-    if (maxval > DEMO_PIPE_MAX_VALENCE) return pipe_fail("valence", SUBD_ERR_TOO_BIG, &d);
-    pipe_kv("points (spot's control mesh, triangulated)", m.num_verts);
-    pipe_kv("triangles", m.num_faces);
-    pipe_kv("mesh arena bytes", a.used);
+    if (maxval > DEMO_PIPE_MAX_VALENCE) return demo_fail("valence", SUBD_ERR_TOO_BIG, &d);
+    demo_kv("points (spot's control mesh, triangulated)", m.num_verts);
+    demo_kv("triangles", m.num_faces);
+    demo_kv("mesh arena bytes", a.used);
 
     subd_pia_opts_default(&po);
     po.tol = SUBD_REAL_FRAC(1, 4096);
-    if ((st = subd_pia_plan(&m, &po, &plan, &d)) != SUBD_OK) return pipe_fail("pia plan", st, &d);
-    pipe_kv("pia arena bytes planned", plan);
+    if ((st = subd_pia_plan(&m, &po, &plan, &d)) != SUBD_OK) return demo_fail("pia plan", st, &d);
+    demo_kv("pia arena bytes planned", plan);
     subd_arena_reset_peak(&a);
     v = a.used;
     t0 = port_cycles();
     st = subd_pia(&a, &m, &po, &pos, &pr, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return pipe_fail("pia", st, &d);
-    pipe_kv("pia arena bytes used (peak)", a.peak - v);
-    pipe_kv("pia iterations (tol 2^-12)", pr.iterations);
-    pipe_kv("pia converged", (uint32_t)pr.converged);
-    pipe_kv("pia instructions", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK);
+    if (st != SUBD_OK) return demo_fail("pia", st, &d);
+    demo_kv("pia arena bytes used (peak)", a.peak - v);
+    demo_kv("pia iterations (tol 2^-12)", pr.iterations);
+    demo_kv("pia converged", (uint32_t)pr.converged);
+    demo_kv("pia instructions", (t1 - t0) * PORT_QEMU_INSNS_PER_TICK);
     fit = m;
     fit.pos = pos; /* the control mesh: the points' topology, the fitted positions */
 
@@ -107,9 +84,9 @@ int demo_pipe(void)
     ao.chord = SUBD_REAL_FRAC(1, 128);
     ao.face_level = 0;
     ao.user = 0;
-    if ((st = subd_loop_adapt_stream_plan(&fit, &ao, &plan, &d)) != SUBD_OK) return pipe_fail("stream plan", st, &d);
-    pipe_kv("stream arena bytes (static)", (uint32_t)sizeof pipe_stream_arena);
-    pipe_kv("stream arena bytes planned", plan);
+    if ((st = subd_loop_adapt_stream_plan(&fit, &ao, &plan, &d)) != SUBD_OK) return demo_fail("stream plan", st, &d);
+    demo_kv("stream arena bytes (static)", (uint32_t)sizeof pipe_stream_arena);
+    demo_kv("stream arena bytes planned", plan);
     subd_arena_init(&sa, pipe_stream_arena, sizeof pipe_stream_arena);
     demo_hash_init(&k);
     sink.tri = demo_hash_tri;
@@ -117,19 +94,15 @@ int demo_pipe(void)
     t0 = port_cycles();
     st = subd_loop_adapt_stream(&sa, &fit, &ao, &sink, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return pipe_fail("adaptive stream", st, &d);
+    if (st != SUBD_OK) return demo_fail("adaptive stream", st, &d);
     insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    pipe_kv("max level", DEMO_PIPE_LEVELS);
+    demo_kv("max level", DEMO_PIPE_LEVELS);
     print_str("  chord tolerance 2^-7 (0.0078125)\n");
-    pipe_kv("stream arena bytes used (peak)", sa.peak);
-    pipe_kv("adaptive triangles", k.tris);
-    pipe_kv("uniform level-L triangles", m.num_faces << (2u * DEMO_PIPE_LEVELS));
-    print_str("  pipeline checksum ");
-    print_hex32(k.h);
-    print_nl();
-    print_str("  instructions, adaptive stream + checksum sink ");
-    print_u64(insns);
-    print_nl();
-    pipe_kv("instructions per triangle", (uint32_t)(insns / (k.tris ? k.tris : 1u)));
+    demo_kv("stream arena bytes used (peak)", sa.peak);
+    demo_kv("adaptive triangles", k.tris);
+    demo_kv("uniform level-L triangles", m.num_faces << (2u * DEMO_PIPE_LEVELS));
+    demo_kv_hex("pipeline checksum", k.h);
+    demo_kv64("instructions, adaptive stream + checksum sink", insns);
+    demo_kv("instructions per triangle", (uint32_t)(insns / (k.tris ? k.tris : 1u)));
     return SUBD_OK;
 }

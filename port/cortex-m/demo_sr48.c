@@ -27,6 +27,7 @@
 #include "subd.h"
 #include "print.h"
 #include "port_cm.h"
+#include "demo_print.h" /* demo_kv, demo_fail: the report lines */
 #include "demo_mesh.h" /* the checksum sink (demo_hash_tri) */
 #include "corpus.h"
 #include "demo_sr48.h"
@@ -39,30 +40,6 @@
 #define DSR_RAM (4u * 1024u * 1024u) /* mps2-an386 / an385: 4 MiB of RAM (linker/mps2_*.ld)  */
 
 static uint8_t dsr_buf[SUBD_SR48_STREAM_CHORD_BYTES(DSR_STEPS, DSR_VALENCE)] __attribute__((aligned(8)));
-
-static void dsr_kv(const char *key, uint32_t v)
-{
-    print_str("  ");
-    print_str(key);
-    print_str(" ");
-    print_u32(v);
-    print_nl();
-}
-
-static int dsr_fail(const char *what, int st, const subd_diag *d)
-{
-    print_str("  error: ");
-    print_str(what);
-    print_str(": ");
-    print_str(subd_status_str(st));
-    if (st == SUBD_ERR_NOMEM && d) {
-        print_str(", needs ");
-        print_u32(d->bytes_needed);
-    }
-    print_nl();
-    return st == SUBD_OK ? SUBD_ERR_PARAM : st;
-}
-
 
 static uint32_t dsr_align(uint32_t n) { return (n + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u); }
 
@@ -109,7 +86,7 @@ static int dsr_check_counts(subd_arena *arena, const subd_mesh *m, const subd_sr
     o.steps = DSR_CHECK_STEPS;
     o.flags = 0;
     a2.max_level = DSR_CHECK_STEPS;
-    if ((st = subd_sr48_build(arena, m, &o, &h, &d)) != SUBD_OK) return dsr_fail("subd_sr48_build", st, &d);
+    if ((st = subd_sr48_build(arena, m, &o, &h, &d)) != SUBD_OK) return demo_fail("subd_sr48_build", st, &d);
     kept = dsr_counts(base, DSR_CHECK_STEPS, &c);
     ok = kept == subd_arena_mark(arena) - mark && c.num_verts == h.num_verts && c.num_tris == h.num_tris;
     for (k = 0; k <= DSR_CHECK_STEPS; k++) ok = ok && c.level_verts[k] == h.level_verts[k] && c.level_tri[k] == h.level_tri[k];
@@ -120,7 +97,7 @@ static int dsr_check_counts(subd_arena *arena, const subd_mesh *m, const subd_sr
         print_str("  error: the closed-form hierarchy counts differ from subd_sr48_build's\n");
         return SUBD_ERR_PARAM;
     }
-    dsr_kv("closed-form hierarchy counts = subd_sr48_build's at binary steps", DSR_CHECK_STEPS);
+    demo_kv("closed-form hierarchy counts = subd_sr48_build's at binary steps", DSR_CHECK_STEPS);
     return SUBD_OK;
 }
 
@@ -137,9 +114,9 @@ static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t
     uint64_t insns;
     int st;
     so.adapt = *ad;
-    if ((st = subd_sr48_stream_plan(base, &so, &plan, &d)) != SUBD_OK) return dsr_fail("subd_sr48_stream_plan", st, &d);
-    dsr_kv("stream arena bytes planned (subd_sr48_stream_plan)", plan);
-    if (plan > sizeof dsr_buf) return dsr_fail("the static buffer is below the plan", SUBD_ERR_NOMEM, 0);
+    if ((st = subd_sr48_stream_plan(base, &so, &plan, &d)) != SUBD_OK) return demo_fail("subd_sr48_stream_plan", st, &d);
+    demo_kv("stream arena bytes planned (subd_sr48_stream_plan)", plan);
+    if (plan > sizeof dsr_buf) return demo_fail("the static buffer is below the plan", SUBD_ERR_NOMEM, 0);
     subd_arena_init(&sa, dsr_buf, plan);
     demo_hash_init(&k);
     sink.tri = demo_hash_tri;
@@ -147,18 +124,14 @@ static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t
     t0 = port_cycles();
     st = subd_sr48_stream(&sa, base, &so, &sink, &d);
     t1 = port_cycles();
-    if (st != SUBD_OK) return dsr_fail("subd_sr48_stream", st, &d);
+    if (st != SUBD_OK) return demo_fail("subd_sr48_stream", st, &d);
     insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    dsr_kv("stream arena bytes used (peak)", sa.peak);
-    dsr_kv("output faces", k.tris);
-    print_str("  checksum ");
-    print_hex32(k.h);
-    print_nl();
-    print_str("  instructions, stream + checksum sink ");
-    print_u64(insns);
-    print_nl();
-    dsr_kv("instructions per output face", k.tris ? (uint32_t)(insns / k.tris) : 0u);
-    if (sa.peak != plan) return dsr_fail("the peak differs from the plan", SUBD_ERR_PARAM, 0);
+    demo_kv("stream arena bytes used (peak)", sa.peak);
+    demo_kv("output faces", k.tris);
+    demo_kv_hex("checksum", k.h);
+    demo_kv64("instructions, stream + checksum sink", insns);
+    demo_kv("instructions per output face", k.tris ? (uint32_t)(insns / k.tris) : 0u);
+    if (sa.peak != plan) return demo_fail("the peak differs from the plan", SUBD_ERR_PARAM, 0);
     *faces = k.tris;
     return SUBD_OK;
 }
@@ -175,46 +148,46 @@ int demo_sr48_chord(subd_arena *arena)
     uint32_t mark = subd_arena_mark(arena), clusters = 0, build = 0, extract = 0, kept, mat, faces = 0;
     int st;
     print_str("semi-regular 4-8 chordal stream (" DSR_MESH ", eps 0.01, 9 binary steps):\n");
-    if (!f) return dsr_fail("mesh not linked", SUBD_ERR_PARAM, 0);
-    if ((st = subd_obj_read(arena, f->data, f->len, &m, &d)) != SUBD_OK) return dsr_fail("subd_obj_read", st, &d);
+    if (!f) return demo_fail("mesh not linked", SUBD_ERR_PARAM, 0);
+    if ((st = subd_obj_read(arena, f->data, f->len, &m, &d)) != SUBD_OK) return demo_fail("subd_obj_read", st, &d);
     if ((st = subd_sr48_count_clusters(arena, &m, &clusters, &d)) != SUBD_OK)
-        return dsr_fail("subd_sr48_count_clusters", st, &d);
-    if ((st = subd_sr48_base(arena, &m, 0, &base, &d)) != SUBD_OK) return dsr_fail("subd_sr48_base", st, &d);
-    dsr_kv("input mesh + base mesh arena bytes (main arena)", subd_arena_mark(arena) - mark);
-    dsr_kv("base triangles", base.level_tri[1]);
+        return demo_fail("subd_sr48_count_clusters", st, &d);
+    if ((st = subd_sr48_base(arena, &m, 0, &base, &d)) != SUBD_OK) return demo_fail("subd_sr48_base", st, &d);
+    demo_kv("input mesh + base mesh arena bytes (main arena)", subd_arena_mark(arena) - mark);
+    demo_kv("base triangles", base.level_tri[1]);
     memset(&ad, 0, sizeof ad);
     ad.mode = SUBD_SR48_ADAPT_CHORD;
     ad.max_level = DSR_STEPS;
     p = eps_text;
-    if ((st = subd_real_parse(&p, eps_text + 4, &ad.eps)) != SUBD_OK) return dsr_fail("eps", st, 0);
-    if (!dsr_closed(&base)) return dsr_fail("the closed form needs a closed mesh", SUBD_ERR_PARAM, 0);
+    if ((st = subd_real_parse(&p, eps_text + 4, &ad.eps)) != SUBD_OK) return demo_fail("eps", st, 0);
+    if (!dsr_closed(&base)) return demo_fail("the closed form needs a closed mesh", SUBD_ERR_PARAM, 0);
     if ((st = dsr_check_counts(arena, &m, &base, &ad)) != SUBD_OK) return st;
 
     /* the materialised path at DSR_STEPS, from the plans */
     o.steps = DSR_STEPS;
     o.flags = 0;
-    if ((st = subd_sr48_plan(&m, &o, clusters, &build, &d)) != SUBD_OK) return dsr_fail("subd_sr48_plan", st, &d);
+    if ((st = subd_sr48_plan(&m, &o, clusters, &build, &d)) != SUBD_OK) return demo_fail("subd_sr48_plan", st, &d);
     kept = dsr_counts(&base, DSR_STEPS, &c);
     if ((st = subd_sr48_extract_plan(&c, &ad, &extract, &d)) != SUBD_OK)
-        return dsr_fail("subd_sr48_extract_plan", st, &d);
+        return demo_fail("subd_sr48_extract_plan", st, &d);
     mat = kept + extract > build ? kept + extract : build;
-    dsr_kv("materialised: subd_sr48_build plan (peak)", build);
-    dsr_kv("materialised: hierarchy kept", kept);
-    dsr_kv("materialised: + subd_sr48_extract_plan(CHORD)", extract);
-    dsr_kv("materialised: bytes needed, max(build, kept + extract)", mat);
-    dsr_kv("board RAM bytes", DSR_RAM);
-    dsr_kv("static stream buffer bytes, SUBD_SR48_STREAM_CHORD_BYTES(9, 10)", (uint32_t)sizeof dsr_buf);
-    if (mat <= DSR_RAM) return dsr_fail("the materialised hierarchy would fit the RAM", SUBD_ERR_PARAM, 0);
+    demo_kv("materialised: subd_sr48_build plan (peak)", build);
+    demo_kv("materialised: hierarchy kept", kept);
+    demo_kv("materialised: + subd_sr48_extract_plan(CHORD)", extract);
+    demo_kv("materialised: bytes needed, max(build, kept + extract)", mat);
+    demo_kv("board RAM bytes", DSR_RAM);
+    demo_kv("static stream buffer bytes, SUBD_SR48_STREAM_CHORD_BYTES(9, 10)", (uint32_t)sizeof dsr_buf);
+    if (mat <= DSR_RAM) return demo_fail("the materialised hierarchy would fit the RAM", SUBD_ERR_PARAM, 0);
 
     print_str("chordal stream, eps 0.01, 9 binary steps:\n");
     if ((st = dsr_stream(&base, &ad, &faces)) != SUBD_OK) return st;
-    dsr_kv("faces of uniform level 9", base.level_tri[1] << DSR_STEPS);
+    demo_kv("faces of uniform level 9", base.level_tri[1] << DSR_STEPS);
     {
         subd_sr48_stream_opts so;
         uint32_t plan = 0;
         so.adapt = ad;
         if (subd_sr48_stream_plan(&base, &so, &plan, 0) != SUBD_OK || plan != sizeof dsr_buf)
-            return dsr_fail("the static buffer is not the plan", SUBD_ERR_PARAM, 0);
+            return demo_fail("the static buffer is not the plan", SUBD_ERR_PARAM, 0);
     }
 
     print_str("uniform stream, 6 binary steps (same base):\n");

@@ -16,6 +16,11 @@
  * and input vertices, its normal mode gives the fixed mode's bits on a mesh in z = 0 and
  * commutes with a 90-degree rotation about z; equal alpha tags give the untagged bits.
  *
+ * Length (~820 lines): one adapter per scheme (run + checks: Loop with its stream and limit,
+ * PIA, quasi 4-8, semi-regular 4-8, alpha curves and surfaces) behind one entry, because one
+ * input drives every scheme on the same decoded mesh; the decoder and the shared checks live
+ * in fuzz_mesh.h and fuzz_check.c.
+ *
  * FZ_AVOID_KNOWN (default 0) keeps the decoder away from bugs reported but not yet fixed; it
  * kept the cosh kernel's large angles out while their int64 overflow (issue 13) was open. */
 #include "fuzz_check.h"

@@ -89,6 +89,8 @@ typedef struct la_layout {
     subd_mesh view;
     uint16_t *smap, *fmap;
     loop_wcache *wc; /* the smooth rule's weights, cached (subd_reals and a word: arena data) */
+    subd_real *pc;   /* CHORD, L <= SUBD_LOOP_ADAPT_PC_LEVELS_: one face's level-L limit points (else NULL) */
+    uint32_t *pbits; /* which of them are filled                                            */
     uint32_t size1, total;
 } la_layout;
 
@@ -113,6 +115,13 @@ static int la_layout_walk(subd_arena *a, uint32_t levels, uint32_t valence, la_l
     l->smap = subd_layout_take(&y, s0, 2u);
     l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
     l->wc = subd_layout_take(&y, 1u, (uint32_t)sizeof(loop_wcache));
+    l->pc = 0;
+    l->pbits = 0;
+    if (levels <= SUBD_LOOP_ADAPT_PC_LEVELS_) {
+        uint32_t np = SUBD_LOOP_ADAPT_PC_POINTS_(levels);
+        l->pc = subd_layout_take(&y, np, 3u * (uint32_t)sizeof(subd_real));
+        l->pbits = subd_layout_take(&y, (np + 31u) / 32u, 4u);
+    }
     return subd_layout_end(&y, &l->total);
 }
 
@@ -209,6 +218,7 @@ typedef struct la_state {
     la_iter it;
     uint32_t pre; /* CHORD: the pre-pass (la_prepass) has run                        */
     uint32_t uni; /* CHORD: every face at this uniform level, or SUBD_NONE: adaptive */
+    uint32_t pcf; /* the control face whose level-L points lay.pc holds, or SUBD_NONE  */
 } la_state;
 SUBD_STREAM_STATE_FITS(la_state);
 
@@ -250,12 +260,58 @@ static void la_limit_corner(la_state *s, uint32_t j, subd_real *pos, subd_real *
     subd_loop_limit_vertex(&s->lay.view, s->o.loop.boundary, p.pos, j, pos, nrm, &s->ovf);
 }
 
-/* The limit point of lattice point x: descends into the first child that contains it. */
+/* Index of lattice point x (a + b <= n) in the point cache: row b holds n + 1 - b points. */
+static uint32_t la_pc_index(la_pt x, int32_t n)
+{
+    return (uint32_t)(x.b * (n + 1) - x.b * (x.b - 1) / 2 + x.a);
+}
+
+/* Fills the point cache with face gf's level-L limit points: the level-L triangles depth
+ * first (la_goto re-extracts only below the first differing child, as the uniform stream
+ * does), each corner once. A point's value does not depend on the patch that has it as a
+ * corner (see Values above), so the cache holds la_eval_point's bits. */
+static void la_pc_fill(la_state *s)
+{
+    uint32_t L = s->o.loop.levels, np = SUBD_LOOP_ADAPT_PC_POINTS_(L), cnt = (uint32_t)1 << (2u * L), sub, k, i;
+    int32_t n = (int32_t)1 << L;
+    uint8_t d[SUBD_MAX_LEVELS + 1u];
+    la_pt t[3];
+    for (i = 0; i < (np + 31u) / 32u; i++) s->lay.pbits[i] = 0;
+    d[0] = 0;
+    for (sub = 0; sub < cnt; sub++) {
+        int moved = 0;
+        la_sub_corners(sub, L, n, t);
+        for (k = 0; k < 3u; k++) {
+            uint32_t x = la_pc_index(t[k], n);
+            if (s->lay.pbits[x / 32u] & (1u << (x % 32u))) continue;
+            if (!moved) {
+                for (i = 1; i <= L; i++) d[i] = (uint8_t)((sub >> (2u * (L - i))) & 3u);
+                la_goto(s, d);
+                moved = 1;
+            }
+            la_limit_corner(s, k, s->lay.pc + 3u * x, 0);
+            s->lay.pbits[x / 32u] |= 1u << (x % 32u);
+        }
+    }
+    s->pcf = s->gf;
+}
+
+/* The limit point of lattice point x: descends into the first child that contains it (or,
+ * without a normal, from the point cache when there is one). */
 static void la_eval_point(la_state *s, la_pt x, subd_real *pos, subd_real *nrm)
 {
     uint32_t L = s->o.loop.levels, k, c, j = 0;
     uint8_t d[SUBD_MAX_LEVELS + 1u];
     la_pt t[3];
+    if (!nrm && s->lay.pc) {
+        const subd_real *p;
+        if (s->pcf != s->gf) la_pc_fill(s);
+        p = s->lay.pc + 3u * la_pc_index(x, (int32_t)1 << L);
+        pos[0] = p[0];
+        pos[1] = p[1];
+        pos[2] = p[2];
+        return;
+    }
     la_root(t, (int32_t)1 << L);
     d[0] = 0;
     for (k = 1; k <= L; k++) {
@@ -280,7 +336,7 @@ static void la_eval_corner(la_state *s, const la_tri *t, uint32_t c, subd_real *
 {
     uint32_t L = s->o.loop.levels, l = s->fc.l, k;
     uint8_t d[SUBD_MAX_LEVELS + 1u];
-    if (t->sub == LA_NO_SUB) {
+    if (t->sub == LA_NO_SUB || (!nrm && s->lay.pc)) {
         la_eval_point(s, t->p[c], pos, nrm);
         return;
     }
@@ -894,6 +950,7 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
     s->view_ok = 0;
     s->pre = 0;
     s->uni = SUBD_NONE;
+    s->pcf = SUBD_NONE;
     s->impl.step = la_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;

@@ -107,12 +107,14 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
      SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + SUBD_LOOP_SA_(SUBD_LOOP_ADAPT_WCACHE_) + SUBD_LOOP_ADAPT_PC_BYTES_(L))
 #define SUBD_LOOP_ADAPT_WCACHE_ 132u /* the smooth rule's weight cache (16 pairs and a word) */
 /* The point cache (L <= 4): one face's level-L limit points (3 subd_reals each, 4 bytes in both
- * arithmetics) and a bit per point; none above level 4, so the plan at 8 levels is unchanged. */
+ * arithmetics), a bit per point and 64 remembered (face, own level) pairs; none above level 4,
+ * so the plan at 8 levels is unchanged. */
 #define SUBD_LOOP_ADAPT_PC_LEVELS_ 4u
 #define SUBD_LOOP_ADAPT_PC_POINTS_(L) ((((uint32_t)1 << (L)) + 1u) * (((uint32_t)1 << (L)) + 2u) / 2u)
 #define SUBD_LOOP_ADAPT_PC_BYTES_(L) \
     ((L) <= SUBD_LOOP_ADAPT_PC_LEVELS_ ? SUBD_LOOP_SA_(12u * SUBD_LOOP_ADAPT_PC_POINTS_(L)) + \
-     SUBD_LOOP_SA_(4u * ((SUBD_LOOP_ADAPT_PC_POINTS_(L) + 31u) / 32u)) : 0u)
+     SUBD_LOOP_SA_(4u * ((SUBD_LOOP_ADAPT_PC_POINTS_(L) + 31u) / 32u)) + 8u * SUBD_LOOP_ADAPT_MEMO_ : 0u)
+#define SUBD_LOOP_ADAPT_MEMO_ 64u /* with the point cache: faces' own levels remembered */
 
 #ifdef __cplusplus
 }

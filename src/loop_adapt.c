@@ -91,6 +91,7 @@ typedef struct la_layout {
     loop_wcache *wc; /* the smooth rule's weights, cached (subd_reals and a word: arena data) */
     subd_real *pc;   /* CHORD, L <= SUBD_LOOP_ADAPT_PC_LEVELS_: one face's level-L limit points (else NULL) */
     uint32_t *pbits; /* which of them are filled                                            */
+    uint32_t *memo;  /* with pc: SUBD_LOOP_ADAPT_MEMO_ (face, own level) pairs, by face mod the count */
     uint32_t size1, total;
 } la_layout;
 
@@ -117,10 +118,12 @@ static int la_layout_walk(subd_arena *a, uint32_t levels, uint32_t valence, la_l
     l->wc = subd_layout_take(&y, 1u, (uint32_t)sizeof(loop_wcache));
     l->pc = 0;
     l->pbits = 0;
+    l->memo = 0;
     if (levels <= SUBD_LOOP_ADAPT_PC_LEVELS_) {
         uint32_t np = SUBD_LOOP_ADAPT_PC_POINTS_(levels);
         l->pc = subd_layout_take(&y, np, 3u * (uint32_t)sizeof(subd_real));
         l->pbits = subd_layout_take(&y, (np + 31u) / 32u, 4u);
+        l->memo = subd_layout_take(&y, 2u * SUBD_LOOP_ADAPT_MEMO_, 4u);
     }
     return subd_layout_end(&y, &l->total);
 }
@@ -729,11 +732,13 @@ static int la_face_ok(la_state *s)
 }
 
 /* CHORD: the smallest level at which face g's uniform triangles (every edge at that level)
- * hold its level-L limit points within eps (L: always). */
+ * hold its level-L limit points within eps (L: always). A function of g alone, asked by g
+ * and by its three neighbours in each pass: remembered in lay.memo when there is one. */
 static uint32_t la_face_own(la_state *s, uint32_t g)
 {
-    uint32_t L = s->o.loop.levels, l, j;
+    uint32_t L = s->o.loop.levels, l, j, *mm = s->lay.memo ? s->lay.memo + 2u * (g % SUBD_LOOP_ADAPT_MEMO_) : 0;
     la_face keep = s->fc;
+    if (mm && mm[0] == g) return mm[1];
     s->gf = g;
     for (l = 0; l < L; l++) {
         s->fc.l = l;
@@ -743,6 +748,10 @@ static uint32_t la_face_own(la_state *s, uint32_t g)
     }
     s->fc = keep;
     s->gf = s->f;
+    if (mm && !s->ovf) {
+        mm[0] = g;
+        mm[1] = l;
+    }
     return l;
 }
 
@@ -750,7 +759,7 @@ static uint32_t la_face_own(la_state *s, uint32_t g)
 static void la_face_levels(la_state *s)
 {
     const subd_mesh *in = s->in;
-    uint32_t L = s->o.loop.levels, j, f = s->f, l, own;
+    uint32_t L = s->o.loop.levels, j, f = s->f, l, own, og[3];
     la_face *fc = &s->fc;
     if (s->o.mode == SUBD_LOOP_ADAPT_CALLBACK) {
         uint32_t lf = s->o.face_level(s->o.user, f);
@@ -766,14 +775,18 @@ static void la_face_levels(la_state *s)
         return;
     }
     l = 0;
+    for (j = 0; j < 3u; j++) { /* the neighbours first: face f's points stay in the cache after */
+        uint32_t tw = in->twin[3u * f + j];
+        og[j] = tw == SUBD_NONE ? SUBD_NONE : la_face_own(s, tw / 3u);
+    }
     own = la_face_own(s, f);
     for (j = 0; j < 3u; j++) {
-        uint32_t tw = in->twin[3u * f + j], o1 = own, o2;
+        uint32_t o1 = own, o2;
         fc->e[j] = la_edge_chord(s, j);
         /* not below the level both faces would take uniformly (la_face_own: a function of
          * the face alone, so both faces compute the same): a coarser edge would force its
          * faces into transitions finer than they need */
-        o2 = tw == SUBD_NONE ? o1 : la_face_own(s, tw / 3u);
+        o2 = og[j] == SUBD_NONE ? o1 : og[j];
         if (o2 < o1) o1 = o2;
         if (o1 > fc->e[j]) fc->e[j] = o1;
         if (fc->e[j] > l) l = fc->e[j];
@@ -951,6 +964,8 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
     s->pre = 0;
     s->uni = SUBD_NONE;
     s->pcf = SUBD_NONE;
+    if (lay.memo)
+        for (f = 0; f < SUBD_LOOP_ADAPT_MEMO_; f++) lay.memo[2u * f] = SUBD_NONE;
     s->impl.step = la_step;
     s->impl.ring = &s->ring;
     s->impl.ring_items = ring;

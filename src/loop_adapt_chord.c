@@ -34,8 +34,11 @@
  *     fine levels, the bound |x - p|_1 + 8 LSB, p the triangle's point at x's barycentric
  *     coordinates (>= the Euclidean distance, so Q16.16 refines more). Either way the
  *     distance to the emitted mesh is within eps: an exact check on the points the guarantee
- *     is about, not an estimate; its cost is about one uniform level-L pass per level tried
- *     (the output is what is adaptive, not the work).
+ *     is about, not an estimate. Work: at L <= 4 a face's level-L limit points are computed
+ *     once into a point cache (loop_adapt.c's la_pc_fill: one depth-first pass over the
+ *     face's level-L triangles) that every level tried reads, and faces' own levels are
+ *     remembered in 64 slots (face mod 64); above level 4 each level tried re-evaluates its
+ *     points (about one uniform level-L pass per level tried).
  *   CHORD fallback (subd_la_prepass): the level choice runs once over the whole mesh before the
  *     first triangle, counting the adaptive cut's triangles A and taking U = the largest
  *     own level; if A > 4^U F and every face passes the check at U (checked again: a face's

@@ -30,7 +30,9 @@ typedef struct subd_loop_adapt_opts {
 /* subd_loop_adapt_stream_plan: the exact arena bytes of the adaptive stream (*bytes) =
  * SUBD_LOOP_ADAPT_STREAM_BYTES(L, N) for max level L and largest valence N of the input
  * (the uniform limit stream's: one control face's 1-ring per level 0..L, level L's mesh
- * view, one extraction's scratch, the run state and a one-triangle ring).
+ * view, one extraction's scratch, the run state and a one-triangle ring; at L <= 4 also
+ * CHORD's point cache: one face's level-L limit points, a bit each, and 64 remembered own
+ * levels, 1 856 + 512 bytes at L = 4, none above).
  * Memory: no arena use.
  * Errors: as subd_loop_stream_plan with SUBD_LOOP_STREAM_LIMIT (SUBD_ERR_PARAM,
  *   SUBD_ERR_NOT_TRIANGLES with diag.face, SUBD_ERR_TOO_BIG), and SUBD_ERR_PARAM for a NULL
@@ -51,9 +53,11 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   unchanged. The arena is always back where it was.
  * Cost: CALLBACK: per emitted triangle O(L) patch extractions at most (descents share their
  *   upper levels). CHORD: per control face, per edge about L 2^L limit evaluations and, per
- *   level tried for the face, one evaluation of every level-L lattice point of the face:
- *   about the uniform limit stream's work per tried level, for the face and for each
- *   neighbour's own level (the output is adaptive, the check is exhaustive); all of it twice
+ *   level tried for the face, one distance test of every level-L lattice point of the face,
+ *   for the face and for each neighbour's own level (the output is adaptive, the check is
+ *   exhaustive); the points themselves: at L <= 4 computed once per face visit into the
+ *   point cache (about one uniform level-L pass of the face), above that once per level
+ *   tried; all of it twice
  *   (a pass before the first triangle decides between the adaptive cut and the uniform
  *   fallback, see CHORD below).
  * Notes: every vertex is the limit point of a lattice point (a, b) of its control face (units

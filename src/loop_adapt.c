@@ -451,6 +451,7 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
     s->pre = 0;
     s->uni = SUBD_NONE;
     s->pcf = SUBD_NONE;
+    s->nb = 0;
     if (lay.memo)
         for (f = 0; f < SUBD_LOOP_ADAPT_MEMO_; f++) lay.memo[2u * f] = SUBD_NONE;
     s->impl.step = la_step;

@@ -222,6 +222,51 @@ static int la_tri_holds(la_state *s, const la_tri *t, la_pt x, const subd_real *
     return sum > 0 && la_within(s, y, c[0], c[1], c[2], SUBD_REAL_FRAC(w1, sum), SUBD_REAL_FRAC(w2, sum));
 }
 
+/* CHORD's fallback check (s->nb: every face at uniform level l = s->fc.l): 1 when a level-l
+ * triangle of an edge neighbour, one with an edge on the shared control edge within one
+ * level-l step of x's parameter along it, holds y (x within one level-l step of that edge).
+ * Such a triangle is emitted when every face is at l. Its corners are evaluated with a
+ * normal (so past the point cache, which keeps face f's points). */
+static int la_twin_holds(la_state *s, la_pt x, const subd_real *y)
+{
+    const subd_mesh *in = s->in;
+    uint32_t L = s->o.loop.levels, l = s->fc.l, j, k, c;
+    int32_t n = (int32_t)1 << L, step = n >> l, m = (int32_t)1 << l, t, dist, sidx, i;
+    la_pt r[3];
+    int ok = 0;
+    la_root(r, n);
+    for (j = 0; !ok && j < 3u; j++) {
+        uint32_t tw = in->twin[3u * s->f + j];
+        dist = j == 0u ? x.b : j == 1u ? n - x.a - x.b : x.a;
+        t = j == 0u ? x.a : j == 1u ? x.b : n - x.b; /* from corner j towards corner j + 1 */
+        if (tw == SUBD_NONE || dist > step) continue;
+        k = tw % 3u;
+        t = n - t; /* the twin's parameter: from its corner k (f's corner j + 1) */
+        s->gf = tw / 3u;
+        for (i = -1; !ok && i <= 1; i++) {
+            la_tri q;
+            subd_real cc[3][3], nrm[3];
+            int32_t a0;
+            sidx = t / step + i;
+            if (t == n) sidx--;
+            if (sidx < 0 || sidx >= m) continue;
+            a0 = sidx * step;
+            q.sub = LA_NO_SUB;
+            q.p[0].a = r[k].a + (r[(k + 1u) % 3u].a - r[k].a) / n * a0;
+            q.p[0].b = r[k].b + (r[(k + 1u) % 3u].b - r[k].b) / n * a0;
+            q.p[1].a = q.p[0].a + (r[(k + 1u) % 3u].a - r[k].a) / n * step;
+            q.p[1].b = q.p[0].b + (r[(k + 1u) % 3u].b - r[k].b) / n * step;
+            q.p[2].a = q.p[0].a + (r[(k + 2u) % 3u].a - r[k].a) / n * step;
+            q.p[2].b = q.p[0].b + (r[(k + 2u) % 3u].b - r[k].b) / n * step;
+            for (c = 0; c < 3u; c++) subd_la_eval_point(s, q.p[c], cc[c], nrm);
+            ok = la_within(s, y, cc[0], cc[1], cc[2],
+                           t <= a0 ? 0 : t >= a0 + step ? SUBD_REAL_ONE : SUBD_REAL_FRAC(t - a0, step), 0);
+        }
+        s->gf = s->f;
+    }
+    return ok;
+}
+
 /* CHORD, when y is farther than eps from the triangle containing x: 1 when another triangle
  * of the face's triangulation (s->fc) near x holds it (all of them are emitted, so any is a
  * sound witness): the uniform level-l triangles of the 3 x 3 lattice cells around x that the
@@ -253,7 +298,7 @@ static int la_near_holds(la_state *s, la_pt x, const subd_real *y)
                         if (l < 2u || t.p[k].a < step || t.p[k].b < step || t.p[k].a + t.p[k].b > n - step) keep = 0;
                 if (keep && la_tri_holds(s, &t, x, y)) return 1;
             }
-    if (!fc->trans) return 0;
+    if (!fc->trans) return s->nb && la_twin_holds(s, x, y);
     it.phase = 1;
     it.j = it.io = it.ii = 0;
     while (subd_la_next(fc, L, &it, &t)) {
@@ -393,7 +438,7 @@ void subd_la_face_uniform(la_face *fc, uint32_t u)
  * choice over the mesh (the emission pass repeats it): about twice the work, no memory. */
 int subd_la_prepass(la_state *s, subd_diag *d)
 {
-    uint32_t L = s->o.loop.levels, F = s->in->num_faces, f, u = 0, ok = 1;
+    uint32_t L = s->o.loop.levels, F = s->in->num_faces, f, u = 0, ok = 1, l;
     uint64_t adapt = 0;
     la_iter it;
     la_tri t;
@@ -403,14 +448,29 @@ int subd_la_prepass(la_state *s, subd_diag *d)
         if (s->ovf) break;
         it.phase = it.j = it.io = it.ii = 0;
         while (subd_la_next(&s->fc, L, &it, &t)) adapt++;
-        if (s->fc.own > u) u = s->fc.own;
+        /* the face's smallest uniform level with its edge neighbours' triangles as
+         * witnesses too (at most its own level, which passes without them) */
+        s->nb = 1;
+        for (l = 0; l < s->fc.own; l++) {
+            la_face keep = s->fc;
+            subd_la_face_uniform(&s->fc, l);
+            ok = la_face_ok(s) && !s->ovf;
+            s->fc = keep;
+            if (ok) break;
+        }
+        s->nb = 0;
+        if (l > u) u = l;
     }
-    if (!s->ovf && adapt > ((uint64_t)F << (2u * u)) && u < L)
+    ok = 1;
+    if (!s->ovf && adapt > ((uint64_t)F << (2u * u)) && u < L) {
+        s->nb = 1;
         for (f = 0; ok && f < F; f++) {
             s->f = s->gf = f;
             subd_la_face_uniform(&s->fc, u);
             ok = la_face_ok(s) && !s->ovf;
         }
+        s->nb = 0;
+    }
     if (s->ovf) {
         d->face = s->f;
         return SUBD_ERR_RANGE;

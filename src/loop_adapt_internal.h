@@ -113,6 +113,8 @@ typedef struct la_state {
     uint32_t pre; /* CHORD: the pre-pass (la_prepass) has run                        */
     uint32_t uni; /* CHORD: every face at this uniform level, or SUBD_NONE: adaptive */
     uint32_t pcf; /* the control face whose level-L points lay.pc holds, or SUBD_NONE  */
+    uint32_t nb;  /* CHORD's fallback check: every face uniform at fc.l, so the edge
+                   * neighbours' triangles are emitted too and may hold a point          */
 } la_state;
 /* loop_adapt.c: the limit point (and normal, if nrm) of lattice point x of face s->gf; of
  * corner c of triangle t of the current face's triangulation; the triangulation's next

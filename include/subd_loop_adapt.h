@@ -79,8 +79,9 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   Q16.16: |x - p|_1 plus 8 LSB, p a point of the triangle: x's barycentric coordinates,
  *   negative ones set to 0; a larger bound), else L. Fallback: before the first triangle the
  *   stream counts the adaptive cut's triangles; when they exceed the 4^U F of the uniform
- *   level U = the largest of the faces' own levels (the smallest level whose uniform
- *   triangles hold the face's level-L points by the same check) and every face passes the
+ *   level U = the largest over the faces of the smallest level whose uniform triangles (the
+ *   face's own, or its edge neighbours' beside the shared edge: at a uniform level all are
+ *   emitted) hold the face's level-L points by the same check, and every face passes that
  *   check at U, every face is emitted at U instead (same guarantee, fewer triangles).
  *   Guarantee: every vertex of the uniform limit stream at level L lies within eps
  *   (Euclidean) of the emitted mesh.

@@ -41,9 +41,13 @@
  *     points (about one uniform level-L pass per level tried).
  *   CHORD fallback (subd_la_prepass): the level choice runs once over the whole mesh before the
  *     first triangle, counting the adaptive cut's triangles A and taking U = the largest
- *     own level; if A > 4^U F and every face passes the check at U (checked again: a face's
- *     own level is only the first that passes), every face is emitted at U, uniformly: the
- *     stream never emits more than that uniform level, at the price of a second pass.
+ *     over the faces of the smallest uniform level that passes the check with the edge
+ *     neighbours' uniform triangles beside the shared edge as witnesses too (la_twin_holds:
+ *     at a uniform level every face's triangles are emitted, so the cycle that keeps the
+ *     adaptive check to a face's own triangles is not there); if A > 4^U F and every face
+ *     passes that check at U (checked again: the level per face is only the first that
+ *     passes), every face is emitted at U, uniformly: the stream never emits more than that
+ *     uniform level, at the price of a second pass.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_adapt_internal.h"

@@ -30,7 +30,9 @@ typedef struct subd_loop_adapt_opts {
 /* subd_loop_adapt_stream_plan: the exact arena bytes of the adaptive stream (*bytes) =
  * SUBD_LOOP_ADAPT_STREAM_BYTES(L, N) for max level L and largest valence N of the input
  * (the uniform limit stream's: one control face's 1-ring per level 0..L, level L's mesh
- * view, one extraction's scratch, the run state and a one-triangle ring).
+ * view, one extraction's scratch, the run state and a one-triangle ring; at L <= 4 also
+ * CHORD's point cache: one face's level-L limit points, a bit each, and 64 remembered own
+ * levels, 1 856 + 512 bytes at L = 4, none above).
  * Memory: no arena use.
  * Errors: as subd_loop_stream_plan with SUBD_LOOP_STREAM_LIMIT (SUBD_ERR_PARAM,
  *   SUBD_ERR_NOT_TRIANGLES with diag.face, SUBD_ERR_TOO_BIG), and SUBD_ERR_PARAM for a NULL
@@ -51,9 +53,11 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   unchanged. The arena is always back where it was.
  * Cost: CALLBACK: per emitted triangle O(L) patch extractions at most (descents share their
  *   upper levels). CHORD: per control face, per edge about L 2^L limit evaluations and, per
- *   level tried for the face, one evaluation of every level-L lattice point of the face:
- *   about the uniform limit stream's work per tried level, for the face and for each
- *   neighbour's own level (the output is adaptive, the check is exhaustive); all of it twice
+ *   level tried for the face, one distance test of every level-L lattice point of the face,
+ *   for the face and for each neighbour's own level (the output is adaptive, the check is
+ *   exhaustive); the points themselves: at L <= 4 computed once per face visit into the
+ *   point cache (about one uniform level-L pass of the face), above that once per level
+ *   tried; all of it twice
  *   (a pass before the first triangle decides between the adaptive cut and the uniform
  *   fallback, see CHORD below).
  * Notes: every vertex is the limit point of a lattice point (a, b) of its control face (units
@@ -75,8 +79,9 @@ int subd_loop_adapt_stream_plan(const subd_mesh *in, const subd_loop_adapt_opts 
  *   Q16.16: |x - p|_1 plus 8 LSB, p a point of the triangle: x's barycentric coordinates,
  *   negative ones set to 0; a larger bound), else L. Fallback: before the first triangle the
  *   stream counts the adaptive cut's triangles; when they exceed the 4^U F of the uniform
- *   level U = the largest of the faces' own levels (the smallest level whose uniform
- *   triangles hold the face's level-L points by the same check) and every face passes the
+ *   level U = the largest over the faces of the smallest level whose uniform triangles (the
+ *   face's own, or its edge neighbours' beside the shared edge: at a uniform level all are
+ *   emitted) hold the face's level-L points by the same check, and every face passes that
  *   check at U, every face is emitted at U instead (same guarantee, fewer triangles).
  *   Guarantee: every vertex of the uniform limit stream at level L lies within eps
  *   (Euclidean) of the emitted mesh.
@@ -104,8 +109,17 @@ int subd_loop_adapt_stream_begin(subd_arena *a, const subd_mesh *in, const subd_
     (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_((uint32_t)sizeof(subd_tri)) + SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + \
      SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + ((L) - 1u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
      SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) + \
-     SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + SUBD_LOOP_SA_(SUBD_LOOP_ADAPT_WCACHE_))
+     SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + SUBD_LOOP_SA_(SUBD_LOOP_ADAPT_WCACHE_) + SUBD_LOOP_ADAPT_PC_BYTES_(L))
 #define SUBD_LOOP_ADAPT_WCACHE_ 132u /* the smooth rule's weight cache (16 pairs and a word) */
+/* The point cache (L <= 4): one face's level-L limit points (3 subd_reals each, 4 bytes in both
+ * arithmetics), a bit per point and 64 remembered (face, own level) pairs; none above level 4,
+ * so the plan at 8 levels is unchanged. */
+#define SUBD_LOOP_ADAPT_PC_LEVELS_ 4u
+#define SUBD_LOOP_ADAPT_PC_POINTS_(L) ((((uint32_t)1 << (L)) + 1u) * (((uint32_t)1 << (L)) + 2u) / 2u)
+#define SUBD_LOOP_ADAPT_PC_BYTES_(L) \
+    ((L) <= SUBD_LOOP_ADAPT_PC_LEVELS_ ? SUBD_LOOP_SA_(12u * SUBD_LOOP_ADAPT_PC_POINTS_(L)) + \
+     SUBD_LOOP_SA_(4u * ((SUBD_LOOP_ADAPT_PC_POINTS_(L) + 31u) / 32u)) + 8u * SUBD_LOOP_ADAPT_MEMO_ : 0u)
+#define SUBD_LOOP_ADAPT_MEMO_ 64u /* with the point cache: faces' own levels remembered */
 
 #ifdef __cplusplus
 }

@@ -101,4 +101,13 @@ void subd_lp_view_fill(const sp_level *p, subd_mesh *m);
 uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels);
 /* Largest valence of the input (outgoing half-edges, plus one on a boundary). */
 uint32_t subd_lp_max_valence(const subd_mesh *in);
+/* Level k's arrays in a Loop stream's layout (loop_stream.c, loop_adapt.c): level 0's block
+ * lev0 at offsets off0, level k >= 1's the (k-1)-th block of size1 bytes from lev1 at offsets
+ * off1, the header head[k]. */
+static inline void subd_lp_level_at(sp_head *head, uint8_t *lev0, uint8_t *lev1, uint32_t size1, const uint32_t *off0,
+                                    const uint32_t *off1, uint32_t k, sp_level *lv)
+{
+    lv->h = head + k;
+    subd_lp_level_bind(k == 0u ? lev0 : lev1 + (k - 1u) * size1, k == 0u ? off0 : off1, lv);
+}
 #endif

@@ -158,10 +158,7 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
 
 static void level_at(const sp_layout *l, uint32_t k, sp_level *lv)
 {
-    const uint32_t *off = k == 0u ? l->off0 : l->off1;
-    uint8_t *b = k == 0u ? l->lev0 : l->lev1 + (k - 1u) * l->size1;
-    lv->h = l->head + k;
-    subd_lp_level_bind(b, off, lv);
+    subd_lp_level_at(l->head, l->lev0, l->lev1, l->size1, l->off0, l->off1, k, lv);
 }
 
 /* ------------------------------------------------------------------------------------ */

@@ -522,6 +522,140 @@ static void loop_adapt_chord(void)
 }
 
 /* ------------------------------------------------------------------------------------ */
+/* Why CHORD can exceed the coarsest uniform level (issue 22): two properties of the crease
+ * cube at L = 2, eps 1/20, by brute force in double on the uniform level-L vertices (u) and
+ * the uniform level-1 triangles (w):
+ *  (a) some face's vertices are farther than eps from ITS OWN level-1 triangles although
+ *      every vertex is within eps of the level-1 triangles of the faces around its face: a
+ *      check that reads only a face's own triangles cannot accept level 1 for that face, so
+ *      the adaptive cut is finer than uniform level 1 (more than 4 F triangles); CHORD's
+ *      uniform fallback therefore also takes the edge neighbours' triangles as witnesses
+ *      (all faces are emitted at that level), and in float32 emits at most 4 F here;
+ *  (b) (B-spline boundary rule) some edge's level-L points are farther than eps from its
+ *      level-1 chord polyline although one of its faces has all its vertices within eps of
+ *      its own level-1 triangles: the edge's chord test (a segment, the one thing both faces
+ *      emit, which a face at level L relies on) is stricter than that face's own test, so it
+ *      forces the face to level 2 (the library's own check "rejecting" level 1 there). */
+
+/* Worst (distance / eps)^2 of face f's vertices of u to face f's triangles of w (own) or to
+ * those of the faces sharing a vertex with f. */
+static double la_face_worst(const subd_mesh *in, const la_coll *u, const la_coll *w, uint32_t f, double eps, int own)
+{
+    uint32_t i, j, k, t;
+    double worst = 0;
+    for (i = 0; i < u->n; i++) {
+        if (u->t[i].face != f) continue;
+        for (j = 0; j < 3u; j++) {
+            double p[3], best = 1e300;
+            for (k = 0; k < 3u; k++) p[k] = la_d(u->t[i].pos[j][k]);
+            for (t = 0; t < w->n; t++) {
+                double a[3], b[3], c[3], d2;
+                if (own ? w->t[t].face != f : !la_share_vertex(in, f, w->t[t].face)) continue;
+                for (k = 0; k < 3u; k++) {
+                    a[k] = la_d(w->t[t].pos[0][k]);
+                    b[k] = la_d(w->t[t].pos[1][k]);
+                    c[k] = la_d(w->t[t].pos[2][k]);
+                }
+                d2 = la_pt_tri2(p, a, b, c);
+                if (d2 < best) best = d2;
+            }
+            if (best / (eps * eps) > worst) worst = best / (eps * eps);
+        }
+    }
+    return worst;
+}
+
+/* The position of the vertex with id `id` in u (1 when found). */
+static int la_pos_of(const la_coll *u, uint64_t id, double *p)
+{
+    uint32_t i, j, k;
+    for (i = 0; i < u->n; i++)
+        for (j = 0; j < 3u; j++)
+            if (u->t[i].id[j] == id) {
+                for (k = 0; k < 3u; k++) p[k] = la_d(u->t[i].pos[j][k]);
+                return 1;
+            }
+    return 0;
+}
+
+/* Worst (distance / eps)^2 of the level-L points of the edge of half-edge h to its level-1
+ * chord polyline (ends and middle, as limit points; ids by subd_loop.h's formula: an edge
+ * point's id is num_verts + min(h, twin) (2^L - 1) + pos - 1, pos counted from the end with
+ * the smaller vertex). */
+static double la_edge_worst(const subd_mesh *in, const la_coll *u, uint32_t h, uint32_t L, double eps)
+{
+    uint32_t n = 1u << L, pos, hc = in->twin[h] != SUBD_NONE && in->twin[h] < h ? in->twin[h] : h;
+    uint32_t v0 = in->corner_vert[h], v1 = in->corner_vert[h % 3u == 2u ? h - 2u : h + 1u];
+    uint64_t base = (uint64_t)in->num_verts + (uint64_t)hc * (n - 1u);
+    double e0[3], em[3], e1[3], worst = 0;
+    if (v0 > v1) {
+        uint32_t x = v0;
+        v0 = v1;
+        v1 = x;
+    }
+    if (!CHECK(la_pos_of(u, v0, e0) && la_pos_of(u, v1, e1) && la_pos_of(u, base + n / 2u - 1u, em))) return 0;
+    for (pos = 1; pos < n; pos++) {
+        double p[3], d2;
+        if (pos == n / 2u || !CHECK(la_pos_of(u, base + pos - 1u, p))) continue;
+        d2 = pos < n / 2u ? la_pt_tri2(p, e0, em, em) : la_pt_tri2(p, em, e1, e1); /* a segment */
+        if (d2 / (eps * eps) > worst) worst = d2 / (eps * eps);
+    }
+    return worst;
+}
+
+static void loop_adapt_chord_why(void)
+{
+    uint32_t L = 2, one = 1, f, h, rule, own_fails = 0, edge_strict = 0;
+    for (rule = 0; rule < 2u; rule++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_loop_adapt_opts o;
+        la_coll u, w, c;
+        subd_real eps = SUBD_REAL_FRAC(1, 20);
+        double e = la_d(eps), nb_worst = 0;
+        subd_loop_boundary b = rule ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER;
+        subd_arena_init(&a, LA_BUF, LA_BYTES);
+        if (!la_shape(A_CUBE_CREASE, &a, &in)) return;
+        la_coll_init(&u, &a, in.num_faces << (2u * L));
+        la_coll_init(&w, &a, in.num_faces << 2u);
+        la_coll_init(&c, &a, in.num_faces << (2u * L));
+        if (!CHECK(c.cap != 0u) || !la_uniform(&a, &in, L, b, &u)) return;
+        la_opts(&o, L, b, SUBD_LOOP_ADAPT_CALLBACK, eps);
+        o.face_level = la_level_of;
+        o.user = &one;
+        if (!la_run(&a, &in, &o, &w)) return;
+        la_opts(&o, L, b, SUBD_LOOP_ADAPT_CHORD, eps);
+        if (!la_run(&a, &in, &o, &c)) return;
+        for (f = 0; f < in.num_faces; f++) {
+            double wn = la_face_worst(&in, &u, &w, f, e, 0);
+            if (wn > nb_worst) nb_worst = wn;
+            if (rule == 0u && la_face_worst(&in, &u, &w, f, e, 1) > 1.0) own_fails++;
+        }
+        if (rule == 0u) { /* (a) */
+            CHECK(nb_worst <= 1.0);           /* uniform level 1 meets eps with the neighbours */
+            CHECK(own_fails > 0u);            /* but not face by face */
+            /* a face-by-face check refines further; CHORD's fallback also reads the edge
+             * neighbours' uniform triangles, so (float32: Euclidean distances) it reaches
+             * level 1: 4 F triangles at most */
+            if (!SUBD_FIXED) CHECK(c.n <= (in.num_faces << 2u));
+        } else {                               /* (b) */
+            for (h = 0; h < in.num_corners; h++) {
+                uint32_t tw = in.twin[h];
+                if (tw == SUBD_NONE || tw < h || la_edge_worst(&in, &u, h, L, e) <= 1.0) continue;
+                if (la_face_worst(&in, &u, &w, h / 3u, e, 1) <= 1.0 || la_face_worst(&in, &u, &w, tw / 3u, e, 1) <= 1.0)
+                    edge_strict++;
+            }
+            CHECK(edge_strict > 0u);
+        }
+    }
+    h_str("  crease cube L 2 eps 1/20: faces failing their own level-1 triangles ");
+    h_u32(own_fails);
+    h_str(", edges whose chord test is stricter than a face's own ");
+    h_u32(edge_strict);
+    h_nl();
+}
+
+/* ------------------------------------------------------------------------------------ */
 /* Plan, errors, pull form, stop                                                          */
 
 static void loop_adapt_plan_16k(void)
@@ -684,6 +818,7 @@ const test_case suite_loop_adapt[] = {
     {"loop_adapt_uniform", loop_adapt_uniform},
     {"loop_adapt_watertight", loop_adapt_watertight},
     {"loop_adapt_chord", loop_adapt_chord},
+    {"loop_adapt_chord_why", loop_adapt_chord_why},
     {"loop_adapt_plan_16k", loop_adapt_plan_16k},
     {"loop_adapt_errors", loop_adapt_errors},
     {"loop_adapt_pull", loop_adapt_pull},

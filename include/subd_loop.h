@@ -232,9 +232,18 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_STREAM_BYTES_(L, N, lim) \
     (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_(((lim) ? 1u : (L) >= 2u ? 16u : 4u) * (uint32_t)sizeof(subd_tri)) + \
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
-     ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + \
-     SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+     SUBD_LOOP_STK_(L, lim) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+     (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim) ? SUBD_LOOP_SDEEP_(L, N, lim) \
+                                                                              : SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim)) + \
+     SUBD_LOOP_TTAB_(SUBD_LOOP_TD_(L)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+/* levels with a cache (1..L-2, limit mode 1..L-1); of them, those above the tile's level
+ * (1..L-t); the region below, which the tile's block shares: the other cached levels and
+ * limit mode's level L with its mesh view */
+#define SUBD_LOOP_SCACHED_(L, lim) ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u)
+#define SUBD_LOOP_STK_(L, lim) (SUBD_LOOP_TD_(L) ? (L) - SUBD_LOOP_TD_(L) : SUBD_LOOP_SCACHED_(L, lim))
+#define SUBD_LOOP_SDEEP_(L, N, lim) \
+    ((SUBD_LOOP_SCACHED_(L, lim) - SUBD_LOOP_STK_(L, lim)) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u))
 /* limit mode's masks: the limit masks' per-valence caches and the valence-6 masks */
 #define SUBD_LOOP_SMASK_ 352u
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
@@ -255,9 +264,11 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
                SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
                SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQM_(t, lim) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQM_(t, lim))) + \
                2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)) + \
-               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) + \
+               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + \
                ((lim) ? 2u * SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
          : 0u)
+/* the tile's emission table (its own block, filled once per stream) */
+#define SUBD_LOOP_TTAB_(t) ((t) ? SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) : 0u)
 
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */

@@ -97,7 +97,9 @@ typedef struct sp_layout {
     sp_view view;       /* limit mode: level L's patch as a subd_mesh (arrays only) for
                          * loop_limit.c's masks                                             */
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
-    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2      */
+    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2: it
+                            * shares memory with the levels below the tile's               */
+    uint8_t *tab;          /* the tile's emission table                                     */
     sp_masks *mk;          /* limit mode: the limit masks' caches                          */
     uint32_t tdepth;       /* levels a tile refines: min(SUBD_LOOP_TILE_LEVELS, L); 0: none */
     uint32_t size1, total;
@@ -127,11 +129,16 @@ static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 }
 
 /* The one layout (layout.h's walk: counts with a == NULL, carves otherwise;
- * SUBD_LOOP_STREAM_BYTES_ is the same sum). */
+ * SUBD_LOOP_STREAM_BYTES_ is the same sum). Levels 1..tk (the tile's level) come first;
+ * the deeper levels (and limit mode's level L and its view) share one region with the
+ * tile's block: while a tile is made and emitted the walk is at level tk and the deeper
+ * levels are idle, and a level below tk is built only after the tile is done or refused
+ * (subd_lt_start writes its block only at level tk, before any deeper level exists). */
 static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
     subd_layout y;
-    uint32_t s0, s1, cached;
+    uint32_t s0, s1, cached, tk, r0, tb;
+    uint8_t *region;
     l->n = valence < 6u ? 6u : valence;
     s0 = 3u * l->n;
     s1 = l->n + 12u;
@@ -142,16 +149,23 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
     /* levels with a cache: 1..L-2 (the last two levels are emitted from L-2's), limit mode
      * 1..L-1; then limit mode's level L and its mesh view */
     cached = limit ? levels - 1u : levels >= 2u ? levels - 2u : 0u;
-    l->lev1 = subd_layout_take(&y, cached, l->size1);
+    l->tdepth = tile_depth(levels);
+    tk = l->tdepth ? levels - l->tdepth : cached; /* tk <= cached */
+    l->lev1 = subd_layout_take(&y, tk, l->size1);
+    region = subd_layout_take(&y, 0u, 1u); /* where the next array starts (carving) */
+    r0 = y.bytes;
+    (void)subd_layout_take(&y, cached - tk, l->size1);
     if (limit) {
         (void)subd_layout_take(&y, 1u, subd_lp_level_layout(s1, 0, 0, l->off1)); /* at lev1 + cached * size1 */
         view_layout(&y, s1, &l->view);
     }
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
+    tb = l->tdepth ? subd_lt_layout(l->tdepth, limit, 0) : 0u;
+    if (y.bytes != UINT32_MAX && tb > y.bytes - r0) (void)subd_layout_take(&y, tb - (y.bytes - r0), 1u);
+    l->tile = l->tdepth ? region : 0;
+    l->tab = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_tab_bytes(l->tdepth)) : 0;
     l->smap = subd_layout_take(&y, s0, 2u);
     l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
-    l->tdepth = tile_depth(levels);
-    l->tile = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_layout(l->tdepth, limit, 0)) : 0;
     l->mk = limit ? (sp_masks *)(void *)subd_layout_take(&y, 1u, SUBD_LOOP_SMASK_) : 0;
     return subd_layout_end(&y, &l->total);
 }
@@ -466,7 +480,7 @@ static void sp_enter(sp_state *s, const sp_level *p)
     const subd_loop_opts *o = &s->o;
     if (s->lay.tdepth && s->k == s->tk) {
         lt_tile tl;
-        subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth, (int)s->limit);
+        subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
             s->ton = 1;
             s->tq = s->tj = s->tready = 0;
@@ -524,7 +538,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
     int st;
     const subd_real *nr;
     subd_tri *one = (subd_tri *)(void *)q->one;
-    subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth, (int)s->limit);
+    subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
     tl.lk = s->limit ? &s->lay.mk->lk : 0;
     nr = tl.qnrm;
     n = 1u << (2u * (tl.depth - 1u));
@@ -688,7 +702,7 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->tk = o->levels - lay.tdepth;
     if (lay.tdepth) {
         lt_tile tl;
-        subd_lt_carve(&tl, lay.tile, lay.tdepth, limit);
+        subd_lt_carve(&tl, lay.tile, lay.tab, lay.tdepth, limit);
         subd_lt_table(&tl);
     }
     if (limit) {

@@ -70,13 +70,19 @@ uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
     off[LT_BROT] = b; subd_size_add(&b, nB, 2u);
     off[LT_BLOW] = b; subd_size_add(&b, nB, 1u);
     off[LT_QID] = b;  subd_size_add(&b, qn, 8u);
-    off[LT_TAB] = b;  subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
     off[LT_LPOS] = b; subd_size_add(&b, nl, rs);
     off[LT_LNRM] = b; subd_size_add(&b, nl, rs);
     return b;
 }
 
-void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t, int limit)
+uint32_t subd_lt_tab_bytes(uint32_t t)
+{
+    uint32_t b = 0, m = 1u << (t - 1u);
+    subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
+    return b;
+}
+
+void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int limit)
 {
     uint32_t off[LT_N];
     (void)subd_lt_layout(t, limit, off);
@@ -93,7 +99,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t, int limit)
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
     tl->qid = (uint32_t *)(void *)(block + off[LT_QID]);
-    tl->tab = block + off[LT_TAB];
+    tl->tab = tab;
     tl->depth = t;
 }
 

@@ -569,7 +569,7 @@ static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
     p.cflag = 0;
     p.cface = (uint32_t *)(void *)(blk + off[A_CFACE]);
     p.cvert = (uint32_t *)(void *)(blk + off[A_CVERT]);
-    subd_lt_carve(&tl, tb, 4u, 0);
+    subd_lt_carve(&tl, tb, 0, 4u, 0); /* subd_lt_start needs no table */
     for (f = 0; f < m->num_faces; f++) {
         int r;
         subd_lp_build_control(m, f, &p, 4u);

@@ -233,14 +233,15 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_(((lim) ? 1u : (L) >= 2u ? 16u : 4u) * (uint32_t)sizeof(subd_tri)) + \
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      SUBD_LOOP_STK_(L, lim) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim) ? SUBD_LOOP_SDEEP_(L, N, lim) \
-                                                                              : SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim)) + \
-     SUBD_LOOP_TTAB_(SUBD_LOOP_TD_(L)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+     (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim), lim) ? SUBD_LOOP_SDEEP_(L, N, lim) \
+                                                                              : SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim), lim)) + \
+     SUBD_LOOP_TTAB_(SUBD_LOOP_TD_(L, lim)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
 /* levels with a cache (1..L-2, limit mode 1..L-1); of them, those above the tile's level
- * (1..L-t); the region below, which the tile's block shares: the other cached levels and
- * limit mode's level L with its mesh view */
+ * tk = L-t (1..tk-1); the region from level max(tk, 1) on, which the tile's block shares: the
+ * other cached levels and limit mode's level L with its mesh view */
 #define SUBD_LOOP_SCACHED_(L, lim) ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u)
-#define SUBD_LOOP_STK_(L, lim) (SUBD_LOOP_TD_(L) ? (L) - SUBD_LOOP_TD_(L) : SUBD_LOOP_SCACHED_(L, lim))
+#define SUBD_LOOP_STK_(L, lim) \
+    (SUBD_LOOP_TD_(L, lim) ? ((L) > SUBD_LOOP_TD_(L, lim) ? (L) - SUBD_LOOP_TD_(L, lim) - 1u : 0u) : SUBD_LOOP_SCACHED_(L, lim))
 #define SUBD_LOOP_SDEEP_(L, N, lim) \
     ((SUBD_LOOP_SCACHED_(L, lim) - SUBD_LOOP_STK_(L, lim)) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
      ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u))
@@ -251,8 +252,9 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * second's positions also hold a quarter of the last level, side 2^(t-1); limit mode: with a
  * one-vertex margin, side 2^(t-1) + 3), the quarter's ids and its emission table; limit mode
  * adds the quarter's limit positions and normals. */
-#define SUBD_LOOP_TMIN_(L) ((uint32_t)(L) < (uint32_t)SUBD_LOOP_TILE_LEVELS ? (uint32_t)(L) : (uint32_t)SUBD_LOOP_TILE_LEVELS)
-#define SUBD_LOOP_TD_(L) (SUBD_LOOP_TMIN_(L) < 2u ? 0u : SUBD_LOOP_TMIN_(L))
+#define SUBD_LOOP_TCFG_(lim) ((lim) ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS)
+#define SUBD_LOOP_TMIN_(L, lim) ((uint32_t)(L) < SUBD_LOOP_TCFG_(lim) ? (uint32_t)(L) : SUBD_LOOP_TCFG_(lim))
+#define SUBD_LOOP_TD_(L, lim) (SUBD_LOOP_TMIN_(L, lim) < 2u ? 0u : SUBD_LOOP_TMIN_(L, lim))
 #define SUBD_LOOP_TCNT_(s) (((s) + 1u) * ((s) + 2u) / 2u)
 #define SUBD_LOOP_TC_(t) ((t) < 2u ? 2u : (t))
 #define SUBD_LOOP_TNA_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 1u)) + 3u)

@@ -105,10 +105,11 @@ typedef struct sp_layout {
     uint32_t size1, total;
 } sp_layout;
 
-/* Levels of a tile: SUBD_LOOP_TILE_LEVELS, at most L; none below 2. */
-static uint32_t tile_depth(uint32_t levels)
+/* Levels of a tile: SUBD_LOOP_TILE_LEVELS (limit mode: _LIMIT), at most L; none below 2. */
+static uint32_t tile_depth(uint32_t levels, int limit)
 {
-    uint32_t t = levels < (uint32_t)SUBD_LOOP_TILE_LEVELS ? levels : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+    uint32_t c = limit ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+    uint32_t t = levels < c ? levels : c;
     return t < 2u ? 0u : t;
 }
 
@@ -129,15 +130,17 @@ static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 }
 
 /* The one layout (layout.h's walk: counts with a == NULL, carves otherwise;
- * SUBD_LOOP_STREAM_BYTES_ is the same sum). Levels 1..tk (the tile's level) come first;
- * the deeper levels (and limit mode's level L and its view) share one region with the
- * tile's block: while a tile is made and emitted the walk is at level tk and the deeper
- * levels are idle, and a level below tk is built only after the tile is done or refused
- * (subd_lt_start writes its block only at level tk, before any deeper level exists). */
+ * SUBD_LOOP_STREAM_BYTES_ is the same sum). Levels 1..tk-1 (tk: the tile's level) come
+ * first; level tk, the deeper levels and limit mode's level L with its view share one
+ * region with the tile's block: while a tile is made and emitted the walk is at level tk,
+ * the deeper levels are idle and level tk's patch is not read again (subd_lt_start reads
+ * all of it before it writes the tile, and writes nothing when it refuses the patch; the
+ * walk rebuilds level tk before its next use); a level below tk is built only after the
+ * tile is done or refused. Level 0 (tk = 0) stays outside. */
 static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
     subd_layout y;
-    uint32_t s0, s1, cached, tk, r0, tb;
+    uint32_t s0, s1, cached, above, r0, tb;
     uint8_t *region;
     l->n = valence < 6u ? 6u : valence;
     s0 = 3u * l->n;
@@ -149,12 +152,13 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
     /* levels with a cache: 1..L-2 (the last two levels are emitted from L-2's), limit mode
      * 1..L-1; then limit mode's level L and its mesh view */
     cached = limit ? levels - 1u : levels >= 2u ? levels - 2u : 0u;
-    l->tdepth = tile_depth(levels);
-    tk = l->tdepth ? levels - l->tdepth : cached; /* tk <= cached */
-    l->lev1 = subd_layout_take(&y, tk, l->size1);
+    l->tdepth = tile_depth(levels, limit);
+    /* levels above the region: 1..tk-1, tk = L - tdepth <= cached */
+    above = l->tdepth ? (levels > l->tdepth ? levels - l->tdepth - 1u : 0u) : cached;
+    l->lev1 = subd_layout_take(&y, above, l->size1);
     region = subd_layout_take(&y, 0u, 1u); /* where the next array starts (carving) */
     r0 = y.bytes;
-    (void)subd_layout_take(&y, cached - tk, l->size1);
+    (void)subd_layout_take(&y, cached - above, l->size1);
     if (limit) {
         (void)subd_layout_take(&y, 1u, subd_lp_level_layout(s1, 0, 0, l->off1)); /* at lev1 + cached * size1 */
         view_layout(&y, s1, &l->view);

@@ -315,7 +315,11 @@ static uint32_t lt_dir_of(int32_t ddx, int32_t ddy)
 int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
 {
     const lt_grid *g = &tl->g[(tl->depth - 1u) & 1u];
-    uint8_t lx[12], ly[12], used[30];
+    /* everything is read from the patch and checked first, then written: the stream lends
+     * the tile the patch's own memory (loop_stream.c's layout), and a refused patch must
+     * stay whole */
+    uint8_t lx[12], ly[12], used[30], cdir[3], rot[30], low[15];
+    subd_real pos[36];
     uint32_t c, k, f, v, t;
     loop_weights w;
     if (p->h->nv != 12u || p->h->nf != 13u) return 0;
@@ -331,7 +335,7 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
             if (nbr[k] == (c + 1u) % 3u) s = (2u * c + 6u - k) % 6u; /* corner c -> c+1: direction 2c */
         }
         if (s == 6u) return 0;
-        g->dir[lt_vi(4u, lx[c], ly[c])] = (uint8_t)s;
+        cdir[c] = (uint8_t)s;
         for (k = 0; k < 6u; k++) {
             uint32_t d = (s + k) % 6u, u = nbr[k];
             uint8_t x = (uint8_t)((int32_t)lx[c] + lt_dx[d]), y = (uint8_t)((int32_t)ly[c] + lt_dy[d]);
@@ -349,14 +353,15 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         q = lt_vi(4u, lx[v], ly[v]);
         if (used[q]) return 0;
         used[q] = 1;
-        g->pos[3u * q] = p->pos[3u * v];
-        g->pos[3u * q + 1u] = p->pos[3u * v + 1u];
-        g->pos[3u * q + 2u] = p->pos[3u * v + 2u];
+        pos[3u * v] = p->pos[3u * v];
+        pos[3u * v + 1u] = p->pos[3u * v + 1u];
+        pos[3u * v + 2u] = p->pos[3u * v + 2u];
     }
     for (k = 0; k < 15u; k++) {
-        g->low[k] = 0;
+        low[k] = 0;
         used[k] = 0;
     }
+    for (k = 15u; k < 30u; k++) used[k] = 0;
     for (f = 0; f < 13u; f++) { /* faces: lattice triangles, counter-clockwise */
         uint32_t u0 = p->cv[3u * f], u1 = p->cv[3u * f + 1u], u2 = p->cv[3u * f + 2u], d, r, dn, i, j, q;
         const uint8_t(*off)[2];
@@ -372,13 +377,24 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         q = 2u * lt_vi(4u, i, j) + dn;
         if (used[q]) return 0;
         used[q] = 1;
-        g->rot[q] = (uint8_t)r;
+        rot[q] = (uint8_t)r;
         if (!dn)
             for (k = 0; k < 3u; k++) {
                 uint32_t h = 3u * f + k, tw = p->tw[h];
-                if (tw < LP_TW_BORDER && h < tw) g->low[lt_vi(4u, i, j)] = (uint8_t)(g->low[lt_vi(4u, i, j)] | (1u << ((r + k) % 3u)));
+                if (tw < LP_TW_BORDER && h < tw) low[lt_vi(4u, i, j)] = (uint8_t)(low[lt_vi(4u, i, j)] | (1u << ((r + k) % 3u)));
             }
     }
+    /* the patch is regular: level 0 of the tile */
+    for (c = 0; c < 3u; c++) g->dir[lt_vi(4u, lx[c], ly[c])] = cdir[c];
+    for (v = 0; v < 12u; v++) {
+        uint32_t q = lt_vi(4u, lx[v], ly[v]);
+        g->pos[3u * q] = pos[3u * v];
+        g->pos[3u * q + 1u] = pos[3u * v + 1u];
+        g->pos[3u * q + 2u] = pos[3u * v + 2u];
+    }
+    for (k = 0; k < 30u; k++)
+        if (used[k]) g->rot[k] = rot[k];
+    for (k = 0; k < 15u; k++) g->low[k] = low[k];
     w = subd_loop_weights_of(wc, 6u, ovf);
     for (t = 0; t + 1u < tl->depth; t++)
         lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], 1, w, ovf);

@@ -280,8 +280,10 @@ static void stream_plan(void)
         o.flags = SUBD_LOOP_STREAM_LIMIT;
         CHECK_OK(subd_loop_stream_plan(&tet, &o, &p2, 0), &d0);
         CHECK_EQ(p2, SUBD_LOOP_STREAM_BYTES_LIMIT(l, 6));
-        /* limit mode keeps level L-1 and L, a mesh view, the masks' caches and a bigger tile */
-        CHECK(p2 > p1);
+        /* limit mode keeps level L-1 and L, a mesh view and the masks' caches; its tile
+         * (SUBD_LOOP_TILE_LEVELS_LIMIT) may be smaller, so the plans compare only without
+         * tiles (one level) */
+        if (l == 1u) CHECK(p2 > p1);
         o.flags = 0;
         CHECK_OK(subd_loop_stream_plan(&cube, &o, &p2, 0), &d0);
         CHECK_EQ(p2, p1);

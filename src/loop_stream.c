@@ -530,6 +530,37 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
         }
 }
 
+/* Push form, plain mode: quarter triangles j0..n-1 of the table straight to the sink through
+ * the one item t (face, level and zero normals already written); *at: the triangle the
+ * sink stopped at (its value returned), else n. The hot loop of the stream: the fewest
+ * loads and stores per triangle, the sink called without the queue between. */
+static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at)
+{
+    int (*fn)(void *, const subd_tri *) = ts->tri;
+    void *ctx = ts->ctx;
+    const uint8_t *ix = tl->tab + 3u * j0;
+    const subd_real *P = tl->qpos;
+    const uint32_t *I = tl->qid;
+    uint32_t j;
+    for (j = j0; j < n; j++, ix += 3) {
+        uint32_t a = ix[0], b = ix[1], c = ix[2];
+        const subd_real *x0 = P + 3u * a, *x1 = P + 3u * b, *x2 = P + 3u * c;
+        int st;
+        t->pos[0][0] = x0[0]; t->pos[0][1] = x0[1]; t->pos[0][2] = x0[2];
+        t->pos[1][0] = x1[0]; t->pos[1][1] = x1[1]; t->pos[1][2] = x1[2];
+        t->pos[2][0] = x2[0]; t->pos[2][1] = x2[1]; t->pos[2][2] = x2[2];
+        t->id[0] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);
+        t->id[1] = (uint64_t)I[2u * b] | ((uint64_t)I[2u * b + 1u] << 32);
+        t->id[2] = (uint64_t)I[2u * c] | ((uint64_t)I[2u * c + 1u] << 32);
+        if ((st = fn(ctx, t)) != 0) {
+            *at = j;
+            return st;
+        }
+    }
+    *at = n;
+    return 0;
+}
+
 /* The tile's triangles, quarter by quarter, each quarter's in subd_loop's order (its table);
  * stops when the caller's buffer is full (ton stays set: the next step goes on here).
  * Push form: the sink gets the one item each time (const), so the fields that do not change
@@ -562,6 +593,14 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
             s->tready = 1;
             s->tj = 0;
         }
+        if (one && !nr && q->ts) { /* push, plain: the hot loop */
+            if (q->stop) return 0;
+            if ((st = tile_push(&tl, s->tj, n, one, q->ts, &tj)) != 0) {
+                q->stop = st; /* as subd_stream_q_commit leaves it */
+                s->tj = tj + 1u;
+                return st;
+            }
+        } else
         for (tj = s->tj; tj < n; tj++) {
             const uint8_t *ix = tl.tab + 3u * tj;
             const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];

@@ -185,11 +185,21 @@ static inline void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t 
     l0 = lt_vi(s, ui, uj);
     row = s + 1u - uj;
     if (even) {
-        uint32_t dd = g->dir[l0], k, off[6];
+        /* the ring twice over, so that its six from the ring start are r[0..5]: the adds
+         * unrolled, in the ring's order */
+        uint32_t k, off[6];
+        const subd_real *q[12], *const *r;
         subd_acc acc[3];
         lt_ring_offsets(row, off);
+        for (k = 0; k < 6u; k++) q[k] = q[k + 6u] = P + 3u * (l0 + off[k]);
+        r = q + g->dir[l0];
         loop_smooth_begin(acc, w, P + 3u * l0);
-        for (k = 0; k < 6u; k++, dd = dd == 5u ? 0u : dd + 1u) loop_smooth_add(acc, w, P + 3u * (l0 + off[dd]));
+        loop_smooth_add(acc, w, r[0]);
+        loop_smooth_add(acc, w, r[1]);
+        loop_smooth_add(acc, w, r[2]);
+        loop_smooth_add(acc, w, r[3]);
+        loop_smooth_add(acc, w, r[4]);
+        loop_smooth_add(acc, w, r[5]);
         loop_smooth_end(out, acc, ovf);
     } else {
         uint32_t a, b, c, e;

@@ -530,12 +530,14 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
         }
 }
 
-/* Push form, plain mode: quarter triangles j0..n-1 of the table straight to the sink through
- * the one item t (face, level and zero normals already written); *at: the triangle the
- * sink stopped at (its value returned), else n. The hot loop of the stream: the fewest
- * loads and stores per triangle, the sink called without the queue between. */
+/* Push form: quarter triangles j0..n-1 of the table straight to the sink through the one
+ * item t (face and level already written; plain mode: zero normals too, limit mode: the
+ * quarter's normals tl->qnrm are copied); *at: the triangle the sink stopped at (its value
+ * returned), else n. The hot loop of the stream: the fewest loads and stores per triangle,
+ * the sink called without the queue between. */
 static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at)
 {
+    const subd_real *N = tl->qnrm;
     int (*fn)(void *, const subd_tri *) = ts->tri;
     void *ctx = ts->ctx;
     const uint8_t *ix = tl->tab + 3u * j0;
@@ -552,6 +554,12 @@ static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, co
         t->id[0] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);
         t->id[1] = (uint64_t)I[2u * b] | ((uint64_t)I[2u * b + 1u] << 32);
         t->id[2] = (uint64_t)I[2u * c] | ((uint64_t)I[2u * c + 1u] << 32);
+        if (N) {
+            const subd_real *n0 = N + 3u * a, *n1 = N + 3u * b, *n2 = N + 3u * c;
+            t->normal[0][0] = n0[0]; t->normal[0][1] = n0[1]; t->normal[0][2] = n0[2];
+            t->normal[1][0] = n1[0]; t->normal[1][1] = n1[1]; t->normal[1][2] = n1[2];
+            t->normal[2][0] = n2[0]; t->normal[2][1] = n2[1]; t->normal[2][2] = n2[2];
+        }
         if ((st = fn(ctx, t)) != 0) {
             *at = j;
             return st;
@@ -593,7 +601,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
             s->tready = 1;
             s->tj = 0;
         }
-        if (one && !nr && q->ts) { /* push, plain: the hot loop */
+        if (one && q->ts) { /* push: the hot loop */
             if (q->stop) return 0;
             if ((st = tile_push(&tl, s->tj, n, one, q->ts, &tj)) != 0) {
                 q->stop = st; /* as subd_stream_q_commit leaves it */

@@ -150,8 +150,9 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  *   run state (SUBD_STREAM_STATE_BYTES), the overflow ring of one batch (16 triangles; one
  *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
  *   refined depth first (an explicit stack, no recursion), and from 2 levels on one regular
- *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (2.5 KB at 4; limit mode 4.0 KB), where
- *   regular patches are refined breadth first; nothing stays in it after the
+ *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (limit mode: SUBD_LOOP_TILE_LEVELS_LIMIT;
+ *   6.6 KB at 5, 3.7 KB at 4 in limit mode, sharing memory with the levels below the tile's,
+ *   idle while it runs), where regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
  *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.
@@ -210,7 +211,9 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * levels are emitted from level L-2's); limit mode adds level L, a subd_mesh view of it and
  * the limit masks' caches;
  * then the scratch of one extraction and (L >= 2) the regular tile
- * (SUBD_LOOP_TILE_BYTES_; SUBD_LOOP_TILE_LEVELS in subd_config.h). */
+ * (SUBD_LOOP_TILE_BYTES_, its table SUBD_LOOP_TTAB_; SUBD_LOOP_TILE_LEVELS and _LIMIT in
+ * subd_config.h), whose block shares memory with level L-t (t the tile's levels) and the
+ * levels below it: the larger of the two counts. */
 #define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
 #define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
 #define SUBD_LOOP_SN_(N) ((uint32_t)(N) < 6u ? 6u : (uint32_t)(N))

@@ -19,11 +19,13 @@
  * stencils are read off L-2's topology without building the four level L-1 patches); one
  * level in all emits from level 0 (emit_children); limit mode goes down to level L and moves
  * the centre's corners to the limit with loop_limit.c's masks (emit_limit).
- * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, at most L) a patch
+ * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, limit mode
+ * SUBD_LOOP_TILE_LEVELS_LIMIT, at most L) a patch
  * whose centre has three smooth valence-6 corners is not refined depth first: its last t
  * levels are made breadth first on a triangular grid, each vertex once, and its 4^t
  * triangles go out quarter by quarter in the same order (tile_emit, resumable when the
- * caller's buffer is full). In limit mode each quarter's vertices are moved to the limit on
+ * caller's buffer is full; the push form hands them to the sink straight from the quarter's
+ * arrays: tile_push). In limit mode each quarter's vertices are moved to the limit on
  * the grid too, with the valence-6 masks computed once per stream (loop_limit.c's
  * subd_loop_limit_reg6, the same sums as subd_loop_limit's). Other patches take the general
  * path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
@@ -51,8 +53,11 @@
  * Memory (the one layout of plan and run: stream_layout, layout.h's walk): L + 1 level
  * headers, level 0's patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3
  * vertices, 3N cached values), levels 1..L-2 (limit mode: 1..L-1; at most one corner above
- * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, and one
- * extraction's scratch (a slot map and a child-face map).
+ * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, one
+ * extraction's scratch (a slot map and a child-face map), the tile's emission table; the
+ * tile's own block shares memory with level tk = L - t (tk >= 1) and the levels below it,
+ * which are idle while a tile is made and emitted (stream_layout), so the plan holds the
+ * larger of the two.
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -101,7 +106,7 @@ typedef struct sp_layout {
                             * shares memory with the levels below the tile's               */
     uint8_t *tab;          /* the tile's emission table                                     */
     sp_masks *mk;          /* limit mode: the limit masks' caches                          */
-    uint32_t tdepth;       /* levels a tile refines: min(SUBD_LOOP_TILE_LEVELS, L); 0: none */
+    uint32_t tdepth;       /* levels a tile refines (tile_depth); 0: none                   */
     uint32_t size1, total;
 } sp_layout;
 

@@ -293,6 +293,7 @@ static void stream_plan(void)
     }
     for (n = 6; n <= 64u; n++) CHECK(SUBD_LOOP_STREAM_BYTES(4, n) < SUBD_LOOP_STREAM_BYTES(4, n + 1u));
     CHECK(SUBD_LOOP_STREAM_BYTES(8, 16) <= 16u * 1024u);
+    CHECK(SUBD_LOOP_STREAM_BYTES_LIMIT(8, 16) <= 16u * 1024u); /* the tile shares the idle levels' memory */
     h_str("  plan bytes, 8 levels: valence 6 ");
     h_u32(SUBD_LOOP_STREAM_BYTES(8, 6));
     h_str(", 16 ");

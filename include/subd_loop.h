@@ -150,8 +150,9 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  *   run state (SUBD_STREAM_STATE_BYTES), the overflow ring of one batch (16 triangles; one
  *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
  *   refined depth first (an explicit stack, no recursion), and from 2 levels on one regular
- *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (2.5 KB at 4; limit mode 4.0 KB), where
- *   regular patches are refined breadth first; nothing stays in it after the
+ *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (limit mode: SUBD_LOOP_TILE_LEVELS_LIMIT;
+ *   6.6 KB at 5, 3.7 KB at 4 in limit mode, sharing memory with the levels below the tile's,
+ *   idle while it runs), where regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
  *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.
@@ -210,7 +211,9 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * levels are emitted from level L-2's); limit mode adds level L, a subd_mesh view of it and
  * the limit masks' caches;
  * then the scratch of one extraction and (L >= 2) the regular tile
- * (SUBD_LOOP_TILE_BYTES_; SUBD_LOOP_TILE_LEVELS in subd_config.h). */
+ * (SUBD_LOOP_TILE_BYTES_, its table SUBD_LOOP_TTAB_; SUBD_LOOP_TILE_LEVELS and _LIMIT in
+ * subd_config.h), whose block shares memory with level L-t (t the tile's levels) and the
+ * levels below it: the larger of the two counts. */
 #define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
 #define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
 #define SUBD_LOOP_SN_(N) ((uint32_t)(N) < 6u ? 6u : (uint32_t)(N))
@@ -232,9 +235,19 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_STREAM_BYTES_(L, N, lim) \
     (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_(((lim) ? 1u : (L) >= 2u ? 16u : 4u) * (uint32_t)sizeof(subd_tri)) + \
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
-     ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + \
-     SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L), lim) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+     SUBD_LOOP_STK_(L, lim) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+     (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim), lim) ? SUBD_LOOP_SDEEP_(L, N, lim) \
+                                                                              : SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim), lim)) + \
+     SUBD_LOOP_TTAB_(SUBD_LOOP_TD_(L, lim)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+/* levels with a cache (1..L-2, limit mode 1..L-1); of them, those above the tile's level
+ * tk = L-t (1..tk-1); the region from level max(tk, 1) on, which the tile's block shares: the
+ * other cached levels and limit mode's level L with its mesh view */
+#define SUBD_LOOP_SCACHED_(L, lim) ((lim) ? (L) - 1u : (L) >= 2u ? (L) - 2u : 0u)
+#define SUBD_LOOP_STK_(L, lim) \
+    (SUBD_LOOP_TD_(L, lim) ? ((L) > SUBD_LOOP_TD_(L, lim) ? (L) - SUBD_LOOP_TD_(L, lim) - 1u : 0u) : SUBD_LOOP_SCACHED_(L, lim))
+#define SUBD_LOOP_SDEEP_(L, N, lim) \
+    ((SUBD_LOOP_SCACHED_(L, lim) - SUBD_LOOP_STK_(L, lim)) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u))
 /* limit mode's masks: the limit masks' per-valence caches and the valence-6 masks */
 #define SUBD_LOOP_SMASK_ 352u
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
@@ -242,8 +255,9 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * second's positions also hold a quarter of the last level, side 2^(t-1); limit mode: with a
  * one-vertex margin, side 2^(t-1) + 3), the quarter's ids and its emission table; limit mode
  * adds the quarter's limit positions and normals. */
-#define SUBD_LOOP_TMIN_(L) ((uint32_t)(L) < (uint32_t)SUBD_LOOP_TILE_LEVELS ? (uint32_t)(L) : (uint32_t)SUBD_LOOP_TILE_LEVELS)
-#define SUBD_LOOP_TD_(L) (SUBD_LOOP_TMIN_(L) < 2u ? 0u : SUBD_LOOP_TMIN_(L))
+#define SUBD_LOOP_TCFG_(lim) ((lim) ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS)
+#define SUBD_LOOP_TMIN_(L, lim) ((uint32_t)(L) < SUBD_LOOP_TCFG_(lim) ? (uint32_t)(L) : SUBD_LOOP_TCFG_(lim))
+#define SUBD_LOOP_TD_(L, lim) (SUBD_LOOP_TMIN_(L, lim) < 2u ? 0u : SUBD_LOOP_TMIN_(L, lim))
 #define SUBD_LOOP_TCNT_(s) (((s) + 1u) * ((s) + 2u) / 2u)
 #define SUBD_LOOP_TC_(t) ((t) < 2u ? 2u : (t))
 #define SUBD_LOOP_TNA_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 1u)) + 3u)
@@ -255,9 +269,11 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
                SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
                SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQM_(t, lim) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQM_(t, lim))) + \
                2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)) + \
-               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) + \
+               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + \
                ((lim) ? 2u * SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
          : 0u)
+/* the tile's emission table (its own block, filled once per stream) */
+#define SUBD_LOOP_TTAB_(t) ((t) ? SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) : 0u)
 
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */

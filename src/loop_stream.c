@@ -19,11 +19,13 @@
  * stencils are read off L-2's topology without building the four level L-1 patches); one
  * level in all emits from level 0 (emit_children); limit mode goes down to level L and moves
  * the centre's corners to the limit with loop_limit.c's masks (emit_limit).
- * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, at most L) a patch
+ * Regular tiles (loop_tile.c): at level L - t (t = SUBD_LOOP_TILE_LEVELS, limit mode
+ * SUBD_LOOP_TILE_LEVELS_LIMIT, at most L) a patch
  * whose centre has three smooth valence-6 corners is not refined depth first: its last t
  * levels are made breadth first on a triangular grid, each vertex once, and its 4^t
  * triangles go out quarter by quarter in the same order (tile_emit, resumable when the
- * caller's buffer is full). In limit mode each quarter's vertices are moved to the limit on
+ * caller's buffer is full; the push form hands them to the sink straight from the quarter's
+ * arrays: tile_push). In limit mode each quarter's vertices are moved to the limit on
  * the grid too, with the valence-6 masks computed once per stream (loop_limit.c's
  * subd_loop_limit_reg6, the same sums as subd_loop_limit's). Other patches take the general
  * path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
@@ -51,8 +53,11 @@
  * Memory (the one layout of plan and run: stream_layout, layout.h's walk): L + 1 level
  * headers, level 0's patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3
  * vertices, 3N cached values), levels 1..L-2 (limit mode: 1..L-1; at most one corner above
- * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, and one
- * extraction's scratch (a slot map and a child-face map).
+ * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, one
+ * extraction's scratch (a slot map and a child-face map), the tile's emission table; the
+ * tile's own block shares memory with level tk = L - t (tk >= 1) and the levels below it,
+ * which are idle while a tile is made and emitted (stream_layout), so the plan holds the
+ * larger of the two.
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -97,16 +102,19 @@ typedef struct sp_layout {
     sp_view view;       /* limit mode: level L's patch as a subd_mesh (arrays only) for
                          * loop_limit.c's masks                                             */
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
-    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2      */
+    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2: it
+                            * shares memory with the levels below the tile's               */
+    uint8_t *tab;          /* the tile's emission table                                     */
     sp_masks *mk;          /* limit mode: the limit masks' caches                          */
-    uint32_t tdepth;       /* levels a tile refines: min(SUBD_LOOP_TILE_LEVELS, L); 0: none */
+    uint32_t tdepth;       /* levels a tile refines (tile_depth); 0: none                   */
     uint32_t size1, total;
 } sp_layout;
 
-/* Levels of a tile: SUBD_LOOP_TILE_LEVELS, at most L; none below 2. */
-static uint32_t tile_depth(uint32_t levels)
+/* Levels of a tile: SUBD_LOOP_TILE_LEVELS (limit mode: _LIMIT), at most L; none below 2. */
+static uint32_t tile_depth(uint32_t levels, int limit)
 {
-    uint32_t t = levels < (uint32_t)SUBD_LOOP_TILE_LEVELS ? levels : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+    uint32_t c = limit ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+    uint32_t t = levels < c ? levels : c;
     return t < 2u ? 0u : t;
 }
 
@@ -127,11 +135,18 @@ static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 }
 
 /* The one layout (layout.h's walk: counts with a == NULL, carves otherwise;
- * SUBD_LOOP_STREAM_BYTES_ is the same sum). */
+ * SUBD_LOOP_STREAM_BYTES_ is the same sum). Levels 1..tk-1 (tk: the tile's level) come
+ * first; level tk, the deeper levels and limit mode's level L with its view share one
+ * region with the tile's block: while a tile is made and emitted the walk is at level tk,
+ * the deeper levels are idle and level tk's patch is not read again (subd_lt_start reads
+ * all of it before it writes the tile, and writes nothing when it refuses the patch; the
+ * walk rebuilds level tk before its next use); a level below tk is built only after the
+ * tile is done or refused. Level 0 (tk = 0) stays outside. */
 static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
     subd_layout y;
-    uint32_t s0, s1, cached;
+    uint32_t s0, s1, cached, above, r0, tb;
+    uint8_t *region;
     l->n = valence < 6u ? 6u : valence;
     s0 = 3u * l->n;
     s1 = l->n + 12u;
@@ -142,16 +157,24 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
     /* levels with a cache: 1..L-2 (the last two levels are emitted from L-2's), limit mode
      * 1..L-1; then limit mode's level L and its mesh view */
     cached = limit ? levels - 1u : levels >= 2u ? levels - 2u : 0u;
-    l->lev1 = subd_layout_take(&y, cached, l->size1);
+    l->tdepth = tile_depth(levels, limit);
+    /* levels above the region: 1..tk-1, tk = L - tdepth <= cached */
+    above = l->tdepth ? (levels > l->tdepth ? levels - l->tdepth - 1u : 0u) : cached;
+    l->lev1 = subd_layout_take(&y, above, l->size1);
+    region = subd_layout_take(&y, 0u, 1u); /* where the next array starts (carving) */
+    r0 = y.bytes;
+    (void)subd_layout_take(&y, cached - above, l->size1);
     if (limit) {
         (void)subd_layout_take(&y, 1u, subd_lp_level_layout(s1, 0, 0, l->off1)); /* at lev1 + cached * size1 */
         view_layout(&y, s1, &l->view);
     }
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
+    tb = l->tdepth ? subd_lt_layout(l->tdepth, limit, 0) : 0u;
+    if (y.bytes != UINT32_MAX && tb > y.bytes - r0) (void)subd_layout_take(&y, tb - (y.bytes - r0), 1u);
+    l->tile = l->tdepth ? region : 0;
+    l->tab = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_tab_bytes(l->tdepth)) : 0;
     l->smap = subd_layout_take(&y, s0, 2u);
     l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
-    l->tdepth = tile_depth(levels);
-    l->tile = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_layout(l->tdepth, limit, 0)) : 0;
     l->mk = limit ? (sp_masks *)(void *)subd_layout_take(&y, 1u, SUBD_LOOP_SMASK_) : 0;
     return subd_layout_end(&y, &l->total);
 }
@@ -463,7 +486,7 @@ static void sp_enter(sp_state *s, const sp_level *p)
     const subd_loop_opts *o = &s->o;
     if (s->lay.tdepth && s->k == s->tk) {
         lt_tile tl;
-        subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth, (int)s->limit);
+        subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
             s->ton = 1;
             s->tq = s->tj = s->tready = 0;
@@ -509,6 +532,45 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
         }
 }
 
+/* Push form: quarter triangles j0..n-1 of the table straight to the sink through the one
+ * item t (face and level already written; plain mode: zero normals too, limit mode: the
+ * quarter's normals tl->qnrm are copied); *at: the triangle the sink stopped at (its value
+ * returned), else n. The hot loop of the stream: the fewest loads and stores per triangle,
+ * the sink called without the queue between. */
+static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at)
+{
+    const subd_real *N = tl->qnrm;
+    int (*fn)(void *, const subd_tri *) = ts->tri;
+    void *ctx = ts->ctx;
+    const uint8_t *ix = tl->tab + 3u * j0;
+    const subd_real *P = tl->qpos;
+    const uint32_t *I = tl->qid;
+    uint32_t j;
+    for (j = j0; j < n; j++, ix += 3) {
+        uint32_t a = ix[0], b = ix[1], c = ix[2];
+        const subd_real *x0 = P + 3u * a, *x1 = P + 3u * b, *x2 = P + 3u * c;
+        int st;
+        t->pos[0][0] = x0[0]; t->pos[0][1] = x0[1]; t->pos[0][2] = x0[2];
+        t->pos[1][0] = x1[0]; t->pos[1][1] = x1[1]; t->pos[1][2] = x1[2];
+        t->pos[2][0] = x2[0]; t->pos[2][1] = x2[1]; t->pos[2][2] = x2[2];
+        t->id[0] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);
+        t->id[1] = (uint64_t)I[2u * b] | ((uint64_t)I[2u * b + 1u] << 32);
+        t->id[2] = (uint64_t)I[2u * c] | ((uint64_t)I[2u * c + 1u] << 32);
+        if (N) {
+            const subd_real *n0 = N + 3u * a, *n1 = N + 3u * b, *n2 = N + 3u * c;
+            t->normal[0][0] = n0[0]; t->normal[0][1] = n0[1]; t->normal[0][2] = n0[2];
+            t->normal[1][0] = n1[0]; t->normal[1][1] = n1[1]; t->normal[1][2] = n1[2];
+            t->normal[2][0] = n2[0]; t->normal[2][1] = n2[1]; t->normal[2][2] = n2[2];
+        }
+        if ((st = fn(ctx, t)) != 0) {
+            *at = j;
+            return st;
+        }
+    }
+    *at = n;
+    return 0;
+}
+
 /* The tile's triangles, quarter by quarter, each quarter's in subd_loop's order (its table);
  * stops when the caller's buffer is full (ton stays set: the next step goes on here).
  * Push form: the sink gets the one item each time (const), so the fields that do not change
@@ -521,7 +583,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
     int st;
     const subd_real *nr;
     subd_tri *one = (subd_tri *)(void *)q->one;
-    subd_lt_carve(&tl, s->lay.tile, s->lay.tdepth, (int)s->limit);
+    subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
     tl.lk = s->limit ? &s->lay.mk->lk : 0;
     nr = tl.qnrm;
     n = 1u << (2u * (tl.depth - 1u));
@@ -541,6 +603,14 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
             s->tready = 1;
             s->tj = 0;
         }
+        if (one && q->ts) { /* push: the hot loop */
+            if (q->stop) return 0;
+            if ((st = tile_push(&tl, s->tj, n, one, q->ts, &tj)) != 0) {
+                q->stop = st; /* as subd_stream_q_commit leaves it */
+                s->tj = tj + 1u;
+                return st;
+            }
+        } else
         for (tj = s->tj; tj < n; tj++) {
             const uint8_t *ix = tl.tab + 3u * tj;
             const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];
@@ -685,7 +755,7 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->tk = o->levels - lay.tdepth;
     if (lay.tdepth) {
         lt_tile tl;
-        subd_lt_carve(&tl, lay.tile, lay.tdepth, limit);
+        subd_lt_carve(&tl, lay.tile, lay.tab, lay.tdepth, limit);
         subd_lt_table(&tl);
     }
     if (limit) {

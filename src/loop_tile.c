@@ -70,13 +70,19 @@ uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
     off[LT_BROT] = b; subd_size_add(&b, nB, 2u);
     off[LT_BLOW] = b; subd_size_add(&b, nB, 1u);
     off[LT_QID] = b;  subd_size_add(&b, qn, 8u);
-    off[LT_TAB] = b;  subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
     off[LT_LPOS] = b; subd_size_add(&b, nl, rs);
     off[LT_LNRM] = b; subd_size_add(&b, nl, rs);
     return b;
 }
 
-void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t, int limit)
+uint32_t subd_lt_tab_bytes(uint32_t t)
+{
+    uint32_t b = 0, m = 1u << (t - 1u);
+    subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
+    return b;
+}
+
+void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int limit)
 {
     uint32_t off[LT_N];
     (void)subd_lt_layout(t, limit, off);
@@ -93,7 +99,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint32_t t, int limit)
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
     tl->qid = (uint32_t *)(void *)(block + off[LT_QID]);
-    tl->tab = block + off[LT_TAB];
+    tl->tab = tab;
     tl->depth = t;
 }
 
@@ -179,11 +185,21 @@ static inline void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t 
     l0 = lt_vi(s, ui, uj);
     row = s + 1u - uj;
     if (even) {
-        uint32_t dd = g->dir[l0], k, off[6];
+        /* the ring twice over, so that its six from the ring start are r[0..5]: the adds
+         * unrolled, in the ring's order */
+        uint32_t k, off[6];
+        const subd_real *q[12], *const *r;
         subd_acc acc[3];
         lt_ring_offsets(row, off);
+        for (k = 0; k < 6u; k++) q[k] = q[k + 6u] = P + 3u * (l0 + off[k]);
+        r = q + g->dir[l0];
         loop_smooth_begin(acc, w, P + 3u * l0);
-        for (k = 0; k < 6u; k++, dd = dd == 5u ? 0u : dd + 1u) loop_smooth_add(acc, w, P + 3u * (l0 + off[dd]));
+        loop_smooth_add(acc, w, r[0]);
+        loop_smooth_add(acc, w, r[1]);
+        loop_smooth_add(acc, w, r[2]);
+        loop_smooth_add(acc, w, r[3]);
+        loop_smooth_add(acc, w, r[4]);
+        loop_smooth_add(acc, w, r[5]);
         loop_smooth_end(out, acc, ovf);
     } else {
         uint32_t a, b, c, e;
@@ -309,7 +325,11 @@ static uint32_t lt_dir_of(int32_t ddx, int32_t ddy)
 int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
 {
     const lt_grid *g = &tl->g[(tl->depth - 1u) & 1u];
-    uint8_t lx[12], ly[12], used[30];
+    /* everything is read from the patch and checked first, then written: the stream lends
+     * the tile the patch's own memory (loop_stream.c's layout), and a refused patch must
+     * stay whole */
+    uint8_t lx[12], ly[12], used[30], cdir[3], rot[30], low[15];
+    subd_real pos[36];
     uint32_t c, k, f, v, t;
     loop_weights w;
     if (p->h->nv != 12u || p->h->nf != 13u) return 0;
@@ -325,7 +345,7 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
             if (nbr[k] == (c + 1u) % 3u) s = (2u * c + 6u - k) % 6u; /* corner c -> c+1: direction 2c */
         }
         if (s == 6u) return 0;
-        g->dir[lt_vi(4u, lx[c], ly[c])] = (uint8_t)s;
+        cdir[c] = (uint8_t)s;
         for (k = 0; k < 6u; k++) {
             uint32_t d = (s + k) % 6u, u = nbr[k];
             uint8_t x = (uint8_t)((int32_t)lx[c] + lt_dx[d]), y = (uint8_t)((int32_t)ly[c] + lt_dy[d]);
@@ -343,14 +363,15 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         q = lt_vi(4u, lx[v], ly[v]);
         if (used[q]) return 0;
         used[q] = 1;
-        g->pos[3u * q] = p->pos[3u * v];
-        g->pos[3u * q + 1u] = p->pos[3u * v + 1u];
-        g->pos[3u * q + 2u] = p->pos[3u * v + 2u];
+        pos[3u * v] = p->pos[3u * v];
+        pos[3u * v + 1u] = p->pos[3u * v + 1u];
+        pos[3u * v + 2u] = p->pos[3u * v + 2u];
     }
     for (k = 0; k < 15u; k++) {
-        g->low[k] = 0;
+        low[k] = 0;
         used[k] = 0;
     }
+    for (k = 15u; k < 30u; k++) used[k] = 0;
     for (f = 0; f < 13u; f++) { /* faces: lattice triangles, counter-clockwise */
         uint32_t u0 = p->cv[3u * f], u1 = p->cv[3u * f + 1u], u2 = p->cv[3u * f + 2u], d, r, dn, i, j, q;
         const uint8_t(*off)[2];
@@ -366,13 +387,24 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         q = 2u * lt_vi(4u, i, j) + dn;
         if (used[q]) return 0;
         used[q] = 1;
-        g->rot[q] = (uint8_t)r;
+        rot[q] = (uint8_t)r;
         if (!dn)
             for (k = 0; k < 3u; k++) {
                 uint32_t h = 3u * f + k, tw = p->tw[h];
-                if (tw < LP_TW_BORDER && h < tw) g->low[lt_vi(4u, i, j)] = (uint8_t)(g->low[lt_vi(4u, i, j)] | (1u << ((r + k) % 3u)));
+                if (tw < LP_TW_BORDER && h < tw) low[lt_vi(4u, i, j)] = (uint8_t)(low[lt_vi(4u, i, j)] | (1u << ((r + k) % 3u)));
             }
     }
+    /* the patch is regular: level 0 of the tile */
+    for (c = 0; c < 3u; c++) g->dir[lt_vi(4u, lx[c], ly[c])] = cdir[c];
+    for (v = 0; v < 12u; v++) {
+        uint32_t q = lt_vi(4u, lx[v], ly[v]);
+        g->pos[3u * q] = pos[3u * v];
+        g->pos[3u * q + 1u] = pos[3u * v + 1u];
+        g->pos[3u * q + 2u] = pos[3u * v + 2u];
+    }
+    for (k = 0; k < 30u; k++)
+        if (used[k]) g->rot[k] = rot[k];
+    for (k = 0; k < 15u; k++) g->low[k] = low[k];
     w = subd_loop_weights_of(wc, 6u, ovf);
     for (t = 0; t + 1u < tl->depth; t++)
         lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], 1, w, ovf);

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 # tinysubd — every entry point. See README.md.
 #   make test-host  the quick loop: host float/fixed tests only (no QEMU)
+#   make test-long  host float/fixed tests with the long variants (deepest levels; not in make test)
 #   make test    everything a change must pass: host float/fixed tests with ASan+UBSan, the
 #                same tests under QEMU on Cortex-M4F (float) and Cortex-M3 (Q16.16), host =
 #                QEMU output hashes, link-time proofs, harness self-tests, the subd tool test.
@@ -17,7 +18,7 @@ B := build
 SHARED ?= ../shared
 
 SRC      := $(sort $(wildcard src/*.c))
-TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c
+TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c test/fixtures.c
 GEN      := $(B)/gen/corpus.h $(B)/gen/readme_example.c $(B)/gen/suites.h
 
 WARN := -std=c99 -Wall -Wextra -Werror -pedantic -Wshadow -Wvla -Wdouble-promotion \
@@ -241,6 +242,16 @@ test-host:
 	@test/scripts/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
 	@test/scripts/summary.sh $(L)/*.log
 
+# make test-long: the host float/fixed tests (ASan+UBSan) with their long variants: the
+# environment's SUBD_TEST_LONG=1 sets h_long (test/harness.h), which adds the deepest levels
+# that make test leaves out (the 4-8 stream, shape and chordal sweeps). Not part of make test.
+test-long:
+	@$(MAKE) --no-print-directory $(B)/host-float/test.elf $(B)/host-fixed/test.elf
+	@rm -rf $(L) && mkdir -p $(L)
+	@SUBD_TEST_LONG=1 test/scripts/run_suite.sh "host-float tests (long)" $(L)/host-float.log $(B)/host-float/test.elf & \
+	 SUBD_TEST_LONG=1 test/scripts/run_suite.sh "host-fixed tests (long)" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
+	@test/scripts/summary.sh $(L)/*.log
+
 test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/test-fail.elf \
             m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool \
             $(B)/host-gnu/test.elf $(B)/m4f-gnu/libsubd.a $(AMALG_BUILD)
@@ -411,6 +422,6 @@ clean:
 # Header dependencies written by -MMD (none before the first build).
 -include $(wildcard $(foreach v,$(VARIANTS) fuzz-float fuzz-fixed,$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
-.PHONY: dirs deps test test-host test-build test-run demo demo-run bench bench-run bench-peers tool clean amalgamate \
+.PHONY: dirs deps test test-host test-long test-build test-run demo demo-run bench bench-run bench-peers tool clean amalgamate \
         check-format-exhaustive \
         m4f-float-images m3-fixed-images

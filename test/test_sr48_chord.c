@@ -273,8 +273,10 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
 
 static void sr48c_guarantee(void)
 {
-    /* the deepest host levels (icosahedron 4, hexagon fan 5) only in make test-long */
-    static const uint32_t maxl[C_COUNT] = {H_HOST ? 4u : 3u, H_HOST ? 3u : 2u, H_HOST ? 3u : 2u, H_HOST ? 5u : 3u};
+    /* the deepest host levels (icosahedron 4, hexagon fan 5) only in make test-long; the
+     * device stops at level 2 (its hashes; the host, bit-identical, covers the deeper ones:
+     * level 3 took the device 12 G instructions) */
+    static const uint32_t maxl[C_COUNT] = {H_HOST ? 4u : 2u, H_HOST ? 3u : 2u, H_HOST ? 3u : 2u, H_HOST ? 5u : 2u};
     static const double eps[3] = {0.05, 0.01, 0.002};
     uint32_t s, l, f, e;
     for (s = 0; s < C_COUNT; s++)

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 # tinysubd — every entry point. See README.md.
 #   make test-host  the quick loop: host float/fixed tests only (no QEMU)
+#   make test-long  host float/fixed tests with the long variants (deepest levels; not in make test)
 #   make test    everything a change must pass: host float/fixed tests with ASan+UBSan, the
 #                same tests under QEMU on Cortex-M4F (float) and Cortex-M3 (Q16.16), host =
 #                QEMU output hashes, link-time proofs, harness self-tests, the subd tool test.
@@ -17,7 +18,7 @@ B := build
 SHARED ?= ../shared
 
 SRC      := $(sort $(wildcard src/*.c))
-TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c
+TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c test/fixtures.c
 GEN      := $(B)/gen/corpus.h $(B)/gen/readme_example.c $(B)/gen/suites.h
 
 WARN := -std=c99 -Wall -Wextra -Werror -pedantic -Wshadow -Wvla -Wdouble-promotion \
@@ -230,9 +231,11 @@ L := $(B)/logs
 QEMU_TIMEOUT ?= 600
 # The build runs one job per core (make test is run without -j by CI and by users).
 NPROC := $(shell nproc 2>/dev/null || echo 2)
+# Building and running are one graph (the stages below, one target each, as soon as their
+# inputs are built), so both cores stay busy: the QEMU runs, the longest, come first.
 test: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) test-build
-	@$(MAKE) --no-print-directory test-run
+	@$(MAKE) --no-print-directory -j$(NPROC) test-stages
+	@test/scripts/summary.sh $(L)/*.log
 
 # make test-host: the quick loop, host float and fixed tests only (ASan+UBSan), no QEMU.
 test-host:
@@ -242,49 +245,99 @@ test-host:
 	@test/scripts/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
 	@test/scripts/summary.sh $(L)/*.log
 
+# make test-long: the host float/fixed tests (ASan+UBSan) with their long variants: the
+# environment's SUBD_TEST_LONG=1 sets h_long (test/harness.h), which adds the deepest levels
+# that make test leaves out (the 4-8 stream, shape and chordal sweeps). Not part of make test.
+test-long:
+	@$(MAKE) --no-print-directory $(B)/host-float/test.elf $(B)/host-fixed/test.elf
+	@rm -rf $(L) && mkdir -p $(L)
+	@SUBD_TEST_LONG=1 test/scripts/run_suite.sh "host-float tests (long)" $(L)/host-float.log $(B)/host-float/test.elf & \
+	 SUBD_TEST_LONG=1 test/scripts/run_suite.sh "host-fixed tests (long)" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
+	@test/scripts/summary.sh $(L)/*.log
+
 test-build: $(B)/host-float/test.elf $(B)/host-fixed/test.elf $(B)/host-float/test-fail.elf \
             m4f-float-images m3-fixed-images $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a tool \
             $(B)/host-gnu/test.elf $(B)/m4f-gnu/libsubd.a $(AMALG_BUILD)
 
+# make test-run: the stages of make test on what is built (make test-build).
 test-run:
-	@rm -rf $(L) && mkdir -p $(L)
-	@test/scripts/run_suite.sh "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf & \
-	 test/scripts/run_suite.sh "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf & wait
-	@test/scripts/run_suite.sh "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf $(QEMU_TIMEOUT) & \
-	 test/scripts/run_suite.sh "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf $(QEMU_TIMEOUT) & wait
-	@test/scripts/run_suite.sh "hashes host-float = m4f-float" $(L)/hash-float.log test/scripts/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
-	@test/scripts/run_suite.sh "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/scripts/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
-	@if $(GNU_RUNS); then \
-	    test/scripts/run_suite.sh "host-gnu tests (gnu11 -O2 $(GNU_MARCH))" $(L)/host-gnu.log $(B)/host-gnu/test.elf; \
-	    test/scripts/run_suite.sh "hashes host-float = host-gnu" $(L)/hash-gnu.log test/scripts/compare_hashes.sh \
-	        $(L)/host-float.log $(L)/host-gnu.log float32; \
-	else echo "== host-gnu tests: skipped (this CPU cannot run $(GNU_MARCH) code: no AVX2/FMA)"; fi
-	@test/scripts/run_suite.sh "contraction proofs (gnu11 builds)" $(L)/contract.log test/scripts/contract_proofs.sh \
-	    $(CM_OBJDUMP) $(B)/m4f-gnu/libsubd.a $(B)/host-gnu/src
-	@test/scripts/run_suite.sh "link proofs m4f-float" $(L)/link-m4f.log test/scripts/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
-	@test/scripts/run_suite.sh "link proofs m3-fixed" $(L)/link-m3.log test/scripts/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
-	@test/scripts/run_suite.sh "harness self-test m4f-float" $(L)/self-m4f.log test/scripts/harness_selftest.sh mps2-an386 $(B)/m4f-float & \
-	 test/scripts/run_suite.sh "harness self-test m3-fixed" $(L)/self-m3.log test/scripts/harness_selftest.sh mps2-an385 $(B)/m3-fixed & wait
-	@test/scripts/run_suite.sh "subd tool" $(L)/tool.log test/scripts/tool_test.sh $(B)/bin & \
-	 test/scripts/run_suite.sh "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/scripts/cpp_test.sh $(B) & wait
-	@test/scripts/run_suite.sh "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS) & \
-	 test/scripts/run_suite.sh "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS) & wait
-	@test/scripts/run_suite.sh "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/scripts/cmake_test.sh $(B)
-	@test/scripts/run_suite.sh "amalgamation host-float tests" $(L)/amalg-float.log $(B)/amalg-float/test.elf & \
-	 test/scripts/run_suite.sh "amalgamation host-fixed tests" $(L)/amalg-fixed.log $(B)/amalg-fixed/test.elf & wait
-	@test/scripts/run_suite.sh "hashes host-float = amalgamation" $(L)/hash-amalg-float.log test/scripts/compare_hashes.sh \
-	    $(L)/host-float.log $(L)/amalg-float.log float32
-	@test/scripts/run_suite.sh "hashes host-fixed = amalgamation" $(L)/hash-amalg-fixed.log test/scripts/compare_hashes.sh \
-	    $(L)/host-fixed.log $(L)/amalg-fixed.log q16.16
-	@test/scripts/run_suite.sh "link proofs amalgamation m4f-float" $(L)/link-amalg-m4f.log test/scripts/link_proofs.sh $(CM_NM) \
-	    $(B)/amalg-m4f-float/libtinysubd.a m4f-float
-	@test/scripts/run_suite.sh "link proofs amalgamation m3-fixed" $(L)/link-amalg-m3.log test/scripts/link_proofs.sh $(CM_NM) \
-	    $(B)/amalg-m3-fixed/libtinysubd.a m3-fixed
-	@test/scripts/run_suite.sh "amalgamation (tools/amalgamate.sh)" $(L)/amalg.log test/scripts/amalgamate_test.sh \
-	    $(CM_OBJDUMP) $(B)/amalg-m4f-gnu/tinysubd.o
-	@test/scripts/run_suite.sh "header template (include/*.h)" $(L)/headers.log test/scripts/header_check.sh include
-	@test/scripts/run_suite.sh "SPDX license lines" $(L)/spdx.log test/scripts/spdx_check.sh .
+	@$(MAKE) --no-print-directory -j$(NPROC) test-stages
 	@test/scripts/summary.sh $(L)/*.log
+
+# The stages of make test. Each prints one line (run_suite.sh) and writes $(L)/NAME.log;
+# test-logs (order-only) clears the logs once, before the first.
+R := test/scripts/run_suite.sh
+test-logs:
+	@rm -rf $(L) && mkdir -p $(L)
+STAGES := m4f-float m3-fixed host-float host-fixed host-gnu amalg-float amalg-fixed self-m4f self-m3 tool \
+          cmake fuzz-float fuzz-fixed cpp contract link-m4f link-m3 link-amalg-m4f link-amalg-m3 amalg \
+          headers spdx hash-float hash-fixed hash-gnu hash-amalg-float hash-amalg-fixed
+test-stages: $(STAGES:%=stage-%) test-build
+stage-m4f-float: $(B)/m4f-float/test.elf | test-logs
+	@$(R) "m4f-float tests (QEMU mps2-an386)" $(L)/m4f-float.log qemu/run.sh mps2-an386 $(B)/m4f-float/test.elf $(QEMU_TIMEOUT)
+stage-m3-fixed: $(B)/m3-fixed/test.elf | test-logs
+	@$(R) "m3-fixed tests (QEMU mps2-an385)" $(L)/m3-fixed.log qemu/run.sh mps2-an385 $(B)/m3-fixed/test.elf $(QEMU_TIMEOUT)
+stage-host-float: $(B)/host-float/test.elf | test-logs
+	@$(R) "host-float tests" $(L)/host-float.log $(B)/host-float/test.elf
+stage-host-fixed: $(B)/host-fixed/test.elf | test-logs
+	@$(R) "host-fixed tests" $(L)/host-fixed.log $(B)/host-fixed/test.elf
+stage-hash-float: stage-host-float stage-m4f-float
+	@$(R) "hashes host-float = m4f-float" $(L)/hash-float.log test/scripts/compare_hashes.sh $(L)/host-float.log $(L)/m4f-float.log float32
+stage-hash-fixed: stage-host-fixed stage-m3-fixed
+	@$(R) "hashes host-fixed = m3-fixed" $(L)/hash-fixed.log test/scripts/compare_hashes.sh $(L)/host-fixed.log $(L)/m3-fixed.log q16.16
+stage-host-gnu: $(B)/host-gnu/test.elf | test-logs
+	@if $(GNU_RUNS); then \
+	    $(R) "host-gnu tests (gnu11 -O2 $(GNU_MARCH))" $(L)/host-gnu.log $(B)/host-gnu/test.elf; \
+	else echo "== host-gnu tests: skipped (this CPU cannot run $(GNU_MARCH) code: no AVX2/FMA)"; fi
+stage-hash-gnu: stage-host-float stage-host-gnu
+	@if [ -f $(L)/host-gnu.log ]; then \
+	    $(R) "hashes host-float = host-gnu" $(L)/hash-gnu.log test/scripts/compare_hashes.sh \
+	        $(L)/host-float.log $(L)/host-gnu.log float32; fi
+stage-contract: $(B)/m4f-gnu/libsubd.a $(B)/host-gnu/test.elf | test-logs
+	@$(R) "contraction proofs (gnu11 builds)" $(L)/contract.log test/scripts/contract_proofs.sh \
+	    $(CM_OBJDUMP) $(B)/m4f-gnu/libsubd.a $(B)/host-gnu/src
+stage-link-m4f: $(B)/m4f-float/libsubd.a | test-logs
+	@$(R) "link proofs m4f-float" $(L)/link-m4f.log test/scripts/link_proofs.sh $(CM_NM) $(B)/m4f-float/libsubd.a m4f-float
+stage-link-m3: $(B)/m3-fixed/libsubd.a | test-logs
+	@$(R) "link proofs m3-fixed" $(L)/link-m3.log test/scripts/link_proofs.sh $(CM_NM) $(B)/m3-fixed/libsubd.a m3-fixed
+stage-self-m4f: m4f-float-images | test-logs
+	@$(R) "harness self-test m4f-float" $(L)/self-m4f.log test/scripts/harness_selftest.sh mps2-an386 $(B)/m4f-float
+stage-self-m3: m3-fixed-images | test-logs
+	@$(R) "harness self-test m3-fixed" $(L)/self-m3.log test/scripts/harness_selftest.sh mps2-an385 $(B)/m3-fixed
+stage-tool: tool | test-logs
+	@$(R) "subd tool" $(L)/tool.log test/scripts/tool_test.sh $(B)/bin
+stage-cpp: tool | test-logs
+	@$(R) "C++ headers (g++ -std=c++11)" $(L)/cpp.log test/scripts/cpp_test.sh $(B)
+stage-fuzz-float: $(B)/host-float/fuzz-replay | test-logs
+	@$(R) "fuzz corpus replay host-float" $(L)/fuzz-float.log $(B)/host-float/fuzz-replay $(FUZZ_REPLAY_ARGS)
+stage-fuzz-fixed: $(B)/host-fixed/fuzz-replay | test-logs
+	@$(R) "fuzz corpus replay host-fixed" $(L)/fuzz-fixed.log $(B)/host-fixed/fuzz-replay $(FUZZ_REPLAY_ARGS)
+stage-cmake: | test-logs
+	@$(R) "cmake (add_subdirectory, install + find_package, Cortex-M cross)" $(L)/cmake.log test/scripts/cmake_test.sh $(B)
+stage-amalg-float: $(B)/amalg-float/test.elf | test-logs
+	@$(R) "amalgamation host-float tests" $(L)/amalg-float.log $(B)/amalg-float/test.elf
+stage-amalg-fixed: $(B)/amalg-fixed/test.elf | test-logs
+	@$(R) "amalgamation host-fixed tests" $(L)/amalg-fixed.log $(B)/amalg-fixed/test.elf
+stage-hash-amalg-float: stage-host-float stage-amalg-float
+	@$(R) "hashes host-float = amalgamation" $(L)/hash-amalg-float.log test/scripts/compare_hashes.sh \
+	    $(L)/host-float.log $(L)/amalg-float.log float32
+stage-hash-amalg-fixed: stage-host-fixed stage-amalg-fixed
+	@$(R) "hashes host-fixed = amalgamation" $(L)/hash-amalg-fixed.log test/scripts/compare_hashes.sh \
+	    $(L)/host-fixed.log $(L)/amalg-fixed.log q16.16
+stage-link-amalg-m4f: $(B)/amalg-m4f-float/libtinysubd.a | test-logs
+	@$(R) "link proofs amalgamation m4f-float" $(L)/link-amalg-m4f.log test/scripts/link_proofs.sh $(CM_NM) \
+	    $(B)/amalg-m4f-float/libtinysubd.a m4f-float
+stage-link-amalg-m3: $(B)/amalg-m3-fixed/libtinysubd.a | test-logs
+	@$(R) "link proofs amalgamation m3-fixed" $(L)/link-amalg-m3.log test/scripts/link_proofs.sh $(CM_NM) \
+	    $(B)/amalg-m3-fixed/libtinysubd.a m3-fixed
+stage-amalg: $(B)/amalg-m4f-gnu/tinysubd.o | test-logs
+	@$(R) "amalgamation (tools/amalgamate.sh)" $(L)/amalg.log test/scripts/amalgamate_test.sh \
+	    $(CM_OBJDUMP) $(B)/amalg-m4f-gnu/tinysubd.o
+stage-headers: | test-logs
+	@$(R) "header template (include/*.h)" $(L)/headers.log test/scripts/header_check.sh include
+stage-spdx: | test-logs
+	@$(R) "SPDX license lines" $(L)/spdx.log test/scripts/spdx_check.sh .
+.PHONY: test-logs test-stages $(STAGES:%=stage-%)
 
 # ------------------------------------------------------------------ fuzzing (make fuzz)
 # make fuzz [FUZZ_SECONDS=N]: libFuzzer targets (clang, ASan+UBSan, no recovery) for the OBJ
@@ -412,6 +465,6 @@ clean:
 # Header dependencies written by -MMD (none before the first build).
 -include $(wildcard $(foreach v,$(VARIANTS) fuzz-float fuzz-fixed,$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
-.PHONY: dirs deps test test-host test-build test-run demo demo-run bench bench-run bench-peers tool clean amalgamate \
+.PHONY: dirs deps test test-host test-long test-build test-run demo demo-run bench bench-run bench-peers tool clean amalgamate \
         check-format-exhaustive \
         m4f-float-images m3-fixed-images

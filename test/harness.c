@@ -1,11 +1,24 @@
 /* SPDX-License-Identifier: MIT */
-/* Test harness implementation: counting, printing, hashing, guard bytes, PRNG. */
+/* Test harness implementation: counting, printing, hashing, guard bytes, PRNG, and each
+ * suite's cost: a line `TIME suite_NAME N ms` (host: CPU milliseconds of the process, ASan
+ * included) or `TIME suite_NAME N Minsn` (Cortex-M under QEMU -icount: millions of
+ * instructions, exact), and `TIME   test_name N ...` for each test that costs at least the
+ * threshold: 1 000 ms / 250 Minsn, on the host the environment's SUBD_TEST_TIMES=N (0: every
+ * test). The lines are for finding where make test's time goes; nothing compares them.
+ * SUBD_TEST_LONG=1 (host; make test-long) sets h_long. */
 #include "harness.h"
+#if H_HOST
+#include <stdlib.h>
+#include <time.h>
+#else
+#include "port_cm.h"
+#endif
 
 static uint32_t g_checks_failed_in_test;
 static uint32_t g_tests_passed, g_tests_failed;
 
 uint8_t h_arena_buf[H_ARENA_BYTES] __attribute__((aligned(8)));
+int h_long;
 
 int h_check(int cond, const char *file, int line, const char *expr)
 {
@@ -45,6 +58,38 @@ int h_check_ok(int status, const subd_diag *d, const char *file, int line, const
         return 0;
     }
     return 1;
+}
+
+void h_diag_poison(subd_diag *d)
+{
+    d->status = 0x5eed;
+    d->line = d->face = d->vertex = d->polyline = d->bytes_needed = 0xa5a5a5a5u;
+}
+
+int h_fail_rule(int status, const subd_diag *d, int want)
+{
+    if (status != want) return 1;
+    if (d->status != want) return 2;
+    if ((want == SUBD_ERR_NOMEM) != (d->bytes_needed != 0u)) return 3;
+    return 0;
+}
+
+int h_check_fail(int status, const subd_diag *d, int want, const char *file, int line, const char *expr)
+{
+    int r = h_fail_rule(status, d, want);
+    if (r) {
+        h_check(0, file, line, expr);
+        h_str("    status ");
+        h_i32(status);
+        h_str(" want ");
+        h_i32(want);
+        h_str(", diag status ");
+        h_i32(d->status);
+        h_str(" bytes_needed ");
+        h_u32(d->bytes_needed);
+        h_nl();
+    }
+    return !r;
 }
 
 int h_build(subd_arena *a, const subd_face_list *fl, subd_mesh *m)
@@ -311,11 +356,13 @@ int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t
     for (i = 0; i < sizeof m; i++) pm[i] = 0x3c;
     subd_arena_init(&a, h_arena_buf, arena_bytes);
     subd_arena_alloc(&a, 40);
+    h_diag_poison(&d);
     got = read(&a, buf, len, &m, &d);
     for (i = 0; i < sizeof m; i++) same &= pm[i] == 0x3c;
     pst = plan(buf, len, &bytes, 0);
     if (!CHECK_EQ(got, st) | !CHECK_EQ(d.status, st) | !CHECK_EQ(d.line, line) | !CHECK_EQ(d.face, face) |
         !CHECK(vert == H_ANY || d.vertex == vert) | !CHECK_EQ(subd_arena_mark(&a), 40) | !CHECK(same) |
+        !CHECK_EQ(h_fail_rule(got, &d, st), 0) |
         !CHECK(pst == st || (pst == SUBD_OK && st <= SUBD_ERR_DEGENERATE))) {
         h_str("    case at test line ");
         h_u32((uint32_t)src_line);
@@ -325,11 +372,51 @@ int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t
     return 1;
 }
 
-static void run_suite(const test_case *t)
+#if H_HOST
+#define H_TIME_UNIT " ms"
+/* Process CPU time in milliseconds. */
+static uint32_t h_time_now(void) { return (uint32_t)((uint64_t)clock() * 1000u / (uint64_t)CLOCKS_PER_SEC); }
+static int h_long_wanted(void)
 {
+    const char *e = getenv("SUBD_TEST_LONG");
+    return e && *e && *e != '0';
+}
+static uint32_t h_time_threshold(void)
+{
+    const char *e = getenv("SUBD_TEST_TIMES");
+    uint32_t v = 0;
+    if (!e || !*e) return 1000u;
+    for (; *e >= '0' && *e <= '9'; e++) v = v * 10u + (uint32_t)(*e - '0');
+    return v;
+}
+#else
+#define H_TIME_UNIT " Minsn"
+/* Millions of instructions (QEMU -icount shift=0; qemu/run.sh); differences modulo 2^32
+ * ticks, far above any one suite. */
+static uint32_t h_time_now(void) { return port_cycles() / (1000000u / PORT_QEMU_INSNS_PER_TICK); }
+static uint32_t h_time_threshold(void) { return 250u; }
+static int h_long_wanted(void) { return 0; }
+#endif
+
+static void h_time_line(const char *indent, const char *name, uint32_t t)
+{
+    h_str("TIME ");
+    h_str(indent);
+    h_str(name);
+    h_str(" ");
+    h_u32(t);
+    h_str(H_TIME_UNIT);
+    h_nl();
+}
+
+static void run_suite(const test_case *t, const char *suite_name)
+{
+    uint32_t threshold = h_time_threshold(), t_suite = h_time_now();
     for (; t->name; t++) {
+        uint32_t t0 = h_time_now(), dt;
         g_checks_failed_in_test = 0;
         t->fn();
+        dt = h_time_now() - t0;
         if (g_checks_failed_in_test) {
             g_tests_failed++;
             h_str("FAIL ");
@@ -339,7 +426,9 @@ static void run_suite(const test_case *t)
         }
         h_str(t->name);
         h_nl();
+        if (dt >= threshold) h_time_line("  ", t->name, dt);
     }
+    h_time_line("", suite_name, h_time_now() - t_suite);
 }
 
 int main(void)
@@ -353,11 +442,13 @@ int main(void)
     h_u32(SUBD_MAX_FACE_SIZE);
     h_str(" max_levels=");
     h_u32(SUBD_MAX_LEVELS);
+    h_long = h_long_wanted();
+    if (h_long) h_str(" long=1");
     h_nl();
     if (h_harness_only) {
-        run_suite(suite_harness);
+        run_suite(suite_harness, "suite_harness");
     } else {
-#define SUITE(name) run_suite(name);
+#define SUITE(name) run_suite(name, #name);
 #include "suites.h"
 #undef SUITE
     }

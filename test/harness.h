@@ -41,6 +41,18 @@ int h_check_eq_i(int64_t got, int64_t want, const char *file, int line, const ch
 int h_check_ok(int status, const subd_diag *d, const char *file, int line, const char *expr);
 #define CHECK_OK(st, d) h_check_ok((st), (d), __FILE__, __LINE__, #st " == SUBD_OK")
 
+/* An expected failure of a call that takes the diag d (not NULL): CHECK_FAIL(call, d, want)
+ * poisons *d, makes the call and checks that it returned want and that d obeys the one
+ * failure exit (src/entry.h): d->status == want, and d->bytes_needed nonzero with
+ * SUBD_ERR_NOMEM, zero with every other status. h_fail_rule is that rule alone: 0 when it
+ * holds, else which part broke (1 status, 2 diag status, 3 bytes_needed); h_diag_poison sets
+ * every field of d to a value no call reports. */
+void h_diag_poison(subd_diag *d);
+int h_fail_rule(int status, const subd_diag *d, int want);
+int h_check_fail(int status, const subd_diag *d, int want, const char *file, int line, const char *expr);
+#define CHECK_FAIL(call, d, want) \
+    h_check_fail((h_diag_poison(d), (call)), (d), (want), __FILE__, __LINE__, #call " fails with " #want)
+
 /* Output hashes: FNV-1a 32-bit. Every test that builds output prints `HASH name value`
  * lines; the Makefile compares those lines between host and QEMU for each arithmetic. */
 uint32_t h_fnv(uint32_t h, const void *data, uint32_t n);
@@ -145,6 +157,9 @@ int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t
 extern uint8_t h_arena_buf[];
 /* Nonzero in the injected-failure image (test_harness.c): main runs suite_harness alone. */
 extern const int h_harness_only;
+/* Nonzero for make test-long (host only: the environment's SUBD_TEST_LONG=1): the long
+ * variants of the sweeps, the deepest levels that make test leaves out (each test says which). */
+extern int h_long;
 
 #if defined(SUBD_HOST)
 #define H_HOST 1

@@ -610,9 +610,9 @@ static void alpha_stiffness(void)
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     /* theorem 1: s <= -1/2 diverges -> SUBD_ERR_DIVERGENT, arena untouched */
     o.stiffness = h_int(-1);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), &d, SUBD_ERR_DIVERGENT);
     o.stiffness = SUBD_REAL_FRAC(-3, 2);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), &d, SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_alpha_curve_plan(9, 1, &o, &si, 0), SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_arena_mark(&a), 0);
     /* s in (-1/2, 0]: accepted, reported as not smooth */
@@ -628,7 +628,7 @@ static void alpha_stiffness(void)
     /* a level with f_n <= -1: s = 2, cos kernel, alpha = 0.9 turn: f_0 = 2 cos(0.45 turn) */
     opts(&o, 2, 2, SUBD_ALPHA_COS, 9, 10);
     o.stiffness = h_int(2);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     /* s > 0: successive levels contract: the longest edge shrinks every level, by at most
      * max(s, 1)/(1 + s) (the inner edge is f/(1+f) of its parent, the corner edge at most
      * 1/(1+f) of the longer parent) */
@@ -727,7 +727,7 @@ static void alpha_per_vertex(void)
     opts(&o, 2, 1, SUBD_ALPHA_COS, 1, 8);
     o.tag_num = tags;
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, m, 1, &o, &x, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, m, 1, &o, &x, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.vertex, 2);
     CHECK_EQ(subd_arena_mark(&a), 0);
 }
@@ -805,33 +805,33 @@ static void alpha_curve_errors(void)
     rand_poly(5);
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     opts(&o, 2, 2, SUBD_ALPHA_COS, 1, 5);
-    CHECK_EQ(subd_alpha_curve(0, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve(&a, 0, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, 0, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 2, 1, &o, &out, &d), SUBD_ERR_EMPTY);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 1, 0, &o, &out, &d), SUBD_ERR_EMPTY);
+    CHECK_FAIL(subd_alpha_curve(0, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, 0, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, 0, &out, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 2, 1, &o, &out, &d), &d, SUBD_ERR_EMPTY);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 1, 0, &o, &out, &d), &d, SUBD_ERR_EMPTY);
     CHECK_EQ(subd_alpha_curve_plan(2, 1, &o, &plan, 0), SUBD_ERR_EMPTY);
     o.order = 1;
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     o.order = SUBD_ALPHA_MAX_ORDER + 1u;
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     opts(&o, 2, SUBD_MAX_LEVELS + 1u, SUBD_ALPHA_COS, 1, 5);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     opts(&o, 2, 1, 7, 1, 5);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     opts(&o, 2, 1, SUBD_ALPHA_COS, 1, 0);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     opts(&o, 2, 1, SUBD_ALPHA_COS, SUBD_ALPHA_MAX_NUM + 1, 5);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
     /* cosh of a large angle does not fit */
     opts(&o, 2, 1, SUBD_ALPHA_COSH, 40, 1);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_RANGE);
     /* overflow of the positions: s = 2, cos kernel, alpha = 0.6 turn: f_0 = 2 cos(0.3 turn)
      * = -0.62 gives w = 1/(2 + 2 f_0) = 1.31 */
     opts(&o, 2, 3, SUBD_ALPHA_COS, 3, 5);
     o.stiffness = h_int(2);
     g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_RANGE);
 #if !SUBD_FIXED
     {
         union { uint32_t u; float f; } nan;
@@ -839,7 +839,7 @@ static void alpha_curve_errors(void)
         rand_poly(5);
         g_in[7] = nan.f;
         opts(&o, 2, 1, SUBD_ALPHA_COS, 1, 5);
-        CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_NAN);
+        CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_NAN);
         CHECK_EQ(d.vertex, 2);
     }
 #endif
@@ -909,7 +909,7 @@ static void alpha_kernel_range(void)
         subd_arena_init(&a, WORK_BUF, WORK_BYTES);
         opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
         o.stiffness = 3e9f;
-        CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_PARAM);
+        CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_PARAM);
         CHECK_EQ(subd_alpha_curve_plan(5, 1, &o, &plan, 0), SUBD_ERR_PARAM);
     }
 #endif
@@ -936,11 +936,11 @@ static void alpha_curve_huge_m(void)
 #endif
     subd_arena_init(&a, WORK_BUF, WORK_BYTES);
     opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
-    CHECK_EQ(subd_alpha_curve(&a, p, m, 1, &o, &out, &d), SUBD_ERR_TOO_BIG);
-    CHECK_EQ(subd_alpha_curve(&a, p, m, 0, &o, &out, &d), SUBD_ERR_TOO_BIG);
+    CHECK_FAIL(subd_alpha_curve(&a, p, m, 1, &o, &out, &d), &d, SUBD_ERR_TOO_BIG);
+    CHECK_FAIL(subd_alpha_curve(&a, p, m, 0, &o, &out, &d), &d, SUBD_ERR_TOO_BIG);
     CHECK_EQ(subd_alpha_curve_plan(m, 1, &o, &plan, 0), SUBD_ERR_TOO_BIG);
     o.levels = 0; /* no level to grow: the input count alone is checked */
-    CHECK_EQ(subd_alpha_curve(&a, p, m, 1, &o, &out, &d), SUBD_ERR_TOO_BIG);
+    CHECK_FAIL(subd_alpha_curve(&a, p, m, 1, &o, &out, &d), &d, SUBD_ERR_TOO_BIG);
     CHECK_EQ(subd_arena_mark(&a), 0);
 }
 
@@ -961,12 +961,12 @@ static void alpha_divergent(void)
     rand_poly(9);
     opts(&o, 2, 1, SUBD_ALPHA_BSPLINE, 0, 1);
     o.stiffness = SUBD_REAL_FRAC(-1, 2);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), &d, SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_alpha_curve_plan(9, 1, &o, &plan, 0), SUBD_ERR_DIVERGENT);
     o.stiffness = SUBD_REAL_FRAC(-9, 10);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 0, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 9, 0, &o, &out, &d), &d, SUBD_ERR_DIVERGENT);
     o.stiffness = h_int(-1);
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 9, 1, &o, &out, &d), &d, SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_arena_mark(&a), 0);
     for (k = 2; k <= 4u; k++)
         for (closed = 1; closed < 2u; closed++) { /* closed: max_edge also measures p[m-1] p[0] */
@@ -987,7 +987,7 @@ static void alpha_divergent(void)
     opts(&o, 2, 1, SUBD_ALPHA_COS, 3, 5);
     o.stiffness = h_int(2);
     g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
-    CHECK_EQ(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_RANGE);
     CHECK_EQ(subd_arena_mark(&a), 0);
 }
 

@@ -550,13 +550,13 @@ static void astream_errors(void)
     sk.point = as_stop_sink;
     sk.ctx = &n;
     /* NULLs and bad options */
-    CHECK_EQ(subd_alpha_curve_stream(0, s_in, 5, 1, &o, 0, &sk, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve_stream(&a, 0, 5, 1, &o, 0, &sk, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve_stream(&a, s_in, 5, 1, 0, 0, &sk, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve_stream(&a, s_in, 5, 1, &o, 0, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve_stream_begin(&a, s_in, 5, 1, &o, 0, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve_stream(0, s_in, 5, 1, &o, 0, &sk, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve_stream(&a, 0, 5, 1, &o, 0, &sk, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve_stream(&a, s_in, 5, 1, 0, 0, &sk, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve_stream(&a, s_in, 5, 1, &o, 0, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve_stream_begin(&a, s_in, 5, 1, &o, 0, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_curve_stream_plan(5, 1, &o, 0, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_curve_stream(&a, s_in, 5, 1, &o, h_int(-1), &sk, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_curve_stream(&a, s_in, 5, 1, &o, h_int(-1), &sk, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_curve_stream_plan(5, 1, &o, h_int(-1), &plan), SUBD_ERR_PARAM);
     CHECK_EQ(n, 0);
     as_same_error(2, 1, &o, SUBD_ERR_EMPTY);
@@ -608,10 +608,10 @@ static void astream_errors(void)
         s_in[7] = nan.f;
         as_opts(&o, 2, 1, SUBD_ALPHA_COS, 1, 5);
         as_same_error(5, 1, &o, SUBD_ERR_NAN);
-        CHECK_EQ(subd_alpha_curve_stream_begin(&a, s_in, 5, 1, &o, 0, &s, &d), SUBD_ERR_NAN);
+        CHECK_FAIL(subd_alpha_curve_stream_begin(&a, s_in, 5, 1, &o, 0, &s, &d), &d, SUBD_ERR_NAN);
         CHECK_EQ(d.vertex, 2);
         as_rand_poly(5);
-        CHECK_EQ(subd_alpha_curve_stream(&a, s_in, 5, 1, &o, nan.f, &sk, &d), SUBD_ERR_PARAM);
+        CHECK_FAIL(subd_alpha_curve_stream(&a, s_in, 5, 1, &o, nan.f, &sk, &d), &d, SUBD_ERR_PARAM);
     }
 #endif
     /* the sink's stop value, returned unchanged; the arena given back */

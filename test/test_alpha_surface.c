@@ -448,31 +448,31 @@ static void alpha_ds_errors(void)
     if (!h_build(&a, &fl, &in)) return;
     m0 = subd_arena_mark(&a);
     sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
-    CHECK_EQ(subd_alpha_surface(0, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_surface(&a, 0, &o, &out, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, 0, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(0, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, 0, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, 0, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, 0, 0), SUBD_ERR_PARAM);
     o.levels = 0;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     o.levels = 1;
     o.order = SUBD_ALPHA_MAX_ORDER + 1u;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
     o.order = 1;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     o.order = 2;
     CHECK_EQ(subd_arena_mark(&a), m0);
     o.stiffness = h_int(-1); /* table 1 and theorem 1: diverges */
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_DIVERGENT);
 #if !SUBD_FIXED
     o.stiffness = 3e9f; /* outside the internal Q32.32 range */
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
 #endif
     /* a level with f_n <= -1: s = 2, cos kernel, f_0 = 2 cos(0.45 turn) */
     sopts(&o, 1, SUBD_ALPHA_COS, 9, 10, h_int(2));
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
     /* s in (-1/2, 0]: accepted, not smooth; s in (0, 1/2]: GC0; above: GC1 */
     {
@@ -490,7 +490,7 @@ static void alpha_ds_errors(void)
     /* overflow: s = 2, cos kernel, f_0 = 2 cos(0.3 turn) = -0.62 makes f/(1+f) = -1.6 */
     sopts(&o, 1, SUBD_ALPHA_COS, 3, 5, h_int(2));
     for (i = 0; i < in.num_verts; i++) in.pos[3u * i] = SUBD_FIXED ? h_int((int32_t)(i * 4000u)) : (float)i * 4e37f;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_RANGE);
     CHECK_EQ(subd_arena_mark(&a), m0);
     /* a vertex of valence 33 > SUBD_MAX_FACE_SIZE would make a 33-gon */
     {
@@ -513,7 +513,7 @@ static void alpha_ds_errors(void)
         subd_arena_rewind(&a, m0);
         if (!h_build(&a, &fan, &in)) return;
         sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_ONE);
-        CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_FACE_SIZE);
+        CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_FACE_SIZE);
         CHECK_EQ(d.vertex, 0);
     }
     /* no faces */
@@ -523,7 +523,7 @@ static void alpha_ds_errors(void)
         pts.pos = g_pos;
         subd_arena_rewind(&a, m0);
         if (!h_build(&a, &pts, &in)) return;
-        CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_EMPTY);
+        CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_EMPTY);
     }
 }
 
@@ -792,7 +792,7 @@ static void alpha_ds_no_adjacency(void)
     sopts(&o, 1, SUBD_ALPHA_COS, 1, 4, SUBD_REAL_ONE);
     CHECK_EQ(subd_alpha_surface_plan(&tri, &o, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(plan, 7);
-    CHECK_EQ(subd_alpha_surface(&a, &tri, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &tri, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_arena_mark(&a), m0);
 }
 
@@ -936,10 +936,10 @@ static void alpha_ds_divergent(void)
     if (!read_obj(&a, "test/data/cube_quad.obj", &in)) return;
     m0 = subd_arena_mark(&a);
     sopts(&o, 1, SUBD_ALPHA_BSPLINE, 0, 1, SUBD_REAL_FRAC(-1, 2));
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_alpha_surface_plan(&in, &o, &plan, 0), SUBD_ERR_DIVERGENT);
     o.stiffness = SUBD_REAL_FRAC(-3, 5);
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_DIVERGENT);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_DIVERGENT);
     CHECK_EQ(subd_arena_mark(&a), m0);
     o.stiffness = SUBD_REAL_FRAC(-49, 100);
     {
@@ -1283,18 +1283,18 @@ static void alpha_tags_errors(void)
     o.order = 3;
     tags[5] = SUBD_ALPHA_MAX_NUM + 1;
     tags[6] = -SUBD_ALPHA_MAX_NUM - 1;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.vertex, 5);
     CHECK_EQ(d.face, SUBD_NONE);
     tags[5] = SUBD_ALPHA_MAX_NUM; /* the largest tag is fine */
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.vertex, 6);
     CHECK_EQ(subd_arena_mark(&a), m0);
     o.order = 2; /* even k: the same array is per face (6 faces: tag 5 is the last) */
     CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_OK);
     subd_arena_rewind(&a, m0);
     tags[5] = -SUBD_ALPHA_MAX_NUM - 1;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.face, 5);
     CHECK_EQ(d.vertex, SUBD_NONE);
     CHECK_EQ(subd_arena_mark(&a), m0);
@@ -1304,7 +1304,7 @@ static void alpha_tags_errors(void)
     o.alpha_den = 10;
     o.stiffness = h_int(2);
     for (i = 0; i < 5u; i++) tags[i] = 1;
-    CHECK_EQ(subd_alpha_surface(&a, &in, &o, &out, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_alpha_surface(&a, &in, &o, &out, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_arena_mark(&a), m0);
     CHECK(memcmp(&out, &sentinel, sizeof out) == 0);
     CHECK_EQ(h_mesh_hash(&in), hin);

@@ -110,11 +110,11 @@ static void limit_opts(void)
     if (!CHECK_OK(subd_loop_limit_plan(&tri, &o, &without, &d), &d)) return;
     CHECK(without < with);
     o.flags = 0x80u;
-    CHECK_EQ(subd_loop_limit_plan(&tri, &o, &with, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_limit_plan(&tri, &o, &with, &d), &d, SUBD_ERR_PARAM);
     mark = subd_arena_mark(&a);
-    CHECK_EQ(subd_loop_limit(&a, &tri, &o, &pos, &nrm, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_limit(&a, &tri, &o, &pos, &nrm, &d), &d, SUBD_ERR_PARAM);
     o.flags = SUBD_LOOP_LIMIT_NORMALS;
-    CHECK_EQ(subd_loop_limit(&a, &tri, &o, &pos, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_limit(&a, &tri, &o, &pos, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_arena_mark(&a), mark);
     CHECK(pos == 0);
     o.flags = 0;
@@ -140,12 +140,12 @@ static void failure_has_no_need(void)
     buf = (uint8_t *)subd_arena_alloc(&a, plan);
     if (!CHECK(buf != 0)) return;
     subd_arena_init(&small, buf, plan - 1u);
-    CHECK_EQ(subd_loop(&small, &tri, &o, &out, &d), SUBD_ERR_NOMEM);
+    CHECK_FAIL(subd_loop(&small, &tri, &o, &out, &d), &d, SUBD_ERR_NOMEM);
     CHECK_EQ(d.bytes_needed, plan);
     o.boundary = (subd_loop_boundary)9;
-    CHECK_EQ(subd_loop(&small, &tri, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop(&small, &tri, &o, &out, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.bytes_needed, 0);
-    CHECK_EQ(subd_loop_stream_begin(&small, &tri, &o, &s, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream_begin(&small, &tri, &o, &s, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.bytes_needed, 0);
 }
 

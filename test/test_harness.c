@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The harness itself: its formatter, hash and PRNG against known values, and target
- * assumptions the library relies on (arithmetic right shift, type sizes). Built once more
+/* The harness itself: its formatter, hash and PRNG against known values, target
+ * assumptions the library relies on (arithmetic right shift, type sizes), and the failure
+ * rule of CHECK_FAIL firing on diags that break it. Built once more
  * with -DH_INJECT_FAILURE=1 to prove that a failing check fails the run (Makefile). */
 #include "harness.h"
 
@@ -49,6 +50,39 @@ static void harness_target_assumptions(void)
     CHECK((neg32 >> 1) == -2);
 }
 
+/* The failure rule that CHECK_FAIL applies to every provoked failure fires: a wrong status,
+ * a diag whose status was not written, bytes_needed with another status than NOMEM, none
+ * with NOMEM; and a real failing call passes it. */
+static void harness_fail_rule(void)
+{
+    subd_diag d;
+    subd_arena a;
+    subd_mesh out;
+    subd_loop_opts lo = {1, SUBD_LOOP_BOUNDARY_PAPER, 0};
+    subd_diag_clear(&d);
+    d.status = SUBD_ERR_PARAM;
+    CHECK_EQ(h_fail_rule(SUBD_ERR_PARAM, &d, SUBD_ERR_PARAM), 0);
+    CHECK_EQ(h_fail_rule(SUBD_ERR_RANGE, &d, SUBD_ERR_PARAM), 1);
+    CHECK_EQ(h_fail_rule(SUBD_OK, &d, SUBD_ERR_PARAM), 1);
+    d.bytes_needed = 64u;
+    CHECK_EQ(h_fail_rule(SUBD_ERR_PARAM, &d, SUBD_ERR_PARAM), 3);
+    d.status = SUBD_ERR_NOMEM;
+    CHECK_EQ(h_fail_rule(SUBD_ERR_NOMEM, &d, SUBD_ERR_NOMEM), 0);
+    d.bytes_needed = 0u;
+    CHECK_EQ(h_fail_rule(SUBD_ERR_NOMEM, &d, SUBD_ERR_NOMEM), 3);
+    h_diag_poison(&d); /* a call that never wrote the diag */
+    CHECK_EQ(h_fail_rule(SUBD_ERR_PARAM, &d, SUBD_ERR_PARAM), 2);
+    /* a real call: NULL input -> PARAM, no need; an empty arena -> NOMEM with its need */
+    subd_arena_init(&a, h_arena_buf, 0u);
+    CHECK_FAIL(subd_loop(&a, 0, &lo, &out, &d), &d, SUBD_ERR_PARAM);
+    {
+        subd_mesh m, noadj;
+        subd_arena big;
+        subd_arena_init(&big, h_arena_buf, H_ARENA_BYTES);
+        if (h_tetra_no_adjacency(&big, &m, &noadj)) CHECK_FAIL(subd_loop(&a, &m, &lo, &out, &d), &d, SUBD_ERR_NOMEM);
+    }
+}
+
 #if defined(H_INJECT_FAILURE) && H_INJECT_FAILURE
 /* The injected-failure image runs this suite alone (harness.c's main reads the flag): it
  * proves that one failing check fails a run and is counted, which needs no other suite, and
@@ -66,6 +100,7 @@ const int h_harness_only = 0;
 const test_case suite_harness[] = {
     {"harness_known_values", harness_known_values},
     {"harness_target_assumptions", harness_target_assumptions},
+    {"harness_fail_rule", harness_fail_rule},
 #if defined(H_INJECT_FAILURE) && H_INJECT_FAILURE
     {"harness_injected_failure", harness_injected_failure},
 #endif

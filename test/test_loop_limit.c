@@ -1021,7 +1021,7 @@ static void errors_test(void)
     if (!CHECK(read_corpus("test/data/cube_quad.obj", &a, &m))) return;
     mark = subd_arena_mark(&a);
     CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
-    CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_FAIL(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), &d, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     CHECK_EQ(subd_arena_mark(&a), mark);
@@ -1031,9 +1031,9 @@ static void errors_test(void)
     CHECK_EQ(subd_loop_limit_plan(0, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, 0, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_limit_plan(&m, &(subd_loop_limit_opts){(subd_loop_boundary)7, SUBD_LOOP_LIMIT_NORMALS}, &plan, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(0, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, &pos, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(&a, 0, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, &pos, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, 0, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_limit(0, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, &pos, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_limit(&a, 0, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, &pos, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, 0u}, 0, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){(subd_loop_boundary)7, 0u}, &pos, 0, 0), SUBD_ERR_PARAM);
     CHECK(pos == 0);
 #if !SUBD_FIXED
@@ -1042,7 +1042,7 @@ static void errors_test(void)
         uint32_t i;
         mark = subd_arena_mark(&a);
         for (i = 0; i < m.num_verts; i++) m.pos[3 * i] = (i & 1u) ? 3.0e38f : -3.0e38f;
-        CHECK_EQ(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), SUBD_ERR_RANGE);
+        CHECK_FAIL(subd_loop_limit(&a, &m, &(subd_loop_limit_opts){SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_LIMIT_NORMALS}, &pos, &nrm, &d), &d, SUBD_ERR_RANGE);
         CHECK_EQ(subd_arena_mark(&a), mark);
         CHECK(pos == 0 && nrm == 0);
     }

@@ -17,6 +17,7 @@
  * 2^-20 (1 + max |coordinate|), Q16.16 0.51 + 2^-13 sum_i max_c |p_i - v|_c LSB (one
  * rounding plus the Q28 weight rounding, as test_loop_limit.c states). */
 #include "harness.h"
+#include "fixtures.h"
 #include "../src/loop_rules.h"
 
 #define GN 7u /* grid vertices per side */
@@ -98,20 +99,11 @@ static int build_grid(subd_arena *a, subd_mesh *m)
     return build(a, GN * GN, f, m);
 }
 
-/* A half-edge from a to b, or SUBD_NONE. */
-static uint32_t find_he(const subd_mesh *m, uint32_t a, uint32_t b)
-{
-    uint32_t h;
-    for (h = 0; h < m->num_corners; h++)
-        if (subd_he_origin(m, h) == a && subd_he_dest(m, h) == b) return h;
-    return SUBD_NONE;
-}
-
 /* Tags or clears edge a-b as a crease (either direction). */
 static int crease(subd_mesh *m, uint32_t a, uint32_t b, int on)
 {
-    uint32_t h = find_he(m, a, b);
-    if (h == SUBD_NONE) h = find_he(m, b, a);
+    uint32_t h = fx_find_he(m, a, b);
+    if (h == SUBD_NONE) h = fx_find_he(m, b, a);
     if (h == SUBD_NONE) return 0;
     if (on) subd_edge_tag_set(m, h, SUBD_ETAG_CREASE);
     else subd_edge_tag_clear(m, h, SUBD_ETAG_CREASE);
@@ -441,7 +433,7 @@ static void rules_limit_grid(void)
  * (v_i, m_i, m_(i-1)), m_i on the edge from corner i to i + 1), or SUBD_NONE. */
 static uint32_t edge_child(const subd_mesh *in, const subd_mesh *out, uint32_t a, uint32_t b)
 {
-    uint32_t h = find_he(in, a, b), f, c;
+    uint32_t h = fx_find_he(in, a, b), f, c;
     if (h == SUBD_NONE) return SUBD_NONE;
     f = in->corner_face[h];
     c = out->face_start[4u * f + (h - in->face_start[f])];

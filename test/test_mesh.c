@@ -296,7 +296,7 @@ static void expect_fail(const subd_face_list *fl, int status, uint32_t face, uin
     for (i = 0; i < sizeof m; i++) pm[i] = 0x77;
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     subd_arena_alloc(&a, 16);
-    CHECK_EQ(subd_mesh_build(&a, fl, &m, &d), status);
+    CHECK_FAIL(subd_mesh_build(&a, fl, &m, &d), &d, status);
     CHECK_EQ(d.status, status);
     CHECK_EQ(subd_arena_mark(&a), 16);
     for (i = 0; i < sizeof m; i++) same &= (pm[i] == 0x77);

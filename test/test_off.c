@@ -114,10 +114,10 @@ static void off_multiline_faces(void)
     CHECK_EQ(m.corner_vert[6], 4);
     CHECK_EQ(m.corner_vert[7], 2);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    CHECK_EQ(subd_off_read(&a, bad, slen(bad), &m, &d), SUBD_ERR_ORIENTATION);
+    CHECK_FAIL(subd_off_read(&a, bad, slen(bad), &m, &d), &d, SUBD_ERR_ORIENTATION);
     CHECK_EQ(d.line, 8);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    CHECK_EQ(subd_off_read(&a, cut, slen(cut), &m, &d), SUBD_ERR_PARSE);
+    CHECK_FAIL(subd_off_read(&a, cut, slen(cut), &m, &d), &d, SUBD_ERR_PARSE);
     CHECK_EQ(d.line, 7);
 }
 

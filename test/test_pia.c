@@ -710,16 +710,16 @@ static void pia_params(void)
 
     o = opts(SUBD_PIA_PAPER, SUBD_LOOP_BOUNDARY_PAPER, tol_std(), 0);
     CHECK_EQ(subd_pia_plan(&m, &o, &plan, 0), SUBD_ERR_PARAM); /* max_iter = 0 */
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.status, SUBD_ERR_PARAM);
     o = opts(SUBD_PIA_PAPER, SUBD_LOOP_BOUNDARY_PAPER, 0, 10);
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM); /* tol = 0 */
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM); /* tol = 0 */
     o.tol = subd_neg(tol_std(), &ovf);
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM); /* tol < 0 */
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM); /* tol < 0 */
 #if SUBD_FIXED
     o.tol = 1; /* 1 LSB: below the 2-LSB floor */
     CHECK_EQ(subd_pia_plan(&m, &o, &plan, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
     o.tol = 2; /* the floor itself is accepted and reachable here */
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_OK);
     CHECK(r.converged);
@@ -732,27 +732,27 @@ static void pia_params(void)
         nan.u = 0x7fc00000u;
         inf.u = 0x7f800000u;
         o.tol = nan.f;
-        CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
+        CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
         o.tol = inf.f;
-        CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
+        CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
     }
 #endif
     o = opts((subd_pia_method)2, SUBD_LOOP_BOUNDARY_PAPER, tol_std(), 10);
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
     o = opts(SUBD_PIA_FAST, (subd_loop_boundary)2, tol_std(), 10);
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
     o = opts(SUBD_PIA_FAST, SUBD_LOOP_BOUNDARY_PAPER, tol_std(), 10);
-    CHECK_EQ(subd_pia(0, &m, &o, &V, &r, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia(&pa, 0, &o, &V, &r, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia(&pa, &m, 0, &V, &r, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia(&pa, &m, &o, 0, &r, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_pia(&pa, &m, &o, &V, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(0, &m, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, 0, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, 0, &V, &r, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, &o, 0, &r, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &m, &o, &V, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_pia_plan(&m, &o, 0, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_pia_plan(0, &o, &plan, 0), SUBD_ERR_PARAM);
     subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
     bad = m;
     bad.twin = 0; /* no adjacency (e.g. a subd_loop output without SUBD_LOOP_ADJACENCY) */
-    CHECK_EQ(subd_pia(&pa, &bad, &o, &V, &r, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_pia(&pa, &bad, &o, &V, &r, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(pa.used, 0);
     CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, 0), SUBD_OK); /* diag is optional */
     /* quads: NOT_TRIANGLES naming the first face */
@@ -760,7 +760,7 @@ static void pia_params(void)
     subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
     if (load_obj(&a, "test/data/cube_quad.obj", &m)) {
         CHECK_EQ(subd_pia_plan(&m, &o, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
-        CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_NOT_TRIANGLES);
+        CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_NOT_TRIANGLES);
         CHECK_EQ(d.face, 0);
         CHECK_EQ(pa.used, 0);
     }
@@ -793,7 +793,7 @@ static void pia_range(void)
         subd_arena_init(&pa, g_buf, (uint32_t)sizeof g_buf);
         subd_arena_alloc(&pa, 16);
         r.iterations = 12345u;
-        CHECK_EQ(subd_pia(&pa, &m, &o, &V, &r, &d), SUBD_ERR_RANGE);
+        CHECK_FAIL(subd_pia(&pa, &m, &o, &V, &r, &d), &d, SUBD_ERR_RANGE);
         CHECK_EQ(d.status, SUBD_ERR_RANGE);
         CHECK_EQ(pa.used, 16);
         CHECK(V == (subd_real *)&r);

@@ -240,8 +240,8 @@ static void ply_ascii_errors(void)
         }
     }
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
-    CHECK_EQ(subd_ply_read(&a, 0, 3, &m, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_ply_plan(ok, slen(ok), 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_ply_read(&a, 0, 3, &m, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_ply_plan(ok, slen(ok), 0, &d), &d, SUBD_ERR_PARAM);
 }
 
 static void ply_binary_errors(void)

@@ -864,7 +864,7 @@ static void q48_normal_range(void)
     if (!h_build(&a, &fl, &in) || !run(&a, &in, &of, &out0)) return;
     mark = subd_arena_mark(&a);
     out = out0;
-    CHECK_EQ(subd_quasi48(&a, &in, &on, &out, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_quasi48(&a, &in, &on, &out, &d), &d, SUBD_ERR_RANGE);
     CHECK_EQ(subd_arena_mark(&a), mark);
     CHECK(out.pos == out0.pos && out.num_verts == out0.num_verts && out.num_faces == out0.num_faces);
     for (i = 0; i < 12u; i++) CHECK(h_same(in.pos[i], keep[i]));
@@ -953,27 +953,27 @@ static void q48_errors(void)
     if (!h_build(&a, &fl, &in)) return;
     o.steps = 0;
     CHECK_EQ(subd_quasi48_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, &in, &o, &out, &d), &d, SUBD_ERR_PARAM);
     o.steps = SUBD_QUASI48_MAX_STEPS + 1u;
-    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, &in, &o, &out, &d), &d, SUBD_ERR_PARAM);
     o = opts(1, 0);
     o.len_bits = SUBD_QUASI48_LEN_BITS_EXACT + 1u;
-    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, &in, &o, &out, &d), &d, SUBD_ERR_PARAM);
     o = opts(1, 0);
     o.boundary = (subd_quasi48_boundary)7;
-    CHECK_EQ(subd_quasi48(&a, &in, &o, &out, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, &in, &o, &out, &d), &d, SUBD_ERR_PARAM);
     o = opts(1, 0);
-    CHECK_EQ(subd_quasi48(0, &in, &o, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_quasi48(&a, 0, &o, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_quasi48(&a, &in, 0, &out, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_quasi48(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(0, &in, &o, &out, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, 0, &o, &out, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, &in, 0, &out, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_quasi48(&a, &in, &o, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_quasi48_plan(&in, &o, 0, 0), SUBD_ERR_PARAM);
     for (i = 0; i < 12; i++) qpos[i] = 0;
     qpos[3] = qpos[6] = qpos[7] = qpos[10] = subd_from_int(1, &ovf);
     fl.num_verts = 4; fl.pos = qpos; fl.num_faces = 1; fl.face_size = quad_size; fl.index = quad_idx;
     if (!h_build(&a, &fl, &q)) return;
     CHECK_EQ(subd_quasi48_plan(&q, &o, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
-    CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_FAIL(subd_quasi48(&a, &q, &o, &out, &d), &d, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     CHECK_EQ(ovf, 0);
     {
@@ -982,7 +982,7 @@ static void q48_errors(void)
         if (CHECK(cf != 0) && CHECK_EQ(subd_obj_read(&a, cf->data, cf->len, &q, &d), SUBD_OK)) {
             mark = subd_arena_mark(&a);
             CHECK_EQ(subd_quasi48_plan(&q, &o, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
-            CHECK_EQ(subd_quasi48(&a, &q, &o, &out, &d), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_FAIL(subd_quasi48(&a, &q, &o, &out, &d), &d, SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.face, 0);
             CHECK_EQ(subd_arena_mark(&a), mark);

@@ -875,25 +875,25 @@ static void sr48_errors(void)
     if (!load_tri(&a, "test/data/hexfan.obj", &in)) return;
     o.steps = SUBD_SR48_MAX_STEPS + 1u;
     CHECK_EQ(subd_sr48_plan(&in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, 0), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_build(&a, &in, &o, &h, &d), &d, SUBD_ERR_PARAM);
     o = sopts(1, 0x2u);
-    CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_build(&a, &in, &o, &h, &d), &d, SUBD_ERR_PARAM);
     o = sopts(1, 0);
-    CHECK_EQ(subd_sr48_build(0, &in, &o, &h, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_build(&a, 0, &o, &h, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_build(&a, &in, 0, &h, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_build(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_build(0, &in, &o, &h, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_build(&a, 0, &o, &h, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_build(&a, &in, 0, &h, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_build(&a, &in, &o, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_plan(&in, &o, SUBD_SR48_CLUSTERS_UNKNOWN, 0, 0), SUBD_ERR_PARAM);
     CHECK_EQ(subd_sr48_plan(&in, &o, 4, &plan, 0), SUBD_ERR_PARAM); /* 6 faces: at most 3 clusters */
     CHECK_EQ(subd_sr48_plan(&in, &o, 3, &plan, 0), SUBD_OK);
-    CHECK_EQ(subd_sr48_count_clusters(0, &in, &c, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_sr48_count_clusters(&a, &in, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_count_clusters(0, &in, &c, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_sr48_count_clusters(&a, &in, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(a.used, subd_arena_mark(&a));
     /* count_clusters in too small an arena */
     {
         subd_arena small;
         subd_arena_init(&small, g_in_buf, 64);
-        CHECK_EQ(subd_sr48_count_clusters(&small, &in, &c, &d), SUBD_ERR_NOMEM);
+        CHECK_FAIL(subd_sr48_count_clusters(&small, &in, &c, &d), &d, SUBD_ERR_NOMEM);
         CHECK(d.bytes_needed > 64u);
         CHECK_EQ(small.used, 0);
     }
@@ -905,13 +905,13 @@ static void sr48_errors(void)
             CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, 0), SUBD_ERR_NOT_TRIANGLES);
             d.face = 77u;
             d.bytes_needed = 99u;
-            CHECK_EQ(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, &d), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_FAIL(subd_sr48_plan(&q, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, &d), &d, SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.status, SUBD_ERR_NOT_TRIANGLES); /* the plan names the face as the build does */
             CHECK_EQ(d.face, 0);
             CHECK_EQ(d.bytes_needed, 0u);
-            CHECK_EQ(subd_sr48_build(&a, &q, &o, &h, &d), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_FAIL(subd_sr48_build(&a, &q, &o, &h, &d), &d, SUBD_ERR_NOT_TRIANGLES);
             CHECK_EQ(d.face, 0);
-            CHECK_EQ(subd_sr48_count_clusters(&a, &q, &c, &d), SUBD_ERR_NOT_TRIANGLES);
+            CHECK_FAIL(subd_sr48_count_clusters(&a, &q, &c, &d), &d, SUBD_ERR_NOT_TRIANGLES);
         }
     }
     /* points only: no faces */
@@ -921,7 +921,7 @@ static void sr48_errors(void)
     g_pos[6] = g_pos[7] = g_pos[8] = 0;
     if (h_build(&a, &fl, &pts)) {
         CHECK_EQ(subd_sr48_plan(&pts, &o, SUBD_SR48_CLUSTERS_UNKNOWN, &plan, 0), SUBD_ERR_EMPTY);
-        CHECK_EQ(subd_sr48_build(&a, &pts, &o, &h, &d), SUBD_ERR_EMPTY);
+        CHECK_FAIL(subd_sr48_build(&a, &pts, &o, &h, &d), &d, SUBD_ERR_EMPTY);
     }
 #if !SUBD_FIXED
     /* float32: a face point beyond FLT_MAX */
@@ -935,7 +935,7 @@ static void sr48_errors(void)
         fl = tri_list(3, g_pos, 1, idx);
         if (h_build(&a, &fl, &big)) {
             uint32_t used = a.used;
-            CHECK_EQ(subd_sr48_build(&a, &big, &o, &h, &d), SUBD_ERR_RANGE);
+            CHECK_FAIL(subd_sr48_build(&a, &big, &o, &h, &d), &d, SUBD_ERR_RANGE);
             CHECK_EQ(a.used, used);
         }
         subd_arena_rewind(&a, mark);

@@ -438,11 +438,11 @@ static void stl_binary_errors(void)
         }
     }
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES / 2u);
-    CHECK_EQ(subd_stl_read(&a, 0, 5, &s, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_stl_read(0, io_buf, n, &s, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_stl_read(&a, io_buf, n, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_stl_plan(io_buf, n, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_stl_plan(0, 0, &len, &d), SUBD_ERR_EMPTY);
+    CHECK_FAIL(subd_stl_read(&a, 0, 5, &s, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_stl_read(0, io_buf, n, &s, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_stl_read(&a, io_buf, n, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_stl_plan(io_buf, n, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_stl_plan(0, 0, &len, &d), &d, SUBD_ERR_EMPTY);
     CHECK_EQ(subd_stl_read(&a, 0, 0, &s, 0), SUBD_ERR_EMPTY);
 }
 

@@ -129,12 +129,12 @@ static void pull_errors(void)
     /* begin's own errors: arena and handle untouched */
     for (i = 0; i < (uint32_t)sizeof sentinel; i++) ((uint8_t *)&sentinel)[i] = 0xA5u;
     s = sentinel;
-    CHECK_EQ(subd_loop_stream_begin(&a, &quad, &o, &s, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_FAIL(subd_loop_stream_begin(&a, &quad, &o, &s, &d), &d, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
-    CHECK_EQ(subd_loop_stream_begin(0, &in, &o, &s, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream_begin(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream_begin(0, &in, &o, &s, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream_begin(&a, &in, &o, 0, &d), &d, SUBD_ERR_PARAM);
     o.levels = 0;
-    CHECK_EQ(subd_loop_stream_begin(&a, &in, &o, &s, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream_begin(&a, &in, &o, &s, &d), &d, SUBD_ERR_PARAM);
     o.levels = 2;
     CHECK_EQ(d.bytes_needed, 0);
     if (!CHECK_OK(subd_loop_stream_plan(&in, &o, &plan, 0), &d)) return;
@@ -143,7 +143,7 @@ static void pull_errors(void)
     if (!CHECK(buf != 0)) return;
     for (i = 0; i < plan; i += (i < 64u || plan - i < 64u) ? 1u : 61u) {
         subd_arena_init(&small, buf, i);
-        if (!CHECK_EQ(subd_loop_stream_begin(&small, &in, &o, &s, &d), SUBD_ERR_NOMEM)) break;
+        if (!CHECK_FAIL(subd_loop_stream_begin(&small, &in, &o, &s, &d), &d, SUBD_ERR_NOMEM)) break;
         if (!CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(small.used, 0)) break;
     }
     for (i = 0; i < (uint32_t)sizeof s; i++)
@@ -185,7 +185,7 @@ static void push_stop(void)
     CHECK_EQ(d.face, 39u / 16u); /* 16 triangles per control face at two levels */
     CHECK_EQ(subd_arena_mark(&a), mark);
     CHECK_EQ(subd_stream_next_tris(&s, pull_buf, 1), 0);
-    CHECK_EQ(subd_stream_run_tris(&s, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_stream_run_tris(&s, 0, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(d.bytes_needed, 0);
 }
 

@@ -41,7 +41,7 @@ static void expect(const char *text, int status, uint32_t line, const char *what
     int st;
     if (!read_mesh("test/data/icosahedron.obj", &a, &m)) return;
     before = tag_hash(&m);
-    CHECK_EQ(subd_tags_check(text, slen(text), &m, &rep, &d), status);
+    CHECK_FAIL(subd_tags_check(text, slen(text), &m, &rep, &d), &d, status);
     CHECK_EQ(tag_hash(&m), before); /* check never changes the mesh */
     st = subd_tags_apply(text, slen(text), &m, &rep, &d);
     if (!CHECK_EQ(st, status) || !CHECK_EQ(d.line, line) || !CHECK_EQ(d.status, status)) {
@@ -83,10 +83,10 @@ static void tags_index_errors(void)
     expect("crease 1 7\n", SUBD_ERR_INDEX, 1, "opposite vertices share no edge");
     expect("crease 3 3\n", SUBD_ERR_INDEX, 1, "a vertex and itself");
     if (!read_mesh("test/data/icosahedron.obj", &a, &m)) return;
-    CHECK_EQ(subd_tags_apply("fixed 13\n", 9, &m, &rep, &d), SUBD_ERR_INDEX);
+    CHECK_FAIL(subd_tags_apply("fixed 13\n", 9, &m, &rep, &d), &d, SUBD_ERR_INDEX);
     CHECK_EQ(d.vertex, SUBD_NONE);
     CHECK_EQ(rep.edge[0], SUBD_NONE);
-    CHECK_EQ(subd_tags_apply(noedge, slen(noedge), &m, &rep, &d), SUBD_ERR_INDEX);
+    CHECK_FAIL(subd_tags_apply(noedge, slen(noedge), &m, &rep, &d), &d, SUBD_ERR_INDEX);
     CHECK_EQ(d.line, 2);
     CHECK_EQ(d.vertex, 0);
     CHECK_EQ(rep.edge[0], 0);
@@ -100,8 +100,8 @@ static void tags_params(void)
     subd_diag d;
     subd_tags_report rep;
     if (!read_mesh("test/data/icosahedron.obj", &a, &m)) return;
-    CHECK_EQ(subd_tags_apply("corner 1\n", 9, 0, &rep, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_tags_check(0, 3, &m, &rep, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_tags_apply("corner 1\n", 9, 0, &rep, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_tags_check(0, 3, &m, &rep, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_tags_apply(0, 0, &m, &rep, &d), SUBD_OK); /* an empty file */
     CHECK_EQ(rep.creases + rep.vertex_tags, 0);
     CHECK_EQ(subd_tags_apply("corner 1\n", 9, &m, 0, 0), SUBD_OK); /* report and diag optional */
@@ -295,16 +295,16 @@ static void tags_alpha_values(void)
     /* den 8: 1/3 (line 3) is not a whole number of eighths */
     for (i = 0; i < 12u; i++) vn[i] = v0[i];
     for (i = 0; i < 20u; i++) fn[i] = f0[i];
-    CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 8, vn, fn, &rep, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_tags_alpha(text, slen(text), &m, 8, vn, fn, &rep, &d), &d, SUBD_ERR_RANGE);
     CHECK_EQ(d.line, 3);
     CHECK(memcmp(vn, v0, sizeof vn) == 0 && memcmp(fn, f0, sizeof fn) == 0);
     /* a numerator beyond SUBD_ALPHA_MAX_NUM: 8 turns over 2^28 */
-    CHECK_EQ(subd_tags_alpha("corner 1\nalpha 1 8\n", 19, &m, 1 << 28, vn, fn, &rep, &d), SUBD_ERR_RANGE);
+    CHECK_FAIL(subd_tags_alpha("corner 1\nalpha 1 8\n", 19, &m, 1 << 28, vn, fn, &rep, &d), &d, SUBD_ERR_RANGE);
     CHECK_EQ(d.line, 2);
     CHECK(memcmp(vn, v0, sizeof vn) == 0);
     CHECK_EQ(subd_tags_alpha("alpha 1 -3\n", 11, &m, 1 << 28, vn, fn, &rep, &d), SUBD_OK);
     CHECK_EQ(vn[0], -3 * (1 << 28));
-    CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 0, vn, fn, &rep, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_tags_alpha(text, slen(text), &m, 0, vn, fn, &rep, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_tags_alpha(text, slen(text), &m, 240, 0, 0, &rep, &d), SUBD_OK); /* checked only */
     /* a common denominator beyond int32 is reported as 0 */
     CHECK_EQ(subd_tags_check("alpha 1 1/999999937\nalpha 2 1/999999929\n", 40, &m, &rep, &d), SUBD_OK);

@@ -451,15 +451,18 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * its child state, its corners' sources and whether it counts, 6 words; the star's keys,
  * 2 words per window triangle), the decided diamond's descendant diamonds of its first
  * SUBD_SR48_STREAM_CHORD_EXACT_ levels below (at most 2 * 4^j triangles j levels down, 3
- * words each, and a count per level; src/sr48_chord.c) and the walk's finest positions
- * (3 subd_reals per level + 4). */
+ * words each, and a count per level; src/sr48_chord.c), the walk's finest positions
+ * (3 subd_reals per level + 4) and a cache of finest positions
+ * (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3 subd_reals;
+ * src/sr48_chord_walk.c). */
 #define SUBD_SR48_STREAM_CHORD_EXACT_ 3u
 #define SUBD_SR48_STREAM_CHORD_DESC_ (2u * ((1u << (2u * (SUBD_SR48_STREAM_CHORD_EXACT_ + 1u))) - 1u) / 3u)
+#define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
     (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
-                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_)) + \
-     SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u)))
+                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \
+     SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u + SUBD_SR48_STREAM_CHORD_CACHE_)))
 
 /* The 0.3 names (subd_adapt*, SUBD_ADAPT_*; header subd_semireg48.h), kept as aliases
  * (deprecated, until 1.0): one name per scheme, sr48, across its header, types, calls, files

@@ -21,22 +21,71 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 
+/* The cache of finest positions (S48C_NC entries, direct mapped by id: the ids after cdesc,
+ * the positions after cpos, sr48_stream_internal.h): a
+ * vertex's finest position is a function of its id (subd_s48_finest_ finds subd_sr48_build's
+ * bits, whatever window it starts from), so a hit gives the same bits as the descent it saves.
+ * The walked triangles' corners and the nodes' new vertices are asked again and again: by
+ * every star triangle at a corner, by the decisions of the sibling and of the children. */
+void subd_s48_chord_begin_(s48_state *s)
+{
+    uint32_t i;
+    uint32_t *cid = s->cdesc + 3u * S48C_ND;
+    for (i = 0; i < 2u * S48C_NC; i++) cid[i] = 0xffffffffu;
+}
+
+static uint32_t s48c_slot(uint64_t id)
+{
+    return (uint32_t)(((uint32_t)id ^ (uint32_t)(id >> 32)) * 2654435761u) >> 16 & (S48C_NC - 1u);
+}
+
+/* subd_s48_finest_ through the cache (the same contract; blocks > k and X are clobbered on a
+ * miss only, which the callers allow). */
+static int s48c_finest(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
+{
+    uint32_t e = s48c_slot(id), q, *cid = s->cdesc + 3u * S48C_ND;
+    subd_real *cp = s->cpos + 3u * (s->levels + 4u);
+    if (cid[2u * e] == (uint32_t)id && cid[2u * e + 1u] == (uint32_t)(id >> 32)) {
+        for (q = 0; q < 3u; q++) out[q] = cp[3u * e + q];
+        return 1;
+    }
+    if (!subd_s48_finest_(s, k, t, id, out)) return 0;
+    cid[2u * e] = (uint32_t)id;
+    cid[2u * e + 1u] = (uint32_t)(id >> 32);
+    for (q = 0; q < 3u; q++) cp[3u * e + q] = out[q];
+    return 1;
+}
+
 /* CHORD (the criterion and its proof: sr48_chord.c). Rebuilds the windows of levels 0..k
  * along the path of the level-k triangle with key `key` (T0 * 2^k + its child bits), as
  * the walk leaves them when that triangle is current (hd[2], hd[5]): the same calls on the
- * same input, so the same bits. 0 on failure. */
-static int s48c_path(s48_state *s, uint64_t key, uint32_t k)
+ * same input, so the same bits. `have` is the key whose path the windows 0..k hold now
+ * (the walk leaves them alone): window j + 1 is a function of window j and its current
+ * triangle (level j's ancestor) only, window 0 of T0 only, so the windows up to one level
+ * below the deepest common ancestor are kept and only the child choices there are redone.
+ * 0 on failure. */
+static int s48c_path(s48_state *s, uint64_t key, uint64_t have, uint32_t k)
 {
     s48_win w, x, c;
-    uint32_t j;
-    if (!subd_s48_build0_(s, (uint32_t)(key >> k))) return 0;
-    for (j = 0; j < k; j++) {
+    uint32_t j, a = 0, fresh = 0;
+    if ((key >> k) != (have >> k)) {
+        fresh = 1;
+        if (!subd_s48_build0_(s, (uint32_t)(key >> k))) return 0;
+    } else {
+        /* a: the levels whose ancestors agree (ancestor at level j: key >> (k - j)), at
+         * least level 0's; windows 0..a are kept (a <= k - 1: the keys differ at level k) */
+        while (a + 1u < k && (key >> (k - a - 1u)) == (have >> (k - a - 1u))) a++;
+        if (key == have) a = k;
+    }
+    for (j = a; j < k; j++) {
         uint32_t bit = (uint32_t)(key >> (k - 1u - j)) & 1u;
         s48_lev(s, j, &w);
-        s48_x(s, &x);
         s48_lev(s, j + 1u, &c);
         w.hd[5] = bit + 1u;
-        if (!subd_s48_refine_(s, &w, j, &x) || !subd_s48_crop_(s, &x, 2u * w.hd[2], &c)) return 0;
+        if (j > a || fresh) { /* kept: window a + 1, the crop around the common ancestor's children */
+            s48_x(s, &x);
+            if (!subd_s48_refine_(s, &w, j, &x) || !subd_s48_crop_(s, &x, 2u * w.hd[2], &c)) return 0;
+        }
         c.hd[2] = c.hd[3u + bit];
         if (c.hd[2] == S48_OUT) return 0;
     }
@@ -224,6 +273,42 @@ static int s48c_may(const s48_state *s, const s48_win *w, uint32_t k, uint32_t i
     return 0;
 }
 
+/* s48c_may one level deeper: may the subtree of the walk's node cur (window w of level j,
+ * k <= j < k + S48C_M) hold a counting node? The same test on level j's ancestors of the
+ * deepest descendants kept (key >> (k + m - j)): equal to cur, or (m = S48C_M) sharing a
+ * vertex with it (the lemma of s48c_may holds at any level between: two triangles of one
+ * level that meet share a vertex). An ancestor not in the window does not meet cur (the
+ * window holds cur's rings). Only asked of a node that does not count: then none of its
+ * ancestors counts either (the descendants of a counting node of level < k + S48C_M count,
+ * s48c_desc), so no test of the walk involves its subtree when this says no. */
+static int s48c_may_at(const s48_state *s, const s48_win *w, uint32_t k, uint32_t j, uint32_t cur)
+{
+    uint32_t m = s->levels - 1u - k, x, a, b;
+    uint64_t kc = s48_key(w, cur), prev = ~(uint64_t)0;
+    const uint32_t *e;
+    if (m > S48C_M) m = S48C_M;
+    if (k + m < j) return 0;
+    e = s->cdesc + 3u * s48c_off(m);
+    for (x = 0; x < s->cdn[m]; x++) {
+        uint64_t an = ((((uint64_t)e[3u * x + 2u] << 32) | e[3u * x + 1u])) >> (k + m - j);
+        uint32_t lo = 0, hi = w->hd[0];
+        if (an == prev) continue; /* sorted by key: equal ancestors are consecutive */
+        prev = an;
+        if (an == kc) return 1;
+        if (m < S48C_M) continue;
+        while (lo < hi) { /* the ancestor in the window (sorted by key) */
+            uint32_t mid = (lo + hi) / 2u;
+            if (s48_key(w, mid) < an) lo = mid + 1u;
+            else hi = mid;
+        }
+        if (lo >= w->hd[0] || s48_key(w, lo) != an) continue;
+        for (a = 0; a < 3u; a++)
+            for (b = 0; b < 3u; b++)
+                if (w->tv[3u * lo + a] == w->tv[3u * cur + b]) return 1;
+    }
+    return 0;
+}
+
 /* The vertex created by the walk's node at level i (its finest position known) against
  * the interpolant of every node from the walked triangle (level k) down to it that counts
  * (s48c_counts). */
@@ -259,7 +344,7 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
     uint32_t j = k, q;
     s48_lev(s, k, &w);
     for (q = 0; q < 3u; q++)
-        if (!subd_s48_finest_(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
+        if (!s48c_finest(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
     s->ccur[k] = ts;
     s->cch[k] = 0;
     for (q = 0; q < 3u; q++) s->csrc[3u * k + q] = q;
@@ -268,7 +353,7 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
         subd_real *pm = s->cpos + 3u * (3u + j);
         s48_lev(s, j, &w);
         s->cfl[j] = s48c_counts(s, k, j, &w, cur);
-        if (j - k != S48C_M || s->cfl[j]) {
+        if (s->cfl[j] || j - k > S48C_M || (j - k < S48C_M && s48c_may_at(s, &w, k, j, cur))) {
             s48_x(s, &x);
             if (!subd_s48_refine_(s, &w, j, &x)) return -1;
             v = x.tv[6u * cur]; /* the node's new vertex */
@@ -278,7 +363,7 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
                 if (!subd_s48_crop_(s, &x, 2u * cur, &c) || c.hd[3] == S48_OUT) return -1;
                 /* its finest position: a descent from child 0 (blocks > j + 1 and X; child
                  * 0's walk rebuilds them from block j + 1) */
-                if (!subd_s48_finest_(s, j + 1u, c.hd[3], id, pm)) return -1;
+                if (!s48c_finest(s, j + 1u, c.hd[3], id, pm)) return -1;
                 s->cch[j] = 1u; /* in child 0 while its new vertex is tested */
                 if (s48c_test(s, k, j)) return 1;
                 j++;
@@ -318,13 +403,14 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
 {
     s48_win w;
     uint32_t vs[4], nv = 3, i, j, q, ns = 1, moved = 0;
-    uint64_t cur;
+    uint64_t cur, have;
     int r = 0;
     uint16_t nb;
     if (!s48c_desc(s, k, t)) return -1;
     s48_lev(s, k, &w);
     nb = w.tn[3u * t];
     cur = s48_key(&w, t);
+    have = cur;
     for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
     s->ckey[0] = (uint32_t)cur;
@@ -345,13 +431,14 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
         if (i == 0u) {
             r = s48_chord_walk(s, k, t);
         } else {
+            if (!s48c_path(s, key, have, k)) return -1;
+            have = key;
             moved = 1;
-            if (!s48c_path(s, key, k)) return -1;
             s48_lev(s, k, &w);
             r = s48_chord_walk(s, k, w.hd[2]);
         }
         if (r < 0) return -1;
     }
-    if (moved && !s48c_path(s, cur, k)) return -1;
+    if (moved && !s48c_path(s, cur, have, k)) return -1;
     return r;
 }

@@ -130,8 +130,10 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         subd_real *l0 = nl ? subd_layout_take(&y, 3u * cv, (uint32_t)sizeof(subd_real)) : 0;
         uint32_t *lgv = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *lgvt = nl ? subd_layout_take(&y, cv, 4u) : 0;
-        uint32_t *ci = chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND, 4u) : 0;
-        subd_real *cp = chord ? subd_layout_take(&y, 3u * (levels + 4u), (uint32_t)sizeof(subd_real)) : 0;
+        uint32_t *ci =
+            chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC, 4u)
+                  : 0;
+        subd_real *cp = chord ? subd_layout_take(&y, 3u * (levels + 4u + S48C_NC), (uint32_t)sizeof(subd_real)) : 0;
         if (s) {
             s->l0 = l0;
             s->lgv = lgv;
@@ -421,6 +423,7 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->tend = 0;
     s->built = 0;
     s->err = 0;
+    if (o->adapt.mode == SUBD_SR48_ADAPT_CHORD) subd_s48_chord_begin_(s);
     subd_stream_start(str, a, e.mark, SUBD_STREAM_TRIS, &s->impl, 2u);
     return subd_entry_ok(&e);
 }

@@ -29,6 +29,7 @@
 #define S48_RINGS SUBD_SR48_STREAM_RINGS_
 #define S48C_M SUBD_SR48_STREAM_CHORD_EXACT_ /* CHORD: levels of exact descendants (sr48_chord.c) */
 #define S48C_ND SUBD_SR48_STREAM_CHORD_DESC_  /* CHORD: their capacity, triangles              */
+#define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached finest positions (a power of 2) */
 
 /* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt. */
 typedef struct s48_win {
@@ -87,6 +88,8 @@ typedef struct s48_state {
      * descendants per level (count, then packed window triangle + path, key lo, key hi) */
     uint32_t *ccur, *cch, *csrc, *cfl, *ckey, *cdn, *cdesc;
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
+    /* (the cache of finest positions, sr48_chord_walk.c: S48C_NC ids after cdesc's 3 S48C_ND
+     * words, their positions after cpos's 3 (levels + 4) subd_reals) */
 } s48_state;
 
 /* Window access (hot: every level of every walk), shared by the four files. */
@@ -151,5 +154,7 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop);
 /* CHORD's decision for the current triangle t of the level-k window (sr48_chord_walk.c):
  * 1 split, 0 leaf, -1 failure. */
 int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t);
+/* Empties CHORD's cache of finest positions (sr48_chord_walk.c); at the stream's begin. */
+void subd_s48_chord_begin_(s48_state *s);
 
 #endif

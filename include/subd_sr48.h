@@ -430,14 +430,23 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_DFS_BYTES_(L, N) \
     SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
+/* Uniform checkpoints: of the levels 0..D above the tile (D = L - m), every
+ * SUBD_SR48_STREAM_CKPT_-th keeps its window, the ones between share CKPT_ - 1 windows and are
+ * rebuilt from their checkpoint when the walk returns to them: SUBD_SR48_STREAM_SLOTS_(D) level
+ * windows, plus 2 words per level and one per slot of walk state. */
+#define SUBD_SR48_STREAM_CKPT_ 4u
+#define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TM_(L) : 0u)
+#define SUBD_SR48_STREAM_SLOTS_(d) \
+    ((uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + 1u + \
+     ((uint32_t)(d) < SUBD_SR48_STREAM_CKPT_ - 1u ? (uint32_t)(d) : SUBD_SR48_STREAM_CKPT_ - 1u))
 #define SUBD_SR48_STREAM_BYTES(L, N) \
-    SUBD_SR48_STREAM_G_((uint32_t)(L) + 1u - SUBD_SR48_STREAM_TM_(L) > 0u ? (uint32_t)(L) + 1u - SUBD_SR48_STREAM_TM_(L) \
-                                                                        : 1u, \
+    (SUBD_SR48_SA_(4u * (2u * ((uint32_t)(L) + 1u) + SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)))) + \
+     SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TM_(L) > 1u ? 1u : 0u, \
                         SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)) \
                                                      : SUBD_SR48_STREAM_WT_(N), \
                         SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L)) \
-                                                     : SUBD_SR48_STREAM_WV_(N))
+                                                     : SUBD_SR48_STREAM_WV_(N)))
 /* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
  * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
  * triangles (the adaptation box lives in the run state). */

@@ -84,11 +84,11 @@ static uint32_t s48_tile_levels(uint32_t levels, uint32_t uniform)
     return levels < SUBD_SR48_STREAM_TILE_LEVELS ? (levels > 0u ? levels : 1u) : SUBD_SR48_STREAM_TILE_LEVELS;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d, a window per c-th level and c - 1
- * shared by the levels between (SUBD_SR48_STREAM_SLOTS_). */
+/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level and
+ * c - 1 shared by the levels between (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
-    return d / c + 1u + (d < c - 1u ? d : c - 1u);
+    return d / c + c;
 }
 
 /* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
@@ -99,7 +99,8 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
 {
     subd_layout y;
     const uint32_t m = s48_tile_levels(levels, !nl && !chord), tile = m > 1u;
-    const uint32_t dl = levels >= m ? levels - m : 0u, ckc = !nl && !chord ? SUBD_SR48_STREAM_CKPT_ : 0u;
+    const uint32_t dl = levels >= m ? levels - m : 0u, ckc =
+        !nl && !chord && dl > SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
     const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = tile ? SUBD_SR48_STREAM_TT_(valence, m) : ct, av = tile ? SUBD_SR48_STREAM_TV_(valence, m) : cv;

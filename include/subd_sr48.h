@@ -393,8 +393,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
  * overflow ring (2 triangles), the level windows (20 bytes per triangle, 21 per vertex;
- * uniform: L - m + 1 of them and the tile window, see SUBD_SR48_STREAM_TILE_LEVELS;
- * otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
+ * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
+ * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
  * (28 bytes per vertex in both arithmetics) and the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
@@ -430,14 +430,26 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_DFS_BYTES_(L, N) \
     SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
+/* Uniform checkpoints: when more than SUBD_SR48_STREAM_CKPT_ levels lie above the tile's
+ * (levels 0..D, D = L - m), every CKPT_-th keeps its window and the ones between share
+ * CKPT_ - 1 windows, rebuilt from their checkpoint when the walk returns to them:
+ * SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2 words per level and one per slot of walk
+ * state; otherwise one window per level. */
+#define SUBD_SR48_STREAM_CKPT_ 4u
+#define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TM_(L) : 0u)
+#define SUBD_SR48_STREAM_SLOTS_(d) \
+    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ \
+                                          : (uint32_t)(d) + 1u)
 #define SUBD_SR48_STREAM_BYTES(L, N) \
-    SUBD_SR48_STREAM_G_((uint32_t)(L) + 1u - SUBD_SR48_STREAM_TM_(L) > 0u ? (uint32_t)(L) + 1u - SUBD_SR48_STREAM_TM_(L) \
-                                                                        : 1u, \
+    ((SUBD_SR48_STREAM_D_(L) > SUBD_SR48_STREAM_CKPT_ \
+          ? SUBD_SR48_SA_(4u * (2u * ((uint32_t)(L) + 1u) + SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)))) \
+          : 0u) + \
+     SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TM_(L) > 1u ? 1u : 0u, \
                         SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)) \
                                                      : SUBD_SR48_STREAM_WT_(N), \
                         SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L)) \
-                                                     : SUBD_SR48_STREAM_WV_(N))
+                                                     : SUBD_SR48_STREAM_WV_(N)))
 /* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
  * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
  * triangles (the adaptation box lives in the run state). */

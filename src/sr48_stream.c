@@ -84,6 +84,13 @@ static uint32_t s48_tile_levels(uint32_t levels, uint32_t uniform)
     return levels < SUBD_SR48_STREAM_TILE_LEVELS ? (levels > 0u ? levels : 1u) : SUBD_SR48_STREAM_TILE_LEVELS;
 }
 
+/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level and
+ * c - 1 shared by the levels between (SUBD_SR48_STREAM_SLOTS_). */
+static uint32_t s48_slots(uint32_t d, uint32_t c)
+{
+    return d / c + c;
+}
+
 /* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
  * windows, the tile window A (the current level L-m triangle's descendants at one level
  * below max_level, with their rings) and X of twice A; otherwise levels 0..L-1 and X. */
@@ -92,7 +99,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
 {
     subd_layout y;
     const uint32_t m = s48_tile_levels(levels, !nl && !chord), tile = m > 1u;
-    const uint32_t nlev = levels >= m ? levels - m + 1u : 1u;
+    const uint32_t dl = levels >= m ? levels - m : 0u, ckc =
+        !nl && !chord && dl > SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
+    const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = tile ? SUBD_SR48_STREAM_TT_(valence, m) : ct, av = tile ? SUBD_SR48_STREAM_TV_(valence, m) : cv;
     uint32_t mt = at > ct ? at : ct, xv = (av > cv ? av : cv) + mt;
@@ -134,6 +143,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC, 4u)
                   : 0;
         subd_real *cp = chord ? subd_layout_take(&y, 3u * (levels + 4u + S48C_NC), (uint32_t)sizeof(subd_real)) : 0;
+        uint32_t *ckw = ckc ? subd_layout_take(&y, 2u * (levels + 1u) + nlev, 4u) : 0;
         if (s) {
             s->l0 = l0;
             s->lgv = lgv;
@@ -158,6 +168,12 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->ckey = ci ? ci + 6u * (levels + 1u) : 0;
             s->cdn = ci ? ci + 6u * (levels + 1u) + 2u * ct : 0;
             s->cdesc = ci ? ci + 6u * (levels + 1u) + 2u * ct + S48C_M + 1u : 0;
+            s->ckw = ckw;
+            if (ckw) {
+                uint32_t i;
+                for (i = 0; i < 2u * (levels + 1u) + nlev; i++) ckw[i] = 0;
+                ckw[2u * (levels + 1u)] = 1u; /* slot 0: level 0, always */
+            }
         }
     }
     *ps = s;
@@ -291,6 +307,45 @@ static void s48_up(s48_state *s)
     }
 }
 
+/* Uniform checkpoints: level k's window is about to be written into its slot: the walk
+ * state (cur, nxt) of the level the slot holds is kept in ckw until that level is rebuilt. */
+static void s48_take_slot(s48_state *s, uint32_t k)
+{
+    uint32_t *own = s->ckw + 2u * (s->levels + 1u) + s48_slot(s, k);
+    if (*own != 0u && *own != k + 1u) {
+        const uint32_t j = *own - 1u;
+        s48_win o;
+        s48_lev(s, j, &o); /* the same slot */
+        s->ckw[2u * j] = o.hd[2];
+        s->ckw[2u * j + 1u] = o.hd[5];
+    }
+    *own = k + 1u;
+}
+
+/* Uniform checkpoints: makes level k's slot hold level k's window of the current path,
+ * rebuilding it (and the levels between) from the deepest level below it whose slot still
+ * holds it (a checkpoint at the latest): the calls of the first descent (refine the level
+ * below, crop to its current triangle's children), so the same bits; then its walk state
+ * back. 0 on failure (s->err). */
+static int s48_ensure(s48_state *s, uint32_t k)
+{
+    const uint32_t *own = s->ckw + 2u * (s->levels + 1u);
+    uint32_t j = k;
+    s48_win p, x, c;
+    while (j > 0u && own[s48_slot(s, j)] != j + 1u) j--;
+    for (; j < k; j++) {
+        s48_lev(s, j, &p);
+        s48_x(s, &x);
+        if (!subd_s48_refine_(s, &p, j, &x)) return 0;
+        s48_take_slot(s, j + 1u);
+        s48_lev(s, j + 1u, &c);
+        if (!subd_s48_crop_(s, &x, 2u * p.hd[2], &c)) return 0;
+        c.hd[2] = s->ckw[2u * (j + 1u)];
+        c.hd[5] = s->ckw[2u * (j + 1u) + 1u];
+    }
+    return 1;
+}
+
 /* One batch: the next one or two triangles of the depth-first walk; q->ended after the last
  * level-0 triangle. */
 static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
@@ -335,6 +390,14 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
                 return stop;
             }
         }
+        if (s->ckw && s->ckw[2u * (s->levels + 1u) + s48_slot(s, s->k)] != s->k + 1u) {
+            /* the walk is back at a level whose slot a deeper level took */
+            if (s->ckw[2u * s->k + 1u] >= 2u) {
+                s48_up(s);
+                continue;
+            }
+            if (!s48_ensure(s, s->k)) goto fail;
+        }
         s48_lev(s, s->k, &w);
         if (s->adapt && w.hd[5] == 0u && (wants = s48_wants(s, &w, w.hd[2], s->k)) <= 0) {
             /* a leaf below max_level (or a failed CHORD walk) */
@@ -360,7 +423,10 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             s48_x(s, &x);
             s48_lev(s, s->k + 1u, &c);
             if (!subd_s48_refine_(s, &w, s->k, &x)) goto fail;
+            if (s->ckw) s48_take_slot(s, s->k + 1u);
             if (!subd_s48_crop_(s, &x, 2u * w.hd[2], &c)) goto fail;
+        } else if (w.hd[5] == 1u && s->ckw && !s48_ensure(s, s->k + 1u)) {
+            goto fail;
         }
         if (w.hd[5] < 2u) {
             s48_lev(s, s->k + 1u, &c);

@@ -90,6 +90,12 @@ typedef struct s48_state {
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
     /* (the cache of finest positions, sr48_chord_walk.c: S48C_NC ids after cdesc's 3 S48C_ND
      * words, their positions after cpos's 3 (levels + 4) subd_reals) */
+    /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels 0,
+     * c, 2c, .. (c = SUBD_SR48_STREAM_CKPT_) above the tile keep a window each, the levels
+     * between share c - 1 slots (s48_slot) and are rebuilt from their checkpoint when the
+     * walk returns. Per level its walk state (cur, nxt) while its slot holds another level,
+     * then per slot the level it holds plus 1 (0: none). */
+    uint32_t *ckw;
 } s48_state;
 
 /* Window access (hot: every level of every walk), shared by the four files. */
@@ -104,9 +110,17 @@ static inline void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
     w->vf = blk + off[6];
     w->vl = off[7] != 0u ? (subd_real *)(void *)(blk + off[7]) : 0;
 }
+/* The slot of level k's window (uniform checkpoints: see s48_state's ckw). */
+static inline uint32_t s48_slot(const s48_state *s, uint32_t k)
+{
+    const uint32_t c = SUBD_SR48_STREAM_CKPT_;
+    if (!s->ckw) return k;
+    /* slots 0 .. D / c: the checkpoints (D = levels - tm, the levels above the tile) */
+    return k % c == 0u ? k / c : (s->levels > s->tm ? s->levels - s->tm : 0u) / c + k % c;
+}
 static inline void s48_lev(const s48_state *s, uint32_t k, s48_win *w)
 {
-    s48_win_at(s->lev + k * s->lev_size, s->off, w);
+    s48_win_at(s->lev + s48_slot(s, k) * s->lev_size, s->off, w);
 }
 static inline void s48_x(const s48_state *s, s48_win *w) { s48_win_at(s->xblk, s->xoff, w); }
 

@@ -5,10 +5,12 @@
  * instructions, exact), and `TIME   test_name N ...` for each test that costs at least the
  * threshold: 1 000 ms / 250 Minsn, on the host the environment's SUBD_TEST_TIMES=N (0: every
  * test). The lines are for finding where make test's time goes; nothing compares them.
- * SUBD_TEST_LONG=1 (host; make test-long) sets h_long. */
+ * SUBD_TEST_LONG=1 (host; make test-long) sets h_long; SUBD_TEST_ONLY=suite_X (host) runs one
+ * suite. */
 #include "harness.h"
 #if H_HOST
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #else
 #include "port_cm.h"
@@ -381,6 +383,12 @@ static int h_long_wanted(void)
     const char *e = getenv("SUBD_TEST_LONG");
     return e && *e && *e != '0';
 }
+/* SUBD_TEST_ONLY=suite_X (host): run that suite alone (the quick loop on one subject). */
+static int h_suite_wanted(const char *name)
+{
+    const char *e = getenv("SUBD_TEST_ONLY");
+    return !e || !*e || strcmp(e, name) == 0;
+}
 static uint32_t h_time_threshold(void)
 {
     const char *e = getenv("SUBD_TEST_TIMES");
@@ -396,6 +404,7 @@ static uint32_t h_time_threshold(void)
 static uint32_t h_time_now(void) { return port_cycles() / (1000000u / PORT_QEMU_INSNS_PER_TICK); }
 static uint32_t h_time_threshold(void) { return 250u; }
 static int h_long_wanted(void) { return 0; }
+static int h_suite_wanted(const char *name) { return name != 0; }
 #endif
 
 static void h_time_line(const char *indent, const char *name, uint32_t t)
@@ -412,6 +421,7 @@ static void h_time_line(const char *indent, const char *name, uint32_t t)
 static void run_suite(const test_case *t, const char *suite_name)
 {
     uint32_t threshold = h_time_threshold(), t_suite = h_time_now();
+    if (!h_suite_wanted(suite_name)) return;
     for (; t->name; t++) {
         uint32_t t0 = h_time_now(), dt;
         g_checks_failed_in_test = 0;

@@ -67,7 +67,11 @@ static int make_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
 
 #define ST_ARENA (64u * 1024u)       /* the stream's arena: the top of h_arena_buf         */
 #define MAT_ARENA (H_ARENA_BYTES - ST_ARENA)
+#if H_HOST
+#define MAXV 65536u /* sr48s_checkpoints: the tetrahedron at 11 binary steps */
+#else
 #define MAXV 2048u
+#endif
 
 static subd_real g_tpos[3 * 64];
 static uint32_t g_tidx[6 * 64];
@@ -206,6 +210,10 @@ static int pull_hash(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
     return 1;
 }
 
+/* The materialised side's buffer (NULL: h_arena_buf below the stream's arena). */
+static uint8_t *g_mat;
+static uint32_t g_mat_bytes;
+
 static void run_case(int shape, uint32_t levels, uint32_t flags)
 {
     subd_arena a, sa;
@@ -217,7 +225,7 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
     subd_diag d;
     subd_tri_sink sink;
     uint32_t plan = 0, i, ph, pn, b;
-    subd_arena_init(&a, h_arena_buf, MAT_ARENA);
+    subd_arena_init(&a, g_mat ? g_mat : h_arena_buf, g_mat ? g_mat_bytes : MAT_ARENA);
     if (!make_shape(shape, &a, &in)) return;
     o.steps = levels;
     o.flags = flags;
@@ -288,6 +296,28 @@ static void sr48s_uniform(void)
     for (s = 0; s < S_COUNT; s++)
         for (f = 0; f < 2u; f++)
             for (l = 0; l <= maxl[s]; l++) run_case(s, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+}
+
+/* Uniform checkpoints (host): from 11 binary steps the levels more than
+ * SUBD_SR48_STREAM_CKPT_ above the tile share window slots and are rebuilt from their
+ * checkpoint when the walk returns (sr48_stream.c); the stream must still give the
+ * extraction's triangles, bits and order, with plan = peak = the macro. */
+#if H_HOST
+static uint8_t g_big[32u << 20] __attribute__((aligned(8))); /* the hierarchy at 11-12 steps */
+#endif
+static void sr48s_checkpoints(void)
+{
+#if H_HOST
+    uint32_t f;
+    g_mat = g_big;
+    g_mat_bytes = (uint32_t)sizeof g_big;
+    for (f = 0; f < 2u; f++) {
+        run_case(S_TWO, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(S_TWO, 12, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(S_TET, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
+    }
+    g_mat = 0;
+#endif
 }
 
 /* Extraordinary valences: bipyramids with apexes of valence 3..16. */
@@ -611,6 +641,7 @@ const test_case suite_sr48_stream[] = {
     {"sr48s_errors", sr48s_errors},
     {"sr48s_uniform", sr48s_uniform},
     {"sr48s_valence", sr48s_valence},
+    {"sr48s_checkpoints", sr48s_checkpoints},
     {"sr48s_adapt_errors", sr48s_adapt_errors},
     {0, 0},
 };

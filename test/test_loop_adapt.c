@@ -744,21 +744,21 @@ static void loop_adapt_errors(void)
         nan.u = 0x7fc00000u;
         bad = o;
         bad.chord = nan.f;
-        CHECK_EQ(subd_loop_adapt_stream_plan(&ico, &bad, &plan, &d), SUBD_ERR_PARAM);
+        CHECK_FAIL(subd_loop_adapt_stream_plan(&ico, &bad, &plan, &d), &d, SUBD_ERR_PARAM);
         CHECK_OK(subd_loop_adapt_stream_plan(&ico, &o, &plan, &d), &d);
     }
 #endif
-    CHECK_EQ(subd_loop_adapt_stream_plan(&ico, &o, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_adapt_stream(&a, &ico, &o, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_adapt_stream_begin(0, &ico, &o, &h, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_adapt_stream_begin(&a, &ico, &o, 0, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_adapt_stream_plan(&ico, &o, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_adapt_stream(&a, &ico, &o, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_adapt_stream_begin(0, &ico, &o, &h, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_adapt_stream_begin(&a, &ico, &o, 0, &d), &d, SUBD_ERR_PARAM);
     /* NOMEM: every arena smaller than the plan; bytes_needed = plan; nothing emitted */
     for (i = 0; i < 4u; i++) {
         subd_arena small;
         uint32_t size = i == 0u ? 0u : i == 1u ? plan / 2u : i == 2u ? plan - 8u : plan - 1u;
         subd_arena_init(&small, subd_arena_alloc(&a, plan + 8u), size);
         n = 0;
-        CHECK_EQ(subd_loop_adapt_stream(&small, &ico, &o, &s, &d), SUBD_ERR_NOMEM);
+        CHECK_FAIL(subd_loop_adapt_stream(&small, &ico, &o, &s, &d), &d, SUBD_ERR_NOMEM);
         CHECK_EQ(d.bytes_needed, plan);
         CHECK_EQ(n, 0);
         CHECK_EQ(subd_arena_mark(&small), 0);

@@ -334,7 +334,7 @@ static void stream_small_arenas(void)
     sink.ctx = &count;
     for (size = 0; size < plan; size++) {
         subd_arena_init(&small, buf, size);
-        if (!CHECK_EQ(subd_loop_stream(&small, &in, &o, &sink, &d), SUBD_ERR_NOMEM)) break;
+        if (!CHECK_FAIL(subd_loop_stream(&small, &in, &o, &sink, &d), &d, SUBD_ERR_NOMEM)) break;
         if (!CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(small.used, 0) || !CHECK_EQ(count, 0)) break;
     }
     subd_arena_init(&small, buf, plan);
@@ -405,29 +405,29 @@ static void stream_errors(void)
     nosink.tri = 0;
     nosink.ctx = 0;
     mark = subd_arena_mark(&a);
-    CHECK_EQ(subd_loop_stream(0, &in, &o, &sink, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream(&a, 0, &o, &sink, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream(&a, &in, 0, &sink, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream(&a, &in, &o, 0, &d), SUBD_ERR_PARAM);
-    CHECK_EQ(subd_loop_stream(&a, &in, &o, &nosink, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(0, &in, &o, &sink, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, 0, &o, &sink, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, 0, &sink, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, &o, 0, &d), &d, SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, &o, &nosink, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_stream_plan(&in, &o, 0, 0), SUBD_ERR_PARAM);
     o.levels = 0;
-    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, &o, &sink, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(subd_loop_stream_plan(&in, &o, &plan, 0), SUBD_ERR_PARAM);
     o.levels = SUBD_MAX_LEVELS + 1u;
-    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, &o, &sink, &d), &d, SUBD_ERR_PARAM);
     o.levels = 2;
     o.boundary = (subd_loop_boundary)7;
-    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, &o, &sink, &d), &d, SUBD_ERR_PARAM);
     o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
     o.flags = SUBD_LOOP_ADJACENCY;
-    CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &in, &o, &sink, &d), &d, SUBD_ERR_PARAM);
     o.flags = 0;
-    CHECK_EQ(subd_loop_stream(&a, &quad, &o, &sink, &d), SUBD_ERR_NOT_TRIANGLES);
+    CHECK_FAIL(subd_loop_stream(&a, &quad, &o, &sink, &d), &d, SUBD_ERR_NOT_TRIANGLES);
     CHECK_EQ(d.face, 0);
     noadj = in;
     noadj.twin = 0;
-    CHECK_EQ(subd_loop_stream(&a, &noadj, &o, &sink, &d), SUBD_ERR_PARAM);
+    CHECK_FAIL(subd_loop_stream(&a, &noadj, &o, &sink, &d), &d, SUBD_ERR_PARAM);
     CHECK_EQ(count, 0);
     CHECK_EQ(subd_arena_mark(&a), mark);
 }

@@ -135,3 +135,27 @@ uint32_t fx_find_edge(const subd_mesh *m, uint32_t a, uint32_t b)
     }
     return SUBD_NONE;
 }
+
+uint32_t fx_grid(uint32_t n, uint32_t m, int alternate, const subd_real *z, subd_real *pos, uint32_t *idx)
+{
+    uint32_t i, j, k = 0;
+    for (i = 0; pos && i <= n; i++)
+        for (j = 0; j <= m; j++) {
+            uint32_t v = i * (m + 1u) + j;
+            pos[3u * v] = h_int((int32_t)j);
+            pos[3u * v + 1u] = h_int((int32_t)i);
+            pos[3u * v + 2u] = z ? z[v] : 0;
+        }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++) {
+            uint32_t a = i * (m + 1u) + j, b = a + 1u, c = a + m + 2u, d = a + m + 1u;
+            if (alternate && ((i + j) & 1u) == 0u) {
+                idx[k++] = a; idx[k++] = b; idx[k++] = d;
+                idx[k++] = b; idx[k++] = c; idx[k++] = d;
+            } else {
+                idx[k++] = a; idx[k++] = b; idx[k++] = c;
+                idx[k++] = a; idx[k++] = c; idx[k++] = d;
+            }
+        }
+    return 2u * n * m;
+}

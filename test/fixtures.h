@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Test fixtures shared by several test files (issue 19 item 7: one home for each): the
  * brute-force point-to-triangle distance of the chordal checks (test_sr48_chord.c,
- * test_sr48_stream_shapes.c), the 4-8 test shapes (test_sr48_chord.c,
- * test_sr48_stream_shapes.c, test_sr48_stream.c) and the mesh lookups of several suites.
- * Tested by suite_fixtures (test/test_fixtures.c) against closed forms. */
+ * test_sr48_stream_shapes.c), the mesh lookups of several suites (test_loop.c,
+ * test_loop_rules.c) and the planar triangle grid (test_mesh.c, test_quasi48.c, test_sr48.c).
+ * Each is checked by the suites that use it (a wrong fixture fails their closed forms). */
 #ifndef TEST_FIXTURES_H
 #define TEST_FIXTURES_H
 #include "harness.h"
@@ -26,5 +26,12 @@ double fx_worst_dist2(const subd_real *pts, uint32_t np, const subd_real *tris, 
  * fx_find_edge: the first from a to b or from b to a. Linear search. */
 uint32_t fx_find_he(const subd_mesh *m, uint32_t a, uint32_t b);
 uint32_t fx_find_edge(const subd_mesh *m, uint32_t a, uint32_t b);
+
+/* The planar (n+1) x (m+1) grid of unit squares, vertex (i, j) = i (m + 1) + j at (j, i, z),
+ * each square (a, b, c, d) = (v, v + 1, v + m + 2, v + m + 1) cut into two triangles by
+ * the diagonal a-c ((a, b, c), (a, c, d)), or with alternate set by b-d where i + j is even
+ * ((a, b, d), (b, c, d)): an open disk. Writes idx (6 n m) and, when pos is not NULL, pos
+ * (z from z[v], or 0 when z is NULL); returns the triangle count 2 n m. */
+uint32_t fx_grid(uint32_t n, uint32_t m, int alternate, const subd_real *z, subd_real *pos, uint32_t *idx);
 
 #endif

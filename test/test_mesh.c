@@ -2,6 +2,7 @@
 /* Index mesh builder: adjacency checked against brute-force searches written here, exact
  * planning (every too-small arena fails cleanly), each validation error, ring traversal. */
 #include "harness.h"
+#include "fixtures.h"
 #include "subd_loop.h"
 
 #define MAXV 400
@@ -55,17 +56,11 @@ static subd_face_list torus_list(uint32_t n, uint32_t m, int quads)
     return fl;
 }
 
-/* Planar (n+1) x (m+1) grid of triangles: an open disk. */
+/* Planar (n+1) x (m+1) grid of triangles: an open disk (fx_grid's triangles). */
 static subd_face_list grid_list(uint32_t n, uint32_t m)
 {
-    uint32_t i, j, k = 0;
     subd_face_list fl = tri_list((n + 1) * (m + 1), 2 * n * m, g_idx);
-    for (i = 0; i < n; i++)
-        for (j = 0; j < m; j++) {
-            uint32_t a = i * (m + 1) + j, b = a + 1, c = a + m + 2, d = a + m + 1;
-            g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
-            g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
-        }
+    (void)fx_grid(n, m, 0, 0, 0, g_idx);
     return fl;
 }
 

@@ -4,6 +4,7 @@
  * affine invariance, tags and boundaries), exact planning (every too-small arena fails
  * cleanly), errors, and output hashes for host = QEMU. */
 #include "harness.h"
+#include "fixtures.h"
 #include "subd_quasi48.h"
 #include "corpus.h"
 #include <math.h>
@@ -64,25 +65,7 @@ static void fan_list(subd_face_list *fl, uint32_t n, const subd_real *radius, su
 /* Planar (n+1) x (n+1) grid of unit squares cut by alternating diagonals: an open disk. */
 static void grid_list(subd_face_list *fl, uint32_t n)
 {
-    uint32_t i, j, k = 0, ovf = 0;
-    for (i = 0; i <= n; i++)
-        for (j = 0; j <= n; j++) {
-            uint32_t v = i * (n + 1) + j;
-            g_pos[3 * v] = subd_from_int((int32_t)j, &ovf);
-            g_pos[3 * v + 1] = subd_from_int((int32_t)i, &ovf);
-            g_pos[3 * v + 2] = 0;
-        }
-    for (i = 0; i < n; i++)
-        for (j = 0; j < n; j++) {
-            uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 2, d = a + n + 1;
-            if ((i + j) & 1u) {
-                g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
-                g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
-            } else {
-                g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = d;
-                g_idx[k++] = b; g_idx[k++] = c; g_idx[k++] = d;
-            }
-        }
+    (void)fx_grid(n, n, 1, 0, g_pos, g_idx);
     fl->num_verts = (n + 1) * (n + 1);
     fl->pos = g_pos;
     fl->num_faces = 2 * n * n;

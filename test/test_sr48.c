@@ -8,6 +8,7 @@
  * cleanly), errors, and output hashes for host = QEMU. Everything fits the shared 256 KiB
  * test arena. */
 #include "harness.h"
+#include "fixtures.h"
 #include "subd_sr48.h"
 #include "corpus.h"
 
@@ -68,23 +69,10 @@ static int load_tri(subd_arena *a, const char *name, subd_mesh *m)
 }
 
 /* Planar n x n grid of unit squares, every square (a, b, c, d) cut by the same diagonal
- * a-c, heights z[(n+1) * j + i] (or 0). */
+ * a-c, heights z[(n+1) * j + i] (or 0): fx_grid's triangles. */
 static subd_face_list grid_list(uint32_t n, const subd_real *z)
 {
-    uint32_t i, j, k = 0;
-    for (j = 0; j <= n; j++)
-        for (i = 0; i <= n; i++) {
-            uint32_t v = j * (n + 1u) + i;
-            g_pos[3 * v] = h_int((int32_t)i);
-            g_pos[3 * v + 1] = h_int((int32_t)j);
-            g_pos[3 * v + 2] = z ? z[v] : 0;
-        }
-    for (j = 0; j < n; j++)
-        for (i = 0; i < n; i++) {
-            uint32_t a = j * (n + 1u) + i, b = a + 1u, c = a + n + 2u, d = a + n + 1u;
-            g_idx[k++] = a; g_idx[k++] = b; g_idx[k++] = c;
-            g_idx[k++] = a; g_idx[k++] = c; g_idx[k++] = d;
-        }
+    (void)fx_grid(n, n, 0, z, g_pos, g_idx);
     return tri_list((n + 1u) * (n + 1u), g_pos, 2u * n * n, g_idx);
 }
 

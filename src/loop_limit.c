@@ -6,102 +6,18 @@
  *
  * Paper: loop-progressive-interpolation.txt, formula (3) (interior limit points) and
  * section 4 (boundary rules; "six different configurations" of boundary limit points,
- * Fig. 1 (e)-(j), whose pictures the text does not carry: they are derived below).
+ * Fig. 1 (e)-(j), whose pictures the text does not carry: derived in doc/loop_limit.md).
  * Rules and vertex classes are those of loop.c (Hoppe et al. 1994 by sharp-edge count).
  *
- * POSITIONS. A limit mask is the left eigenvector, eigenvalue 1, of the subdivision matrix of
- * the smallest vertex neighbourhood that maps to itself. If the first level's matrix S0
- * differs from the stationary one S (rules that depend on "regular" can change after one
- * level, because new vertices are always regular), the mask is l S0 with l from S.
- *
- *  - Interior (smooth), valence n: the paper's (3), v_inf = (1 - n chi) v + chi sum p_i,
- *    chi = 1 / (n + 3/(8 beta)), Loop's beta = (5/8 - (3/8 + 1/4 cos(2 pi/n))^2) / n; with
- *    B = n beta: chi = 8B / (n (8B + 3)) and the centre weight 3 / (8B + 3) is the paper's
- *    beta_n. Regular n = 6: 1/2 and 1/12. chi comes from subd_cos_turns_q62 in 64-bit
- *    integers and is rounded once.
- *
- *  - Boundary and crease vertices, paper's rule. The curve rules involve only the curve:
- *    vertex 1/8 c0 + 3/4 v + 1/8 c1; edge midpoint when both ends are regular or both
- *    extraordinary, else 5/8 regular + 3/8 extraordinary. The triple (c0, v, c1) maps to
- *    (e0, v', e1); the new e0, e1 are regular, v keeps its class, so from level 1 on the
- *    configuration is (R, X, R) with X the class of v:
- *      X regular:        e_i = 1/2 v + 1/2 c_i   S = [1/2 1/2 0; 1/8 3/4 1/8; 0 1/2 1/2]
- *                        left eigenvector (1/6, 2/3, 1/6)            (Fig. 1(e))
- *      X extraordinary:  e_i = 3/8 v + 5/8 c_i   S = [5/8 3/8 0; 1/8 3/4 1/8; 0 3/8 5/8]
- *                        (a, b, a) S = (a, b, a): 5a/8 + b/8 = a, so b = 3a: (1/5, 3/5, 1/5)
- *                                                                     (Fig. 1(f))
- *    The first level's edge rule depends on the neighbours' classes; l S0 gives, with
- *    R = regular, E = extraordinary, (weight c0, v, c1):
- *      (R; R R)  1/6   2/3    1/6          (E; R R)  1/5   3/5    1/5
- *      (R; R E)  1/6   11/16  7/48         (E; R E)  1/5   5/8    7/40
- *      (R; E E)  7/48  17/24  7/48         (E; E E)  7/40  13/20  7/40
- *    e.g. (R; R E): 1/6 (c0 + v)/2 + 2/3 (c0 + 6v + c1)/8 + 1/6 (5/8 v + 3/8 c1). A
- *    neighbour of the same class as v weighs 1/6 (v regular) or 7/40 (v extraordinary), one
- *    of the other class 7/48 or 1/5. The paper states that (e) and (f) need regular
- *    neighbours and that the others come from combining the rules with them: this is that
- *    combination. The test checks all six against 60 levels of subdivision. "Regular" (as
- *    in loop.c): valence 4 on a boundary (the paper); inside, a crease vertex of valence 6
- *    with its sharp edges opposite (three faces per side), which is what refinement
- *    creates. Corners, darts and all other crease vertices are extraordinary.
- *  - B-spline rule (midpoints everywhere): (1/6, 2/3, 1/6).
- *  - Dart (one sharp edge, to ring neighbour k; smooth vertex rule): not the interior
- *    mask, because the sharp edge's new vertex is (w v + (1-w) p_k) instead of Loop's edge
- *    rule (w = 1/2 midpoint; 3/8 for the paper's rule from level 1 on, the dart being
- *    extraordinary and the new crease vertex regular). With weight 1 on v, the eigenvector
- *    has b_m (m = 1..n-1 steps from k) from  b_(m-1) + b_(m+1) - 5 b_m = -8 beta  with the
- *    p_k terms absent at both ends:
- *      b_m = (8 beta/3) (1 - (r^m + r^(n-m)) / (1 + r^n)),  r = (5 - sqrt 21)/2,
- *      b_k = (beta + b_1/4) / w,  then divided by T = 1 + b_k + sum b_m
- *    (sum of the r-terms in closed form: 2 (r - r^n) / ((1 - r)(1 + r^n))). With the paper's
- *    rule and an extraordinary p_k the first level uses the midpoint: l S0 moves b_k/8 from
- *    p_k to v. Q62 integer arithmetic, rounded once per weight.
- *  - Corners (tagged, or three or more sharp edges) and isolated vertices stay.
- *
- * Every combination is v + sum w_i (p_i - v): in Q16.16 the weights are Q28 (lim_w), the
- * differences and products exact in 64 bits and the sum rounded once, which is exactly
- * round((1 - sum w_i) v + sum w_i p_i) (the weights sum to one by construction, a constant
- * mesh and any translation are reproduced exactly; measured error <= 0.5 LSB); in
- * float32 the difference form keeps constants exact and the error relative to the local
- * spread. Positions are convex combinations, so Q16.16 cannot overflow (SUBD_ERR_RANGE only
- * in float32, when differences of coordinates near FLT_MAX overflow).
- *
- * NORMALS. The tangent plane is spanned by the two dominant non-unit left eigenvectors of the
- * one-ring's matrix (the limit of the one-ring's fan); normal = unit(t_a x t_b), oriented
- * outwards for counter-clockwise faces (the ring walk is counter-clockwise seen from the
- * front: face (v, p_i, p_i+1)). Checked against the fan normal after 60-240 levels.
- *  - Interior: t1 = sum cos(2 pi i/n) p_i, t2 = sum sin(2 pi i/n) p_i, normal t1 x t2.
- *  - Boundary or crease side with k neighbours p_0..p_(k-1) (p_0, p_(k-1) on sharp edges),
- *    w_v the stationary weight of v on its sharp edges' new vertices (1/2; the paper's rule
- *    with v extraordinary: 3/8), w_0, w_(k-1) the level-0 weights:
- *      along  = (1 - w_(k-1)) (p_(k-1) - v) - (1 - w_0) (p_0 - v)   (l = p_(k-1) - p_0, l S0)
- *      across, k = 2: (3/4 - w_0)(p_0 - v) + (3/4 - w_1)(p_1 - v)   (curve mode (1,-2,1))
- *      across, k >= 3, theta = pi/(k-1), eigenvalue lambda = 3/8 + 1/4 cos theta:
- *        b_i = sin(i theta) inside (the recurrence b_(i-1) + b_(i+1) = (8 lambda - 3) b_i with
- *        the ends absent), b_end from column p_0, b_end (lambda - 1 + w_v) = (a + b_1)/8, and
- *        translation invariance a + 2 b_end + sum b_i = 0:
- *          b_end = -cos theta (1 + cos theta) / (sin theta (2 cos theta - 3 + 8 w_v))
- *        (0 for k = 3, where p_1 - v is itself an eigenvector); level 0 adds
- *        -b_end (w_end - w_v)/lambda per end. normal = across x along.
- *    For the paper's rule with w_v = 3/8 this is exactly Hoppe et al.'s mask (as in pbrt):
- *    -(1 + cos)/(2 sin) : sin(i theta) = -sin theta : (2 - 2 cos theta) sin(i theta). For the
- *    B-spline rule (w_v = 1/2) it differs from Hoppe's at k >= 5, which has no weight on v
- *    (the test measures Hoppe's masks up to 10 degrees off there): pbrt pairs Hoppe's
- *    masks with midpoint boundary edges, the inconsistency REFERENCE.md warns of. With midpoints and k >= 8 the second interior mode
- *    (3/8 + 1/4 cos 2 theta > 1/2) outgrows the boundary direction: the surface is not
- *    tangent-plane continuous there and the fan converges to the plane of the two interior
- *    modes, whose normal is returned (mask sin(2 i theta), ends +-sin 2theta/(2 cos 2theta - 1)).
- *    At k = 7 the two share 1/2 in a Jordan block; the returned across x along is the fan's
- *    limit, reached only like 1/L. The paper's rule has no such case (along: 5/8).
- *    An interior crease vertex: the two sides' unit normals, summed and normalised.
- *  - Dart: the mirror-antisymmetric mode sum sin(2 pi m/n) p_m is unchanged; the
- *    symmetric one is, for the paper's rule, b_m = sin(m pi/n), b_k = -cot(pi/(2n)) with no
- *    weight on v (eigenvalue 3/8 + 1/4 cos(pi/n)), and for midpoints the result of a power
- *    iteration (see lim_dart_sym_power).
- *  - Corner: see lim_corner_normal (exact for sectors of up to two faces, and for the
- *    paper's rule, whose 5/8 curve rule dominates; otherwise approximate).
- *  - Vanishing tangents give (0, 0, 0). Tangents are scaled before the cross product
- *    (float: by the largest component; Q16.16: to 30 bits in int64), so nothing overflows.
- *    Unit length needs a square root: subd_sqrt / subd_isqrt64 (sqrt.c), no libm.
+ * Positions: each vertex class's limit mask (interior: the paper's (3); boundary and crease
+ * vertices: the six configurations of section 4 as l S0, the stationary left eigenvector
+ * times the first level's matrix; B-spline rule (1/6, 2/3, 1/6); darts in closed form in Q62
+ * integers; corners stay), applied as v + sum w_i (p_i - v), rounded once (Q16.16: Q28
+ * weights, exact 64-bit sums, <= 0.5 LSB). Normals (loop_limit_normal.c): the cross product
+ * of the two dominant non-unit left eigenvectors' tangents (interior cos/sin masks; boundary
+ * and crease along/across masks, equal to Hoppe et al.'s for the paper's rule; darts,
+ * corners), scaled before the cross product, unit length by subd_sqrt. The derivations of
+ * every mask, and where they differ from Hoppe's/pbrt's, are in doc/loop_limit.md.
  *
  * Memory and work: subd_loop_limit_apply uses no arena memory; subd_loop_limit allocates
  * exactly its outputs (3 * num_verts subd_reals each). Work O(sum of valences) for

@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming Loop subdivision: subd_loop's level-L triangles handed to a sink one at a time,
  * in memory that depends on the level count and the largest valence only.
- * Length (~715 lines): one concept, the depth-first patch walk with its pull-form driver and
- * limit mode; the regular tiles are loop_tile.c, the patch views loop_patch.c.
+ * Length (~785 lines): one concept, the depth-first patch walk with its pull-form driver,
+ * limit mode and the tile hand-off (layout shared with the idle levels, tile_push to the
+ * sink), which all read the one level layout; the tiles themselves are loop_tile.c, the patch
+ * views loop_patch.c.
  *
  * Paper: loop-progressive-interpolation.txt, section 1 (Loop's scheme) and section 4 (the
  * boundary rules); the rules are loop_rules.h's, the same code subd_loop runs.

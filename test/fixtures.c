@@ -159,3 +159,19 @@ uint32_t fx_grid(uint32_t n, uint32_t m, int alternate, const subd_real *z, subd
         }
     return 2u * n * m;
 }
+
+uint32_t fx_sr48_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *map, uint32_t cap)
+{
+    uint32_t nv0 = h->level_verts[0], n0 = h->level_tri[1], k, i;
+    uint32_t n = nv0 + n0 * ((1u << levels) - 1u);
+    if (!CHECK(n <= cap)) return 0;
+    for (i = 0; i < n; i++) map[i] = SUBD_NONE;
+    for (i = 0; i < nv0; i++) map[i] = i;
+    for (k = 1; k <= levels; k++)
+        for (i = 0; i < (n0 << (k - 1u)); i++) {
+            uint32_t t = h->level_tri[k - 1u] + i, nb = h->tri_base_nb[t];
+            if (nb != SUBD_NONE && nb < t) continue; /* the diamond's lower triangle names it */
+            map[nv0 + n0 * ((1u << (k - 1u)) - 1u) + i] = h->tri_vert[3u * (h->level_tri[k] + 2u * i)];
+        }
+    return n;
+}

@@ -7,6 +7,7 @@
 #ifndef TEST_FIXTURES_H
 #define TEST_FIXTURES_H
 #include "harness.h"
+#include "subd_sr48.h"
 
 /* Squared distance from p to the triangle (a, b, c), in double: the closest point found by
  * the Voronoi regions of the vertices, edges and face (Ericson, Real-Time Collision
@@ -33,5 +34,12 @@ uint32_t fx_find_edge(const subd_mesh *m, uint32_t a, uint32_t b);
  * ((a, b, d), (b, c, d)): an open disk. Writes idx (6 n m) and, when pos is not NULL, pos
  * (z from z[v], or 0 when z is NULL); returns the triangle count 2 n m. */
 uint32_t fx_grid(uint32_t n, uint32_t m, int alternate, const subd_real *z, subd_real *pos, uint32_t *idx);
+
+/* The 4-8 stream's closed-form vertex ids recomputed from a hierarchy h of `levels` steps
+ * (include/subd_sr48.h: level-0 vertex i keeps i; the vertex created at level k >= 1 by the
+ * diamond whose lower triangle is i of level k - 1 is V0 + T0n (2^(k-1) - 1) + i): map[id] =
+ * the hierarchy's vertex, SUBD_NONE for an id no vertex has. Returns the id count, or 0 when
+ * it exceeds cap (a failed CHECK). Used to match streamed corners with the hierarchy's. */
+uint32_t fx_sr48_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *map, uint32_t cap);
 
 #endif

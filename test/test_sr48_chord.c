@@ -100,24 +100,8 @@ static int ch_tri(void *ctx, const subd_tri *t)
     return 0;
 }
 
-/* The closed-form ids recomputed from the hierarchy: g_map[id] = hierarchy vertex. */
+/* The closed-form ids recomputed from the hierarchy (fx_sr48_id_map): g_map[id] = hierarchy vertex. */
 static uint32_t g_map[CH_MAXID];
-static int ch_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *nid)
-{
-    uint32_t nv0 = h->level_verts[0], n0 = h->level_tri[1], k, i;
-    uint32_t n = nv0 + n0 * ((1u << levels) - 1u);
-    if (!CHECK(n <= CH_MAXID)) return 0;
-    for (i = 0; i < n; i++) g_map[i] = SUBD_NONE;
-    for (i = 0; i < nv0; i++) g_map[i] = i;
-    for (k = 1; k <= levels; k++)
-        for (i = 0; i < (n0 << (k - 1u)); i++) {
-            uint32_t t = h->level_tri[k - 1u] + i, nb = h->tri_base_nb[t];
-            if (nb != SUBD_NONE && nb < t) continue; /* the diamond's lower triangle names it */
-            g_map[nv0 + n0 * ((1u << (k - 1u)) - 1u) + i] = h->tri_vert[3u * (h->level_tri[k] + 2u * i)];
-        }
-    *nid = n;
-    return 1;
-}
 
 /* Edges as (from id, to id) pairs, sorted. */
 static uint64_t g_edge[2u * 3u * CH_MAXF];
@@ -223,7 +207,7 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
     g_uni += rep.uniform_faces;
     g_cases++;
     /* ids and positions: the closed form over the hierarchy, bit for bit */
-    if (!ch_id_map(&h, levels, &nid)) return;
+    if ((nid = fx_sr48_id_map(&h, levels, g_map, CH_MAXID)) == 0u) return;
     for (i = 0; i < 3u * g_s.n; i++) {
         uint64_t id = g_id[i];
         uint32_t v = id < nid ? g_map[(uint32_t)id] : SUBD_NONE;

@@ -170,24 +170,8 @@ static int sh_tri(void *ctx, const subd_tri *t)
     return 0;
 }
 
-/* The closed-form ids over the hierarchy: g_map[id] = hierarchy vertex (SUBD_NONE: no vertex). */
+/* The closed-form ids over the hierarchy (fx_sr48_id_map): g_map[id] = hierarchy vertex. */
 static uint32_t g_map[SH_MAXID];
-static int sh_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *nid)
-{
-    uint32_t nv0 = h->level_verts[0], n0 = h->level_tri[1], k, i;
-    uint32_t n = nv0 + n0 * ((1u << levels) - 1u);
-    if (!CHECK(n <= SH_MAXID)) return 0;
-    for (i = 0; i < n; i++) g_map[i] = SUBD_NONE;
-    for (i = 0; i < nv0; i++) g_map[i] = i;
-    for (k = 1; k <= levels; k++)
-        for (i = 0; i < (n0 << (k - 1u)); i++) {
-            uint32_t t = h->level_tri[k - 1u] + i, nb = h->tri_base_nb[t];
-            if (nb != SUBD_NONE && nb < t) continue; /* the diamond's lower triangle names it */
-            g_map[nv0 + n0 * ((1u << (k - 1u)) - 1u) + i] = h->tri_vert[3u * (h->level_tri[k] + 2u * i)];
-        }
-    *nid = n;
-    return 1;
-}
 
 /* Boundary vertices of the hierarchy, from its structure: the ends of level-0 base edges
  * without a neighbour, the three vertices on a hybrid triangle's boundary base edge (its
@@ -344,7 +328,7 @@ static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_sr48_
     }
 
     /* ids -> hierarchy vertices, bits; every triangle a hierarchy triangle */
-    if (!sh_id_map(&h, levels, &nid)) return;
+    if ((nid = fx_sr48_id_map(&h, levels, g_map, SH_MAXID)) == 0u) return;
     for (i = 0; i < h.num_verts; i++) g_rank[i] = 0;
     for (i = 0; i < g_s.n; i++) {
         uint32_t v[3], k = g_level[i], f = g_face[i], t, t0;

@@ -2,7 +2,9 @@
 /* Test fixtures shared by several test files: see fixtures.h. The distance search keeps the
  * triangles' bounding boxes in a static table (no heap); more triangles than it holds are
  * measured without the box test. */
+#include <string.h>
 #include "fixtures.h"
+#include "corpus.h"
 
 static double fx_dot(const double *u, const double *v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
 
@@ -174,4 +176,100 @@ uint32_t fx_sr48_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *map, uint
             map[nv0 + n0 * ((1u << (k - 1u)) - 1u) + i] = h->tri_vert[3u * (h->level_tri[k] + 2u * i)];
         }
     return n;
+}
+
+subd_real fx_real(double x)
+{
+#if SUBD_FIXED
+    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
+#else
+    return (float)x;
+#endif
+}
+
+static const char fx_tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+static const char fx_cube_obj[] =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
+    "f 4 1 5\nf 4 5 8\n";
+static const char fx_two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
+
+static subd_real fx_bpos[3 * 18];
+static uint32_t fx_bidx[3 * 32];
+static int fx_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
+{
+    subd_face_list fl;
+    uint32_t i;
+    if (!CHECK(n >= 3u && n <= 16u)) return 0;
+    for (i = 0; i < n; i++) {
+        double ang = 6.283185307179586 * (double)i / (double)n, c = 1, s = 0, x = ang, term = x;
+        uint32_t k;
+        /* cos and sin by their series in double (no libm in the device tests) */
+        for (k = 1; k < 30u; k++) {
+            term = -term * x * x / (double)((2u * k) * (2u * k + 1u));
+            s += term;
+        }
+        s += x;
+        term = 1;
+        for (k = 1; k < 30u; k++) {
+            term = -term * x * x / (double)((2u * k - 1u) * (2u * k));
+            c += term;
+        }
+        fx_bpos[3 * i] = fx_real(c);
+        fx_bpos[3 * i + 1] = fx_real(s);
+        fx_bpos[3 * i + 2] = fx_real((i & 1u) ? 0.125 : 0.0);
+        fx_bidx[6 * i] = n; fx_bidx[6 * i + 1] = i; fx_bidx[6 * i + 2] = (i + 1u) % n;
+        fx_bidx[6 * i + 3] = n + 1u; fx_bidx[6 * i + 4] = (i + 1u) % n; fx_bidx[6 * i + 5] = i;
+    }
+    fx_bpos[3 * n] = 0; fx_bpos[3 * n + 1] = 0; fx_bpos[3 * n + 2] = h_int(1);
+    fx_bpos[3 * n + 3] = 0; fx_bpos[3 * n + 4] = 0; fx_bpos[3 * n + 5] = -h_int(1);
+    memset(&fl, 0, sizeof fl);
+    fl.num_verts = n + 2u;
+    fl.pos = fx_bpos;
+    fl.num_faces = 2u * n;
+    fl.index = fx_bidx;
+    return h_build(a, &fl, m);
+}
+
+static int fx_text(subd_arena *a, const char *txt, uint32_t len, subd_mesh *m)
+{
+    subd_diag d;
+    return CHECK_EQ(subd_obj_read(a, txt, len, m, &d), SUBD_OK);
+}
+
+int fx_sr48_shape(int id, uint32_t bipyr_n, subd_arena *a, subd_mesh *m)
+{
+    static subd_real tpos[3 * 64];
+    static uint32_t tidx[6 * 64];
+    const corpus_file *f = 0;
+    switch (id) {
+    case FX48_TET: return fx_text(a, fx_tet_obj, (uint32_t)sizeof fx_tet_obj - 1u, m);
+    case FX48_CUBE: return fx_text(a, fx_cube_obj, (uint32_t)sizeof fx_cube_obj - 1u, m);
+    case FX48_TWO: return fx_text(a, fx_two_obj, (uint32_t)sizeof fx_two_obj - 1u, m);
+    case FX48_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
+    case FX48_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
+    case FX48_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
+    case FX48_BIPYR: return fx_bipyramid(a, m, bipyr_n);
+    case FX48_TORUS: {
+        subd_face_list fl = h_torus(6, 4, tpos, tidx);
+        return h_build(a, &fl, m);
+    }
+    default: return CHECK(0);
+    }
+    if (!CHECK(f != 0)) return 0;
+    return fx_text(a, f->data, f->len, m);
+}
+
+uint32_t fx_sr48_valence(const subd_sr48 *b, uint32_t *lowest)
+{
+    static uint16_t cnt[FX_SR48_MAXV];
+    uint32_t t, best = 0, low = 0xffffffffu;
+    if (!CHECK(b->num_verts <= FX_SR48_MAXV)) return 0;
+    for (t = 0; t < b->num_verts; t++) cnt[t] = 0;
+    for (t = 0; t < 3u * b->level_tri[1]; t++)
+        if (++cnt[b->tri_vert[t]] > best) best = cnt[b->tri_vert[t]];
+    for (t = 0; t < b->num_verts; t++)
+        if (cnt[t] && cnt[t] < low) low = cnt[t];
+    if (lowest) *lowest = low;
+    return best;
 }

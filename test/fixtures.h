@@ -2,7 +2,9 @@
 /* Test fixtures shared by several test files (issue 19 item 7: one home for each): the
  * brute-force point-to-triangle distance of the chordal checks (test_sr48_chord.c,
  * test_sr48_stream_shapes.c), the mesh lookups of several suites (test_loop.c,
- * test_loop_rules.c) and the planar triangle grid (test_mesh.c, test_quasi48.c, test_sr48.c).
+ * test_loop_rules.c), the planar triangle grid (test_mesh.c, test_quasi48.c, test_sr48.c),
+ * the 4-8 tests' shapes and their base-mesh valences (test_sr48_stream.c,
+ * test_sr48_stream_shapes.c, test_sr48_chord.c) and the decimal-to-subd_real conversion.
  * Each is checked by the suites that use it (a wrong fixture fails their closed forms). */
 #ifndef TEST_FIXTURES_H
 #define TEST_FIXTURES_H
@@ -41,5 +43,24 @@ uint32_t fx_grid(uint32_t n, uint32_t m, int alternate, const subd_real *z, subd
  * the hierarchy's vertex, SUBD_NONE for an id no vertex has. Returns the id count, or 0 when
  * it exceeds cap (a failed CHECK). Used to match streamed corners with the hierarchy's. */
 uint32_t fx_sr48_id_map(const subd_sr48 *h, uint32_t levels, uint32_t *map, uint32_t cap);
+
+/* x as the nearest subd_real (Q16.16: rounded half away from zero; float32: the C cast).
+ * For test inputs written as decimals. */
+subd_real fx_real(double x);
+
+/* The shapes of the 4-8 stream tests, by id: a tetrahedron (valence 3), a cube of
+ * triangles, the icosahedron, a hexagon fan (open), an open 8x8 grid, two triangles and an
+ * isolated one (open; pre-processing keeps a triangle alone), the 6x4 torus, and a closed
+ * bipyramid: bipyr_n (3..16) equator vertices on the unit circle (z alternating 0, 1/8),
+ * apexes at z = +-1 of valence bipyr_n. Builds the mesh with adjacency in a; 1 on success
+ * (a failed CHECK otherwise). */
+enum { FX48_TET, FX48_CUBE, FX48_ICO, FX48_HEXFAN, FX48_GRID, FX48_TWO, FX48_TORUS, FX48_BIPYR, FX48_COUNT };
+int fx_sr48_shape(int id, uint32_t bipyr_n, subd_arena *a, subd_mesh *m);
+
+/* The largest (and in *lowest, when not NULL, the smallest non-zero) vertex valence of a
+ * 4-8 base mesh's level-0 triangles (what the stream's plan takes); 0 (a failed CHECK)
+ * when the base has more than FX_SR48_MAXV vertices (the count table is static). */
+#define FX_SR48_MAXV (H_HOST ? 32768u : 2048u)
+uint32_t fx_sr48_valence(const subd_sr48 *base, uint32_t *lowest);
 
 #endif

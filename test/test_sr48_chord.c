@@ -34,43 +34,14 @@
 #define T_NOTE(...) ((void)0)
 #endif
 
-enum { C_ICO, C_TORUS, C_GRID, C_HEXFAN, C_COUNT };
+enum { C_ICO, C_TORUS, C_GRID, C_HEXFAN, C_COUNT }; /* index into ch_shapes */
+static const int ch_shapes[C_COUNT] = {FX48_ICO, FX48_TORUS, FX48_GRID, FX48_HEXFAN};
 
 #define CH_ST_ARENA (40u * 1024u) /* the stream's arena: the top of h_arena_buf */
 #define CH_MAT_ARENA (H_ARENA_BYTES - CH_ST_ARENA)
 #define CH_MAXF (H_HOST ? 8192u : 768u)     /* streamed triangles kept */
 #define CH_MAXID (H_HOST ? 65536u : 4096u)  /* closed-form id space */
 #define CH_MAXV (H_HOST ? 16384u : 2048u)   /* hierarchy vertices */
-
-static subd_real g_tpos[3 * 64];
-static uint32_t g_tidx[6 * 64];
-
-static int ch_shape(int id, subd_arena *a, subd_mesh *m)
-{
-    const corpus_file *f = 0;
-    subd_diag d;
-    switch (id) {
-    case C_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
-    case C_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
-    case C_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
-    case C_TORUS: {
-        subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
-        return h_build(a, &fl, m);
-    }
-    default: return 0;
-    }
-    if (!CHECK(f != 0)) return 0;
-    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
-}
-
-static subd_real ch_real(double x)
-{
-#if SUBD_FIXED
-    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
-#else
-    return (float)x;
-#endif
-}
 
 /* The sink: every triangle kept (ids, positions), a running hash. */
 typedef struct ch_sink {
@@ -140,17 +111,6 @@ static int ch_boundary(const subd_sr48 *h, uint32_t levels)
     return 1;
 }
 
-static uint32_t ch_valence(const subd_sr48 *b)
-{
-    static uint16_t cnt[CH_MAXV];
-    uint32_t t, best = 0;
-    if (b->num_verts > CH_MAXV) return 0;
-    for (t = 0; t < b->num_verts; t++) cnt[t] = 0;
-    for (t = 0; t < 3u * b->level_tri[1]; t++)
-        if (++cnt[b->tri_vert[t]] > best) best = cnt[b->tri_vert[t]];
-    return best;
-}
-
 static uint32_t g_faces, g_exfaces, g_uni, g_cases;
 
 /* One cut: shape, levels, smoothing flags, eps; every property above. */
@@ -167,14 +127,14 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
     uint32_t plan = 0, nid = 0, i, c, q, ne = 0, nb = 0, bad = 0, nv = 0;
     double worst = 0, slack = SUBD_FIXED ? 4.0 / 65536.0 : 1e-6;
     subd_arena_init(&a, h_arena_buf, CH_MAT_ARENA);
-    if (!ch_shape(shape, &a, &in)) return;
+    if (!fx_sr48_shape(ch_shapes[shape], 0, &a, &in)) return;
     o.steps = levels;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
     memset(&so, 0, sizeof so);
     so.adapt.mode = SUBD_SR48_ADAPT_CHORD;
     so.adapt.max_level = levels;
-    so.adapt.eps = ch_real(eps);
+    so.adapt.eps = fx_real(eps);
     {
         uint32_t mark = subd_arena_mark(&a);
         if (!CHECK_EQ(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), SUBD_OK)) return;
@@ -183,7 +143,7 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
     }
     if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) return;
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
-    CHECK_EQ(plan, SUBD_SR48_STREAM_CHORD_BYTES(levels, ch_valence(&base)));
+    CHECK_EQ(plan, SUBD_SR48_STREAM_CHORD_BYTES(levels, fx_sr48_valence(&base, 0)));
     if (!CHECK(plan <= CH_ST_ARENA)) return;
     subd_arena_init(&sa, h_arena_buf + CH_MAT_ARENA, CH_ST_ARENA);
     g_s.n = 0;
@@ -298,7 +258,7 @@ static void sr48c_errors(void)
     int r, got;
     subd_real bads[3];
     subd_arena_init(&a, h_arena_buf, CH_MAT_ARENA);
-    if (!ch_shape(C_ICO, &a, &in)) return;
+    if (!fx_sr48_shape(ch_shapes[C_ICO], 0, &a, &in)) return;
     o.steps = 2;
     o.flags = 0;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -307,7 +267,7 @@ static void sr48c_errors(void)
     so.adapt.mode = SUBD_SR48_ADAPT_CHORD;
     so.adapt.max_level = 2;
     bads[0] = 0;
-    bads[1] = ch_real(-0.01);
+    bads[1] = fx_real(-0.01);
 #if SUBD_FIXED
     bads[2] = 0;
 #else
@@ -333,7 +293,7 @@ static void sr48c_errors(void)
         CHECK_EQ(subd_arena_mark(&sa), 0u);
     }
     /* NOMEM sweep */
-    so.adapt.eps = ch_real(0.01);
+    so.adapt.eps = fx_real(0.01);
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
     for (size = 0; size <= plan; size += (size + 64u < plan) ? 13u : 1u) {
         subd_arena_init(&sa, h_arena_buf + CH_MAT_ARENA, size);

@@ -24,6 +24,7 @@
  *  - UNIFORM is level k of the hierarchy (counts from level_tri / level_verts), plan = peak;
  *  - every too-small arena fails cleanly, bad parameters, output hashes for host = QEMU. */
 #include "harness.h"
+#include "fixtures.h"
 #include "subd_sr48.h"
 #include "corpus.h"
 #include <stdlib.h>
@@ -44,14 +45,6 @@ static int g_have_par; /* g_par holds the parameters of g_h's vertices (hand-bui
 /* ------------------------------------------------------------------------------------ */
 /* Scalars                                                                                 */
 
-static subd_real real_of(double x)
-{
-#if SUBD_FIXED
-    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
-#else
-    return (float)x;
-#endif
-}
 static double dsqrt(double x)
 {
     double r = x > 1 ? x : 1;
@@ -187,7 +180,7 @@ static int hb_build(uint32_t nv0, const int32_t *par0, uint32_t nt0, const uint3
     for (i = 0; i < nv; i++) {
         double p[3];
         f(g_par + 3 * i, p);
-        g_pos[3 * i] = real_of(p[0]); g_pos[3 * i + 1] = real_of(p[1]); g_pos[3 * i + 2] = real_of(p[2]);
+        g_pos[3 * i] = fx_real(p[0]); g_pos[3 * i + 1] = fx_real(p[1]); g_pos[3 * i + 2] = fx_real(p[2]);
     }
     h->num_verts = nv;
     h->num_tris = h->level_tri[steps + 1];
@@ -804,18 +797,18 @@ static void sr48x_point(void)
     cut_result res;
     uint32_t n;
     if (!build_cube(6)) return;
-    ad.point[0] = real_of(0.8); ad.point[1] = real_of(0.5); ad.point[2] = real_of(0.33);
+    ad.point[0] = fx_real(0.8); ad.point[1] = fx_real(0.5); ad.point[2] = fx_real(0.33);
     n = run_checked(&g_h, &ad, 2e-3, "sr48x_cube_point", &res);
     CHECK(n > 0 && n < 12u * 64u);
-    ad.radius = real_of(0.05);
+    ad.radius = fx_real(0.05);
     n = run_checked(&g_h, &ad, 2e-3, "sr48x_cube_point_r", &res);
     CHECK(n > 0 && n < 12u * 64u);
     /* far away with a tiny radius: level 0 everywhere */
-    ad.point[0] = real_of(30); ad.radius = real_of(0.001);
+    ad.point[0] = fx_real(30); ad.radius = fx_real(0.001);
     CHECK_EQ(run_checked(&g_h, &ad, 2e-3, 0, &res), 12);
     if (!build_square(8)) return;
     ad = adapt(SUBD_SR48_ADAPT_POINT, 8);
-    ad.point[0] = real_of(0.3); ad.point[1] = real_of(0.7); ad.point[2] = real_of(0.1);
+    ad.point[0] = fx_real(0.3); ad.point[1] = fx_real(0.7); ad.point[2] = fx_real(0.1);
     n = run_checked(&g_h, &ad, 2e-3, "sr48x_square_point", &res);
     CHECK(n > 0 && n < 512u);
 }
@@ -835,13 +828,13 @@ static void sr48x_ramp_plane(void)
         CHECK(n > 12 && n < 12u * 64u);
     }
     ad = adapt(SUBD_SR48_ADAPT_PLANE, 6);
-    ad.point[0] = real_of(0.25); ad.normal[0] = real_of(1); ad.normal[1] = real_of(0.5);
+    ad.point[0] = fx_real(0.25); ad.normal[0] = fx_real(1); ad.normal[1] = fx_real(0.5);
     n = run_checked(&g_h, &ad, 1e-6, "sr48x_cube_plane", &res);
     CHECK(n > 12 && n < 12u * 64u);
     /* a step, but the region is nested (star box): the transition needs no forced split */
     CHECK_EQ(res.forced, 0);
     /* the whole surface on the finest side: uniform */
-    ad.point[0] = real_of(-2);
+    ad.point[0] = fx_real(-2);
     ad.normal[1] = 0;
     CHECK_EQ(run_checked(&g_h, &ad, 1e-6, 0, &res), 12u * 64u);
     if (!build_square(8)) return;
@@ -883,7 +876,7 @@ static void sr48x_chord(void)
         subd_arena a;
         subd_mesh out;
         subd_sr48_adapt_report rep;
-        ad.eps = real_of(eps_list[i]);
+        ad.eps = fx_real(eps_list[i]);
         (void)run_checked(&g_h, &ad, 1e-5, i == 2 ? "sr48x_cube_chord" : 0, &res);
         subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
         if (!extract(&a, &g_h, &ad, &out, &rep)) return;
@@ -908,11 +901,11 @@ static void sr48x_chord(void)
         uint32_t v;
         if (!build_square(6)) return;
         for (v = 0; v < g_h.num_verts; v++) g_pos[3 * v + 2] = 0;
-        ad.eps = real_of(1e-4);
+        ad.eps = fx_real(1e-4);
         CHECK_EQ(run_checked(&g_h, &ad, 1e-6, 0, &res), 2);
         build_square(8);
         ad = adapt(SUBD_SR48_ADAPT_CHORD, 8);
-        ad.eps = real_of(0.002);
+        ad.eps = fx_real(0.002);
         (void)run_checked(&g_h, &ad, 1e-5, "sr48x_square_chord", &res);
     }
 }
@@ -1002,14 +995,14 @@ static void sr48x_plan_exhaustive(void)
     ad = adapt(SUBD_SR48_ADAPT_UNIFORM, 0);
     plan_case(&g_h, &ad);
     ad = adapt(SUBD_SR48_ADAPT_POINT, sq);
-    ad.point[0] = real_of(0.1); ad.point[1] = real_of(0.2);
+    ad.point[0] = fx_real(0.1); ad.point[1] = fx_real(0.2);
     plan_case(&g_h, &ad);
     ad = adapt(SUBD_SR48_ADAPT_CHORD, sq);
-    ad.eps = real_of(0.01);
+    ad.eps = fx_real(0.01);
     plan_case(&g_h, &ad);
     if (!build_cube(cu)) return;
     ad = adapt(SUBD_SR48_ADAPT_PLANE, cu);
-    ad.normal[2] = real_of(1);
+    ad.normal[2] = fx_real(1);
     plan_case(&g_h, &ad);
 }
 
@@ -1023,7 +1016,7 @@ static void sr48x_compact(void)
     subd_face_list fl;
     uint32_t used, plan;
     if (!build_cube(6)) return;
-    ad.eps = real_of(0.01);
+    ad.eps = fx_real(0.01);
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (!extract(&a, &g_h, &ad, &out, &rep)) return;
     used = a.used;
@@ -1068,9 +1061,9 @@ static void sr48x_errors(void)
     BAD(ad.max_level = 4, SUBD_ERR_PARAM);
     BAD((ad.mode = SUBD_SR48_ADAPT_RAMP, ad.axis = 3), SUBD_ERR_PARAM);
     BAD((ad.mode = SUBD_SR48_ADAPT_CHORD, ad.eps = 0), SUBD_ERR_PARAM);
-    BAD((ad.mode = SUBD_SR48_ADAPT_CHORD, ad.eps = real_of(-1)), SUBD_ERR_PARAM);
+    BAD((ad.mode = SUBD_SR48_ADAPT_CHORD, ad.eps = fx_real(-1)), SUBD_ERR_PARAM);
     BAD(ad.mode = SUBD_SR48_ADAPT_CALLBACK, SUBD_ERR_PARAM);
-    BAD((ad.mode = SUBD_SR48_ADAPT_POINT, ad.radius = real_of(-1)), SUBD_ERR_PARAM);
+    BAD((ad.mode = SUBD_SR48_ADAPT_POINT, ad.radius = fx_real(-1)), SUBD_ERR_PARAM);
     BAD(ad.mode = SUBD_SR48_ADAPT_PLANE, SUBD_ERR_PARAM); /* zero normal */
 #if !SUBD_FIXED
     {
@@ -1160,7 +1153,7 @@ static void sr48x_corpus(void)
         ad = adapt(SUBD_SR48_ADAPT_UNIFORM, h.steps);
         CHECK_EQ(run_checked(&g_h, &ad, 0, 0, &res), h.level_tri[h.steps + 1] - h.level_tri[h.steps]);
         ad = adapt(SUBD_SR48_ADAPT_CHORD, h.steps);
-        ad.eps = real_of(0.02);
+        ad.eps = fx_real(0.02);
         (void)run_checked(&g_h, &ad, 1e-5, cases[i].hash, &res);
         ad = adapt(SUBD_SR48_ADAPT_POINT, h.steps);
         ad.point[0] = h.pos[0]; ad.point[1] = h.pos[1]; ad.point[2] = h.pos[2];
@@ -1169,7 +1162,7 @@ static void sr48x_corpus(void)
         ad.axis = 2;
         (void)run_checked(&g_h, &ad, 1e-6, 0, &res);
         ad = adapt(SUBD_SR48_ADAPT_PLANE, h.steps);
-        ad.normal[0] = real_of(1);
+        ad.normal[0] = fx_real(1);
         (void)run_checked(&g_h, &ad, 1e-6, 0, &res);
         ad = adapt(SUBD_SR48_ADAPT_CALLBACK, h.steps);
         ad.fn = cb_level;

@@ -16,6 +16,7 @@
 #include <string.h>
 #include "harness.h"
 #include "corpus.h"
+#include "fixtures.h"
 #if H_HOST
 #include <stdio.h>
 #define T_NOTE(...) printf(__VA_ARGS__)
@@ -23,47 +24,8 @@
 #define T_NOTE(...) ((void)0)
 #endif
 
-static const char tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
-static const char cube_obj[] =
-    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
-    "f 4 1 5\nf 4 5 8\n";
-static const char two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
-
-enum { S_TET, S_CUBE, S_ICO, S_HEXFAN, S_GRID, S_TWO, S_TORUS, S_BIPYR, S_COUNT };
-
-/* A closed bipyramid with apexes of valence n (3..16), equator valence 4: g_bn sets n. */
+/* The shapes: fx_sr48_shape (test/fixtures.c); g_bn sets the bipyramid's apex valence (3..16). */
 static uint32_t g_bn = 5;
-static subd_real g_bpos[3 * 18];
-static uint32_t g_bidx[3 * 32];
-static int make_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
-{
-    static const int32_t cs[16][2] = {{1000, 0}, {924, 383}, {707, 707}, {383, 924}, {0, 1000}, {-383, 924},
-                                      {-707, 707}, {-924, 383}, {-1000, 0}, {-924, -383}, {-707, -707},
-                                      {-383, -924}, {0, -1000}, {383, -924}, {707, -707}, {924, -383}};
-    subd_face_list fl;
-    uint32_t i, step = 16u / n;
-    for (i = 0; i < n; i++) {
-        uint32_t j = (i * 16u) / n;
-        g_bpos[3 * i] = h_int(cs[j][0]) / 1000;
-        g_bpos[3 * i + 1] = h_int(cs[j][1]) / 1000;
-        g_bpos[3 * i + 2] = h_int((int32_t)(i & 1u)) / 8;
-        g_bidx[6 * i] = n; g_bidx[6 * i + 1] = i; g_bidx[6 * i + 2] = (i + 1u) % n;
-        g_bidx[6 * i + 3] = n + 1u; g_bidx[6 * i + 4] = (i + 1u) % n; g_bidx[6 * i + 5] = i;
-    }
-    (void)step;
-    g_bpos[3 * n] = 0; g_bpos[3 * n + 1] = 0; g_bpos[3 * n + 2] = h_int(1);
-    g_bpos[3 * n + 3] = 0; g_bpos[3 * n + 4] = 0; g_bpos[3 * n + 5] = -h_int(1);
-    fl.num_verts = n + 2u;
-    fl.pos = g_bpos;
-    fl.num_faces = 2u * n;
-    fl.face_size = 0;
-    fl.index = g_bidx;
-    fl.num_lines = 0;
-    fl.line_size = 0;
-    fl.line_index = 0;
-    return h_build(a, &fl, m);
-}
 
 #define ST_ARENA (64u * 1024u)       /* the stream's arena: the top of h_arena_buf         */
 #define MAT_ARENA (H_ARENA_BYTES - ST_ARENA)
@@ -72,39 +34,6 @@ static int make_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
 #else
 #define MAXV 2048u
 #endif
-
-static subd_real g_tpos[3 * 64];
-static uint32_t g_tidx[6 * 64];
-
-static int load_text(subd_arena *a, const char *txt, subd_mesh *m)
-{
-    subd_diag d;
-    uint32_t n = 0;
-    while (txt[n]) n++;
-    return CHECK_EQ(subd_obj_read(a, txt, n, m, &d), SUBD_OK);
-}
-
-static int make_shape(int id, subd_arena *a, subd_mesh *m)
-{
-    const corpus_file *f = 0;
-    subd_diag d;
-    switch (id) {
-    case S_TET: return load_text(a, tet_obj, m);
-    case S_CUBE: return load_text(a, cube_obj, m);
-    case S_TWO: return load_text(a, two_obj, m);
-    case S_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
-    case S_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
-    case S_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
-    case S_BIPYR: return make_bipyramid(a, m, g_bn);
-    case S_TORUS: {
-        subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
-        return h_build(a, &fl, m);
-    }
-    default: return 0;
-    }
-    if (!CHECK(f != 0)) return 0;
-    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
-}
 
 /* The sink: compares triangle j with the extraction's face j. */
 typedef struct cmp_ctx {
@@ -226,7 +155,7 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
     subd_tri_sink sink;
     uint32_t plan = 0, i, ph, pn, b;
     subd_arena_init(&a, g_mat ? g_mat : h_arena_buf, g_mat ? g_mat_bytes : MAT_ARENA);
-    if (!make_shape(shape, &a, &in)) return;
+    if (!fx_sr48_shape(shape, g_bn, &a, &in)) return;
     o.steps = levels;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -271,8 +200,8 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
     for (i = 0; i < out.num_verts && levels == 0u; i++) CHECK(g_cc.id[i] < base.num_verts);
     /* welded by id the stream is the extraction's mesh; closed input -> closed output */
     CHECK_EQ(out.num_boundary_edges == 0u, in.num_boundary_edges == 0u);
-    if (levels == 3u && shape != S_BIPYR) {
-        static const char *const names[S_COUNT] = {"sr48s_tet", "sr48s_cube", "sr48s_ico", "sr48s_hexfan",
+    if (levels == 3u && shape != FX48_BIPYR) {
+        static const char *const names[FX48_COUNT] = {"sr48s_tet", "sr48s_cube", "sr48s_ico", "sr48s_hexfan",
                                                    "sr48s_grid", "sr48s_two", "sr48s_torus", "sr48s_bipyr"};
         h_hash(names[shape], g_cc.hash ^ flags);
     }
@@ -290,10 +219,10 @@ static void sr48s_uniform(void)
 {
     /* 7 > SUBD_SR48_STREAM_TILE_LEVELS (6): depth-first levels above a tile (7 levels only
      * where the materialised hierarchy fits the test arena: the two-triangle shape) */
-    static const uint32_t maxl[S_COUNT] = {6, 4, 3, 5, 1, 7, 3, 4};
+    static const uint32_t maxl[FX48_COUNT] = {6, 4, 3, 5, 1, 7, 3, 4};
     int s;
     uint32_t l, f;
-    for (s = 0; s < S_COUNT; s++)
+    for (s = 0; s < FX48_COUNT; s++)
         for (f = 0; f < 2u; f++)
             for (l = 0; l <= maxl[s]; l++) run_case(s, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
 }
@@ -312,9 +241,9 @@ static void sr48s_checkpoints(void)
     g_mat = g_big;
     g_mat_bytes = (uint32_t)sizeof g_big;
     for (f = 0; f < 2u; f++) {
-        run_case(S_TWO, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
-        run_case(S_TWO, 12, f ? SUBD_SR48_NO_SMOOTH : 0u);
-        run_case(S_TET, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(FX48_TWO, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(FX48_TWO, 12, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(FX48_TET, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
     }
     g_mat = 0;
 #endif
@@ -324,8 +253,8 @@ static void sr48s_checkpoints(void)
 static void sr48s_valence(void)
 {
     for (g_bn = 3; g_bn <= 16u; g_bn++) {
-        run_case(S_BIPYR, 3, 0);
-        run_case(S_BIPYR, 3, SUBD_SR48_NO_SMOOTH);
+        run_case(FX48_BIPYR, 3, 0);
+        run_case(FX48_BIPYR, 3, SUBD_SR48_NO_SMOOTH);
     }
     g_bn = 5;
 }
@@ -335,7 +264,7 @@ static int make_base(int shape, subd_arena *a, uint32_t flags, subd_sr48 *base, 
 {
     subd_diag d;
     subd_arena_init(a, h_arena_buf, MAT_ARENA);
-    if (!make_shape(shape, a, in)) return 0;
+    if (!fx_sr48_shape(shape, g_bn, a, in)) return 0;
     return CHECK_EQ(subd_sr48_base(a, in, flags, base, &d), SUBD_OK);
 }
 
@@ -358,7 +287,7 @@ static void sr48s_plan_exhaustive(void)
     subd_tri_sink sink;
     uint32_t plan, size, n;
     int st;
-    if (!make_base(S_TET, &a, 0, &base, &in)) return;
+    if (!make_base(FX48_TET, &a, 0, &base, &in)) return;
     so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = 3;
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
@@ -400,7 +329,7 @@ static void sr48s_errors(void)
     subd_stream s;
     uint32_t plan, n = 0, flags = 0, m;
     static uint32_t nb[1024];
-    if (!make_base(S_ICO, &a, 0, &base, &in)) return;
+    if (!make_base(FX48_ICO, &a, 0, &base, &in)) return;
     subd_arena_init(&sa, h_arena_buf + MAT_ARENA, ST_ARENA);
     so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = 2;
@@ -486,7 +415,7 @@ static void sr48s_base(void)
     subd_diag d;
     uint32_t cl, plan, plan0, i, mark, size;
     subd_arena_init(&a, h_arena_buf, MAT_ARENA);
-    if (!make_shape(S_ICO, &a, &in)) return;
+    if (!fx_sr48_shape(FX48_ICO, g_bn, &a, &in)) return;
     if (!CHECK_EQ(subd_sr48_count_clusters(&a, &in, &cl, &d), SUBD_OK)) return;
     if (!CHECK_EQ(subd_sr48_base_plan(&in, 0, cl, &plan), SUBD_OK)) return;
     o.steps = 0;
@@ -521,14 +450,6 @@ static void sr48s_base(void)
  * shape, is test_sr48_stream_shapes.c's (faces matched by hierarchy vertex numbers, so cuts
  * with coincident faces too; the callback's call count, no forced splits); here their
  * error paths. */
-static subd_real real_of(double x)
-{
-#if SUBD_FIXED
-    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
-#else
-    return (float)x;
-#endif
-}
 /* CALLBACK: a viewer at g_view, one level per g_vr of distance from the region's box (0
  * inside it): monotone (a box inside another is no nearer), so nested. */
 static double g_view[3], g_vr;
@@ -567,7 +488,7 @@ static void sr48s_adapt_errors(void)
     subd_mesh out;
     uint32_t plan, size, n, m, full = 0;
     int st, xs;
-    if (!make_base(S_CUBE, &a, 0, &base, &in)) return;
+    if (!make_base(FX48_CUBE, &a, 0, &base, &in)) return;
     o.steps = 3;
     o.flags = 0;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -611,7 +532,7 @@ static void sr48s_adapt_errors(void)
         sink.tri = count_tri;
         /* bad parameters of this mode: extract's status, nothing emitted */
         if (m == 0u) so.adapt.axis = 3;
-        if (m == 1u) so.adapt.radius = real_of(-1);
+        if (m == 1u) so.adapt.radius = fx_real(-1);
         if (m == 2u) so.adapt.fn = 0;
         xs = subd_sr48_extract(&a, &h, &so.adapt, &out, 0, &d);
         CHECK_EQ(xs, SUBD_ERR_PARAM);

@@ -54,93 +54,7 @@
 #define SH_MAXID (H_HOST ? 65536u : 4096u) /* closed-form id space */
 #define SH_MAXV (H_HOST ? 32768u : 2048u)  /* hierarchy vertices */
 
-static const char sh_tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
-static const char sh_cube_obj[] =
-    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\n"
-    "f 4 1 5\nf 4 5 8\n";
-static const char sh_two_obj[] = "v 0 0 0\nv 1 0 0\nv 1 1 0.3\nv 0 1 0.5\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n";
-
-enum { P_TET, P_CUBE, P_ICO, P_HEXFAN, P_GRID, P_TWO, P_TORUS, P_BIPYR, P_COUNT };
-
-static subd_real sh_real(double x)
-{
-#if SUBD_FIXED
-    return (subd_real)(x >= 0 ? (int32_t)(x * 65536.0 + 0.5) : -(int32_t)(-x * 65536.0 + 0.5));
-#else
-    return (float)x;
-#endif
-}
-
-/* A closed bipyramid: n equator vertices on the unit circle (z alternating 0, 1/8), apexes
- * at z = +-1 of valence n. */
-static subd_real g_bpos[3 * 18];
-static uint32_t g_bidx[3 * 32];
-static int sh_bipyramid(subd_arena *a, subd_mesh *m, uint32_t n)
-{
-    subd_face_list fl;
-    uint32_t i;
-    for (i = 0; i < n; i++) {
-        double ang = 6.283185307179586 * (double)i / (double)n, c = 1, s = 0, x = ang, term = x;
-        uint32_t k;
-        /* cos and sin by their series in double (no libm in the device tests) */
-        for (k = 1; k < 30u; k++) {
-            term = -term * x * x / (double)((2u * k) * (2u * k + 1u));
-            s += term;
-        }
-        s += x;
-        term = 1;
-        for (k = 1; k < 30u; k++) {
-            term = -term * x * x / (double)((2u * k - 1u) * (2u * k));
-            c += term;
-        }
-        g_bpos[3 * i] = sh_real(c);
-        g_bpos[3 * i + 1] = sh_real(s);
-        g_bpos[3 * i + 2] = sh_real((i & 1u) ? 0.125 : 0.0);
-        g_bidx[6 * i] = n; g_bidx[6 * i + 1] = i; g_bidx[6 * i + 2] = (i + 1u) % n;
-        g_bidx[6 * i + 3] = n + 1u; g_bidx[6 * i + 4] = (i + 1u) % n; g_bidx[6 * i + 5] = i;
-    }
-    g_bpos[3 * n] = 0; g_bpos[3 * n + 1] = 0; g_bpos[3 * n + 2] = h_int(1);
-    g_bpos[3 * n + 3] = 0; g_bpos[3 * n + 4] = 0; g_bpos[3 * n + 5] = -h_int(1);
-    memset(&fl, 0, sizeof fl);
-    fl.num_verts = n + 2u;
-    fl.pos = g_bpos;
-    fl.num_faces = 2u * n;
-    fl.index = g_bidx;
-    return h_build(a, &fl, m);
-}
-
-static subd_real g_tpos[3 * 64];
-static uint32_t g_tidx[6 * 64];
 static uint32_t g_bn = 5; /* the bipyramid's apex valence */
-
-static int sh_text(subd_arena *a, const char *txt, subd_mesh *m)
-{
-    subd_diag d;
-    return CHECK_EQ(subd_obj_read(a, txt, (uint32_t)strlen(txt), m, &d), SUBD_OK);
-}
-
-static int sh_shape(int id, subd_arena *a, subd_mesh *m)
-{
-    const corpus_file *f = 0;
-    subd_diag d;
-    switch (id) {
-    case P_TET: return sh_text(a, sh_tet_obj, m);
-    case P_CUBE: return sh_text(a, sh_cube_obj, m);
-    case P_TWO: return sh_text(a, sh_two_obj, m);
-    case P_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
-    case P_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
-    case P_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
-    case P_BIPYR: return sh_bipyramid(a, m, g_bn);
-    case P_TORUS: {
-        subd_face_list fl = h_torus(6, 4, g_tpos, g_tidx);
-        return h_build(a, &fl, m);
-    }
-    default: return 0;
-    }
-    if (!CHECK(f != 0)) return 0;
-    return CHECK_EQ(subd_obj_read(a, f->data, f->len, m, &d), SUBD_OK);
-}
 
 /* ------------------------------------------------------------------------------------ */
 /* The sink: every triangle kept. */
@@ -201,7 +115,6 @@ static uint64_t g_key[2u * SH_MAXF];  /* extraction faces: (corner key, face), s
 static uint8_t g_hit[SH_MAXF];
 static uint32_t g_rank[SH_MAXV];      /* hierarchy vertex -> extraction vertex + 1       */
 static uint64_t g_edge[2u * 3u * SH_MAXF];
-static uint16_t g_cnt[SH_MAXV];
 
 static int sh_cmp2(const void *a, const void *b)
 {
@@ -217,19 +130,6 @@ static int sh_cmp1(const void *a, const void *b)
 static uint64_t sh_fkey(uint32_t a, uint32_t b, uint32_t c)
 {
     return ((uint64_t)a << 42) | ((uint64_t)b << 21) | (uint64_t)c;
-}
-
-static uint32_t sh_valence(const subd_sr48 *b, uint32_t *lowest)
-{
-    uint32_t t, best = 0, low = 0xffffffffu;
-    if (b->num_verts > SH_MAXV) return 0;
-    for (t = 0; t < b->num_verts; t++) g_cnt[t] = 0;
-    for (t = 0; t < 3u * b->level_tri[1]; t++)
-        if (++g_cnt[b->tri_vert[t]] > best) best = g_cnt[b->tri_vert[t]];
-    for (t = 0; t < b->num_verts; t++)
-        if (g_cnt[t] && g_cnt[t] < low) low = g_cnt[t];
-    if (lowest) *lowest = low;
-    return best;
 }
 
 /* What the cases covered (printed on the host, some checked at the end). */
@@ -271,7 +171,7 @@ static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_sr48_
     uint32_t plan = 0, want, nid = 0, i, c, q, bad = 0, ne = 0, nb = 0, nvert = 0, nused = 0, val, low = 0, xcalls;
     int chord = ad0->mode == SUBD_SR48_ADAPT_CHORD, uniform = ad0->mode == SUBD_SR48_ADAPT_UNIFORM;
     subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
-    if (!sh_shape(shape, &a, &in)) return;
+    if (!fx_sr48_shape(shape, g_bn, &a, &in)) return;
     o.steps = levels;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -291,7 +191,7 @@ static void sh_case(int shape, uint32_t levels, uint32_t flags, const subd_sr48_
         SH_NOTE("shape %d levels %u: base status %d needs %u\n", shape, levels, d.status, d.bytes_needed);
         return;
     }
-    val = sh_valence(&base, &low);
+    val = fx_sr48_valence(&base, &low);
     if (val > g_vmax) g_vmax = val;
     if (low < g_vmin) g_vmin = low;
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
@@ -470,21 +370,21 @@ static void sh_setting(uint32_t m, subd_sr48_adapt *ad)
     case 0: ad->mode = SUBD_SR48_ADAPT_UNIFORM; break;
     case 1:
         ad->mode = SUBD_SR48_ADAPT_PLANE;
-        ad->point[0] = sh_real(0.1);
-        ad->normal[0] = sh_real(1); ad->normal[1] = sh_real(0.5); ad->normal[2] = sh_real(0.25);
+        ad->point[0] = fx_real(0.1);
+        ad->normal[0] = fx_real(1); ad->normal[1] = fx_real(0.5); ad->normal[2] = fx_real(0.25);
         break;
     case 2: case 3:
         ad->mode = SUBD_SR48_ADAPT_POINT;
-        ad->point[0] = sh_real(0.5); ad->point[1] = sh_real(0.4); ad->point[2] = sh_real(m == 2u ? 0.3 : -2);
-        ad->radius = sh_real(m == 2u ? 0.15 : 0.6);
+        ad->point[0] = fx_real(0.5); ad->point[1] = fx_real(0.4); ad->point[2] = fx_real(m == 2u ? 0.3 : -2);
+        ad->radius = fx_real(m == 2u ? 0.15 : 0.6);
         break;
     case 4: case 5: case 6: ad->mode = SUBD_SR48_ADAPT_RAMP; ad->axis = m - 4u; break;
     case 7:
         ad->mode = SUBD_SR48_ADAPT_POINT;
-        ad->point[0] = sh_real(0.5); ad->point[1] = sh_real(0.4); ad->point[2] = sh_real(0.3);
+        ad->point[0] = fx_real(0.5); ad->point[1] = fx_real(0.4); ad->point[2] = fx_real(0.3);
         break;
     case 8: ad->mode = SUBD_SR48_ADAPT_CALLBACK; ad->fn = sh_view_level; break;
-    default: ad->mode = SUBD_SR48_ADAPT_CHORD; ad->eps = sh_real(m == 9u ? 0.05 : 0.01); break;
+    default: ad->mode = SUBD_SR48_ADAPT_CHORD; ad->eps = fx_real(m == 9u ? 0.05 : 0.01); break;
     }
 }
 
@@ -494,24 +394,24 @@ static void sh_setting(uint32_t m, subd_sr48_adapt *ad)
  * cube (the levels test_sr48_stream.c's adaptive comparison had). */
 static void sr48sh_shapes(void)
 {
-    static const uint32_t maxl[P_BIPYR] = {H_HOST ? 5u : 2u, H_HOST ? 4u : 2u, H_HOST ? 3u : 1u, H_HOST ? 3u : 2u,
+    static const uint32_t maxl[FX48_BIPYR] = {H_HOST ? 5u : 2u, H_HOST ? 4u : 2u, H_HOST ? 3u : 1u, H_HOST ? 3u : 2u,
                                            H_HOST ? 1u : 0u, H_HOST ? 5u : 2u, H_HOST ? 3u : 1u};
-    static const char *const names[P_BIPYR] = {"sr48sh_tet", "sr48sh_cube", "sr48sh_ico", "sr48sh_hexfan",
+    static const char *const names[FX48_BIPYR] = {"sr48sh_tet", "sr48sh_cube", "sr48sh_ico", "sr48sh_hexfan",
                                                 "sr48sh_grid", "sr48sh_two", "sr48sh_torus"};
     subd_sr48_adapt ad;
     uint32_t s, l, f, m;
     for (m = 0; m < SH_SETTINGS; m++) {
         sh_setting(m, &ad);
-        for (s = 0; s < P_BIPYR; s++)
+        for (s = 0; s < FX48_BIPYR; s++)
             for (f = 0; f < 2u; f++)
                 for (l = 0; l <= maxl[s]; l++) {
                     uint32_t lim = H_HOST && !h_long && maxl[s] > 3u ? 3u : maxl[s];
-                    if (m >= 9u) lim = H_HOST ? (lim > 2u ? 2u + (s == P_TET || s == P_TWO) : lim) : (lim > 1u ? 1u : lim);
+                    if (m >= 9u) lim = H_HOST ? (lim > 2u ? 2u + (s == FX48_TET || s == FX48_TWO) : lim) : (lim > 1u ? 1u : lim);
                     if (!H_HOST && f && m != 0u && m != 9u) continue;
                     if (l > lim) continue;
                     /* hashes where the host and the device both run the case */
                     sh_case((int)s, l, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad,
-                            (l == 1u && !f && s != P_GRID && (m == 0u || m == 8u || m == 9u)) ? names[s] : 0);
+                            (l == 1u && !f && s != FX48_GRID && (m == 0u || m == 8u || m == 9u)) ? names[s] : 0);
                 }
     }
     /* every mode was streamed; the tetrahedron's coincident faces were compared */
@@ -538,7 +438,7 @@ static void sr48sh_valences(void)
             if (m == 3u || m == 4u || m == 5u || m == 10u) continue;
             if (!H_HOST && m != 0u && m != 1u && m != 9u) continue;
             sh_setting(m, &ad);
-            for (f = 0; f < 2u; f++) sh_case(P_BIPYR, H_HOST ? 2u : 1u, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad, 0);
+            for (f = 0; f < 2u; f++) sh_case(FX48_BIPYR, H_HOST ? 2u : 1u, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad, 0);
         }
     g_bn = 5;
     /* the bases have vertices of valence 4 (regular 4-8) up to 12 (the apexes) */

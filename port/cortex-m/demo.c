@@ -257,6 +257,37 @@ static int demo_icosahedron(subd_arena *arena)
     return SUBD_OK;
 }
 
+/* One timed subd_loop_stream call: its instructions in *insns (QEMU's counter). */
+static int demo_loop_timed(subd_arena *sa, const subd_mesh *m, const subd_loop_opts *o, const subd_loop_sink *sink,
+                           uint64_t *insns)
+{
+    subd_diag d;
+    uint32_t t0 = port_cycles(), t1;
+    int st = subd_loop_stream(sa, m, o, sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return demo_fail(0, st, &d);
+    *insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    return SUBD_OK;
+}
+
+/* The stream into a counting sink (the stream's own instructions per triangle, without a
+ * checksum's), reported under the two labels; the count must be `tris`. */
+static int demo_loop_counted(subd_arena *sa, const subd_mesh *m, const subd_loop_opts *o, uint32_t tris,
+                             const char *label_total, const char *label_per_tri)
+{
+    subd_loop_sink sink;
+    uint32_t count = 0;
+    uint64_t insns;
+    int st;
+    sink.tri = demo_count_tri;
+    sink.ctx = &count;
+    if ((st = demo_loop_timed(sa, m, o, &sink, &insns)) != SUBD_OK) return st;
+    if (count != tris) return SUBD_ERR_PARAM;
+    demo_kv64(label_total, insns);
+    demo_kv(label_per_tri, (uint32_t)(insns / count));
+    return SUBD_OK;
+}
+
 /* Streaming Loop, level 6, of the geodesic sphere: build the control mesh in the main arena,
  * plan the stream and check it against the static stream arena, then stream twice: into the
  * checksum sink (the hash the host reproduces) and into a counting sink (the stream's own
@@ -270,8 +301,8 @@ static int demo_stream(subd_arena *arena)
     subd_loop_sink sink;
     subd_diag d;
     demo_hash hs;
-    uint32_t plan, t0, t1, mark = start_measure(arena), count = 0, v, maxval = 0;
-    uint64_t insns_hash, insns_count;
+    uint32_t plan, mark = start_measure(arena), v, maxval = 0;
+    uint64_t insns_hash;
     int st;
     print_str("streaming Loop, level 6, geodesic sphere built in code:\n");
     if ((st = demo_geo_build(&geo, &fl)) != SUBD_OK) return st;
@@ -295,41 +326,24 @@ static int demo_stream(subd_arena *arena)
     demo_hash_init(&hs);
     sink.tri = demo_hash_tri;
     sink.ctx = &hs;
-    t0 = port_cycles();
-    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
-    t1 = port_cycles();
-    if (st != SUBD_OK) return demo_fail(0, st, &d);
-    insns_hash = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    if ((st = demo_loop_timed(&sa, &m, &o, &sink, &insns_hash)) != SUBD_OK) return st;
     demo_kv("stream arena bytes used (peak)", sa.peak);
     demo_kv("triangles", hs.tris);
     demo_kv_hex("position hash (FNV-1a)", hs.h);
     demo_kv64("instructions, stream + checksum sink", insns_hash);
     demo_kv("instructions per triangle, stream + checksum sink", (uint32_t)(insns_hash / hs.tris));
-    sink.tri = demo_count_tri;
-    sink.ctx = &count;
-    t0 = port_cycles();
-    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
-    t1 = port_cycles();
-    if (st != SUBD_OK) return demo_fail(0, st, &d);
-    insns_count = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    if (count != hs.tris) return SUBD_ERR_PARAM;
-    demo_kv64("instructions, stream + counting sink", insns_count);
-    demo_kv("instructions per triangle, stream + counting sink", (uint32_t)(insns_count / count));
+    if ((st = demo_loop_counted(&sa, &m, &o, hs.tris, "instructions, stream + counting sink",
+                                "instructions per triangle, stream + counting sink")) != SUBD_OK)
+        return st;
     /* limit mode: limit positions and unit normals, same triangles */
     o.flags = SUBD_LOOP_STREAM_LIMIT;
     if ((st = subd_loop_stream_plan(&m, &o, &plan, 0)) != SUBD_OK) return st;
     demo_kv("limit stream arena bytes planned", plan);
     if (plan > sizeof stream_limit_arena) return SUBD_ERR_NOMEM;
     subd_arena_init(&sa, stream_limit_arena, sizeof stream_limit_arena);
-    count = 0;
-    t0 = port_cycles();
-    st = subd_loop_stream(&sa, &m, &o, &sink, &d);
-    t1 = port_cycles();
-    if (st != SUBD_OK) return demo_fail(0, st, &d);
-    insns_count = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
-    if (count != hs.tris) return SUBD_ERR_PARAM;
-    demo_kv64("instructions, limit stream + counting sink", insns_count);
-    demo_kv("instructions per triangle, limit stream + counting sink", (uint32_t)(insns_count / count));
+    if ((st = demo_loop_counted(&sa, &m, &o, hs.tris, "instructions, limit stream + counting sink",
+                                "instructions per triangle, limit stream + counting sink")) != SUBD_OK)
+        return st;
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }

@@ -395,7 +395,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * overflow ring (2 triangles), the level windows (20 bytes per triangle, 21 per vertex;
  * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
  * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
- * (28 bytes per vertex in both arithmetics) and the crop's and level 0's maps. */
+ * (28 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
+ * the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
 #define SUBD_SR48_STREAM_WT_(n) (6u * SUBD_SR48_STREAM_N_(n) + 16u)
@@ -421,9 +422,10 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_G_(nl, t, v, tile, at, av) \
     (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
      (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + (uint32_t)(tile) * SUBD_SR48_WIN_(at, av) + \
-     SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t)))
-#define SUBD_SR48_STREAM_X_(t, v, mt, xv) \
-    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(24u * (xv)) + SUBD_SR48_SA_(4u * (xv)) + SUBD_SR48_SA_(xv) + \
+     SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
+                         SUBD_SR48_MAX_(av, v)))
+#define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) \
+    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(24u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + \
      SUBD_SR48_SA_(2u * (mt)) + SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + \
      2u * SUBD_SR48_SA_(4u * (v)))
 /* Without tiles (the adaptive modes): max(L, 1) level windows. */

@@ -104,7 +104,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = tile ? SUBD_SR48_STREAM_TT_(valence, m) : ct, av = tile ? SUBD_SR48_STREAM_TV_(valence, m) : cv;
-    uint32_t mt = at > ct ? at : ct, xv = (av > cv ? av : cv) + mt;
+    /* X: twice the larger parent's triangles; its vertices: the parent's (pv) and at most one
+     * new one per parent triangle (a diamond's vertex is made once, by its lower triangle) */
+    uint32_t mt = at > ct ? at : ct, pv = av > cv ? av : cv, xv = pv + mt;
     uint32_t lsz = s48_win_layout(ct, cv, nl, off), asz = tile ? s48_win_layout(at, av, nl, off) : 0u;
     uint32_t xsz = s48_win_layout(2u * mt, xv, nl, off);
     s48_state *s;
@@ -127,8 +129,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         uint8_t *lev = subd_layout_take(&y, nlev, lsz);
         uint8_t *ab = tile ? subd_layout_take(&y, 1u, asz) : 0;
         uint8_t *x = subd_layout_take(&y, 1u, xsz);
-        subd_sum *sum = subd_layout_take(&y, 3u * xv, 8u);
-        uint32_t *cnt = subd_layout_take(&y, xv, 4u);
+        /* the smoothing sums and counts: the parent's vertices only (subd_s48_refine_) */
+        subd_sum *sum = subd_layout_take(&y, 3u * pv, 8u);
+        uint32_t *cnt = subd_layout_take(&y, pv, 4u);
         uint8_t *dist = subd_layout_take(&y, xv, 1u);
         uint16_t *mtab = subd_layout_take(&y, mt, 2u);
         uint16_t *tmap = subd_layout_take(&y, 2u * mt, 2u);

@@ -392,7 +392,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * SUBD_SR48_STREAM_WV_(N) vertices (measured: 56 and 40 on regular regions, 4N + 24 and
  * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
- * overflow ring (2 triangles), the level windows (20 bytes per triangle, 21 per vertex;
+ * overflow ring (2 triangles), the level windows (16 bytes per triangle, 17 per vertex;
  * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
  * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
  * (28 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
@@ -403,8 +403,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_WV_(n) (4u * SUBD_SR48_STREAM_N_(n) + 16u)
 #define SUBD_SR48_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
 #define SUBD_SR48_WIN_(t, v) \
-    (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(8u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
-     SUBD_SR48_SA_(8u * (v)) + SUBD_SR48_SA_(v))
+    (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(4u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
+     SUBD_SR48_SA_(4u * (v)) + SUBD_SR48_SA_(v))
 #define SUBD_SR48_MAX_(a, b) ((uint32_t)(a) > (uint32_t)(b) ? (uint32_t)(a) : (uint32_t)(b))
 /* Uniform tiles: the last SUBD_SR48_STREAM_TILE_LEVELS levels (fewer when max_level is
  * smaller) are refined breadth first: the tile window holds the current triangle's

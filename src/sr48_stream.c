@@ -51,6 +51,13 @@
 #include "sr48_stream_internal.h"
 
 SUBD_STREAM_STATE_FITS(s48_state);
+/* Local keys and ids fit their words (sr48_stream_internal.h): a level-0 window's triangle
+ * and vertex indices below 2^9, levels below 2^4 + 1. */
+typedef char s48_local_fits[SUBD_SR48_STREAM_WT_(SUBD_SR48_STREAM_MAX_VALENCE) <= 512u &&
+                                    SUBD_SR48_STREAM_WV_(SUBD_SR48_STREAM_MAX_VALENCE) <= 512u &&
+                                    SUBD_SR48_MAX_STEPS <= 16u && 9u + SUBD_SR48_MAX_STEPS - 1u <= S48_IDS
+                                ? 1
+                                : -1];
 
 /* ------------------------------------------------------------------------------------ */
 /* Capacities and layout                                                                  */
@@ -63,7 +70,7 @@ static uint32_t s48_win_layout(uint32_t ct, uint32_t cv, uint32_t nl, uint32_t *
 {
     subd_layout y;
     uint32_t b, i;
-    const uint32_t cnt[7] = {8u, 3u * ct, 3u * ct, 2u * ct, 3u * cv, 2u * cv, cv};
+    const uint32_t cnt[7] = {8u, 3u * ct, 3u * ct, ct, 3u * cv, cv, cv};
     const uint32_t el[7] = {4u, 2u, 2u, 4u, 4u, 4u, 1u};
     subd_layout_begin(&y, 0);
     for (i = 0; i < 7u; i++) {

@@ -437,14 +437,14 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
     SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
 /* Uniform checkpoints: when more than SUBD_SR48_STREAM_CKPT_ levels lie above the tile's
- * (levels 0..D, D = L - m), every CKPT_-th keeps its window and the ones between share
- * CKPT_ - 1 windows, rebuilt from their checkpoint when the walk returns to them:
- * SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2 words per level and one per slot of walk
- * state; otherwise one window per level. */
+ * (levels 0..D, D = L - m), every CKPT_-th above 0 keeps its window and the ones between
+ * and level 0 share CKPT_ - 1 windows, rebuilt from their checkpoint (level 0: from the base
+ * mesh) when the walk returns to them: SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2
+ * words per level and one per slot of walk state; otherwise one window per level. */
 #define SUBD_SR48_STREAM_CKPT_ 4u
 #define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TM_(L) : 0u)
 #define SUBD_SR48_STREAM_SLOTS_(d) \
-    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ \
+    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u \
                                           : (uint32_t)(d) + 1u)
 #define SUBD_SR48_STREAM_BYTES(L, N) \
     ((SUBD_SR48_STREAM_D_(L) > SUBD_SR48_STREAM_CKPT_ \

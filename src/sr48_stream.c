@@ -91,11 +91,11 @@ static uint32_t s48_tile_levels(uint32_t levels, uint32_t uniform)
     return levels < SUBD_SR48_STREAM_TILE_LEVELS ? (levels > 0u ? levels : 1u) : SUBD_SR48_STREAM_TILE_LEVELS;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level and
- * c - 1 shared by the levels between (SUBD_SR48_STREAM_SLOTS_). */
+/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level
+ * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
-    return d / c + c;
+    return d / c + c - 1u;
 }
 
 /* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
@@ -181,8 +181,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->ckw = ckw;
             if (ckw) {
                 uint32_t i;
-                for (i = 0; i < 2u * (levels + 1u) + nlev; i++) ckw[i] = 0;
-                ckw[2u * (levels + 1u)] = 1u; /* slot 0: level 0, always */
+                for (i = 0; i < 2u * (levels + 1u) + nlev; i++) ckw[i] = 0; /* no slot held */
             }
         }
     }
@@ -334,15 +333,23 @@ static void s48_take_slot(s48_state *s, uint32_t k)
 
 /* Uniform checkpoints: makes level k's slot hold level k's window of the current path,
  * rebuilding it (and the levels between) from the deepest level below it whose slot still
- * holds it (a checkpoint at the latest): the calls of the first descent (refine the level
- * below, crop to its current triangle's children), so the same bits; then its walk state
- * back. 0 on failure (s->err). */
+ * holds it (a checkpoint at the latest; level 0 from the base mesh): the calls of the first
+ * descent (build level 0's window, refine the level below, crop to its current triangle's
+ * children), so the same bits; then its walk state back. 0 on failure (s->err). */
 static int s48_ensure(s48_state *s, uint32_t k)
 {
     const uint32_t *own = s->ckw + 2u * (s->levels + 1u);
     uint32_t j = k;
     s48_win p, x, c;
     while (j > 0u && own[s48_slot(s, j)] != j + 1u) j--;
+    if (j == 0u && own[s48_slot(s, 0)] != 1u) {
+        /* uniform: the window of t0's hybrid pair, whichever of the two t0 is */
+        s48_take_slot(s, 0);
+        if (!subd_s48_build0_(s, s->t0)) return 0;
+        s48_lev(s, 0, &p);
+        p.hd[2] = s->ckw[0];
+        p.hd[5] = s->ckw[1];
+    }
     for (; j < k; j++) {
         s48_lev(s, j, &p);
         s48_x(s, &x);
@@ -378,7 +385,8 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             if (!subd_s48_adapt_box_(s)) goto fail;
             s->boxed = 1;
         }
-        if (!s->built && !s->adapt && (s->t0 & 1u) && s->levels > 0u) {
+        if (!s->built && !s->adapt && (s->t0 & 1u) && s->levels > 0u &&
+            (!s->ckw || s->ckw[2u * (s->levels + 1u) + s48_slot(s, 0)] == 1u)) {
             /* the sibling of the last base triangle: the same level-0 window */
             s48_lev(s, 0, &w);
             w.hd[2] = w.hd[4];
@@ -388,6 +396,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         }
         if (!s->built) {
             if (s->adapt && s->ad.mode != SUBD_SR48_ADAPT_CHORD && !subd_s48_level0_lin_(s, s->t0)) goto fail;
+            if (s->ckw) s48_take_slot(s, 0);
             if (!subd_s48_build0_(s, s->t0)) goto fail;
             s->k = 0;
             s->built = 1;

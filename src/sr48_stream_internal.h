@@ -104,11 +104,12 @@ typedef struct s48_state {
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
     /* (the cache of finest positions, sr48_chord_walk.c: S48C_NC ids after cdesc's 3 S48C_ND
      * words, their positions after cpos's 3 (levels + 4) subd_reals) */
-    /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels 0,
+    /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels
      * c, 2c, .. (c = SUBD_SR48_STREAM_CKPT_) above the tile keep a window each, the levels
-     * between share c - 1 slots (s48_slot) and are rebuilt from their checkpoint when the
-     * walk returns. Per level its walk state (cur, nxt) while its slot holds another level,
-     * then per slot the level it holds plus 1 (0: none). */
+     * between and level 0 share c - 1 slots (s48_slot) and are rebuilt from their checkpoint
+     * (level 0: from the base mesh) when the walk returns. Per level its walk state (cur,
+     * nxt) while its slot holds another level, then per slot the level it holds plus 1 (0:
+     * none). */
     uint32_t *ckw;
 } s48_state;
 
@@ -129,9 +130,14 @@ static inline void s48_win_at(const s48_state *s, uint8_t *blk, const uint32_t *
 static inline uint32_t s48_slot(const s48_state *s, uint32_t k)
 {
     const uint32_t c = SUBD_SR48_STREAM_CKPT_;
+    uint32_t nc;
     if (!s->ckw) return k;
-    /* slots 0 .. D / c: the checkpoints (D = levels - tm, the levels above the tile) */
-    return k % c == 0u ? k / c : (s->levels > s->tm ? s->levels - s->tm : 0u) / c + k % c;
+    /* slots 0 .. nc - 1: the checkpoints c, 2c, .. nc c (nc = D / c, D = levels - tm, the
+     * levels above the tile); then c - 1 slots, one per k mod c; level 0 (rebuilt from the
+     * base mesh, no checkpoint) shares the slot of k mod c = c - 1 */
+    nc = (s->levels > s->tm ? s->levels - s->tm : 0u) / c;
+    if (k % c == 0u && k > 0u) return k / c - 1u;
+    return nc - 1u + (k == 0u ? c - 1u : k % c);
 }
 static inline void s48_lev(const s48_state *s, uint32_t k, s48_win *w)
 {

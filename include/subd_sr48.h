@@ -395,7 +395,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * overflow ring (2 triangles), the level windows (16 bytes per triangle, 17 per vertex;
  * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
  * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
- * (28 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
+ * (10 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
  * the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
@@ -429,7 +429,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
                          SUBD_SR48_MAX_(av, v)))
 #define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) \
-    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(24u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + \
+    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(6u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + \
      SUBD_SR48_SA_(2u * (mt)) + SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + \
      2u * SUBD_SR48_SA_(4u * (v)))
 /* Without tiles (the adaptive modes): max(L, 1) level windows. */

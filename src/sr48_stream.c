@@ -136,8 +136,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         uint8_t *lev = subd_layout_take(&y, nlev, lsz);
         uint8_t *ab = tile ? subd_layout_take(&y, 1u, asz) : 0;
         uint8_t *x = subd_layout_take(&y, 1u, xsz);
-        /* the smoothing sums and counts: the parent's vertices only (subd_s48_refine_) */
-        subd_sum *sum = subd_layout_take(&y, 3u * pv, 8u);
+        /* the smoothing sums' high parts and counts: the parent's vertices only
+         * (subd_s48_refine_; reserved in both arithmetics) */
+        int16_t *sumhi = subd_layout_take(&y, 3u * pv, 2u);
         uint32_t *cnt = subd_layout_take(&y, pv, 4u);
         uint8_t *dist = subd_layout_take(&y, xv, 1u);
         uint16_t *mtab = subd_layout_take(&y, mt, 2u);
@@ -161,7 +162,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->lev = lev;
             s->ablk = ab;
             s->xblk = x;
-            s->sum = sum;
+            s->sumhi = sumhi;
             s->cnt = cnt;
             s->dist = dist;
             s->mtab = mtab;

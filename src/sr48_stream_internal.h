@@ -91,7 +91,8 @@ typedef struct s48_state {
     subd_real blo[3], bhi[3], radius; /* the adaptation box A; POINT's radius (resolved)  */
     subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
     uint32_t *lgv, *lgvt; /* the level-0 window's vertices and a triangle at each, kept     */
-    subd_sum *sum;     /* 3 per vertex (reserved as 8 bytes each in both arithmetics)     */
+    int16_t *sumhi;    /* smoothing: 3 per parent vertex, Q16.16 sums' high parts (the low
+                        * parts and float sums live in X's positions: sr48_window.c)     */
     uint32_t *cnt;
     uint8_t *dist;
     uint16_t *mtab, *tmap, *vmap;

@@ -280,11 +280,44 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
 uint32_t s48_dbg[40];
 #endif
 
+/* Smoothing sums in place: while X is smoothed, the running sum of an old vertex's new
+ * neighbours lives in its own X position (its old position is not read again: the new
+ * vertices come from the parent's positions, and an old vertex left unsmoothed gets the
+ * parent's back). Element e = 3 v + axis. */
+#if SUBD_FIXED /* why: a Q16.16 subd_sum is 64 bits: the low part, signed in [-2^31, 2^31),
+                * in the X position, the high part in s->sumhi. A sum has at most as many
+                * terms as the parent has triangles (one per diamond at the vertex), fewer than
+                * 2^10 (SUBD_SR48_STREAM_TT_ at the largest valence), each below 2^31 in
+                * magnitude, so |high part| < 2^9: an int16 */
+#define S48_W32 ((subd_sum)4294967296)
+static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    return (subd_sum)s->sumhi[e] * S48_W32 + (subd_sum)x->vp[e];
+}
+static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
+{
+    const subd_sum q = v + S48_W32 / 2, hi = q >= 0 ? q / S48_W32 : -((S48_W32 - 1 - q) / S48_W32);
+    s->sumhi[e] = (int16_t)hi;
+    x->vp[e] = (subd_real)(v - hi * S48_W32);
+}
+#else /* float: subd_sum is subd_real: the same additions in the same order, in place */
+static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    (void)s;
+    return x->vp[e];
+}
+static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
+{
+    (void)s;
+    x->vp[e] = v;
+}
+#endif
+
 static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32_t m, int boundary_ok)
 {
     uint32_t q;
     if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s->sum[3u * v + q] = subd_sum_add(s->sum[3u * v + q], x->vp[3u * m + q]);
+    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), x->vp[3u * m + q]));
     s->cnt[v]++;
     if (!(x->vf[m] & S48_EXACT)) s->dist[v] |= S48_INC;
 }
@@ -352,7 +385,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             s->cnt[i] = 0;
             s->dist[i] = 0;
-            for (j = 0; j < 3u; j++) s->sum[3u * i + j] = 0;
+            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
         }
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = p->tv + 3u * i;
@@ -387,10 +420,11 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             uint32_t n = s->cnt[i] & ~0x80000000u;
             if (n == 0u || (s->dist[i] & S48_INC)) {
+                for (j = 0; j < 3u; j++) x->vp[3u * i + j] = p->vp[3u * i + j]; /* not a sum */
                 x->vf[i] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s->sum[3u * i + j], n, &ovf);
+            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s48_sget(s, x, 3u * i + j), n, &ovf);
             x->vf[i] = S48_EXACT;
         }
         if (ovf) {

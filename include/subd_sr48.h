@@ -328,7 +328,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
  *   overflowed: cannot happen within the valence the plan was made for).
- * Cost: uniform: per tile of 2^m triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 5)
+ * Cost: uniform: per tile of 2^m triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 6)
  *   m breadth-first refinements of its descendants plus a two-ring margin (about 8 refined
  *   and 11 cropped triangles per output face); adaptive modes: O(window) per internal batch
  *   of 2 triangles (one refinement of the level max_level-1 window, about 60 triangles);
@@ -409,13 +409,11 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 /* Uniform tiles: the last SUBD_SR48_STREAM_TILE_LEVELS levels (fewer when max_level is
  * smaller) are refined breadth first: the tile window holds the current triangle's
  * descendants one level above max_level with their rings, at most SUBD_SR48_STREAM_TT_(N, m)
- * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). The default 5
- * (was 6): 5 112 bytes less at L = 16, N = 16 (the tile window and the refined window hold
- * 2^m-proportional parts), the same slot count above the tile for L >= 10; measured on the
- * host (subd semireg48 --stream, best of 3): icosahedron 14 steps 1.14 s at 6, 1.46 s at 5;
- * spot 8 steps 5.1 s at 6, 5.5 s at 5 (6 with two-word keys, before: 1.40 s, 6.1 s). */
+ * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). 5 would save
+ * 4 680 bytes at L = 16, N = 16 but measured 35-45 % more time on the host (subd semireg48
+ * --stream: spot 6 steps, icosahedron 13 steps), so the default stays 6. */
 #ifndef SUBD_SR48_STREAM_TILE_LEVELS
-#define SUBD_SR48_STREAM_TILE_LEVELS 5u
+#define SUBD_SR48_STREAM_TILE_LEVELS 6u
 #endif
 #define SUBD_SR48_STREAM_TM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_TILE_LEVELS ? SUBD_SR48_MAX_(L, 1u) : SUBD_SR48_STREAM_TILE_LEVELS)

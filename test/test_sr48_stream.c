@@ -288,7 +288,7 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
 
 static void sr48s_uniform(void)
 {
-    /* 7 > SUBD_SR48_STREAM_TILE_LEVELS (5): depth-first levels above a tile (7 levels only
+    /* 7 > SUBD_SR48_STREAM_TILE_LEVELS (6): depth-first levels above a tile (7 levels only
      * where the materialised hierarchy fits the test arena: the two-triangle shape) */
     static const uint32_t maxl[S_COUNT] = {6, 4, 3, 5, 1, 7, 3, 4};
     int s;

@@ -322,8 +322,10 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * smoothing, open and closed meshes).
  * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
  *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
- *   400 (next 56 + step 200 + refine 104 + scatter 24) plus the caller's; the push form
- *   subd_sr48_stream about 630 plus the sink's.
+ *   420 (next 56 + step 264 + refine 96), uniform with checkpoints (max_level >= 11) about
+ *   650 (step + rebuild 136 + level 0's window 120 + fan walk 72), plus the caller's; the
+ *   push form subd_sr48_stream about 680 (stream 120 + run 200 + step + refine; with
+ *   checkpoints about 910) plus the sink's.
  * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level

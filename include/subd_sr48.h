@@ -412,8 +412,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * smaller) are refined breadth first: the tile window holds the current triangle's
  * descendants one level above max_level with their rings, at most SUBD_SR48_STREAM_TT_(N, m)
  * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). 5 would save
- * 4 680 bytes at L = 16, N = 16 but measured 35-45 % more time on the host (subd semireg48
- * --stream: spot 6 steps, icosahedron 13 steps), so the default stays 6. */
+ * 4 680 bytes at L = 16, N = 16 but measured 20-55 % more time on the host (subd semireg48
+ * --stream, best of 3: spot 6 / 8 steps +20 / +42 %, icosahedron 12 steps +54 %), so the
+ * default stays 6. */
 #ifndef SUBD_SR48_STREAM_TILE_LEVELS
 #define SUBD_SR48_STREAM_TILE_LEVELS 6u
 #endif

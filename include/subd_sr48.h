@@ -322,8 +322,10 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * smoothing, open and closed meshes).
  * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
  *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
- *   400 (next 56 + step 200 + refine 104 + scatter 24) plus the caller's; the push form
- *   subd_sr48_stream about 630 plus the sink's.
+ *   420 (next 56 + step 264 + refine 96), uniform with checkpoints (max_level >= 11) about
+ *   650 (step + rebuild 136 + level 0's window 120 + fan walk 72), plus the caller's; the
+ *   push form subd_sr48_stream about 680 (stream 120 + run 200 + step + refine; with
+ *   checkpoints about 910) plus the sink's.
  * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
@@ -392,23 +394,27 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * SUBD_SR48_STREAM_WV_(N) vertices (measured: 56 and 40 on regular regions, 4N + 24 and
  * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
- * overflow ring (2 triangles), the level windows (20 bytes per triangle, 21 per vertex;
+ * overflow ring (2 triangles), the level windows (16 bytes per triangle, 17 per vertex;
  * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
  * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
- * (28 bytes per vertex in both arithmetics) and the crop's and level 0's maps. */
+ * (10 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
+ * the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
 #define SUBD_SR48_STREAM_WT_(n) (6u * SUBD_SR48_STREAM_N_(n) + 16u)
 #define SUBD_SR48_STREAM_WV_(n) (4u * SUBD_SR48_STREAM_N_(n) + 16u)
 #define SUBD_SR48_SA_(x) (((uint32_t)(x) + (SUBD_ARENA_ALIGN - 1u)) & ~(uint32_t)(SUBD_ARENA_ALIGN - 1u))
 #define SUBD_SR48_WIN_(t, v) \
-    (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(8u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
-     SUBD_SR48_SA_(8u * (v)) + SUBD_SR48_SA_(v))
+    (SUBD_SR48_SA_(32u) + 2u * SUBD_SR48_SA_(6u * (t)) + SUBD_SR48_SA_(4u * (t)) + SUBD_SR48_SA_(12u * (v)) + \
+     SUBD_SR48_SA_(4u * (v)) + SUBD_SR48_SA_(v))
 #define SUBD_SR48_MAX_(a, b) ((uint32_t)(a) > (uint32_t)(b) ? (uint32_t)(a) : (uint32_t)(b))
 /* Uniform tiles: the last SUBD_SR48_STREAM_TILE_LEVELS levels (fewer when max_level is
  * smaller) are refined breadth first: the tile window holds the current triangle's
  * descendants one level above max_level with their rings, at most SUBD_SR48_STREAM_TT_(N, m)
- * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). */
+ * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). 5 would save
+ * 4 680 bytes at L = 16, N = 16 but measured 20-55 % more time on the host (subd semireg48
+ * --stream, best of 3: spot 6 / 8 steps +20 / +42 %, icosahedron 12 steps +54 %), so the
+ * default stays 6. */
 #ifndef SUBD_SR48_STREAM_TILE_LEVELS
 #define SUBD_SR48_STREAM_TILE_LEVELS 6u
 #endif
@@ -421,9 +427,10 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_G_(nl, t, v, tile, at, av) \
     (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
      (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + (uint32_t)(tile) * SUBD_SR48_WIN_(at, av) + \
-     SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t)))
-#define SUBD_SR48_STREAM_X_(t, v, mt, xv) \
-    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(24u * (xv)) + SUBD_SR48_SA_(4u * (xv)) + SUBD_SR48_SA_(xv) + \
+     SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
+                         SUBD_SR48_MAX_(av, v)))
+#define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) \
+    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(6u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + \
      SUBD_SR48_SA_(2u * (mt)) + SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + \
      2u * SUBD_SR48_SA_(4u * (v)))
 /* Without tiles (the adaptive modes): max(L, 1) level windows. */
@@ -431,14 +438,14 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
     SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
 /* Uniform checkpoints: when more than SUBD_SR48_STREAM_CKPT_ levels lie above the tile's
- * (levels 0..D, D = L - m), every CKPT_-th keeps its window and the ones between share
- * CKPT_ - 1 windows, rebuilt from their checkpoint when the walk returns to them:
- * SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2 words per level and one per slot of walk
- * state; otherwise one window per level. */
+ * (levels 0..D, D = L - m), every CKPT_-th above 0 keeps its window and the ones between
+ * and level 0 share CKPT_ - 1 windows, rebuilt from their checkpoint (level 0: from the base
+ * mesh) when the walk returns to them: SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2
+ * words per level and one per slot of walk state; otherwise one window per level. */
 #define SUBD_SR48_STREAM_CKPT_ 4u
 #define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TM_(L) : 0u)
 #define SUBD_SR48_STREAM_SLOTS_(d) \
-    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ \
+    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u \
                                           : (uint32_t)(d) + 1u)
 #define SUBD_SR48_STREAM_BYTES(L, N) \
     ((SUBD_SR48_STREAM_D_(L) > SUBD_SR48_STREAM_CKPT_ \

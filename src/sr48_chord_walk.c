@@ -422,8 +422,11 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
             for (q = 0; q < nv; q++)
                 if (w.tv[3u * i + j] == vs[q]) touch = 1;
         if (!touch || !s48c_may(s, &w, k, i)) continue;
-        s->ckey[2u * ns] = w.key[2u * i];
-        s->ckey[2u * ns + 1u] = w.key[2u * i + 1u];
+        {
+            const uint64_t ki = s48_key(&w, i);
+            s->ckey[2u * ns] = (uint32_t)ki;
+            s->ckey[2u * ns + 1u] = (uint32_t)(ki >> 32);
+        }
         ns++;
     }
     for (i = 0; i < ns && r == 0; i++) {

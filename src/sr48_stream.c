@@ -51,6 +51,13 @@
 #include "sr48_stream_internal.h"
 
 SUBD_STREAM_STATE_FITS(s48_state);
+/* Local keys and ids fit their words (sr48_stream_internal.h): a level-0 window's triangle
+ * and vertex indices below 2^9, levels below 2^4 + 1. */
+typedef char s48_local_fits[SUBD_SR48_STREAM_WT_(SUBD_SR48_STREAM_MAX_VALENCE) <= 512u &&
+                                    SUBD_SR48_STREAM_WV_(SUBD_SR48_STREAM_MAX_VALENCE) <= 512u &&
+                                    SUBD_SR48_MAX_STEPS <= 16u && 9u + SUBD_SR48_MAX_STEPS - 1u <= S48_IDS
+                                ? 1
+                                : -1];
 
 /* ------------------------------------------------------------------------------------ */
 /* Capacities and layout                                                                  */
@@ -63,7 +70,7 @@ static uint32_t s48_win_layout(uint32_t ct, uint32_t cv, uint32_t nl, uint32_t *
 {
     subd_layout y;
     uint32_t b, i;
-    const uint32_t cnt[7] = {8u, 3u * ct, 3u * ct, 2u * ct, 3u * cv, 2u * cv, cv};
+    const uint32_t cnt[7] = {8u, 3u * ct, 3u * ct, ct, 3u * cv, cv, cv};
     const uint32_t el[7] = {4u, 2u, 2u, 4u, 4u, 4u, 1u};
     subd_layout_begin(&y, 0);
     for (i = 0; i < 7u; i++) {
@@ -84,11 +91,11 @@ static uint32_t s48_tile_levels(uint32_t levels, uint32_t uniform)
     return levels < SUBD_SR48_STREAM_TILE_LEVELS ? (levels > 0u ? levels : 1u) : SUBD_SR48_STREAM_TILE_LEVELS;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level and
- * c - 1 shared by the levels between (SUBD_SR48_STREAM_SLOTS_). */
+/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level
+ * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
-    return d / c + c;
+    return d / c + c - 1u;
 }
 
 /* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
@@ -104,7 +111,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = tile ? SUBD_SR48_STREAM_TT_(valence, m) : ct, av = tile ? SUBD_SR48_STREAM_TV_(valence, m) : cv;
-    uint32_t mt = at > ct ? at : ct, xv = (av > cv ? av : cv) + mt;
+    /* X: twice the larger parent's triangles; its vertices: the parent's (pv) and at most one
+     * new one per parent triangle (a diamond's vertex is made once, by its lower triangle) */
+    uint32_t mt = at > ct ? at : ct, pv = av > cv ? av : cv, xv = pv + mt;
     uint32_t lsz = s48_win_layout(ct, cv, nl, off), asz = tile ? s48_win_layout(at, av, nl, off) : 0u;
     uint32_t xsz = s48_win_layout(2u * mt, xv, nl, off);
     s48_state *s;
@@ -127,8 +136,10 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         uint8_t *lev = subd_layout_take(&y, nlev, lsz);
         uint8_t *ab = tile ? subd_layout_take(&y, 1u, asz) : 0;
         uint8_t *x = subd_layout_take(&y, 1u, xsz);
-        subd_sum *sum = subd_layout_take(&y, 3u * xv, 8u);
-        uint32_t *cnt = subd_layout_take(&y, xv, 4u);
+        /* the smoothing sums' high parts and counts: the parent's vertices only
+         * (subd_s48_refine_; reserved in both arithmetics) */
+        int16_t *sumhi = subd_layout_take(&y, 3u * pv, 2u);
+        uint32_t *cnt = subd_layout_take(&y, pv, 4u);
         uint8_t *dist = subd_layout_take(&y, xv, 1u);
         uint16_t *mtab = subd_layout_take(&y, mt, 2u);
         uint16_t *tmap = subd_layout_take(&y, 2u * mt, 2u);
@@ -151,7 +162,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->lev = lev;
             s->ablk = ab;
             s->xblk = x;
-            s->sum = sum;
+            s->sumhi = sumhi;
             s->cnt = cnt;
             s->dist = dist;
             s->mtab = mtab;
@@ -171,8 +182,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
             s->ckw = ckw;
             if (ckw) {
                 uint32_t i;
-                for (i = 0; i < 2u * (levels + 1u) + nlev; i++) ckw[i] = 0;
-                ckw[2u * (levels + 1u)] = 1u; /* slot 0: level 0, always */
+                for (i = 0; i < 2u * (levels + 1u) + nlev; i++) ckw[i] = 0; /* no slot held */
             }
         }
     }
@@ -324,15 +334,23 @@ static void s48_take_slot(s48_state *s, uint32_t k)
 
 /* Uniform checkpoints: makes level k's slot hold level k's window of the current path,
  * rebuilding it (and the levels between) from the deepest level below it whose slot still
- * holds it (a checkpoint at the latest): the calls of the first descent (refine the level
- * below, crop to its current triangle's children), so the same bits; then its walk state
- * back. 0 on failure (s->err). */
+ * holds it (a checkpoint at the latest; level 0 from the base mesh): the calls of the first
+ * descent (build level 0's window, refine the level below, crop to its current triangle's
+ * children), so the same bits; then its walk state back. 0 on failure (s->err). */
 static int s48_ensure(s48_state *s, uint32_t k)
 {
     const uint32_t *own = s->ckw + 2u * (s->levels + 1u);
     uint32_t j = k;
     s48_win p, x, c;
     while (j > 0u && own[s48_slot(s, j)] != j + 1u) j--;
+    if (j == 0u && own[s48_slot(s, 0)] != 1u) {
+        /* uniform: the window of t0's hybrid pair, whichever of the two t0 is */
+        s48_take_slot(s, 0);
+        if (!subd_s48_build0_(s, s->t0)) return 0;
+        s48_lev(s, 0, &p);
+        p.hd[2] = s->ckw[0];
+        p.hd[5] = s->ckw[1];
+    }
     for (; j < k; j++) {
         s48_lev(s, j, &p);
         s48_x(s, &x);
@@ -368,7 +386,8 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             if (!subd_s48_adapt_box_(s)) goto fail;
             s->boxed = 1;
         }
-        if (!s->built && !s->adapt && (s->t0 & 1u) && s->levels > 0u) {
+        if (!s->built && !s->adapt && (s->t0 & 1u) && s->levels > 0u &&
+            (!s->ckw || s->ckw[2u * (s->levels + 1u) + s48_slot(s, 0)] == 1u)) {
             /* the sibling of the last base triangle: the same level-0 window */
             s48_lev(s, 0, &w);
             w.hd[2] = w.hd[4];
@@ -378,6 +397,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         }
         if (!s->built) {
             if (s->adapt && s->ad.mode != SUBD_SR48_ADAPT_CHORD && !subd_s48_level0_lin_(s, s->t0)) goto fail;
+            if (s->ckw) s48_take_slot(s, 0);
             if (!subd_s48_build0_(s, s->t0)) goto fail;
             s->k = 0;
             s->built = 1;

@@ -31,15 +31,30 @@
 #define S48C_ND SUBD_SR48_STREAM_CHORD_DESC_  /* CHORD: their capacity, triangles              */
 #define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached finest positions (a power of 2) */
 
-/* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt. */
+/* Local keys and ids (one word each; s48_key and s48_vid give the global 64-bit ones). A
+ * level-k triangle's local key is i0 * 2^k + its child path below its level-0 ancestor, i0
+ * that ancestor's index in the level-0 window (s48_state's gt: the window's base triangles,
+ * sorted, so local keys sort as global ones: T0 * 2^k + path, T0 = gt[i0]). A vertex's local
+ * id: j * 2^S48_IDS + q, j = 0 for a level-0 vertex (q its index in the level-0 window, gv),
+ * else j - 1 = the level of the triangle whose diamond created it and q that triangle's
+ * local key. Bounds: i0 < SUBD_SR48_STREAM_WT_(SUBD_SR48_STREAM_MAX_VALENCE) <= 2^9 and
+ * k < SUBD_SR48_MAX_STEPS <= 16, so q < 2^(9 + 15) < 2^S48_IDS, and j <= 16 < 2^(32 - S48_IDS)
+ * (checked at compile time in sr48_stream.c). */
+#define S48_IDS 27u
+#define S48_IDQ ((1u << S48_IDS) - 1u)
+
+struct s48_state;
+/* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt,
+ * the window's level. */
 typedef struct s48_win {
     uint32_t *hd;
     uint16_t *tv, *tn;
-    uint32_t *key; /* lo, hi per triangle */
+    uint32_t *key; /* local key per triangle (above) */
     subd_real *vp;
-    uint32_t *vid; /* lo, hi per vertex   */
+    uint32_t *vid; /* local id per vertex (above)    */
     uint8_t *vf;
     subd_real *vl; /* adaptive modes: L (the level-0 interpolant) per vertex, else NULL */
+    const struct s48_state *st; /* the level-0 window's gt, gv; nv0, n0 (global keys, ids) */
 } s48_win;
 
 /* Window vertex sv of src as vertex dv of dst: position, id, flags and (adaptive) L. */
@@ -48,8 +63,7 @@ static inline void s48_vcopy(const s48_win *dst, uint32_t dv, const s48_win *src
     dst->vp[3u * dv] = src->vp[3u * sv];
     dst->vp[3u * dv + 1u] = src->vp[3u * sv + 1u];
     dst->vp[3u * dv + 2u] = src->vp[3u * sv + 2u];
-    dst->vid[2u * dv] = src->vid[2u * sv];
-    dst->vid[2u * dv + 1u] = src->vid[2u * sv + 1u];
+    dst->vid[dv] = src->vid[sv];
     dst->vf[dv] = src->vf[sv];
     if (dst->vl) {
         dst->vl[3u * dv] = src->vl[3u * sv];
@@ -77,7 +91,8 @@ typedef struct s48_state {
     subd_real blo[3], bhi[3], radius; /* the adaptation box A; POINT's radius (resolved)  */
     subd_real *l0;     /* L of the level-0 window's vertices (3 per vertex)                */
     uint32_t *lgv, *lgvt; /* the level-0 window's vertices and a triangle at each, kept     */
-    subd_sum *sum;     /* 3 per vertex (reserved as 8 bytes each in both arithmetics)     */
+    int16_t *sumhi;    /* smoothing: 3 per parent vertex, Q16.16 sums' high parts (the low
+                        * parts and float sums live in X's positions: sr48_window.c)     */
     uint32_t *cnt;
     uint8_t *dist;
     uint16_t *mtab, *tmap, *vmap;
@@ -90,17 +105,19 @@ typedef struct s48_state {
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
     /* (the cache of finest positions, sr48_chord_walk.c: S48C_NC ids after cdesc's 3 S48C_ND
      * words, their positions after cpos's 3 (levels + 4) subd_reals) */
-    /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels 0,
+    /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels
      * c, 2c, .. (c = SUBD_SR48_STREAM_CKPT_) above the tile keep a window each, the levels
-     * between share c - 1 slots (s48_slot) and are rebuilt from their checkpoint when the
-     * walk returns. Per level its walk state (cur, nxt) while its slot holds another level,
-     * then per slot the level it holds plus 1 (0: none). */
+     * between and level 0 share c - 1 slots (s48_slot) and are rebuilt from their checkpoint
+     * (level 0: from the base mesh) when the walk returns. Per level its walk state (cur,
+     * nxt) while its slot holds another level, then per slot the level it holds plus 1 (0:
+     * none). */
     uint32_t *ckw;
 } s48_state;
 
 /* Window access (hot: every level of every walk), shared by the four files. */
-static inline void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
+static inline void s48_win_at(const s48_state *s, uint8_t *blk, const uint32_t *off, s48_win *w)
 {
+    w->st = s;
     w->hd = (uint32_t *)(void *)(blk + off[0]);
     w->tv = (uint16_t *)(void *)(blk + off[1]);
     w->tn = (uint16_t *)(void *)(blk + off[2]);
@@ -114,23 +131,36 @@ static inline void s48_win_at(uint8_t *blk, const uint32_t *off, s48_win *w)
 static inline uint32_t s48_slot(const s48_state *s, uint32_t k)
 {
     const uint32_t c = SUBD_SR48_STREAM_CKPT_;
+    uint32_t nc;
     if (!s->ckw) return k;
-    /* slots 0 .. D / c: the checkpoints (D = levels - tm, the levels above the tile) */
-    return k % c == 0u ? k / c : (s->levels > s->tm ? s->levels - s->tm : 0u) / c + k % c;
+    /* slots 0 .. nc - 1: the checkpoints c, 2c, .. nc c (nc = D / c, D = levels - tm, the
+     * levels above the tile); then c - 1 slots, one per k mod c; level 0 (rebuilt from the
+     * base mesh, no checkpoint) shares the slot of k mod c = c - 1 */
+    nc = (s->levels > s->tm ? s->levels - s->tm : 0u) / c;
+    if (k % c == 0u && k > 0u) return k / c - 1u;
+    return nc - 1u + (k == 0u ? c - 1u : k % c);
 }
 static inline void s48_lev(const s48_state *s, uint32_t k, s48_win *w)
 {
-    s48_win_at(s->lev + s48_slot(s, k) * s->lev_size, s->off, w);
+    s48_win_at(s, s->lev + s48_slot(s, k) * s->lev_size, s->off, w);
 }
-static inline void s48_x(const s48_state *s, s48_win *w) { s48_win_at(s->xblk, s->xoff, w); }
+static inline void s48_x(const s48_state *s, s48_win *w) { s48_win_at(s, s->xblk, s->xoff, w); }
 
-static inline uint64_t s48_key(const s48_win *w, uint32_t t)
+/* The global key (T0 * 2^k + path, its index within level k of the hierarchy) of a level-k
+ * triangle with local key q. */
+static inline uint64_t s48_gkey(const s48_state *s, uint32_t q, uint32_t k)
 {
-    return ((uint64_t)w->key[2u * t + 1u] << 32) | w->key[2u * t];
+    return ((uint64_t)s->gt[q >> k] << k) | (q & ((1u << k) - 1u));
 }
+/* Window w's triangle t's global key. */
+static inline uint64_t s48_key(const s48_win *w, uint32_t t) { return s48_gkey(w->st, w->key[t], w->hd[6]); }
+/* Window w's vertex v's global id (the closed form of sr48_window.c's header). */
 static inline uint64_t s48_vid(const s48_win *w, uint32_t v)
 {
-    return ((uint64_t)w->vid[2u * v + 1u] << 32) | w->vid[2u * v];
+    const s48_state *s = w->st;
+    const uint32_t r = w->vid[v], j = r >> S48_IDS;
+    if (j == 0u) return s->gv[r];
+    return (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (j - 1u)) - 1u) + s48_gkey(s, r & S48_IDQ, j - 1u);
 }
 /* Is window neighbour n a window triangle (not OUT, not BND)? */
 static inline int s48_local(uint16_t n) { return n < S48_BND; }

@@ -37,7 +37,7 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
             o->pos[j][i] = w->vp[3u * v + i];
             o->normal[j][i] = 0;
         }
-        o->id[j] = ((uint64_t)w->vid[2u * v + 1u] << 32) | w->vid[2u * v];
+        o->id[j] = s48_vid(w, v);
     }
     o->face = s->t0;
     o->level = s->levels;
@@ -57,7 +57,7 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
     const s48_win *p = w;
     uint32_t j, lo = t, n = 1;
     s48_x(s, &x);
-    s48_win_at(s->ablk, s->aoff, &a);
+    s48_win_at(s, s->ablk, s->aoff, &a);
     for (j = 0; j < s->tm; j++) {
         if (!subd_s48_refine_(s, p, s->k + j, &x)) return 0;
         lo *= 2u;

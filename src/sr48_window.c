@@ -11,7 +11,9 @@
  * rings of the current triangle's children (a triangle is in ring r when it shares a
  * vertex with ring r-1), each with its three vertices, its base, leg-0 and leg-1
  * neighbours as window indices (or OUT of the window, or BND: the mesh boundary) and its
- * global key (T0 * 2^k + the child path = its index within level k of the hierarchy). The
+ * key (T0 * 2^k + the child path = its index within level k of the hierarchy; stored in a
+ * local one-word form, T0 replaced by its index in the level-0 window, as are the vertex
+ * ids: sr48_stream_internal.h). The
  * window of level k+1 is the window of level k refined as a whole (every diamond split,
  * subd_sr48_step's rule, the children's neighbours by the local form of its rule:
  * for t = (c; a, b) with base neighbour N, leg neighbours L0 (c-a) and L1 (b-c), child 0
@@ -178,17 +180,6 @@ uint32_t subd_s48_valence_(const subd_sr48 *b)
 /* ------------------------------------------------------------------------------------ */
 /* Windows                                                                                */
 
-static void s48_set_key(s48_win *w, uint32_t t, uint64_t k)
-{
-    w->key[2u * t] = (uint32_t)k;
-    w->key[2u * t + 1u] = (uint32_t)(k >> 32);
-}
-static void s48_set_id(s48_win *w, uint32_t v, uint64_t id)
-{
-    w->vid[2u * v] = (uint32_t)id;
-    w->vid[2u * v + 1u] = (uint32_t)(id >> 32);
-}
-
 /* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
  * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
  * by index; local vertices and neighbours. 0 when a capacity is exceeded. */
@@ -268,19 +259,20 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
             }
             w.tn[3u * i + j] = (lo < nt && s->gt[lo] == nb) ? (uint16_t)lo : S48_OUT;
         }
-        s48_set_key(&w, i, tt);
+        w.key[i] = i; /* local: gt[i] = tt */
         if (tt == t0) w.hd[2] = i;
         if (tt == (t0 | 1u)) w.hd[4] = i;
     }
     for (i = 0; i < nv; i++) {
         for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
-        s48_set_id(&w, i, s->gv[i]);
+        w.vid[i] = i; /* local: gv[i] */
         w.vf[i] = S48_EXACT;
         if (w.vl)
             for (j = 0; j < 3u; j++) w.vl[3u * i + j] = s->l0[3u * i + j];
     }
     w.hd[0] = nt;
     w.hd[1] = nv;
+    w.hd[6] = 0;
     return 1;
 }
 
@@ -288,11 +280,44 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
 uint32_t s48_dbg[40];
 #endif
 
+/* Smoothing sums in place: while X is smoothed, the running sum of an old vertex's new
+ * neighbours lives in its own X position (its old position is not read again: the new
+ * vertices come from the parent's positions, and an old vertex left unsmoothed gets the
+ * parent's back). Element e = 3 v + axis. */
+#if SUBD_FIXED /* why: a Q16.16 subd_sum is 64 bits: the low part, signed in [-2^31, 2^31),
+                * in the X position, the high part in s->sumhi. A sum has at most as many
+                * terms as the parent has triangles (one per diamond at the vertex), fewer than
+                * 2^10 (SUBD_SR48_STREAM_TT_ at the largest valence), each below 2^31 in
+                * magnitude, so |high part| < 2^9: an int16 */
+#define S48_W32 ((subd_sum)4294967296)
+static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    return (subd_sum)s->sumhi[e] * S48_W32 + (subd_sum)x->vp[e];
+}
+static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
+{
+    const subd_sum q = v + S48_W32 / 2, hi = q >= 0 ? q / S48_W32 : -((S48_W32 - 1 - q) / S48_W32);
+    s->sumhi[e] = (int16_t)hi;
+    x->vp[e] = (subd_real)(v - hi * S48_W32);
+}
+#else /* float: subd_sum is subd_real: the same additions in the same order, in place */
+static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    (void)s;
+    return x->vp[e];
+}
+static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
+{
+    (void)s;
+    x->vp[e] = v;
+}
+#endif
+
 static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32_t m, int boundary_ok)
 {
     uint32_t q;
     if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s->sum[3u * v + q] = subd_sum_add(s->sum[3u * v + q], x->vp[3u * m + q]);
+    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), x->vp[3u * m + q]));
     s->cnt[v]++;
     if (!(x->vf[m] & S48_EXACT)) s->dist[v] |= S48_INC;
 }
@@ -302,7 +327,7 @@ static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32
 int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
 {
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
-    const uint64_t off = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << k) - 1u);
+    const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
     uint32_t i, j, nv = nvp, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
@@ -311,7 +336,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
         uint16_t nb = p->tn[3u * i], m;
-        uint64_t key = s48_key(p, i);
+        const uint32_t key = p->key[i]; /* local: children 2 key, 2 key + 1 */
         if (s48_local(nb) && nb < i) {
             m = s->mtab[nb];
         } else {
@@ -327,7 +352,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
             x->vf[m] = (uint8_t)(exact ? S48_EXACT : 0u);
             if (x->vl) /* L: the base midpoint, whatever the smoothing */
                 for (j = 0; j < 3u; j++) x->vl[3u * m + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
-            s48_set_id(x, m, off + key);
+            x->vid[m] = idj | key;
         }
         s->mtab[i] = m;
         x->tv[6u * i] = m;
@@ -336,8 +361,8 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         x->tv[6u * i + 3u] = m;
         x->tv[6u * i + 4u] = tv[2];
         x->tv[6u * i + 5u] = tv[0];
-        s48_set_key(x, 2u * i, 2u * key);
-        s48_set_key(x, 2u * i + 1u, 2u * key + 1u);
+        x->key[2u * i] = 2u * key;
+        x->key[2u * i + 1u] = 2u * key + 1u;
     }
     if (ovf) {
         s->err = (uint32_t)(-SUBD_ERR_RANGE);
@@ -355,11 +380,12 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     }
     x->hd[0] = 2u * nt;
     x->hd[1] = nv;
+    x->hd[6] = k + 1u;
     if (s->smooth && ((k + 1u) & 1u) == 0u) {
         for (i = 0; i < nvp; i++) {
             s->cnt[i] = 0;
             s->dist[i] = 0;
-            for (j = 0; j < 3u; j++) s->sum[3u * i + j] = 0;
+            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
         }
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = p->tv + 3u * i;
@@ -394,10 +420,11 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             uint32_t n = s->cnt[i] & ~0x80000000u;
             if (n == 0u || (s->dist[i] & S48_INC)) {
+                for (j = 0; j < 3u; j++) x->vp[3u * i + j] = p->vp[3u * i + j]; /* not a sum */
                 x->vf[i] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s->sum[3u * i + j], n, &ovf);
+            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s48_sget(s, x, 3u * i + j), n, &ovf);
             x->vf[i] = S48_EXACT;
         }
         if (ovf) {
@@ -461,11 +488,11 @@ int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s4
             w->tv[3u * t + j] = s->vmap[x->tv[3u * i + j]];
             w->tn[3u * t + j] = s48_local(nb) ? s->tmap[nb] : nb;
         }
-        w->key[2u * t] = x->key[2u * i];
-        w->key[2u * t + 1u] = x->key[2u * i + 1u];
+        w->key[t] = x->key[i];
     }
     w->hd[0] = kt;
     w->hd[1] = kv;
+    w->hd[6] = x->hd[6];
     w->hd[3] = s->tmap[c0];
     w->hd[4] = s->tmap[c0 + 1u];
     return 1;

@@ -431,16 +431,24 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
                      tl->mpos + 3u * v, lo);
         }
     for (y = 0; y <= m; y++) {
-        uint32_t row = S - y, l0 = lt_vi(S, 1u, y + 1u), off[6];
-        lt_ring_offsets(row, off);
+        /* the ring's offsets in subd_reals (lt_ring_offsets' six, twice over, so that the six
+         * from any start are consecutive) for row y + 1 of the margin grid */
+        int32_t row = (int32_t)(S - y), o3[12];
+        uint32_t l0 = lt_vi(S, 1u, y + 1u), j;
+        o3[0] = 3;
+        o3[1] = 3 * row;
+        o3[2] = 3 * (row - 1);
+        o3[3] = -3;
+        o3[4] = -3 * (row + 1);
+        o3[5] = -3 * row;
+        for (j = 0; j < 6u; j++) o3[j + 6u] = o3[j];
         for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u, j;
-            const subd_real *nb[6];
-            for (j = 0; j < 6u; j++, d = d == 5u ? 0u : d + 1u) nb[j] = M + 3u * (l0 + off[d]);
-            subd_loop_limit_reg6(tl->lk, M + 3u * l0, nb, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
+            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u;
+            subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
         }
     }
+
 }
 
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],

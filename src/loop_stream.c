@@ -499,49 +499,13 @@ static void sp_enter(sp_state *s, const sp_level *p)
         subd_lp_fill_cache(p, o->boundary, s->k < s->depth || o->levels >= 2u, &s->wc, &s->ovf);
 }
 
-/* The ids of the current quarter's vertices: lattice points of the control face, from the
- * tile face's corners (level tk's header) and the quarter's frame; a point inside the control
- * face by vertex_id's closed form at once, the others by vertex_id. */
+/* The ids of the current quarter's vertices (loop_tile.c's subd_lt_ids), from the tile
+ * face's corners (level tk's header). */
 static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
     sp_level p;
-    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, lv = s->o.levels, n1 = (uint32_t)1 << lv;
-    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
-    const subd_mesh *in = s->run.in;
-    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-                                   (uint64_t)s->run.f * (nm1 * (nm1 - 1u) / 2u);
     level_at(&s->lay, s->tk, &p);
-    a0 = (int32_t)p.h->ca[0];
-    b0 = (int32_t)p.h->cb[0];
-    ea = ((int32_t)p.h->ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
-    eb = ((int32_t)p.h->cb[1] - b0) / n;
-    fa = ((int32_t)p.h->ca[2] - a0) / n;
-    fb = ((int32_t)p.h->cb[2] - b0) / n;
-    /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
-     * id = r(a) + b - 1 with r(a) = base + (a - 1) nm1 - (a - 1) a / 2 follows a step of a by
-     * r(a + 1) = r(a) + nm1 - a */
-    for (y = 0; y <= m; y++) {
-        int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
-        int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
-        int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
-        int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
-        for (x = 0; x + y <= m; x++, k++) {
-            uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
-            uint64_t id;
-            if (a >= 1u && b >= 1u && a + b < n1) /* vertex_id's face interior */
-                id = (uint64_t)(r + (int64_t)b - 1);
-            else
-                id = subd_lp_vertex_id(in, s->run.f, a, b, lv);
-            tl->qid[2u * k] = (uint32_t)id;
-            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
-            if (da > 0)
-                r += (int64_t)nm1 - ia;
-            else if (da < 0)
-                r -= (int64_t)nm1 - (ia - 1);
-            ia += da;
-            ib += db;
-        }
-    }
+    subd_lt_ids(tl, s->run.in, s->run.f, s->o.levels, p.h->ca, p.h->cb, org, e1, e2);
 }
 
 /* Push form: quarter triangles j0..n-1 of the table straight to the sink through the one

@@ -482,3 +482,43 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
         }
     *ovf |= lo;
 }
+
+void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
+                 const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
+{
+    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, n1 = (uint32_t)1 << lv;
+    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
+    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                                   (uint64_t)f * (nm1 * (nm1 - 1u) / 2u);
+    a0 = (int32_t)ca[0];
+    b0 = (int32_t)cb[0];
+    ea = ((int32_t)ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
+    eb = ((int32_t)cb[1] - b0) / n;
+    fa = ((int32_t)ca[2] - a0) / n;
+    fb = ((int32_t)cb[2] - b0) / n;
+    /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
+     * id = r(a) + b - 1 with r(a) = base + (a - 1) nm1 - (a - 1) a / 2 follows a step of a by
+     * r(a + 1) = r(a) + nm1 - a */
+    for (y = 0; y <= m; y++) {
+        int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
+        int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
+        int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
+        int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
+        for (x = 0; x + y <= m; x++, k++) {
+            uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
+            uint64_t id;
+            if (a >= 1u && b >= 1u && a + b < n1) /* vertex_id's face interior */
+                id = (uint64_t)(r + (int64_t)b - 1);
+            else
+                id = subd_lp_vertex_id(in, f, a, b, lv);
+            tl->qid[2u * k] = (uint32_t)id;
+            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
+            if (da > 0)
+                r += (int64_t)nm1 - ia;
+            else if (da < 0)
+                r -= (int64_t)nm1 - (ia - 1);
+            ia += da;
+            ib += db;
+        }
+    }
+}

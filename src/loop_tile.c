@@ -175,8 +175,10 @@ static inline void lt_ring_offsets(uint32_t row, uint32_t *off)
  * of valence 6 from the vertex's ring start, or the interior edge rule from the lower side.
  * Indices from U(ui, uj)'s: vertex (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j,
  * the length of row j), + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. */
-static inline void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
-                            uint32_t *ovf)
+/* Forced inline (topo.h's TOPO_INLINE) into each loop over a grid: out of line, the call and
+ * the classification cost the M4F 7 instructions per emitted triangle (demo level 6). */
+TOPO_INLINE void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
+                          uint32_t *ovf)
 {
     uint32_t ui, uj, d, l0, row;
     int even;

@@ -16,7 +16,8 @@
  * general; only sectors of <= 2 faces are checked) and the B-spline valence-7 boundary
  * vertex (Jordan block: the reference converges like 1/L; 2 degrees).
  *
- * Everywhere (host and QEMU): subd_sqrt exact rounding checked from bit patterns, chi(n),
+ * Everywhere (host and QEMU): subd_sqrt exact rounding checked from bit patterns, its
+ * instruction path (where the target has one) equal to the software path bit for bit, chi(n),
  * constants and translations reproduced (Q16.16: exactly), planar normals exactly (0,0,1),
  * outward normals on a convex mesh, apply = limit, every too-small arena, errors, and
  * HASH lines of positions and normals compared host = QEMU.

@@ -210,6 +210,19 @@ int section_demostream(void)
     if (st != SUBD_OK) goto fail;
     printf("  host: %.3f s, %.2f M triangles/s (stream + counting sink, one run)\n", (t1 - t0) / 1e9,
            (double)v / 1e6 / ((t1 - t0) / 1e9));
+    { /* limit mode, as the firmware demo's limit step (counting sink) */
+        static uint8_t limit_arena[SUBD_LOOP_STREAM_BYTES_LIMIT(DEMO_STREAM_LEVELS, DEMO_GEO_MAX_VALENCE)];
+        subd_loop_opts lo = o;
+        lo.flags = SUBD_LOOP_STREAM_LIMIT;
+        subd_arena_init(&sa, limit_arena, sizeof limit_arena);
+        v = 0;
+        t0 = host_now_ns();
+        st = subd_loop_stream(&sa, &m, &lo, &sink, &d);
+        t1 = host_now_ns();
+        if (st != SUBD_OK) goto fail;
+        printf("  host: %.3f s, %.2f M triangles/s (limit stream + counting sink, one run)\n", (t1 - t0) / 1e9,
+               (double)v / 1e6 / ((t1 - t0) / 1e9));
+    }
     { /* the same hash over subd_loop's level-6 output faces (the stream's contract) */
         subd_arena la;
         subd_mesh out;

@@ -210,7 +210,8 @@ subd_real subd_real_from_q62(int64_t q);
 /* subd_sqrt: deterministic square root (src/sqrt.c; no libm).
  * Memory: none (a few words of stack).
  * Errors: none: a negative input gives NaN (float32) or 0 (Q16.16), see below.
- * Cost: O(1), integer arithmetic only, about 32 loop steps.
+ * Cost: O(1): float32 on a Cortex-M with an FPU or an x86-64 host one square root
+ * instruction (positive normal inputs), else integer arithmetic, about 32 loop steps.
  * Notes: float32: correctly rounded, so
  * bit-identical to IEEE sqrt for every input >= 0 (-0 gives -0, +inf gives +inf,
  * subnormals included); a negative input or -inf gives the quiet NaN 0x7fc00000 and a NaN

@@ -308,22 +308,41 @@ void subd_loop_limit_reg6_init(lim_reg6 *k)
     subd_loop_limit_reg6_trig(k);
 }
 
-/* lim_position's smooth branch for valence 6 with the ring given (same sums, same order). */
-void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *pos,
-                          subd_real *nrm, uint32_t *ovf)
+/* lim_position's smooth branch and lim_smooth_tangents (i0 = 0) for valence 6 with the ring
+ * given: the same sums in the same order, in one pass over the ring (each difference
+ * p - v computed once for the three sums it enters, the accumulators in registers). */
+void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
+                          uint32_t *ovf)
 {
-    subd_wide s0 = (subd_wide)0, s1 = (subd_wide)0, s2 = (subd_wide)0;
+    subd_wide s0 = (subd_wide)0, s1 = (subd_wide)0, s2 = (subd_wide)0, t1[3], t2[3];
+    subd_wide a0 = (subd_wide)0, a1 = (subd_wide)0, a2 = (subd_wide)0;
+    subd_wide b0 = (subd_wide)0, b1 = (subd_wide)0, b2 = (subd_wide)0;
     uint32_t i;
     for (i = 0; i < 6u; i++) {
-        const subd_real *p = nb[i];
-        s0 += subd_wide_diff(p[0], pv[0]);
-        s1 += subd_wide_diff(p[1], pv[1]);
-        s2 += subd_wide_diff(p[2], pv[2]);
+        const subd_real *p = pv + ring[i];
+        subd_real wc = k->c[i], ws = k->s[i];
+        subd_wide d0 = subd_wide_diff(p[0], pv[0]), d1 = subd_wide_diff(p[1], pv[1]);
+        subd_wide d2 = subd_wide_diff(p[2], pv[2]);
+        s0 += d0;
+        s1 += d1;
+        s2 += d2;
+        a0 = subd_wide_madd(a0, wc, d0);
+        a1 = subd_wide_madd(a1, wc, d1);
+        a2 = subd_wide_madd(a2, wc, d2);
+        b0 = subd_wide_madd(b0, ws, d0);
+        b1 = subd_wide_madd(b1, ws, d1);
+        b2 = subd_wide_madd(b2, ws, d2);
     }
     pos[0] = lim_finish(pv[0], k->chi * s0, ovf);
     pos[1] = lim_finish(pv[1], k->chi * s1, ovf);
     pos[2] = lim_finish(pv[2], k->chi * s2, ovf);
-    subd_loop_limit_reg6_normal(k, pv, nb, nrm);
+    t1[0] = a0;
+    t1[1] = a1;
+    t1[2] = a2;
+    t2[0] = b0;
+    t2[1] = b1;
+    t2[2] = b2;
+    subd_loop_limit_unit_cross(t1, t2, nrm);
 }
 
 /* The one layout (layout.h's walk: counts with a == NULL, carves otherwise): positions,

@@ -7,6 +7,7 @@
 #include "subd.h"
 #include "loop_internal.h"
 #include "loop_rules.h"
+#include "vec3w.h" /* subd_wide */
 
 /* Vertex classes: loop_rules.h (the one classification of loop.c, loop_limit.c and pia.c). */
 typedef loop_vinfo lim_vert;
@@ -59,19 +60,20 @@ void subd_loop_limit_vertex_cached(const subd_mesh *m, subd_loop_boundary b, con
 
 /* The masks of a smooth vertex of valence 6 (every vertex inside loop_tile.c's regular
  * tiles), computed once: chi(6) and cos, sin(2 pi j/6) as the trig table gives them.
- * subd_loop_limit_reg6: the limit position and unit normal of centre pv with its ring nb
- * (from vert_out, counter-clockwise), bit for bit as subd_loop_limit computes a smooth
+ * subd_loop_limit_reg6: the limit position and unit normal of centre pv with its ring at
+ * pv + ring[0..5] (offsets in subd_reals, from vert_out, counter-clockwise), bit for bit as subd_loop_limit computes a smooth
  * valence-6 vertex (the same sums in the same order: loop_limit.c's lim_position, then
- * loop_limit_normal.c's lim_smooth_tangents and lim_unit_cross). */
+ * loop_limit_normal.c's lim_smooth_tangents and lim_unit_cross, which
+ * subd_loop_limit_unit_cross is: the unit vector along t1 x t2). */
 typedef struct lim_reg6 {
     lim_w chi;
     subd_real c[6], s[6];
 } lim_reg6;
 void subd_loop_limit_reg6_init(lim_reg6 *k);
 void subd_loop_limit_reg6_trig(lim_reg6 *k); /* loop_limit_normal.c: c and s */
-void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *pos,
-                          subd_real *nrm, uint32_t *ovf);
-void subd_loop_limit_reg6_normal(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *nrm);
+void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
+                          uint32_t *ovf);
+void subd_loop_limit_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out);
 
 /* The unit limit normal of vertex v of class c (control points ctrl, rule b) into out[3];
  * tab: the caller's trig table (filled = 0 before its first use in a call), or NULL.

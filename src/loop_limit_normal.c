@@ -110,22 +110,9 @@ void subd_loop_limit_reg6_trig(lim_reg6 *k)
     for (j = 0; j < 6u; j++) lim_sincos(&tab, j, 6u, &k->c[j], &k->s[j]);
 }
 
-/* lim_smooth_tangents (i0 = 0) and lim_unit_cross for valence 6 with the ring given. */
-void subd_loop_limit_reg6_normal(const lim_reg6 *k, const subd_real *pv, const subd_real *const nb[6], subd_real *nrm)
+void subd_loop_limit_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out)
 {
-    subd_wide t1[3], t2[3];
-    uint32_t i, c;
-    for (c = 0; c < 3u; c++) t1[c] = t2[c] = (subd_wide)0;
-    for (i = 0; i < 6u; i++) {
-        const subd_real *p = nb[i];
-        subd_real wc = k->c[i], ws = k->s[i];
-        for (c = 0; c < 3u; c++) {
-            subd_wide d = subd_wide_diff(p[c], pv[c]);
-            t1[c] = subd_wide_madd(t1[c], wc, d);
-            t2[c] = subd_wide_madd(t2[c], ws, d);
-        }
-    }
-    lim_unit_cross(t1, t2, nrm);
+    lim_unit_cross(t1, t2, out);
 }
 
 /* The unit normal of one side of a boundary or crease vertex: ring positions s .. s+k-1

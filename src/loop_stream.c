@@ -499,39 +499,13 @@ static void sp_enter(sp_state *s, const sp_level *p)
         subd_lp_fill_cache(p, o->boundary, s->k < s->depth || o->levels >= 2u, &s->wc, &s->ovf);
 }
 
-/* The ids of the current quarter's vertices: lattice points of the control face, from the
- * tile face's corners (level tk's header) and the quarter's frame; a point inside the control
- * face by vertex_id's closed form at once, the others by vertex_id. */
+/* The ids of the current quarter's vertices (loop_tile.c's subd_lt_ids), from the tile
+ * face's corners (level tk's header). */
 static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
     sp_level p;
-    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, lv = s->o.levels, n1 = (uint32_t)1 << lv;
-    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
-    const subd_mesh *in = s->run.in;
-    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-                                   (uint64_t)s->run.f * (nm1 * (nm1 - 1u) / 2u);
     level_at(&s->lay, s->tk, &p);
-    a0 = (int32_t)p.h->ca[0];
-    b0 = (int32_t)p.h->cb[0];
-    ea = ((int32_t)p.h->ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
-    eb = ((int32_t)p.h->cb[1] - b0) / n;
-    fa = ((int32_t)p.h->ca[2] - a0) / n;
-    fb = ((int32_t)p.h->cb[2] - b0) / n;
-    for (y = 0; y <= m; y++)
-        for (x = 0; x + y <= m; x++, k++) {
-            int32_t gx = org[0] + (int32_t)x * e1[0] + (int32_t)y * e2[0];
-            int32_t gy = org[1] + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint32_t a = (uint32_t)(a0 + gx * ea + gy * fa), b = (uint32_t)(b0 + gx * eb + gy * fb);
-            uint64_t id;
-            if (a >= 1u && b >= 1u && a + b < n1) { /* vertex_id's face interior */
-                uint32_t am = a - 1u;
-                id = base + (uint64_t)am * nm1 - (uint64_t)am * (am + 1u) / 2u + (b - 1u);
-            } else {
-                id = subd_lp_vertex_id(in, s->run.f, a, b, lv);
-            }
-            tl->qid[2u * k] = (uint32_t)id;
-            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
-        }
+    subd_lt_ids(tl, s->run.in, s->run.f, s->o.levels, p.h->ca, p.h->cb, org, e1, e2);
 }
 
 /* Push form: quarter triangles j0..n-1 of the table straight to the sink through the one
@@ -539,30 +513,24 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
  * quarter's normals tl->qnrm are copied); *at: the triangle the sink stopped at (its value
  * returned), else n. The hot loop of the stream: the fewest loads and stores per triangle,
  * the sink called without the queue between. */
-static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at)
+typedef struct tile_p3 { subd_real v[3]; } tile_p3; /* one point: copied as a whole (ldm/stm) */
+static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts,
+                              uint32_t *at, const tile_p3 *N)
 {
-    const subd_real *N = tl->qnrm;
     int (*fn)(void *, const subd_tri *) = ts->tri;
     void *ctx = ts->ctx;
     const uint8_t *ix = tl->tab + 3u * j0;
-    const subd_real *P = tl->qpos;
+    const tile_p3 *P = (const tile_p3 *)(const void *)tl->qpos;
+    tile_p3 *tp = (tile_p3 *)(void *)t->pos, *tn = (tile_p3 *)(void *)t->normal;
     const uint32_t *I = tl->qid;
-    uint32_t j;
+    uint32_t j, k;
     for (j = j0; j < n; j++, ix += 3) {
-        uint32_t a = ix[0], b = ix[1], c = ix[2];
-        const subd_real *x0 = P + 3u * a, *x1 = P + 3u * b, *x2 = P + 3u * c;
         int st;
-        t->pos[0][0] = x0[0]; t->pos[0][1] = x0[1]; t->pos[0][2] = x0[2];
-        t->pos[1][0] = x1[0]; t->pos[1][1] = x1[1]; t->pos[1][2] = x1[2];
-        t->pos[2][0] = x2[0]; t->pos[2][1] = x2[1]; t->pos[2][2] = x2[2];
-        t->id[0] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);
-        t->id[1] = (uint64_t)I[2u * b] | ((uint64_t)I[2u * b + 1u] << 32);
-        t->id[2] = (uint64_t)I[2u * c] | ((uint64_t)I[2u * c + 1u] << 32);
-        if (N) {
-            const subd_real *n0 = N + 3u * a, *n1 = N + 3u * b, *n2 = N + 3u * c;
-            t->normal[0][0] = n0[0]; t->normal[0][1] = n0[1]; t->normal[0][2] = n0[2];
-            t->normal[1][0] = n1[0]; t->normal[1][1] = n1[1]; t->normal[1][2] = n1[2];
-            t->normal[2][0] = n2[0]; t->normal[2][1] = n2[1]; t->normal[2][2] = n2[2];
+        for (k = 0; k < 3u; k++) { /* corner by corner: few live registers */
+            uint32_t a = ix[k];
+            tp[k] = P[a];
+            t->id[k] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);
+            if (N) tn[k] = N[a];
         }
         if ((st = fn(ctx, t)) != 0) {
             *at = j;
@@ -571,6 +539,13 @@ static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, co
     }
     *at = n;
     return 0;
+}
+
+/* The plain and the limit loop apart (no normals to test for per triangle). */
+static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at)
+{
+    if (tl->qnrm) return tile_push_n(tl, j0, n, t, ts, at, (const tile_p3 *)(const void *)tl->qnrm);
+    return tile_push_n(tl, j0, n, t, ts, at, 0);
 }
 
 /* The tile's triangles, quarter by quarter, each quarter's in subd_loop's order (its table);

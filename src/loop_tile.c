@@ -175,8 +175,10 @@ static inline void lt_ring_offsets(uint32_t row, uint32_t *off)
  * of valence 6 from the vertex's ring start, or the interior edge rule from the lower side.
  * Indices from U(ui, uj)'s: vertex (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j,
  * the length of row j), + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. */
-static inline void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
-                            uint32_t *ovf)
+/* Forced inline (topo.h's TOPO_INLINE) into each loop over a grid: out of line, the call and
+ * the classification cost the M4F 7 instructions per emitted triangle (demo level 6). */
+TOPO_INLINE void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
+                          uint32_t *ovf)
 {
     uint32_t ui, uj, d, l0, row;
     int even;
@@ -431,16 +433,24 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
                      tl->mpos + 3u * v, lo);
         }
     for (y = 0; y <= m; y++) {
-        uint32_t row = S - y, l0 = lt_vi(S, 1u, y + 1u), off[6];
-        lt_ring_offsets(row, off);
+        /* the ring's offsets in subd_reals (lt_ring_offsets' six, twice over, so that the six
+         * from any start are consecutive) for row y + 1 of the margin grid */
+        int32_t row = (int32_t)(S - y), o3[12];
+        uint32_t l0 = lt_vi(S, 1u, y + 1u), j;
+        o3[0] = 3;
+        o3[1] = 3 * row;
+        o3[2] = 3 * (row - 1);
+        o3[3] = -3;
+        o3[4] = -3 * (row + 1);
+        o3[5] = -3 * row;
+        for (j = 0; j < 6u; j++) o3[j + 6u] = o3[j];
         for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u, j;
-            const subd_real *nb[6];
-            for (j = 0; j < 6u; j++, d = d == 5u ? 0u : d + 1u) nb[j] = M + 3u * (l0 + off[d]);
-            subd_loop_limit_reg6(tl->lk, M + 3u * l0, nb, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
+            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u;
+            subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
         }
     }
+
 }
 
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
@@ -473,4 +483,44 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
             lt_point(g, s, (uint32_t)px, (uint32_t)py, w, tl->qpos + 3u * lt_vi(m, x, y), &lo);
         }
     *ovf |= lo;
+}
+
+void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
+                 const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
+{
+    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, n1 = (uint32_t)1 << lv;
+    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
+    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                                   (uint64_t)f * (nm1 * (nm1 - 1u) / 2u);
+    a0 = (int32_t)ca[0];
+    b0 = (int32_t)cb[0];
+    ea = ((int32_t)ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
+    eb = ((int32_t)cb[1] - b0) / n;
+    fa = ((int32_t)ca[2] - a0) / n;
+    fb = ((int32_t)cb[2] - b0) / n;
+    /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
+     * id = r(a) + b - 1 with r(a) = base + (a - 1) nm1 - (a - 1) a / 2 follows a step of a by
+     * r(a + 1) = r(a) + nm1 - a */
+    for (y = 0; y <= m; y++) {
+        int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
+        int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
+        int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
+        int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
+        for (x = 0; x + y <= m; x++, k++) {
+            uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
+            uint64_t id;
+            if (a >= 1u && b >= 1u && a + b < n1) /* vertex_id's face interior */
+                id = (uint64_t)(r + (int64_t)b - 1);
+            else
+                id = subd_lp_vertex_id(in, f, a, b, lv);
+            tl->qid[2u * k] = (uint32_t)id;
+            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
+            if (da > 0)
+                r += (int64_t)nm1 - ia;
+            else if (da < 0)
+                r -= (int64_t)nm1 - (ia - 1);
+            ia += da;
+            ib += db;
+        }
+    }
 }

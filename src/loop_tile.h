@@ -69,4 +69,10 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
  * (grid coordinates relative to the tile face's corner 0), for the ids. */
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
                      int32_t e2[2]);
+/* The ids of quarter c's vertices into qid (frame org, e1, e2 from subd_lt_quarter) of the
+ * tile in control face f whose face has lattice corners (ca[k], cb[k]) at level lv (units
+ * 1/2^lv, loop_patch.h's sp_head): a point inside the control face by subd_lp_vertex_id's
+ * closed form, stepped along each row, the others by subd_lp_vertex_id. */
+void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
+                 const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2]);
 #endif

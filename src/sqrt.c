@@ -18,11 +18,26 @@
  * -inf give the quiet NaN 0x7fc00000 (the ARM default NaN; x86's sqrtss gives 0xffc00000,
  * so NaN bits are the one place a host libm differs); a NaN input is returned quieted.
  *
+ * subd_sqrt, float32, hardware (the coordinator's decision, issue 21): IEEE 754 sqrt is
+ * correctly rounded too, so where the machine has it the instruction gives the same bits as
+ * the software path (subd_sqrt_soft, which stays compiled and is tested against it bit for
+ * bit: test/test_loop_limit.c's sqrt_test). A Cortex-M with a single-precision FPU
+ * (__ARM_FP & 4, float builds) uses vsqrt.f32, an x86-64 host sqrtss, both through inline
+ * asm, so no compiler flag (-ffast-math, -mrecip) can turn them into an approximation; every
+ * other target keeps the software path. Only positive normal inputs (0x00800000 to
+ * 0x7f7fffff) go to the instruction: everything else (+-0, subnormals, +inf, negatives, -inf,
+ * NaNs) takes the software path, so the NaN bits above hold on every target (x86's sqrtss
+ * would give 0xffc00000 for a negative input, ARM's vsqrt the default NaN with FPSCR.DN)
+ * and the result does not depend on flush-to-zero or denormals-are-zero modes (FPSCR.FZ,
+ * MXCSR.DAZ/FTZ: a normal input has a normal root). The rounding mode must be the default
+ * (to nearest), as everywhere else in the library's float arithmetic.
+ *
  * subd_sqrt, Q16.16: the nearest Q16.16 value to sqrt(x / 2^16), i.e. the rounded integer
  * square root of x * 2^16 (< 2^47, result < 2^24); negative inputs give 0.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "subd.h"
+#include "sqrt_internal.h"
 
 /* floor(sqrt(x)) and the remainder x - floor(sqrt(x))^2. */
 static uint32_t isqrt_floor(uint64_t x, uint64_t *rem_out)
@@ -60,7 +75,7 @@ subd_real subd_sqrt(subd_real x)
 
 #else
 
-subd_real subd_sqrt(subd_real x)
+float subd_sqrt_soft(float x)
 {
     union { float f; uint32_t u; } c;
     uint32_t bits, expf, r;
@@ -101,6 +116,38 @@ subd_real subd_sqrt(subd_real x)
     /* result = r * 2^(e/2), r a 24-bit significand (or 2^24 after rounding up) */
     c.u = ((uint32_t)(e / 2 + 149) << 23) + r; /* biased exponent e/2 + 150, hidden bit in r */
     return c.f;
+}
+
+#if defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 4)
+#define SQRT_HW 1
+/* VSQRT.F32 (ARMv7-M FPv4-SP and later): IEEE sqrt, correctly rounded. */
+static float sqrt_hw(float x)
+{
+    float r;
+    __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
+    return r;
+}
+#elif defined(__GNUC__) && defined(__x86_64__)
+#define SQRT_HW 1
+/* SQRTSS (SSE, always present on x86-64): IEEE sqrt, correctly rounded. */
+static float sqrt_hw(float x)
+{
+    float r;
+    __asm__("sqrtss %1, %0" : "=x"(r) : "x"(x));
+    return r;
+}
+#else
+#define SQRT_HW 0
+#endif
+
+subd_real subd_sqrt(subd_real x)
+{
+#if SQRT_HW
+    union { float f; uint32_t u; } c;
+    c.f = x;
+    if (c.u - 0x00800000u < 0x7f000000u) return sqrt_hw(x); /* positive normal */
+#endif
+    return subd_sqrt_soft(x);
 }
 
 #endif

@@ -16,7 +16,8 @@
  * general; only sectors of <= 2 faces are checked) and the B-spline valence-7 boundary
  * vertex (Jordan block: the reference converges like 1/L; 2 degrees).
  *
- * Everywhere (host and QEMU): subd_sqrt exact rounding checked from bit patterns, chi(n),
+ * Everywhere (host and QEMU): subd_sqrt exact rounding checked from bit patterns, its
+ * instruction path (where the target has one) equal to the software path bit for bit, chi(n),
  * constants and translations reproduced (Q16.16: exactly), planar normals exactly (0,0,1),
  * outward normals on a convex mesh, apply = limit, every too-small arena, errors, and
  * HASH lines of positions and normals compared host = QEMU.
@@ -24,6 +25,7 @@
 #include "harness.h"
 #include "corpus.h"
 #include "../src/loop_internal.h" /* subd_loop_limit_apply */
+#include "../src/sqrt_internal.h" /* subd_sqrt_soft */
 
 #if H_HOST
 #include <math.h>
@@ -808,6 +810,43 @@ static int sqrt_ok_float(uint32_t xb, uint32_t rb)
 }
 #endif
 
+#if !SUBD_FIXED
+/* subd_sqrt (the square root instruction where the target has one: src/sqrt.c) against the
+ * software path subd_sqrt_soft, bit for bit, on a sweep over both signs and every exponent
+ * field (0: +-0 and subnormals; 255: +-inf and NaNs) with the mantissa's edges, its single
+ * bits and pseudo-random ones (host 4 096 per exponent, device 48); the software path's
+ * results are also checked for correct rounding (non-negative finite inputs), so the two
+ * cannot agree on a wrong value. */
+static void sqrt_paths_test(void)
+{
+    static const uint32_t edge[] = {0x000000u, 0x000001u, 0x000002u, 0x000003u, 0x400000u, 0x400001u,
+                                    0x3fffffu, 0x7ffffeu, 0x7fffffu, 0x555555u, 0x2aaaaau, 0x100000u};
+    uint32_t sg, e, k, s = 777u, bad = 0, badr = 0, n = 0, nm = H_HOST ? 4096u : 48u;
+    union { float f; uint32_t u; } x, a, b;
+    for (sg = 0; sg < 2u; sg++)
+        for (e = 0; e < 256u; e++)
+            for (k = 0; k < 12u + 23u + nm; k++) {
+                uint32_t m = k < 12u ? edge[k] : k < 35u ? (uint32_t)1 << (k - 12u) : h_rand(&s) & 0x7fffffu;
+                x.u = (sg << 31) | (e << 23) | m;
+                a.f = subd_sqrt(x.f);
+                b.f = subd_sqrt_soft(x.f);
+                if (a.u != b.u) bad++;
+                if (!sg && e < 255u && x.u != 0u && !sqrt_ok_float(x.u, b.u)) badr++;
+                n++;
+            }
+    CHECK_EQ(n, 2u * 256u * (35u + nm));
+    CHECK_EQ(bad, 0);
+    CHECK_EQ(badr, 0);
+    /* the special values through both paths */
+    x.u = 0xffc00001u; a.f = subd_sqrt(x.f); CHECK_EQ(a.u, 0xffc00001u); /* negative NaN: kept, quiet */
+    x.u = 0xff800001u; a.f = subd_sqrt(x.f); CHECK_EQ(a.u, 0xffc00001u); /* negative sNaN: quieted */
+    x.u = 0x80000001u; a.f = subd_sqrt(x.f); CHECK_EQ(a.u, 0x7fc00000u); /* negative subnormal */
+    x.u = 0x80800000u; a.f = subd_sqrt(x.f); CHECK_EQ(a.u, 0x7fc00000u); /* negative normal */
+    x.u = 0x00000001u; a.f = subd_sqrt(x.f); CHECK_EQ(a.u, 0x1a3504f3u); /* sqrt(2^-149) = 2^-74.5 */
+    x.u = 0x7f7fffffu; a.f = subd_sqrt(x.f); CHECK_EQ(a.u, 0x5f7fffffu); /* sqrt(FLT_MAX) */
+}
+#endif
+
 static void sqrt_test(void)
 {
     uint32_t s = 12345u, i, bad = 0;
@@ -868,6 +907,7 @@ static void sqrt_test(void)
 #endif
     }
     CHECK_EQ(bad, 0);
+    sqrt_paths_test();
 #endif
     CHECK_EQ(subd_isqrt64(0), 0);
     CHECK_EQ(subd_isqrt64(2), 1);

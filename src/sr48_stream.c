@@ -426,7 +426,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             s48_up(s);
             return stop;
         }
-        if (s->tm > 1u && s->k + s->tm == s->levels) {
+        if (s->tm > 1u && s->k + s48_tile_walk(s) == s->levels) {
             if (!subd_s48_tile_(s, &w, w.hd[2])) goto fail;
             continue;
         }

@@ -45,24 +45,27 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
     return 1;
 }
 
-/* Uniform tiles: the current triangle t of the level-k window w (k = L - m) refined
- * breadth first down to max_level: m - 1 times refined into X and cropped into the tile
- * window A to the rings of t's descendants (contiguous in X: X is sorted by key), then
- * refined once more into X, whose t's 2^m descendants s->tcur .. s->tend - 1 are emitted
- * in key order by subd_s48_tile_emit_. A contains every window the depth-first walk would crop
- * for one descendant (a union of rings), so every emitted corner is exact (checked). */
+/* Uniform tiles: the current triangle t of the level-k window w (k = L - tw, tw = s48_tile_walk)
+ * refined breadth first: tw - 2 times refined into X and cropped into the tile window A to
+ * the rings of t's descendants (contiguous in X: X is sorted by key), then refined once
+ * more into X, level L - 1, whose descendants of t (lo .. lo + n - 1) have as children the
+ * tile's 2^tw triangles of level L, emitted in key order by subd_s48_tile_emit_ without a
+ * level-L window (subd_s48_last_ smooths their old corners). A contains every window the
+ * depth-first walk would crop for one descendant (a union of rings), so every emitted
+ * corner is exact (checked). */
 int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
 {
     s48_win x, a;
     const s48_win *p = w;
+    const uint32_t tw = s48_tile_walk(s);
     uint32_t j, lo = t, n = 1;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
-    for (j = 0; j < s->tm; j++) {
+    for (j = 0; j + 1u < tw; j++) {
         if (!subd_s48_refine_(s, p, s->k + j, &x)) return 0;
         lo *= 2u;
         n *= 2u;
-        if (j + 1u == s->tm) break;
+        if (j + 2u == tw) break;
         if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return 0;
 #ifdef S48_DBG
         if (a.hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = a.hd[0];
@@ -71,19 +74,67 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
         lo = a.hd[3];
         p = &a;
     }
-    s->tcur = lo;
-    s->tend = lo + n;
+    if (s->smooth && (s->levels & 1u) == 0u && !subd_s48_last_(s, &x, lo, n, &a)) return 0;
+    s->tcur = 2u * lo;
+    s->tend = 2u * (lo + n);
     return 1;
 }
 
-/* The tile's triangles not handed out yet, until the caller's buffer is full or the sink
- * stops. 0 when a corner is not exact. */
+/* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle
+ * s->tcur / 2), until the caller's buffer is full or the sink stops. A child's new vertex
+ * is the midpoint subd_s48_refine_ makes for the diamond (from its lower triangle, id by
+ * that triangle's key); its old corners are X's vertices, smoothed by subd_s48_last_ when
+ * level L is even. 0 when a corner is not exact. */
 int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
 {
-    s48_win x;
+    s48_win x, a;
+    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels;
+    const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
+    uint32_t ovf = 0;
     s48_x(s, &x);
+    s48_win_at(s, s->ablk, s->aoff, &a);
     while (s->tcur < s->tend && !subd_stream_q_full(q)) {
-        if (!subd_s48_emit_(s, &x, s->tcur, q, stop)) return 0;
+        const uint32_t i = s->tcur >> 1, ch = s->tcur & 1u;
+        const uint16_t *tv = x.tv + 3u * i, nb = x.tn[3u * i];
+        const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i; /* the diamond's lower triangle */
+        const uint16_t *lv = x.tv + 3u * lt, lnb = x.tn[3u * lt];
+        const uint32_t cv[2] = {ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
+        uint32_t e0 = lv[1], e1 = lv[2], j, k;
+        subd_real mp[3];
+        const subd_real *cp[2];
+        subd_tri *o;
+        if (s48_local(lnb) && s->smooth) {
+            e0 = lv[0];
+            e1 = x.tv[3u * lnb];
+        }
+        if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
+        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x.vp[3u * e0 + j], x.vp[3u * e1 + j], &ovf);
+        for (k = 0; k < 2u; k++) {
+            const uint32_t v = cv[k], u = sm ? s->vmap[v] : v;
+            const s48_win *src = sm ? &a : &x;
+            if (!(src->vf[u] & S48_EXACT)) return 0;
+            cp[k] = src->vp + 3u * u;
+        }
+        if (ovf) {
+            s->err = (uint32_t)(-SUBD_ERR_RANGE);
+            return 0;
+        }
+        o = (subd_tri *)subd_stream_q_put(q);
+        if (!o) return 0;
+        for (j = 0; j < 3u; j++) {
+            o->pos[0][j] = mp[j];
+            o->pos[1][j] = cp[0][j];
+            o->pos[2][j] = cp[1][j];
+            o->normal[0][j] = 0;
+            o->normal[1][j] = 0;
+            o->normal[2][j] = 0;
+        }
+        o->id[0] = id0 + s48_gkey(s, x.key[lt], L - 1u);
+        o->id[1] = s48_vid(&x, cv[0]);
+        o->id[2] = s48_vid(&x, cv[1]);
+        o->face = s->t0;
+        o->level = L;
+        *stop = subd_stream_q_commit(q);
         s->tcur++;
         if (*stop) return 1;
     }

@@ -313,13 +313,16 @@ static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum 
 }
 #endif
 
-static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32_t m, int boundary_ok)
+/* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
+ * counts and flags in s->cnt, s->dist at v). */
+static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp, uint32_t mf,
+                        int boundary_ok)
 {
     uint32_t q;
     if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), x->vp[3u * m + q]));
+    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), mp[q]));
     s->cnt[v]++;
-    if (!(x->vf[m] & S48_EXACT)) s->dist[v] |= S48_INC;
+    if (!(mf & S48_EXACT)) s->dist[v] |= S48_INC;
 }
 
 /* Refines window p (level k) as a whole into X (level k+1), smoothing after an even level.
@@ -404,17 +407,19 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
             const uint16_t *tv = p->tv + 3u * i;
             uint16_t nb = p->tn[3u * i];
             uint32_t m = s->mtab[i];
+            const subd_real *mp = x->vp + 3u * m;
+            const uint32_t mf = x->vf[m];
             if (nb == S48_BND) {
-                s48_scatter(s, x, tv[1], m, 1);
-                s48_scatter(s, x, tv[2], m, 1);
-                s48_scatter(s, x, tv[0], m, 0);
+                s48_scatter(s, x, tv[1], mp, mf, 1);
+                s48_scatter(s, x, tv[2], mp, mf, 1);
+                s48_scatter(s, x, tv[0], mp, mf, 0);
             } else if (nb == S48_OUT) {
                 s->dist[tv[0]] |= S48_INC;
             } else if (i < nb) {
-                s48_scatter(s, x, tv[1], m, 0);
-                s48_scatter(s, x, tv[2], m, 0);
-                s48_scatter(s, x, tv[0], m, 0);
-                s48_scatter(s, x, p->tv[3u * nb], m, 0);
+                s48_scatter(s, x, tv[1], mp, mf, 0);
+                s48_scatter(s, x, tv[2], mp, mf, 0);
+                s48_scatter(s, x, tv[0], mp, mf, 0);
+                s48_scatter(s, x, p->tv[3u * nb], mp, mf, 0);
             }
         }
         for (i = 0; i < nvp; i++) {
@@ -431,6 +436,100 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
             s->err = (uint32_t)(-SUBD_ERR_RANGE);
             return 0;
         }
+    }
+    return 1;
+}
+
+/* The last level of a uniform tile without its window: X (level L-1 = max_level - 1) is
+ * not refined into level L; only the corners of level L's triangles that the tile emits
+ * (the children of X's triangles c0 .. c0 + n - 1) are computed. Their new vertices are
+ * single midpoints, made when emitted (sr48_tile.c); this computes the old ones, the
+ * corners of c0 .. c0 + n - 1, when level L is smoothed (L even): the same sums as
+ * subd_s48_refine_'s over the same diamonds in the same order (X's triangle order), but
+ * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
+ * once X is refined from it: a's vid keeps X's index, a's position and flag the result).
+ * The exactness rules are refine's, restricted to the same vertices. 0 on failure. */
+int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
+{
+    const uint32_t nt = x->hd[0], nv = x->hd[1];
+    uint16_t *vm = s->vmap;
+    uint32_t i, j, nn = 0, ovf = 0;
+    for (i = 0; i < nv; i++) vm[i] = S48_OUT;
+    for (j = 0; j < 3u * n; j++) {
+        const uint16_t v = x->tv[3u * c0 + j];
+        if (vm[v] != S48_OUT) continue;
+        if (nn >= s->av) return 0;
+        vm[v] = (uint16_t)nn;
+        a->vid[nn] = v;
+        s->cnt[nn] = 0;
+        s->dist[nn] = 0;
+        for (i = 0; i < 3u; i++) s48_sput(s, a, 3u * nn + i, 0);
+        nn++;
+    }
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
+        if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
+        if (tn[0] == S48_BND) {
+            if (u1 != S48_OUT) s->cnt[u1] = 0x80000000u;
+            if (u2 != S48_OUT) s->cnt[u2] = 0x80000000u;
+        }
+        /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
+        if (tn[0] == S48_OUT || tn[1] == S48_OUT) {
+            if (u1 != S48_OUT) s->dist[u1] |= S48_INC;
+        }
+        if (tn[0] == S48_OUT || tn[2] == S48_OUT) {
+            if (u2 != S48_OUT) s->dist[u2] |= S48_INC;
+        }
+        if (tn[1] == S48_OUT || tn[2] == S48_OUT) {
+            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+        }
+    }
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i;
+        const uint16_t nb = x->tn[3u * i], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
+        uint16_t u3;
+        uint32_t e0, e1, mf;
+        subd_real mp[3];
+        if (nb == S48_OUT) {
+            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+            continue;
+        }
+        if (nb == S48_BND) {
+            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
+            e0 = tv[1];
+            e1 = tv[2];
+            u3 = S48_OUT;
+        } else {
+            if (nb < i) continue; /* the diamond's lower triangle made it */
+            e0 = tv[0];
+            e1 = x->tv[3u * nb];
+            u3 = vm[e1];
+            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
+        }
+        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x->vp[3u * e0 + j], x->vp[3u * e1 + j], &ovf);
+        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
+        {
+            const int bnd = nb == S48_BND;
+            if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
+            if (u2 != S48_OUT) s48_scatter(s, a, u2, mp, mf, bnd);
+            if (u0 != S48_OUT) s48_scatter(s, a, u0, mp, mf, 0);
+            if (u3 != S48_OUT) s48_scatter(s, a, u3, mp, mf, 0);
+        }
+    }
+    for (i = 0; i < nn; i++) {
+        const uint32_t v = a->vid[i], k = s->cnt[i] & ~0x80000000u;
+        if (k == 0u || (s->dist[i] & S48_INC)) {
+            for (j = 0; j < 3u; j++) a->vp[3u * i + j] = x->vp[3u * v + j]; /* not a sum */
+            a->vf[i] = 0;
+            continue;
+        }
+        for (j = 0; j < 3u; j++) a->vp[3u * i + j] = subd_avg(s48_sget(s, a, 3u * i + j), k, &ovf);
+        a->vf[i] = S48_EXACT;
+    }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
     }
     return 1;
 }

@@ -331,15 +331,32 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
 {
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
+    const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
     uint32_t i, j, nv = nvp, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
-    for (i = 0; i < nvp; i++) s48_vcopy(x, i, p, i);
+    /* the old vertices: ids, flags, L; positions, or (smoothed level) zero sums */
+    for (i = 0; i < nvp; i++) {
+        x->vid[i] = p->vid[i];
+        x->vf[i] = p->vf[i];
+    }
+    if (x->vl)
+        for (i = 0; i < 3u * nvp; i++) x->vl[i] = p->vl[i];
+    if (sm) {
+        for (i = 0; i < nvp; i++) {
+            s->cnt[i] = 0;
+            s->dist[i] = 0;
+            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
+        }
+    } else {
+        for (i = 0; i < 3u * nvp; i++) x->vp[i] = p->vp[i];
+    }
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
-        uint16_t nb = p->tn[3u * i], m;
+        const uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
         const uint32_t key = p->key[i]; /* local: children 2 key, 2 key + 1 */
+        uint16_t m, *c0 = x->tn + 6u * i, *c1 = c0 + 3;
         if (s48_local(nb) && nb < i) {
             m = s->mtab[nb];
         } else {
@@ -366,43 +383,31 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         x->tv[6u * i + 5u] = tv[0];
         x->key[2u * i] = 2u * key;
         x->key[2u * i + 1u] = 2u * key + 1u;
-    }
-    if (ovf) {
-        s->err = (uint32_t)(-SUBD_ERR_RANGE);
-        return 0;
-    }
-    for (i = 0; i < nt; i++) {
-        uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
-        uint16_t *c0 = x->tn + 6u * i, *c1 = c0 + 3;
         c0[0] = s48_local(l0) ? (uint16_t)(2u * l0 + 1u) : l0;
         c0[1] = (uint16_t)(2u * i + 1u);
         c0[2] = s48_local(nb) ? (uint16_t)(2u * nb + 1u) : nb;
         c1[0] = s48_local(l1) ? (uint16_t)(2u * l1) : l1;
         c1[1] = s48_local(nb) ? (uint16_t)(2u * nb) : nb;
         c1[2] = (uint16_t)(2u * i);
+        if (sm) {
+            if (nb == S48_BND) {
+                s->cnt[tv[1]] = 0x80000000u;
+                s->cnt[tv[2]] = 0x80000000u;
+            }
+            /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
+            if (nb == S48_OUT || l0 == S48_OUT) s->dist[tv[1]] |= S48_INC;
+            if (nb == S48_OUT || l1 == S48_OUT) s->dist[tv[2]] |= S48_INC;
+            if (l0 == S48_OUT || l1 == S48_OUT) s->dist[tv[0]] |= S48_INC;
+        }
+    }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
     }
     x->hd[0] = 2u * nt;
     x->hd[1] = nv;
     x->hd[6] = k + 1u;
-    if (s->smooth && ((k + 1u) & 1u) == 0u) {
-        for (i = 0; i < nvp; i++) {
-            s->cnt[i] = 0;
-            s->dist[i] = 0;
-            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
-        }
-        for (i = 0; i < nt; i++) {
-            const uint16_t *tv = p->tv + 3u * i;
-            uint32_t sl;
-            if (p->tn[3u * i] == S48_BND) {
-                s->cnt[tv[1]] = 0x80000000u;
-                s->cnt[tv[2]] = 0x80000000u;
-            }
-            for (sl = 0; sl < 3u; sl++)
-                if (p->tn[3u * i + sl] == S48_OUT) { /* the edge's ends miss part of their fan */
-                    s->dist[sl == 0u ? tv[1] : sl == 1u ? tv[0] : tv[2]] |= S48_INC;
-                    s->dist[sl == 0u ? tv[2] : sl == 1u ? tv[1] : tv[0]] |= S48_INC;
-                }
-        }
+    if (sm) {
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = p->tv + 3u * i;
             uint16_t nb = p->tn[3u * i];
@@ -540,60 +545,69 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
 int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv)
 {
     const uint32_t nt = x->hd[0], nv = x->hd[1];
+    uint8_t *d = s->dist;
+    uint16_t *vm = s->vmap, *tm = s->tmap;
     uint32_t i, j, r, kt = 0, kv = 0;
 #ifdef S48_DBG
     s48_dbg[32] += nt; s48_dbg[33]++;
 #endif
-    for (i = 0; i < nv; i++) s->dist[i] = S48_FAR;
-    for (j = 0; j < 3u * n; j++) s->dist[x->tv[3u * c0 + j]] = 0;
+    for (i = 0; i < nv; i++) {
+        d[i] = S48_FAR;
+        vm[i] = S48_OUT;
+    }
+    for (j = 0; j < 3u * n; j++) d[x->tv[3u * c0 + j]] = 0;
     for (r = 1; r < S48_RINGS; r++)
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = x->tv + 3u * i;
-            uint32_t md = s->dist[tv[0]];
-            if (s->dist[tv[1]] < md) md = s->dist[tv[1]];
-            if (s->dist[tv[2]] < md) md = s->dist[tv[2]];
+            const uint32_t d0 = d[tv[0]], d1 = d[tv[1]], d2 = d[tv[2]];
+            uint32_t md = d0 < d1 ? d0 : d1;
+            if (d2 < md) md = d2;
             if (md + 1u > r) continue;
-            for (j = 0; j < 3u; j++)
-                if (s->dist[tv[j]] > r) s->dist[tv[j]] = (uint8_t)r;
+            if (d0 > r) d[tv[0]] = (uint8_t)r;
+            if (d1 > r) d[tv[1]] = (uint8_t)r;
+            if (d2 > r) d[tv[2]] = (uint8_t)r;
         }
-    for (i = 0; i < nv; i++) s->vmap[i] = S48_OUT;
+    /* the kept triangles in order: their vertices numbered as met, their corners and keys
+     * written at once, their neighbours (X's indices) renumbered once all are known */
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i;
-        uint32_t md = s->dist[tv[0]];
-        if (s->dist[tv[1]] < md) md = s->dist[tv[1]];
-        if (s->dist[tv[2]] < md) md = s->dist[tv[2]];
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint32_t d0 = d[tv[0]], d1 = d[tv[1]], d2 = d[tv[2]];
+        uint32_t md = d0 < d1 ? d0 : d1;
+        uint16_t *ov, *on;
+        if (d2 < md) md = d2;
         if (md + 1u > S48_RINGS) {
-            s->tmap[i] = S48_OUT;
+            tm[i] = S48_OUT;
             continue;
         }
         if (kt >= ct) return 0;
-        s->tmap[i] = (uint16_t)kt++;
-        for (j = 0; j < 3u; j++)
-            if (s->vmap[tv[j]] == S48_OUT) {
+        ov = w->tv + 3u * kt;
+        on = w->tn + 3u * kt;
+        w->key[kt] = x->key[i];
+        tm[i] = (uint16_t)kt++;
+        for (j = 0; j < 3u; j++) {
+            const uint16_t v = tv[j];
+            if (vm[v] == S48_OUT) {
                 if (kv >= cv) return 0;
-                s->vmap[tv[j]] = (uint16_t)kv++;
+                vm[v] = (uint16_t)kv++;
             }
+            ov[j] = vm[v];
+            on[j] = tn[j];
+        }
+    }
+    for (i = 0; i < 3u * kt; i++) {
+        const uint16_t nb = w->tn[i];
+        if (s48_local(nb)) w->tn[i] = tm[nb];
     }
     for (i = 0; i < nv; i++) {
-        uint16_t v = s->vmap[i];
+        uint16_t v = vm[i];
         if (v == S48_OUT) continue;
         s48_vcopy(w, v, x, i);
-    }
-    for (i = 0; i < nt; i++) {
-        uint16_t t = s->tmap[i];
-        if (t == S48_OUT) continue;
-        for (j = 0; j < 3u; j++) {
-            uint16_t nb = x->tn[3u * i + j];
-            w->tv[3u * t + j] = s->vmap[x->tv[3u * i + j]];
-            w->tn[3u * t + j] = s48_local(nb) ? s->tmap[nb] : nb;
-        }
-        w->key[t] = x->key[i];
     }
     w->hd[0] = kt;
     w->hd[1] = kv;
     w->hd[6] = x->hd[6];
-    w->hd[3] = s->tmap[c0];
-    w->hd[4] = s->tmap[c0 + 1u];
+    w->hd[3] = tm[c0];
+    w->hd[4] = tm[c0 + 1u];
     return 1;
 }
 

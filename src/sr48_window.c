@@ -180,23 +180,49 @@ uint32_t subd_s48_valence_(const subd_sr48 *b)
 /* ------------------------------------------------------------------------------------ */
 /* Windows                                                                                */
 
+/* Level 0's window's gathering looks base triangles and vertices up in two hash tables
+ * (open addressing, linear probing) over the crop's maps, which are free between crops: a
+ * slot holds a local index + 1 (0: empty), the key is read back from gt or gv. A table has
+ * a power of 2 of slots above the window's capacity, so it never fills. */
+static uint32_t s48_h0_size(uint32_t cap)
+{
+    uint32_t h = 1;
+    while (2u * h <= cap && h < 0x8000u) h *= 2u;
+    return h;
+}
+/* The slot of key x in table tab (size hm + 1) over keys keys[]: x's, or the empty one
+ * where it goes. */
+static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *keys, uint32_t x)
+{
+    uint32_t h = ((x * 2654435761u) >> 12) & hm, i;
+    for (i = 0; i <= hm; i++) {
+        if (tab[h] == 0u || keys[tab[h] - 1u] == x) break;
+        h = (h + 1u) & hm;
+    }
+    return h;
+}
+
 /* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
  * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
  * by index; local vertices and neighbours. 0 when a capacity is exceeded. */
 int subd_s48_build0_(s48_state *s, uint32_t t0)
 {
     const subd_sr48 *b = s->base;
-    uint32_t nt = 0, nv = 0, i, j, q, u, p;
+    const uint32_t mt = s->at > s->wt ? s->at : s->wt;
+    const uint32_t tm = s48_h0_size(2u * mt) - 1u, vm = s48_h0_size(s->xv) - 1u;
+    uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 mt and xv entries: above wt and wv */
+    uint32_t nt = 0, nv = 0, i, j, q, p;
     s48_win w;
     s48_lev(s, 0, &w);
+    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i <= vm; i++) hv[i] = 0;
     /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
      * that one window serves both (s48_step) */
     for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * p + j], seen = 0;
-            for (u = 0; u < nv; u++)
-                if (s->gv[u] == vx) seen = 1;
-            if (seen) continue;
+            const uint32_t vx = b->tri_vert[3u * p + j], h = s48_h0_find(hv, vm, s->gv, vx);
+            if (hv[h] != 0u) continue;
+            hv[h] = (uint16_t)(nv + 1u);
             s->gv[nv] = vx;
             s->gvt[nv] = p;
             s->dist[nv++] = 0;
@@ -211,20 +237,18 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
         if (nf == UINT32_MAX) return 0;
         for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
         for (f = 0; f < nf; f++) {
-            uint32_t tt = s->gt[s->wt - nf + f], dup = 0;
-            for (i = 0; i < nt; i++)
-                if (s->gt[i] == tt) dup = 1;
-            if (dup) continue;
+            const uint32_t tt = s->gt[s->wt - nf + f], h = s48_h0_find(ht, tm, s->gt, tt);
+            if (ht[h] != 0u) continue;
             for (j = 0; j < 3u; j++) {
-                uint32_t vx = b->tri_vert[3u * tt + j], seen = 0;
-                for (u = 0; u < nv; u++)
-                    if (s->gv[u] == vx) seen = 1;
-                if (seen) continue;
+                const uint32_t vx = b->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
+                if (hv[g] != 0u) continue;
                 if (nv >= s->wv) return 0;
+                hv[g] = (uint16_t)(nv + 1u);
                 s->gv[nv] = vx;
                 s->gvt[nv] = tt;
                 s->dist[nv++] = (uint8_t)(s->dist[q] + 1u);
             }
+            ht[h] = (uint16_t)(nt + 1u);
             s->gt[nt++] = tt;
         }
     }
@@ -242,9 +266,7 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
         uint32_t tt = s->gt[i];
         for (j = 0; j < 3u; j++) {
             uint32_t vx = b->tri_vert[3u * tt + j], nb, lo, hi;
-            u = 0;
-            while (s->gv[u] != vx) u++; /* present: added with the triangle */
-            w.tv[3u * i + j] = (uint16_t)u;
+            w.tv[3u * i + j] = (uint16_t)(hv[s48_h0_find(hv, vm, s->gv, vx)] - 1u); /* present: added with tt */
             nb = s48_base_nbr(b, tt, j);
             if (nb == SUBD_NONE) {
                 w.tn[3u * i + j] = S48_BND;

@@ -252,34 +252,35 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
             s->gt[nt++] = tt;
         }
     }
-    /* sort the triangles (insertion sort: at most wt of them) */
-    for (i = 1; i < nt; i++) {
-        uint32_t x = s->gt[i];
-        j = i;
-        while (j > 0u && s->gt[j - 1u] > x) {
-            s->gt[j] = s->gt[j - 1u];
-            j--;
+    /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct) */
+    for (p = 0; p < 5u; p++) {
+        static const uint8_t gap[5] = {57u, 23u, 10u, 4u, 1u};
+        const uint32_t g = gap[p];
+        for (i = g; i < nt; i++) {
+            uint32_t x = s->gt[i];
+            j = i;
+            while (j >= g && s->gt[j - g] > x) {
+                s->gt[j] = s->gt[j - g];
+                j -= g;
+            }
+            s->gt[j] = x;
         }
-        s->gt[j] = x;
     }
+    /* the triangle table again, on the sorted indices */
+    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i < nt; i++) ht[s48_h0_find(ht, tm, s->gt, s->gt[i])] = (uint16_t)(i + 1u);
     for (i = 0; i < nt; i++) {
         uint32_t tt = s->gt[i];
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * tt + j], nb, lo, hi;
+            uint32_t vx = b->tri_vert[3u * tt + j], nb;
             w.tv[3u * i + j] = (uint16_t)(hv[s48_h0_find(hv, vm, s->gv, vx)] - 1u); /* present: added with tt */
             nb = s48_base_nbr(b, tt, j);
             if (nb == SUBD_NONE) {
                 w.tn[3u * i + j] = S48_BND;
                 continue;
             }
-            lo = 0;
-            hi = nt;
-            while (lo < hi) {
-                uint32_t mid = (lo + hi) / 2u;
-                if (s->gt[mid] < nb) lo = mid + 1u;
-                else hi = mid;
-            }
-            w.tn[3u * i + j] = (lo < nt && s->gt[lo] == nb) ? (uint16_t)lo : S48_OUT;
+            nb = ht[s48_h0_find(ht, tm, s->gt, nb)];
+            w.tn[3u * i + j] = nb != 0u ? (uint16_t)(nb - 1u) : S48_OUT;
         }
         w.key[i] = i; /* local: gt[i] = tt */
         if (tt == t0) w.hd[2] = i;

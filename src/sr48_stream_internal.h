@@ -201,10 +201,11 @@ int subd_s48_level0_lin_(s48_state *s, uint32_t t0);
 int subd_s48_adapt_box_(s48_state *s);
 
 /* Emission and the uniform tile (sr48_tile.c): window w's triangle t as a stream triangle;
- * the tile of the current triangle t of the level-k window w; its triangles not handed out
- * yet. 0 on failure (a corner not exact). */
+ * the tile of the current triangle t of the level-k window w (n = 2: t and t + 1, the two
+ * base triangles of a hybrid pair, at level 0); its triangles not handed out yet. 0 on
+ * failure (a corner not exact). */
 int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream_q *q, int *stop);
-int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t);
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n);
 int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop);
 
 /* CHORD's decision for the current triangle t of the level-k window (sr48_chord_walk.c):

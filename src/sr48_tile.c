@@ -53,12 +53,12 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
  * level-L window (subd_s48_last_ smooths their old corners). A contains every window the
  * depth-first walk would crop for one descendant (a union of rings), so every emitted
  * corner is exact (checked). */
-int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
 {
     s48_win x, a;
     const s48_win *p = w;
     const uint32_t tw = s48_tile_walk(s);
-    uint32_t j, lo = t, n = 1;
+    uint32_t j, lo = t, n = n0;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
     for (j = 0; j + 1u < tw; j++) {
@@ -132,7 +132,7 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
         o->id[0] = id0 + s48_gkey(s, x.key[lt], L - 1u);
         o->id[1] = s48_vid(&x, cv[0]);
         o->id[2] = s48_vid(&x, cv[1]);
-        o->face = s->t0;
+        o->face = s->gt[x.key[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
         o->level = L;
         *stop = subd_stream_q_commit(q);
         s->tcur++;

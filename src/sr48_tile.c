@@ -4,15 +4,24 @@
  * the window and its exactness argument: sr48_window.c; the private interface:
  * sr48_stream_internal.h).
  *
- * Uniform tiles: the last m = SUBD_SR48_STREAM_TILE_LEVELS levels (all when L <= m) are not
- * walked one triangle at a time: the current level L-m triangle's window is refined m times
- * breadth first, each time cropped to the rings of the set of its descendants at that level
- * (contiguous in the refined window, which is sorted by key), and its 2^m descendants are
- * emitted from the last refined window in key order (subd_s48_tile_). The tile window contains
- * every window the depth-first walk would crop for one of the descendants (rings of a union
- * are the union of the rings), so the exactness argument of sr48_window.c carries over, and the
- * triangles and their order are unchanged. The level-0 window of a uniform stream holds the
- * rings of both children of a hybrid triangle (base triangles 2H, 2H + 1) and serves both.
+ * Uniform tiles: the last tw levels are not walked one triangle at a time (tw =
+ * s48_tile_walk: m + 1 when L > m, m = SUBD_SR48_STREAM_TILE_LEVELS, else L): the current
+ * level L-tw triangle's window is refined tw - 1 times breadth first, each time but the last
+ * cropped to the rings of the set of its descendants at that level (contiguous in the
+ * refined window, which is sorted by key); the last refined window X (level L-1) holds its
+ * descendants D, and the 2^tw triangles of level L, D's children, are emitted in key order
+ * without a level-L window: a child's new vertex is its diamond's midpoint, as
+ * subd_s48_refine_ makes it, computed when emitted, and (L even, smoothing) its old corners
+ * are smoothed once per tile by subd_s48_last_ with refine's sums restricted to D's corners.
+ * So the tile window A holds descendants one level coarser than the walk's deepest, and a
+ * tile of m + 1 levels needs A and X of the sizes a tile of m levels with a level-L window
+ * needed (the plan is unchanged). When L <= m the tile starts at level 0 and covers both
+ * base triangles 2H, 2H + 1 of a hybrid pair (adjacent in the level-0 window; 2H's
+ * descendants come first in key order). The tile window contains every window the
+ * depth-first walk would crop for one of the descendants (rings of a union are the union of
+ * the rings), so the exactness argument of sr48_window.c carries over, and the triangles and
+ * their order are unchanged (every emitted corner's flag is checked). The level-0 window of
+ * a uniform stream holds the rings of both children of a hybrid triangle and serves both.
  *
  * The tile window A and the refined window X are blocks of the stream's state; the level
  * windows above L - m are unused while a tile is handed out. A tile's triangles leave in

@@ -91,6 +91,16 @@ static uint32_t s48_tile_levels(uint32_t levels, uint32_t uniform)
     return levels < SUBD_SR48_STREAM_TILE_LEVELS ? (levels > 0u ? levels : 1u) : SUBD_SR48_STREAM_TILE_LEVELS;
 }
 
+/* Uniform, max_level <= m: one tile from level 0 serves both base triangles 2H, 2H + 1 of
+ * a hybrid pair (adjacent in the level-0 window, which holds the rings of both; 2H's
+ * descendants come first in key order, so the order is unchanged): the first refinement,
+ * of the largest window, is made once per pair, and the tile's last window holds
+ * 2^(max_level - 1) triangles as the walk's tiles of m levels do. */
+static int s48_tile_pair(const s48_state *s)
+{
+    return s->tm > 1u && s->tm == s->levels;
+}
+
 /* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level
  * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
@@ -375,6 +385,7 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         if (s->tcur < s->tend) { /* a tile being handed out */
             if (!subd_s48_tile_emit_(s, q, &stop)) goto fail;
             if (stop || s->tcur < s->tend) return stop;
+            if (s48_tile_pair(s)) s->t0++; /* the tile was both of the pair's */
             s48_up(s);
             return SUBD_OK;
         }
@@ -426,8 +437,8 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             s48_up(s);
             return stop;
         }
-        if (s->tm > 1u && s->k + s->tm == s->levels) {
-            if (!subd_s48_tile_(s, &w, w.hd[2])) goto fail;
+        if (s->tm > 1u && s->k + s48_tile_walk(s) == s->levels) {
+            if (!subd_s48_tile_(s, &w, w.hd[2], s48_tile_pair(s) ? 2u : 1u)) goto fail;
             continue;
         }
         if (s->k + 1u == s->levels) {

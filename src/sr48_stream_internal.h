@@ -146,6 +146,14 @@ static inline void s48_lev(const s48_state *s, uint32_t k, s48_win *w)
 }
 static inline void s48_x(const s48_state *s, s48_win *w) { s48_win_at(s, s->xblk, s->xoff, w); }
 
+/* The levels the uniform walk's tile covers (1: no tile): m + 1 when max_level > m, the tile
+ * window A being sized for m levels with a window at the last one, which the walk does not
+ * make (sr48_tile.c), else m. */
+static inline uint32_t s48_tile_walk(const s48_state *s)
+{
+    return s->tm > 1u && s->levels > s->tm ? s->tm + 1u : s->tm;
+}
+
 /* The global key (T0 * 2^k + path, its index within level k of the hierarchy) of a level-k
  * triangle with local key q. */
 static inline uint64_t s48_gkey(const s48_state *s, uint32_t q, uint32_t k)
@@ -181,6 +189,10 @@ int subd_s48_build0_(s48_state *s, uint32_t t0);
 int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x);
 int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv);
 int subd_s48_crop_(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w);
+/* The last level of a uniform tile without its window (sr48_window.c): the smoothed
+ * positions at max_level of the corners of x's triangles c0 .. c0 + n - 1 (x: level
+ * max_level - 1), into a's vertices by s->vmap. 0 on failure (s->err). */
+int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a);
 
 /* Descents (sr48_window.c): the finest position of vertex `id`, a corner of triangle t of
  * the level-k window; L of the level-0 window of t0; the adaptation box. 0 on failure. */
@@ -189,10 +201,11 @@ int subd_s48_level0_lin_(s48_state *s, uint32_t t0);
 int subd_s48_adapt_box_(s48_state *s);
 
 /* Emission and the uniform tile (sr48_tile.c): window w's triangle t as a stream triangle;
- * the tile of the current triangle t of the level-k window w; its triangles not handed out
- * yet. 0 on failure (a corner not exact). */
+ * the tile of the current triangle t of the level-k window w (n = 2: t and t + 1, the two
+ * base triangles of a hybrid pair, at level 0); its triangles not handed out yet. 0 on
+ * failure (a corner not exact). */
 int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream_q *q, int *stop);
-int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t);
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n);
 int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop);
 
 /* CHORD's decision for the current triangle t of the level-k window (sr48_chord_walk.c):

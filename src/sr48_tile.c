@@ -4,15 +4,24 @@
  * the window and its exactness argument: sr48_window.c; the private interface:
  * sr48_stream_internal.h).
  *
- * Uniform tiles: the last m = SUBD_SR48_STREAM_TILE_LEVELS levels (all when L <= m) are not
- * walked one triangle at a time: the current level L-m triangle's window is refined m times
- * breadth first, each time cropped to the rings of the set of its descendants at that level
- * (contiguous in the refined window, which is sorted by key), and its 2^m descendants are
- * emitted from the last refined window in key order (subd_s48_tile_). The tile window contains
- * every window the depth-first walk would crop for one of the descendants (rings of a union
- * are the union of the rings), so the exactness argument of sr48_window.c carries over, and the
- * triangles and their order are unchanged. The level-0 window of a uniform stream holds the
- * rings of both children of a hybrid triangle (base triangles 2H, 2H + 1) and serves both.
+ * Uniform tiles: the last tw levels are not walked one triangle at a time (tw =
+ * s48_tile_walk: m + 1 when L > m, m = SUBD_SR48_STREAM_TILE_LEVELS, else L): the current
+ * level L-tw triangle's window is refined tw - 1 times breadth first, each time but the last
+ * cropped to the rings of the set of its descendants at that level (contiguous in the
+ * refined window, which is sorted by key); the last refined window X (level L-1) holds its
+ * descendants D, and the 2^tw triangles of level L, D's children, are emitted in key order
+ * without a level-L window: a child's new vertex is its diamond's midpoint, as
+ * subd_s48_refine_ makes it, computed when emitted, and (L even, smoothing) its old corners
+ * are smoothed once per tile by subd_s48_last_ with refine's sums restricted to D's corners.
+ * So the tile window A holds descendants one level coarser than the walk's deepest, and a
+ * tile of m + 1 levels needs A and X of the sizes a tile of m levels with a level-L window
+ * needed (the plan is unchanged). When L <= m the tile starts at level 0 and covers both
+ * base triangles 2H, 2H + 1 of a hybrid pair (adjacent in the level-0 window; 2H's
+ * descendants come first in key order). The tile window contains every window the
+ * depth-first walk would crop for one of the descendants (rings of a union are the union of
+ * the rings), so the exactness argument of sr48_window.c carries over, and the triangles and
+ * their order are unchanged (every emitted corner's flag is checked). The level-0 window of
+ * a uniform stream holds the rings of both children of a hybrid triangle and serves both.
  *
  * The tile window A and the refined window X are blocks of the stream's state; the level
  * windows above L - m are unused while a tile is handed out. A tile's triangles leave in
@@ -45,24 +54,27 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
     return 1;
 }
 
-/* Uniform tiles: the current triangle t of the level-k window w (k = L - m) refined
- * breadth first down to max_level: m - 1 times refined into X and cropped into the tile
- * window A to the rings of t's descendants (contiguous in X: X is sorted by key), then
- * refined once more into X, whose t's 2^m descendants s->tcur .. s->tend - 1 are emitted
- * in key order by subd_s48_tile_emit_. A contains every window the depth-first walk would crop
- * for one descendant (a union of rings), so every emitted corner is exact (checked). */
-int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
+/* Uniform tiles: the current triangle t of the level-k window w (k = L - tw, tw = s48_tile_walk)
+ * refined breadth first: tw - 2 times refined into X and cropped into the tile window A to
+ * the rings of t's descendants (contiguous in X: X is sorted by key), then refined once
+ * more into X, level L - 1, whose descendants of t (lo .. lo + n - 1) have as children the
+ * tile's 2^tw triangles of level L, emitted in key order by subd_s48_tile_emit_ without a
+ * level-L window (subd_s48_last_ smooths their old corners). A contains every window the
+ * depth-first walk would crop for one descendant (a union of rings), so every emitted
+ * corner is exact (checked). */
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
 {
     s48_win x, a;
     const s48_win *p = w;
-    uint32_t j, lo = t, n = 1;
+    const uint32_t tw = s48_tile_walk(s);
+    uint32_t j, lo = t, n = n0;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
-    for (j = 0; j < s->tm; j++) {
+    for (j = 0; j + 1u < tw; j++) {
         if (!subd_s48_refine_(s, p, s->k + j, &x)) return 0;
         lo *= 2u;
         n *= 2u;
-        if (j + 1u == s->tm) break;
+        if (j + 2u == tw) break;
         if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return 0;
 #ifdef S48_DBG
         if (a.hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = a.hd[0];
@@ -71,19 +83,67 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t)
         lo = a.hd[3];
         p = &a;
     }
-    s->tcur = lo;
-    s->tend = lo + n;
+    if (s->smooth && (s->levels & 1u) == 0u && !subd_s48_last_(s, &x, lo, n, &a)) return 0;
+    s->tcur = 2u * lo;
+    s->tend = 2u * (lo + n);
     return 1;
 }
 
-/* The tile's triangles not handed out yet, until the caller's buffer is full or the sink
- * stops. 0 when a corner is not exact. */
+/* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle
+ * s->tcur / 2), until the caller's buffer is full or the sink stops. A child's new vertex
+ * is the midpoint subd_s48_refine_ makes for the diamond (from its lower triangle, id by
+ * that triangle's key); its old corners are X's vertices, smoothed by subd_s48_last_ when
+ * level L is even. 0 when a corner is not exact. */
 int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
 {
-    s48_win x;
+    s48_win x, a;
+    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels;
+    const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
+    uint32_t ovf = 0;
     s48_x(s, &x);
+    s48_win_at(s, s->ablk, s->aoff, &a);
     while (s->tcur < s->tend && !subd_stream_q_full(q)) {
-        if (!subd_s48_emit_(s, &x, s->tcur, q, stop)) return 0;
+        const uint32_t i = s->tcur >> 1, ch = s->tcur & 1u;
+        const uint16_t *tv = x.tv + 3u * i, nb = x.tn[3u * i];
+        const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i; /* the diamond's lower triangle */
+        const uint16_t *lv = x.tv + 3u * lt, lnb = x.tn[3u * lt];
+        const uint32_t cv[2] = {ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
+        uint32_t e0 = lv[1], e1 = lv[2], j, k;
+        subd_real mp[3];
+        const subd_real *cp[2];
+        subd_tri *o;
+        if (s48_local(lnb) && s->smooth) {
+            e0 = lv[0];
+            e1 = x.tv[3u * lnb];
+        }
+        if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
+        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x.vp[3u * e0 + j], x.vp[3u * e1 + j], &ovf);
+        for (k = 0; k < 2u; k++) {
+            const uint32_t v = cv[k], u = sm ? s->vmap[v] : v;
+            const s48_win *src = sm ? &a : &x;
+            if (!(src->vf[u] & S48_EXACT)) return 0;
+            cp[k] = src->vp + 3u * u;
+        }
+        if (ovf) {
+            s->err = (uint32_t)(-SUBD_ERR_RANGE);
+            return 0;
+        }
+        o = (subd_tri *)subd_stream_q_put(q);
+        if (!o) return 0;
+        for (j = 0; j < 3u; j++) {
+            o->pos[0][j] = mp[j];
+            o->pos[1][j] = cp[0][j];
+            o->pos[2][j] = cp[1][j];
+            o->normal[0][j] = 0;
+            o->normal[1][j] = 0;
+            o->normal[2][j] = 0;
+        }
+        o->id[0] = id0 + s48_gkey(s, x.key[lt], L - 1u);
+        o->id[1] = s48_vid(&x, cv[0]);
+        o->id[2] = s48_vid(&x, cv[1]);
+        o->face = s->gt[x.key[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
+        o->level = L;
+        *stop = subd_stream_q_commit(q);
         s->tcur++;
         if (*stop) return 1;
     }

@@ -180,23 +180,49 @@ uint32_t subd_s48_valence_(const subd_sr48 *b)
 /* ------------------------------------------------------------------------------------ */
 /* Windows                                                                                */
 
+/* Level 0's window's gathering looks base triangles and vertices up in two hash tables
+ * (open addressing, linear probing) over the crop's maps, which are free between crops: a
+ * slot holds a local index + 1 (0: empty), the key is read back from gt or gv. A table has
+ * a power of 2 of slots above the window's capacity, so it never fills. */
+static uint32_t s48_h0_size(uint32_t cap)
+{
+    uint32_t h = 1;
+    while (2u * h <= cap && h < 0x8000u) h *= 2u;
+    return h;
+}
+/* The slot of key x in table tab (size hm + 1) over keys keys[]: x's, or the empty one
+ * where it goes. */
+static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *keys, uint32_t x)
+{
+    uint32_t h = ((x * 2654435761u) >> 12) & hm, i;
+    for (i = 0; i <= hm; i++) {
+        if (tab[h] == 0u || keys[tab[h] - 1u] == x) break;
+        h = (h + 1u) & hm;
+    }
+    return h;
+}
+
 /* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
  * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
  * by index; local vertices and neighbours. 0 when a capacity is exceeded. */
 int subd_s48_build0_(s48_state *s, uint32_t t0)
 {
     const subd_sr48 *b = s->base;
-    uint32_t nt = 0, nv = 0, i, j, q, u, p;
+    const uint32_t mt = s->at > s->wt ? s->at : s->wt;
+    const uint32_t tm = s48_h0_size(2u * mt) - 1u, vm = s48_h0_size(s->xv) - 1u;
+    uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 mt and xv entries: above wt and wv */
+    uint32_t nt = 0, nv = 0, i, j, q, p;
     s48_win w;
     s48_lev(s, 0, &w);
+    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i <= vm; i++) hv[i] = 0;
     /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
      * that one window serves both (s48_step) */
     for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * p + j], seen = 0;
-            for (u = 0; u < nv; u++)
-                if (s->gv[u] == vx) seen = 1;
-            if (seen) continue;
+            const uint32_t vx = b->tri_vert[3u * p + j], h = s48_h0_find(hv, vm, s->gv, vx);
+            if (hv[h] != 0u) continue;
+            hv[h] = (uint16_t)(nv + 1u);
             s->gv[nv] = vx;
             s->gvt[nv] = p;
             s->dist[nv++] = 0;
@@ -211,53 +237,50 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
         if (nf == UINT32_MAX) return 0;
         for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
         for (f = 0; f < nf; f++) {
-            uint32_t tt = s->gt[s->wt - nf + f], dup = 0;
-            for (i = 0; i < nt; i++)
-                if (s->gt[i] == tt) dup = 1;
-            if (dup) continue;
+            const uint32_t tt = s->gt[s->wt - nf + f], h = s48_h0_find(ht, tm, s->gt, tt);
+            if (ht[h] != 0u) continue;
             for (j = 0; j < 3u; j++) {
-                uint32_t vx = b->tri_vert[3u * tt + j], seen = 0;
-                for (u = 0; u < nv; u++)
-                    if (s->gv[u] == vx) seen = 1;
-                if (seen) continue;
+                const uint32_t vx = b->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
+                if (hv[g] != 0u) continue;
                 if (nv >= s->wv) return 0;
+                hv[g] = (uint16_t)(nv + 1u);
                 s->gv[nv] = vx;
                 s->gvt[nv] = tt;
                 s->dist[nv++] = (uint8_t)(s->dist[q] + 1u);
             }
+            ht[h] = (uint16_t)(nt + 1u);
             s->gt[nt++] = tt;
         }
     }
-    /* sort the triangles (insertion sort: at most wt of them) */
-    for (i = 1; i < nt; i++) {
-        uint32_t x = s->gt[i];
-        j = i;
-        while (j > 0u && s->gt[j - 1u] > x) {
-            s->gt[j] = s->gt[j - 1u];
-            j--;
+    /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct) */
+    for (p = 0; p < 5u; p++) {
+        static const uint8_t gap[5] = {57u, 23u, 10u, 4u, 1u};
+        const uint32_t g = gap[p];
+        for (i = g; i < nt; i++) {
+            uint32_t x = s->gt[i];
+            j = i;
+            while (j >= g && s->gt[j - g] > x) {
+                s->gt[j] = s->gt[j - g];
+                j -= g;
+            }
+            s->gt[j] = x;
         }
-        s->gt[j] = x;
     }
+    /* the triangle table again, on the sorted indices */
+    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i < nt; i++) ht[s48_h0_find(ht, tm, s->gt, s->gt[i])] = (uint16_t)(i + 1u);
     for (i = 0; i < nt; i++) {
         uint32_t tt = s->gt[i];
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * tt + j], nb, lo, hi;
-            u = 0;
-            while (s->gv[u] != vx) u++; /* present: added with the triangle */
-            w.tv[3u * i + j] = (uint16_t)u;
+            uint32_t vx = b->tri_vert[3u * tt + j], nb;
+            w.tv[3u * i + j] = (uint16_t)(hv[s48_h0_find(hv, vm, s->gv, vx)] - 1u); /* present: added with tt */
             nb = s48_base_nbr(b, tt, j);
             if (nb == SUBD_NONE) {
                 w.tn[3u * i + j] = S48_BND;
                 continue;
             }
-            lo = 0;
-            hi = nt;
-            while (lo < hi) {
-                uint32_t mid = (lo + hi) / 2u;
-                if (s->gt[mid] < nb) lo = mid + 1u;
-                else hi = mid;
-            }
-            w.tn[3u * i + j] = (lo < nt && s->gt[lo] == nb) ? (uint16_t)lo : S48_OUT;
+            nb = ht[s48_h0_find(ht, tm, s->gt, nb)];
+            w.tn[3u * i + j] = nb != 0u ? (uint16_t)(nb - 1u) : S48_OUT;
         }
         w.key[i] = i; /* local: gt[i] = tt */
         if (tt == t0) w.hd[2] = i;
@@ -313,13 +336,16 @@ static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum 
 }
 #endif
 
-static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, uint32_t m, int boundary_ok)
+/* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
+ * counts and flags in s->cnt, s->dist at v). */
+static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp, uint32_t mf,
+                        int boundary_ok)
 {
     uint32_t q;
     if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), x->vp[3u * m + q]));
+    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), mp[q]));
     s->cnt[v]++;
-    if (!(x->vf[m] & S48_EXACT)) s->dist[v] |= S48_INC;
+    if (!(mf & S48_EXACT)) s->dist[v] |= S48_INC;
 }
 
 /* Refines window p (level k) as a whole into X (level k+1), smoothing after an even level.
@@ -328,15 +354,32 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
 {
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
+    const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
     uint32_t i, j, nv = nvp, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
-    for (i = 0; i < nvp; i++) s48_vcopy(x, i, p, i);
+    /* the old vertices: ids, flags, L; positions, or (smoothed level) zero sums */
+    for (i = 0; i < nvp; i++) {
+        x->vid[i] = p->vid[i];
+        x->vf[i] = p->vf[i];
+    }
+    if (x->vl)
+        for (i = 0; i < 3u * nvp; i++) x->vl[i] = p->vl[i];
+    if (sm) {
+        for (i = 0; i < nvp; i++) {
+            s->cnt[i] = 0;
+            s->dist[i] = 0;
+            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
+        }
+    } else {
+        for (i = 0; i < 3u * nvp; i++) x->vp[i] = p->vp[i];
+    }
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
-        uint16_t nb = p->tn[3u * i], m;
+        const uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
         const uint32_t key = p->key[i]; /* local: children 2 key, 2 key + 1 */
+        uint16_t m, *c0 = x->tn + 6u * i, *c1 = c0 + 3;
         if (s48_local(nb) && nb < i) {
             m = s->mtab[nb];
         } else {
@@ -363,58 +406,48 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         x->tv[6u * i + 5u] = tv[0];
         x->key[2u * i] = 2u * key;
         x->key[2u * i + 1u] = 2u * key + 1u;
-    }
-    if (ovf) {
-        s->err = (uint32_t)(-SUBD_ERR_RANGE);
-        return 0;
-    }
-    for (i = 0; i < nt; i++) {
-        uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
-        uint16_t *c0 = x->tn + 6u * i, *c1 = c0 + 3;
         c0[0] = s48_local(l0) ? (uint16_t)(2u * l0 + 1u) : l0;
         c0[1] = (uint16_t)(2u * i + 1u);
         c0[2] = s48_local(nb) ? (uint16_t)(2u * nb + 1u) : nb;
         c1[0] = s48_local(l1) ? (uint16_t)(2u * l1) : l1;
         c1[1] = s48_local(nb) ? (uint16_t)(2u * nb) : nb;
         c1[2] = (uint16_t)(2u * i);
+        if (sm) {
+            if (nb == S48_BND) {
+                s->cnt[tv[1]] = 0x80000000u;
+                s->cnt[tv[2]] = 0x80000000u;
+            }
+            /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
+            if (nb == S48_OUT || l0 == S48_OUT) s->dist[tv[1]] |= S48_INC;
+            if (nb == S48_OUT || l1 == S48_OUT) s->dist[tv[2]] |= S48_INC;
+            if (l0 == S48_OUT || l1 == S48_OUT) s->dist[tv[0]] |= S48_INC;
+        }
+    }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
     }
     x->hd[0] = 2u * nt;
     x->hd[1] = nv;
     x->hd[6] = k + 1u;
-    if (s->smooth && ((k + 1u) & 1u) == 0u) {
-        for (i = 0; i < nvp; i++) {
-            s->cnt[i] = 0;
-            s->dist[i] = 0;
-            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
-        }
-        for (i = 0; i < nt; i++) {
-            const uint16_t *tv = p->tv + 3u * i;
-            uint32_t sl;
-            if (p->tn[3u * i] == S48_BND) {
-                s->cnt[tv[1]] = 0x80000000u;
-                s->cnt[tv[2]] = 0x80000000u;
-            }
-            for (sl = 0; sl < 3u; sl++)
-                if (p->tn[3u * i + sl] == S48_OUT) { /* the edge's ends miss part of their fan */
-                    s->dist[sl == 0u ? tv[1] : sl == 1u ? tv[0] : tv[2]] |= S48_INC;
-                    s->dist[sl == 0u ? tv[2] : sl == 1u ? tv[1] : tv[0]] |= S48_INC;
-                }
-        }
+    if (sm) {
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = p->tv + 3u * i;
             uint16_t nb = p->tn[3u * i];
             uint32_t m = s->mtab[i];
+            const subd_real *mp = x->vp + 3u * m;
+            const uint32_t mf = x->vf[m];
             if (nb == S48_BND) {
-                s48_scatter(s, x, tv[1], m, 1);
-                s48_scatter(s, x, tv[2], m, 1);
-                s48_scatter(s, x, tv[0], m, 0);
+                s48_scatter(s, x, tv[1], mp, mf, 1);
+                s48_scatter(s, x, tv[2], mp, mf, 1);
+                s48_scatter(s, x, tv[0], mp, mf, 0);
             } else if (nb == S48_OUT) {
                 s->dist[tv[0]] |= S48_INC;
             } else if (i < nb) {
-                s48_scatter(s, x, tv[1], m, 0);
-                s48_scatter(s, x, tv[2], m, 0);
-                s48_scatter(s, x, tv[0], m, 0);
-                s48_scatter(s, x, p->tv[3u * nb], m, 0);
+                s48_scatter(s, x, tv[1], mp, mf, 0);
+                s48_scatter(s, x, tv[2], mp, mf, 0);
+                s48_scatter(s, x, tv[0], mp, mf, 0);
+                s48_scatter(s, x, p->tv[3u * nb], mp, mf, 0);
             }
         }
         for (i = 0; i < nvp; i++) {
@@ -435,66 +468,169 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     return 1;
 }
 
+/* The last level of a uniform tile without its window: X (level L-1 = max_level - 1) is
+ * not refined into level L; only the corners of level L's triangles that the tile emits
+ * (the children of X's triangles c0 .. c0 + n - 1) are computed. Their new vertices are
+ * single midpoints, made when emitted (sr48_tile.c); this computes the old ones, the
+ * corners of c0 .. c0 + n - 1, when level L is smoothed (L even): the same sums as
+ * subd_s48_refine_'s over the same diamonds in the same order (X's triangle order), but
+ * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
+ * once X is refined from it: a's vid keeps X's index, a's position and flag the result).
+ * The exactness rules are refine's, restricted to the same vertices. 0 on failure. */
+int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
+{
+    const uint32_t nt = x->hd[0], nv = x->hd[1];
+    uint16_t *vm = s->vmap;
+    uint32_t i, j, nn = 0, ovf = 0;
+    for (i = 0; i < nv; i++) vm[i] = S48_OUT;
+    for (j = 0; j < 3u * n; j++) {
+        const uint16_t v = x->tv[3u * c0 + j];
+        if (vm[v] != S48_OUT) continue;
+        if (nn >= s->av) return 0;
+        vm[v] = (uint16_t)nn;
+        a->vid[nn] = v;
+        s->cnt[nn] = 0;
+        s->dist[nn] = 0;
+        for (i = 0; i < 3u; i++) s48_sput(s, a, 3u * nn + i, 0);
+        nn++;
+    }
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
+        if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
+        if (tn[0] == S48_BND) {
+            if (u1 != S48_OUT) s->cnt[u1] = 0x80000000u;
+            if (u2 != S48_OUT) s->cnt[u2] = 0x80000000u;
+        }
+        /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
+        if (tn[0] == S48_OUT || tn[1] == S48_OUT) {
+            if (u1 != S48_OUT) s->dist[u1] |= S48_INC;
+        }
+        if (tn[0] == S48_OUT || tn[2] == S48_OUT) {
+            if (u2 != S48_OUT) s->dist[u2] |= S48_INC;
+        }
+        if (tn[1] == S48_OUT || tn[2] == S48_OUT) {
+            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+        }
+    }
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i;
+        const uint16_t nb = x->tn[3u * i], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
+        uint16_t u3;
+        uint32_t e0, e1, mf;
+        subd_real mp[3];
+        if (nb == S48_OUT) {
+            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+            continue;
+        }
+        if (nb == S48_BND) {
+            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
+            e0 = tv[1];
+            e1 = tv[2];
+            u3 = S48_OUT;
+        } else {
+            if (nb < i) continue; /* the diamond's lower triangle made it */
+            e0 = tv[0];
+            e1 = x->tv[3u * nb];
+            u3 = vm[e1];
+            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
+        }
+        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x->vp[3u * e0 + j], x->vp[3u * e1 + j], &ovf);
+        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
+        {
+            const int bnd = nb == S48_BND;
+            if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
+            if (u2 != S48_OUT) s48_scatter(s, a, u2, mp, mf, bnd);
+            if (u0 != S48_OUT) s48_scatter(s, a, u0, mp, mf, 0);
+            if (u3 != S48_OUT) s48_scatter(s, a, u3, mp, mf, 0);
+        }
+    }
+    for (i = 0; i < nn; i++) {
+        const uint32_t v = a->vid[i], k = s->cnt[i] & ~0x80000000u;
+        if (k == 0u || (s->dist[i] & S48_INC)) {
+            for (j = 0; j < 3u; j++) a->vp[3u * i + j] = x->vp[3u * v + j]; /* not a sum */
+            a->vf[i] = 0;
+            continue;
+        }
+        for (j = 0; j < 3u; j++) a->vp[3u * i + j] = subd_avg(s48_sget(s, a, 3u * i + j), k, &ovf);
+        a->vf[i] = S48_EXACT;
+    }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
+    }
+    return 1;
+}
+
 /* Crops X to the triangles within S48_RINGS vertex rings of X's triangles c0 .. c0 + n - 1
  * (the current triangle's descendants: contiguous, X being sorted by key) into window w of
  * capacity ct triangles, cv vertices, in order; w's hd[3] is c0's index in w, hd[4] c0 + 1's. */
 int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv)
 {
     const uint32_t nt = x->hd[0], nv = x->hd[1];
+    uint8_t *d = s->dist;
+    uint16_t *vm = s->vmap, *tm = s->tmap;
     uint32_t i, j, r, kt = 0, kv = 0;
 #ifdef S48_DBG
     s48_dbg[32] += nt; s48_dbg[33]++;
 #endif
-    for (i = 0; i < nv; i++) s->dist[i] = S48_FAR;
-    for (j = 0; j < 3u * n; j++) s->dist[x->tv[3u * c0 + j]] = 0;
+    for (i = 0; i < nv; i++) {
+        d[i] = S48_FAR;
+        vm[i] = S48_OUT;
+    }
+    for (j = 0; j < 3u * n; j++) d[x->tv[3u * c0 + j]] = 0;
     for (r = 1; r < S48_RINGS; r++)
         for (i = 0; i < nt; i++) {
             const uint16_t *tv = x->tv + 3u * i;
-            uint32_t md = s->dist[tv[0]];
-            if (s->dist[tv[1]] < md) md = s->dist[tv[1]];
-            if (s->dist[tv[2]] < md) md = s->dist[tv[2]];
+            const uint32_t d0 = d[tv[0]], d1 = d[tv[1]], d2 = d[tv[2]];
+            uint32_t md = d0 < d1 ? d0 : d1;
+            if (d2 < md) md = d2;
             if (md + 1u > r) continue;
-            for (j = 0; j < 3u; j++)
-                if (s->dist[tv[j]] > r) s->dist[tv[j]] = (uint8_t)r;
+            if (d0 > r) d[tv[0]] = (uint8_t)r;
+            if (d1 > r) d[tv[1]] = (uint8_t)r;
+            if (d2 > r) d[tv[2]] = (uint8_t)r;
         }
-    for (i = 0; i < nv; i++) s->vmap[i] = S48_OUT;
+    /* the kept triangles in order: their vertices numbered as met, their corners and keys
+     * written at once, their neighbours (X's indices) renumbered once all are known */
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i;
-        uint32_t md = s->dist[tv[0]];
-        if (s->dist[tv[1]] < md) md = s->dist[tv[1]];
-        if (s->dist[tv[2]] < md) md = s->dist[tv[2]];
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint32_t d0 = d[tv[0]], d1 = d[tv[1]], d2 = d[tv[2]];
+        uint32_t md = d0 < d1 ? d0 : d1;
+        uint16_t *ov, *on;
+        if (d2 < md) md = d2;
         if (md + 1u > S48_RINGS) {
-            s->tmap[i] = S48_OUT;
+            tm[i] = S48_OUT;
             continue;
         }
         if (kt >= ct) return 0;
-        s->tmap[i] = (uint16_t)kt++;
-        for (j = 0; j < 3u; j++)
-            if (s->vmap[tv[j]] == S48_OUT) {
+        ov = w->tv + 3u * kt;
+        on = w->tn + 3u * kt;
+        w->key[kt] = x->key[i];
+        tm[i] = (uint16_t)kt++;
+        for (j = 0; j < 3u; j++) {
+            const uint16_t v = tv[j];
+            if (vm[v] == S48_OUT) {
                 if (kv >= cv) return 0;
-                s->vmap[tv[j]] = (uint16_t)kv++;
+                vm[v] = (uint16_t)kv++;
             }
+            ov[j] = vm[v];
+            on[j] = tn[j];
+        }
+    }
+    for (i = 0; i < 3u * kt; i++) {
+        const uint16_t nb = w->tn[i];
+        if (s48_local(nb)) w->tn[i] = tm[nb];
     }
     for (i = 0; i < nv; i++) {
-        uint16_t v = s->vmap[i];
+        uint16_t v = vm[i];
         if (v == S48_OUT) continue;
         s48_vcopy(w, v, x, i);
-    }
-    for (i = 0; i < nt; i++) {
-        uint16_t t = s->tmap[i];
-        if (t == S48_OUT) continue;
-        for (j = 0; j < 3u; j++) {
-            uint16_t nb = x->tn[3u * i + j];
-            w->tv[3u * t + j] = s->vmap[x->tv[3u * i + j]];
-            w->tn[3u * t + j] = s48_local(nb) ? s->tmap[nb] : nb;
-        }
-        w->key[t] = x->key[i];
     }
     w->hd[0] = kt;
     w->hd[1] = kv;
     w->hd[6] = x->hd[6];
-    w->hd[3] = s->tmap[c0];
-    w->hd[4] = s->tmap[c0 + 1u];
+    w->hd[3] = tm[c0];
+    w->hd[4] = tm[c0 + 1u];
     return 1;
 }
 

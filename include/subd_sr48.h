@@ -477,10 +477,23 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_CHORD_EXACT_ 3u
 #define SUBD_SR48_STREAM_CHORD_DESC_ (2u * ((1u << (2u * (SUBD_SR48_STREAM_CHORD_EXACT_ + 1u))) - 1u) / 3u)
 #define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
+#ifndef SUBD_SR48_STREAM_CHORD_DECIDED_
+#define SUBD_SR48_STREAM_CHORD_DECIDED_ 64u
+#endif
+#ifndef SUBD_SR48_STREAM_CHORD_TILE_
+#define SUBD_SR48_STREAM_CHORD_TILE_ 5u
+#endif
+#define SUBD_SR48_STREAM_CTM_(L) \
+    ((uint32_t)(L) < SUBD_SR48_STREAM_CHORD_TILE_ ? SUBD_SR48_MAX_(L, 2u) : SUBD_SR48_STREAM_CHORD_TILE_)
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
-    (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
+    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 1u, \
+                         SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_CTM_(L)), \
+                         SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L))) + \
+     (12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \
+     72u * (SUBD_SR48_STREAM_CTM_(L) + 1u) + \
      SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
-                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \
+                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_ + \
+                         2u * SUBD_SR48_STREAM_CHORD_DECIDED_)) + \
      SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u + SUBD_SR48_STREAM_CHORD_CACHE_)))
 
 /* The 0.3 names (subd_adapt*, SUBD_ADAPT_*; header subd_semireg48.h), kept as aliases

@@ -432,9 +432,14 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     uint16_t *tn = s48c_tn(s);
     uint8_t *tf = s48c_tf(s);
     subd_sr48_lin *st = s48c_lin(s);
+    /* A: the level windows j + 1 (m = 2: two children, a level window's crop) or j + 1 and
+     * j + 2 (m >= 3: the tile window's layout, which fits two level windows: sr48_stream.c),
+     * free below the walk's node (levels < max_level, so they exist) */
+    const uint32_t ct = m >= 3u ? s->at : s->wt, cv = m >= 3u ? s->av : s->wv;
     s48_lev(s, j, &w);
     s48_x(s, &x);
-    s48_win_at(s, s->ablk, s->aoff, &a);
+    if (m >= 3u) s48_win_at(s, s->lev + (j + 1u) * s->lev_size, s->aoff, &a);
+    else if (m == 2u) s48_lev(s, j + 1u, &a);
     for (step = 0; step < m; step++) {
         const uint32_t d = j + step - k;
         for (q = 0; q < n; q++) {
@@ -447,7 +452,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
         lo *= 2u;
         n *= 2u;
         if (step + 1u == m) break;
-        if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return -1;
+        if (!subd_s48_crop_n_(s, &x, lo, n, &a, ct, cv)) return -1;
         lo = a.hd[3];
         p = &a;
     }

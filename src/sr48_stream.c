@@ -58,6 +58,14 @@ typedef char s48_local_fits[SUBD_SR48_STREAM_WT_(SUBD_SR48_STREAM_MAX_VALENCE) <
                                     SUBD_SR48_MAX_STEPS <= 16u && 9u + SUBD_SR48_MAX_STEPS - 1u <= S48_IDS
                                 ? 1
                                 : -1];
+/* CHORD's tile window (sr48_chord_walk.c, s48c_tile) lives in two free level windows: its
+ * capacities exceed a level window's by amounts that do not depend on the valence, so the
+ * least valence counted (8) is the tightest case. */
+typedef char s48c_tile_fits[SUBD_SR48_WIN_(SUBD_SR48_STREAM_TT_(8u, SUBD_SR48_STREAM_CHORD_TILE_),
+                                           SUBD_SR48_STREAM_TV_(8u, SUBD_SR48_STREAM_CHORD_TILE_)) <=
+                                    2u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u))
+                                ? 1
+                                : -1];
 
 /* ------------------------------------------------------------------------------------ */
 /* Capacities and layout                                                                  */
@@ -105,9 +113,10 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
                       uint8_t **ring, uint32_t *bytes)
 {
     subd_layout y;
-    /* CHORD: the tile window of its walk (sr48_chord_walk.c, mc levels breadth first) */
+    /* CHORD: its tiles (sr48_chord_walk.c, up to mc levels breadth first) keep their tile
+     * window A in the free level windows below the tile's root, X is sized for them */
     const uint32_t m = s48_tile_levels(levels, !nl && !chord), mc = chord ? SUBD_SR48_STREAM_CTM_(levels) : 0u;
-    const uint32_t tile = m > 1u || chord;
+    const uint32_t tile = m > 1u;
     const uint32_t dl = levels >= m ? levels - m : 0u, ckc =
         !nl && !chord && dl > SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
     const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;

@@ -480,6 +480,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #ifndef SUBD_SR48_STREAM_CHORD_DECIDED_
 #define SUBD_SR48_STREAM_CHORD_DECIDED_ 64u
 #endif
+#ifndef SUBD_SR48_STREAM_CHORD_MASKS_
+#define SUBD_SR48_STREAM_CHORD_MASKS_ 256u
+#endif
 #ifndef SUBD_SR48_STREAM_CHORD_TILE_
 #define SUBD_SR48_STREAM_CHORD_TILE_ 5u
 #endif
@@ -493,7 +496,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      72u * (SUBD_SR48_STREAM_CTM_(L) + 1u) + \
      SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
                          1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_ + \
-                         2u * SUBD_SR48_STREAM_CHORD_DECIDED_)) + \
+                         2u * SUBD_SR48_STREAM_CHORD_DECIDED_ + 4u * SUBD_SR48_STREAM_CHORD_MASKS_)) + \
      SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u + SUBD_SR48_STREAM_CHORD_CACHE_)))
 
 /* The 0.3 names (subd_adapt*, SUBD_ADAPT_*; header subd_semireg48.h), kept as aliases

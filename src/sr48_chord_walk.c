@@ -31,7 +31,7 @@ void subd_s48_chord_begin_(s48_state *s)
 {
     uint32_t i;
     uint32_t *cid = s->cdesc + 3u * S48C_ND;
-    for (i = 0; i < 2u * (S48C_NC + S48C_ND2); i++) cid[i] = 0xffffffffu;
+    for (i = 0; i < 2u * (S48C_NC + S48C_ND2) + 4u * S48C_NB; i++) cid[i] = 0xffffffffu;
 }
 
 static uint32_t s48c_slot(uint64_t id)
@@ -425,10 +425,10 @@ static int s48c_fans(const s48_win *w, uint32_t c)
  * the window misses part of a depth-S48C_M node's star or a corner is not exact. */
 static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose)
 {
-    const uint32_t m = s->levels - j;
+    const uint32_t m = s->levels - j, up = j - k; /* up: the walk's nodes above r */
     s48_win w, x, a;
     const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, l;
+    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
     uint16_t *tn = s48c_tn(s);
     uint8_t *tf = s48c_tf(s);
     subd_sr48_lin *st = s48c_lin(s);
@@ -436,12 +436,40 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
      * j + 2 (m >= 3: the tile window's layout, which fits two level windows: sr48_stream.c),
      * free below the walk's node (levels < max_level, so they exist) */
     const uint32_t ct = m >= 3u ? s->at : s->wt, cv = m >= 3u ? s->av : s->wv;
+    uint64_t key;
     s48_lev(s, j, &w);
+    key = s48_key(&w, r);
+    tag = (uint32_t)(key >> 32) | j << 20;
+    /* r's deviations kept (S48C_NB entries of 4 words after the decided diamonds, direct
+     * mapped by key and level: key low word; key high word | level << 20; bit h set when
+     * the tile's node h deviates by more than eps, E(h) > eps; bit u set when the vertices
+     * r's subtree creates deviate from the interpolant of r's ancestor u levels up, for
+     * u <= the value in bits 24..28). All are functions of r, whatever the decision: a
+     * hit answers unless a deviating node's counting flag needs the star test (level
+     * k + S48C_M), which needs the tile's windows. */
+    mk = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
+         4u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB - 1u));
+    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24) >= up) {
+        for (u = 1; u <= up; u++)
+            if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
+        for (h = 1, dd = 0; h < (1u << m); h++) {
+            if (h == 2u << dd) dd++; /* h's depth below r */
+            if (!((mk[2] >> h) & 1u)) continue;
+            if (up + dd < S48C_M) {
+                if (s48c_has(s, up + dd, (key << dd) | (h - (1u << dd)), 1u)) return 1;
+            } else if (up > S48C_M) {
+                return 1; /* below level k + S48C_M every node of an entered subtree counts */
+            } else {
+                deep = 1;
+            }
+        }
+        if (!deep) return 0;
+    }
     s48_x(s, &x);
     if (m >= 3u) s48_win_at(s, s->lev + (j + 1u) * s->lev_size, s->aoff, &a);
     else if (m == 2u) s48_lev(s, j + 1u, &a);
     for (step = 0; step < m; step++) {
-        const uint32_t d = j + step - k;
+        const uint32_t d = up + step;
         for (q = 0; q < n; q++) {
             h = n + q;
             if (loose && d == S48C_M && !s48c_fans(p, lo + q)) return -2;
@@ -467,22 +495,29 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
         tn[3u * h + 1u] = tn[6u * h + 2u];
         tn[3u * h + 2u] = tn[6u * h + 4u];
     }
-    if (j == k) /* the root's corners: the leaf's, if its diamond does not split */
+    if (up == 0u) /* the root's corners: the leaf's, if its diamond does not split */
         for (i = 0; i < 3u; i++) s48c_put(s, s48_vid(&x, tn[3u + i]), x.vp + 3u * tn[3u + i]);
-    for (l = k; l < j; l++) { /* the walk's counting ancestors, brought down to r */
-        if (!s->cfl[l]) continue;
+    for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
+        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
+        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+    }
+    for (u = 1, above = 0; u <= up; u++) { /* the walk's nodes above, their interpolant brought down to r */
+        const uint32_t l = j - u;
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(s->cpos[3u * s->csrc[3u * l + q / 3u] + q % 3u]);
         for (i = l; i < j; i++) {
             s48c_lin_child(st, s->cch[i] - 1u, st + 9);
             for (q = 0; q < 9u; q++) st[q] = st[9u + q];
         }
-        if (s48c_sub(s, &x, 1u, n)) return 1;
+        if (s48c_sub(s, &x, 1u, n)) above |= 1u << u;
     }
-    for (h = 1; h < n; h++) { /* the tile's counting nodes */
-        if (!tf[h]) continue;
-        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) return 1;
-    }
+    mk[0] = (uint32_t)key;
+    mk[1] = tag;
+    mk[2] = bad;
+    mk[3] = above | up << 24;
+    for (u = 1; u <= up; u++)
+        if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
+    for (h = 1; h < n; h++)
+        if (((bad >> h) & 1u) && tf[h]) return 1;
     return 0;
 }
 

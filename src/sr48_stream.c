@@ -163,7 +163,8 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         uint32_t *lgv = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *lgvt = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *ci =
-            chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC + 2u * S48C_ND2,
+            chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC + 2u * S48C_ND2 +
+                                           4u * S48C_NB,
                                        4u)
                   : 0;
         /* then CHORD's tile: its interpolant stack (9 subd_sr48_lin per level, 8 bytes each

@@ -32,6 +32,7 @@
 #define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached finest positions (a power of 2) */
 #define S48C_T SUBD_SR48_STREAM_CHORD_TILE_  /* CHORD: levels refined breadth first (a tile) */
 #define S48C_ND2 SUBD_SR48_STREAM_CHORD_DECIDED_ /* CHORD: decided diamonds kept (a power of 2) */
+#define S48C_NB SUBD_SR48_STREAM_CHORD_MASKS_ /* CHORD: tiles' deviation masks kept (a power of 2) */
 
 /* Local keys and ids (one word each; s48_key and s48_vid give the global 64-bit ones). A
  * level-k triangle's local key is i0 * 2^k + its child path below its level-0 ancestor, i0

@@ -21,6 +21,9 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 
+/* A tile's node masks are words: its internal nodes 1 .. 2^S48C_T - 1 (s48c_tile). */
+typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 5u ? 1 : -1];
+
 /* The cache of finest positions (S48C_NC entries, direct mapped by id: the ids after cdesc,
  * the positions after cpos, sr48_stream_internal.h): a
  * vertex's finest position is a function of its id (subd_s48_finest_ finds subd_sr48_build's

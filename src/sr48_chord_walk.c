@@ -11,12 +11,28 @@
  * forces D's, S48C_M levels down, then the stars of the deepest of them) has a chordal
  * deviation of subd_sr48_extract's kind above eps. F(D)'s first levels come from the
  * level-k window's adjacency (s48c_desc); S(D) lies under D's star (in the window), whose
- * triangles are walked to max_level with the windows of the levels below (s48_chord_walk:
- * free at the decision; a triangle whose subtree cannot hold a member is skipped,
- * s48c_may); the current triangle is walked in place, another one after rebuilding the
+ * triangles' subtrees are searched to max_level (a triangle whose subtree cannot hold a
+ * member is skipped, s48c_may). The answer is exactly the one of walking every counting
+ * node and testing every vertex below it (same cut, bits and order); what makes it cheaper:
+ *  - tiles (s48c_tile): the last S48C_T levels of a subtree are refined breadth first, as
+ *    the uniform stream's tile (sr48_tile.c), one refinement and crop per level instead of
+ *    one per node, and every node's corners and new vertex are read at max_level from the
+ *    last refined window (no descents); a decision of level k >= max_level - S48C_T tiles
+ *    each star triangle from the current window when it holds what the tile needs (every
+ *    corner exact, the full star at the star test's level: checked), else after rebuilding
+ *    the windows along that triangle's path (s48c_path); a coarser decision walks depth
+ *    first (s48_chord_walk) down to level max_level - S48C_T and tiles there;
+ *  - the interpolants (s48c_sub): each tested node's interpolant is carried down its subtree
+ *    one midpoint step per level (the steps of subd_sr48_chord_beyond_, so the same bits)
+ *    instead of being rebuilt from the node for every vertex;
+ *  - memos, all exact (functions of a key, never of the decision being taken): a tile root's
+ *    deviations (E > eps of each of its nodes, and of each walk ancestor over its subtree:
+ *    whether a node counts depends on the decision, its deviation does not), the answer
+ *    per diamond (asked by both its triangles), finest positions per vertex id.
  *
- * The walk's per-level state, the star's keys and F(D)'s first levels are blocks of the
- * stream's state (s48_state's c* members, sized by sr48_stream.c's layout).
+ * The walk's per-level state, the star's keys, F(D)'s first levels and the memos are blocks
+ * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
+ * window A lives in two level windows below the tile's root, free during a decision).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
@@ -478,6 +494,11 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
             if (loose && d == S48C_M && !s48c_fans(p, lo + q)) return -2;
             if (d <= S48C_M) tf[h] = (uint8_t)s48c_counts(s, k, j + step, p, lo + q);
             else tf[h] = step == 0u ? 1u : tf[h >> 1];
+        }
+        if (step == 0u && m >= 2u) { /* r and its two rings only (the window's invariant) */
+            if (!subd_s48_crop_n_(s, &w, r, 1u, &a, ct, cv)) return -1;
+            lo = a.hd[3];
+            p = &a;
         }
         if (!subd_s48_refine_(s, p, j + step, &x)) return -1;
         lo *= 2u;

@@ -483,8 +483,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * subd_reals), the answers of SUBD_SR48_STREAM_CHORD_DECIDED_ diamonds (2 words each), the
  * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (4 words each), the walk's
  * finest positions (3 subd_reals per level + 4) and the tile's nodes (3 corners, 6 bytes,
- * and a flag per node of a tile of m levels: 2^(m + 1) nodes) and interpolants (9 per
- * level, 8 bytes each); src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..5, default
+ * and a flag per node of a tile of m levels: 2^(m + 1) nodes), interpolants (9 per level,
+ * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..5, default
  * 5: a tile's node masks are words): 4 measured 1.4x the instructions of 5 on the
  * icosahedron at 9 steps and saves 1 344 bytes at (8, 16); 6 would need a third level
  * window for the tile window and 64-bit masks. */
@@ -506,8 +506,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
     (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                          SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_CTM_(L)), \
                          SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L))) + \
-     (12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \
-     72u * (SUBD_SR48_STREAM_CTM_(L) + 1u) + \
+     SUBD_SR48_SA_((12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \
+                   72u * (SUBD_SR48_STREAM_CTM_(L) + 1u) + \
+                   SUBD_SR48_MAX_(SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L)), SUBD_SR48_STREAM_WV_(N))) + \
      SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
                          1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_ + \
                          2u * SUBD_SR48_STREAM_CHORD_DECIDED_ + 4u * SUBD_SR48_STREAM_CHORD_MASKS_)) + \

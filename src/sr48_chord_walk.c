@@ -368,6 +368,7 @@ static uint16_t *s48c_tn(const s48_state *s)
     return (uint16_t *)(void *)((uint8_t *)s48c_lin(s) + 72u * (SUBD_SR48_STREAM_CTM_(s->levels) + 1u));
 }
 static uint8_t *s48c_tf(const s48_state *s) { return (uint8_t *)s48c_tn(s) + (12u << SUBD_SR48_STREAM_CTM_(s->levels)); }
+static uint8_t *s48c_vm(const s48_state *s) { return s48c_tf(s) + (2u << SUBD_SR48_STREAM_CTM_(s->levels)); }
 
 /* One step of subd_sr48_chord_beyond_'s interpolant: the triangle l (apex, b0, b1) to its
  * child `bit` (0: (m; apex, b0), 1: (m; b1, apex)), m the midpoint of its base: the same
@@ -412,22 +413,6 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
     return 0;
 }
 
-/* Does window w hold every triangle at the corners of its triangle c (no triangle at a corner
- * has an outside neighbour across an edge at it: the fan is closed or ends at the mesh
- * boundary)? Then s48c_counts' star test on c sees all of c's star. */
-static int s48c_fans(const s48_win *w, uint32_t c)
-{
-    static const uint8_t s48c_at[3][2] = {{1u, 2u}, {0u, 1u}, {0u, 2u}}; /* slots at c, a, b */
-    uint32_t i, a, b;
-    for (i = 0; i < w->hd[0]; i++)
-        for (a = 0; a < 3u; a++)
-            for (b = 0; b < 3u; b++)
-                if (w->tv[3u * i + a] == w->tv[3u * c + b] &&
-                    (w->tn[3u * i + s48c_at[a][0]] == S48_OUT || w->tn[3u * i + s48c_at[a][1]] == S48_OUT))
-                    return 0;
-    return 1;
-}
-
 /* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
  * window, entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting
  * flags and their corners' finest positions) refined breadth first down to max_level as the
@@ -440,8 +425,9 @@ static int s48c_fans(const s48_win *w, uint32_t c)
  * (m; b, c) of (c; a, b)). Then every vertex the subtree creates is tested against every
  * counting node above it: the walk's counting ancestors (their interpolant brought down to
  * r) and the tile's counting nodes: the same pairs as the depth-first walk tests, so the
- * same answer. 1 beyond, 0 within, -1 failure; loose (r is not its window's current triangle): -2 when
- * the window misses part of a depth-S48C_M node's star or a corner is not exact. */
+ * same answer. 1 beyond, 0 within, -1 failure; loose (r is not its window's current
+ * triangle): -2 when the window misses part of a depth-S48C_M node's star or a corner is not
+ * exact (the caller then rebuilds r's own windows). */
 static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose)
 {
     const uint32_t m = s->levels - j, up = j - k; /* up: the walk's nodes above r */
@@ -449,7 +435,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     const s48_win *p = &w;
     uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
     uint16_t *tn = s48c_tn(s);
-    uint8_t *tf = s48c_tf(s);
+    uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
     subd_sr48_lin *st = s48c_lin(s);
     /* A: the level windows j + 1 (m = 2: two children, a level window's crop) or j + 1 and
      * j + 2 (m >= 3: the tile window's layout, which fits two level windows: sr48_stream.c),
@@ -489,11 +475,38 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     else if (m == 2u) s48_lev(s, j + 1u, &a);
     for (step = 0; step < m; step++) {
         const uint32_t d = up + step;
+        if (d == S48C_M) {
+            /* s48c_counts' star test for all of them at once: per vertex of p, 1 when it is
+             * a corner of one of F(D)'s triangles of this level, 2 when a triangle at it has
+             * an outside neighbour across an edge at it (its fan is not all in p: a loose
+             * tile's window may miss part of a star) */
+            for (i = 0; i < p->hd[1]; i++) vm[i] = 0;
+            for (i = 0; i < p->hd[0]; i++) {
+                const uint16_t *tv = p->tv + 3u * i;
+                if (s48c_has(s, S48C_M, s48_key(p, i), 1u)) {
+                    vm[tv[0]] |= 1u;
+                    vm[tv[1]] |= 1u;
+                    vm[tv[2]] |= 1u;
+                }
+                for (u = 0; u < 3u; u++) /* slot u's ends: (a, b), (c, a), (b, c) */
+                    if (p->tn[3u * i + u] == S48_OUT) {
+                        vm[tv[u == 0u ? 1u : u == 1u ? 0u : 2u]] |= 2u;
+                        vm[tv[u == 0u ? 2u : u == 1u ? 1u : 0u]] |= 2u;
+                    }
+            }
+        }
         for (q = 0; q < n; q++) {
             h = n + q;
-            if (loose && d == S48C_M && !s48c_fans(p, lo + q)) return -2;
-            if (d <= S48C_M) tf[h] = (uint8_t)s48c_counts(s, k, j + step, p, lo + q);
-            else tf[h] = step == 0u ? 1u : tf[h >> 1];
+            if (d == S48C_M) {
+                const uint16_t *tv = p->tv + 3u * (lo + q);
+                const uint32_t mv = (uint32_t)vm[tv[0]] | vm[tv[1]] | vm[tv[2]];
+                if (loose && (mv & 2u)) return -2;
+                tf[h] = (uint8_t)(mv & 1u);
+            } else if (d < S48C_M) {
+                tf[h] = (uint8_t)s48c_counts(s, k, j + step, p, lo + q);
+            } else {
+                tf[h] = step == 0u ? 1u : tf[h >> 1];
+            }
         }
         if (step == 0u && m >= 2u) { /* r and its two rings only (the window's invariant) */
             if (!subd_s48_crop_n_(s, &w, r, 1u, &a, ct, cv)) return -1;

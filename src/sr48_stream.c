@@ -169,10 +169,11 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
                   : 0;
         /* then CHORD's tile: its interpolant stack (9 subd_sr48_lin per level, 8 bytes each
          * reserved in both arithmetics), 3 corners and a flag per node of a tile of mc levels
-         * (heap order); carved by sr48_chord_walk.c (s48c_lin) */
+         * (heap order), a byte per vertex of a parent window; carved by sr48_chord_walk.c
+         * (s48c_lin) */
         subd_real *cp = chord ? subd_layout_take(&y, 1u,
                                                  SUBD_SR48_SA_(12u * (levels + 4u + S48C_NC)) + 72u * (mc + 1u) +
-                                                     (12u << mc) + (2u << mc))
+                                                     (12u << mc) + (2u << mc) + pv)
                               : 0;
         uint32_t *ckw = ckc ? subd_layout_take(&y, 2u * (levels + 1u) + nlev, 4u) : 0;
         if (s) {

@@ -361,11 +361,17 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   split, and every vertex of level <= max_level lies within eps of the streamed mesh
  *   (Q16.16: eps + 2^-16, as subd_sr48_extract). It is not subd_sr48_extract(CHORD)'s cut
  *   but contains it: measured 1.000x its faces on the test shapes, 1.15x (eps 0.002) and
- *   1.08x (eps 5e-4) on spot at 6 steps. Each decision walks the subtrees under D's star that may hold a triangle of
- *   S(D) down to max_level with the windows of the deeper levels: O(window * (max_level - k)
- *   * 2^(max_level - k)) per star triangle, measured 166 s of CPU on spot at 6 steps and
- *   eps 0.002, against 0.21 s for subd_sr48_build + subd_sr48_extract(CHORD) (bench -s
- *   sr48chord reports the same-run ratio).
+ *   1.08x (eps 5e-4) on spot at 6 steps. Each decision searches the subtrees under D's
+ *   star that may hold a triangle of S(D) down to max_level: the last
+ *   SUBD_SR48_STREAM_CHORD_TILE_ levels of each breadth first (a tile: one refinement of
+ *   the root's descendants and their rings per level), coarser levels depth first with the
+ *   windows of the deeper levels; each tile root's deviations (E > eps per node) and each
+ *   diamond's answer are kept (exact: functions of the triangle), so a tile is mostly
+ *   computed once for the decisions of its neighbours. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_)
+ *   per tile; measured (host CPU, subd sr48 --stream --chord): spot 6 steps eps 0.002 about
+ *   11 s against 0.4 s for subd_sr48_build + subd_sr48_extract(CHORD) (0.5.0: 166 s), the
+ *   icosahedron 9 steps eps 0.01 0.3 s (before the tiles: 2.6 s); bench -s sr48chord reports the
+ *   same-run ratio.
  *   Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
@@ -466,21 +472,46 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
     (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
-/* The plan of CHORD: the uniform plan plus the subtree walk's state (per level: the node,
- * its child state, its corners' sources and whether it counts, 6 words; the star's keys,
- * 2 words per window triangle), the decided diamond's descendant diamonds of its first
- * SUBD_SR48_STREAM_CHORD_EXACT_ levels below (at most 2 * 4^j triangles j levels down, 3
- * words each, and a count per level; src/sr48_chord.c), the walk's finest positions
- * (3 subd_reals per level + 4) and a cache of finest positions
- * (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3 subd_reals;
- * src/sr48_chord_walk.c). */
+/* The plan of CHORD: the adaptive modes' level windows and a refined window sized for the
+ * tiles of SUBD_SR48_STREAM_CTM_(L) levels (twice SUBD_SR48_STREAM_TT_ triangles; the tile
+ * window itself lives in two level windows, free below the tile's root), plus the subtree
+ * walk's state (per level: the node, its child state, its corners' sources and whether it
+ * counts, 6 words; the star's keys, 2 words per window triangle), the decided diamond's
+ * descendant diamonds of its first SUBD_SR48_STREAM_CHORD_EXACT_ levels below (at most
+ * 2 * 4^j triangles j levels down, 3 words each, and a count per level; src/sr48_chord.c),
+ * a cache of finest positions (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3
+ * subd_reals), the answers of SUBD_SR48_STREAM_CHORD_DECIDED_ diamonds (2 words each), the
+ * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (4 words each), the walk's
+ * finest positions (3 subd_reals per level + 4) and the tile's nodes (3 corners, 6 bytes,
+ * and a flag per node of a tile of m levels: 2^(m + 1) nodes), interpolants (9 per level,
+ * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..5, default
+ * 5: a tile's node masks are words): 4 measured 1.4x the instructions of 5 on the
+ * icosahedron at 9 steps and saves 1 344 bytes at (8, 16); 6 would need a third level
+ * window for the tile window and 64-bit masks. */
 #define SUBD_SR48_STREAM_CHORD_EXACT_ 3u
 #define SUBD_SR48_STREAM_CHORD_DESC_ (2u * ((1u << (2u * (SUBD_SR48_STREAM_CHORD_EXACT_ + 1u))) - 1u) / 3u)
-#define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
+#define SUBD_SR48_STREAM_CHORD_CACHE_ 128u
+#ifndef SUBD_SR48_STREAM_CHORD_DECIDED_
+#define SUBD_SR48_STREAM_CHORD_DECIDED_ 64u
+#endif
+#ifndef SUBD_SR48_STREAM_CHORD_MASKS_
+#define SUBD_SR48_STREAM_CHORD_MASKS_ 256u
+#endif
+#ifndef SUBD_SR48_STREAM_CHORD_TILE_
+#define SUBD_SR48_STREAM_CHORD_TILE_ 5u
+#endif
+#define SUBD_SR48_STREAM_CTM_(L) \
+    ((uint32_t)(L) < SUBD_SR48_STREAM_CHORD_TILE_ ? SUBD_SR48_MAX_(L, 2u) : SUBD_SR48_STREAM_CHORD_TILE_)
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
-    (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
+    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
+                         SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_CTM_(L)), \
+                         SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L))) + \
+     SUBD_SR48_SA_((12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \
+                   72u * (SUBD_SR48_STREAM_CTM_(L) + 1u) + \
+                   SUBD_SR48_MAX_(SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L)), SUBD_SR48_STREAM_WV_(N))) + \
      SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
-                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_)) + \
+                         1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_ + \
+                         2u * SUBD_SR48_STREAM_CHORD_DECIDED_ + 4u * SUBD_SR48_STREAM_CHORD_MASKS_)) + \
      SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u + SUBD_SR48_STREAM_CHORD_CACHE_)))
 
 /* The 0.3 names (subd_adapt*, SUBD_ADAPT_*; header subd_semireg48.h), kept as aliases

@@ -57,7 +57,12 @@
  * may hold a member (sr48_chord_walk.c, s48c_may) with its windows, finds F(D)'s first M + 1
  * levels from the level-k window's adjacency by the refinement's local neighbour rule
  * (every triangle asked for is under star(D), so in the window), and does not enter a
- * level k + M triangle outside the stars of F(D)'s. Why exact and not an a-priori bound
+ * level k + M triangle outside the stars of F(D)'s. How it is searched changes nothing of
+ * the above: the last SUBD_SR48_STREAM_CHORD_TILE_ levels of a subtree are refined breadth
+ * first (a tile), and the deviations E(d) > eps of a tile's triangles (and of the walk's
+ * ancestors over the tile's subtree) are kept per tile root, the answers per diamond:
+ * functions of the triangle or diamond, not of the decision, so every decision is the one
+ * the exhaustive walk takes (sr48_chord_walk.c). Why exact and not an a-priori bound
  * from the level-k control net (second differences times the box spline's contraction):
  * a rigorous constant needs the contraction at extraordinary vertices, with smoothing on
  * and off, in both arithmetics; not derived (issue 20, item 4).

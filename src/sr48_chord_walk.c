@@ -11,15 +11,34 @@
  * forces D's, S48C_M levels down, then the stars of the deepest of them) has a chordal
  * deviation of subd_sr48_extract's kind above eps. F(D)'s first levels come from the
  * level-k window's adjacency (s48c_desc); S(D) lies under D's star (in the window), whose
- * triangles are walked to max_level with the windows of the levels below (s48_chord_walk:
- * free at the decision; a triangle whose subtree cannot hold a member is skipped,
- * s48c_may); the current triangle is walked in place, another one after rebuilding the
+ * triangles' subtrees are searched to max_level (a triangle whose subtree cannot hold a
+ * member is skipped, s48c_may). The answer is exactly the one of walking every counting
+ * node and testing every vertex below it (same cut, bits and order); what makes it cheaper:
+ *  - tiles (s48c_tile): the last S48C_T levels of a subtree are refined breadth first, as
+ *    the uniform stream's tile (sr48_tile.c), one refinement and crop per level instead of
+ *    one per node, and every node's corners and new vertex are read at max_level from the
+ *    last refined window (no descents); a decision of level k >= max_level - S48C_T tiles
+ *    each star triangle from the current window when it holds what the tile needs (every
+ *    corner exact, the full star at the star test's level: checked), else after rebuilding
+ *    the windows along that triangle's path (s48c_path); a coarser decision walks depth
+ *    first (s48_chord_walk) down to level max_level - S48C_T and tiles there;
+ *  - the interpolants (s48c_sub): each tested node's interpolant is carried down its subtree
+ *    one midpoint step per level (the steps of subd_sr48_chord_beyond_, so the same bits)
+ *    instead of being rebuilt from the node for every vertex;
+ *  - memos, all exact (functions of a key, never of the decision being taken): a tile root's
+ *    deviations (E > eps of each of its nodes, and of each walk ancestor over its subtree:
+ *    whether a node counts depends on the decision, its deviation does not), the answer
+ *    per diamond (asked by both its triangles), finest positions per vertex id.
  *
- * The walk's per-level state, the star's keys and F(D)'s first levels are blocks of the
- * stream's state (s48_state's c* members, sized by sr48_stream.c's layout).
+ * The walk's per-level state, the star's keys, F(D)'s first levels and the memos are blocks
+ * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
+ * window A lives in two level windows below the tile's root, free during a decision).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
+
+/* A tile's node masks are words: its internal nodes 1 .. 2^S48C_T - 1 (s48c_tile). */
+typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 5u ? 1 : -1];
 
 /* The cache of finest positions (S48C_NC entries, direct mapped by id: the ids after cdesc,
  * the positions after cpos, sr48_stream_internal.h): a
@@ -31,7 +50,7 @@ void subd_s48_chord_begin_(s48_state *s)
 {
     uint32_t i;
     uint32_t *cid = s->cdesc + 3u * S48C_ND;
-    for (i = 0; i < 2u * S48C_NC; i++) cid[i] = 0xffffffffu;
+    for (i = 0; i < 2u * (S48C_NC + S48C_ND2) + 4u * S48C_NB; i++) cid[i] = 0xffffffffu;
 }
 
 static uint32_t s48c_slot(uint64_t id)
@@ -39,20 +58,29 @@ static uint32_t s48c_slot(uint64_t id)
     return (uint32_t)(((uint32_t)id ^ (uint32_t)(id >> 32)) * 2654435761u) >> 16 & (S48C_NC - 1u);
 }
 
-/* subd_s48_finest_ through the cache (the same contract; blocks > k and X are clobbered on a
- * miss only, which the callers allow). */
-static int s48c_finest(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
+/* Keeps the finest position p of vertex id in the cache. */
+static void s48c_put(s48_state *s, uint64_t id, const subd_real *p)
 {
     uint32_t e = s48c_slot(id), q, *cid = s->cdesc + 3u * S48C_ND;
     subd_real *cp = s->cpos + 3u * (s->levels + 4u);
+    cid[2u * e] = (uint32_t)id;
+    cid[2u * e + 1u] = (uint32_t)(id >> 32);
+    for (q = 0; q < 3u; q++) cp[3u * e + q] = p[q];
+}
+
+/* subd_s48_finest_ through the cache (the same contract; blocks > k and X are clobbered on a
+ * miss only, which the callers allow). Also the CHORD stream's leaves' corners (sr48_stream.c:
+ * a leaf's triangle was a tile's root when its diamond was decided, which cached them). */
+int subd_s48_chord_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
+{
+    uint32_t e = s48c_slot(id), q, *cid = s->cdesc + 3u * S48C_ND;
+    const subd_real *cp = s->cpos + 3u * (s->levels + 4u);
     if (cid[2u * e] == (uint32_t)id && cid[2u * e + 1u] == (uint32_t)(id >> 32)) {
         for (q = 0; q < 3u; q++) out[q] = cp[3u * e + q];
         return 1;
     }
     if (!subd_s48_finest_(s, k, t, id, out)) return 0;
-    cid[2u * e] = (uint32_t)id;
-    cid[2u * e + 1u] = (uint32_t)(id >> 32);
-    for (q = 0; q < 3u; q++) cp[3u * e + q] = out[q];
+    s48c_put(s, id, out);
     return 1;
 }
 
@@ -327,6 +355,209 @@ static int s48c_test(const s48_state *s, uint32_t k, uint32_t i)
     return 0;
 }
 
+/* CHORD's tile arrays after the finest positions and their cache (sr48_stream.c's layout,
+ * one block): the interpolant stack (9 subd_sr48_lin per level, 8 bytes each reserved),
+ * then 3 corners per node of a tile of SUBD_SR48_STREAM_CTM_(levels) levels (heap order),
+ * then a flag per node. */
+static subd_sr48_lin *s48c_lin(const s48_state *s)
+{
+    return (subd_sr48_lin *)(void *)((uint8_t *)s->cpos + SUBD_SR48_SA_(12u * (s->levels + 4u + S48C_NC)));
+}
+static uint16_t *s48c_tn(const s48_state *s)
+{
+    return (uint16_t *)(void *)((uint8_t *)s48c_lin(s) + 72u * (SUBD_SR48_STREAM_CTM_(s->levels) + 1u));
+}
+static uint8_t *s48c_tf(const s48_state *s) { return (uint8_t *)s48c_tn(s) + (12u << SUBD_SR48_STREAM_CTM_(s->levels)); }
+static uint8_t *s48c_vm(const s48_state *s) { return s48c_tf(s) + (2u << SUBD_SR48_STREAM_CTM_(s->levels)); }
+
+/* One step of subd_sr48_chord_beyond_'s interpolant: the triangle l (apex, b0, b1) to its
+ * child `bit` (0: (m; apex, b0), 1: (m; b1, apex)), m the midpoint of its base: the same
+ * operations in the same order, so the same bits. */
+static void s48c_lin_child(const subd_sr48_lin *l, uint32_t bit, subd_sr48_lin *c)
+{
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        c[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
+        c[3u + i] = bit ? l[6u + i] : l[i];
+        c[6u + i] = bit ? l[i] : l[3u + i];
+    }
+}
+
+/* The tile's subtree of node h0 (heap order in ctn, the internal nodes below n) against one
+ * interpolant, given at h0 in clin[0..8]: the vertex each internal node creates (the apex
+ * of its child 0), pre-order, the interpolant carried down one step per level in clin (as
+ * subd_sr48_chord_beyond_ computes it along the path, so the same bits). 1 beyond, 0 within. */
+static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t n)
+{
+    subd_sr48_lin *st = s48c_lin(s), mid[3];
+    const uint16_t *tn = s48c_tn(s);
+    uint32_t h = h0, d = 0, i, e;
+    for (e = 0; e < n; e++) { /* at most n - 1 nodes, each tested once */
+        const subd_sr48_lin *l = st + 9u * d;
+        for (i = 0; i < 3u; i++) mid[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
+        if (subd_sr48_beyond_(x->vp + 3u * tn[6u * h], mid, s->ad.eps)) return 1;
+        if (2u * h < n) { /* an internal child 0 */
+            s48c_lin_child(l, 0u, st + 9u * (d + 1u));
+            h *= 2u;
+            d++;
+            continue;
+        }
+        while (d > 0u && (h & 1u)) { /* up past the children 1 */
+            h >>= 1;
+            d--;
+        }
+        if (d == 0u) return 0;
+        h++; /* child 0's sibling */
+        s48c_lin_child(st + 9u * (d - 1u), 1u, st + 9u * d);
+    }
+    return 0;
+}
+
+/* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
+ * window, entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting
+ * flags and their corners' finest positions) refined breadth first down to max_level as the
+ * uniform stream's tile (sr48_tile.c: each level cropped to the rings of r's descendants,
+ * a union of the windows the depth-first walk would crop, so every position is exact and
+ * the stream's, checked), in the tile window A and X. Its nodes' counting flags are the
+ * walk's (s48c_counts on the level's window, which holds each descendant's rings; below
+ * level k + S48C_M a node counts iff its ancestor there does); the corners of every node
+ * come bottom up from the level max_level triangles (child 0 = (m; c, a), child 1 =
+ * (m; b, c) of (c; a, b)). Then every vertex the subtree creates is tested against every
+ * counting node above it: the walk's counting ancestors (their interpolant brought down to
+ * r) and the tile's counting nodes: the same pairs as the depth-first walk tests, so the
+ * same answer. 1 beyond, 0 within, -1 failure; loose (r is not its window's current
+ * triangle): -2 when the window misses part of a depth-S48C_M node's star or a corner is not
+ * exact (the caller then rebuilds r's own windows). */
+static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose)
+{
+    const uint32_t m = s->levels - j, up = j - k; /* up: the walk's nodes above r */
+    s48_win w, x, a;
+    const s48_win *p = &w;
+    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
+    uint16_t *tn = s48c_tn(s);
+    uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
+    subd_sr48_lin *st = s48c_lin(s);
+    /* A: the level windows j + 1 (m = 2: two children, a level window's crop) or j + 1 and
+     * j + 2 (m >= 3: the tile window's layout, which fits two level windows: sr48_stream.c),
+     * free below the walk's node (levels < max_level, so they exist) */
+    const uint32_t ct = m >= 3u ? s->at : s->wt, cv = m >= 3u ? s->av : s->wv;
+    uint64_t key;
+    s48_lev(s, j, &w);
+    key = s48_key(&w, r);
+    tag = (uint32_t)(key >> 32) | j << 20;
+    /* r's deviations kept (S48C_NB entries of 4 words after the decided diamonds, direct
+     * mapped by key and level: key low word; key high word | level << 20; bit h set when
+     * the tile's node h deviates by more than eps, E(h) > eps; bit u set when the vertices
+     * r's subtree creates deviate from the interpolant of r's ancestor u levels up, for
+     * u <= the value in bits 24..28). All are functions of r, whatever the decision: a
+     * hit answers unless a deviating node's counting flag needs the star test (level
+     * k + S48C_M), which needs the tile's windows. */
+    mk = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
+         4u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB - 1u));
+    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24) >= up) {
+        for (u = 1; u <= up; u++)
+            if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
+        for (h = 1, dd = 0; h < (1u << m); h++) {
+            if (h == 2u << dd) dd++; /* h's depth below r */
+            if (!((mk[2] >> h) & 1u)) continue;
+            if (up + dd < S48C_M) {
+                if (s48c_has(s, up + dd, (key << dd) | (h - (1u << dd)), 1u)) return 1;
+            } else if (up > S48C_M) {
+                return 1; /* below level k + S48C_M every node of an entered subtree counts */
+            } else {
+                deep = 1;
+            }
+        }
+        if (!deep) return 0;
+    }
+    s48_x(s, &x);
+    if (m >= 3u) s48_win_at(s, s->lev + (j + 1u) * s->lev_size, s->aoff, &a);
+    else if (m == 2u) s48_lev(s, j + 1u, &a);
+    for (step = 0; step < m; step++) {
+        const uint32_t d = up + step;
+        if (d == S48C_M) {
+            /* s48c_counts' star test for all of them at once: per vertex of p, 1 when it is
+             * a corner of one of F(D)'s triangles of this level, 2 when a triangle at it has
+             * an outside neighbour across an edge at it (its fan is not all in p: a loose
+             * tile's window may miss part of a star) */
+            for (i = 0; i < p->hd[1]; i++) vm[i] = 0;
+            for (i = 0; i < p->hd[0]; i++) {
+                const uint16_t *tv = p->tv + 3u * i;
+                if (s48c_has(s, S48C_M, s48_key(p, i), 1u)) {
+                    vm[tv[0]] |= 1u;
+                    vm[tv[1]] |= 1u;
+                    vm[tv[2]] |= 1u;
+                }
+                for (u = 0; u < 3u; u++) /* slot u's ends: (a, b), (c, a), (b, c) */
+                    if (p->tn[3u * i + u] == S48_OUT) {
+                        vm[tv[u == 0u ? 1u : u == 1u ? 0u : 2u]] |= 2u;
+                        vm[tv[u == 0u ? 2u : u == 1u ? 1u : 0u]] |= 2u;
+                    }
+            }
+        }
+        for (q = 0; q < n; q++) {
+            h = n + q;
+            if (d == S48C_M) {
+                const uint16_t *tv = p->tv + 3u * (lo + q);
+                const uint32_t mv = (uint32_t)vm[tv[0]] | vm[tv[1]] | vm[tv[2]];
+                if (loose && (mv & 2u)) return -2;
+                tf[h] = (uint8_t)(mv & 1u);
+            } else if (d < S48C_M) {
+                tf[h] = (uint8_t)s48c_counts(s, k, j + step, p, lo + q);
+            } else {
+                tf[h] = step == 0u ? 1u : tf[h >> 1];
+            }
+        }
+        if (step == 0u && m >= 2u) { /* r and its two rings only (the window's invariant) */
+            if (!subd_s48_crop_n_(s, &w, r, 1u, &a, ct, cv)) return -1;
+            lo = a.hd[3];
+            p = &a;
+        }
+        if (!subd_s48_refine_(s, p, j + step, &x)) return -1;
+        lo *= 2u;
+        n *= 2u;
+        if (step + 1u == m) break;
+        if (!subd_s48_crop_n_(s, &x, lo, n, &a, ct, cv)) return -1;
+        lo = a.hd[3];
+        p = &a;
+    }
+    for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
+        for (i = 0; i < 3u; i++) {
+            const uint16_t v = x.tv[3u * (lo + q) + i];
+            if (!(x.vf[v] & S48_EXACT)) return loose ? -2 : -1;
+            tn[3u * (n + q) + i] = v;
+        }
+    for (h = n - 1u; h >= 1u; h--) {
+        tn[3u * h] = tn[6u * h + 1u];
+        tn[3u * h + 1u] = tn[6u * h + 2u];
+        tn[3u * h + 2u] = tn[6u * h + 4u];
+    }
+    if (up == 0u) /* the root's corners: the leaf's, if its diamond does not split */
+        for (i = 0; i < 3u; i++) s48c_put(s, s48_vid(&x, tn[3u + i]), x.vp + 3u * tn[3u + i]);
+    for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
+        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
+        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+    }
+    for (u = 1, above = 0; u <= up; u++) { /* the walk's nodes above, their interpolant brought down to r */
+        const uint32_t l = j - u;
+        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(s->cpos[3u * s->csrc[3u * l + q / 3u] + q % 3u]);
+        for (i = l; i < j; i++) {
+            s48c_lin_child(st, s->cch[i] - 1u, st + 9);
+            for (q = 0; q < 9u; q++) st[q] = st[9u + q];
+        }
+        if (s48c_sub(s, &x, 1u, n)) above |= 1u << u;
+    }
+    mk[0] = (uint32_t)key;
+    mk[1] = tag;
+    mk[2] = bad;
+    mk[3] = above | up << 24;
+    for (u = 1; u <= up; u++)
+        if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
+    for (h = 1; h < n; h++)
+        if (((bad >> h) & 1u) && tf[h]) return 1;
+    return 0;
+}
+
 /* Is some counting node of triangle ts's subtree (ts of the level-k window, k < levels)
  * beyond eps? Walks the subtree depth first (pre-order, child 0 first) with the windows of
  * levels k+1.. and X (free while level k decides): each node's window is refined, then
@@ -339,12 +570,13 @@ static int s48c_test(const s48_state *s, uint32_t k, uint32_t i)
  * its path from ts, whose corners are all known by then. 1 beyond, 0 within, -1 failure. */
 static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
 {
-    const uint32_t last = s->levels - 1u;
+    const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u; /* the tiles' level */
     s48_win w, x, c;
     uint32_t j = k, q;
+    if (k >= tl) return s48c_tile(s, k, k, ts, 0);
     s48_lev(s, k, &w);
     for (q = 0; q < 3u; q++)
-        if (!s48c_finest(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
+        if (!subd_s48_chord_finest_(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
     s->ccur[k] = ts;
     s->cch[k] = 0;
     for (q = 0; q < 3u; q++) s->csrc[3u * k + q] = q;
@@ -353,29 +585,29 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
         subd_real *pm = s->cpos + 3u * (3u + j);
         s48_lev(s, j, &w);
         s->cfl[j] = s48c_counts(s, k, j, &w, cur);
-        if (s->cfl[j] || j - k > S48C_M || (j - k < S48C_M && s48c_may_at(s, &w, k, j, cur))) {
+        if (!s->cfl[j] && j - k <= S48C_M && (j - k == S48C_M || !s48c_may_at(s, &w, k, j, cur))) {
+            /* not entered */
+        } else if (j == tl) { /* its subtree breadth first (j > k) */
+            const int r = s48c_tile(s, k, j, cur, 0);
+            if (r != 0) return r;
+        } else {
+            uint64_t id;
             s48_x(s, &x);
             if (!subd_s48_refine_(s, &w, j, &x)) return -1;
             v = x.tv[6u * cur]; /* the node's new vertex */
-            if (j < last) {
-                uint64_t id = s48_vid(&x, v);
-                s48_lev(s, j + 1u, &c);
-                if (!subd_s48_crop_(s, &x, 2u * cur, &c) || c.hd[3] == S48_OUT) return -1;
-                /* its finest position: a descent from child 0 (blocks > j + 1 and X; child
-                 * 0's walk rebuilds them from block j + 1) */
-                if (!s48c_finest(s, j + 1u, c.hd[3], id, pm)) return -1;
-                s->cch[j] = 1u; /* in child 0 while its new vertex is tested */
-                if (s48c_test(s, k, j)) return 1;
-                j++;
-                s->ccur[j] = c.hd[3];
-                s->cch[j] = 0;
-                s48c_child(s, j, 0);
-                continue;
-            }
-            /* a leaf node: its new vertex is at the finest level in X */
-            if (!(x.vf[v] & S48_EXACT)) return -1;
-            for (q = 0; q < 3u; q++) pm[q] = x.vp[3u * v + q];
+            id = s48_vid(&x, v);
+            s48_lev(s, j + 1u, &c);
+            if (!subd_s48_crop_(s, &x, 2u * cur, &c) || c.hd[3] == S48_OUT) return -1;
+            /* its finest position: a descent from child 0 (blocks > j + 1 and X; child 0's
+             * walk rebuilds them from block j + 1) */
+            if (!subd_s48_chord_finest_(s, j + 1u, c.hd[3], id, pm)) return -1;
+            s->cch[j] = 1u; /* in child 0 while its new vertex is tested */
             if (s48c_test(s, k, j)) return 1;
+            j++;
+            s->ccur[j] = c.hd[3];
+            s->cch[j] = 0;
+            s48c_child(s, j, 0);
+            continue;
         }
         /* up to the deepest node whose child 1 is not walked yet */
         for (;;) {
@@ -401,27 +633,48 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
  * leaf, -1 failure. */
 int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
 {
+    const uint32_t tiled = k + S48C_T >= s->levels; /* every star triangle is one tile */
     s48_win w;
-    uint32_t vs[4], nv = 3, i, j, q, ns = 1, moved = 0;
-    uint64_t cur, have;
+    uint32_t vs[4], nv = 3, i, j, q, ns = 1, moved = 0, *dc, tag;
+    uint64_t cur, have, dk;
     int r = 0;
     uint16_t nb;
-    if (!s48c_desc(s, k, t)) return -1;
     s48_lev(s, k, &w);
     nb = w.tn[3u * t];
     cur = s48_key(&w, t);
+    /* the decided diamonds (S48C_ND2 entries after the finest positions' ids, direct mapped
+     * by the diamond's lower key and level: key low word, then key high word | level << 20
+     * | the answer << 31; global keys are below 2^44): the answer is a function of the
+     * diamond, S(D), whichever of its triangles asks, so a hit gives the walk's answer */
+    dk = s48_local(nb) && s48_key(&w, nb) < cur ? s48_key(&w, nb) : cur;
+    tag = (uint32_t)(dk >> 32) | k << 20;
+    dc = s->cdesc + 3u * S48C_ND + 2u * S48C_NC +
+         2u * ((((uint32_t)dk ^ tag) * 2654435761u) >> 16 & (S48C_ND2 - 1u));
+    if (dc[0] == (uint32_t)dk && (dc[1] & 0x7fffffffu) == tag) return (int)(dc[1] >> 31);
+    if (!s48c_desc(s, k, t)) return -1;
     have = cur;
     for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
     s->ckey[0] = (uint32_t)cur;
     s->ckey[1] = (uint32_t)(cur >> 32);
-    for (i = 0; i < w.hd[0]; i++) {
+    if (tiled && (r = s48c_tile(s, k, k, t, 0)) < 0) return -1; /* t in place */
+    for (i = 0; i < w.hd[0] && r == 0; i++) {
         int touch = 0;
         if (i == t) continue;
         for (j = 0; j < 3u; j++)
             for (q = 0; q < nv; q++)
                 if (w.tv[3u * i + j] == vs[q]) touch = 1;
         if (!touch || !s48c_may(s, &w, k, i)) continue;
+        if (tiled) {
+            /* first from t's window, as it is (s48c_tile checks that it holds what the
+             * tile needs); else after rebuilding the windows along i's path, below */
+            const int ri = s48c_tile(s, k, k, i, 1);
+            if (ri == -1) return -1;
+            if (ri >= 0) {
+                r = ri;
+                continue;
+            }
+        }
         {
             const uint64_t ki = s48_key(&w, i);
             s->ckey[2u * ns] = (uint32_t)ki;
@@ -429,7 +682,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
         }
         ns++;
     }
-    for (i = 0; i < ns && r == 0; i++) {
+    for (i = tiled ? 1u : 0u; i < ns && r == 0; i++) {
         uint64_t key = ((uint64_t)s->ckey[2u * i + 1u] << 32) | s->ckey[2u * i];
         if (i == 0u) {
             r = s48_chord_walk(s, k, t);
@@ -443,5 +696,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
         if (r < 0) return -1;
     }
     if (moved && !s48c_path(s, cur, have, k)) return -1;
+    dc[0] = (uint32_t)dk;
+    dc[1] = tag | (uint32_t)r << 31;
     return r;
 }

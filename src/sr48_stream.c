@@ -58,6 +58,14 @@ typedef char s48_local_fits[SUBD_SR48_STREAM_WT_(SUBD_SR48_STREAM_MAX_VALENCE) <
                                     SUBD_SR48_MAX_STEPS <= 16u && 9u + SUBD_SR48_MAX_STEPS - 1u <= S48_IDS
                                 ? 1
                                 : -1];
+/* CHORD's tile window (sr48_chord_walk.c, s48c_tile) lives in two free level windows: its
+ * capacities exceed a level window's by amounts that do not depend on the valence, so the
+ * least valence counted (8) is the tightest case. */
+typedef char s48c_tile_fits[SUBD_SR48_WIN_(SUBD_SR48_STREAM_TT_(8u, SUBD_SR48_STREAM_CHORD_TILE_),
+                                           SUBD_SR48_STREAM_TV_(8u, SUBD_SR48_STREAM_CHORD_TILE_)) <=
+                                    2u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u))
+                                ? 1
+                                : -1];
 
 /* ------------------------------------------------------------------------------------ */
 /* Capacities and layout                                                                  */
@@ -115,12 +123,16 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
                       uint8_t **ring, uint32_t *bytes)
 {
     subd_layout y;
-    const uint32_t m = s48_tile_levels(levels, !nl && !chord), tile = m > 1u;
+    /* CHORD: its tiles (sr48_chord_walk.c, up to mc levels breadth first) keep their tile
+     * window A in the free level windows below the tile's root, X is sized for them */
+    const uint32_t m = s48_tile_levels(levels, !nl && !chord), mc = chord ? SUBD_SR48_STREAM_CTM_(levels) : 0u;
+    const uint32_t tile = m > 1u;
     const uint32_t dl = levels >= m ? levels - m : 0u, ckc =
         !nl && !chord && dl > SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
     const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
-    uint32_t at = tile ? SUBD_SR48_STREAM_TT_(valence, m) : ct, av = tile ? SUBD_SR48_STREAM_TV_(valence, m) : cv;
+    uint32_t at = m > 1u ? SUBD_SR48_STREAM_TT_(valence, m) : chord ? SUBD_SR48_STREAM_TT_(valence, mc) : ct;
+    uint32_t av = m > 1u ? SUBD_SR48_STREAM_TV_(valence, m) : chord ? SUBD_SR48_STREAM_TV_(valence, mc) : cv;
     /* X: twice the larger parent's triangles; its vertices: the parent's (pv) and at most one
      * new one per parent triangle (a diamond's vertex is made once, by its lower triangle) */
     uint32_t mt = at > ct ? at : ct, pv = av > cv ? av : cv, xv = pv + mt;
@@ -161,9 +173,18 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         uint32_t *lgv = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *lgvt = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *ci =
-            chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC, 4u)
+            chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC + 2u * S48C_ND2 +
+                                           4u * S48C_NB,
+                                       4u)
                   : 0;
-        subd_real *cp = chord ? subd_layout_take(&y, 3u * (levels + 4u + S48C_NC), (uint32_t)sizeof(subd_real)) : 0;
+        /* then CHORD's tile: its interpolant stack (9 subd_sr48_lin per level, 8 bytes each
+         * reserved in both arithmetics), 3 corners and a flag per node of a tile of mc levels
+         * (heap order), a byte per vertex of a parent window; carved by sr48_chord_walk.c
+         * (s48c_lin) */
+        subd_real *cp = chord ? subd_layout_take(&y, 1u,
+                                                 SUBD_SR48_SA_(12u * (levels + 4u + S48C_NC)) + 72u * (mc + 1u) +
+                                                     (12u << mc) + (2u << mc) + pv)
+                              : 0;
         uint32_t *ckw = ckc ? subd_layout_take(&y, 2u * (levels + 1u) + nlev, 4u) : 0;
         if (s) {
             s->l0 = l0;
@@ -299,7 +320,8 @@ static int s48_emit_leaf(s48_state *s, uint32_t k, uint32_t t, subd_stream_q *q,
     s48_lev(s, k, &w);
     for (j = 0; j < 3u; j++) id[j] = s48_vid(&w, w.tv[3u * t + j]);
     for (j = 0; j < 3u; j++)
-        if (!subd_s48_finest_(s, k, t, id[j], p[j])) return 0;
+        if (!(s->ad.mode == SUBD_SR48_ADAPT_CHORD ? subd_s48_chord_finest_ : subd_s48_finest_)(s, k, t, id[j], p[j]))
+            return 0;
     o = (subd_tri *)subd_stream_q_put(q);
     if (!o) return 0;
     for (j = 0; j < 3u; j++) {

@@ -30,6 +30,9 @@
 #define S48C_M SUBD_SR48_STREAM_CHORD_EXACT_ /* CHORD: levels of exact descendants (sr48_chord.c) */
 #define S48C_ND SUBD_SR48_STREAM_CHORD_DESC_  /* CHORD: their capacity, triangles              */
 #define S48C_NC SUBD_SR48_STREAM_CHORD_CACHE_ /* CHORD: cached finest positions (a power of 2) */
+#define S48C_T SUBD_SR48_STREAM_CHORD_TILE_  /* CHORD: levels refined breadth first (a tile) */
+#define S48C_ND2 SUBD_SR48_STREAM_CHORD_DECIDED_ /* CHORD: decided diamonds kept (a power of 2) */
+#define S48C_NB SUBD_SR48_STREAM_CHORD_MASKS_ /* CHORD: tiles' deviation masks kept (a power of 2) */
 
 /* Local keys and ids (one word each; s48_key and s48_vid give the global 64-bit ones). A
  * level-k triangle's local key is i0 * 2^k + its child path below its level-0 ancestor, i0
@@ -104,7 +107,8 @@ typedef struct s48_state {
     uint32_t *ccur, *cch, *csrc, *cfl, *ckey, *cdn, *cdesc;
     subd_real *cpos; /* finest positions: the walked triangle's corners, then one per level */
     /* (the cache of finest positions, sr48_chord_walk.c: S48C_NC ids after cdesc's 3 S48C_ND
-     * words, their positions after cpos's 3 (levels + 4) subd_reals) */
+     * words, their positions after cpos's 3 (levels + 4) subd_reals; then the tile's
+     * interpolant stack, node corners and flags, sr48_chord_walk.c's s48c_lin) */
     /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels
      * c, 2c, .. (c = SUBD_SR48_STREAM_CKPT_) above the tile keep a window each, the levels
      * between and level 0 share c - 1 slots (s48_slot) and are rebuilt from their checkpoint
@@ -213,5 +217,7 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop);
 int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t);
 /* Empties CHORD's cache of finest positions (sr48_chord_walk.c); at the stream's begin. */
 void subd_s48_chord_begin_(s48_state *s);
+/* subd_s48_finest_ through CHORD's cache of finest positions (sr48_chord_walk.c). */
+int subd_s48_chord_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out);
 
 #endif

@@ -85,6 +85,12 @@ typedef struct subd_sr48 {
      * child 1 of hyb_base_nb[H] across leg 1; 2H+1 has child 0 of hyb_base_nb[H] across
      * leg 0 and the sibling across leg 1 (the rule of every later level). */
     uint32_t *hyb_base_nb;
+    /* the base mesh only (0 from subd_sr48_build): the valence subd_sr48_stream sizes its
+     * windows with - the largest valence (at least 8), or more where level-0 neighbourhoods
+     * are denser than the windows of that valence hold (several extraordinary vertices
+     * within two rings of each other, as in decimated scans). Pass it to
+     * SUBD_SR48_STREAM_BYTES and its siblings for a static buffer. */
+    uint32_t stream_valence;
 } subd_sr48;
 
 /* Cluster count argument of subd_sr48_plan when it is not known. */

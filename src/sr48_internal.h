@@ -34,7 +34,8 @@ typedef struct sr48_layout {
     uint32_t a_bytes;   /* find_clusters: edge numbering and sort                          */
     uint32_t b_bytes;   /* hybrid subdivision, level 0 and its smoothing, step 0 -> 1       */
     uint32_t s_bytes;   /* largest smoothing sums of a later double step                   */
-    uint32_t bytes;     /* the plan: out + max(a, b, s)                                    */
+    uint32_t c_bytes;   /* the base mesh: the census of its level-0 windows (sr48_census.c) */
+    uint32_t bytes;     /* the plan: out + max(a, b, s, c)                                 */
 } sr48_layout;
 
 /* Pre-processing working memory (sr48_pre.c). */
@@ -110,5 +111,13 @@ int subd_sr48_beyond_(const subd_real *p, const subd_sr48_lin *l, subd_real eps)
  * path: the child taken at step s, 0 = (m; apex, b0), 1 = (m; b1, apex))? n = 0: v is d's
  * own new vertex (the midpoint of its base). 1 beyond, 0 within. */
 int subd_sr48_chord_beyond_(const subd_real *c, uint32_t path, uint32_t n, const subd_real *p, subd_real eps);
+
+/* The census of the base's level-0 windows (sr48_census.c): its scratch bytes, and the
+ * valence the stream sizes its windows with (0 when the arena lacks the scratch). */
+uint32_t subd_s48_census_bytes_(uint32_t nv0, uint32_t nt0);
+uint32_t subd_s48_census_(subd_arena *a, const subd_sr48 *b);
+/* The fan of base vertex x from base triangle t (sr48_window.c): its triangles into out (at
+ * most cap), their count, or UINT32_MAX beyond cap. */
+uint32_t subd_s48_fan_(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap);
 
 #endif

@@ -142,8 +142,9 @@ static int sr48_layout_calc(const subd_mesh *in, const subd_sr48_opts *o, uint32
             uint32_t sb = sums_bytes(L->level_verts[k - 1u]);
             if (sb > L->s_bytes) L->s_bytes = sb;
         }
+    L->c_bytes = keep_hnb ? subd_s48_census_bytes_(L->level_verts[0], L->level_tri[1]) : 0u;
     L->bytes = L->out_bytes;
-    subd_bytes_add(&L->bytes, subd_bytes_max(L->a_bytes, subd_bytes_max(L->b_bytes, L->s_bytes)));
+    subd_bytes_add(&L->bytes, subd_bytes_max(subd_bytes_max(L->a_bytes, L->c_bytes), subd_bytes_max(L->b_bytes, L->s_bytes)));
     if (L->bytes == UINT32_MAX) return subd_fail(d, SUBD_ERR_TOO_BIG);
     return SUBD_OK;
 }
@@ -347,6 +348,7 @@ static int sr48_build_impl(subd_arena *a, const subd_mesh *in, const subd_sr48_o
     for (k = 0; k <= SUBD_SR48_MAX_STEPS + 1u; k++) h.level_tri[k] = L.level_tri[k];
     h.num_clusters = L.clusters;
     h.num_isolated = L.isolated;
+    h.stream_valence = 0;
     if ((st = sr48_out_layout(a, &L, &h, &bytes)) != SUBD_OK) return subd_entry_fail(&e, st);
 
     /* pre-processing: phase A (find_clusters again, above the output), phase B */
@@ -365,6 +367,10 @@ static int sr48_build_impl(subd_arena *a, const subd_mesh *in, const subd_sr48_o
     if (st == SUBD_OK && o->steps >= 1u) st = subd_sr48_step(&h, 0, w.hnb, 0, (int)L.smooth);
     if (st != SUBD_OK) return subd_entry_fail(&e, st);
     subd_arena_rewind(a, base);
+    if (keep_hnb) { /* the base mesh: the census of its level-0 windows, for the stream */
+        h.stream_valence = subd_s48_census_(a, &h);
+        subd_arena_rewind(a, base);
+    }
 
     /* binary steps 1 .. steps-1 (step k makes level k+1), smoothing after even levels */
     for (k = 1; k < o->steps; k++) {

@@ -251,6 +251,7 @@ static int s48_check(const subd_sr48 *b, const subd_sr48_stream_opts *o, uint32_
     if (o->adapt.max_level > SUBD_SR48_MAX_STEPS) return SUBD_ERR_PARAM;
     if ((st = subd_s48_base_check_(b)) != SUBD_OK) return st;
     *valence = subd_s48_valence_(b);
+    if (b->stream_valence > *valence) *valence = b->stream_valence; /* the base's census (sr48_census.c) */
     if (*valence > SUBD_SR48_STREAM_MAX_VALENCE) return SUBD_ERR_TOO_BIG;
     if (*valence < 8u) *valence = 8u;
     return SUBD_OK;

@@ -729,3 +729,9 @@ int subd_s48_adapt_box_(s48_state *s)
         s->radius = subd_sr48_default_radius_(s->blo, s->bhi, s->levels);
     return 1;
 }
+
+/* The fan walk for the base's census (sr48_census.c): one walk, s48_fan. */
+uint32_t subd_s48_fan_(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+{
+    return s48_fan(b, x, t, out, cap);
+}

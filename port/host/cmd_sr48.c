@@ -198,10 +198,10 @@ static int sr48_stream(tool_run *r, subd_arena *a, subd_diag *d)
     c->boundary_edges = c->tris_bound ? 0u : (uint64_t)r->in.mesh.num_boundary_edges << r->o.levels; /* a cut: not counted */
     st = tool_stream_write(r, a, &ts, d, &res);
     snprintf(r->extra.json, sizeof r->extra.json,
-             "\"stream\":true,\"stream_arena\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\","
+             "\"stream\":true,\"stream_arena\":%lu,\"stream_valence\":%lu,\"binary_steps\":%lu,\"smoothing\":%s,\"adapt\":\"%s\","
              "\"base_triangles\":%lu,\"faces\":%llu,\"triangles\":%llu,\"uniform_faces\":%llu,"
              "\"saved_faces\":%llu,\"checksum\":\"%08lx\"",
-             (unsigned long)stream_bytes, (unsigned long)r->o.levels, r->o.no_smooth ? "false" : "true",
+             (unsigned long)stream_bytes, (unsigned long)base.stream_valence, (unsigned long)r->o.levels, r->o.no_smooth ? "false" : "true",
              (unsigned)ad.mode < 6u ? mode_name[ad.mode] : "?", (unsigned long)base.level_tri[1],
              (unsigned long long)res.tris, (unsigned long long)res.tris, (unsigned long long)c->tris,
              (unsigned long long)(c->tris - res.tris), (unsigned long)res.hash);

@@ -395,6 +395,14 @@ for bin in "$FLOAT" "$FIXED"; do
         check $? "$(basename "$bin") semireg48 --stream -l $l: semireg48's triangles, arena used = planned"
     done
 done
+# a base whose extraordinary vertices are close (three valence-9 vertices in a triangle): the
+# stream's windows are sized by the base's census (stream_valence above the valence rule's 9 x 2)
+for bin in "$FLOAT" "$FIXED"; do
+    run "$bin" sr48 -l 2 test/data/dense_ico.obj -o "$T/srdm.off"
+    run "$bin" sr48 --stream --stats -l 2 test/data/dense_ico.obj -o "$T/srds.off"
+    is 0 && [ "$(json_num stream_valence)" -gt 8 ] && [ "$(off_faces "$T/srdm.off")" = "$(off_faces "$T/srds.off")" ]
+    check $? "$(basename "$bin") sr48 --stream -l 2 dense_ico: sr48's triangles, stream_valence in --stats"
+done
 run "$FLOAT" semireg48 --stream -l 2 test/data/icosahedron.obj -o "$T/srs.stl"
 is 0 && [ "$(wc -c < "$T/srs.stl")" = $((84 + 50 * 8 * (8 * c + 6 * ti) / 2)) ]
 check $? "semireg48 --stream -o .stl: 84 + 50 bytes per triangle"

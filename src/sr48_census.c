@@ -1,0 +1,121 @@
+/* SPDX-License-Identifier: MIT */
+/* The census of the base mesh's level-0 windows (subd_sr48_base fills subd_sr48's
+ * stream_valence with it; the stream sizes its windows by it: src/sr48_stream.c). Paper:
+ * semi-regular-4-8-refinement-box-splines.txt, section 5 (the base mesh); the windows are
+ * beyond the paper (src/sr48_window.c's header).
+ *
+ * Why. The stream's windows have capacities that are functions of one number N, the valence
+ * (SUBD_SR48_STREAM_WT_(N) = 6 N + 16 triangles, SUBD_SR48_STREAM_WV_(N) = 4 N + 16 vertices
+ * at level 0, the deeper windows and the tile from the same N). Taken as the base's largest
+ * valence, they were measured on meshes whose extraordinary vertices lie apart; a decimated
+ * scan (nefertiti: several valence-9..16 vertices within two rings of each other) has level-0
+ * neighbourhoods above 6 N + 16 and the stream stopped with SUBD_ERR_TOO_BIG. So the base
+ * counts, for every level-0 triangle and every hybrid pair (the uniform window holds both
+ * children of a hybrid triangle), exactly what subd_s48_build0_ will need - the largest
+ * nt + (fan size) while it gathers (a fan is read into the window's free tail before it is
+ * merged) and the final vertex count - and takes the smallest N whose capacities hold the
+ * largest of them, or the largest valence if that is more (at least 8, the capacities'
+ * floor). The deeper windows follow the same N, so they grow with it; that they then fit is
+ * measured, as before (the stream still checks every capacity and every vertex's exactness,
+ * and reports SUBD_ERR_TOO_BIG rather than emit a wrong position).
+ *
+ * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
+ * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
+ * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,
+ * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "sr48_stream_internal.h"
+#include "layout.h"
+
+/* The gathering's rings: the stream's (S48_RINGS). */
+#define S48N_RINGS SUBD_SR48_STREAM_RINGS_
+
+typedef struct s48n_work {
+    const subd_sr48 *b;
+    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan */
+    uint32_t run;
+} s48n_work;
+
+/* The census's scratch (layout.h: counted when a is NULL, carved otherwise). */
+static int s48n_layout(subd_arena *a, uint32_t nv0, uint32_t nt0, s48n_work *w, uint32_t *bytes)
+{
+    subd_layout l;
+    subd_layout_begin(&l, a);
+    w->vs = (uint32_t *)subd_layout_take(&l, nv0, 4u);
+    w->ts = (uint32_t *)subd_layout_take(&l, nt0, 4u);
+    w->qv = (uint32_t *)subd_layout_take(&l, nv0, 4u);
+    w->qt = (uint32_t *)subd_layout_take(&l, nv0, 4u);
+    w->fan = (uint32_t *)subd_layout_take(&l, nt0 + 1u, 4u);
+    return subd_layout_end(&l, bytes);
+}
+
+uint32_t subd_s48_census_bytes_(uint32_t nv0, uint32_t nt0)
+{
+    s48n_work w;
+    uint32_t bytes = 0;
+    (void)s48n_layout(0, nv0, nt0, &w, &bytes);
+    return bytes;
+}
+
+/* One gathering as subd_s48_build0_ does it, from the triangles p0..p1 of the base: the
+ * largest nt + fan size and the vertex count, into *need_t, *need_v (maxima). */
+static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t, uint32_t *need_v)
+{
+    const subd_sr48 *b = w->b;
+    const uint32_t cap = b->level_tri[1] + 1u;
+    uint32_t nt = 0, nv = 0, p, j, q, f;
+    const uint32_t tag = 4u * ++w->run; /* stamp = tag + distance (< 4) */
+    for (p = p0; p <= p1; p++)
+        for (j = 0; j < 3u; j++) {
+            const uint32_t vx = b->tri_vert[3u * p + j];
+            if ((w->vs[vx] & ~3u) == tag) continue;
+            w->vs[vx] = tag;
+            w->qv[nv] = vx;
+            w->qt[nv++] = p;
+        }
+    for (q = 0; q < nv; q++) {
+        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u;
+        uint32_t nf;
+        if (dist >= S48N_RINGS) continue;
+        nf = subd_s48_fan_(b, x, w->qt[q], w->fan, cap);
+        if (nf == UINT32_MAX) nf = cap; /* a broken fan: the stream's check refuses the base */
+        if (nt + nf > *need_t) *need_t = nt + nf;
+        for (f = 0; f < nf && f < cap; f++) {
+            const uint32_t tt = w->fan[f];
+            if (w->ts[tt] == tag) continue;
+            w->ts[tt] = tag;
+            nt++;
+            for (j = 0; j < 3u; j++) {
+                const uint32_t vx = b->tri_vert[3u * tt + j];
+                if ((w->vs[vx] & ~3u) == tag) continue;
+                w->vs[vx] = tag + dist + 1u;
+                w->qv[nv] = vx;
+                w->qt[nv++] = tt;
+            }
+        }
+    }
+    if (nv > *need_v) *need_v = nv;
+}
+
+/* The valence the stream sizes its windows with (above); 0 when the arena does not hold
+ * the scratch (subd_sr48_base's plan does). */
+uint32_t subd_s48_census_(subd_arena *a, const subd_sr48 *b)
+{
+    const uint32_t nv0 = b->level_verts[0], nt0 = b->level_tri[1];
+    uint32_t need_t = 0, need_v = 0, t, n, v, bytes;
+    s48n_work w;
+    if (s48n_layout(a, nv0, nt0, &w, &bytes) != SUBD_OK) return 0; /* the plan holds it */
+    w.b = b;
+    w.run = 0;
+    for (v = 0; v < nv0; v++) w.vs[v] = 0;
+    for (t = 0; t < nt0; t++) w.ts[t] = 0;
+    for (t = 0; t + 1u < nt0; t += 2u) {
+        s48n_gather(&w, t, t + 1u, &need_t, &need_v); /* uniform: the hybrid pair */
+        s48n_gather(&w, t, t, &need_t, &need_v);      /* adaptive: one triangle   */
+        s48n_gather(&w, t + 1u, t + 1u, &need_t, &need_v);
+    }
+    v = subd_s48_valence_(b);
+    n = v < 8u ? 8u : v;
+    while (6u * n + 16u < need_t || 4u * n + 16u < need_v) n++;
+    return n;
+}

@@ -415,14 +415,14 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      SUBD_SR48_SA_(4u * (v)) + SUBD_SR48_SA_(v))
 #define SUBD_SR48_MAX_(a, b) ((uint32_t)(a) > (uint32_t)(b) ? (uint32_t)(a) : (uint32_t)(b))
 /* Uniform tiles: the last SUBD_SR48_STREAM_TILE_LEVELS levels (fewer when max_level is
- * smaller) are refined breadth first: the tile window holds the current triangle's
- * descendants one level above max_level with their rings, at most SUBD_SR48_STREAM_TT_(N, m)
- * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). 5 would save
- * 4 680 bytes at L = 16, N = 16 but measured 20-55 % more time on the host (subd semireg48
- * --stream, best of 3: spot 6 / 8 steps +20 / +42 %, icosahedron 12 steps +54 %), so the
- * default stays 6. */
+ * smaller) are refined breadth first: the tile windows hold the current triangle's
+ * descendants with their rings, at most SUBD_SR48_STREAM_TT_(N, m) triangles and
+ * SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels); the tile's windows alternate
+ * between two such blocks (A and X), each refined and cropped in one pass. 7 levels (0.5.0:
+ * 6 with X twice A): 0.74x the instructions of 6 on the icosahedron at 8 steps (callgrind),
+ * in less memory, as every uniform plan is; 8 would be 0.6x but about 5 KB more. */
 #ifndef SUBD_SR48_STREAM_TILE_LEVELS
-#define SUBD_SR48_STREAM_TILE_LEVELS 6u
+#define SUBD_SR48_STREAM_TILE_LEVELS 7u
 #endif
 #define SUBD_SR48_STREAM_TM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_TILE_LEVELS ? SUBD_SR48_MAX_(L, 1u) : SUBD_SR48_STREAM_TILE_LEVELS)
@@ -435,34 +435,48 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + (uint32_t)(tile) * SUBD_SR48_WIN_(at, av) + \
      SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
                          SUBD_SR48_MAX_(av, v)))
-#define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) \
-    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(6u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + \
-     SUBD_SR48_SA_(2u * (mt)) + SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + \
-     2u * SUBD_SR48_SA_(4u * (v)))
+#define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_STREAM_S_(t, v, mt, xv, pv))
+/* The working arrays: smoothing sums' high parts and counts (pv), the crop's distances,
+ * maps (mt, xv) and level 0's window (t, v). */
+#define SUBD_SR48_STREAM_S_(t, v, mt, xv, pv) \
+    (SUBD_SR48_SA_(6u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + SUBD_SR48_SA_(2u * (mt)) + \
+     SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + 2u * SUBD_SR48_SA_(4u * (v)))
+/* Uniform with a tile: nl level windows and two tile windows (A, X) of at, av. */
+#define SUBD_SR48_STREAM_UT_(nl, t, v, at, av) \
+    (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
+     (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + 2u * SUBD_SR48_WIN_(at, av) + \
+     SUBD_SR48_STREAM_S_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
+                         SUBD_SR48_MAX_(av, v)))
 /* Without tiles (the adaptive modes): max(L, 1) level windows. */
 #define SUBD_SR48_STREAM_DFS_BYTES_(L, N) \
     SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
-/* Uniform checkpoints: when more than SUBD_SR48_STREAM_CKPT_ levels lie above the tile's
- * (levels 0..D, D = L - m), every CKPT_-th above 0 keeps its window and the ones between
+/* The levels the uniform walk's tile covers: m + 1 when L > m > 1 (the last level has no
+ * window, sr48_tile.c), else m; the walk's level windows are those of levels 0..D,
+ * D = L - that (the tile's root). */
+#define SUBD_SR48_STREAM_TW_(L) \
+    (SUBD_SR48_STREAM_TM_(L) > 1u && (uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? SUBD_SR48_STREAM_TM_(L) + 1u \
+                                                                          : SUBD_SR48_STREAM_TM_(L))
+/* Uniform checkpoints: when SUBD_SR48_STREAM_CKPT_ levels or more lie above the tile's
+ * root (levels 0..D), every CKPT_-th above 0 keeps its window and the ones between
  * and level 0 share CKPT_ - 1 windows, rebuilt from their checkpoint (level 0: from the base
  * mesh) when the walk returns to them: SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2
  * words per level and one per slot of walk state; otherwise one window per level. */
-#define SUBD_SR48_STREAM_CKPT_ 4u
-#define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TM_(L) : 0u)
+#define SUBD_SR48_STREAM_CKPT_ 3u
+#define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TW_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TW_(L) : 0u)
 #define SUBD_SR48_STREAM_SLOTS_(d) \
-    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u \
+    ((uint32_t)(d) >= SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u \
                                           : (uint32_t)(d) + 1u)
 #define SUBD_SR48_STREAM_BYTES(L, N) \
-    ((SUBD_SR48_STREAM_D_(L) > SUBD_SR48_STREAM_CKPT_ \
+    ((SUBD_SR48_STREAM_D_(L) >= SUBD_SR48_STREAM_CKPT_ \
           ? SUBD_SR48_SA_(4u * (2u * ((uint32_t)(L) + 1u) + SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)))) \
           : 0u) + \
-     SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), \
-                        SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TM_(L) > 1u ? 1u : 0u, \
-                        SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)) \
-                                                     : SUBD_SR48_STREAM_WT_(N), \
-                        SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L)) \
-                                                     : SUBD_SR48_STREAM_WV_(N)))
+     (SUBD_SR48_STREAM_TM_(L) > 1u \
+          ? SUBD_SR48_STREAM_UT_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), SUBD_SR48_STREAM_WT_(N), \
+                                 SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)), \
+                                 SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L))) \
+          : SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), SUBD_SR48_STREAM_WT_(N), \
+                                SUBD_SR48_STREAM_WV_(N), 0u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))))
 /* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
  * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
  * triangles (the adaptation box lives in the run state). */

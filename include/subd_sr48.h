@@ -330,10 +330,13 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
  *   overflowed: cannot happen within the valence the plan was made for).
- * Cost: uniform: per tile of 2^m triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 6)
- *   m breadth-first refinements of its descendants plus a two-ring margin (about 8 refined
- *   and 11 cropped triangles per output face); adaptive modes: O(window) per internal batch
- *   of 2 triangles (one refinement of the level max_level-1 window, about 60 triangles);
+ * Cost: uniform: per tile of 2^(m+1) triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 7)
+ *   m breadth-first refinements of its descendants plus a two-ring margin, each refined and
+ *   cropped in one pass (on the icosahedron at 8 steps 2.8 refined parent triangles per
+ *   output face, 0.5.0: 4.2), the last window cropped to the descendants' first ring and
+ *   its partners, the last level emitted without a window; adaptive modes: O(window) per
+ *   internal batch of 2 triangles (one refinement of the level max_level-1 window, about
+ *   60 triangles);
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
  *   Measured (uniform): 0.05x / 0.24x / 0.57x the faces/s of subd_sr48_build +
  *   subd_sr48_extract on spot at 2 / 4 / 6 steps, about 4 700 instructions per triangle on
@@ -401,10 +404,10 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
  * overflow ring (2 triangles), the level windows (16 bytes per triangle, 17 per vertex;
- * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
- * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
- * (10 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
- * the crop's and level 0's maps. */
+ * uniform: SUBD_SR48_STREAM_SLOTS_(D) of them - checkpoints, below - and two tile windows,
+ * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1) and the refined window: twice the
+ * triangles, WT + WV vertices), the smoothing sums (6 bytes per vertex of the larger parent
+ * window, level or tile, in both arithmetics), counts (4) and the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
 #define SUBD_SR48_STREAM_WT_(n) (6u * SUBD_SR48_STREAM_N_(n) + 16u)

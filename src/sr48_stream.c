@@ -37,8 +37,9 @@
  * Chordal cuts (CHORD): s48_wants asks subd_s48_chord_wants_ (sr48_chord_walk.c).
  *
  * Memory: the fixed state block, the overflow ring (2 triangles), L window blocks (uniform:
- * L - m + 1, then the tile window), the refined window (twice the triangles of the larger of
- * the two), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
+ * the levels 0..L - tw above the tile, or the checkpoints' slots, then the two tile windows
+ * A and X of the same size), the refined window X otherwise (twice the triangles of a level
+ * window), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
  * star's keys, F(D)'s first levels); all sized by the window capacities of
  * SUBD_SR48_STREAM_BYTES, which depend on the largest valence (and the tile's m) only.
  */
@@ -109,16 +110,17 @@ static int s48_tile_pair(const s48_state *s)
     return s->tm > 1u && s->tm == s->levels;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level
+/* Uniform checkpoints: the window slots of levels 0..d (d >= c), a window per c-th level
  * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
     return d / c + c - 1u;
 }
 
-/* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
- * windows, the tile window A (the current level L-m triangle's descendants at one level
- * below max_level, with their rings) and X of twice A; otherwise levels 0..L-1 and X. */
+/* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-tw in level
+ * windows (or the checkpoints' slots), the tile windows A and X (the current level L-tw
+ * triangle's descendants, at most m levels below it, with their rings; sr48_tile.c);
+ * otherwise levels 0..L-1 and X of twice a level window. */
 static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t nl, uint32_t chord, s48_state **ps,
                       uint8_t **ring, uint32_t *bytes)
 {

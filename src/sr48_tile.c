@@ -6,26 +6,32 @@
  *
  * Uniform tiles: the last tw levels are not walked one triangle at a time (tw =
  * s48_tile_walk: m + 1 when L > m, m = SUBD_SR48_STREAM_TILE_LEVELS, else L): the current
- * level L-tw triangle's window is refined tw - 1 times breadth first, each time but the last
- * cropped to the rings of the set of its descendants at that level (contiguous in the
- * refined window, which is sorted by key); the last refined window X (level L-1) holds its
- * descendants D, and the 2^tw triangles of level L, D's children, are emitted in key order
- * without a level-L window: a child's new vertex is its diamond's midpoint, as
- * subd_s48_refine_ makes it, computed when emitted, and (L even, smoothing) its old corners
- * are smoothed once per tile by subd_s48_last_ with refine's sums restricted to D's corners.
- * So the tile window A holds descendants one level coarser than the walk's deepest, and a
- * tile of m + 1 levels needs A and X of the sizes a tile of m levels with a level-L window
- * needed (the plan is unchanged). When L <= m the tile starts at level 0 and covers both
+ * level L-tw triangle's window is refined tw - 1 times breadth first, each time cropped in
+ * the same pass (subd_s48_refine_crop_) to the rings of the set of its descendants at that
+ * level (contiguous, the windows being sorted by key), alternately into the two tile blocks
+ * A and X so that the last, level L-1, lands in X; X then holds the descendants D, and the
+ * 2^tw triangles of level L, D's children, are emitted in key order without a level-L
+ * window: a child's new vertex is its diamond's midpoint, as subd_s48_refine_ makes it,
+ * computed once per diamond when emitted, and (L even, smoothing) its old corners are
+ * smoothed once per tile by subd_s48_last_ with refine's sums restricted to D's corners
+ * (into A, free by then). The last window needs less than two rings: with L even and
+ * smoothing, the fan of every corner of D and each fan triangle's diamond partner (ring 1
+ * of D and the partners of its triangles: subd_s48_last_'s sums and flags read nothing
+ * else, and ring 1 holds the whole fan of a corner wherever the refined window does), else
+ * D and their partners (the emitted new vertices' diamonds); a kept vertex's position and
+ * flags do not depend on the crop. When L <= m the tile starts at level 0 and covers both
  * base triangles 2H, 2H + 1 of a hybrid pair (adjacent in the level-0 window; 2H's
- * descendants come first in key order). The tile window contains every window the
+ * descendants come first in key order). The tile windows contain every window the
  * depth-first walk would crop for one of the descendants (rings of a union are the union of
  * the rings), so the exactness argument of sr48_window.c carries over, and the triangles and
  * their order are unchanged (every emitted corner's flag is checked). The level-0 window of
  * a uniform stream holds the rings of both children of a hybrid triangle and serves both.
  *
- * The tile window A and the refined window X are blocks of the stream's state; the level
- * windows above L - m are unused while a tile is handed out. A tile's triangles leave in
- * batches as large as the caller's buffer (subd_s48_tile_emit_), the rest at the next step.
+ * A and X are blocks of the stream's state of the same capacities (SUBD_SR48_STREAM_TT_,
+ * _TV_ of m: a tile of m + 1 levels keeps at most the descendants m levels below its root
+ * in a window); the level windows below the tile's root are unused while a tile is handed
+ * out. A tile's triangles leave in batches as large as the caller's buffer
+ * (subd_s48_tile_emit_), the rest at the next step.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"

@@ -605,6 +605,9 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
     uint8_t *d = s->dist;
     uint32_t *cnt = s->cnt;
     uint32_t i, j, nv = nvp, kt = 0, kv = 0, ovf = 0;
+#ifdef S48_DBG
+    s48_dbg[30] += nt; s48_dbg[31]++;
+#endif
     /* X's new vertices as refine numbers them; the smoothing flags (refine's tests) */
     if (sm)
         for (i = 0; i < nvp; i++) cnt[i] = 0;

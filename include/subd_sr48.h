@@ -322,10 +322,10 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * smoothing, open and closed meshes).
  * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
  *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
- *   420 (next 56 + step 264 + refine 96), uniform with checkpoints (max_level >= 11) about
- *   650 (step + rebuild 136 + level 0's window 120 + fan walk 72), plus the caller's; the
- *   push form subd_sr48_stream about 680 (stream 120 + run 200 + step + refine; with
- *   checkpoints about 910) plus the sink's.
+ *   610 (next 56 + step 248 + tile 128 + refine and crop 176), uniform with checkpoints
+ *   (max_level >= 11) about 670 (step + rebuild 136 + level 0's window 160 + fan walk 72),
+ *   plus the caller's; the push form subd_sr48_stream about 790 (stream 120 + run 120 +
+ *   step + tile + refine and crop; with checkpoints about 860) plus the sink's.
  * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
@@ -338,9 +338,10 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   internal batch of 2 triangles (one refinement of the level max_level-1 window, about
  *   60 triangles);
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
- *   Measured (uniform): 0.05x / 0.24x / 0.57x the faces/s of subd_sr48_build +
- *   subd_sr48_extract on spot at 2 / 4 / 6 steps, about 4 700 instructions per triangle on
- *   the Cortex-M4F at 8 steps (bench -s sr48stream, make demo).
+ *   Measured (uniform): on spot 0.4 / 1.0 / 1.7 M faces/s at 2 / 4 / 6 steps, 0.2-0.7x /
+ *   0.5-1.2x / 1.8-2.4x the faces/s of subd_sr48_build + subd_sr48_extract in the same run
+ *   (a loaded host; bench -s sr48stream); 1 914 instructions per triangle on the Cortex-M4F
+ *   at 8 steps (M3 Q16.16: 2 167; 0.5.0: 2 526 / 2 868; make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is

@@ -264,7 +264,8 @@ static void sr48s_tiles(void)
     g_mat = g_big;
     g_mat_bytes = (uint32_t)sizeof g_big;
     for (f = 0; f < 2u; f++) {
-        for (l = 1; l <= 10u; l++) run_case(FX48_TWO, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        for (l = 1; l <= 10u; l++)
+            if (l != 3u) run_case(FX48_TWO, l, f ? SUBD_SR48_NO_SMOOTH : 0u); /* 3: sr48s_uniform (its HASH) */
         run_case(FX48_GRID, 7, f ? SUBD_SR48_NO_SMOOTH : 0u);
         run_case(FX48_ICO, 8, f ? SUBD_SR48_NO_SMOOTH : 0u);
         run_case(FX48_TORUS, 7, f ? SUBD_SR48_NO_SMOOTH : 0u);

@@ -423,8 +423,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * descendants with their rings, at most SUBD_SR48_STREAM_TT_(N, m) triangles and
  * SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels); the tile's windows alternate
  * between two such blocks (A and X), each refined and cropped in one pass. 7 levels (0.5.0:
- * 6 with X twice A): 0.74x the instructions of 6 on the icosahedron at 8 steps (callgrind),
- * in less memory, as every uniform plan is; 8 would be 0.6x but about 5 KB more. */
+ * 6 with X twice A): 0.76x the host instructions of 6 on the icosahedron at 8 steps
+ * (callgrind), in less memory at every (L, N); 8 would be 0.61x but take about 12 KB more
+ * (L = 8 or 16, every N). */
 #ifndef SUBD_SR48_STREAM_TILE_LEVELS
 #define SUBD_SR48_STREAM_TILE_LEVELS 7u
 #endif

@@ -328,22 +328,26 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * smoothing, open and closed meshes).
  * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
  *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
- *   420 (next 56 + step 264 + refine 96), uniform with checkpoints (max_level >= 11) about
- *   650 (step + rebuild 136 + level 0's window 120 + fan walk 72), plus the caller's; the
- *   push form subd_sr48_stream about 680 (stream 120 + run 200 + step + refine; with
- *   checkpoints about 910) plus the sink's.
+ *   610 (next 56 + step 248 + tile 128 + refine and crop 176), uniform with checkpoints
+ *   (max_level >= 11) about 670 (step + rebuild 136 + level 0's window 160 + fan walk 72),
+ *   plus the caller's; the push form subd_sr48_stream about 790 (stream 120 + run 120 +
+ *   step + tile + refine and crop; with checkpoints about 860) plus the sink's.
  * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
  *   overflowed: cannot happen within the valence the plan was made for).
- * Cost: uniform: per tile of 2^m triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 6)
- *   m breadth-first refinements of its descendants plus a two-ring margin (about 8 refined
- *   and 11 cropped triangles per output face); adaptive modes: O(window) per internal batch
- *   of 2 triangles (one refinement of the level max_level-1 window, about 60 triangles);
+ * Cost: uniform: per tile of 2^(m+1) triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 7)
+ *   m breadth-first refinements of its descendants plus a two-ring margin, each refined and
+ *   cropped in one pass (on the icosahedron at 8 steps 2.8 refined parent triangles per
+ *   output face, 0.5.0: 4.2), the last window cropped to the descendants' first ring and
+ *   its partners, the last level emitted without a window; adaptive modes: O(window) per
+ *   internal batch of 2 triangles (one refinement of the level max_level-1 window, about
+ *   60 triangles);
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
- *   Measured (uniform): 0.05x / 0.24x / 0.57x the faces/s of subd_sr48_build +
- *   subd_sr48_extract on spot at 2 / 4 / 6 steps, about 4 700 instructions per triangle on
- *   the Cortex-M4F at 8 steps (bench -s sr48stream, make demo).
+ *   Measured (uniform): on spot 0.4 / 1.0 / 1.7 M faces/s at 2 / 4 / 6 steps, 0.2-0.7x /
+ *   0.5-1.2x / 1.8-2.4x the faces/s of subd_sr48_build + subd_sr48_extract in the same run
+ *   (a loaded host; bench -s sr48stream); 1 914 instructions per triangle on the Cortex-M4F
+ *   at 8 steps (M3 Q16.16: 2 167; 0.5.0: 2 526 / 2 868; make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
@@ -407,10 +411,10 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * 3N + 16 around a vertex of valence N >= 8; the capacities add a margin, and a window that
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
  * overflow ring (2 triangles), the level windows (16 bytes per triangle, 17 per vertex;
- * uniform: SUBD_SR48_STREAM_SLOTS_(L - m) of them - checkpoints, below - and the tile window,
- * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1)), the refined window (twice the triangles, WT + WV vertices), the smoothing sums
- * (10 bytes per vertex of the larger parent window, level or tile, in both arithmetics) and
- * the crop's and level 0's maps. */
+ * uniform: SUBD_SR48_STREAM_SLOTS_(D) of them - checkpoints, below - and two tile windows,
+ * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1) and the refined window: twice the
+ * triangles, WT + WV vertices), the smoothing sums (6 bytes per vertex of the larger parent
+ * window, level or tile, in both arithmetics), counts (4) and the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
 #define SUBD_SR48_STREAM_N_(n) ((uint32_t)(n) < 8u ? 8u : (uint32_t)(n))
 #define SUBD_SR48_STREAM_WT_(n) (6u * SUBD_SR48_STREAM_N_(n) + 16u)
@@ -421,14 +425,15 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      SUBD_SR48_SA_(4u * (v)) + SUBD_SR48_SA_(v))
 #define SUBD_SR48_MAX_(a, b) ((uint32_t)(a) > (uint32_t)(b) ? (uint32_t)(a) : (uint32_t)(b))
 /* Uniform tiles: the last SUBD_SR48_STREAM_TILE_LEVELS levels (fewer when max_level is
- * smaller) are refined breadth first: the tile window holds the current triangle's
- * descendants one level above max_level with their rings, at most SUBD_SR48_STREAM_TT_(N, m)
- * triangles and SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels). 5 would save
- * 4 680 bytes at L = 16, N = 16 but measured 20-55 % more time on the host (subd semireg48
- * --stream, best of 3: spot 6 / 8 steps +20 / +42 %, icosahedron 12 steps +54 %), so the
- * default stays 6. */
+ * smaller) are refined breadth first: the tile windows hold the current triangle's
+ * descendants with their rings, at most SUBD_SR48_STREAM_TT_(N, m) triangles and
+ * SUBD_SR48_STREAM_TV_(N, m) vertices (m the tile's levels); the tile's windows alternate
+ * between two such blocks (A and X), each refined and cropped in one pass. 7 levels (0.5.0:
+ * 6 with X twice A): 0.76x the host instructions of 6 on the icosahedron at 8 steps
+ * (callgrind), in less memory at every (L, N); 8 would be 0.61x but take about 12 KB more
+ * (L = 8 or 16, every N). */
 #ifndef SUBD_SR48_STREAM_TILE_LEVELS
-#define SUBD_SR48_STREAM_TILE_LEVELS 6u
+#define SUBD_SR48_STREAM_TILE_LEVELS 7u
 #endif
 #define SUBD_SR48_STREAM_TM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_TILE_LEVELS ? SUBD_SR48_MAX_(L, 1u) : SUBD_SR48_STREAM_TILE_LEVELS)
@@ -441,34 +446,48 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + (uint32_t)(tile) * SUBD_SR48_WIN_(at, av) + \
      SUBD_SR48_STREAM_X_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
                          SUBD_SR48_MAX_(av, v)))
-#define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) \
-    (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_SA_(6u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + \
-     SUBD_SR48_SA_(2u * (mt)) + SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + \
-     2u * SUBD_SR48_SA_(4u * (v)))
+#define SUBD_SR48_STREAM_X_(t, v, mt, xv, pv) (SUBD_SR48_WIN_(2u * (mt), xv) + SUBD_SR48_STREAM_S_(t, v, mt, xv, pv))
+/* The working arrays: smoothing sums' high parts and counts (pv), the crop's distances,
+ * maps (mt, xv) and level 0's window (t, v). */
+#define SUBD_SR48_STREAM_S_(t, v, mt, xv, pv) \
+    (SUBD_SR48_SA_(6u * (pv)) + SUBD_SR48_SA_(4u * (pv)) + SUBD_SR48_SA_(xv) + SUBD_SR48_SA_(2u * (mt)) + \
+     SUBD_SR48_SA_(4u * (mt)) + SUBD_SR48_SA_(2u * (xv)) + SUBD_SR48_SA_(4u * (t)) + 2u * SUBD_SR48_SA_(4u * (v)))
+/* Uniform with a tile: nl level windows and two tile windows (A, X) of at, av. */
+#define SUBD_SR48_STREAM_UT_(nl, t, v, at, av) \
+    (SUBD_SR48_SA_(SUBD_STREAM_STATE_BYTES) + SUBD_SR48_SA_(2u * (uint32_t)sizeof(subd_tri)) + \
+     (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + 2u * SUBD_SR48_WIN_(at, av) + \
+     SUBD_SR48_STREAM_S_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
+                         SUBD_SR48_MAX_(av, v)))
 /* Without tiles (the adaptive modes): max(L, 1) level windows. */
 #define SUBD_SR48_STREAM_DFS_BYTES_(L, N) \
     SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
-/* Uniform checkpoints: when more than SUBD_SR48_STREAM_CKPT_ levels lie above the tile's
- * (levels 0..D, D = L - m), every CKPT_-th above 0 keeps its window and the ones between
+/* The levels the uniform walk's tile covers: m + 1 when L > m > 1 (the last level has no
+ * window, sr48_tile.c), else m; the walk's level windows are those of levels 0..D,
+ * D = L - that (the tile's root). */
+#define SUBD_SR48_STREAM_TW_(L) \
+    (SUBD_SR48_STREAM_TM_(L) > 1u && (uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? SUBD_SR48_STREAM_TM_(L) + 1u \
+                                                                          : SUBD_SR48_STREAM_TM_(L))
+/* Uniform checkpoints: when SUBD_SR48_STREAM_CKPT_ levels or more lie above the tile's
+ * root (levels 0..D), every CKPT_-th above 0 keeps its window and the ones between
  * and level 0 share CKPT_ - 1 windows, rebuilt from their checkpoint (level 0: from the base
  * mesh) when the walk returns to them: SUBD_SR48_STREAM_SLOTS_(D) level windows, plus 2
  * words per level and one per slot of walk state; otherwise one window per level. */
-#define SUBD_SR48_STREAM_CKPT_ 4u
-#define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TM_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TM_(L) : 0u)
+#define SUBD_SR48_STREAM_CKPT_ 3u
+#define SUBD_SR48_STREAM_D_(L) ((uint32_t)(L) > SUBD_SR48_STREAM_TW_(L) ? (uint32_t)(L) - SUBD_SR48_STREAM_TW_(L) : 0u)
 #define SUBD_SR48_STREAM_SLOTS_(d) \
-    ((uint32_t)(d) > SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u \
+    ((uint32_t)(d) >= SUBD_SR48_STREAM_CKPT_ ? (uint32_t)(d) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u \
                                           : (uint32_t)(d) + 1u)
 #define SUBD_SR48_STREAM_BYTES(L, N) \
-    ((SUBD_SR48_STREAM_D_(L) > SUBD_SR48_STREAM_CKPT_ \
+    ((SUBD_SR48_STREAM_D_(L) >= SUBD_SR48_STREAM_CKPT_ \
           ? SUBD_SR48_SA_(4u * (2u * ((uint32_t)(L) + 1u) + SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)))) \
           : 0u) + \
-     SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), \
-                        SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TM_(L) > 1u ? 1u : 0u, \
-                        SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)) \
-                                                     : SUBD_SR48_STREAM_WT_(N), \
-                        SUBD_SR48_STREAM_TM_(L) > 1u ? SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L)) \
-                                                     : SUBD_SR48_STREAM_WV_(N)))
+     (SUBD_SR48_STREAM_TM_(L) > 1u \
+          ? SUBD_SR48_STREAM_UT_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), SUBD_SR48_STREAM_WT_(N), \
+                                 SUBD_SR48_STREAM_WV_(N), SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_TM_(L)), \
+                                 SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L))) \
+          : SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), SUBD_SR48_STREAM_WT_(N), \
+                                SUBD_SR48_STREAM_WV_(N), 0u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))))
 /* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
  * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
  * triangles (the adaptation box lives in the run state). */

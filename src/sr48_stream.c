@@ -37,8 +37,9 @@
  * Chordal cuts (CHORD): s48_wants asks subd_s48_chord_wants_ (sr48_chord_walk.c).
  *
  * Memory: the fixed state block, the overflow ring (2 triangles), L window blocks (uniform:
- * L - m + 1, then the tile window), the refined window (twice the triangles of the larger of
- * the two), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
+ * the levels 0..L - tw above the tile, or the checkpoints' slots, then the two tile windows
+ * A and X of the same size), the refined window X otherwise (twice the triangles of a level
+ * window), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
  * star's keys, F(D)'s first levels); all sized by the window capacities of
  * SUBD_SR48_STREAM_BYTES, which depend on the largest valence (and the tile's m) only.
  */
@@ -109,16 +110,17 @@ static int s48_tile_pair(const s48_state *s)
     return s->tm > 1u && s->tm == s->levels;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d (d > c), a window per c-th level
+/* Uniform checkpoints: the window slots of levels 0..d (d >= c), a window per c-th level
  * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
     return d / c + c - 1u;
 }
 
-/* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-m in level
- * windows, the tile window A (the current level L-m triangle's descendants at one level
- * below max_level, with their rings) and X of twice A; otherwise levels 0..L-1 and X. */
+/* The one layout of plan and begin (layout.h's walk). Uniform: levels 0..L-tw in level
+ * windows (or the checkpoints' slots), the tile windows A and X (the current level L-tw
+ * triangle's descendants, at most m levels below it, with their rings; sr48_tile.c);
+ * otherwise levels 0..L-1 and X of twice a level window. */
 static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t nl, uint32_t chord, s48_state **ps,
                       uint8_t **ring, uint32_t *bytes)
 {
@@ -126,9 +128,10 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     /* CHORD: its tiles (sr48_chord_walk.c, up to mc levels breadth first) keep their tile
      * window A in the free level windows below the tile's root, X is sized for them */
     const uint32_t m = s48_tile_levels(levels, !nl && !chord), mc = chord ? SUBD_SR48_STREAM_CTM_(levels) : 0u;
-    const uint32_t tile = m > 1u;
-    const uint32_t dl = levels >= m ? levels - m : 0u, ckc =
-        !nl && !chord && dl > SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
+    const uint32_t tile = m > 1u, tw = tile && levels > m ? m + 1u : m; /* s48_tile_walk */
+    /* the deepest level window: L - tw (uniform), L - 1 (otherwise) */
+    const uint32_t dl = levels >= tw ? levels - tw : 0u, ckc =
+        !nl && !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
     const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = m > 1u ? SUBD_SR48_STREAM_TT_(valence, m) : chord ? SUBD_SR48_STREAM_TT_(valence, mc) : ct;
@@ -137,7 +140,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
      * new one per parent triangle (a diamond's vertex is made once, by its lower triangle) */
     uint32_t mt = at > ct ? at : ct, pv = av > cv ? av : cv, xv = pv + mt;
     uint32_t lsz = s48_win_layout(ct, cv, nl, off), asz = tile ? s48_win_layout(at, av, nl, off) : 0u;
-    uint32_t xsz = s48_win_layout(2u * mt, xv, nl, off);
+    /* X: a uniform tile's windows alternate between A and X, each refined and cropped in one
+     * pass (subd_s48_refine_crop_), so X is A's size; otherwise a whole refined window */
+    uint32_t xsz = tile ? asz : s48_win_layout(2u * mt, xv, nl, off);
     s48_state *s;
     subd_layout_begin(&y, a);
     s = subd_layout_take(&y, 1u, SUBD_STREAM_STATE_BYTES);
@@ -152,7 +157,10 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         s->lev_size = lsz;
         (void)s48_win_layout(ct, cv, nl, s->off);
         (void)s48_win_layout(at, av, nl, s->aoff);
-        (void)s48_win_layout(2u * mt, xv, nl, s->xoff);
+        if (tile)
+            (void)s48_win_layout(at, av, nl, s->xoff);
+        else
+            (void)s48_win_layout(2u * mt, xv, nl, s->xoff);
     }
     {
         uint8_t *lev = subd_layout_take(&y, nlev, lsz);
@@ -374,7 +382,7 @@ static int s48_ensure(s48_state *s, uint32_t k)
 {
     const uint32_t *own = s->ckw + 2u * (s->levels + 1u);
     uint32_t j = k;
-    s48_win p, x, c;
+    s48_win p, c;
     while (j > 0u && own[s48_slot(s, j)] != j + 1u) j--;
     if (j == 0u && own[s48_slot(s, 0)] != 1u) {
         /* uniform: the window of t0's hybrid pair, whichever of the two t0 is */
@@ -386,11 +394,9 @@ static int s48_ensure(s48_state *s, uint32_t k)
     }
     for (; j < k; j++) {
         s48_lev(s, j, &p);
-        s48_x(s, &x);
-        if (!subd_s48_refine_(s, &p, j, &x)) return 0;
-        s48_take_slot(s, j + 1u);
+        s48_take_slot(s, j + 1u); /* level j + 1's slot is not level j's */
         s48_lev(s, j + 1u, &c);
-        if (!subd_s48_crop_(s, &x, 2u * p.hd[2], &c)) return 0;
+        if (!subd_s48_refine_crop_(s, &p, j, p.hd[2], 1u, &c, s->wt, s->wv, 0u)) return 0;
         c.hd[2] = s->ckw[2u * (j + 1u)];
         c.hd[5] = s->ckw[2u * (j + 1u) + 1u];
     }
@@ -474,11 +480,9 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
             return stop;
         }
         if (w.hd[5] == 0u) {
-            s48_x(s, &x);
+            if (s->ckw) s48_take_slot(s, s->k + 1u); /* level k + 1's slot is not level k's */
             s48_lev(s, s->k + 1u, &c);
-            if (!subd_s48_refine_(s, &w, s->k, &x)) goto fail;
-            if (s->ckw) s48_take_slot(s, s->k + 1u);
-            if (!subd_s48_crop_(s, &x, 2u * w.hd[2], &c)) goto fail;
+            if (!subd_s48_refine_crop_(s, &w, s->k, w.hd[2], 1u, &c, s->wt, s->wv, 0u)) goto fail;
         } else if (w.hd[5] == 1u && s->ckw && !s48_ensure(s, s->k + 1u)) {
             goto fail;
         }

@@ -131,16 +131,24 @@ static inline void s48_win_at(const s48_state *s, uint8_t *blk, const uint32_t *
     w->vf = blk + off[6];
     w->vl = off[7] != 0u ? (subd_real *)(void *)(blk + off[7]) : 0;
 }
+/* The levels the uniform walk's tile covers (1: no tile): m + 1 when max_level > m, the tile
+ * window A being sized for m levels with a window at the last one, which the walk does not
+ * make (sr48_tile.c), else m. */
+static inline uint32_t s48_tile_walk(const s48_state *s)
+{
+    return s->tm > 1u && s->levels > s->tm ? s->tm + 1u : s->tm;
+}
+
 /* The slot of level k's window (uniform checkpoints: see s48_state's ckw). */
 static inline uint32_t s48_slot(const s48_state *s, uint32_t k)
 {
-    const uint32_t c = SUBD_SR48_STREAM_CKPT_;
+    const uint32_t c = SUBD_SR48_STREAM_CKPT_, tw = s48_tile_walk(s);
     uint32_t nc;
     if (!s->ckw) return k;
-    /* slots 0 .. nc - 1: the checkpoints c, 2c, .. nc c (nc = D / c, D = levels - tm, the
-     * levels above the tile); then c - 1 slots, one per k mod c; level 0 (rebuilt from the
-     * base mesh, no checkpoint) shares the slot of k mod c = c - 1 */
-    nc = (s->levels > s->tm ? s->levels - s->tm : 0u) / c;
+    /* slots 0 .. nc - 1: the checkpoints c, 2c, .. nc c (nc = D / c, D = levels - tw, the
+     * deepest level window the walk makes); then c - 1 slots, one per k mod c; level 0
+     * (rebuilt from the base mesh, no checkpoint) shares the slot of k mod c = c - 1 */
+    nc = (s->levels > tw ? s->levels - tw : 0u) / c;
     if (k % c == 0u && k > 0u) return k / c - 1u;
     return nc - 1u + (k == 0u ? c - 1u : k % c);
 }
@@ -149,14 +157,6 @@ static inline void s48_lev(const s48_state *s, uint32_t k, s48_win *w)
     s48_win_at(s, s->lev + s48_slot(s, k) * s->lev_size, s->off, w);
 }
 static inline void s48_x(const s48_state *s, s48_win *w) { s48_win_at(s, s->xblk, s->xoff, w); }
-
-/* The levels the uniform walk's tile covers (1: no tile): m + 1 when max_level > m, the tile
- * window A being sized for m levels with a window at the last one, which the walk does not
- * make (sr48_tile.c), else m. */
-static inline uint32_t s48_tile_walk(const s48_state *s)
-{
-    return s->tm > 1u && s->levels > s->tm ? s->tm + 1u : s->tm;
-}
 
 /* The global key (T0 * 2^k + path, its index within level k of the hierarchy) of a level-k
  * triangle with local key q. */
@@ -193,6 +193,11 @@ int subd_s48_build0_(s48_state *s, uint32_t t0);
 int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x);
 int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv);
 int subd_s48_crop_(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w);
+/* subd_s48_refine_ of window p (level k) then subd_s48_crop_n_ of the children of p's
+ * triangles c0 .. c0 + n - 1, in one pass without X (the same window w, bit for bit); w is
+ * not p. fin 1, 2: the smaller crops of a tile's last window (sr48_window.c). 0 on failure. */
+int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
+                          uint32_t ct, uint32_t cv, uint32_t fin);
 /* The last level of a uniform tile without its window (sr48_window.c): the smoothed
  * positions at max_level of the corners of x's triangles c0 .. c0 + n - 1 (x: level
  * max_level - 1), into a's vertices by s->vmap. 0 on failure (s->err). */

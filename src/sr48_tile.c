@@ -6,26 +6,32 @@
  *
  * Uniform tiles: the last tw levels are not walked one triangle at a time (tw =
  * s48_tile_walk: m + 1 when L > m, m = SUBD_SR48_STREAM_TILE_LEVELS, else L): the current
- * level L-tw triangle's window is refined tw - 1 times breadth first, each time but the last
- * cropped to the rings of the set of its descendants at that level (contiguous in the
- * refined window, which is sorted by key); the last refined window X (level L-1) holds its
- * descendants D, and the 2^tw triangles of level L, D's children, are emitted in key order
- * without a level-L window: a child's new vertex is its diamond's midpoint, as
- * subd_s48_refine_ makes it, computed when emitted, and (L even, smoothing) its old corners
- * are smoothed once per tile by subd_s48_last_ with refine's sums restricted to D's corners.
- * So the tile window A holds descendants one level coarser than the walk's deepest, and a
- * tile of m + 1 levels needs A and X of the sizes a tile of m levels with a level-L window
- * needed (the plan is unchanged). When L <= m the tile starts at level 0 and covers both
+ * level L-tw triangle's window is refined tw - 1 times breadth first, each time cropped in
+ * the same pass (subd_s48_refine_crop_) to the rings of the set of its descendants at that
+ * level (contiguous, the windows being sorted by key), alternately into the two tile blocks
+ * A and X so that the last, level L-1, lands in X; X then holds the descendants D, and the
+ * 2^tw triangles of level L, D's children, are emitted in key order without a level-L
+ * window: a child's new vertex is its diamond's midpoint, as subd_s48_refine_ makes it,
+ * computed once per diamond when emitted, and (L even, smoothing) its old corners are
+ * smoothed once per tile by subd_s48_last_ with refine's sums restricted to D's corners
+ * (into A, free by then). The last window needs less than two rings: with L even and
+ * smoothing, the fan of every corner of D and each fan triangle's diamond partner (ring 1
+ * of D and the partners of its triangles: subd_s48_last_'s sums and flags read nothing
+ * else, and ring 1 holds the whole fan of a corner wherever the refined window does), else
+ * D and their partners (the emitted new vertices' diamonds); a kept vertex's position and
+ * flags do not depend on the crop. When L <= m the tile starts at level 0 and covers both
  * base triangles 2H, 2H + 1 of a hybrid pair (adjacent in the level-0 window; 2H's
- * descendants come first in key order). The tile window contains every window the
+ * descendants come first in key order). The tile windows contain every window the
  * depth-first walk would crop for one of the descendants (rings of a union are the union of
  * the rings), so the exactness argument of sr48_window.c carries over, and the triangles and
  * their order are unchanged (every emitted corner's flag is checked). The level-0 window of
  * a uniform stream holds the rings of both children of a hybrid triangle and serves both.
  *
- * The tile window A and the refined window X are blocks of the stream's state; the level
- * windows above L - m are unused while a tile is handed out. A tile's triangles leave in
- * batches as large as the caller's buffer (subd_s48_tile_emit_), the rest at the next step.
+ * A and X are blocks of the stream's state of the same capacities (SUBD_SR48_STREAM_TT_,
+ * _TV_ of m: a tile of m + 1 levels keeps at most the descendants m levels below its root
+ * in a window); the level windows below the tile's root are unused while a tile is handed
+ * out. A tile's triangles leave in batches as large as the caller's buffer
+ * (subd_s48_tile_emit_), the rest at the next step.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
@@ -70,18 +76,22 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     uint32_t j, lo = t, n = n0;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
+    /* tw - 1 refinements, each cropped to the rings of t's descendants (subd_s48_refine_crop_),
+     * alternately into A and X so that the last one (level L - 1, twice the descendants of
+     * the one before: X's capacities) lands in X */
     for (j = 0; j + 1u < tw; j++) {
-        if (!subd_s48_refine_(s, p, s->k + j, &x)) return 0;
-        lo *= 2u;
-        n *= 2u;
-        if (j + 2u == tw) break;
-        if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return 0;
+        const uint32_t last = j + 2u == tw;
+        s48_win *o = ((tw - 2u - j) & 1u) ? &a : &x;
+        if (!subd_s48_refine_crop_(s, p, s->k + j, lo, n, o, s->at, s->av,
+                                   !last ? 0u : s->smooth && (s->levels & 1u) == 0u ? 1u : 2u))
+            return 0;
 #ifdef S48_DBG
-        if (a.hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = a.hd[0];
-        if (a.hd[1] > s48_dbg[2u * j + 1u]) s48_dbg[2u * j + 1u] = a.hd[1];
+        if (o->hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = o->hd[0];
+        if (o->hd[1] > s48_dbg[2u * j + 1u]) s48_dbg[2u * j + 1u] = o->hd[1];
 #endif
-        lo = a.hd[3];
-        p = &a;
+        lo = o->hd[3];
+        n *= 2u;
+        p = o;
     }
     if (s->smooth && (s->levels & 1u) == 0u && !subd_s48_last_(s, &x, lo, n, &a)) return 0;
     s->tcur = 2u * lo;
@@ -103,49 +113,57 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
     while (s->tcur < s->tend && !subd_stream_q_full(q)) {
-        const uint32_t i = s->tcur >> 1, ch = s->tcur & 1u;
+        /* X's triangle i: its diamond's new vertex (from the lower triangle), its id and the
+         * level-0 ancestor once for both children */
+        const uint32_t i = s->tcur >> 1;
         const uint16_t *tv = x.tv + 3u * i, nb = x.tn[3u * i];
         const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i; /* the diamond's lower triangle */
         const uint16_t *lv = x.tv + 3u * lt, lnb = x.tn[3u * lt];
-        const uint32_t cv[2] = {ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
-        uint32_t e0 = lv[1], e1 = lv[2], j, k;
+        uint32_t e0 = lv[1], e1 = lv[2], j, k, face;
+        uint64_t idm;
         subd_real mp[3];
-        const subd_real *cp[2];
-        subd_tri *o;
         if (s48_local(lnb) && s->smooth) {
             e0 = lv[0];
             e1 = x.tv[3u * lnb];
         }
         if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
         for (j = 0; j < 3u; j++) mp[j] = subd_mid(x.vp[3u * e0 + j], x.vp[3u * e1 + j], &ovf);
-        for (k = 0; k < 2u; k++) {
-            const uint32_t v = cv[k], u = sm ? s->vmap[v] : v;
-            const s48_win *src = sm ? &a : &x;
-            if (!(src->vf[u] & S48_EXACT)) return 0;
-            cp[k] = src->vp + 3u * u;
-        }
-        if (ovf) {
-            s->err = (uint32_t)(-SUBD_ERR_RANGE);
-            return 0;
-        }
-        o = (subd_tri *)subd_stream_q_put(q);
-        if (!o) return 0;
-        for (j = 0; j < 3u; j++) {
-            o->pos[0][j] = mp[j];
-            o->pos[1][j] = cp[0][j];
-            o->pos[2][j] = cp[1][j];
-            o->normal[0][j] = 0;
-            o->normal[1][j] = 0;
-            o->normal[2][j] = 0;
-        }
-        o->id[0] = id0 + s48_gkey(s, x.key[lt], L - 1u);
-        o->id[1] = s48_vid(&x, cv[0]);
-        o->id[2] = s48_vid(&x, cv[1]);
-        o->face = s->gt[x.key[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
-        o->level = L;
-        *stop = subd_stream_q_commit(q);
-        s->tcur++;
-        if (*stop) return 1;
+        idm = id0 + s48_gkey(s, x.key[lt], L - 1u);
+        face = s->gt[x.key[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
+        do { /* child s->tcur & 1 of i */
+            const uint32_t ch = s->tcur & 1u;
+            const uint32_t cv[2] = {ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
+            const subd_real *cp[2];
+            subd_tri *o;
+            for (k = 0; k < 2u; k++) {
+                const uint32_t v = cv[k], u = sm ? s->vmap[v] : v;
+                const s48_win *src = sm ? &a : &x;
+                if (!(src->vf[u] & S48_EXACT)) return 0;
+                cp[k] = src->vp + 3u * u;
+            }
+            if (ovf) {
+                s->err = (uint32_t)(-SUBD_ERR_RANGE);
+                return 0;
+            }
+            o = (subd_tri *)subd_stream_q_put(q);
+            if (!o) return 0;
+            for (j = 0; j < 3u; j++) {
+                o->pos[0][j] = mp[j];
+                o->pos[1][j] = cp[0][j];
+                o->pos[2][j] = cp[1][j];
+                o->normal[0][j] = 0;
+                o->normal[1][j] = 0;
+                o->normal[2][j] = 0;
+            }
+            o->id[0] = idm;
+            o->id[1] = s48_vid(&x, cv[0]);
+            o->id[2] = s48_vid(&x, cv[1]);
+            o->face = face;
+            o->level = L;
+            *stop = subd_stream_q_commit(q);
+            s->tcur++;
+            if (*stop) return 1;
+        } while ((s->tcur & 1u) && s->tcur < s->tend && !subd_stream_q_full(q));
     }
     return 1;
 }

@@ -562,6 +562,245 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
     return 1;
 }
 
+/* Refine and crop in one pass (the uniform and adaptive walks, the uniform tile): window p
+ * (level k) refined and cropped to the rings of the children of p's triangles c0 .. c0 + n - 1
+ * into window w (capacity ct, cv; w is not p), without the refined window X: the same
+ * triangles in the same order, the same vertex numbering, positions, flags, keys and ids as
+ * subd_s48_refine_ (p into X) then subd_s48_crop_n_ (X's 2 c0 .. 2 (c0 + n) - 1 into w).
+ * The children are numbered as X numbers them (child j of p's triangle i is X's 2 i + j, a
+ * new vertex gets refine's index), the ring distances are found on the children as refine
+ * would make them, and only the kept children are written. A new vertex is computed when it
+ * is kept or (smoothed level) when a kept old vertex sums it: an old vertex's sum takes the
+ * same diamonds in the same order as refine's (the sums of other vertices are not made), so
+ * the same bits, and its flags come from the same tests over the same parent triangles. The
+ * smoothing scratch: counts, the boundary flag and the incomplete flag (S48_RC_INC) in
+ * s->cnt per parent vertex, the sums in w's positions of the kept vertex. A position that
+ * overflows is reported only when computed (each is, in the window where it is kept).
+ * fin: 0 the crop of subd_s48_crop_n_ (S48_RINGS rings); the last window of a uniform tile
+ * (sr48_tile.c) needs less, and keeps a subset of those rings: 1 (level L even, smoothed:
+ * subd_s48_last_ sums the whole fan of every corner of the children D and each fan
+ * triangle's diamond) ring 1 of D and the partners (base neighbours) of its triangles,
+ * 2 (L odd or no smoothing) D and its partners (the emitted new vertices' diamonds); a kept
+ * vertex's position and flags do not depend on the crop, so they are refine's. 0 on
+ * failure (s->err: SUBD_ERR_RANGE; else a capacity). */
+#define S48_RC_BND 0x80000000u
+#define S48_RC_INC 0x40000000u
+#define S48_RC_N 0x3fffffffu
+/* Adds a new vertex (position mp, flags mf) to parent vertex v's sum (in w's vertex u). */
+static void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u, const subd_real *mp,
+                           uint32_t mf, int boundary_ok)
+{
+    uint32_t q;
+    if ((s->cnt[v] & S48_RC_BND) && !boundary_ok) return;
+    for (q = 0; q < 3u; q++) s48_sput(s, w, 3u * u + q, subd_sum_add(s48_sget(s, w, 3u * u + q), mp[q]));
+    s->cnt[v] = (s->cnt[v] + 1u) | ((mf & S48_EXACT) ? 0u : S48_RC_INC);
+}
+int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
+                          uint32_t ct, uint32_t cv, uint32_t fin)
+{
+    const uint32_t nt = p->hd[0], nvp = p->hd[1];
+    const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
+    const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
+    uint16_t *mt = s->mtab, *vm = s->vmap, *tm = s->tmap;
+    uint8_t *d = s->dist;
+    uint32_t *cnt = s->cnt;
+    uint32_t i, j, nv = nvp, kt = 0, kv = 0, ovf = 0;
+#ifdef S48_DBG
+    s48_dbg[30] += nt; s48_dbg[31]++;
+#endif
+    /* X's new vertices as refine numbers them; the smoothing flags (refine's tests) */
+    if (sm)
+        for (i = 0; i < nvp; i++) cnt[i] = 0;
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = p->tv + 3u * i;
+        const uint16_t nb = p->tn[3u * i];
+        if (s48_local(nb) && nb < i) {
+            mt[i] = mt[nb];
+        } else {
+            if (nv >= s->xv) return 0;
+            mt[i] = (uint16_t)nv++;
+        }
+        if (sm) {
+            const uint16_t l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
+            if (nb == S48_BND) {
+                cnt[tv[1]] |= S48_RC_BND;
+                cnt[tv[2]] |= S48_RC_BND;
+            }
+            if (nb == S48_OUT || l0 == S48_OUT) cnt[tv[1]] |= S48_RC_INC;
+            if (nb == S48_OUT || l1 == S48_OUT) cnt[tv[2]] |= S48_RC_INC;
+            if (nb == S48_OUT || l0 == S48_OUT || l1 == S48_OUT) cnt[tv[0]] |= S48_RC_INC;
+        }
+    }
+    /* ring distances on the children (m; c, a), (m; b, c) of every parent (c; a, b) */
+    for (i = 0; i < nv; i++) {
+        d[i] = S48_FAR;
+        vm[i] = S48_OUT;
+    }
+    for (i = c0; i < c0 + n; i++) {
+        d[p->tv[3u * i]] = 0;
+        d[p->tv[3u * i + 1u]] = 0;
+        d[p->tv[3u * i + 2u]] = 0;
+        d[mt[i]] = 0;
+    }
+    if (fin == 0u) {
+        uint32_t r;
+        for (r = 1; r < S48_RINGS; r++)
+            for (i = 0; i < nt; i++) {
+                const uint16_t *tv = p->tv + 3u * i;
+                const uint32_t m = mt[i];
+                uint32_t dm = d[m], dc = d[tv[0]], da = d[tv[1]], db = d[tv[2]], md;
+                md = dm < dc ? dm : dc;
+                if (da < md) md = da;
+                if (md + 1u <= r) { /* child 0: (m; c, a) */
+                    if (dm > r) d[m] = (uint8_t)r;
+                    if (dc > r) d[tv[0]] = (uint8_t)r;
+                    if (da > r) d[tv[1]] = (uint8_t)r;
+                }
+                dm = d[m];
+                dc = d[tv[0]];
+                md = dm < dc ? dm : dc;
+                if (db < md) md = db;
+                if (md + 1u <= r) { /* child 1: (m; b, c) */
+                    if (dm > r) d[m] = (uint8_t)r;
+                    if (db > r) d[tv[2]] = (uint8_t)r;
+                    if (dc > r) d[tv[0]] = (uint8_t)r;
+                }
+            }
+    }
+    /* the kept children in X's order: vertices numbered as met, corners, keys, X's
+     * neighbour indices (renumbered once all are known) */
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = p->tv + 3u * i;
+        const uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
+        const uint16_t m = mt[i];
+        uint32_t ch;
+        for (ch = 0; ch < 2u; ch++) {
+            const uint16_t c3[3] = {m, ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
+            uint16_t n3[3];
+            uint16_t *ov, *on;
+            const uint16_t ln = ch ? l1 : l0; /* the child's base neighbour: a child of ln */
+            uint32_t md = d[c3[0]];
+            if (d[c3[1]] < md) md = d[c3[1]];
+            if (d[c3[2]] < md) md = d[c3[2]];
+            if (fin == 1u) {
+                /* ring 1 and the partners of its triangles: the partner shares the base
+                 * ends c3[1], c3[2], its apex is ln's new vertex */
+                md = md == 0u || (s48_local(ln) && d[mt[ln]] == 0u) ? 0u : S48_FAR;
+            } else if (fin == 2u) { /* the descendants and their partners */
+                md = (i >= c0 && i < c0 + n) || (s48_local(ln) && ln >= c0 && ln < c0 + n) ? 0u : S48_FAR;
+            }
+            if (md + 1u > S48_RINGS) {
+                tm[2u * i + ch] = S48_OUT;
+                continue;
+            }
+            if (kt >= ct) return 0;
+            if (ch == 0u) {
+                n3[0] = s48_local(l0) ? (uint16_t)(2u * l0 + 1u) : l0;
+                n3[1] = (uint16_t)(2u * i + 1u);
+                n3[2] = s48_local(nb) ? (uint16_t)(2u * nb + 1u) : nb;
+            } else {
+                n3[0] = s48_local(l1) ? (uint16_t)(2u * l1) : l1;
+                n3[1] = s48_local(nb) ? (uint16_t)(2u * nb) : nb;
+                n3[2] = (uint16_t)(2u * i);
+            }
+            ov = w->tv + 3u * kt;
+            on = w->tn + 3u * kt;
+            w->key[kt] = 2u * p->key[i] + ch;
+            tm[2u * i + ch] = (uint16_t)kt++;
+            for (j = 0; j < 3u; j++) {
+                const uint16_t v = c3[j];
+                if (vm[v] == S48_OUT) {
+                    if (kv >= cv) return 0;
+                    vm[v] = (uint16_t)kv++;
+                }
+                ov[j] = vm[v];
+                on[j] = n3[j];
+            }
+        }
+    }
+    for (i = 0; i < 3u * kt; i++) {
+        const uint16_t nb = w->tn[i];
+        if (s48_local(nb)) w->tn[i] = tm[nb];
+    }
+    /* the kept old vertices: ids, L; positions and flags, or (smoothed level) zero sums */
+    for (i = 0; i < nvp; i++) {
+        const uint32_t u = vm[i];
+        if (u == S48_OUT) continue;
+        w->vid[u] = p->vid[i];
+        if (w->vl)
+            for (j = 0; j < 3u; j++) w->vl[3u * u + j] = p->vl[3u * i + j];
+        if (sm) {
+            for (j = 0; j < 3u; j++) s48_sput(s, w, 3u * u + j, 0);
+        } else {
+            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = p->vp[3u * i + j];
+            w->vf[u] = p->vf[i];
+        }
+    }
+    /* the new vertices, each from the diamond's lower triangle (refine's rule), when kept
+     * or summed; the sums in refine's order */
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = p->tv + 3u * i;
+        const uint16_t nb = p->tn[3u * i], m = mt[i];
+        const uint32_t um = vm[m];
+        uint32_t e0 = tv[1], e1 = tv[2], mf, u0, u1, u2, u3 = S48_OUT, v3 = 0;
+        subd_real mp[3];
+        if (s48_local(nb) && nb < i) continue; /* made by the lower triangle */
+        u0 = vm[tv[0]];
+        u1 = vm[tv[1]];
+        u2 = vm[tv[2]];
+        if (s48_local(nb)) {
+            v3 = p->tv[3u * nb];
+            u3 = vm[v3];
+        }
+        if (um == S48_OUT &&
+            (!sm || nb == S48_OUT || (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT)))
+            continue;
+        if (s48_local(nb) && s->smooth) {
+            e0 = tv[0];
+            e1 = v3;
+        }
+        mf = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT) ? S48_EXACT : 0u;
+        for (j = 0; j < 3u; j++) mp[j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
+        if (um != S48_OUT) {
+            for (j = 0; j < 3u; j++) w->vp[3u * um + j] = mp[j];
+            w->vf[um] = (uint8_t)mf;
+            if (w->vl) /* L: the base midpoint, whatever the smoothing */
+                for (j = 0; j < 3u; j++) w->vl[3u * um + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
+            w->vid[um] = idj | p->key[i];
+        }
+        if (!sm || nb == S48_OUT) continue;
+        {
+            const int bnd = nb == S48_BND;
+            if (u1 != S48_OUT) s48_rc_scatter(s, w, tv[1], u1, mp, mf, bnd);
+            if (u2 != S48_OUT) s48_rc_scatter(s, w, tv[2], u2, mp, mf, bnd);
+            if (u0 != S48_OUT) s48_rc_scatter(s, w, tv[0], u0, mp, mf, 0);
+            if (u3 != S48_OUT) s48_rc_scatter(s, w, v3, u3, mp, mf, 0);
+        }
+    }
+    if (sm)
+        for (i = 0; i < nvp; i++) {
+            const uint32_t u = vm[i], c = cnt[i], q = c & S48_RC_N;
+            if (u == S48_OUT) continue;
+            if (q == 0u || (c & S48_RC_INC)) {
+                for (j = 0; j < 3u; j++) w->vp[3u * u + j] = p->vp[3u * i + j]; /* not a sum */
+                w->vf[u] = 0;
+                continue;
+            }
+            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = subd_avg(s48_sget(s, w, 3u * u + j), q, &ovf);
+            w->vf[u] = S48_EXACT;
+        }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
+    }
+    w->hd[0] = kt;
+    w->hd[1] = kv;
+    w->hd[6] = k + 1u;
+    w->hd[3] = tm[2u * c0];
+    w->hd[4] = tm[2u * c0 + 1u];
+    return 1;
+}
+
 /* Crops X to the triangles within S48_RINGS vertex rings of X's triangles c0 .. c0 + n - 1
  * (the current triangle's descendants: contiguous, X being sorted by key) into window w of
  * capacity ct triangles, cv vertices, in order; w's hd[3] is c0's index in w, hd[4] c0 + 1's. */

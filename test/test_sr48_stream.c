@@ -217,8 +217,8 @@ static void run_case(int shape, uint32_t levels, uint32_t flags)
 
 static void sr48s_uniform(void)
 {
-    /* 7 > SUBD_SR48_STREAM_TILE_LEVELS (6): depth-first levels above a tile (7 levels only
-     * where the materialised hierarchy fits the test arena: the two-triangle shape) */
+    /* up to 7 = SUBD_SR48_STREAM_TILE_LEVELS (7 levels only where the materialised hierarchy
+     * fits the test arena: the two-triangle shape); more levels: sr48s_tiles, sr48s_checkpoints */
     static const uint32_t maxl[FX48_COUNT] = {6, 4, 3, 5, 1, 7, 3, 4};
     int s;
     uint32_t l, f;
@@ -245,6 +245,34 @@ static void sr48s_checkpoints(void)
         run_case(FX48_TWO, 12, f ? SUBD_SR48_NO_SMOOTH : 0u);
         run_case(FX48_TET, 11, f ? SUBD_SR48_NO_SMOOTH : 0u);
     }
+    g_mat = 0;
+#endif
+}
+
+/* The uniform tile's last window is cropped tighter than the others (sr48_window.c,
+ * subd_s48_refine_crop_: ring 1 of the descendants and the partners of its triangles when
+ * max_level is even and smoothed, the descendants and their partners otherwise) and the
+ * tile's windows alternate between two blocks: every max_level from 1 to 10 (tiles from
+ * level 0 over a hybrid pair up to SUBD_SR48_STREAM_TILE_LEVELS, from level 0 per base
+ * triangle one above, depth-first levels above the tile beyond), open (the grid, the two
+ * triangles) and closed, and around extraordinary vertices of valence 3..16 at both
+ * parities, against the extraction (host: the hierarchies need the big arena). */
+static void sr48s_tiles(void)
+{
+#if H_HOST
+    uint32_t f, l;
+    g_mat = g_big;
+    g_mat_bytes = (uint32_t)sizeof g_big;
+    for (f = 0; f < 2u; f++) {
+        for (l = 1; l <= 10u; l++)
+            if (l != 3u) run_case(FX48_TWO, l, f ? SUBD_SR48_NO_SMOOTH : 0u); /* 3: sr48s_uniform (its HASH) */
+        run_case(FX48_GRID, 7, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(FX48_ICO, 8, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        run_case(FX48_TORUS, 7, f ? SUBD_SR48_NO_SMOOTH : 0u);
+        for (g_bn = 3; g_bn <= 16u; g_bn++)
+            for (l = 4; l <= 5u; l++) run_case(FX48_BIPYR, l, f ? SUBD_SR48_NO_SMOOTH : 0u);
+    }
+    g_bn = 5;
     g_mat = 0;
 #endif
 }
@@ -563,6 +591,7 @@ const test_case suite_sr48_stream[] = {
     {"sr48s_uniform", sr48s_uniform},
     {"sr48s_valence", sr48s_valence},
     {"sr48s_checkpoints", sr48s_checkpoints},
+    {"sr48s_tiles", sr48s_tiles},
     {"sr48s_adapt_errors", sr48s_adapt_errors},
     {0, 0},
 };

@@ -503,7 +503,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_CTM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_CHORD_TILE_ ? SUBD_SR48_MAX_(L, 2u) : SUBD_SR48_STREAM_CHORD_TILE_)
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
-    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
+    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u) + 2u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                          SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_CTM_(L)), \
                          SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L))) + \
      SUBD_SR48_SA_((12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \

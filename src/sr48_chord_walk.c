@@ -25,6 +25,13 @@
  *  - the interpolants (s48c_sub): each tested node's interpolant is carried down its subtree
  *    one midpoint step per level (the steps of subd_sr48_chord_beyond_, so the same bits)
  *    instead of being rebuilt from the node for every vertex;
+ *  - the memo's tiles (s48c_fast, s48c_bits): a decision of level k >= tl = max_level -
+ *    S48C_T reads E > eps of the nodes under each star triangle from the memo entry of its
+ *    level-tl ancestor's tile (made from the level-tl window when missing, in two level
+ *    windows kept for it after max_level - 1's), so a tile of the last S48C_T levels is
+ *    refined about once for all the decisions of levels tl .. max_level - 1 that meet it;
+ *    only a deviating node S48C_M or more levels below the decision (its star test needs
+ *    that level's window) sends the star triangle to its own tile as before;
  *  - memos, all exact (functions of a key, never of the decision being taken): a tile root's
  *    deviations (E > eps of each of its nodes, and of each walk ancestor over its subtree:
  *    whether a node counts depends on the decision, its deviation does not), the answer
@@ -413,13 +420,22 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
     return 0;
 }
 
-/* The memo entry of the tile root with key `key` at level j (S48C_NB entries of 4 words after
- * the decided diamonds, direct mapped by key and level; its words: s48c_tile). */
+/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 4 words after
+ * the decided diamonds (s48c_tile has their words), in sets of two (2-way, by key and level):
+ * the set's entry that holds the root, else the one used less recently, which is then
+ * counted as used (bit 31 of the set's first entry's last word: its first entry was used
+ * last). Which entry holds a root changes nothing but the hits. */
 static uint32_t *s48c_mk(const s48_state *s, uint64_t key, uint32_t j)
 {
     const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
-    return s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
-           4u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB - 1u));
+    uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
+                  8u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
+    uint32_t first;
+    if (e[0] == (uint32_t)key && e[1] == tag) first = 1;
+    else if (e[4] == (uint32_t)key && e[5] == tag) first = 0;
+    else first = (e[3] >> 31) ^ 1u;
+    e[3] = (e[3] & 0x7fffffffu) | first << 31;
+    return first ? e : e + 4;
 }
 
 /* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
@@ -462,7 +478,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
      * hit answers unless a deviating node's counting flag needs the star test (level
      * k + S48C_M), which needs the tile's windows. */
     mk = s48c_mk(s, key, j);
-    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24) >= up) {
+    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24 & 0x1fu) >= up) {
         for (u = 1; u <= up; u++)
             if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
         for (h = 1, dd = 0; h < (1u << m); h++) {
@@ -558,7 +574,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     mk[0] = (uint32_t)key;
     mk[1] = tag;
     mk[2] = bad;
-    mk[3] = above | up << 24;
+    mk[3] = (mk[3] & 0x80000000u) | above | up << 24;
     for (u = 1; u <= up; u++)
         if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
     for (h = 1; h < n; h++)
@@ -655,12 +671,12 @@ static s48_win s48c_mwin(const s48_state *s)
  * refinements and crops as s48c_tile's (so the same positions), the same bottom-up node
  * corners and tests (s48c_sub). 1 done, 0 a corner at max_level is not exact (the window
  * misses part of r's dependency cone), -1 failure. */
-static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want, uint32_t nw)
+static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want, uint32_t nw, uint32_t *mk)
 {
     const uint32_t m = s->levels - j;
     s48_win w, x, a = s48c_mwin(s);
     const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, bad, *mk;
+    uint32_t step, lo = r, n = 1, q, h, i, bad;
     uint16_t *tn = s48c_tn(s);
     subd_sr48_lin *st = s48c_lin(s);
     uint64_t key;
@@ -702,11 +718,11 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
         for (i = 0; i < nw; i++)
             if (want[i] == id) s48c_put(s, id, x.vp + 3u * v);
     }
-    mk = s48c_mk(s, key, j);
+    if (!mk) mk = s48c_mk(s, key, j);
     mk[0] = (uint32_t)key;
     mk[1] = (uint32_t)(key >> 32) | j << 20;
     mk[2] = bad;
-    mk[3] = 0;
+    mk[3] &= 0x80000000u;
     return 1;
 }
 
@@ -735,7 +751,7 @@ static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
             else hi = mid;
         }
         if (lo >= w.hd[0] || s48_key(&w, lo) != ak) return 2;
-        rb = s48c_bits(s, tl, lo, 0, 0);
+        rb = s48c_bits(s, tl, lo, 0, 0, mk);
         if (rb <= 0) return rb < 0 ? -1 : 2;
     }
     base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u)); /* i's node in the tile */
@@ -766,7 +782,7 @@ static int s48c_corners(s48_state *s, uint32_t k, uint32_t t)
     }
     if (nw == 0u) return 0;
     s48_lev(s, tl, &w);
-    return s48c_bits(s, tl, w.hd[2], want, nw) < 0 ? -1 : 0;
+    return s48c_bits(s, tl, w.hd[2], want, nw, 0) < 0 ? -1 : 0;
 }
 
 /* CHORD's decision for the current triangle t of the level-k window: is some counting node

@@ -367,11 +367,16 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   the root's descendants and their rings per level), coarser levels depth first with the
  *   windows of the deeper levels; each tile root's deviations (E > eps per node) and each
  *   diamond's answer are kept (exact: functions of the triangle), so a tile is mostly
- *   computed once for the decisions of its neighbours. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_)
- *   per tile; measured (host CPU, subd sr48 --stream --chord): spot 6 steps eps 0.002 about
- *   11 s against 0.4 s for subd_sr48_build + subd_sr48_extract(CHORD) (0.5.0: 166 s), the
- *   icosahedron 9 steps eps 0.01 0.3 s (before the tiles: 2.6 s); bench -s sr48chord reports the
- *   same-run ratio.
+ *   computed once for the decisions of its neighbours; a decision of level >= max_level -
+ *   SUBD_SR48_STREAM_CHORD_TILE_ reads its star triangles' deviations from the tiles of
+ *   their ancestors at that level (one tile per root for all the levels below it).
+ *   O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron at 9
+ *   steps, eps 0.01, about 1.0 M Cortex-M4F instructions per output face (M3 Q16.16: 1.14 M;
+ *   make demo), and on the host 0.039x / 0.038x the output faces/s of subd_sr48_build +
+ *   subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench -s sr48chord, a
+ *   same-run ratio under load): every finest vertex is computed several times, and exactly
+ *   (no a-priori bound), so the stream cannot be faster than the uniform stream of
+ *   max_level (about 90 k M4F instructions per output face in this case).
  *   Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0

@@ -377,11 +377,16 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   the root's descendants and their rings per level), coarser levels depth first with the
  *   windows of the deeper levels; each tile root's deviations (E > eps per node) and each
  *   diamond's answer are kept (exact: functions of the triangle), so a tile is mostly
- *   computed once for the decisions of its neighbours. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_)
- *   per tile; measured (host CPU, subd sr48 --stream --chord): spot 6 steps eps 0.002 about
- *   11 s against 0.4 s for subd_sr48_build + subd_sr48_extract(CHORD) (0.5.0: 166 s), the
- *   icosahedron 9 steps eps 0.01 0.3 s (before the tiles: 2.6 s); bench -s sr48chord reports the
- *   same-run ratio.
+ *   computed once for the decisions of its neighbours; a decision of level >= max_level -
+ *   SUBD_SR48_STREAM_CHORD_TILE_ reads its star triangles' deviations from the tiles of
+ *   their ancestors at that level (one tile per root for all the levels below it).
+ *   O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron at 9
+ *   steps, eps 0.01, about 1.0 M Cortex-M4F instructions per output face (M3 Q16.16: 1.14 M;
+ *   make demo), and on the host 0.039x / 0.038x the output faces/s of subd_sr48_build +
+ *   subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench -s sr48chord, a
+ *   same-run ratio under load): every finest vertex is computed several times, and exactly
+ *   (no a-priori bound), so the stream cannot be faster than the uniform stream of
+ *   max_level (about 90 k M4F instructions per output face in this case).
  *   Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
@@ -497,16 +502,20 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
     (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
-/* The plan of CHORD: the adaptive modes' level windows and a refined window sized for the
- * tiles of SUBD_SR48_STREAM_CTM_(L) levels (twice SUBD_SR48_STREAM_TT_ triangles; the tile
- * window itself lives in two level windows, free below the tile's root), plus the subtree
+/* The plan of CHORD: the adaptive modes' level windows, two more for the tile window of the
+ * memo's tiles (rooted max(L - SUBD_SR48_STREAM_CHORD_TILE_, 0) levels down, made while a
+ * decision holds the windows of its path), and a refined window sized for the
+ * tiles of SUBD_SR48_STREAM_CTM_(L) levels (twice SUBD_SR48_STREAM_TT_ triangles; the walk's
+ * tile window lives in two level windows, free below the tile's root), plus the subtree
  * walk's state (per level: the node, its child state, its corners' sources and whether it
  * counts, 6 words; the star's keys, 2 words per window triangle), the decided diamond's
  * descendant diamonds of its first SUBD_SR48_STREAM_CHORD_EXACT_ levels below (at most
  * 2 * 4^j triangles j levels down, 3 words each, and a count per level; src/sr48_chord.c),
  * a cache of finest positions (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3
  * subd_reals), the answers of SUBD_SR48_STREAM_CHORD_DECIDED_ diamonds (2 words each), the
- * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (4 words each), the walk's
+ * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (4 words each, in sets of 2,
+ * least recently used out; 256 / 1024 measured 1.25x / 0.89x the instructions of the default
+ * 512 on the icosahedron at 9 steps, 4 096 bytes less / 8 192 more), the walk's
  * finest positions (3 subd_reals per level + 4) and the tile's nodes (3 corners, 6 bytes,
  * and a flag per node of a tile of m levels: 2^(m + 1) nodes), interpolants (9 per level,
  * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..5, default
@@ -515,12 +524,14 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * window for the tile window and 64-bit masks. */
 #define SUBD_SR48_STREAM_CHORD_EXACT_ 3u
 #define SUBD_SR48_STREAM_CHORD_DESC_ (2u * ((1u << (2u * (SUBD_SR48_STREAM_CHORD_EXACT_ + 1u))) - 1u) / 3u)
-#define SUBD_SR48_STREAM_CHORD_CACHE_ 128u
+#ifndef SUBD_SR48_STREAM_CHORD_CACHE_
+#define SUBD_SR48_STREAM_CHORD_CACHE_ 256u
+#endif
 #ifndef SUBD_SR48_STREAM_CHORD_DECIDED_
 #define SUBD_SR48_STREAM_CHORD_DECIDED_ 64u
 #endif
 #ifndef SUBD_SR48_STREAM_CHORD_MASKS_
-#define SUBD_SR48_STREAM_CHORD_MASKS_ 256u
+#define SUBD_SR48_STREAM_CHORD_MASKS_ 512u
 #endif
 #ifndef SUBD_SR48_STREAM_CHORD_TILE_
 #define SUBD_SR48_STREAM_CHORD_TILE_ 5u
@@ -528,7 +539,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_CTM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_CHORD_TILE_ ? SUBD_SR48_MAX_(L, 2u) : SUBD_SR48_STREAM_CHORD_TILE_)
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
-    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
+    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u) + 2u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                          SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_CTM_(L)), \
                          SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L))) + \
      SUBD_SR48_SA_((12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \

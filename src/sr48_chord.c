@@ -62,7 +62,14 @@
  * first (a tile), and the deviations E(d) > eps of a tile's triangles (and of the walk's
  * ancestors over the tile's subtree) are kept per tile root, the answers per diamond:
  * functions of the triangle or diamond, not of the decision, so every decision is the one
- * the exhaustive walk takes (sr48_chord_walk.c). Why exact and not an a-priori bound
+ * the exhaustive walk takes (sr48_chord_walk.c). A decision of level k >= tl = max_level -
+ * SUBD_SR48_STREAM_CHORD_TILE_ (0 when max_level is smaller) reads E(d) > eps of the
+ * triangles d under a star triangle from the tile of its level-tl ancestor (every d of
+ * levels tl .. max_level - 1 is a node of exactly one such tile), and decides the
+ * membership of d in S(D) from F(D)'s keys when d is less than M levels below k; a
+ * deviating d deeper than that needs the star test, on the windows, as before.
+ * test_sr48_chord.c evaluates S(D) exhaustively on the materialised hierarchy and compares
+ * the cuts triangle for triangle. Why exact and not an a-priori bound
  * from the level-k control net (second differences times the box spline's contraction):
  * a rigorous constant needs the contraction at extraordinary vertices, with smoothing on
  * and off, in both arithmetics; not derived (issue 20, item 4).

@@ -25,6 +25,13 @@
  *  - the interpolants (s48c_sub): each tested node's interpolant is carried down its subtree
  *    one midpoint step per level (the steps of subd_sr48_chord_beyond_, so the same bits)
  *    instead of being rebuilt from the node for every vertex;
+ *  - the memo's tiles (s48c_fast, s48c_bits): a decision of level k >= tl = max_level -
+ *    S48C_T reads E > eps of the nodes under each star triangle from the memo entry of its
+ *    level-tl ancestor's tile (made from the level-tl window when missing, in two level
+ *    windows kept for it after max_level - 1's), so a tile of the last S48C_T levels is
+ *    refined about once for all the decisions of levels tl .. max_level - 1 that meet it;
+ *    only a deviating node S48C_M or more levels below the decision (its star test needs
+ *    that level's window) sends the star triangle to its own tile as before;
  *  - memos, all exact (functions of a key, never of the decision being taken): a tile root's
  *    deviations (E > eps of each of its nodes, and of each walk ancestor over its subtree:
  *    whether a node counts depends on the decision, its deviation does not), the answer
@@ -413,6 +420,24 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
     return 0;
 }
 
+/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 4 words after
+ * the decided diamonds (s48c_tile has their words), in sets of two (2-way, by key and level):
+ * the set's entry that holds the root, else the one used less recently, which is then
+ * counted as used (bit 31 of the set's first entry's last word: its first entry was used
+ * last). Which entry holds a root changes nothing but the hits. */
+static uint32_t *s48c_mk(const s48_state *s, uint64_t key, uint32_t j)
+{
+    const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
+    uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
+                  8u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
+    uint32_t first;
+    if (e[0] == (uint32_t)key && e[1] == tag) first = 1;
+    else if (e[4] == (uint32_t)key && e[5] == tag) first = 0;
+    else first = (e[3] >> 31) ^ 1u;
+    e[3] = (e[3] & 0x7fffffffu) | first << 31;
+    return first ? e : e + 4;
+}
+
 /* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
  * window, entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting
  * flags and their corners' finest positions) refined breadth first down to max_level as the
@@ -452,9 +477,8 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
      * u <= the value in bits 24..28). All are functions of r, whatever the decision: a
      * hit answers unless a deviating node's counting flag needs the star test (level
      * k + S48C_M), which needs the tile's windows. */
-    mk = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
-         4u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB - 1u));
-    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24) >= up) {
+    mk = s48c_mk(s, key, j);
+    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24 & 0x1fu) >= up) {
         for (u = 1; u <= up; u++)
             if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
         for (h = 1, dd = 0; h < (1u << m); h++) {
@@ -550,7 +574,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     mk[0] = (uint32_t)key;
     mk[1] = tag;
     mk[2] = bad;
-    mk[3] = above | up << 24;
+    mk[3] = (mk[3] & 0x80000000u) | above | up << 24;
     for (u = 1; u <= up; u++)
         if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
     for (h = 1; h < n; h++)
@@ -625,6 +649,142 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
     }
 }
 
+/* The memo's tiles (the decisions of levels k >= tl = max_level - S48C_T, or 0 when
+ * max_level <= S48C_T): a star triangle i of level k is a node of the tile of its level-tl
+ * ancestor, so E > eps of i's nodes are bits of that tile's memo entry, which one tile
+ * computes for the 2^(k - tl) triangles of every level k below it and for every decision
+ * that meets them (before: one tile per star triangle per decision level, from its own
+ * level). The root is taken from the level-tl window of whatever path the windows hold
+ * (any window triangle: positions are exact where flagged, and every corner at max_level
+ * is checked), refined in the tile window after level max_level - 1's (free: a decision
+ * of level k <= max_level - 1 holds windows 0..k) and X. */
+static s48_win s48c_mwin(const s48_state *s)
+{
+    s48_win a;
+    s48_win_at(s, s->lev + (s->levels > 1u ? s->levels : 1u) * s->lev_size, s->aoff, &a);
+    return a;
+}
+
+/* The memo's tile of triangle r of the level-j window (j the tiles' level): E > eps of each
+ * of its nodes into r's memo entry (s48c_tile's words, no walk ancestors: up = 0), and the
+ * finest positions of the vertices listed in want (nw ids) into the cache. The same
+ * refinements and crops as s48c_tile's (so the same positions), the same bottom-up node
+ * corners and tests (s48c_sub). 1 done, 0 a corner at max_level is not exact (the window
+ * misses part of r's dependency cone), -1 failure. */
+static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want, uint32_t nw, uint32_t *mk)
+{
+    const uint32_t m = s->levels - j;
+    s48_win w, x, a = s48c_mwin(s);
+    const s48_win *p = &w;
+    uint32_t step, lo = r, n = 1, q, h, i, bad;
+    uint16_t *tn = s48c_tn(s);
+    subd_sr48_lin *st = s48c_lin(s);
+    uint64_t key;
+    s48_lev(s, j, &w);
+    key = s48_key(&w, r);
+    s48_x(s, &x);
+    for (step = 0; step < m; step++) {
+        if (step == 0u && m >= 2u) { /* r and its two rings only */
+            if (!subd_s48_crop_n_(s, &w, r, 1u, &a, s->at, s->av)) return -1;
+            lo = a.hd[3];
+            p = &a;
+        }
+        if (!subd_s48_refine_(s, p, j + step, &x)) return -1;
+        lo *= 2u;
+        n *= 2u;
+        if (step + 1u == m) break;
+        if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return -1;
+        lo = a.hd[3];
+        p = &a;
+    }
+    for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
+        for (i = 0; i < 3u; i++) {
+            const uint16_t v = x.tv[3u * (lo + q) + i];
+            if (!(x.vf[v] & S48_EXACT)) return 0;
+            tn[3u * (n + q) + i] = v;
+        }
+    for (h = n - 1u; h >= 1u; h--) {
+        tn[3u * h] = tn[6u * h + 1u];
+        tn[3u * h + 1u] = tn[6u * h + 2u];
+        tn[3u * h + 2u] = tn[6u * h + 4u];
+    }
+    for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
+        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
+        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+    }
+    for (q = 0; q < 3u * n && nw > 0u; q++) { /* the leaves' corners asked for */
+        const uint16_t v = tn[3u * n + q];
+        const uint64_t id = s48_vid(&x, v);
+        for (i = 0; i < nw; i++)
+            if (want[i] == id) s48c_put(s, id, x.vp + 3u * v);
+    }
+    if (!mk) mk = s48c_mk(s, key, j);
+    mk[0] = (uint32_t)key;
+    mk[1] = (uint32_t)(key >> 32) | j << 20;
+    mk[2] = bad;
+    mk[3] &= 0x80000000u;
+    return 1;
+}
+
+/* The decision's part under star triangle i (key ki, level k >= tl) from the memo's tile of
+ * its level-tl ancestor (made when missing): every node under i that deviates (a bit of the
+ * entry) and counts (s48c_counts: for a node d levels below k < S48C_M, a descendant diamond
+ * of D) answers 1. A deviating node d >= S48C_M levels below counts when its level k + S48C_M
+ * ancestor is in a star of F(D)'s, a test on that level's window: then 2 (the caller tiles i
+ * as before), also when the ancestor is not in the window or its tile not exact. 0: no
+ * counting node under i deviates. -1 failure. The same pairs (node, vertex) as s48c_tile's,
+ * read from a function of the triangle: the same answer. */
+static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
+{
+    const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u, dl = k - tl, m = s->levels - tl;
+    const uint64_t ak = ki >> dl;
+    uint32_t *mk = s48c_mk(s, ak, tl), e, q, base, deep = 0;
+    if (mk[0] != (uint32_t)ak || mk[1] != ((uint32_t)(ak >> 32) | tl << 20)) {
+        s48_win w;
+        uint32_t lo = 0, hi;
+        int rb;
+        s48_lev(s, tl, &w);
+        hi = w.hd[0];
+        while (lo < hi) { /* the ancestor in the window (sorted by key) */
+            const uint32_t mid = (lo + hi) / 2u;
+            if (s48_key(&w, mid) < ak) lo = mid + 1u;
+            else hi = mid;
+        }
+        if (lo >= w.hd[0] || s48_key(&w, lo) != ak) return 2;
+        rb = s48c_bits(s, tl, lo, 0, 0, mk);
+        if (rb <= 0) return rb < 0 ? -1 : 2;
+    }
+    base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u)); /* i's node in the tile */
+    for (e = 0; (base << e) < (1u << m); e++)
+        for (q = 0; q < (1u << e); q++) {
+            if (!((mk[2] >> ((base << e) | q)) & 1u)) continue;
+            if (e >= S48C_M) deep = 1;
+            else if (s48c_has(s, e, (ki << e) | q, 1u)) return 1;
+        }
+    return deep ? 2 : 0;
+}
+
+/* A leaf's corners (the current triangle t of the level-k window, k >= tl, its windows
+ * 0..k on its path) into the cache when missing, from the memo's tile of its level-tl
+ * ancestor (the current triangle of window tl), so that its emission finds them; when
+ * that tile is not exact, the emission's descents find them. -1 failure. */
+static int s48c_corners(s48_state *s, uint32_t k, uint32_t t)
+{
+    const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u;
+    uint32_t i, nw = 0, *cid = s->cdesc + 3u * S48C_ND;
+    uint64_t want[3];
+    s48_win w;
+    s48_lev(s, k, &w);
+    for (i = 0; i < 3u; i++) {
+        const uint64_t id = s48_vid(&w, w.tv[3u * t + i]);
+        const uint32_t e = s48c_slot(id);
+        if (cid[2u * e] != (uint32_t)id || cid[2u * e + 1u] != (uint32_t)(id >> 32)) want[nw++] = id;
+    }
+    if (nw == 0u) return 0;
+    s48_lev(s, tl, &w);
+    return s48c_bits(s, tl, w.hd[2], want, nw, 0) < 0 ? -1 : 0;
+}
+
 /* CHORD's decision for the current triangle t of the level-k window: is some counting node
  * (s48c_counts) beyond eps? The counting region lies in the subtrees of the star of t's
  * diamond (the window triangles that share a vertex with it; all of them are in the
@@ -650,14 +810,20 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
     tag = (uint32_t)(dk >> 32) | k << 20;
     dc = s->cdesc + 3u * S48C_ND + 2u * S48C_NC +
          2u * ((((uint32_t)dk ^ tag) * 2654435761u) >> 16 & (S48C_ND2 - 1u));
-    if (dc[0] == (uint32_t)dk && (dc[1] & 0x7fffffffu) == tag) return (int)(dc[1] >> 31);
+    if (dc[0] == (uint32_t)dk && (dc[1] & 0x7fffffffu) == tag) {
+        r = (int)(dc[1] >> 31);
+        return tiled && r == 0 && s48c_corners(s, k, t) < 0 ? -1 : r;
+    }
     if (!s48c_desc(s, k, t)) return -1;
     have = cur;
     for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
     s->ckey[0] = (uint32_t)cur;
     s->ckey[1] = (uint32_t)(cur >> 32);
-    if (tiled && (r = s48c_tile(s, k, k, t, 0)) < 0) return -1; /* t in place */
+    if (tiled) { /* t in place: from the memo's tile, else its own */
+        if ((r = s48c_fast(s, k, cur)) < 0) return -1;
+        if (r == 2 && (r = s48c_tile(s, k, k, t, 0)) < 0) return -1;
+    }
     for (i = 0; i < w.hd[0] && r == 0; i++) {
         int touch = 0;
         if (i == t) continue;
@@ -666,9 +832,11 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
                 if (w.tv[3u * i + j] == vs[q]) touch = 1;
         if (!touch || !s48c_may(s, &w, k, i)) continue;
         if (tiled) {
-            /* first from t's window, as it is (s48c_tile checks that it holds what the
-             * tile needs); else after rebuilding the windows along i's path, below */
-            const int ri = s48c_tile(s, k, k, i, 1);
+            /* from the memo's tile; else from t's window, as it is (s48c_tile checks that
+             * it holds what the tile needs); else after rebuilding the windows along i's
+             * path, below */
+            int ri = s48c_fast(s, k, s48_key(&w, i));
+            if (ri == 2) ri = s48c_tile(s, k, k, i, 1);
             if (ri == -1) return -1;
             if (ri >= 0) {
                 r = ri;
@@ -698,5 +866,6 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
     if (moved && !s48c_path(s, cur, have, k)) return -1;
     dc[0] = (uint32_t)dk;
     dc[1] = tag | (uint32_t)r << 31;
+    if (tiled && r == 0 && s48c_corners(s, k, t) < 0) return -1;
     return r;
 }

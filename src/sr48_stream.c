@@ -132,7 +132,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     /* the deepest level window: L - tw (uniform), L - 1 (otherwise) */
     const uint32_t dl = levels >= tw ? levels - tw : 0u, ckc =
         !nl && !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
-    const uint32_t nlev = ckc ? s48_slots(dl, ckc) : dl + 1u;
+    /* CHORD: two more level windows after levels 0..L-1, the tile window of the memo's tiles
+     * (sr48_chord_walk.c, s48c_bits: taken while a decision holds levels up to max_level - 1) */
+    const uint32_t nlev = (ckc ? s48_slots(dl, ckc) : dl + 1u) + (chord ? 2u : 0u);
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = m > 1u ? SUBD_SR48_STREAM_TT_(valence, m) : chord ? SUBD_SR48_STREAM_TT_(valence, mc) : ct;
     uint32_t av = m > 1u ? SUBD_SR48_STREAM_TV_(valence, m) : chord ? SUBD_SR48_STREAM_TV_(valence, mc) : cv;

@@ -19,7 +19,12 @@
  *    much larger than the exact one is a regression); the face ratio is printed;
  *  - plan = SUBD_SR48_STREAM_CHORD_BYTES = the peak, every smaller arena SUBD_ERR_NOMEM with
  *    bytes_needed = the plan and nothing emitted; eps <= 0 (and NaN in float) refused with
- *    subd_sr48_extract's status; pull form = push form.
+ *    subd_sr48_extract's status; pull form = push form;
+ *  - the cut itself (host, 6 and 7 binary steps): src/sr48_chord.c's nested criterion S(D)
+ *    evaluated exhaustively on the hierarchy (every E(d) > eps by brute force, F(D) and the
+ *    stars from the hierarchy's base neighbours and vertices), the top-down cut it defines
+ *    (its nesting checked: a split diamond has both triangles in the cut) = the streamed
+ *    triangles, as sets of (level, corners).
  * Shapes (the project's fixtures, test/data and h_torus): icosahedron (closed), torus
  * (closed, genus 1), 8x8 grid and hexagon fan (open); smoothing on and off. */
 #include <stdlib.h> /* qsort, bsearch: sorted edge lists for the welding check */
@@ -37,8 +42,9 @@
 enum { C_ICO, C_TORUS, C_GRID, C_HEXFAN, C_COUNT }; /* index into ch_shapes */
 static const int ch_shapes[C_COUNT] = {FX48_ICO, FX48_TORUS, FX48_GRID, FX48_HEXFAN};
 
-#define CH_ST_ARENA (40u * 1024u) /* the stream's arena: the top of h_arena_buf */
-#define CH_MAT_ARENA (H_ARENA_BYTES - CH_ST_ARENA)
+#define CH_ST_ARENA (64u * 1024u) /* the stream's arena: g_chst */
+#define CH_MAT_ARENA (H_ARENA_BYTES - 40u * 1024u)
+static uint8_t g_chst[CH_ST_ARENA] __attribute__((aligned(8)));
 #define CH_MAXF (H_HOST ? 8192u : 768u)     /* streamed triangles kept */
 #define CH_MAXID (H_HOST ? 65536u : 4096u)  /* closed-form id space */
 #define CH_MAXV (H_HOST ? 16384u : 2048u)   /* hierarchy vertices */
@@ -145,7 +151,7 @@ static void ch_case(int shape, uint32_t levels, uint32_t flags, double eps, cons
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
     CHECK_EQ(plan, SUBD_SR48_STREAM_CHORD_BYTES(levels, fx_sr48_valence(&base, 0)));
     if (!CHECK(plan <= CH_ST_ARENA)) return;
-    subd_arena_init(&sa, h_arena_buf + CH_MAT_ARENA, CH_ST_ARENA);
+    subd_arena_init(&sa, g_chst, CH_ST_ARENA);
     g_s.n = 0;
     g_s.over = 0;
     g_s.hash = 2166136261u;
@@ -278,7 +284,7 @@ static void sr48c_errors(void)
 #endif
     sink.tri = ch_tri;
     sink.ctx = &g_s;
-    subd_arena_init(&sa, h_arena_buf + CH_MAT_ARENA, CH_ST_ARENA);
+    subd_arena_init(&sa, g_chst, CH_ST_ARENA);
     for (i = 0; i < 3u; i++) {
         uint32_t mark = subd_arena_mark(&a);
         so.adapt.eps = bads[i];
@@ -296,7 +302,7 @@ static void sr48c_errors(void)
     so.adapt.eps = fx_real(0.01);
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
     for (size = 0; size <= plan; size += (size + 64u < plan) ? 13u : 1u) {
-        subd_arena_init(&sa, h_arena_buf + CH_MAT_ARENA, size);
+        subd_arena_init(&sa, g_chst, size);
         g_s.n = 0;
         g_s.over = 0;
         r = subd_sr48_stream(&sa, &base, &so, &sink, &d);
@@ -311,7 +317,7 @@ static void sr48c_errors(void)
         }
     }
     /* pull in batches of 7: the push form's triangles */
-    subd_arena_init(&sa, h_arena_buf + CH_MAT_ARENA, CH_ST_ARENA);
+    subd_arena_init(&sa, g_chst, CH_ST_ARENA);
     g_s.n = 0;
     g_s.hash = 2166136261u;
     if (!CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), SUBD_OK)) return;
@@ -328,8 +334,218 @@ static void sr48c_errors(void)
     CHECK_EQ(subd_arena_mark(&sa), 0u);
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* The nested criterion, exhaustively: src/sr48_chord.c's definition evaluated on the
+ * materialised hierarchy (no windows, no tiles, no memos), and the streamed cut compared
+ * with it triangle for triangle. At 6 and 7 binary steps the stream's memo tiles start one
+ * and two levels below level 0 (SUBD_SR48_STREAM_CHORD_TILE_ = 5), so the coarse decisions'
+ * depth-first walks, the memo's tiles of loose roots and the 2-way memo are all exercised.
+ * E(d) > eps per triangle d of level < L: every vertex a node of d's subtree creates (the
+ * apex of its child 0) against d's corners' linear interpolant carried down the path by
+ * midpoints, in the rounding documented in sr48_chord.c (float: (a + b) * 0.5f, the squared
+ * distance summed in float; Q16.16: Q32.32, rounded to Q16.16, per axis then squared in 64
+ * bits). S(D) for a diamond D of level k: F(D) (D, then level by level the children of the
+ * last level's triangles and their base neighbours) for SUBD_SR48_STREAM_CHORD_EXACT_
+ * levels, then every triangle of the subtrees of the next level's triangles that share a
+ * vertex with one of F(D)'s there. D splits iff a triangle of S(D) has E > eps; the cut is
+ * decided top down from level 0, and the check that a split diamond's triangles are both in
+ * the cut is the nesting lemma's. (Host only: the device's RAM.) */
+#if SUBD_FIXED
+typedef int64_t rf_lin;
+static rf_lin rf_of(subd_real x) { return (int64_t)x * 65536; }
+static rf_lin rf_mid(rf_lin a, rf_lin b) { return (a + b) >> 1; }
+static int rf_beyond(const subd_real *p, const rf_lin *l, subd_real eps)
+{
+    uint64_t sum = 0, e = (uint64_t)eps;
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        int64_t dd = ((int64_t)p[i] * 65536 - l[i] + 32768) >> 16;
+        uint64_t ad = (uint64_t)(dd < 0 ? -dd : dd);
+        if (ad > e) return 1;
+        sum += ad * ad;
+    }
+    return sum > e * e;
+}
+#else
+typedef float rf_lin;
+static rf_lin rf_of(subd_real x) { return x; }
+static rf_lin rf_mid(rf_lin a, rf_lin b) { return (a + b) * 0.5f; }
+static int rf_beyond(const subd_real *p, const rf_lin *l, subd_real eps)
+{
+    float d0 = p[0] - l[0], d1 = p[1] - l[1], d2 = p[2] - l[2];
+    float s0 = d0 * d0, s1 = d1 * d1, s2 = d2 * d2;
+    return s0 + s1 + s2 > eps * eps;
+}
+#endif
+
+#define RF_MAXT (H_HOST ? 65536u : 1u)
+#define RF_BYTES (H_HOST ? 8u << 20 : 8u) /* the hierarchy's arena */
+static uint8_t g_rbuf[RF_BYTES] __attribute__((aligned(8)));
+static uint8_t g_rbad[RF_MAXT], g_rany[RF_MAXT], g_ract[RF_MAXT];
+static uint32_t g_rstamp[RF_MAXT], g_rvst[H_HOST ? 32768u : 1u], g_rgen;
+static uint32_t g_rlist[2][1024];
+static uint8_t g_rlvl[CH_MAXF];
+static uint64_t g_rq[2][2u * CH_MAXF];
+
+/* Does a vertex created in the subtree of triangle t (level j) deviate from l, t's
+ * interpolant at t? */
+static int rf_walk(const subd_sr48 *h, uint32_t t, uint32_t j, uint32_t L, const rf_lin *l, subd_real eps)
+{
+    rf_lin m[3], c[9];
+    uint32_t i, b, ch = h->level_tri[j + 1u] + 2u * (t - h->level_tri[j]);
+    for (i = 0; i < 3u; i++) m[i] = rf_mid(l[3u + i], l[6u + i]);
+    if (rf_beyond(h->pos + 3u * h->tri_vert[3u * ch], m, eps)) return 1;
+    if (j + 1u >= L) return 0;
+    for (b = 0; b < 2u; b++) {
+        for (i = 0; i < 3u; i++) { /* child 0 = (m; apex, b0), child 1 = (m; b1, apex) */
+            c[i] = m[i];
+            c[3u + i] = b ? l[6u + i] : l[i];
+            c[6u + i] = b ? l[i] : l[3u + i];
+        }
+        if (rf_walk(h, ch + b, j + 1u, L, c, eps)) return 1;
+    }
+    return 0;
+}
+
+/* Does diamond D (triangle t of level k and its base neighbour) split? */
+static int rf_split(const subd_sr48 *h, uint32_t t, uint32_t k, uint32_t L)
+{
+    uint32_t n = 0, d, x, b, i, c, nb = h->tri_base_nb[t], *cur = g_rlist[0], *nxt = g_rlist[1];
+    cur[n++] = t;
+    if (nb != SUBD_NONE) cur[n++] = nb;
+    for (d = 0; k + d < L; d++) {
+        const uint32_t j = k + d;
+        uint32_t nn = 0, *sw;
+        if (d == SUBD_SR48_STREAM_CHORD_EXACT_) { /* the stars of F(D)'s triangles of level j */
+            g_rgen++;
+            for (x = 0; x < n; x++)
+                for (i = 0; i < 3u; i++) g_rvst[h->tri_vert[3u * cur[x] + i]] = g_rgen;
+            for (c = h->level_tri[j]; c < h->level_tri[j + 1u]; c++)
+                if (g_rany[c] && (g_rvst[h->tri_vert[3u * c]] == g_rgen || g_rvst[h->tri_vert[3u * c + 1u]] == g_rgen ||
+                                  g_rvst[h->tri_vert[3u * c + 2u]] == g_rgen))
+                    return 1;
+            return 0;
+        }
+        for (x = 0; x < n; x++)
+            if (g_rbad[cur[x]]) return 1;
+        if (j + 1u >= L) return 0;
+        g_rgen++;
+        for (x = 0; x < n; x++)
+            for (b = 0; b < 2u; b++) {
+                uint32_t e[2];
+                e[0] = h->level_tri[j + 1u] + 2u * (cur[x] - h->level_tri[j]) + b;
+                e[1] = h->tri_base_nb[e[0]];
+                for (i = 0; i < 2u; i++)
+                    if (e[i] != SUBD_NONE && g_rstamp[e[i]] != g_rgen) {
+                        g_rstamp[e[i]] = g_rgen;
+                        if (!CHECK(nn < 1024u)) return 0;
+                        nxt[nn++] = e[i];
+                    }
+            }
+        sw = cur;
+        cur = nxt;
+        nxt = sw;
+        n = nn;
+    }
+    return 0;
+}
+
+static int rf_tri(void *ctx, const subd_tri *t)
+{
+    if (g_s.n < CH_MAXF) g_rlvl[g_s.n] = (uint8_t)t->level;
+    return ch_tri(ctx, t);
+}
+
+static void rf_case(int shape, uint32_t L, uint32_t flags, double eps)
+{
+    subd_arena a, sa;
+    static subd_mesh in;
+    static subd_sr48 h, base;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t nid, t, k, i, q, nl = 0, lost = 0, nsplit = 0;
+    subd_arena_init(&a, g_rbuf, RF_BYTES);
+    if (!fx_sr48_shape(ch_shapes[shape], 0, &a, &in)) return;
+    o.steps = L;
+    o.flags = flags;
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    if (!CHECK(h.num_tris <= RF_MAXT) || !CHECK(h.num_verts <= 32768u)) return;
+    /* E > eps per triangle of level < L, then "some triangle of the subtree" bottom up */
+    for (k = 0; k < L; k++)
+        for (t = h.level_tri[k]; t < h.level_tri[k + 1u]; t++) {
+            rf_lin l[9];
+            for (q = 0; q < 9u; q++) l[q] = rf_of(h.pos[3u * h.tri_vert[3u * t + q / 3u] + q % 3u]);
+            g_rbad[t] = (uint8_t)rf_walk(&h, t, k, L, l, fx_real(eps));
+        }
+    for (k = L; k-- > 0u;)
+        for (t = h.level_tri[k]; t < h.level_tri[k + 1u]; t++) {
+            const uint32_t c = h.level_tri[k + 1u] + 2u * (t - h.level_tri[k]);
+            g_rany[t] = (uint8_t)(g_rbad[t] | (k + 1u < L ? g_rany[c] | g_rany[c + 1u] : 0u));
+        }
+    /* the cut, top down */
+    for (t = 0; t < h.num_tris; t++) g_ract[t] = t < h.level_tri[1] ? 1u : 0u;
+    for (k = 0; k <= L; k++)
+        for (t = h.level_tri[k]; t < h.level_tri[k + 1u]; t++) {
+            uint32_t nb = h.tri_base_nb[t];
+            if (!g_ract[t]) continue;
+            if (k < L && rf_split(&h, t, k, L)) {
+                const uint32_t c = h.level_tri[k + 1u] + 2u * (t - h.level_tri[k]);
+                g_ract[c] = 1;
+                g_ract[c + 1u] = 1;
+                nsplit++;
+                if (nb != SUBD_NONE && !g_ract[nb]) lost++; /* would be a T-junction */
+                continue;
+            }
+            if (!CHECK(nl < CH_MAXF)) return;
+            g_rq[0][2u * nl] = (uint64_t)k << 32 | h.tri_vert[3u * t];
+            g_rq[0][2u * nl + 1u] = (uint64_t)h.tri_vert[3u * t + 1u] << 32 | h.tri_vert[3u * t + 2u];
+            nl++;
+        }
+    CHECK_EQ(lost, 0u);
+    /* the stream */
+    if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) return;
+    memset(&so, 0, sizeof so);
+    so.adapt.mode = SUBD_SR48_ADAPT_CHORD;
+    so.adapt.max_level = L;
+    so.adapt.eps = fx_real(eps);
+    subd_arena_init(&sa, g_chst, CH_ST_ARENA);
+    g_s.n = 0;
+    g_s.over = 0;
+    g_s.hash = 2166136261u;
+    sink.tri = rf_tri;
+    sink.ctx = &g_s;
+    if (!CHECK_EQ(subd_sr48_stream(&sa, &base, &so, &sink, &d), SUBD_OK) || !CHECK_EQ(g_s.over, 0u)) return;
+    if ((nid = fx_sr48_id_map(&h, L, g_map, CH_MAXID)) == 0u) return;
+    for (i = 0; i < g_s.n; i++) {
+        uint32_t v[3];
+        for (q = 0; q < 3u; q++) v[q] = g_id[3u * i + q] < nid ? g_map[(uint32_t)g_id[3u * i + q]] : SUBD_NONE;
+        g_rq[1][2u * i] = (uint64_t)g_rlvl[i] << 32 | v[0];
+        g_rq[1][2u * i + 1u] = (uint64_t)v[1] << 32 | v[2];
+    }
+    qsort(g_rq[0], nl, 2u * sizeof(uint64_t), ch_ecmp);
+    qsort(g_rq[1], g_s.n, 2u * sizeof(uint64_t), ch_ecmp);
+    if (CHECK_EQ(g_s.n, nl)) CHECK(memcmp(g_rq[0], g_rq[1], 2u * sizeof(uint64_t) * nl) == 0);
+    T_NOTE("nested criterion, exhaustive: shape %d L %u flags %u eps %g: %u faces (%u splits), stream %u\n", shape, L,
+           flags, eps, nl, nsplit, g_s.n);
+}
+
+static void sr48c_reference(void)
+{
+    if (!H_HOST) return; /* the device: the hierarchy at 6 steps does not fit */
+    rf_case(C_ICO, 6, 0, 0.01);
+    rf_case(C_ICO, 6, 0, 0.004);
+    rf_case(C_ICO, 7, 0, 0.01);
+    rf_case(C_TORUS, 6, 0, 0.01);
+    rf_case(C_TORUS, 6, 0, 0.005);
+    rf_case(C_HEXFAN, 7, 0, 0.002);
+    rf_case(C_HEXFAN, 6, SUBD_SR48_NO_SMOOTH, 0.002);
+}
+
 const test_case suite_sr48_chord[] = {
     {"sr48c_errors", sr48c_errors},
     {"sr48c_guarantee", sr48c_guarantee},
+    {"sr48c_reference", sr48c_reference},
     {0, 0},
 };

@@ -162,8 +162,10 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
                     subd_diag *diag);
 
 /* subd_sr48_base_plan: the arena bytes subd_sr48_base uses, in *bytes: subd_sr48_plan of
- * steps = 0 plus 4 bytes per hybrid triangle (level_tri[1] / 2) for hyb_base_nb; exact with
- * subd_sr48_count_clusters' count, a bound with SUBD_SR48_CLUSTERS_UNKNOWN.
+ * steps = 0 plus 4 bytes per hybrid triangle (level_tri[1] / 2) for hyb_base_nb, unless the
+ * census of the level-0 windows (stream_valence: 12 bytes per base vertex and 8 per base
+ * triangle, above the output) needs more; exact with subd_sr48_count_clusters' count, a
+ * bound with SUBD_SR48_CLUSTERS_UNKNOWN.
  * Memory: no arena use.
  * Errors: as subd_sr48_plan (flags: SUBD_SR48_NO_SMOOTH or 0).
  * Cost: O(corners). */
@@ -177,8 +179,9 @@ int subd_sr48_base_plan(const subd_mesh *in, uint32_t flags, uint32_t clusters, 
  * Memory: exactly subd_sr48_base_plan with the cluster count at the peak; *out's arrays stay
  *   in the arena.
  * Errors: those of subd_sr48_build.
- * Cost: O(corners) plus the edge sort.
- * Notes: every field is as subd_sr48_build's with steps = 0; hyb_base_nb follows the arrays. */
+ * Cost: O(corners) plus the edge sort, plus the census: O(triangles * window).
+ * Notes: every field is as subd_sr48_build's with steps = 0; hyb_base_nb follows the arrays;
+ * stream_valence is the census's (src/sr48_census.c). */
 int subd_sr48_base(subd_arena *a, const subd_mesh *in, uint32_t flags, subd_sr48 *out, subd_diag *diag);
 
 /* --------------------------------------------------------------------------------------
@@ -312,12 +315,14 @@ typedef struct subd_sr48_stream_opts {
 #define SUBD_SR48_STREAM_MAX_VALENCE 64u
 
 /* subd_sr48_stream_plan: the exact arena bytes subd_sr48_stream needs, in *bytes: a function
- * of adapt.max_level and the base mesh's largest valence only (SUBD_SR48_STREAM_BYTES).
+ * of adapt.max_level and the base's stream_valence only (SUBD_SR48_STREAM_BYTES: its largest
+ * valence, at least 8, or more where the census of subd_sr48_base found denser level-0
+ * neighbourhoods).
  * Memory: no arena use.
  * Errors: SUBD_ERR_PARAM (NULL, a base that is not subd_sr48_base's - steps != 0, no
  *   hyb_base_nb, broken indices -, max_level > SUBD_SR48_MAX_STEPS, the mode's parameters
  *   as subd_sr48_extract: CHORD's eps not > 0 or not finite), SUBD_ERR_EMPTY,
- *   SUBD_ERR_TOO_BIG (a valence above SUBD_SR48_STREAM_MAX_VALENCE).
+ *   SUBD_ERR_TOO_BIG (a valence or stream_valence above SUBD_SR48_STREAM_MAX_VALENCE).
  * Cost: O(corners * valence) (the base's rules are checked, its fans walked). */
 int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o, uint32_t *bytes, subd_diag *diag);
 
@@ -407,7 +412,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
                      subd_diag *diag);
 
 /* The plan at compile time, for a static buffer: L = adapt.max_level (0..SUBD_SR48_MAX_STEPS),
- * N = the base's largest valence (triangles around a vertex; values below 8 count as 8). A
+ * N = the base's stream_valence (subd_sr48_base; `subd sr48 --stream --stats` prints it: the
+ * largest valence, triangles around a vertex, values below 8 counting as 8, or more on bases
+ * whose extraordinary vertices lie within two rings of each other). A
  * uint32_t constant expression equal to subd_sr48_stream_plan. Example:
  *     static uint8_t buf[SUBD_SR48_STREAM_BYTES(8, 12)] __attribute__((aligned(8)));
  * The window of a level holds the triangles within SUBD_SR48_STREAM_RINGS_ vertex rings of the

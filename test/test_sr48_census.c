@@ -28,7 +28,7 @@
 
 #define CE_ST_ARENA (64u * 1024u)
 #define CE_MAT_ARENA (H_ARENA_BYTES - CE_ST_ARENA)
-#define CE_MAXT (H_HOST ? 8192u : 2048u) /* triangles compared */
+#define CE_MAXT (H_HOST ? 8192u : 1024u) /* triangles compared */
 #define CE_MAXB 1024u                    /* base vertices and triangles searched */
 
 static int ce_dense(subd_arena *a, subd_mesh *m)
@@ -73,6 +73,7 @@ static void ce_window(const subd_sr48 *b, uint32_t p0, uint32_t p1, uint32_t *nt
 static void ce_capacity(const subd_sr48 *b, const char *what)
 {
     uint32_t t, nt, nv, mt = 0, mv = 0, n = b->stream_valence, low;
+    (void)what; /* named in the host's note */
     if (!CHECK(b->num_verts <= CE_MAXB && b->level_tri[1] <= CE_MAXB)) return;
     for (t = 0; t + 1u < b->level_tri[1]; t += 2u) {
         ce_window(b, t, t + 1u, &nt, &nv);

@@ -1,16 +1,18 @@
 /* SPDX-License-Identifier: MIT */
-/* Streaming semi-regular 4-8 refinement, private interface between its four files (paper:
+/* Streaming semi-regular 4-8 refinement, private interface between its files (paper:
  * semi-regular-4-8-refinement-box-splines.txt, sections 4 and 6; the method, the exactness
  * argument and the bit-identity with subd_sr48_build are in sr48_window.c's header):
- *   sr48_window.c      the per-level window: the base mesh's adjacency, level 0's window,
- *                      the refinement of a window as a whole (with smoothing), the crop to
- *                      the rings of a set of triangles, the descent to the finest level;
+ *   sr48_level0.c      the base mesh's adjacency and checks, the fan walk, level 0's window;
+ *   sr48_window.c      the per-level window: the refinement of a window as a whole (with
+ *                      smoothing), the crop to the rings of a set of triangles (also in one
+ *                      pass with the refinement), the descent to the finest level;
+ *   sr48_census.c      the base's census of its level-0 windows (stream_valence);
  *   sr48_tile.c        the breadth-first uniform tile of the last SUBD_SR48_STREAM_TILE_LEVELS
  *                      levels and the emission of a window triangle;
  *   sr48_chord_walk.c  CHORD's walk over the deeper windows and its forcing diamonds (the
  *                      criterion and its proof: sr48_chord.c);
  *   sr48_stream.c      the driver: capacities and layout, plan, begin, the depth-first step.
- * One window layout and one state block (s48_state) serve all four. The window's accessors
+ * One window layout and one state block (s48_state) serve them all. The window's accessors
  * are static inline here: they are on the hot path of every refinement and walk. Names
  * shared across the files are subd_s48_*_ (unique in src/: the library is also one
  * translation unit, make amalgamate). */
@@ -177,7 +179,7 @@ static inline uint64_t s48_vid(const s48_win *w, uint32_t v)
 /* Is window neighbour n a window triangle (not OUT, not BND)? */
 static inline int s48_local(uint16_t n) { return n < S48_BND; }
 
-#ifdef S48_DBG /* capacity statistics of a debug build (sr48_window.c) */
+#ifdef S48_DBG /* capacity statistics of a debug build (defined in sr48_level0.c) */
 extern uint32_t s48_dbg[40];
 #endif
 

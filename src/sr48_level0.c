@@ -1,0 +1,267 @@
+/* SPDX-License-Identifier: MIT */
+/* The 4-8 stream's level 0 (paper: semi-regular-4-8-refinement-box-splines.txt, sections 4
+ * and 5): the base mesh's adjacency read from subd_sr48_base's arrays (a level-0 triangle's
+ * base neighbour, its legs' neighbours through the hybrid triangles), the base's checks,
+ * the fan walk around a base vertex (the stream's valence, the census of sr48_census.c, the
+ * adaptation box) and the level-0 window: the base triangles within two vertex rings of the
+ * current base triangle (or hybrid pair), gathered by fan walks. The method, the exactness
+ * argument and the window layout are in sr48_window.c's header; the deeper levels' windows
+ * (refine, crop, descents) are there too. */
+#include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "sr48_stream_internal.h"
+
+/* ------------------------------------------------------------------------------------ */
+/* The base mesh                                                                          */
+
+/* Neighbour of level-0 triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c). */
+static uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
+{
+    uint32_t g;
+    if (slot == 0u) return b->tri_base_nb[t];
+    if ((t & 1u) == 0u && slot == 1u) return t + 1u;
+    if ((t & 1u) == 1u && slot == 2u) return t - 1u;
+    g = b->hyb_base_nb[t >> 1];
+    if (g == SUBD_NONE) return SUBD_NONE;
+    return (t & 1u) == 0u ? 2u * g + 1u : 2u * g;
+}
+
+/* The two ends of slot s of a triangle with vertices v = (c, a, b). */
+static void s48_slot_ends(const uint32_t *v, uint32_t s, uint32_t *p, uint32_t *q)
+{
+    *p = s == 0u ? v[1] : s == 1u ? v[0] : v[2];
+    *q = s == 0u ? v[2] : s == 1u ? v[1] : v[0];
+}
+
+static void s48_tri_verts(const subd_sr48 *b, uint32_t t, uint32_t *v)
+{
+    v[0] = b->tri_vert[3u * t];
+    v[1] = b->tri_vert[3u * t + 1u];
+    v[2] = b->tri_vert[3u * t + 2u];
+}
+
+/* The base mesh's rules (checked once, before any walk): level 0 only, vertices in range
+ * and distinct, every neighbour in range, pointing back across the same edge reversed. */
+int subd_s48_base_check_(const subd_sr48 *b)
+{
+    uint32_t n0, t, s, v[3], u[3];
+    if (!b || b->steps != 0u || !b->pos || !b->tri_vert || !b->tri_base_nb || !b->hyb_base_nb) return SUBD_ERR_PARAM;
+    if ((b->flags & ~SUBD_SR48_NO_SMOOTH) != 0u) return SUBD_ERR_PARAM;
+    n0 = b->level_tri[1];
+    if (b->level_tri[0] != 0u || n0 != b->num_tris || (n0 & 1u) != 0u || b->num_verts != b->level_verts[0])
+        return SUBD_ERR_PARAM;
+    if (n0 == 0u) return SUBD_ERR_EMPTY;
+    if (n0 >= 0x0fffffffu || b->num_verts >= 0x0fffffffu) return SUBD_ERR_TOO_BIG;
+    for (t = 0; t < n0 / 2u; t++)
+        if (b->hyb_base_nb[t] != SUBD_NONE && b->hyb_base_nb[t] >= n0 / 2u) return SUBD_ERR_PARAM;
+    for (t = 0; t < n0; t++) {
+        s48_tri_verts(b, t, v);
+        if (v[0] >= b->num_verts || v[1] >= b->num_verts || v[2] >= b->num_verts || v[0] == v[1] || v[1] == v[2] ||
+            v[0] == v[2])
+            return SUBD_ERR_PARAM;
+        if (b->tri_base_nb[t] != SUBD_NONE && b->tri_base_nb[t] >= n0) return SUBD_ERR_PARAM;
+    }
+    for (t = 0; t < n0; t++) {
+        s48_tri_verts(b, t, v);
+        for (s = 0; s < 3u; s++) {
+            uint32_t n = s48_base_nbr(b, t, s), p, q, r, ok = 0;
+            if (n == SUBD_NONE) continue;
+            s48_slot_ends(v, s, &p, &q);
+            s48_tri_verts(b, n, u);
+            for (r = 0; r < 3u; r++) {
+                uint32_t p2, q2;
+                s48_slot_ends(u, r, &p2, &q2);
+                if (p2 == q && q2 == p && s48_base_nbr(b, n, r) == t) ok = 1;
+            }
+            if (!ok) return SUBD_ERR_PARAM;
+        }
+    }
+    return SUBD_OK;
+}
+
+static uint32_t s48_pos_of(const uint32_t *v, uint32_t x) { return v[0] == x ? 0u : v[1] == x ? 1u : 2u; }
+
+/* The two slots at corner position p: (c: 1, 2), (a: 1, 0), (b: 0, 2). */
+static uint32_t s48_slot_at(uint32_t p, uint32_t j)
+{
+    static const uint8_t tab[3][2] = {{1u, 2u}, {1u, 0u}, {0u, 2u}};
+    return tab[p][j];
+}
+
+/* Walks the fan of vertex x of the base from triangle t (which holds x): every triangle
+ * around x, each once, into out (when not NULL, at most cap); returns the count, or
+ * UINT32_MAX beyond cap. Around an interior vertex it comes back to t; at a boundary vertex
+ * it walks the other way from t too. */
+static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+{
+    uint32_t n = 0, dir, lim = b->level_tri[1] + 1u;
+    if (out && cap) out[n] = t;
+    n++;
+    for (dir = 0; dir < 2u; dir++) {
+        uint32_t cur = t, v[3], p, q, slot, i;
+        s48_tri_verts(b, cur, v);
+        slot = s48_slot_at(s48_pos_of(v, x), dir);
+        for (i = 0; i < lim; i++) {
+            uint32_t nx = s48_base_nbr(b, cur, slot), w;
+            s48_slot_ends(v, slot, &p, &q);
+            w = p == x ? q : p; /* the edge's other end */
+            if (nx == SUBD_NONE) break;
+            if (nx == t) return n; /* around: interior vertex */
+            if (n >= cap) return UINT32_MAX;
+            if (out) out[n] = nx;
+            n++;
+            cur = nx;
+            s48_tri_verts(b, cur, v);
+            {
+                uint32_t px = s48_pos_of(v, x), s0 = s48_slot_at(px, 0), s1 = s48_slot_at(px, 1), e0, e1;
+                s48_slot_ends(v, s0, &e0, &e1);
+                slot = (e0 == w || e1 == w) ? s1 : s0; /* leave by the other edge at x */
+            }
+        }
+        if (i == lim) return UINT32_MAX;
+    }
+    return n;
+}
+
+/* Largest number of triangles around a base vertex. */
+uint32_t subd_s48_valence_(const subd_sr48 *b)
+{
+    uint32_t t, j, best = 0;
+    for (t = 0; t < b->level_tri[1]; t++)
+        for (j = 0; j < 3u; j++) {
+            uint32_t n = s48_fan(b, b->tri_vert[3u * t + j], t, 0, 0xffffu);
+            if (n > best) best = n;
+        }
+    return best;
+}
+
+/* ------------------------------------------------------------------------------------ */
+/* Windows                                                                                */
+
+/* Level 0's window's gathering looks base triangles and vertices up in two hash tables
+ * (open addressing, linear probing) over the crop's maps, which are free between crops: a
+ * slot holds a local index + 1 (0: empty), the key is read back from gt or gv. A table has
+ * a power of 2 of slots above the window's capacity, so it never fills. */
+static uint32_t s48_h0_size(uint32_t cap)
+{
+    uint32_t h = 1;
+    while (2u * h <= cap && h < 0x8000u) h *= 2u;
+    return h;
+}
+/* The slot of key x in table tab (size hm + 1) over keys keys[]: x's, or the empty one
+ * where it goes. */
+static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *keys, uint32_t x)
+{
+    uint32_t h = ((x * 2654435761u) >> 12) & hm, i;
+    for (i = 0; i <= hm; i++) {
+        if (tab[h] == 0u || keys[tab[h] - 1u] == x) break;
+        h = (h + 1u) & hm;
+    }
+    return h;
+}
+
+/* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
+ * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
+ * by index; local vertices and neighbours. 0 when a capacity is exceeded. */
+int subd_s48_build0_(s48_state *s, uint32_t t0)
+{
+    const subd_sr48 *b = s->base;
+    const uint32_t mt = s->at > s->wt ? s->at : s->wt;
+    const uint32_t tm = s48_h0_size(2u * mt) - 1u, vm = s48_h0_size(s->xv) - 1u;
+    uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 mt and xv entries: above wt and wv */
+    uint32_t nt = 0, nv = 0, i, j, q, p;
+    s48_win w;
+    s48_lev(s, 0, &w);
+    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i <= vm; i++) hv[i] = 0;
+    /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
+     * that one window serves both (s48_step) */
+    for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
+        for (j = 0; j < 3u; j++) {
+            const uint32_t vx = b->tri_vert[3u * p + j], h = s48_h0_find(hv, vm, s->gv, vx);
+            if (hv[h] != 0u) continue;
+            hv[h] = (uint16_t)(nv + 1u);
+            s->gv[nv] = vx;
+            s->gvt[nv] = p;
+            s->dist[nv++] = 0;
+        }
+    for (q = 0; q < nv; q++) {
+        uint32_t x = s->gv[q], nf, f;
+        if (s->dist[q] >= S48_RINGS) continue;
+        /* the whole fan at the free tail of gt, then merged (deduplicated): a triangle
+         * appended at nt can only overwrite fan entries already read (nt grows by at most
+         * one per entry read, and nt + nf <= wt) */
+        nf = s48_fan(b, x, s->gvt[q], s->gt + nt, s->wt - nt);
+        if (nf == UINT32_MAX) return 0;
+        for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
+        for (f = 0; f < nf; f++) {
+            const uint32_t tt = s->gt[s->wt - nf + f], h = s48_h0_find(ht, tm, s->gt, tt);
+            if (ht[h] != 0u) continue;
+            for (j = 0; j < 3u; j++) {
+                const uint32_t vx = b->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
+                if (hv[g] != 0u) continue;
+                if (nv >= s->wv) return 0;
+                hv[g] = (uint16_t)(nv + 1u);
+                s->gv[nv] = vx;
+                s->gvt[nv] = tt;
+                s->dist[nv++] = (uint8_t)(s->dist[q] + 1u);
+            }
+            ht[h] = (uint16_t)(nt + 1u);
+            s->gt[nt++] = tt;
+        }
+    }
+    /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct) */
+    for (p = 0; p < 5u; p++) {
+        static const uint8_t gap[5] = {57u, 23u, 10u, 4u, 1u};
+        const uint32_t g = gap[p];
+        for (i = g; i < nt; i++) {
+            uint32_t x = s->gt[i];
+            j = i;
+            while (j >= g && s->gt[j - g] > x) {
+                s->gt[j] = s->gt[j - g];
+                j -= g;
+            }
+            s->gt[j] = x;
+        }
+    }
+    /* the triangle table again, on the sorted indices */
+    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i < nt; i++) ht[s48_h0_find(ht, tm, s->gt, s->gt[i])] = (uint16_t)(i + 1u);
+    for (i = 0; i < nt; i++) {
+        uint32_t tt = s->gt[i];
+        for (j = 0; j < 3u; j++) {
+            uint32_t vx = b->tri_vert[3u * tt + j], nb;
+            w.tv[3u * i + j] = (uint16_t)(hv[s48_h0_find(hv, vm, s->gv, vx)] - 1u); /* present: added with tt */
+            nb = s48_base_nbr(b, tt, j);
+            if (nb == SUBD_NONE) {
+                w.tn[3u * i + j] = S48_BND;
+                continue;
+            }
+            nb = ht[s48_h0_find(ht, tm, s->gt, nb)];
+            w.tn[3u * i + j] = nb != 0u ? (uint16_t)(nb - 1u) : S48_OUT;
+        }
+        w.key[i] = i; /* local: gt[i] = tt */
+        if (tt == t0) w.hd[2] = i;
+        if (tt == (t0 | 1u)) w.hd[4] = i;
+    }
+    for (i = 0; i < nv; i++) {
+        for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
+        w.vid[i] = i; /* local: gv[i] */
+        w.vf[i] = S48_EXACT;
+        if (w.vl)
+            for (j = 0; j < 3u; j++) w.vl[3u * i + j] = s->l0[3u * i + j];
+    }
+    w.hd[0] = nt;
+    w.hd[1] = nv;
+    w.hd[6] = 0;
+    return 1;
+}
+
+#ifdef S48_DBG
+uint32_t s48_dbg[40];
+#endif
+
+/* The fan walk for the base's census (sr48_census.c): one walk, s48_fan. */
+uint32_t subd_s48_fan_(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+{
+    return s48_fan(b, x, t, out, cap);
+}

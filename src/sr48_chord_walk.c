@@ -40,6 +40,11 @@
  * The walk's per-level state, the star's keys, F(D)'s first levels and the memos are blocks
  * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
  * window A lives in two level windows below the tile's root, free during a decision).
+ *
+ * Length (about 870 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
+ * its exact memos, whose parts share the walk's state and the tiles' arrays; the counting
+ * region F(D) (s48c_nbr .. s48c_may_at, about 200 lines) is the part that could move to a
+ * file of its own with its functions exported (not done yet).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"

@@ -194,7 +194,10 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
                          int32_t dy, int32_t S, int kind, subd_real *out, loop_weights w)
 {
     const subd_real *P = g->pos;
-    int32_t i, R = (int32_t)row;
+    /* destination index k = lt_vi(S, x, y), stepped: k(x + dx, y + dy) - k(x, y) =
+     * dx + dy (2S + 3 - dy) / 2 - y dy, which falls by dy^2 per step */
+    int32_t i, R = (int32_t)row, k = y * (2 * S + 3 - y) / 2 + x, sk = dx + dy * (2 * S + 3 - dy) / 2 - y * dy;
+    int32_t dd = dy * dy;
     uint32_t dead = 0, *ovf = &dead; /* a tile's rules cannot overflow (LT_HUGE): unread */
     if (kind == 3) { /* even: the vertex rule from the ring start */
         int32_t o3[12];
@@ -205,7 +208,7 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
         o3[4] = -3 * (R + 1);
         o3[5] = -3 * R;
         for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
-        for (i = 0; i < n; i++, l0++, x += dx, y += dy) {
+        for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
             const subd_real *c = P + 3u * l0;
             const int32_t *o = o3 + g->dir[l0];
             subd_acc acc[3];
@@ -216,7 +219,7 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
             loop_smooth_add(acc, w, c + o[3]);
             loop_smooth_add(acc, w, c + o[4]);
             loop_smooth_add(acc, w, c + o[5]);
-            loop_smooth_end(out + 3 * (y * (2 * S + 3 - y) / 2 + x), acc, ovf);
+            loop_smooth_end(out + 3 * k, acc, ovf);
         }
     } else { /* the edge d = kind of U(l0): a -> b, opposite c, across e */
         int32_t oa, ob, oc, oe;
@@ -228,9 +231,9 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
         } else {
             oa = 3 * R; ob = 0; oc = 3; oe = 3 * (R - 1);
         }
-        for (i = 0; i < n; i++, l0++, x += dx, y += dy) {
+        for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
             const subd_real *c = P + 3u * l0;
-            subd_real *o = out + 3 * (y * (2 * S + 3 - y) / 2 + x);
+            subd_real *o = out + 3 * k;
             const subd_real *a = c + oa, *b = c + ob, *v = c + oc, *e = c + oe, *t;
             if (!(((uint32_t)g->low[l0] >> d) & 1u)) { /* the other side is lower */
                 t = a; a = b; b = t;
@@ -585,26 +588,26 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
     fa = ((int32_t)ca[2] - a0) / n;
     fb = ((int32_t)cb[2] - b0) / n;
     /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
-     * id = r(a) + b - 1 with r(a) = base + (a - 1) nm1 - (a - 1) a / 2 follows a step of a by
-     * r(a + 1) = r(a) + nm1 - a */
+     * id = r(a) + b - 1, r(a) = base + (a - 1) nm1 - (a - 1) a / 2, a polynomial in a, is
+     * followed along the row for every point (modulo 2^64): a step changes it by
+     * dl = r(a + da) - r(a) + db = da (nm1 - a) - (da < 0) + db, and dl itself by -da^2 per
+     * step; points off the interior take subd_lp_vertex_id */
     for (y = 0; y <= m; y++) {
         int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
         int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
         int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
         int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
+        uint64_t cl = (uint64_t)(r + (int64_t)ib - 1);
+        int64_t dl = (int64_t)da * ((int64_t)nm1 - ia) - (da < 0 ? 1 : 0) + db;
         for (x = 0; x + y <= m; x++, k++) {
             uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
-            uint64_t id;
-            if (a >= 1u && b >= 1u && a + b < n1) /* vertex_id's face interior */
-                id = (uint64_t)(r + (int64_t)b - 1);
-            else
+            uint64_t id = cl;
+            if (a - 1u >= n1 - 1u || b - 1u >= n1 - 1u || a + b >= n1) /* off vertex_id's face interior */
                 id = subd_lp_vertex_id(in, f, a, b, lv);
             tl->qid[2u * k] = (uint32_t)id;
             tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
-            if (da > 0)
-                r += (int64_t)nm1 - ia;
-            else if (da < 0)
-                r -= (int64_t)nm1 - (ia - 1);
+            cl += (uint64_t)dl;
+            dl -= da * da;
             ia += da;
             ib += db;
         }

@@ -111,17 +111,20 @@ loop_weights subd_loop_weights_of(loop_wcache *c, uint32_t n, uint32_t *ovf);
 
 /* Interior edge: 3/8 (a + b) + 1/8 c + 1/8 d, with a -> b the edge's lower half-edge, c the
  * opposite vertex in its face and d the one in the twin's face. */
+/* One coordinate of it (loop_tile.c unrolls the three). */
+static inline subd_real loop_rule_edge1(subd_real a, subd_real b, subd_real c, subd_real d, uint32_t *ovf)
+{
+    subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_FRAC(3, 8), a);
+    acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 8), b);
+    acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), c);
+    acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), d);
+    return subd_acc_real(acc, ovf);
+}
 static inline void loop_rule_edge(subd_real *out, const subd_real *xa, const subd_real *xb, const subd_real *xc,
                                   const subd_real *xd, uint32_t *ovf)
 {
     uint32_t j;
-    for (j = 0; j < 3u; j++) {
-        subd_acc acc = subd_acc_add(subd_acc_zero(), SUBD_REAL_FRAC(3, 8), xa[j]);
-        acc = subd_acc_add(acc, SUBD_REAL_FRAC(3, 8), xb[j]);
-        acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), xc[j]);
-        acc = subd_acc_add(acc, SUBD_REAL_FRAC(1, 8), xd[j]);
-        out[j] = subd_acc_real(acc, ovf);
-    }
+    for (j = 0; j < 3u; j++) out[j] = loop_rule_edge1(xa[j], xb[j], xc[j], xd[j], ovf);
 }
 
 /* Sharp edge a -> b (a: the lower half-edge's origin), ends regular ra, rb: the midpoint, or

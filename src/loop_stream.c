@@ -523,15 +523,20 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
     const tile_p3 *P = (const tile_p3 *)(const void *)tl->qpos;
     tile_p3 *tp = (tile_p3 *)(void *)t->pos, *tn = (tile_p3 *)(void *)t->normal;
     const uint32_t *I = tl->qid;
-    uint32_t j, k;
+    uint32_t j;
     for (j = j0; j < n; j++, ix += 3) {
         int st;
-        for (k = 0; k < 3u; k++) { /* corner by corner: few live registers */
-            uint32_t a = ix[k];
-            tp[k] = P[a];
-            t->id[k] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);
-            if (N) tn[k] = N[a];
-        }
+        uint32_t a;
+        /* corner by corner (few live registers), unrolled */
+#define TILE_PUSH_CORNER(k)                                                          \
+        a = ix[k];                                                                   \
+        tp[k] = P[a];                                                                \
+        t->id[k] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);           \
+        if (N) tn[k] = N[a];
+        TILE_PUSH_CORNER(0)
+        TILE_PUSH_CORNER(1)
+        TILE_PUSH_CORNER(2)
+#undef TILE_PUSH_CORNER
         if ((st = fn(ctx, t)) != 0) {
             *at = j;
             return st;

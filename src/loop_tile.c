@@ -44,6 +44,21 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_tile.h"
 
+/* No rule of a tile can overflow, so its rules skip the check (lt_pass): each is a convex
+ * combination (weights >= 0 summing to one, 3/8 3/8 1/8 1/8 and 5/8 1/16 x 6, exact in both
+ * arithmetics), so no point of a tile leaves the range of its level-0 points: in Q16.16 the
+ * exact 64-bit sum rounds into it, and in float32 a partial sum stays below
+ * max |x| (1 + 2^-24)^k, which is finite when every level-0 coordinate is below
+ * SUBD_REAL_MAX / 2. A patch with a larger (or a NaN) coordinate is refused (LT_HUGE) and
+ * takes the general path, whose rules check. Why the #if: the float bound has no Q16.16
+ * counterpart (every Q16.16 value is safe, and a comparison with its largest value would
+ * be always false). */
+#if SUBD_FIXED
+#define LT_HUGE(x) 0
+#else
+#define LT_HUGE(x) (!((x) <= SUBD_REAL_MAX / 2.0f && (x) >= -(SUBD_REAL_MAX / 2.0f)))
+#endif
+
 /* Lattice directions, counter-clockwise: (1,0) (0,1) (-1,1) (-1,0) (0,-1) (1,-1). */
 static const int8_t lt_dx[6] = {1, 0, -1, -1, 0, 1};
 static const int8_t lt_dy[6] = {0, 1, 1, 0, -1, -1};
@@ -158,64 +173,137 @@ static inline void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui
     }
 }
 
-/* The index offsets of a grid vertex's six neighbours (i, j) + (1, 0), (0, 1), (-1, 1),
- * (-1, 0), (0, -1), (1, -1), for a vertex in a row of `row` vertices of the row-major
- * triangular grid (lt_vi); unsigned wrap-around gives the negative ones. */
-static inline void lt_ring_offsets(uint32_t row, uint32_t *off)
+/* A region of level t + 1 points and where they go: the points (px, py) = O + x e1 + y e2
+ * (level t + 1's coordinates plus one: the point halves (px, py) of level t's grid) with x, y >= lo, x + y <= hi (less the
+ * region's three corners when `skip`), point (x, y) written to vertex (x - lo, y - lo) of a
+ * grid of side hi - 2 lo. e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
+typedef struct lt_frame {
+    int32_t ox, oy, p, q, r, u, lo, hi;
+    int skip;
+} lt_frame;
+
+/* One pass along natural row py: n points from px0 stepping by 2 (one kind: lt_classify's
+ * by the parities), parent U index l0 (+1 per point), destination (x, y) stepping by
+ * (dx, dy) in a grid of side S. Even points take the smooth vertex rule of valence 6 from
+ * the ring start, odd ones the interior edge rule from the lower side (the rules of
+ * loop_rules.h, the products in subd_loop's order). Indices from U(ui, uj)'s l0: vertex
+ * (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j, the length of row j),
+ * + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. Forced inline
+ * (TOPO_INLINE) so each kind is its own loop. */
+TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0, int32_t x, int32_t y, int32_t dx,
+                         int32_t dy, int32_t S, int kind, subd_real *out, loop_weights w)
 {
-    off[0] = 1u;
-    off[1] = row;
-    off[2] = row - 1u;
-    off[3] = (uint32_t)0u - 1u;
-    off[4] = (uint32_t)0u - (row + 1u);
-    off[5] = (uint32_t)0u - row;
+    const subd_real *P = g->pos;
+    /* destination index k = lt_vi(S, x, y), stepped: k(x + dx, y + dy) - k(x, y) =
+     * dx + dy (2S + 3 - dy) / 2 - y dy, which falls by dy^2 per step */
+    int32_t i, R = (int32_t)row, k = y * (2 * S + 3 - y) / 2 + x, sk = dx + dy * (2 * S + 3 - dy) / 2 - y * dy;
+    int32_t dd = dy * dy;
+    uint32_t dead = 0, *ovf = &dead; /* a tile's rules cannot overflow (LT_HUGE): unread */
+    if (kind == 3) { /* even: the vertex rule from the ring start */
+        int32_t o3[12];
+        o3[0] = 3;
+        o3[1] = 3 * R;
+        o3[2] = 3 * (R - 1);
+        o3[3] = -3;
+        o3[4] = -3 * (R + 1);
+        o3[5] = -3 * R;
+        for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
+        for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
+            const subd_real *c = P + 3u * l0;
+            const int32_t *o = o3 + g->dir[l0];
+            subd_acc acc[3];
+            loop_smooth_begin(acc, w, c);
+            loop_smooth_add(acc, w, c + o[0]);
+            loop_smooth_add(acc, w, c + o[1]);
+            loop_smooth_add(acc, w, c + o[2]);
+            loop_smooth_add(acc, w, c + o[3]);
+            loop_smooth_add(acc, w, c + o[4]);
+            loop_smooth_add(acc, w, c + o[5]);
+            loop_smooth_end(out + 3 * k, acc, ovf);
+        }
+    } else { /* the edge d = kind of U(l0): a -> b, opposite c, across e */
+        int32_t oa, ob, oc, oe;
+        uint32_t d = (uint32_t)kind;
+        if (kind == 0) {
+            oa = 0; ob = 3; oc = 3 * R; oe = -3 * R;
+        } else if (kind == 1) {
+            oa = 3; ob = 3 * R; oc = 0; oe = 3 * (R + 1);
+        } else {
+            oa = 3 * R; ob = 0; oc = 3; oe = 3 * (R - 1);
+        }
+        for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
+            const subd_real *c = P + 3u * l0;
+            subd_real *o = out + 3 * k;
+            const subd_real *a = c + oa, *b = c + ob, *v = c + oc, *e = c + oe, *t;
+            if (!(((uint32_t)g->low[l0] >> d) & 1u)) { /* the other side is lower */
+                t = a; a = b; b = t;
+                t = v; v = e; e = t;
+            }
+            o[0] = loop_rule_edge1(a[0], b[0], v[0], e[0], ovf);
+            o[1] = loop_rule_edge1(a[1], b[1], v[1], e[1], ovf);
+            o[2] = loop_rule_edge1(a[2], b[2], v[2], e[2], ovf);
+        }
+    }
+    (void)dead;
 }
 
-/* Position of the level t + 1 point (px, py) / 2 of grid g (side s): the smooth vertex rule
- * of valence 6 from the vertex's ring start, or the interior edge rule from the lower side.
- * Indices from U(ui, uj)'s: vertex (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j,
- * the length of row j), + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. */
-/* Forced inline (topo.h's TOPO_INLINE) into each loop over a grid: out of line, the call and
- * the classification cost the M4F 7 instructions per emitted triangle (demo level 6). */
-TOPO_INLINE void lt_point(const lt_grid *g, uint32_t s, uint32_t px, uint32_t py, loop_weights w, subd_real *out,
-                          uint32_t *ovf)
+/* Bounds of dx from c dx + d >= 0 (c in -1, 0, 1). */
+static void lt_bound(int32_t c, int32_t d, int32_t *a, int32_t *b)
 {
-    uint32_t ui, uj, d, l0, row;
-    int even;
-    const subd_real *P = g->pos;
-    lt_classify(px, py, &even, &ui, &uj, &d);
-    l0 = lt_vi(s, ui, uj);
-    row = s + 1u - uj;
-    if (even) {
-        /* the ring twice over, so that its six from the ring start are r[0..5]: the adds
-         * unrolled, in the ring's order */
-        uint32_t k, off[6];
-        const subd_real *q[12], *const *r;
-        subd_acc acc[3];
-        lt_ring_offsets(row, off);
-        for (k = 0; k < 6u; k++) q[k] = q[k + 6u] = P + 3u * (l0 + off[k]);
-        r = q + g->dir[l0];
-        loop_smooth_begin(acc, w, P + 3u * l0);
-        loop_smooth_add(acc, w, r[0]);
-        loop_smooth_add(acc, w, r[1]);
-        loop_smooth_add(acc, w, r[2]);
-        loop_smooth_add(acc, w, r[3]);
-        loop_smooth_add(acc, w, r[4]);
-        loop_smooth_add(acc, w, r[5]);
-        loop_smooth_end(out, acc, ovf);
-    } else {
-        uint32_t a, b, c, e;
-        if (d == 0u) {
-            a = l0; b = l0 + 1u; c = l0 + row; e = l0 - row;
-        } else if (d == 1u) {
-            a = l0 + 1u; b = l0 + row; c = l0; e = l0 + row + 1u;
-        } else {
-            a = l0 + row; b = l0; c = l0 + 1u; e = l0 + row - 1u;
+    if (c > 0) {
+        if (-d > *a) *a = -d;
+    } else if (c < 0) {
+        if (d < *b) *b = d;
+    } else if (d < 0) {
+        *b = *a - 1;
+    }
+}
+
+/* The points of region fr from grid g (side s) by rows of g's lattice: in a row the kind of
+ * point alternates (lt_classify), so each row is two passes of one kind, and the parent
+ * row's offsets are the row's; the destination index follows the frame. Each point gets
+ * subd_loop's value. */
+static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real *out, loop_weights w)
+{
+    int32_t S = fr->hi - 2 * fr->lo, cx[3], cy[3], ymin, ymax, py, k, e = fr->hi - fr->lo;
+    cx[0] = fr->ox + fr->lo * (fr->p + fr->r);
+    cy[0] = fr->oy + fr->lo * (fr->q + fr->u);
+    cx[1] = fr->ox + e * fr->p + fr->lo * fr->r;
+    cy[1] = fr->oy + e * fr->q + fr->lo * fr->u;
+    cx[2] = fr->ox + fr->lo * fr->p + e * fr->r;
+    cy[2] = fr->oy + fr->lo * fr->q + e * fr->u;
+    ymin = ymax = cy[0];
+    for (k = 1; k < 3; k++) {
+        if (cy[k] < ymin) ymin = cy[k];
+        if (cy[k] > ymax) ymax = cy[k];
+    }
+    for (py = ymin; py <= ymax; py++) {
+        /* x = u dpx - r dpy, y = -q dpx + p dpy (the inverse frame), dpx = px - ox */
+        int32_t dpy = py - fr->oy, a = -0x40000000, b = 0x40000000, pa, pb, par;
+        uint32_t uj = (uint32_t)py >> 1, row = s + 1u - uj, rb = lt_vi(s, 0u, uj);
+        lt_bound(fr->u, -fr->r * dpy - fr->lo, &a, &b);
+        lt_bound(-fr->q, fr->p * dpy - fr->lo, &a, &b);
+        lt_bound(fr->q - fr->u, fr->hi - (fr->p - fr->r) * dpy, &a, &b);
+        pa = a + fr->ox;
+        pb = b + fr->ox;
+        if (fr->skip)
+            for (k = 0; k < 3; k++)
+                if (cy[k] == py) {
+                    if (cx[k] == pa) pa++;
+                    else if (cx[k] == pb) pb--;
+                }
+        for (par = 0; par < 2; par++) {
+            int32_t px0 = pa + par, n, dpx, x, y;
+            int kind;
+            if (px0 > pb) break;
+            n = (pb - px0) / 2 + 1;
+            dpx = px0 - fr->ox;
+            x = fr->u * dpx - fr->r * dpy - fr->lo;
+            y = -fr->q * dpx + fr->p * dpy - fr->lo;
+            if (py & 1) kind = (px0 & 1) ? 1 : 2;
+            else kind = (px0 & 1) ? 0 : 3;
+            lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, kind, out, w);
         }
-        if (((uint32_t)g->low[l0] >> d) & 1u)
-            loop_rule_edge(out, P + 3u * a, P + 3u * b, P + 3u * c, P + 3u * e, ovf);
-        else
-            loop_rule_edge(out, P + 3u * b, P + 3u * a, P + 3u * e, P + 3u * c, ovf);
     }
 }
 
@@ -297,19 +385,21 @@ static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2
 
 /* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: its ring starts, rotations
  * and lower sides too (not for the level the tile ends at). */
-static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, loop_weights w, uint32_t *ovf)
+static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, loop_weights w)
 {
-    uint32_t s2 = 2u * s - 3u, I, J, lo = 0, v = 0; /* the flag in a register, not through *ovf */
-    for (J = 0; J <= s2; J++)
-        for (I = 0; I + J <= s2; I++, v++) { /* v = lt_vi(s2, I, J) */
-            if ((I == 0u && J == 0u) || (I == s2 && J == 0u) || (I == 0u && J == s2)) continue;
-            lt_point(g, s, I + 1u, J + 1u, w, h->pos + 3u * v, &lo);
-            /* ring starts: the next level's old vertices are this level's face's, at
-             * I, J >= 1, I + J <= s2 - 1 */
-            if (meta && I >= 1u && J >= 1u && I + J + 1u <= s2) h->dir[v] = (uint8_t)lt_dir_at(g, s, I + 1u, J + 1u);
-        }
-    *ovf |= lo;
-    if (meta) lt_faces(g, s, h, s2);
+    uint32_t s2 = 2u * s - 3u, I, J;
+    lt_frame fr;
+    fr.ox = 1; fr.oy = 1; fr.p = 1; fr.q = 0; fr.r = 0; fr.u = 1;
+    fr.lo = 0; fr.hi = (int32_t)s2; fr.skip = 1;
+    lt_rows(g, s, &fr, h->pos, w);
+    if (!meta) return;
+    /* ring starts: the next level's old vertices are this level's face's, at I, J >= 1,
+     * I + J <= s2 - 1 */
+    for (J = 1; J + 2u <= s2; J++) {
+        uint32_t v = lt_vi(s2, 1u, J);
+        for (I = 1; I + J + 1u <= s2; I++, v++) h->dir[v] = (uint8_t)lt_dir_at(g, s, I + 1u, J + 1u);
+    }
+    lt_faces(g, s, h, s2);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -365,9 +455,10 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         q = lt_vi(4u, lx[v], ly[v]);
         if (used[q]) return 0;
         used[q] = 1;
-        pos[3u * v] = p->pos[3u * v];
-        pos[3u * v + 1u] = p->pos[3u * v + 1u];
-        pos[3u * v + 2u] = p->pos[3u * v + 2u];
+        for (k = 0; k < 3u; k++) {
+            pos[3u * v + k] = p->pos[3u * v + k];
+            if (LT_HUGE(pos[3u * v + k])) return 0; /* the general path checks every rule */
+        }
     }
     for (k = 0; k < 15u; k++) {
         low[k] = 0;
@@ -409,7 +500,7 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
     for (k = 0; k < 15u; k++) g->low[k] = low[k];
     w = subd_loop_weights_of(wc, 6u, ovf);
     for (t = 0; t + 1u < tl->depth; t++)
-        lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], 1, w, ovf);
+        lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], 1, w);
     return 1;
 }
 
@@ -423,15 +514,12 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
                              const int32_t e1[2], const int32_t e2[2], loop_weights w, uint32_t *lo)
 {
     static const uint8_t qrot[4] = {0u, 2u, 4u, 1u};
-    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, X, Y, v = 0, x, y, k = 0;
+    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, x, y, k = 0;
     const subd_real *M = tl->mpos;
-    for (Y = 0; Y <= S; Y++)
-        for (X = 0; X + Y <= S; X++, v++) { /* v = lt_vi(S, X, Y) */
-            int32_t qx = (int32_t)X - 1, qy = (int32_t)Y - 1;
-            if ((X == 0u && Y == 0u) || (X == S && Y == 0u) || (X == 0u && Y == S)) continue;
-            lt_point(g, s, (uint32_t)(ox + qx * e1[0] + qy * e2[0]), (uint32_t)(oy + qx * e1[1] + qy * e2[1]), w,
-                     tl->mpos + 3u * v, lo);
-        }
+    lt_frame fr;
+    fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
+    fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1;
+    lt_rows(g, s, &fr, tl->mpos, w);
     for (y = 0; y <= m; y++) {
         /* the ring's offsets in subd_reals (lt_ring_offsets' six, twice over, so that the six
          * from any start are consecutive) for row y + 1 of the margin grid */
@@ -457,7 +545,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
                      int32_t e2[2])
 {
     const lt_grid *g = &tl->g[0]; /* level depth - 1 */
-    uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), x, y, lo = 0;
+    uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), lo = 0;
     int32_t im = (int32_t)m, ox, oy;
     loop_weights w = subd_loop_weights_of(wc, 6u, ovf);
     /* the quarter's corner 0 and edge directions in the last level, relative to the tile
@@ -469,7 +557,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
     e1[1] = fr[c][3];
     e2[0] = fr[c][4];
     e2[1] = fr[c][5];
-    /* grid coordinates are the tile face's plus one, and lt_point takes them plus one */
+    /* grid coordinates are the tile face's plus one, and lt_rows takes them plus one */
     ox = org[0] + 2;
     oy = org[1] + 2;
     if (tl->lk) {
@@ -477,11 +565,12 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
         *ovf |= lo;
         return;
     }
-    for (y = 0; y <= m; y++)
-        for (x = 0; x + y <= m; x++) {
-            int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            lt_point(g, s, (uint32_t)px, (uint32_t)py, w, tl->qpos + 3u * lt_vi(m, x, y), &lo);
-        }
+    {
+        lt_frame q;
+        q.ox = ox; q.oy = oy; q.p = e1[0]; q.q = e1[1]; q.r = e2[0]; q.u = e2[1];
+        q.lo = 0; q.hi = (int32_t)m; q.skip = 0;
+        lt_rows(g, s, &q, tl->qpos, w);
+    }
     *ovf |= lo;
 }
 
@@ -499,26 +588,26 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
     fa = ((int32_t)ca[2] - a0) / n;
     fb = ((int32_t)cb[2] - b0) / n;
     /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
-     * id = r(a) + b - 1 with r(a) = base + (a - 1) nm1 - (a - 1) a / 2 follows a step of a by
-     * r(a + 1) = r(a) + nm1 - a */
+     * id = r(a) + b - 1, r(a) = base + (a - 1) nm1 - (a - 1) a / 2, a polynomial in a, is
+     * followed along the row for every point (modulo 2^64): a step changes it by
+     * dl = r(a + da) - r(a) + db = da (nm1 - a) - (da < 0) + db, and dl itself by -da^2 per
+     * step; points off the interior take subd_lp_vertex_id */
     for (y = 0; y <= m; y++) {
         int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
         int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
         int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
         int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
+        uint64_t cl = (uint64_t)(r + (int64_t)ib - 1);
+        int64_t dl = (int64_t)da * ((int64_t)nm1 - ia) - (da < 0 ? 1 : 0) + db;
         for (x = 0; x + y <= m; x++, k++) {
             uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
-            uint64_t id;
-            if (a >= 1u && b >= 1u && a + b < n1) /* vertex_id's face interior */
-                id = (uint64_t)(r + (int64_t)b - 1);
-            else
+            uint64_t id = cl;
+            if (a - 1u >= n1 - 1u || b - 1u >= n1 - 1u || a + b >= n1) /* off vertex_id's face interior */
                 id = subd_lp_vertex_id(in, f, a, b, lv);
             tl->qid[2u * k] = (uint32_t)id;
             tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
-            if (da > 0)
-                r += (int64_t)nm1 - ia;
-            else if (da < 0)
-                r -= (int64_t)nm1 - (ia - 1);
+            cl += (uint64_t)dl;
+            dl -= da * da;
             ia += da;
             ib += db;
         }

@@ -700,6 +700,51 @@ static void stream_tiles_limit(void)
 
 /* The position hash of cmp_tri (each corner's three coordinates in emission order) without
  * a reference: the device's side of stream_level6. */
+/* Tiles near the top of the range (src/loop_tile.c, LT_HUGE): the tile's rules are not
+ * checked for overflow (convex combinations of the patch's level-0 points), so a patch with
+ * a coordinate beyond SUBD_REAL_MAX / 2 must take the checked general path. The flipped grid
+ * moved to coordinates 0.375..0.45 SUBD_REAL_MAX (every regular patch tiled, unchecked) and
+ * 0.925..1.0 SUBD_REAL_MAX (every patch refused, the general path): the stream's status is
+ * subd_loop's, and
+ * when both succeed the bits are (compare_one), levels 2 and 3, plain and limit. Q16.16 has
+ * no such patches (LT_HUGE is 0 there): the same scaled grids check it too. */
+static void stream_tiles_huge(void)
+{
+    uint32_t s, v, k, hash = 2166136261u, levels, lim;
+    for (s = 0; s < 2u; s++)
+        for (lim = 0; lim < 2u; lim++)
+            for (levels = 2; levels <= 3u; levels++) {
+                subd_arena a;
+                subd_mesh in, ref;
+                subd_loop_opts o = {levels, SUBD_LOOP_BOUNDARY_PAPER, 0};
+                subd_loop_sink sink;
+                subd_diag d;
+                uint32_t count = 0, mark;
+                int want;
+                subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+                if (!make_grid(&a, 6u, 1, 0, &in)) return;
+                for (v = 0; v < in.num_verts; v++)
+                    for (k = 0; k < 3u; k++) /* grid coordinates 0..6 -> (0.45 or 1 - c / 80) x the range */
+                        in.pos[3u * v + k] = SUBD_FIXED ? in.pos[3u * v + k] * 4
+                                                        : ((s ? 1.0f : 0.45f) - in.pos[3u * v + k] * 0.0125f) * SUBD_REAL_MAX;
+                mark = subd_arena_mark(&a);
+                want = subd_loop(&a, &in, &o, &ref, &d);
+                subd_arena_rewind(&a, mark);
+                o.flags = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+                sink.tri = count_tri;
+                sink.ctx = &count;
+                if (lim && want == SUBD_OK) { /* the limit reference may overflow where the levels do not */
+                    if (compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash)) continue;
+                    CHECK_EQ(subd_arena_mark(&a), mark);
+                    continue;
+                }
+                CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), want);
+                CHECK_EQ(subd_arena_mark(&a), mark);
+                if (want == SUBD_OK && !lim) CHECK(compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash));
+                if (!SUBD_FIXED && s == 0u) CHECK_EQ(want, SUBD_OK); /* 0.45: in range everywhere */
+            }
+}
+
 static int hash_tri(void *ctx, const subd_loop_tri *t)
 {
     uint32_t *h = (uint32_t *)ctx, c, k;
@@ -769,6 +814,7 @@ const test_case suite_loop_stream[] = {
     {"stream_range", stream_range},
     {"stream_tiles", stream_tiles},
     {"stream_tiles_limit", stream_tiles_limit},
+    {"stream_tiles_huge", stream_tiles_huge},
     {"stream_level6", stream_level6},
     {0, 0},
 };

@@ -41,7 +41,7 @@
  * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
  * window A lives in two level windows below the tile's root, free during a decision).
  *
- * Length (about 870 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
+ * Length (about 885 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
  * its exact memos, whose parts share the walk's state and the tiles' arrays; the counting
  * region F(D) (s48c_nbr .. s48c_may_at, about 200 lines) is the part that could move to a
  * file of its own with its functions exported (not done yet).
@@ -443,6 +443,30 @@ static uint32_t *s48c_mk(const s48_state *s, uint64_t key, uint32_t j)
     return first ? e : e + 4;
 }
 
+/* One level of a tile (s48c_tile, s48c_bits: the same refinements and crops, so the same
+ * positions): at the first level of a tile of 2 or more levels the root r's window w is
+ * cropped to r and its two rings (the window's invariant); the window *p of level `level` is
+ * refined into x; unless it was the tile's last level, x is cropped into a to the rings of
+ * the descendants (*lo, *n: their first index and count, doubled by the refinement).
+ * -1 failure, 1 the last level refined (in x), 0 go on. */
+static int s48c_level(s48_state *s, const s48_win *w, uint32_t r, uint32_t level, int first, int last,
+                      const s48_win **p, s48_win *a, s48_win *x, uint32_t *lo, uint32_t *n, uint32_t ct, uint32_t cv)
+{
+    if (first && !last) {
+        if (!subd_s48_crop_n_(s, w, r, 1u, a, ct, cv)) return -1;
+        *lo = a->hd[3];
+        *p = a;
+    }
+    if (!subd_s48_refine_(s, *p, level, x)) return -1;
+    *lo *= 2u;
+    *n *= 2u;
+    if (last) return 1;
+    if (!subd_s48_crop_n_(s, x, *lo, *n, a, ct, cv)) return -1;
+    *lo = a->hd[3];
+    *p = a;
+    return 0;
+}
+
 /* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
  * window, entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting
  * flags and their corners' finest positions) refined breadth first down to max_level as the
@@ -464,6 +488,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     s48_win w, x, a;
     const s48_win *p = &w;
     uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
+    int lv;
     uint16_t *tn = s48c_tn(s);
     uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
     subd_sr48_lin *st = s48c_lin(s);
@@ -537,18 +562,9 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
                 tf[h] = step == 0u ? 1u : tf[h >> 1];
             }
         }
-        if (step == 0u && m >= 2u) { /* r and its two rings only (the window's invariant) */
-            if (!subd_s48_crop_n_(s, &w, r, 1u, &a, ct, cv)) return -1;
-            lo = a.hd[3];
-            p = &a;
-        }
-        if (!subd_s48_refine_(s, p, j + step, &x)) return -1;
-        lo *= 2u;
-        n *= 2u;
-        if (step + 1u == m) break;
-        if (!subd_s48_crop_n_(s, &x, lo, n, &a, ct, cv)) return -1;
-        lo = a.hd[3];
-        p = &a;
+        lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, ct, cv);
+        if (lv < 0) return -1;
+        if (lv > 0) break;
     }
     for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
         for (i = 0; i < 3u; i++) {
@@ -682,6 +698,7 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     s48_win w, x, a = s48c_mwin(s);
     const s48_win *p = &w;
     uint32_t step, lo = r, n = 1, q, h, i, bad;
+    int lv;
     uint16_t *tn = s48c_tn(s);
     subd_sr48_lin *st = s48c_lin(s);
     uint64_t key;
@@ -689,18 +706,9 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     key = s48_key(&w, r);
     s48_x(s, &x);
     for (step = 0; step < m; step++) {
-        if (step == 0u && m >= 2u) { /* r and its two rings only */
-            if (!subd_s48_crop_n_(s, &w, r, 1u, &a, s->at, s->av)) return -1;
-            lo = a.hd[3];
-            p = &a;
-        }
-        if (!subd_s48_refine_(s, p, j + step, &x)) return -1;
-        lo *= 2u;
-        n *= 2u;
-        if (step + 1u == m) break;
-        if (!subd_s48_crop_n_(s, &x, lo, n, &a, s->at, s->av)) return -1;
-        lo = a.hd[3];
-        p = &a;
+        lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, s->at, s->av);
+        if (lv < 0) return -1;
+        if (lv > 0) break;
     }
     for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
         for (i = 0; i < 3u; i++) {

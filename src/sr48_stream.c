@@ -549,6 +549,13 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->tend = 0;
     s->built = 0;
     s->err = 0;
+    if (s->tm > 1u) { /* the tile counters (sr48_stream_internal.h) */
+        s48_win x, ta;
+        s48_x(s, &x);
+        s48_win_at(s, s->ablk, s->aoff, &ta);
+        x.hd[7] = 0;
+        ta.hd[7] = 0;
+    }
     if (o->adapt.mode == SUBD_SR48_ADAPT_CHORD) subd_s48_chord_begin_(s);
     subd_stream_start(str, a, e.mark, SUBD_STREAM_TRIS, &s->impl, 2u);
     return subd_entry_ok(&e);

@@ -50,7 +50,11 @@
 
 struct s48_state;
 /* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt,
- * the window's level. */
+ * the window's level; hd[7] of the uniform tile's blocks X and A: how many tiles were made,
+ * and how many of them with the two rings of the exactness argument (sr48_tile.c: the
+ * smaller crops first; counted for the tests, which force the two rings with
+ * S48_TILE_FULL in A's). */
+#define S48_TILE_FULL 0x80000000u
 typedef struct s48_win {
     uint32_t *hd;
     uint16_t *tv, *tn;

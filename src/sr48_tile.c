@@ -67,8 +67,10 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
  * tile's 2^tw triangles of level L, emitted in key order by subd_s48_tile_emit_ without a
  * level-L window (subd_s48_last_ smooths their old corners). A contains every window the
  * depth-first walk would crop for one descendant (a union of rings), so every emitted
- * corner is exact (checked). */
-int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
+ * corner is exact. small = 1: the windows before the last cropped smaller (fin 1 of
+ * subd_s48_refine_crop_: ring 1 of the descendants and the partners of its triangles, see
+ * subd_s48_tile_), 0: to their two rings. 0 on failure. */
+static int s48_tile_build(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0, uint32_t small)
 {
     s48_win x, a;
     const s48_win *p = w;
@@ -82,9 +84,8 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     for (j = 0; j + 1u < tw; j++) {
         const uint32_t last = j + 2u == tw;
         s48_win *o = ((tw - 2u - j) & 1u) ? &a : &x;
-        if (!subd_s48_refine_crop_(s, p, s->k + j, lo, n, o, s->at, s->av,
-                                   !last ? 0u : s->smooth && (s->levels & 1u) == 0u ? 1u : 2u))
-            return 0;
+        const uint32_t fin = last ? (s->smooth && (s->levels & 1u) == 0u ? 1u : 2u) : small;
+        if (!subd_s48_refine_crop_(s, p, s->k + j, lo, n, o, s->at, s->av, fin)) return 0;
 #ifdef S48_DBG
         if (o->hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = o->hd[0];
         if (o->hd[1] > s48_dbg[2u * j + 1u]) s48_dbg[2u * j + 1u] = o->hd[1];
@@ -99,11 +100,66 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     return 1;
 }
 
+/* Is every position the tile emits exact (the tests of subd_s48_tile_emit_, made before the
+ * first triangle leaves)? X's triangles s->tcur / 2 .. s->tend / 2 - 1: their diamonds'
+ * midpoint sources, and their corners (smoothed into A by subd_s48_last_ when level L is
+ * even): the corners of both children. */
+static int s48_tile_exact(const s48_state *s)
+{
+    s48_win x, a;
+    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u;
+    uint32_t i, j;
+    s48_x(s, &x);
+    s48_win_at(s, s->ablk, s->aoff, &a);
+    for (i = s->tcur >> 1; i < s->tend >> 1; i++) {
+        const uint16_t *tv = x.tv + 3u * i, nb = x.tn[3u * i];
+        const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i;
+        const uint16_t *lv = x.tv + 3u * lt, lnb = x.tn[3u * lt];
+        uint32_t e0 = lv[1], e1 = lv[2];
+        if (s48_local(lnb) && s->smooth) {
+            e0 = lv[0];
+            e1 = x.tv[3u * lnb];
+        }
+        if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
+        for (j = 0; j < 3u; j++)
+            if (!((sm ? a.vf[s->vmap[tv[j]]] : x.vf[tv[j]]) & S48_EXACT)) return 0;
+    }
+    return 1;
+}
+
+/* The tile of the current triangle t of the level-k window w (n = 2: t and t + 1, the two
+ * base triangles of a hybrid pair, at level 0): first with every window before the last
+ * cropped to ring 1 of the descendants and the partners of its triangles (fin 1 of
+ * subd_s48_refine_crop_, as the last window when L is even), about half the triangles of
+ * two rings, then checked by s48_tile_exact; where a position would not be exact, the tile
+ * is made again with the two rings of the exactness argument (sr48_window.c). A kept
+ * vertex's position and flags do not depend on the crop (refine_crop's), so the tile's bits
+ * are the same either way, and every position handed out is checked exact before the first
+ * triangle leaves. Measured: the smaller crops were enough on every tile of the test shapes
+ * (valences 3..64, boundaries, isolated triangles; test_sr48_tiles counts them). The
+ * counters: hd[7] of X (tiles) and of A (tiles made again; with S48_TILE_FULL set, which
+ * the tests set after the begin call, every tile is made with the two rings alone, so that
+ * they compare both crops). 0 on failure. */
+int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
+{
+    s48_win x, a;
+    s48_x(s, &x);
+    s48_win_at(s, s->ablk, s->aoff, &a);
+    x.hd[7]++;
+    if (!(a.hd[7] & S48_TILE_FULL)) {
+        if (!s48_tile_build(s, w, t, n0, 1u)) return 0;
+        if (s48_tile_exact(s)) return 1;
+    }
+    a.hd[7]++; /* below S48_TILE_FULL: at most one per tile */
+    if (!s48_tile_build(s, w, t, n0, 0u)) return 0;
+    return s48_tile_exact(s);
+}
+
 /* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle
  * s->tcur / 2), until the caller's buffer is full or the sink stops. A child's new vertex
  * is the midpoint subd_s48_refine_ makes for the diamond (from its lower triangle, id by
  * that triangle's key); its old corners are X's vertices, smoothed by subd_s48_last_ when
- * level L is even. 0 when a corner is not exact. */
+ * level L is even. Every position is exact (s48_tile_exact checked them). 0 on failure. */
 int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
 {
     s48_win x, a;
@@ -126,7 +182,6 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             e0 = lv[0];
             e1 = x.tv[3u * lnb];
         }
-        if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
         for (j = 0; j < 3u; j++) mp[j] = subd_mid(x.vp[3u * e0 + j], x.vp[3u * e1 + j], &ovf);
         idm = id0 + s48_gkey(s, x.key[lt], L - 1u);
         face = s->gt[x.key[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
@@ -135,12 +190,8 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             const uint32_t cv[2] = {ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
             const subd_real *cp[2];
             subd_tri *o;
-            for (k = 0; k < 2u; k++) {
-                const uint32_t v = cv[k], u = sm ? s->vmap[v] : v;
-                const s48_win *src = sm ? &a : &x;
-                if (!(src->vf[u] & S48_EXACT)) return 0;
-                cp[k] = src->vp + 3u * u;
-            }
+            for (k = 0; k < 2u; k++) /* exact: s48_tile_exact */
+                cp[k] = sm ? a.vp + 3u * s->vmap[cv[k]] : x.vp + 3u * cv[k];
             if (ovf) {
                 s->err = (uint32_t)(-SUBD_ERR_RANGE);
                 return 0;

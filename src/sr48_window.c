@@ -91,6 +91,18 @@ static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum 
 }
 #endif
 
+/* subd_avg(s, n): the same call, with the usual n = 4 (a regular vertex: four diamonds)
+ * as a constant, so that Q16.16 divides by shifts instead of a 64-bit division (a library
+ * call on the Cortex-M3); the same bits. */
+static inline subd_real s48_avg(subd_sum s, uint32_t n, uint32_t *ovf)
+{
+#if SUBD_FIXED
+    return n == 4u ? subd_avg(s, 4u, ovf) : subd_avg(s, n, ovf);
+#else /* float: one division either way */
+    return subd_avg(s, n, ovf);
+#endif
+}
+
 /* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
  * counts and flags in s->cnt, s->dist at v). */
 static void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp, uint32_t mf,
@@ -307,7 +319,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
             a->vf[i] = 0;
             continue;
         }
-        for (j = 0; j < 3u; j++) a->vp[3u * i + j] = subd_avg(s48_sget(s, a, 3u * i + j), k, &ovf);
+        for (j = 0; j < 3u; j++) a->vp[3u * i + j] = s48_avg(s48_sget(s, a, 3u * i + j), k, &ovf);
         a->vf[i] = S48_EXACT;
     }
     if (ovf) {
@@ -541,7 +553,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
                 w->vf[u] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = subd_avg(s48_sget(s, w, 3u * u + j), q, &ovf);
+            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = s48_avg(s48_sget(s, w, 3u * u + j), q, &ovf);
             w->vf[u] = S48_EXACT;
         }
     if (ovf) {

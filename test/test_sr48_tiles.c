@@ -1,0 +1,161 @@
+/* SPDX-License-Identifier: MIT */
+/* The uniform 4-8 stream's tiles (src/sr48_tile.c): every tile is made first with its
+ * windows before the last cropped to ring 1 of the descendants and the partners of its
+ * triangles, checked exact before its first triangle leaves, and made again with the two
+ * rings of the exactness argument where a position would not be exact. Compared against the
+ * materialising calls (subd_sr48_build(steps = L) then subd_sr48_extract(UNIFORM, L)):
+ *  - both crops (the smaller ones first, and the two rings alone: S48_TILE_FULL set in the
+ *    tile block's counter after the begin call) give the extraction's j-th face as the j-th
+ *    triangle, same corners, same position bits, one id per extraction vertex;
+ *  - the tiles are counted (the counters of sr48_stream_internal.h): as many as the walk's
+ *    closed form (L <= SUBD_SR48_STREAM_TILE_LEVELS: one per hybrid pair, else
+ *    n0 2^(L - m - 1) with n0 base triangles), and none made again with the two rings: the
+ *    smaller crops were exact on every tile of these shapes - closed and open, extraordinary
+ *    vertices of valence 3..16 after pre-processing (bipyramids), a mesh with isolated
+ *    triangles, the icosahedron, the torus -, smoothed and not, both arithmetics. */
+#include "harness.h"
+#include "corpus.h"
+#include "fixtures.h"
+#include "../src/sr48_stream_internal.h"
+#if H_HOST
+#include <stdio.h>
+#define T_NOTE(...) printf(__VA_ARGS__)
+#else
+#define T_NOTE(...) ((void)0)
+#endif
+
+#if H_HOST
+#define TL_MAXV 300000u
+static uint8_t g_tl_big[48u << 20] __attribute__((aligned(8))); /* hierarchies up to 9 steps */
+#define TL_MAT g_tl_big
+#define TL_MAT_BYTES ((uint32_t)sizeof g_tl_big)
+#define TL_ST (h_arena_buf)
+#define TL_ST_BYTES H_ARENA_BYTES
+#else
+#define TL_MAXV 2048u
+#define TL_ST_BYTES (64u * 1024u) /* the stream: the top of h_arena_buf */
+#define TL_MAT (h_arena_buf)
+#define TL_MAT_BYTES (H_ARENA_BYTES - TL_ST_BYTES)
+#define TL_ST (h_arena_buf + TL_MAT_BYTES)
+#endif
+
+static uint64_t g_tl_id[TL_MAXV];
+static uint8_t g_tl_have[TL_MAXV];
+static subd_tri g_tl_buf[64];
+
+/* The stream of base with max_level L against the extraction out, pulled in batches of 64;
+ * full: the two rings alone. *tiles, *twice: the tile counters after the last triangle. */
+static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, int full, uint32_t *tiles,
+                      uint32_t *twice)
+{
+    subd_arena sa;
+    subd_stream st;
+    subd_diag d;
+    subd_sr48_stream_opts so;
+    uint32_t j = 0, bad = 0, i, q;
+    int got;
+    subd_arena_init(&sa, TL_ST, TL_ST_BYTES);
+    so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
+    so.adapt.max_level = L;
+    *tiles = 0;
+    *twice = 0;
+    if (!CHECK_EQ(subd_sr48_stream_begin(&sa, base, &so, &st, &d), SUBD_OK)) return;
+    {
+        s48_state *s = (s48_state *)st.state_;
+        s48_win a;
+        if (s->tm > 1u && full) {
+            s48_win_at(s, s->ablk, s->aoff, &a);
+            a.hd[7] |= S48_TILE_FULL;
+        }
+    }
+    for (i = 0; i < out->num_verts; i++) g_tl_have[i] = 0;
+    while ((got = subd_stream_next_tris(&st, g_tl_buf, 64u)) > 0) {
+        int k;
+        const s48_state *s = (const s48_state *)st.state_;
+        for (k = 0; k < got; k++, j++) {
+            const subd_tri *t = &g_tl_buf[k];
+            if (j >= out->num_faces) {
+                bad++;
+                continue;
+            }
+            for (i = 0; i < 3u; i++) {
+                const uint32_t v = out->corner_vert[3u * j + i];
+                for (q = 0; q < 3u; q++)
+                    if (!h_same(t->pos[i][q], out->pos[3u * v + q])) bad++;
+                if (g_tl_have[v] && g_tl_id[v] != t->id[i]) bad++;
+                g_tl_have[v] = 1;
+                g_tl_id[v] = t->id[i];
+            }
+        }
+        if (s->tm > 1u) { /* the counters (the state stays in place until the end call) */
+            s48_win x, a;
+            s48_x(s, &x);
+            s48_win_at(s, s->ablk, s->aoff, &a);
+            *tiles = x.hd[7];
+            *twice = a.hd[7] & ~S48_TILE_FULL;
+        }
+    }
+    CHECK_EQ(got, 0);
+    CHECK_EQ(j, out->num_faces);
+    CHECK_EQ(bad, 0u);
+    for (i = 0; i < out->num_verts; i++) CHECK(g_tl_have[i]);
+}
+
+static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
+{
+    subd_arena a;
+    subd_mesh in, out;
+    subd_sr48 h, base;
+    subd_sr48_opts o;
+    subd_sr48_adapt ad;
+    subd_sr48_adapt_report rep;
+    subd_diag d;
+    uint32_t tiles, twice, n0, want, m = SUBD_SR48_STREAM_TILE_LEVELS;
+    subd_arena_init(&a, TL_MAT, TL_MAT_BYTES);
+    if (!fx_sr48_shape(shape, bn, &a, &in)) return;
+    o.steps = L;
+    o.flags = flags;
+    if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
+    ad.mode = SUBD_SR48_ADAPT_UNIFORM;
+    ad.max_level = L;
+    if (!CHECK_EQ(subd_sr48_extract(&a, &h, &ad, &out, &rep, &d), SUBD_OK)) return;
+    if (!CHECK_EQ(subd_sr48_base(&a, &in, flags, &base, &d), SUBD_OK)) return;
+    if (!CHECK(out.num_verts <= TL_MAXV)) return;
+    n0 = base.level_tri[1];
+    want = L <= 1u ? 0u : L <= m ? n0 / 2u : n0 << (L - m - 1u);
+    tl_stream(&base, &out, L, 0, &tiles, &twice);
+    CHECK_EQ(tiles, want);
+    if (!CHECK_EQ(twice, 0u)) T_NOTE("shape %d (%u) L %u flags %u: %u of %u tiles made again\n", shape, bn, L, flags, twice, tiles);
+    tl_stream(&base, &out, L, 1, &tiles, &twice);
+    CHECK_EQ(tiles, want);
+    CHECK_EQ(twice, want);
+}
+
+/* Tiles from level 0 over a hybrid pair (L <= m), from level 0 per base triangle (L = m + 1)
+ * and below depth-first levels (L = m + 2), where the materialised hierarchy fits. */
+static void sr48t_tiles(void)
+{
+    uint32_t f;
+    for (f = 0; f < 2u; f++) {
+        const uint32_t fl = f ? SUBD_SR48_NO_SMOOTH : 0u;
+        uint32_t bn, L;
+        for (L = 2; L <= 6u; L++) tl_case(FX48_TWO, 5, L, fl);
+        tl_case(FX48_TET, 5, 5, fl);
+        tl_case(FX48_HEXFAN, 5, 6, fl);
+#if H_HOST
+        for (L = 7; L <= 9u; L++) tl_case(FX48_TWO, 5, L, fl);
+        tl_case(FX48_ICO, 5, 8, fl);
+        tl_case(FX48_GRID, 5, 8, fl);
+        tl_case(FX48_TORUS, 5, 7, fl);
+        tl_case(FX48_CUBE, 5, 9, fl);
+        for (bn = 3; bn <= 16u; bn++) tl_case(FX48_BIPYR, bn, 8, fl);
+#else
+        (void)bn;
+#endif
+    }
+}
+
+const test_case suite_sr48_tiles[] = {
+    {"sr48t_tiles", sr48t_tiles},
+    {0, 0},
+};

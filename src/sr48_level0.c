@@ -161,8 +161,10 @@ static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *ke
 
 /* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
  * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
- * by index; local vertices and neighbours. 0 when a capacity is exceeded. */
-int subd_s48_build0_(s48_state *s, uint32_t t0)
+ * by index; local vertices and neighbours. small: ring 1 (the fans of t0's corners) and the
+ * base neighbours of its triangles only, the uniform tile's smaller crop at level 0
+ * (sr48_tile.c; hd[7] = 1 says so). 0 when a capacity is exceeded. */
+static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
 {
     const subd_sr48 *b = s->base;
     const uint32_t mt = s->at > s->wt ? s->at : s->wt;
@@ -186,7 +188,7 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
         }
     for (q = 0; q < nv; q++) {
         uint32_t x = s->gv[q], nf, f;
-        if (s->dist[q] >= S48_RINGS) continue;
+        if (s->dist[q] >= (small ? 1u : S48_RINGS)) continue;
         /* the whole fan at the free tail of gt, then merged (deduplicated): a triangle
          * appended at nt can only overwrite fan entries already read (nt grows by at most
          * one per entry read, and nt + nf <= wt) */
@@ -204,6 +206,28 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
                 s->gv[nv] = vx;
                 s->gvt[nv] = tt;
                 s->dist[nv++] = (uint8_t)(s->dist[q] + 1u);
+            }
+            ht[h] = (uint16_t)(nt + 1u);
+            s->gt[nt++] = tt;
+        }
+    }
+    if (small) { /* the base neighbours of ring 1 (dist: unused from here) */
+        const uint32_t n1 = nt;
+        for (q = 0; q < n1; q++) {
+            const uint32_t tt = s48_base_nbr(b, s->gt[q], 0u);
+            uint32_t h;
+            if (tt == SUBD_NONE) continue;
+            h = s48_h0_find(ht, tm, s->gt, tt);
+            if (ht[h] != 0u) continue;
+            if (nt >= s->wt) return 0;
+            for (j = 0; j < 3u; j++) {
+                const uint32_t vx = b->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
+                if (hv[g] != 0u) continue;
+                if (nv >= s->wv) return 0;
+                hv[g] = (uint16_t)(nv + 1u);
+                s->gv[nv] = vx;
+                s->gvt[nv] = tt;
+                s->dist[nv++] = 2u;
             }
             ht[h] = (uint16_t)(nt + 1u);
             s->gt[nt++] = tt;
@@ -253,8 +277,11 @@ int subd_s48_build0_(s48_state *s, uint32_t t0)
     w.hd[0] = nt;
     w.hd[1] = nv;
     w.hd[6] = 0;
+    w.hd[7] = small;
     return 1;
 }
+int subd_s48_build0_(s48_state *s, uint32_t t0) { return s48_build0(s, t0, 0u); }
+int subd_s48_build0_small_(s48_state *s, uint32_t t0) { return s48_build0(s, t0, 1u); }
 
 #ifdef S48_DBG
 uint32_t s48_dbg[40];

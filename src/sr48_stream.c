@@ -440,7 +440,10 @@ static int s48_step(void *state, subd_stream_q *q, subd_diag *d)
         if (!s->built) {
             if (s->adapt && s->ad.mode != SUBD_SR48_ADAPT_CHORD && !subd_s48_level0_lin_(s, s->t0)) goto fail;
             if (s->ckw) s48_take_slot(s, 0);
-            if (!subd_s48_build0_(s, s->t0)) goto fail;
+            /* a uniform tile from level 0 reads level 0's smaller window first (sr48_tile.c) */
+            if (!(!s->adapt && s->tm > 1u && s48_tile_walk(s) == s->levels ? subd_s48_build0_small_
+                                                                             : subd_s48_build0_)(s, s->t0))
+                goto fail;
             s->k = 0;
             s->built = 1;
             s48_lev(s, 0, &w);

@@ -196,6 +196,10 @@ uint32_t subd_s48_valence_(const subd_sr48 *b);
  * refined into X; X cropped to the rings of its triangles c0 .. c0 + n - 1 into w (capacity
  * ct, cv), or to the current triangle's two children into a level window. 0 on failure. */
 int subd_s48_build0_(s48_state *s, uint32_t t0);
+/* Level 0's window cropped smaller, for a uniform tile from level 0 (sr48_level0.c,
+ * sr48_tile.c): ring 1 of t0's hybrid pair and the base neighbours of its triangles;
+ * hd[7] = 1 (subd_s48_build0_: 0). 0 on failure. */
+int subd_s48_build0_small_(s48_state *s, uint32_t t0);
 int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x);
 int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *w, uint32_t ct, uint32_t cv);
 int subd_s48_crop_(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w);

@@ -24,8 +24,22 @@
  * descendants come first in key order). The tile windows contain every window the
  * depth-first walk would crop for one of the descendants (rings of a union are the union of
  * the rings), so the exactness argument of sr48_window.c carries over, and the triangles and
- * their order are unchanged (every emitted corner's flag is checked). The level-0 window of
- * a uniform stream holds the rings of both children of a hybrid triangle and serves both.
+ * their order are unchanged. The level-0 window of a uniform stream holds the rings of both
+ * children of a hybrid triangle and serves both.
+ *
+ * Smaller crops (0.6.0): the windows before the last are first cropped to ring 1 of the
+ * descendants and the partners of its triangles too (about half of two rings: 1.5 refined
+ * parent triangles per output triangle instead of 2.8 on the icosahedron at 8 steps),
+ * without a proof that this always suffices; instead every position the tile hands out
+ * (the corners of D, smoothed or not, and the two apexes or base ends of each emitted
+ * midpoint) is checked exact before the first triangle leaves (s48_tile_exact: the flags of
+ * sr48_window.c, computed for the kept triangles exactly as with two rings), and a tile
+ * where one is not is made again with the two rings. Exact flags mean the same bits
+ * whatever the crop (a kept vertex's position and flags are refine's), so the stream's
+ * output is unchanged; on every tile of the test shapes (valences 3..64, boundaries,
+ * isolated triangles, both parities, smoothing on and off) the smaller crops were enough
+ * (test_sr48_tiles counts it). Emission then reads no flag, and the corners' 64-bit ids are
+ * computed once per tile vertex (s48_tile_ids) rather than once per corner.
  *
  * A and X are blocks of the stream's state of the same capacities (SUBD_SR48_STREAM_TT_,
  * _TV_ of m: a tile of m + 1 levels keeps at most the descendants m levels below its root
@@ -127,12 +141,34 @@ static int s48_tile_exact(const s48_state *s)
     return 1;
 }
 
+/* The global ids of X's vertices, once per tile (an emitted corner is a corner of about
+ * three triangles): 8 bytes per vertex over A's neighbours and keys, which the tile no
+ * longer reads (A holds the smoothed corners only): 10 bytes per triangle of A's capacity,
+ * more than 8 per vertex of X's (SUBD_SR48_STREAM_TT_, _TV_: 60 N + 320 + 15 2^m against
+ * 32 N + 256 + 6 2^m). 0 if not (cannot happen). */
+static uint64_t *s48_tile_idv(const s48_state *s)
+{
+    return (uint64_t *)(void *)(s->ablk + s->aoff[2]);
+}
+static int s48_tile_ids(const s48_state *s)
+{
+    s48_win x;
+    uint64_t *id = s48_tile_idv(s);
+    uint32_t v;
+    s48_x(s, &x);
+    if (8u * x.hd[1] > s->aoff[4] - s->aoff[2]) return 0;
+    for (v = 0; v < x.hd[1]; v++) id[v] = s48_vid(&x, v);
+    return 1;
+}
+
 /* The tile of the current triangle t of the level-k window w (n = 2: t and t + 1, the two
  * base triangles of a hybrid pair, at level 0): first with every window before the last
  * cropped to ring 1 of the descendants and the partners of its triangles (fin 1 of
- * subd_s48_refine_crop_, as the last window when L is even), about half the triangles of
- * two rings, then checked by s48_tile_exact; where a position would not be exact, the tile
- * is made again with the two rings of the exactness argument (sr48_window.c). A kept
+ * subd_s48_refine_crop_, as the last window when L is even; a tile from level 0 also reads
+ * level 0's window cropped so, subd_s48_build0_small_), about half the triangles of two
+ * rings, then checked by s48_tile_exact; where a position would not be exact, the tile is
+ * made again with the two rings of the exactness argument (sr48_window.c; level 0's window
+ * built again with its two rings: w is that block, t0's index read again). A kept
  * vertex's position and flags do not depend on the crop (refine_crop's), so the tile's bits
  * are the same either way, and every position handed out is checked exact before the first
  * triangle leaves. Measured: the smaller crops were enough on every tile of the test shapes
@@ -148,11 +184,15 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     x.hd[7]++;
     if (!(a.hd[7] & S48_TILE_FULL)) {
         if (!s48_tile_build(s, w, t, n0, 1u)) return 0;
-        if (s48_tile_exact(s)) return 1;
+        if (s48_tile_exact(s)) return s48_tile_ids(s);
     }
     a.hd[7]++; /* below S48_TILE_FULL: at most one per tile */
+    if (w->hd[6] == 0u && w->hd[7] == 1u) { /* level 0's smaller window: its two rings */
+        if (!subd_s48_build0_(s, s->t0)) return 0;
+        t = w->hd[2]; /* t0's index in it (the pair's: t0 even, t0 + 1 next) */
+    }
     if (!s48_tile_build(s, w, t, n0, 0u)) return 0;
-    return s48_tile_exact(s);
+    return s48_tile_exact(s) && s48_tile_ids(s);
 }
 
 /* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle
@@ -165,6 +205,7 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
     s48_win x, a;
     const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels;
     const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
+    const uint64_t *idv = s48_tile_idv(s);
     uint32_t ovf = 0;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
@@ -207,8 +248,8 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
                 o->normal[2][j] = 0;
             }
             o->id[0] = idm;
-            o->id[1] = s48_vid(&x, cv[0]);
-            o->id[2] = s48_vid(&x, cv[1]);
+            o->id[1] = idv[cv[0]];
+            o->id[2] = idv[cv[1]];
             o->face = face;
             o->level = L;
             *stop = subd_stream_q_commit(q);

@@ -348,7 +348,8 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
  * subd_s48_last_ sums the whole fan of every corner of the children D and each fan
  * triangle's diamond) ring 1 of D and the partners (base neighbours) of its triangles,
  * 2 (L odd or no smoothing) D and its partners (the emitted new vertices' diamonds); a kept
- * vertex's position and flags do not depend on the crop, so they are refine's. 0 on
+ * vertex's position and flags do not depend on the crop, so they are refine's (the uniform
+ * tile also crops its other windows with 1 first, and checks the flags: sr48_tile.c). 0 on
  * failure (s->err: SUBD_ERR_RANGE; else a capacity). */
 #define S48_RC_BND 0x80000000u
 #define S48_RC_INC 0x40000000u

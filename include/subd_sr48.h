@@ -333,26 +333,29 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * smoothing, open and closed meshes).
  * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
  *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
- *   610 (next 56 + step 248 + tile 128 + refine and crop 176), uniform with checkpoints
- *   (max_level >= 11) about 670 (step + rebuild 136 + level 0's window 160 + fan walk 72),
- *   plus the caller's; the push form subd_sr48_stream about 790 (stream 120 + run 120 +
- *   step + tile + refine and crop; with checkpoints about 860) plus the sink's.
+ *   640 (next 56 + step 248 + tile 40 + tile build 136 + refine and crop 160), uniform with
+ *   checkpoints (max_level >= 11) about 670 (step + rebuild 136 + level 0's window 160 +
+ *   fan walk 72), plus the caller's; the push form subd_sr48_stream about 820 (stream 120 +
+ *   run 120 + step + tile + tile build + refine and crop; with checkpoints about 860) plus
+ *   the sink's.
  * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing
  *   taken). Later, from subd_stream_next_tris: SUBD_ERR_RANGE (float32: a position
  *   overflowed, diag.face the level-0 triangle), SUBD_ERR_TOO_BIG (the window of a level
  *   overflowed: cannot happen within the valence the plan was made for).
  * Cost: uniform: per tile of 2^(m+1) triangles (m = SUBD_SR48_STREAM_TILE_LEVELS, default 7)
- *   m breadth-first refinements of its descendants plus a two-ring margin, each refined and
- *   cropped in one pass (on the icosahedron at 8 steps 2.8 refined parent triangles per
- *   output face, 0.5.0: 4.2), the last window cropped to the descendants' first ring and
- *   its partners, the last level emitted without a window; adaptive modes: O(window) per
+ *   m breadth-first refinements of its descendants plus a margin, each refined and cropped
+ *   in one pass: the descendants' first ring and its partners, checked exact before the
+ *   tile leaves, else the tile made again with two rings (never on the test shapes; on the
+ *   icosahedron at 8 steps 1.5 refined parent triangles per output face, two rings 2.8,
+ *   0.5.0: 4.2), the last level emitted without a window; adaptive modes: O(window) per
  *   internal batch of 2 triangles (one refinement of the level max_level-1 window, about
  *   60 triangles);
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
  *   Measured (uniform): on spot 0.4 / 1.0 / 1.7 M faces/s at 2 / 4 / 6 steps, 0.2-0.7x /
  *   0.5-1.2x / 1.8-2.4x the faces/s of subd_sr48_build + subd_sr48_extract in the same run
- *   (a loaded host; bench -s sr48stream); 1 914 instructions per triangle on the Cortex-M4F
- *   at 8 steps (M3 Q16.16: 2 167; 0.5.0: 2 526 / 2 868; make demo).
+ *   (a loaded host; bench -s sr48stream); 1 314 instructions per triangle on the Cortex-M4F
+ *   at 8 steps with the demo's checksum sink (about 310 of them: the sink), M3 Q16.16:
+ *   1 434 (before the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868; make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is

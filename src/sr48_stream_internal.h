@@ -50,7 +50,8 @@
 
 struct s48_state;
 /* One window's arrays (level k, or the refined window X). hd: nt, nv, cur, ch0, ch1, nxt,
- * the window's level; hd[7] of the uniform tile's blocks X and A: how many tiles were made,
+ * the window's level; hd[7]: of level 0's window 1 when it is cropped smaller
+ * (subd_s48_build0_small_), of the uniform tile's blocks X and A how many tiles were made,
  * and how many of them with the two rings of the exactness argument (sr48_tile.c: the
  * smaller crops first; counted for the tests, which force the two rings with
  * S48_TILE_FULL in A's). */

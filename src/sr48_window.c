@@ -105,8 +105,8 @@ static inline subd_real s48_avg(subd_sum s, uint32_t n, uint32_t *ovf)
 
 /* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
  * counts and flags in s->cnt, s->dist at v). */
-static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp, uint32_t mf,
-                        int boundary_ok)
+static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp,
+                               uint32_t mf, int boundary_ok)
 {
     uint32_t q;
     if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
@@ -355,8 +355,8 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
 #define S48_RC_INC 0x40000000u
 #define S48_RC_N 0x3fffffffu
 /* Adds a new vertex (position mp, flags mf) to parent vertex v's sum (in w's vertex u). */
-static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u, const subd_real *mp,
-                           uint32_t mf, int boundary_ok)
+static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
+                                  const subd_real *mp, uint32_t mf, int boundary_ok)
 {
     uint32_t q;
     if ((s->cnt[v] & S48_RC_BND) && !boundary_ok) return;

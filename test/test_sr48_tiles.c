@@ -125,7 +125,8 @@ static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
     want = L <= 1u ? 0u : L <= m ? n0 / 2u : n0 << (L - m - 1u);
     tl_stream(&base, &out, L, 0, &tiles, &twice);
     CHECK_EQ(tiles, want);
-    if (!CHECK_EQ(twice, 0u)) T_NOTE("shape %d (%u) L %u flags %u: %u of %u tiles made again\n", shape, bn, L, flags, twice, tiles);
+    if (!CHECK_EQ(twice, 0u))
+        T_NOTE("shape %d (%u) L %u flags %u: %u of %u tiles made again\n", shape, bn, L, flags, twice, tiles);
     tl_stream(&base, &out, L, 1, &tiles, &twice);
     CHECK_EQ(tiles, want);
     CHECK_EQ(twice, want);

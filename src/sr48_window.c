@@ -47,7 +47,7 @@
  * (subd_s48_finest_); L of the level-0 window (subd_s48_level0_lin_) and the adaptation box
  * (subd_s48_adapt_box_) are descents of the level-0 vertices.
  *
- * Length (about 720 lines, over the ~600 of STYLE.md): one concept, a window refined and
+ * Length (about 740 lines, over the ~600 of STYLE.md): one concept, a window refined and
  * cropped level by level; refine, the fused refine + crop of the uniform path and crop share
  * the in-place smoothing sums and the window layout. The descents (subd_s48_finest_ ..
  * subd_s48_adapt_box_, about 90 lines) could move to a file of their own.

@@ -104,11 +104,12 @@ typedef struct sp_layout {
     sp_view view;       /* limit mode: level L's patch as a subd_mesh (arrays only) for
                          * loop_limit.c's masks                                             */
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
-    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2: it
-                            * shares memory with the levels below the tile's               */
-    uint8_t *tab;          /* the tile's emission table                                     */
+    uint8_t *tile;         /* the region of the regular tiles' blocks (loop_tile.h), when
+                            * tdepth >= 2: it shares memory with the levels from tk on    */
+    uint8_t *tab;          /* the tiles' emission tables (depths 2..tdepth)                */
     sp_masks *mk;          /* limit mode: the limit masks' caches                          */
-    uint32_t tdepth;       /* levels a tile refines (tile_depth); 0: none                   */
+    uint32_t tdepth;       /* levels a tile at level tk refines (tile_depth); 0: none      */
+    uint32_t tk;           /* the first level with tiles: L - tdepth                       */
     uint32_t size1, total;
 } sp_layout;
 
@@ -119,6 +120,15 @@ static uint32_t tile_depth(uint32_t levels, int limit)
     uint32_t t = levels < c ? levels : c;
     return t < 2u ? 0u : t;
 }
+
+/* Block index of level k in the level blocks (level 0 has its own block, lev0; a tile at
+ * level 0 starts where level 1's block does). */
+static uint32_t tile_bi(uint32_t k) { return k ? k - 1u : 0u; }
+
+/* The block of a tile at level k >= tk (depth L - k): level k's own block, which the tile
+ * may overwrite (subd_lt_start reads the patch first) with the deeper levels', idle while it
+ * is made and emitted; levels tk..k-1 above it are live (their next children). */
+static uint32_t tile_off(const sp_layout *l, uint32_t k) { return (tile_bi(k) - tile_bi(l->tk)) * l->size1; }
 
 /* The limit mode's mesh view of a level with corner valence sum s: loop_patch.c's layout of
  * it (SUBD_LOOP_SVIEW_ is the same sum); only the arrays are kept in the run state (a whole
@@ -147,7 +157,7 @@ static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
     subd_layout y;
-    uint32_t s0, s1, cached, above, r0, tb;
+    uint32_t s0, s1, cached, above, r0, tb, j;
     uint8_t *region;
     l->n = valence < 6u ? 6u : valence;
     s0 = 3u * l->n;
@@ -171,7 +181,16 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
         view_layout(&y, s1, &l->view);
     }
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
-    tb = l->tdepth ? subd_lt_layout(l->tdepth, limit, 0) : 0u;
+    /* the tiles: at level tk + j (j = 0..tdepth - 2) one of depth tdepth - j, at its level's
+     * block (tile_off) */
+    l->tk = levels - l->tdepth;
+    tb = 0;
+    if (l->tdepth)
+        for (j = 0; j + 2u <= l->tdepth; j++) {
+            uint32_t b = tile_off(l, l->tk + j);
+            subd_bytes_add(&b, subd_lt_layout(l->tdepth - j, limit, 0));
+            tb = subd_bytes_max(tb, b);
+        }
     if (y.bytes != UINT32_MAX && tb > y.bytes - r0) (void)subd_layout_take(&y, tb - (y.bytes - r0), 1u);
     l->tile = l->tdepth ? region : 0;
     l->tab = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_tab_bytes(l->tdepth)) : 0;
@@ -442,9 +461,10 @@ typedef struct sp_state {
     subd_loop_opts o;
     loop_wcache wc;
     uint32_t k, depth, ovf, started, limit;
-    /* the regular tile: at level tk; ton while its triangles go out: quarter tq, its
-     * triangle tj, tready once the quarter's positions and ids are made */
-    uint32_t tk, ton, tq, tj, tready;
+    /* the regular tile: at level k >= lay.tk, of depth tdep = L - k; ton while its triangles
+     * go out: quarter tq, its triangle tj, tready once the quarter's positions and ids are
+     * made */
+    uint32_t tdep, ton, tq, tj, tready;
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 
@@ -479,17 +499,20 @@ static void sp_up(sp_state *s)
     }
 }
 
-/* Level s->k (p) was just built: a regular tile from here when this is the tile's level and
- * p is regular; else its cache (a level above the emitting one caches everything its
+/* Level s->k (p) was just built: a regular tile from here when this is a tile's level (from
+ * lay.tk down to L - 2: a patch refused at level tk, next to an irregular vertex, has its
+ * regular children tiled one level down, with a tile of one level fewer) and p is regular;
+ * else its cache (a level above the emitting one caches everything its
  * children's 1-rings need; the emitting level only its centre's six values; limit mode's
  * level L none). */
 static void sp_enter(sp_state *s, const sp_level *p)
 {
     const subd_loop_opts *o = &s->o;
-    if (s->lay.tdepth && s->k == s->tk) {
+    if (s->lay.tdepth && s->k >= s->lay.tk && s->k + 2u <= o->levels) {
         lt_tile tl;
-        subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
+        subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
+            s->tdep = o->levels - s->k;
             s->ton = 1;
             s->tq = s->tj = s->tready = 0;
             return;
@@ -500,11 +523,11 @@ static void sp_enter(sp_state *s, const sp_level *p)
 }
 
 /* The ids of the current quarter's vertices (loop_tile.c's subd_lt_ids), from the tile
- * face's corners (level tk's header). */
+ * face's corners (the tile's level's header). */
 static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
     sp_level p;
-    level_at(&s->lay, s->tk, &p);
+    level_at(&s->lay, s->k, &p);
     subd_lt_ids(tl, s->run.in, s->run.f, s->o.levels, p.h->ca, p.h->cb, org, e1, e2);
 }
 
@@ -565,7 +588,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
     int st;
     const subd_real *nr;
     subd_tri *one = (subd_tri *)(void *)q->one;
-    subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
+    subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, s->tdep, (int)s->limit);
     tl.lk = s->limit ? &s->lay.mk->lk : 0;
     nr = tl.qnrm;
     n = 1u << (2u * (tl.depth - 1u));
@@ -733,11 +756,11 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->ovf = 0;
     s->started = 0;
     s->ton = 0;
-    /* the tile's level: L - its depth (loop_tile.h); its emission table, once */
-    s->tk = o->levels - lay.tdepth;
-    if (lay.tdepth) {
+    s->tdep = 0;
+    /* the tiles' emission tables (depths 2..tdepth: loop_tile.h), once */
+    for (f = 2; f <= lay.tdepth; f++) {
         lt_tile tl;
-        subd_lt_carve(&tl, lay.tile, lay.tab, lay.tdepth, limit);
+        subd_lt_carve(&tl, lay.tile, lay.tab, f, limit);
         subd_lt_table(&tl);
     }
     if (limit) {

@@ -92,8 +92,11 @@ uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
 
 uint32_t subd_lt_tab_bytes(uint32_t t)
 {
-    uint32_t b = 0, m = 1u << (t - 1u);
-    subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
+    uint32_t b = 0, u;
+    for (u = 2; u <= t; u++) {
+        uint32_t m = 1u << (u - 1u);
+        subd_size_add(&b, m * m, 3u); /* 4^(u-1) triangles */
+    }
     return b;
 }
 
@@ -101,6 +104,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
 {
     uint32_t off[LT_N];
     (void)subd_lt_layout(t, limit, off);
+    tl->tab = tab ? tab + subd_lt_tab_bytes(t - 1u) : 0; /* depth t's table follows 2..t-1's */
     tl->g[0].pos = (subd_real *)(void *)(block + off[LT_APOS]);
     tl->g[0].dir = block + off[LT_ADIR];
     tl->g[0].rot = block + off[LT_AROT];
@@ -114,7 +118,6 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
     tl->qid = (uint32_t *)(void *)(block + off[LT_QID]);
-    tl->tab = tab;
     tl->depth = t;
 }
 

@@ -48,14 +48,16 @@ static inline uint32_t lt_count(uint32_t s) { return (s + 1u) * (s + 2u) / 2u; }
 static inline uint32_t lt_vi(uint32_t s, uint32_t i, uint32_t j) { return j * (2u * s + 3u - j) / 2u + i; }
 
 /* The arrays of a tile of depth t (limit: limit mode's too) as offsets in its block (off may
- * be NULL; returns its bytes), all but the emission table, which has its own block
- * (subd_lt_tab_bytes): the block is scratch while the tile is made and emitted (the
- * stream lends it the idle deeper levels' memory), the table is filled once per stream.
- * The SUBD_LOOP_TILE_BYTES_ and SUBD_LOOP_TTAB_ sums in subd_loop.h are the same. */
+ * be NULL; returns its bytes), all but the emission tables, which have their own block
+ * (subd_lt_tab_bytes: the tables of depths 2..t one after the other, for a tile of depth
+ * t and the smaller tiles below it): the block is scratch while the tile is made and
+ * emitted (the stream lends it the idle deeper levels' memory), the tables are filled once
+ * per stream. The SUBD_LOOP_TILE_BYTES_ and SUBD_LOOP_TTAB_ sums in subd_loop.h are the
+ * same. */
 uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N]);
 uint32_t subd_lt_tab_bytes(uint32_t t);
-/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets) and its table;
- * lk = NULL. */
+/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets) and its table in
+ * the tables' block tab (may be NULL: no table); lk = NULL. */
 void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int limit);
 /* Fills the emission table of a quarter (4^(t-1) triangles). */
 void subd_lt_table(const lt_tile *tl);

@@ -465,6 +465,7 @@ typedef struct sp_state {
      * go out: quarter tq, its triangle tj, tready once the quarter's positions and ids are
      * made */
     uint32_t tdep, ton, tq, tj, tready;
+    uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 
@@ -513,6 +514,7 @@ static void sp_enter(sp_state *s, const sp_level *p)
         subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
             s->tdep = o->levels - s->k;
+            s->ntile[s->tdep - 2u]++;
             s->ton = 1;
             s->tq = s->tj = s->tready = 0;
             return;
@@ -757,6 +759,7 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->started = 0;
     s->ton = 0;
     s->tdep = 0;
+    for (f = 0; f < 4u; f++) s->ntile[f] = 0;
     /* the tiles' emission tables (depths 2..tdepth: loop_tile.h), once */
     for (f = 2; f <= lay.tdepth; f++) {
         lt_tile tl;
@@ -772,6 +775,12 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->impl.ring_items = ring;
     subd_stream_start(h, a, e.mark, SUBD_STREAM_TRIS, &s->impl, ring_cap(o->levels, limit));
     return subd_entry_ok(&e);
+}
+
+uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t)
+{
+    const sp_state *s = (const sp_state *)h->state_;
+    return t >= 2u && t <= 5u ? s->ntile[t - 2u] : 0u;
 }
 
 int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_tri_sink *sink,

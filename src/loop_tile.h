@@ -77,4 +77,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
  * closed form, stepped along each row, the others by subd_lp_vertex_id. */
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2]);
+/* Tiles of depth t (2..5) a running Loop stream h (subd_loop_stream_begin) has made so far:
+ * for the tests that count which path the stream took (loop_stream.c). */
+uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t);
 #endif

@@ -311,28 +311,21 @@ static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real 
 }
 
 /* Ring start of the new vertex on edge d of U(ui, uj) (see the header: by the lower
- * half-edge's corner index in its face). */
+ * half-edge's corner index in its face), tabulated: when U holds the lower half-edge (lattice
+ * edge d, direction 2d) and U has rotation r, its corner index is ci = (d - r) mod 3 and the
+ * ring starts in direction 2d when ci = 2, else 2 ((d + 1) mod 3): lt_ndir_u[d][r]; else the
+ * down triangle across (D(ui, uj-1), D(ui, uj), D(ui-1, uj) for d = 0, 1, 2) holds it as its
+ * lattice edge k = (d + 1) mod 3, direction 2k + 1, and with its rotation r, ci = (k - r)
+ * mod 3: direction 2k + 1 when ci = 2, else 2 ((k + 1) mod 3) + 1: lt_ndir_d[d][r]. */
+static const uint8_t lt_ndir_u[3][3] = {{2u, 0u, 2u}, {4u, 4u, 2u}, {4u, 0u, 0u}};
+static const uint8_t lt_ndir_d[3][3] = {{5u, 5u, 3u}, {5u, 1u, 1u}, {3u, 1u, 3u}};
+
 static uint8_t lt_new_dir(const lt_grid *g, uint32_t s, uint32_t ui, uint32_t uj, uint32_t d)
 {
-    uint32_t r, k, ci;
-    if (((uint32_t)g->low[lt_vi(s, ui, uj)] >> d) & 1u) { /* U's half-edge, lattice edge d, direction 2d */
-        r = g->rot[2u * lt_vi(s, ui, uj)];
-        ci = (d + 3u - r) % 3u;
-        return (uint8_t)(ci == 2u ? 2u * d : 2u * ((d + 1u) % 3u));
-    }
-    /* the down triangle across: lattice edge k, direction 2k + 1 */
-    if (d == 0u) {
-        r = g->rot[2u * lt_vi(s, ui, uj - 1u) + 1u];
-        k = 1;
-    } else if (d == 1u) {
-        r = g->rot[2u * lt_vi(s, ui, uj) + 1u];
-        k = 2;
-    } else {
-        r = g->rot[2u * lt_vi(s, ui - 1u, uj) + 1u];
-        k = 0;
-    }
-    ci = (k + 3u - r) % 3u;
-    return (uint8_t)(ci == 2u ? 2u * k + 1u : 2u * ((k + 1u) % 3u) + 1u);
+    uint32_t v = lt_vi(s, ui, uj), w;
+    if (((uint32_t)g->low[v] >> d) & 1u) return lt_ndir_u[d][g->rot[2u * v]];
+    w = d == 0u ? v - (s + 2u - uj) : d == 1u ? v : v - 1u; /* the D across: lt_vi's row step */
+    return lt_ndir_d[d][g->rot[2u * w + 1u]];
 }
 
 /* Ring start (lattice direction of vert_out) of the level t + 1 point (px, py) / 2 of grid g
@@ -537,7 +530,8 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         for (j = 0; j < 6u; j++) o3[j + 6u] = o3[j];
         for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u;
+            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c];
+            if (d >= 6u) d -= 6u;
             subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
         }
     }

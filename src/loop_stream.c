@@ -547,7 +547,7 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
     const uint8_t *ix = tl->tab + 3u * j0;
     const tile_p3 *P = (const tile_p3 *)(const void *)tl->qpos;
     tile_p3 *tp = (tile_p3 *)(void *)t->pos, *tn = (tile_p3 *)(void *)t->normal;
-    const uint32_t *I = tl->qid;
+    const uint64_t *I = tl->qid;
     uint32_t j;
     for (j = j0; j < n; j++, ix += 3) {
         int st;
@@ -556,7 +556,7 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
 #define TILE_PUSH_CORNER(k)                                                          \
         a = ix[k];                                                                   \
         tp[k] = P[a];                                                                \
-        t->id[k] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);           \
+        t->id[k] = I[a];                                                             \
         if (N) tn[k] = N[a];
         TILE_PUSH_CORNER(0)
         TILE_PUSH_CORNER(1)
@@ -621,11 +621,9 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
         for (tj = s->tj; tj < n; tj++) {
             const uint8_t *ix = tl.tab + 3u * tj;
             const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];
-            const uint32_t *i0 = tl.qid + 2u * ix[0], *i1 = tl.qid + 2u * ix[1], *i2 = tl.qid + 2u * ix[2];
             subd_real p00 = x0[0], p01 = x0[1], p02 = x0[2], p10 = x1[0], p11 = x1[1], p12 = x1[2];
             subd_real p20 = x2[0], p21 = x2[1], p22 = x2[2];
-            uint64_t d0 = (uint64_t)i0[0] | ((uint64_t)i0[1] << 32), d1 = (uint64_t)i1[0] | ((uint64_t)i1[1] << 32);
-            uint64_t d2 = (uint64_t)i2[0] | ((uint64_t)i2[1] << 32);
+            uint64_t d0 = tl.qid[ix[0]], d1 = tl.qid[ix[1]], d2 = tl.qid[ix[2]];
             subd_tri *t;
             if (one) {
                 if (q->stop) break;

@@ -117,7 +117,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
     tl->qpos = limit ? (subd_real *)(void *)(block + off[LT_LPOS]) : tl->g[1].pos;
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
-    tl->qid = (uint32_t *)(void *)(block + off[LT_QID]);
+    tl->qid = (uint64_t *)(void *)(block + off[LT_QID]); /* 8-aligned: subd_size_add */
     tl->depth = t;
 }
 
@@ -601,8 +601,7 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
             uint64_t id = cl;
             if (a - 1u >= n1 - 1u || b - 1u >= n1 - 1u || a + b >= n1) /* off vertex_id's face interior */
                 id = subd_lp_vertex_id(in, f, a, b, lv);
-            tl->qid[2u * k] = (uint32_t)id;
-            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
+            tl->qid[k] = id;
             cl += (uint64_t)dl;
             dl -= da * da;
             ia += da;

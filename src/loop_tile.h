@@ -23,13 +23,14 @@ typedef struct lt_grid {
 
 /* A tile of depth t (2 <= t <= SUBD_LOOP_TILE_LEVELS): levels 0..t-1 in two grids used in
  * turn, then the last level one quarter (a child of the tile's face at level t - 1) at a time:
- * its positions (qpos, reusing a grid's positions), its ids (qid, 2 words each) and the
+ * its positions (qpos, reusing a grid's positions), its ids (qid: one 8-byte load each in
+ * the emission loop) and the
  * emission order of its triangles (tab: 3 quarter-vertex indices per triangle, subd_loop's
  * depth-first order; filled once per stream by subd_lt_table). */
 typedef struct lt_tile {
     lt_grid g[2];
     subd_real *qpos;
-    uint32_t *qid;
+    uint64_t *qid;
     uint8_t *tab;
     uint32_t depth;
     /* limit mode (lk set by the caller after subd_lt_carve): qpos and qnrm are the quarter's

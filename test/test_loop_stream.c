@@ -827,7 +827,7 @@ static void stream_tiles_partial(void)
             uint32_t n = 0, mark = subd_arena_mark(&a);
             subd_loop_opts o;
             subd_stream h;
-            subd_tri buf[40];
+            static subd_tri buf[40]; /* static: off the device's stack */
             int r;
             if (td < 2u) continue;
             tk = levels - td;

@@ -500,16 +500,22 @@ static void sp_up(sp_state *s)
     }
 }
 
-/* Level s->k (p) was just built: a regular tile from here when this is a tile's level (from
- * lay.tk down to L - 2: a patch refused at level tk, next to an irregular vertex, has its
- * regular children tiled one level down, with a tile of one level fewer) and p is regular;
- * else its cache (a level above the emitting one caches everything its
+/* Smallest partial tile (below level tk): plain mode 3 levels, since the general path's last
+ * two levels from level L-2 (emit_grandchildren) take fewer instructions than a tile of two
+ * (measured: nefertiti level 3, whose control faces are mostly irregular, 17% more with
+ * them); limit mode 2, since its general path moves every corner to the limit alone. */
+#define LT_PARTIAL_MIN(limit) ((limit) ? 2u : 3u)
+
+/* Level s->k (p) was just built: a regular tile from here when this is a tile's level (level
+ * tk, and below it partial tiles down to LT_PARTIAL_MIN levels: a patch refused at level tk,
+ * next to an irregular vertex, has its regular children tiled one level down, with a tile of
+ * one level fewer) and p is regular; else its cache (a level above the emitting one caches everything its
  * children's 1-rings need; the emitting level only its centre's six values; limit mode's
  * level L none). */
 static void sp_enter(sp_state *s, const sp_level *p)
 {
     const subd_loop_opts *o = &s->o;
-    if (s->lay.tdepth && s->k >= s->lay.tk && s->k + 2u <= o->levels) {
+    if (s->lay.tdepth && s->k >= s->lay.tk && (s->k == s->lay.tk || s->k + LT_PARTIAL_MIN(s->limit) <= o->levels)) {
         lt_tile tl;
         subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {

@@ -806,10 +806,10 @@ static void stream_level6(void)
 
 /* Partial tiles (loop_stream.c's sp_enter): a patch refused at the tiles' level tk, next to an
  * irregular vertex, has its regular children tiled one level down with a tile of one level
- * fewer, down to tiles of two levels at level L-2. The icosahedron (every control vertex of
+ * fewer, down to tiles of three levels (limit mode: two). The icosahedron (every control vertex of
  * valence 5) counts them exactly: a face with c irregular corners has c corner children with
- * one irregular corner and 4 - c regular ones; from level tk on a regular face is a tile, of
- * depth L - k at level k. The pull form's tile counts (subd_lt_stream_count) must be these,
+ * one irregular corner and 4 - c regular ones; a regular face at level tk is a tile, below it
+ * one at level k when L - k is at least that least depth. The pull form's tile counts (subd_lt_stream_count) must be these,
  * plain and limit mode, levels 2..6; the host compares the streams with subd_loop (limit mode:
  * subd_loop_limit of it) bit for bit at levels 3..5 (level 6: stream_tiles,
  * stream_tiles_limit), both rules. */
@@ -833,8 +833,9 @@ static void stream_tiles_partial(void)
             tk = levels - td;
             for (t = 0; t < 6u; t++) want[t] = 0;
             for (k = 0; k + 2u <= levels; k++) {
-                if (k >= tk) {
-                    want[levels - k] += reg; /* every regular face from level tk on: a tile */
+                if (k == tk || (k > tk && levels - k >= (lim ? 2u : 3u))) {
+                    want[levels - k] += reg; /* a regular face at level tk, or below it with a
+                                              * tile of at least 3 levels (limit mode: 2) */
                     reg = 0;
                 }
                 reg = 4u * reg + irr3 + 3u * irr1;
@@ -858,7 +859,7 @@ static void stream_tiles_partial(void)
             CHECK_EQ(n, in.num_faces << (2u * levels));
             subd_stream_end(&h);
             CHECK_EQ(subd_arena_mark(&a), mark);
-            if (levels >= 3u) CHECK(want[2] > 0u); /* partial tiles down to depth 2 */
+            if (levels >= 4u) CHECK(want[lim ? 2u : 3u] > 0u); /* partial tiles down to their least depth */
         }
     CHECK_EQ(fails, 0);
     CHECK(made > 0u);

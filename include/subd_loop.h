@@ -252,9 +252,10 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_SMASK_ 352u
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
  * sides 2^(t-1) + 3 and 2^(t-2) + 3 (positions, ring starts, rotations, lower sides; the
- * second's positions also hold a quarter of the last level, side 2^(t-1); limit mode: with a
- * one-vertex margin, side 2^(t-1) + 3), the quarter's ids and its emission table; limit mode
- * adds the quarter's limit positions and normals. */
+ * second's memory also holds a quarter of the last level, side 2^(t-1), as records of
+ * position and id, 20 bytes each; limit mode: its positions with a one-vertex margin, side
+ * 2^(t-1) + 3, and the records and normals of its limit points after it) and its emission
+ * table. */
 #define SUBD_LOOP_TCFG_(lim) ((lim) ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS)
 #define SUBD_LOOP_TMIN_(L, lim) ((uint32_t)(L) < SUBD_LOOP_TCFG_(lim) ? (uint32_t)(L) : SUBD_LOOP_TCFG_(lim))
 #define SUBD_LOOP_TD_(L, lim) (SUBD_LOOP_TMIN_(L, lim) < 2u ? 0u : SUBD_LOOP_TMIN_(L, lim))
@@ -263,14 +264,14 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_TNA_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 1u)) + 3u)
 #define SUBD_LOOP_TNB_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 2u)) + 3u)
 #define SUBD_LOOP_TQN_(t) SUBD_LOOP_TCNT_(1u << (SUBD_LOOP_TC_(t) - 1u))
-#define SUBD_LOOP_TQM_(t, lim) ((lim) ? SUBD_LOOP_TNA_(t) : SUBD_LOOP_TQN_(t))
+#define SUBD_LOOP_TGB_(t) \
+    (SUBD_LOOP_SA_(12u * SUBD_LOOP_TNB_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)))
+#define SUBD_LOOP_TQU_(t, lim) ((lim) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) : SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(t)))
 #define SUBD_LOOP_TILE_BYTES_(t, lim) \
     ((t) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNA_(t)) + \
                SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
-               SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQM_(t, lim) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQM_(t, lim))) + \
-               2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)) + \
-               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + \
-               ((lim) ? 2u * SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
+               (SUBD_LOOP_TGB_(t) > SUBD_LOOP_TQU_(t, lim) ? SUBD_LOOP_TGB_(t) : SUBD_LOOP_TQU_(t, lim)) + \
+               ((lim) ? SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
          : 0u)
 /* the tiles' emission tables, depths 2..t (their own block, filled once per stream) */
 #define SUBD_LOOP_TT1_(t, u) ((t) >= (u) ? SUBD_LOOP_SA_(3u << (2u * ((u) - 1u))) : 0u)

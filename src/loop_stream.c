@@ -551,18 +551,19 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
     int (*fn)(void *, const subd_tri *) = ts->tri;
     void *ctx = ts->ctx;
     const uint8_t *ix = tl->tab + 3u * j0;
-    const tile_p3 *P = (const tile_p3 *)(const void *)tl->qpos;
+    const lt_rec *Q = tl->q;
     tile_p3 *tp = (tile_p3 *)(void *)t->pos, *tn = (tile_p3 *)(void *)t->normal;
-    const uint64_t *I = tl->qid;
     uint32_t j;
     for (j = j0; j < n; j++, ix += 3) {
         int st;
         uint32_t a;
-        /* corner by corner (few live registers), unrolled */
+        const lt_rec *r;
+        /* corner by corner (few live registers), unrolled; position and id from one record */
 #define TILE_PUSH_CORNER(k)                                                          \
         a = ix[k];                                                                   \
-        tp[k] = P[a];                                                                \
-        t->id[k] = I[a];                                                             \
+        r = Q + a;                                                                   \
+        tp[k] = *(const tile_p3 *)(const void *)r->p;                                \
+        t->id[k] = (uint64_t)r->id[0] | ((uint64_t)r->id[1] << 32);                  \
         if (N) tn[k] = N[a];
         TILE_PUSH_CORNER(0)
         TILE_PUSH_CORNER(1)
@@ -626,10 +627,13 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
         } else
         for (tj = s->tj; tj < n; tj++) {
             const uint8_t *ix = tl.tab + 3u * tj;
-            const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];
+            const lt_rec *r0 = tl.q + ix[0], *r1 = tl.q + ix[1], *r2 = tl.q + ix[2];
+            const subd_real *x0 = r0->p, *x1 = r1->p, *x2 = r2->p;
             subd_real p00 = x0[0], p01 = x0[1], p02 = x0[2], p10 = x1[0], p11 = x1[1], p12 = x1[2];
             subd_real p20 = x2[0], p21 = x2[1], p22 = x2[2];
-            uint64_t d0 = tl.qid[ix[0]], d1 = tl.qid[ix[1]], d2 = tl.qid[ix[2]];
+            uint64_t d0 = (uint64_t)r0->id[0] | ((uint64_t)r0->id[1] << 32);
+            uint64_t d1 = (uint64_t)r1->id[0] | ((uint64_t)r1->id[1] << 32);
+            uint64_t d2 = (uint64_t)r2->id[0] | ((uint64_t)r2->id[1] << 32);
             subd_tri *t;
             if (one) {
                 if (q->stop) break;

@@ -151,8 +151,9 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
  *   refined depth first (an explicit stack, no recursion), and from 2 levels on one regular
  *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (limit mode: SUBD_LOOP_TILE_LEVELS_LIMIT;
- *   6.6 KB at 5, 3.7 KB at 4 in limit mode, sharing memory with the levels below the tile's,
- *   idle while it runs), where regular patches are refined breadth first; nothing stays in it after the
+ *   6.3 KB at 5, 3.6 KB at 4 in limit mode, sharing memory with the levels below the tile's,
+ *   idle while it runs; next to an irregular vertex smaller tiles one level down, in the same
+ *   memory), where regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
  *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming Loop subdivision: subd_loop's level-L triangles handed to a sink one at a time,
  * in memory that depends on the level count and the largest valence only.
- * Length (~785 lines): one concept, the depth-first patch walk with its pull-form driver,
+ * Length (~805 lines): one concept, the depth-first patch walk with its pull-form driver,
  * limit mode and the tile hand-off (layout shared with the idle levels, tile_push to the
  * sink), which all read the one level layout; the tiles themselves are loop_tile.c, the patch
  * views loop_patch.c.
@@ -29,8 +29,11 @@
  * caller's buffer is full; the push form hands them to the sink straight from the quarter's
  * arrays: tile_push). In limit mode each quarter's vertices are moved to the limit on
  * the grid too, with the valence-6 masks computed once per stream (loop_limit.c's
- * subd_loop_limit_reg6, the same sums as subd_loop_limit's). Other patches take the general
- * path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
+ * subd_loop_limit_reg6, the same sums as subd_loop_limit's). A patch refused at level L - t
+ * (an irregular corner) is refined depth first, and its regular descendants below it are
+ * tiles of one level fewer per level (partial tiles, down to 3 levels, limit mode 2: sp_enter),
+ * so only the faces at the irregular vertex itself go down the general path. Other patches
+ * take the general path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
  * table cached in the run state, so once per valence and stream).
  *
  * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
@@ -56,10 +59,10 @@
  * headers, level 0's patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3
  * vertices, 3N cached values), levels 1..L-2 (limit mode: 1..L-1; at most one corner above
  * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, one
- * extraction's scratch (a slot map and a child-face map), the tile's emission table; the
- * tile's own block shares memory with level tk = L - t (tk >= 1) and the levels below it,
- * which are idle while a tile is made and emitted (stream_layout), so the plan holds the
- * larger of the two.
+ * extraction's scratch (a slot map and a child-face map), the tiles' emission tables (one
+ * per depth); a tile's own block shares memory with its level k >= tk = L - t and the
+ * levels below it, which are idle while a tile is made and emitted (stream_layout), so the
+ * plan holds the larger of the two.
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */

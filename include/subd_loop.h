@@ -151,8 +151,9 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
  *   refined depth first (an explicit stack, no recursion), and from 2 levels on one regular
  *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (limit mode: SUBD_LOOP_TILE_LEVELS_LIMIT;
- *   6.6 KB at 5, 3.7 KB at 4 in limit mode, sharing memory with the levels below the tile's,
- *   idle while it runs), where regular patches are refined breadth first; nothing stays in it after the
+ *   6.3 KB at 5, 3.6 KB at 4 in limit mode, sharing memory with the levels below the tile's,
+ *   idle while it runs; next to an irregular vertex smaller tiles one level down, in the same
+ *   memory), where regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
  *   emitter 704), 1.7 KB in limit mode (the limit masks), plus the sink's.
@@ -210,10 +211,11 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * starts, corners, twins, sharp bits and the refined values of the level (the last two
  * levels are emitted from level L-2's); limit mode adds level L, a subd_mesh view of it and
  * the limit masks' caches;
- * then the scratch of one extraction and (L >= 2) the regular tile
- * (SUBD_LOOP_TILE_BYTES_, its table SUBD_LOOP_TTAB_; SUBD_LOOP_TILE_LEVELS and _LIMIT in
- * subd_config.h), whose block shares memory with level L-t (t the tile's levels) and the
- * levels below it: the larger of the two counts. */
+ * then the scratch of one extraction and (L >= 2) the regular tiles
+ * (SUBD_LOOP_TILE_BYTES_, their tables SUBD_LOOP_TTAB_; SUBD_LOOP_TILE_LEVELS and _LIMIT in
+ * subd_config.h): a tile of t levels at level L-t and, next to irregular vertices, smaller
+ * ones at the levels below it down to L-2, each in its level's block and the deeper levels'
+ * (SUBD_LOOP_TREG_): the larger of the two counts. */
 #define SUBD_LOOP_STREAM_BYTES(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 0u)
 #define SUBD_LOOP_STREAM_BYTES_LIMIT(L, N) SUBD_LOOP_STREAM_BYTES_(L, N, 1u)
 #define SUBD_LOOP_SN_(N) ((uint32_t)(N) < 6u ? 6u : (uint32_t)(N))
@@ -236,8 +238,7 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     (SUBD_STREAM_STATE_BYTES + SUBD_LOOP_SA_(((lim) ? 1u : (L) >= 2u ? 16u : 4u) * (uint32_t)sizeof(subd_tri)) + \
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      SUBD_LOOP_STK_(L, lim) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim), lim) ? SUBD_LOOP_SDEEP_(L, N, lim) \
-                                                                              : SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim), lim)) + \
+     (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TREG_(L, N, lim) ? SUBD_LOOP_SDEEP_(L, N, lim) : SUBD_LOOP_TREG_(L, N, lim)) + \
      SUBD_LOOP_TTAB_(SUBD_LOOP_TD_(L, lim)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
 /* levels with a cache (1..L-2, limit mode 1..L-1); of them, those above the tile's level
  * tk = L-t (1..tk-1); the region from level max(tk, 1) on, which the tile's block shares: the
@@ -252,9 +253,10 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_SMASK_ 352u
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
  * sides 2^(t-1) + 3 and 2^(t-2) + 3 (positions, ring starts, rotations, lower sides; the
- * second's positions also hold a quarter of the last level, side 2^(t-1); limit mode: with a
- * one-vertex margin, side 2^(t-1) + 3), the quarter's ids and its emission table; limit mode
- * adds the quarter's limit positions and normals. */
+ * second's memory also holds a quarter of the last level, side 2^(t-1), as records of
+ * position and id, 20 bytes each; limit mode: its positions with a one-vertex margin, side
+ * 2^(t-1) + 3, and the records and normals of its limit points after it) and its emission
+ * table. */
 #define SUBD_LOOP_TCFG_(lim) ((lim) ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS)
 #define SUBD_LOOP_TMIN_(L, lim) ((uint32_t)(L) < SUBD_LOOP_TCFG_(lim) ? (uint32_t)(L) : SUBD_LOOP_TCFG_(lim))
 #define SUBD_LOOP_TD_(L, lim) (SUBD_LOOP_TMIN_(L, lim) < 2u ? 0u : SUBD_LOOP_TMIN_(L, lim))
@@ -263,17 +265,31 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_TNA_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 1u)) + 3u)
 #define SUBD_LOOP_TNB_(t) SUBD_LOOP_TCNT_((1u << (SUBD_LOOP_TC_(t) - 2u)) + 3u)
 #define SUBD_LOOP_TQN_(t) SUBD_LOOP_TCNT_(1u << (SUBD_LOOP_TC_(t) - 1u))
-#define SUBD_LOOP_TQM_(t, lim) ((lim) ? SUBD_LOOP_TNA_(t) : SUBD_LOOP_TQN_(t))
+#define SUBD_LOOP_TGB_(t) \
+    (SUBD_LOOP_SA_(12u * SUBD_LOOP_TNB_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)))
+#define SUBD_LOOP_TQU_(t, lim) ((lim) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) : SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(t)))
 #define SUBD_LOOP_TILE_BYTES_(t, lim) \
     ((t) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNA_(t)) + \
                SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
-               SUBD_LOOP_SA_(12u * (SUBD_LOOP_TNB_(t) > SUBD_LOOP_TQM_(t, lim) ? SUBD_LOOP_TNB_(t) : SUBD_LOOP_TQM_(t, lim))) + \
-               2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)) + \
-               SUBD_LOOP_SA_(8u * SUBD_LOOP_TQN_(t)) + \
-               ((lim) ? 2u * SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
+               (SUBD_LOOP_TGB_(t) > SUBD_LOOP_TQU_(t, lim) ? SUBD_LOOP_TGB_(t) : SUBD_LOOP_TQU_(t, lim)) + \
+               ((lim) ? SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
          : 0u)
-/* the tile's emission table (its own block, filled once per stream) */
-#define SUBD_LOOP_TTAB_(t) ((t) ? SUBD_LOOP_SA_(3u << (2u * (SUBD_LOOP_TC_(t) - 1u))) : 0u)
+/* the tiles' emission tables, depths 2..t (their own block, filled once per stream) */
+#define SUBD_LOOP_TT1_(t, u) ((t) >= (u) ? SUBD_LOOP_SA_(3u << (2u * ((u) - 1u))) : 0u)
+#define SUBD_LOOP_TTAB_(t) (SUBD_LOOP_TT1_(t, 2u) + SUBD_LOOP_TT1_(t, 3u) + SUBD_LOOP_TT1_(t, 4u) + SUBD_LOOP_TT1_(t, 5u))
+/* The tiles' region: at level tk + j (tk = L - t, j = 0..t-2) a tile of depth t - j at
+ * level tk + j's block, j level blocks (one fewer when tk = 0: level 0 has its own block)
+ * after the region's start; the largest of them. */
+#define SUBD_LOOP_TOFF_(L, lim, j) ((uint32_t)(L) > SUBD_LOOP_TD_(L, lim) ? (j) : (j) ? (j) - 1u : 0u)
+#define SUBD_LOOP_TJ_(L, N, lim, j) \
+    (SUBD_LOOP_TD_(L, lim) >= (j) + 2u \
+         ? SUBD_LOOP_TOFF_(L, lim, j) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
+               SUBD_LOOP_TILE_BYTES_(SUBD_LOOP_TD_(L, lim) >= (j) + 2u ? SUBD_LOOP_TD_(L, lim) - (j) : 2u, lim) \
+         : 0u)
+#define SUBD_LOOP_TMAX_(a, b) ((a) > (b) ? (a) : (b))
+#define SUBD_LOOP_TREG_(L, N, lim) \
+    SUBD_LOOP_TMAX_(SUBD_LOOP_TMAX_(SUBD_LOOP_TJ_(L, N, lim, 0u), SUBD_LOOP_TJ_(L, N, lim, 1u)), \
+                    SUBD_LOOP_TMAX_(SUBD_LOOP_TJ_(L, N, lim, 2u), SUBD_LOOP_TJ_(L, N, lim, 3u)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Limit positions and normals                                                            */

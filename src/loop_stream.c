@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming Loop subdivision: subd_loop's level-L triangles handed to a sink one at a time,
  * in memory that depends on the level count and the largest valence only.
- * Length (~785 lines): one concept, the depth-first patch walk with its pull-form driver,
+ * Length (~805 lines): one concept, the depth-first patch walk with its pull-form driver,
  * limit mode and the tile hand-off (layout shared with the idle levels, tile_push to the
  * sink), which all read the one level layout; the tiles themselves are loop_tile.c, the patch
  * views loop_patch.c.
@@ -29,8 +29,11 @@
  * caller's buffer is full; the push form hands them to the sink straight from the quarter's
  * arrays: tile_push). In limit mode each quarter's vertices are moved to the limit on
  * the grid too, with the valence-6 masks computed once per stream (loop_limit.c's
- * subd_loop_limit_reg6, the same sums as subd_loop_limit's). Other patches take the general
- * path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
+ * subd_loop_limit_reg6, the same sums as subd_loop_limit's). A patch refused at level L - t
+ * (an irregular corner) is refined depth first, and its regular descendants below it are
+ * tiles of one level fewer per level (partial tiles, down to 3 levels, limit mode 2: sp_enter),
+ * so only the faces at the irregular vertex itself go down the general path. Other patches
+ * take the general path below (limit mode: loop_limit.c's masks on a view of level L's patch, chi and the trig
  * table cached in the run state, so once per valence and stream).
  *
  * Bit-identity with subd_loop. A rule gives the same bits only if it adds the same products
@@ -56,10 +59,10 @@
  * headers, level 0's patch (corner valences up to N each: at most 3N - 2 faces, 3N - 3
  * vertices, 3N cached values), levels 1..L-2 (limit mode: 1..L-1; at most one corner above
  * valence 6: N + 12 in place of 3N), the limit mode's level L and its mesh view, one
- * extraction's scratch (a slot map and a child-face map), the tile's emission table; the
- * tile's own block shares memory with level tk = L - t (tk >= 1) and the levels below it,
- * which are idle while a tile is made and emitted (stream_layout), so the plan holds the
- * larger of the two.
+ * extraction's scratch (a slot map and a child-face map), the tiles' emission tables (one
+ * per depth); a tile's own block shares memory with its level k >= tk = L - t and the
+ * levels below it, which are idle while a tile is made and emitted (stream_layout), so the
+ * plan holds the larger of the two.
  * Local indices are 16-bit (SUBD_LOOP_STREAM_MAX_VALENCE keeps every count below 2^16 - 2).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -104,11 +107,12 @@ typedef struct sp_layout {
     sp_view view;       /* limit mode: level L's patch as a subd_mesh (arrays only) for
                          * loop_limit.c's masks                                             */
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
-    uint8_t *tile;         /* the regular tile's block (loop_tile.h), when tdepth >= 2: it
-                            * shares memory with the levels below the tile's               */
-    uint8_t *tab;          /* the tile's emission table                                     */
+    uint8_t *tile;         /* the region of the regular tiles' blocks (loop_tile.h), when
+                            * tdepth >= 2: it shares memory with the levels from tk on    */
+    uint8_t *tab;          /* the tiles' emission tables (depths 2..tdepth)                */
     sp_masks *mk;          /* limit mode: the limit masks' caches                          */
-    uint32_t tdepth;       /* levels a tile refines (tile_depth); 0: none                   */
+    uint32_t tdepth;       /* levels a tile at level tk refines (tile_depth); 0: none      */
+    uint32_t tk;           /* the first level with tiles: L - tdepth                       */
     uint32_t size1, total;
 } sp_layout;
 
@@ -119,6 +123,15 @@ static uint32_t tile_depth(uint32_t levels, int limit)
     uint32_t t = levels < c ? levels : c;
     return t < 2u ? 0u : t;
 }
+
+/* Block index of level k in the level blocks (level 0 has its own block, lev0; a tile at
+ * level 0 starts where level 1's block does). */
+static uint32_t tile_bi(uint32_t k) { return k ? k - 1u : 0u; }
+
+/* The block of a tile at level k >= tk (depth L - k): level k's own block, which the tile
+ * may overwrite (subd_lt_start reads the patch first) with the deeper levels', idle while it
+ * is made and emitted; levels tk..k-1 above it are live (their next children). */
+static uint32_t tile_off(const sp_layout *l, uint32_t k) { return (tile_bi(k) - tile_bi(l->tk)) * l->size1; }
 
 /* The limit mode's mesh view of a level with corner valence sum s: loop_patch.c's layout of
  * it (SUBD_LOOP_SVIEW_ is the same sum); only the arrays are kept in the run state (a whole
@@ -147,7 +160,7 @@ static void view_layout(subd_layout *y, uint32_t s, sp_view *w)
 static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int limit, sp_layout *l)
 {
     subd_layout y;
-    uint32_t s0, s1, cached, above, r0, tb;
+    uint32_t s0, s1, cached, above, r0, tb, j;
     uint8_t *region;
     l->n = valence < 6u ? 6u : valence;
     s0 = 3u * l->n;
@@ -171,7 +184,16 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
         view_layout(&y, s1, &l->view);
     }
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
-    tb = l->tdepth ? subd_lt_layout(l->tdepth, limit, 0) : 0u;
+    /* the tiles: at level tk + j (j = 0..tdepth - 2) one of depth tdepth - j, at its level's
+     * block (tile_off) */
+    l->tk = levels - l->tdepth;
+    tb = 0;
+    if (l->tdepth)
+        for (j = 0; j + 2u <= l->tdepth; j++) {
+            uint32_t b = tile_off(l, l->tk + j);
+            subd_bytes_add(&b, subd_lt_layout(l->tdepth - j, limit, 0));
+            tb = subd_bytes_max(tb, b);
+        }
     if (y.bytes != UINT32_MAX && tb > y.bytes - r0) (void)subd_layout_take(&y, tb - (y.bytes - r0), 1u);
     l->tile = l->tdepth ? region : 0;
     l->tab = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_tab_bytes(l->tdepth)) : 0;
@@ -442,9 +464,11 @@ typedef struct sp_state {
     subd_loop_opts o;
     loop_wcache wc;
     uint32_t k, depth, ovf, started, limit;
-    /* the regular tile: at level tk; ton while its triangles go out: quarter tq, its
-     * triangle tj, tready once the quarter's positions and ids are made */
-    uint32_t tk, ton, tq, tj, tready;
+    /* the regular tile: at level k >= lay.tk, of depth tdep = L - k; ton while its triangles
+     * go out: quarter tq, its triangle tj, tready once the quarter's positions and ids are
+     * made */
+    uint32_t tdep, ton, tq, tj, tready;
+    uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 
@@ -479,17 +503,27 @@ static void sp_up(sp_state *s)
     }
 }
 
-/* Level s->k (p) was just built: a regular tile from here when this is the tile's level and
- * p is regular; else its cache (a level above the emitting one caches everything its
+/* Smallest partial tile (below level tk): plain mode 3 levels, since the general path's last
+ * two levels from level L-2 (emit_grandchildren) take fewer instructions than a tile of two
+ * (measured: nefertiti level 3, whose control faces are mostly irregular, 17% more with
+ * them); limit mode 2, since its general path moves every corner to the limit alone. */
+#define LT_PARTIAL_MIN(limit) ((limit) ? 2u : 3u)
+
+/* Level s->k (p) was just built: a regular tile from here when this is a tile's level (level
+ * tk, and below it partial tiles down to LT_PARTIAL_MIN levels: a patch refused at level tk,
+ * next to an irregular vertex, has its regular children tiled one level down, with a tile of
+ * one level fewer) and p is regular; else its cache (a level above the emitting one caches everything its
  * children's 1-rings need; the emitting level only its centre's six values; limit mode's
  * level L none). */
 static void sp_enter(sp_state *s, const sp_level *p)
 {
     const subd_loop_opts *o = &s->o;
-    if (s->lay.tdepth && s->k == s->tk) {
+    if (s->lay.tdepth && s->k >= s->lay.tk && (s->k == s->lay.tk || s->k + LT_PARTIAL_MIN(s->limit) <= o->levels)) {
         lt_tile tl;
-        subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
+        subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
+            s->tdep = o->levels - s->k;
+            s->ntile[s->tdep - 2u]++;
             s->ton = 1;
             s->tq = s->tj = s->tready = 0;
             return;
@@ -500,11 +534,11 @@ static void sp_enter(sp_state *s, const sp_level *p)
 }
 
 /* The ids of the current quarter's vertices (loop_tile.c's subd_lt_ids), from the tile
- * face's corners (level tk's header). */
+ * face's corners (the tile's level's header). */
 static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
     sp_level p;
-    level_at(&s->lay, s->tk, &p);
+    level_at(&s->lay, s->k, &p);
     subd_lt_ids(tl, s->run.in, s->run.f, s->o.levels, p.h->ca, p.h->cb, org, e1, e2);
 }
 
@@ -520,18 +554,19 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
     int (*fn)(void *, const subd_tri *) = ts->tri;
     void *ctx = ts->ctx;
     const uint8_t *ix = tl->tab + 3u * j0;
-    const tile_p3 *P = (const tile_p3 *)(const void *)tl->qpos;
+    const lt_rec *Q = tl->q;
     tile_p3 *tp = (tile_p3 *)(void *)t->pos, *tn = (tile_p3 *)(void *)t->normal;
-    const uint32_t *I = tl->qid;
     uint32_t j;
     for (j = j0; j < n; j++, ix += 3) {
         int st;
         uint32_t a;
-        /* corner by corner (few live registers), unrolled */
+        const lt_rec *r;
+        /* corner by corner (few live registers), unrolled; position and id from one record */
 #define TILE_PUSH_CORNER(k)                                                          \
         a = ix[k];                                                                   \
-        tp[k] = P[a];                                                                \
-        t->id[k] = (uint64_t)I[2u * a] | ((uint64_t)I[2u * a + 1u] << 32);           \
+        r = Q + a;                                                                   \
+        tp[k] = *(const tile_p3 *)(const void *)r->p;                                \
+        t->id[k] = (uint64_t)r->id[0] | ((uint64_t)r->id[1] << 32);                  \
         if (N) tn[k] = N[a];
         TILE_PUSH_CORNER(0)
         TILE_PUSH_CORNER(1)
@@ -565,7 +600,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
     int st;
     const subd_real *nr;
     subd_tri *one = (subd_tri *)(void *)q->one;
-    subd_lt_carve(&tl, s->lay.tile, s->lay.tab, s->lay.tdepth, (int)s->limit);
+    subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, s->tdep, (int)s->limit);
     tl.lk = s->limit ? &s->lay.mk->lk : 0;
     nr = tl.qnrm;
     n = 1u << (2u * (tl.depth - 1u));
@@ -595,12 +630,13 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
         } else
         for (tj = s->tj; tj < n; tj++) {
             const uint8_t *ix = tl.tab + 3u * tj;
-            const subd_real *x0 = tl.qpos + 3u * ix[0], *x1 = tl.qpos + 3u * ix[1], *x2 = tl.qpos + 3u * ix[2];
-            const uint32_t *i0 = tl.qid + 2u * ix[0], *i1 = tl.qid + 2u * ix[1], *i2 = tl.qid + 2u * ix[2];
+            const lt_rec *r0 = tl.q + ix[0], *r1 = tl.q + ix[1], *r2 = tl.q + ix[2];
+            const subd_real *x0 = r0->p, *x1 = r1->p, *x2 = r2->p;
             subd_real p00 = x0[0], p01 = x0[1], p02 = x0[2], p10 = x1[0], p11 = x1[1], p12 = x1[2];
             subd_real p20 = x2[0], p21 = x2[1], p22 = x2[2];
-            uint64_t d0 = (uint64_t)i0[0] | ((uint64_t)i0[1] << 32), d1 = (uint64_t)i1[0] | ((uint64_t)i1[1] << 32);
-            uint64_t d2 = (uint64_t)i2[0] | ((uint64_t)i2[1] << 32);
+            uint64_t d0 = (uint64_t)r0->id[0] | ((uint64_t)r0->id[1] << 32);
+            uint64_t d1 = (uint64_t)r1->id[0] | ((uint64_t)r1->id[1] << 32);
+            uint64_t d2 = (uint64_t)r2->id[0] | ((uint64_t)r2->id[1] << 32);
             subd_tri *t;
             if (one) {
                 if (q->stop) break;
@@ -733,11 +769,12 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->ovf = 0;
     s->started = 0;
     s->ton = 0;
-    /* the tile's level: L - its depth (loop_tile.h); its emission table, once */
-    s->tk = o->levels - lay.tdepth;
-    if (lay.tdepth) {
+    s->tdep = 0;
+    for (f = 0; f < 4u; f++) s->ntile[f] = 0;
+    /* the tiles' emission tables (depths 2..tdepth: loop_tile.h), once */
+    for (f = 2; f <= lay.tdepth; f++) {
         lt_tile tl;
-        subd_lt_carve(&tl, lay.tile, lay.tab, lay.tdepth, limit);
+        subd_lt_carve(&tl, lay.tile, lay.tab, f, limit);
         subd_lt_table(&tl);
     }
     if (limit) {
@@ -749,6 +786,12 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->impl.ring_items = ring;
     subd_stream_start(h, a, e.mark, SUBD_STREAM_TRIS, &s->impl, ring_cap(o->levels, limit));
     return subd_entry_ok(&e);
+}
+
+uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t)
+{
+    const sp_state *s = (const sp_state *)h->state_;
+    return t >= 2u && t <= 5u ? s->ntile[t - 2u] : 0u;
 }
 
 int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_tri_sink *sink,

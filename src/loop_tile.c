@@ -42,6 +42,7 @@
  * before), in the quarter's own frame, so that one table gives subd_loop's emission order
  * of every quarter and the grid for the last level is a quarter's size. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
+#include "layout.h" /* subd_bytes_add, subd_bytes_max */
 #include "loop_tile.h"
 
 /* No rule of a tile can overflow, so its rules skip the check (lt_pass): each is a convex
@@ -71,29 +72,36 @@ static uint32_t lt_side(uint32_t t) { return (1u << t) + 3u; }
 uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
 {
     uint32_t own[LT_N], b = 0, nA = lt_count(lt_side(t - 1u)), nB = lt_count(lt_side(t - 2u)), m = 1u << (t - 1u);
-    uint32_t qn = lt_count(m), rs = 3u * (uint32_t)sizeof(subd_real);
-    /* the second grid's positions also hold the last level's quarter (limit mode: with its
-     * margin, a grid of side m + 3 = the first grid's) */
-    uint32_t nq = limit ? nA : qn, nb = nB > nq ? nB : nq, nl = limit ? qn : 0u;
+    uint32_t qn = lt_count(m), rs = 3u * (uint32_t)sizeof(subd_real), g1 = 0, u = 0;
+    /* the second grid's memory, dead once the last level is made, also holds the quarter's
+     * records (limit mode: its last-level positions with their margin, a grid of side
+     * m + 3 = the first grid's; the records follow) */
     if (!off) off = own;
     off[LT_APOS] = b; subd_size_add(&b, nA, rs);
     off[LT_ADIR] = b; subd_size_add(&b, nA, 1u);
     off[LT_AROT] = b; subd_size_add(&b, nA, 2u);
     off[LT_ALOW] = b; subd_size_add(&b, nA, 1u);
-    off[LT_BPOS] = b; subd_size_add(&b, nb, rs);
-    off[LT_BDIR] = b; subd_size_add(&b, nB, 1u);
-    off[LT_BROT] = b; subd_size_add(&b, nB, 2u);
-    off[LT_BLOW] = b; subd_size_add(&b, nB, 1u);
-    off[LT_QID] = b;  subd_size_add(&b, qn, 8u);
-    off[LT_LPOS] = b; subd_size_add(&b, nl, rs);
-    off[LT_LNRM] = b; subd_size_add(&b, nl, rs);
+    off[LT_BPOS] = b;
+    subd_size_add(&g1, nB, rs);
+    off[LT_BDIR] = b + g1; subd_size_add(&g1, nB, 1u);
+    off[LT_BROT] = b + g1; subd_size_add(&g1, nB, 2u);
+    off[LT_BLOW] = b + g1; subd_size_add(&g1, nB, 1u);
+    subd_size_add(&u, limit ? nA : qn, limit ? rs : (uint32_t)sizeof(lt_rec));
+    subd_bytes_add(&b, subd_bytes_max(g1, u));
+    off[LT_QREC] = limit ? b : off[LT_BPOS];
+    if (limit) subd_size_add(&b, qn, (uint32_t)sizeof(lt_rec));
+    off[LT_LNRM] = b;
+    if (limit) subd_size_add(&b, qn, rs);
     return b;
 }
 
 uint32_t subd_lt_tab_bytes(uint32_t t)
 {
-    uint32_t b = 0, m = 1u << (t - 1u);
-    subd_size_add(&b, m * m, 3u); /* 4^(t-1) triangles */
+    uint32_t b = 0, u;
+    for (u = 2; u <= t; u++) {
+        uint32_t m = 1u << (u - 1u);
+        subd_size_add(&b, m * m, 3u); /* 4^(u-1) triangles */
+    }
     return b;
 }
 
@@ -101,6 +109,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
 {
     uint32_t off[LT_N];
     (void)subd_lt_layout(t, limit, off);
+    tl->tab = tab ? tab + subd_lt_tab_bytes(t - 1u) : 0; /* depth t's table follows 2..t-1's */
     tl->g[0].pos = (subd_real *)(void *)(block + off[LT_APOS]);
     tl->g[0].dir = block + off[LT_ADIR];
     tl->g[0].rot = block + off[LT_AROT];
@@ -110,11 +119,9 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
     tl->g[1].rot = block + off[LT_BROT];
     tl->g[1].low = block + off[LT_BLOW];
     tl->mpos = tl->g[1].pos;
-    tl->qpos = limit ? (subd_real *)(void *)(block + off[LT_LPOS]) : tl->g[1].pos;
+    tl->q = (lt_rec *)(void *)(block + off[LT_QREC]);
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
-    tl->qid = (uint32_t *)(void *)(block + off[LT_QID]);
-    tl->tab = tab;
     tl->depth = t;
 }
 
@@ -176,22 +183,23 @@ static inline void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui
 /* A region of level t + 1 points and where they go: the points (px, py) = O + x e1 + y e2
  * (level t + 1's coordinates plus one: the point halves (px, py) of level t's grid) with x, y >= lo, x + y <= hi (less the
  * region's three corners when `skip`), point (x, y) written to vertex (x - lo, y - lo) of a
- * grid of side hi - 2 lo. e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
+ * grid of side hi - 2 lo, ds subd_reals per vertex (3: a grid's positions; 5: the quarter's
+ * records, lt_rec). e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
 typedef struct lt_frame {
-    int32_t ox, oy, p, q, r, u, lo, hi;
+    int32_t ox, oy, p, q, r, u, lo, hi, ds;
     int skip;
 } lt_frame;
 
 /* One pass along natural row py: n points from px0 stepping by 2 (one kind: lt_classify's
  * by the parities), parent U index l0 (+1 per point), destination (x, y) stepping by
- * (dx, dy) in a grid of side S. Even points take the smooth vertex rule of valence 6 from
+ * (dx, dy) in a grid of side S, ds subd_reals per vertex. Even points take the smooth vertex rule of valence 6 from
  * the ring start, odd ones the interior edge rule from the lower side (the rules of
  * loop_rules.h, the products in subd_loop's order). Indices from U(ui, uj)'s l0: vertex
  * (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j, the length of row j),
  * + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. Forced inline
  * (TOPO_INLINE) so each kind is its own loop. */
 TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0, int32_t x, int32_t y, int32_t dx,
-                         int32_t dy, int32_t S, int kind, subd_real *out, loop_weights w)
+                         int32_t dy, int32_t S, int32_t ds, int kind, subd_real *out, loop_weights w)
 {
     const subd_real *P = g->pos;
     /* destination index k = lt_vi(S, x, y), stepped: k(x + dx, y + dy) - k(x, y) =
@@ -199,6 +207,9 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
     int32_t i, R = (int32_t)row, k = y * (2 * S + 3 - y) / 2 + x, sk = dx + dy * (2 * S + 3 - dy) / 2 - y * dy;
     int32_t dd = dy * dy;
     uint32_t dead = 0, *ovf = &dead; /* a tile's rules cannot overflow (LT_HUGE): unread */
+    k *= ds; /* in subd_reals */
+    sk *= ds;
+    dd *= ds;
     if (kind == 3) { /* even: the vertex rule from the ring start */
         int32_t o3[12];
         o3[0] = 3;
@@ -219,7 +230,7 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
             loop_smooth_add(acc, w, c + o[3]);
             loop_smooth_add(acc, w, c + o[4]);
             loop_smooth_add(acc, w, c + o[5]);
-            loop_smooth_end(out + 3 * k, acc, ovf);
+            loop_smooth_end(out + k, acc, ovf);
         }
     } else { /* the edge d = kind of U(l0): a -> b, opposite c, across e */
         int32_t oa, ob, oc, oe;
@@ -233,7 +244,7 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
         }
         for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
             const subd_real *c = P + 3u * l0;
-            subd_real *o = out + 3 * k;
+            subd_real *o = out + k;
             const subd_real *a = c + oa, *b = c + ob, *v = c + oc, *e = c + oe, *t;
             if (!(((uint32_t)g->low[l0] >> d) & 1u)) { /* the other side is lower */
                 t = a; a = b; b = t;
@@ -302,34 +313,27 @@ static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real 
             y = -fr->q * dpx + fr->p * dpy - fr->lo;
             if (py & 1) kind = (px0 & 1) ? 1 : 2;
             else kind = (px0 & 1) ? 0 : 3;
-            lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, kind, out, w);
+            lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, fr->ds, kind, out, w);
         }
     }
 }
 
 /* Ring start of the new vertex on edge d of U(ui, uj) (see the header: by the lower
- * half-edge's corner index in its face). */
+ * half-edge's corner index in its face), tabulated: when U holds the lower half-edge (lattice
+ * edge d, direction 2d) and U has rotation r, its corner index is ci = (d - r) mod 3 and the
+ * ring starts in direction 2d when ci = 2, else 2 ((d + 1) mod 3): lt_ndir_u[d][r]; else the
+ * down triangle across (D(ui, uj-1), D(ui, uj), D(ui-1, uj) for d = 0, 1, 2) holds it as its
+ * lattice edge k = (d + 1) mod 3, direction 2k + 1, and with its rotation r, ci = (k - r)
+ * mod 3: direction 2k + 1 when ci = 2, else 2 ((k + 1) mod 3) + 1: lt_ndir_d[d][r]. */
+static const uint8_t lt_ndir_u[3][3] = {{2u, 0u, 2u}, {4u, 4u, 2u}, {4u, 0u, 0u}};
+static const uint8_t lt_ndir_d[3][3] = {{5u, 5u, 3u}, {5u, 1u, 1u}, {3u, 1u, 3u}};
+
 static uint8_t lt_new_dir(const lt_grid *g, uint32_t s, uint32_t ui, uint32_t uj, uint32_t d)
 {
-    uint32_t r, k, ci;
-    if (((uint32_t)g->low[lt_vi(s, ui, uj)] >> d) & 1u) { /* U's half-edge, lattice edge d, direction 2d */
-        r = g->rot[2u * lt_vi(s, ui, uj)];
-        ci = (d + 3u - r) % 3u;
-        return (uint8_t)(ci == 2u ? 2u * d : 2u * ((d + 1u) % 3u));
-    }
-    /* the down triangle across: lattice edge k, direction 2k + 1 */
-    if (d == 0u) {
-        r = g->rot[2u * lt_vi(s, ui, uj - 1u) + 1u];
-        k = 1;
-    } else if (d == 1u) {
-        r = g->rot[2u * lt_vi(s, ui, uj) + 1u];
-        k = 2;
-    } else {
-        r = g->rot[2u * lt_vi(s, ui - 1u, uj) + 1u];
-        k = 0;
-    }
-    ci = (k + 3u - r) % 3u;
-    return (uint8_t)(ci == 2u ? 2u * k + 1u : 2u * ((k + 1u) % 3u) + 1u);
+    uint32_t v = lt_vi(s, ui, uj), w;
+    if (((uint32_t)g->low[v] >> d) & 1u) return lt_ndir_u[d][g->rot[2u * v]];
+    w = d == 0u ? v - (s + 2u - uj) : d == 1u ? v : v - 1u; /* the D across: lt_vi's row step */
+    return lt_ndir_d[d][g->rot[2u * w + 1u]];
 }
 
 /* Ring start (lattice direction of vert_out) of the level t + 1 point (px, py) / 2 of grid g
@@ -390,7 +394,7 @@ static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, 
     uint32_t s2 = 2u * s - 3u, I, J;
     lt_frame fr;
     fr.ox = 1; fr.oy = 1; fr.p = 1; fr.q = 0; fr.r = 0; fr.u = 1;
-    fr.lo = 0; fr.hi = (int32_t)s2; fr.skip = 1;
+    fr.lo = 0; fr.hi = (int32_t)s2; fr.skip = 1; fr.ds = 3;
     lt_rows(g, s, &fr, h->pos, w);
     if (!meta) return;
     /* ring starts: the next level's old vertices are this level's face's, at I, J >= 1,
@@ -518,7 +522,7 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
     const subd_real *M = tl->mpos;
     lt_frame fr;
     fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
-    fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1;
+    fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1; fr.ds = 3;
     lt_rows(g, s, &fr, tl->mpos, w);
     for (y = 0; y <= m; y++) {
         /* the ring's offsets in subd_reals (lt_ring_offsets' six, twice over, so that the six
@@ -534,8 +538,9 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         for (j = 0; j < 6u; j++) o3[j + 6u] = o3[j];
         for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint32_t d = (lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c]) % 6u;
-            subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->qpos + 3u * k, tl->qnrm + 3u * k, lo);
+            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c];
+            if (d >= 6u) d -= 6u;
+            subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->q[k].p, tl->qnrm + 3u * k, lo);
         }
     }
 
@@ -568,8 +573,8 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
     {
         lt_frame q;
         q.ox = ox; q.oy = oy; q.p = e1[0]; q.q = e1[1]; q.r = e2[0]; q.u = e2[1];
-        q.lo = 0; q.hi = (int32_t)m; q.skip = 0;
-        lt_rows(g, s, &q, tl->qpos, w);
+        q.lo = 0; q.hi = (int32_t)m; q.skip = 0; q.ds = (int32_t)(sizeof(lt_rec) / sizeof(subd_real));
+        lt_rows(g, s, &q, (subd_real *)(void *)tl->q, w); /* the records' positions */
     }
     *ovf |= lo;
 }
@@ -604,8 +609,8 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
             uint64_t id = cl;
             if (a - 1u >= n1 - 1u || b - 1u >= n1 - 1u || a + b >= n1) /* off vertex_id's face interior */
                 id = subd_lp_vertex_id(in, f, a, b, lv);
-            tl->qid[2u * k] = (uint32_t)id;
-            tl->qid[2u * k + 1u] = (uint32_t)(id >> 32);
+            tl->q[k].id[0] = (uint32_t)id;
+            tl->q[k].id[1] = (uint32_t)(id >> 32);
             cl += (uint64_t)dl;
             dl -= da * da;
             ia += da;

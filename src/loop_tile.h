@@ -21,26 +21,33 @@ typedef struct lt_grid {
     uint8_t *low;   /* per U: bit d set when U's half-edge d is its edge's lower half-edge   */
 } lt_grid;
 
+/* One vertex of the last level's quarter as the emission loop reads it: its position and
+ * its id (low word, high word) side by side, so that a triangle corner is one address. */
+typedef struct lt_rec {
+    subd_real p[3];
+    uint32_t id[2];
+} lt_rec;
+typedef char lt_rec_is_5_words[sizeof(lt_rec) == 5u * sizeof(subd_real) ? 1 : -1]; /* SUBD_LOOP_TILE_BYTES_ */
+
 /* A tile of depth t (2 <= t <= SUBD_LOOP_TILE_LEVELS): levels 0..t-1 in two grids used in
  * turn, then the last level one quarter (a child of the tile's face at level t - 1) at a time:
- * its positions (qpos, reusing a grid's positions), its ids (qid, 2 words each) and the
- * emission order of its triangles (tab: 3 quarter-vertex indices per triangle, subd_loop's
- * depth-first order; filled once per stream by subd_lt_table). */
+ * its vertices' positions and ids (q: plain mode in the second grid's memory, dead by then)
+ * and the emission order of its triangles (tab: 3 quarter-vertex indices per triangle,
+ * subd_loop's depth-first order; filled once per stream by subd_lt_table). */
 typedef struct lt_tile {
     lt_grid g[2];
-    subd_real *qpos;
-    uint32_t *qid;
+    lt_rec *q;
     uint8_t *tab;
     uint32_t depth;
-    /* limit mode (lk set by the caller after subd_lt_carve): qpos and qnrm are the quarter's
-     * limit positions and unit normals, from its last-level positions with a one-vertex
-     * margin (mpos: a grid of side 2^(t-1) + 3 in the quarter's frame, in the second grid's
-     * positions); else qnrm is NULL and qpos the last level's positions. */
+    /* limit mode (lk set by the caller after subd_lt_carve): q's positions and qnrm are the
+     * quarter's limit positions and unit normals, from its last-level positions with a
+     * one-vertex margin (mpos: a grid of side 2^(t-1) + 3 in the quarter's frame, in the
+     * second grid's memory); else qnrm is NULL and q's positions the last level's. */
     subd_real *qnrm, *mpos;
     const lim_reg6 *lk;
 } lt_tile;
 
-enum { LT_APOS, LT_ADIR, LT_AROT, LT_ALOW, LT_BPOS, LT_BDIR, LT_BROT, LT_BLOW, LT_QID, LT_LPOS, LT_LNRM, LT_N };
+enum { LT_APOS, LT_ADIR, LT_AROT, LT_ALOW, LT_BPOS, LT_BDIR, LT_BROT, LT_BLOW, LT_QREC, LT_LNRM, LT_N };
 
 /* Vertices of a triangular grid of side s. */
 static inline uint32_t lt_count(uint32_t s) { return (s + 1u) * (s + 2u) / 2u; }
@@ -48,14 +55,16 @@ static inline uint32_t lt_count(uint32_t s) { return (s + 1u) * (s + 2u) / 2u; }
 static inline uint32_t lt_vi(uint32_t s, uint32_t i, uint32_t j) { return j * (2u * s + 3u - j) / 2u + i; }
 
 /* The arrays of a tile of depth t (limit: limit mode's too) as offsets in its block (off may
- * be NULL; returns its bytes), all but the emission table, which has its own block
- * (subd_lt_tab_bytes): the block is scratch while the tile is made and emitted (the
- * stream lends it the idle deeper levels' memory), the table is filled once per stream.
- * The SUBD_LOOP_TILE_BYTES_ and SUBD_LOOP_TTAB_ sums in subd_loop.h are the same. */
+ * be NULL; returns its bytes), all but the emission tables, which have their own block
+ * (subd_lt_tab_bytes: the tables of depths 2..t one after the other, for a tile of depth
+ * t and the smaller tiles below it): the block is scratch while the tile is made and
+ * emitted (the stream lends it the idle deeper levels' memory), the tables are filled once
+ * per stream. The SUBD_LOOP_TILE_BYTES_ and SUBD_LOOP_TTAB_ sums in subd_loop.h are the
+ * same. */
 uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N]);
 uint32_t subd_lt_tab_bytes(uint32_t t);
-/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets) and its table;
- * lk = NULL. */
+/* The arrays of a tile of depth t in its block (subd_lt_layout's offsets) and its table in
+ * the tables' block tab (may be NULL: no table); lk = NULL. */
 void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int limit);
 /* Fills the emission table of a quarter (4^(t-1) triangles). */
 void subd_lt_table(const lt_tile *tl);
@@ -63,16 +72,19 @@ void subd_lt_table(const lt_tile *tl);
  * 1..t-1 are refined too), 0 when it is not (nothing useful is written). */
 int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf);
 /* The last level's positions of quarter c (0..3: child c of the tile's face at level t - 1,
- * subd_loop's child order) into qpos (limit mode: their limit positions, and normals into
+ * subd_loop's child order) into q (limit mode: their limit positions, and normals into
  * qnrm), in the quarter's own frame (corner k of the child at
  * lattice corner k of the quarter grid); *org, *e1, *e2: its frame in the tile's last level
  * (grid coordinates relative to the tile face's corner 0), for the ids. */
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
                      int32_t e2[2]);
-/* The ids of quarter c's vertices into qid (frame org, e1, e2 from subd_lt_quarter) of the
+/* The ids of quarter c's vertices into q (frame org, e1, e2 from subd_lt_quarter) of the
  * tile in control face f whose face has lattice corners (ca[k], cb[k]) at level lv (units
  * 1/2^lv, loop_patch.h's sp_head): a point inside the control face by subd_lp_vertex_id's
  * closed form, stepped along each row, the others by subd_lp_vertex_id. */
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2]);
+/* Tiles of depth t (2..5) a running Loop stream h (subd_loop_stream_begin) has made so far:
+ * for the tests that count which path the stream took (loop_stream.c). */
+uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t);
 #endif

@@ -42,9 +42,14 @@ static subd_real vec3w_root(subd_dist_sq s, uint32_t *ovf)
 #else
 static void vec3w_scale(const subd_wide *n, subd_real *out)
 {
-    uint32_t k;
     float len = subd_sqrt(subd_w3_dot(n, n));
-    for (k = 0; k < 3u; k++) out[k] = len > 0.0f ? n[k] / len : 0.0f;
+    if (len > 0.0f) { /* written out: as subd_w3_normalize */
+        out[0] = n[0] / len;
+        out[1] = n[1] / len;
+        out[2] = n[2] / len;
+    } else {
+        out[0] = out[1] = out[2] = 0.0f;
+    }
 }
 
 static subd_dist_sq vec3w_sq(subd_real x) { return x * x; }

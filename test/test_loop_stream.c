@@ -804,6 +804,77 @@ static void stream_level6(void)
 #endif
 }
 
+/* Partial tiles (loop_stream.c's sp_enter): a patch refused at the tiles' level tk, next to an
+ * irregular vertex, has its regular children tiled one level down with a tile of one level
+ * fewer, down to tiles of three levels (limit mode: two). The icosahedron (every control vertex of
+ * valence 5) counts them exactly: a face with c irregular corners has c corner children with
+ * one irregular corner and 4 - c regular ones; a regular face at level tk is a tile, below it
+ * one at level k when L - k is at least that least depth. The pull form's tile counts (subd_lt_stream_count) must be these,
+ * plain and limit mode, levels 2..6; the host compares the streams with subd_loop (limit mode:
+ * subd_loop_limit of it) bit for bit at levels 3..5 (level 6: stream_tiles,
+ * stream_tiles_limit), both rules. */
+static void stream_tiles_partial(void)
+{
+    uint32_t hash = 2166136261u, lim, levels, t, k, fails = 0, made = 0;
+    subd_arena a;
+    subd_mesh in;
+    subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+    if (!make_shape(S_ICO, &a, &in)) return;
+    for (lim = 0; lim < 2u; lim++)
+        for (levels = 2; levels <= 6u; levels++) {
+            uint32_t cfg = lim ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+            uint32_t td = levels < cfg ? levels : cfg, tk, want[6], reg = 0, irr3 = in.num_faces, irr1 = 0, got;
+            uint32_t n = 0, mark = subd_arena_mark(&a);
+            subd_loop_opts o;
+            subd_stream h;
+            static subd_tri buf[40]; /* static: off the device's stack */
+            int r;
+            if (td < 2u) continue;
+            tk = levels - td;
+            for (t = 0; t < 6u; t++) want[t] = 0;
+            for (k = 0; k + 2u <= levels; k++) {
+                if (k == tk || (k > tk && levels - k >= (lim ? 2u : 3u))) {
+                    want[levels - k] += reg; /* a regular face at level tk, or below it with a
+                                              * tile of at least 3 levels (limit mode: 2) */
+                    reg = 0;
+                }
+                reg = 4u * reg + irr3 + 3u * irr1;
+                irr1 = 3u * irr3 + irr1;
+                irr3 = 0;
+            }
+            o.levels = levels;
+            o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+            o.flags = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+            if (!CHECK_OK(subd_loop_stream_begin(&a, &in, &o, &h, 0), 0)) return;
+            while ((r = subd_stream_next_tris(&h, buf, 40u)) > 0) {
+                n += (uint32_t)r;
+                if (n == in.num_faces << (2u * levels)) /* the last triangles: every tile made */
+                    for (t = 2; t <= 5u; t++) {
+                        got = subd_lt_stream_count(&h, t);
+                        if (got != want[t]) fails++;
+                        if (t < td) made += got;
+                    }
+            }
+            CHECK_EQ(r, 0);
+            CHECK_EQ(n, in.num_faces << (2u * levels));
+            subd_stream_end(&h);
+            CHECK_EQ(subd_arena_mark(&a), mark);
+            if (levels >= 4u) CHECK(want[lim ? 2u : 3u] > 0u); /* partial tiles down to their least depth */
+        }
+    CHECK_EQ(fails, 0);
+    CHECK(made > 0u);
+#if H_HOST
+    for (lim = 0; lim < 2u; lim++)
+        for (levels = 3; levels <= 5u; levels++) {
+            uint32_t fl = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, fl, &hash);
+            compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, fl, &hash);
+        }
+    CHECK_EQ(g_skipped, 0);
+#endif
+    (void)hash;
+}
+
 const test_case suite_loop_stream[] = {
     {"stream_equals_loop", stream_equals_loop},
     {"stream_hashes", stream_hashes},
@@ -816,5 +887,6 @@ const test_case suite_loop_stream[] = {
     {"stream_tiles_limit", stream_tiles_limit},
     {"stream_tiles_huge", stream_tiles_huge},
     {"stream_level6", stream_level6},
+    {"stream_tiles_partial", stream_tiles_partial},
     {0, 0},
 };

@@ -47,7 +47,7 @@
  * file of its own with its functions exported (not done yet).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
-#include "sr48_chord_bound.h"
+#include "sr48_stream_internal.h"
 
 /* A tile's node masks are words: its internal nodes 1 .. 2^S48C_T - 1 (s48c_tile). */
 typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 5u ? 1 : -1];
@@ -385,7 +385,7 @@ static uint8_t *s48c_vm(const s48_state *s) { return s48c_tf(s) + (2u << SUBD_SR
 /* One step of subd_sr48_chord_beyond_'s interpolant: the triangle l (apex, b0, b1) to its
  * child `bit` (0: (m; apex, b0), 1: (m; b1, apex)), m the midpoint of its base: the same
  * operations in the same order, so the same bits. */
-void subd_s48c_lin_child_(const subd_sr48_lin *l, uint32_t bit, subd_sr48_lin *c)
+static void s48c_lin_child(const subd_sr48_lin *l, uint32_t bit, subd_sr48_lin *c)
 {
     uint32_t i;
     for (i = 0; i < 3u; i++) {
@@ -409,7 +409,7 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
         for (i = 0; i < 3u; i++) mid[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
         if (subd_sr48_beyond_(x->vp + 3u * tn[6u * h], mid, s->ad.eps)) return 1;
         if (2u * h < n) { /* an internal child 0 */
-            subd_s48c_lin_child_(l, 0u, st + 9u * (d + 1u));
+            s48c_lin_child(l, 0u, st + 9u * (d + 1u));
             h *= 2u;
             d++;
             continue;
@@ -420,7 +420,7 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
         }
         if (d == 0u) return 0;
         h++; /* child 0's sibling */
-        subd_s48c_lin_child_(st + 9u * (d - 1u), 1u, st + 9u * d);
+        s48c_lin_child(st + 9u * (d - 1u), 1u, st + 9u * d);
     }
     return 0;
 }
@@ -467,79 +467,6 @@ static int s48c_level(s48_state *s, const s48_win *w, uint32_t r, uint32_t level
     return 0;
 }
 
-/* A tile's nodes 1 .. 2n - 1 as corners (3 window vertices of p each, in tn): node n + q
- * is p's triangle lo + q (the level's nodes), a node above has the corners of its children's
- * (child 0 = (m; c, a), child 1 = (m; b, c) of (c; a, b)). */
-static void s48c_nodes(uint16_t *tn, const s48_win *p, uint32_t lo, uint32_t n)
-{
-    uint32_t q, h;
-    for (q = 0; q < 3u * n; q++) tn[3u * n + q] = p->tv[3u * lo + q];
-    for (h = n - 1u; h >= 1u; h--) {
-        tn[3u * h] = tn[6u * h + 1u];
-        tn[3u * h + 1u] = tn[6u * h + 2u];
-        tn[3u * h + 2u] = tn[6u * h + 4u];
-    }
-}
-
-/* The interpolant of the walk's node at level a (its corners' finest positions) carried down
- * the walk's path to level j (subd_sr48_chord_beyond_'s steps), into l; the largest
- * |coordinate| of its corners. */
-static subd_real s48c_anc(const s48_state *s, uint32_t a, uint32_t j, subd_sr48_lin *l)
-{
-    subd_sr48_lin t[9];
-    subd_real mag = 0;
-    uint32_t q, i;
-    for (q = 0; q < 9u; q++) {
-        const subd_real v = s->cpos[3u * s->csrc[3u * a + q / 3u] + q % 3u];
-        l[q] = subd_sr48_lin_of_(v);
-        if ((v < 0 ? -v : v) > mag) mag = v < 0 ? -v : v;
-    }
-    for (i = a; i < j; i++) {
-        subd_s48c_lin_child_(l, s->cch[i] - 1u, t);
-        for (q = 0; q < 9u; q++) l[q] = t[q];
-    }
-    return mag;
-}
-
-/* Pruning (sr48_chord_bound.c: the bound and why it changes no decision). A tile whose nodes
- * lo .. lo + n - 1 of window p are its level-l nodes: can no vertex below them deviate from
- * the interpolant of any of the tile's nodes, of the nodes below, or of the walk's `up`
- * ancestors of the root (level j, all of them, counting or not: the memo entry holds them
- * all)? Then every deviation bit of the tile is 0. */
-static int s48c_cut(s48_state *s, const s48_win *p, uint32_t lo, uint32_t n, uint32_t l, uint32_t j, uint32_t up)
-{ /* p: a proper window (subd_s48b_begin_), the callers check it */
-    s48b_ctx c;
-    subd_sr48_lin an[9];
-    uint32_t u;
-    if (!subd_s48b_begin_(s, &c, p, lo, n, s->levels - l, 0)) return 0;
-    if (n > 1u) {
-        s48c_nodes(s48c_tn(s), p, lo, n);
-        if (!subd_s48b_inner_(s, &c, s48c_tn(s))) return 0;
-    }
-    for (u = 1; u <= up; u++) {
-        const subd_real mag = s48c_anc(s, j - u, j, an);
-        if (!subd_s48b_known_(s, &c, an, mag, u)) return 0;
-    }
-    return 1;
-}
-
-/* The walk's node cur (window w of level j, a decision of level k): can no counting test
- * below it answer beyond (its own subtree, and its counting ancestors' interpolants)? */
-static int s48c_prune(s48_state *s, uint32_t k, uint32_t j, const s48_win *w, uint32_t cur)
-{
-    s48b_ctx c;
-    subd_sr48_lin an[9];
-    uint32_t a;
-    if (!subd_s48b_begin_(s, &c, w, cur, 1u, s->levels - j, 0)) return 0;
-    for (a = k; a < j; a++) {
-        subd_real mag;
-        if (!s->cfl[a]) continue;
-        mag = s48c_anc(s, a, j, an);
-        if (!subd_s48b_known_(s, &c, an, mag, j - a)) return 0;
-    }
-    return 1;
-}
-
 /* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
  * window, entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting
  * flags and their corners' finest positions) refined breadth first down to max_level as the
@@ -561,7 +488,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     s48_win w, x, a;
     const s48_win *p = &w;
     uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
-    int lv, proper = 0;
+    int lv;
     uint16_t *tn = s48c_tn(s);
     uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
     subd_sr48_lin *st = s48c_lin(s);
@@ -602,15 +529,6 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     else if (m == 2u) s48_lev(s, j + 1u, &a);
     for (step = 0; step < m; step++) {
         const uint32_t d = up + step;
-        if (step == 0u) /* a loose root's window: proper only when r's two rings are all exact */
-            proper = !subd_s48b_off_ && (!loose || subd_s48b_proper_(s, &w, r));
-        if (proper && s48c_cut(s, p, lo, n, j + step, j, up)) { /* no bit can be set below: an exact entry */
-            mk[0] = (uint32_t)key;
-            mk[1] = tag;
-            mk[2] = 0;
-            mk[3] = (mk[3] & 0x80000000u) | up << 24;
-            return 0;
-        }
         if (d == S48C_M) {
             /* s48c_counts' star test for all of them at once: per vertex of p, 1 when it is
              * a corner of one of F(D)'s triangles of this level, 2 when a triangle at it has
@@ -648,9 +566,17 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
         if (lv < 0) return -1;
         if (lv > 0) break;
     }
-    for (q = 0; q < 3u * n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
-        if (!(x.vf[x.tv[3u * lo + q]] & S48_EXACT)) return loose ? -2 : -1;
-    s48c_nodes(tn, &x, lo, n);
+    for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
+        for (i = 0; i < 3u; i++) {
+            const uint16_t v = x.tv[3u * (lo + q) + i];
+            if (!(x.vf[v] & S48_EXACT)) return loose ? -2 : -1;
+            tn[3u * (n + q) + i] = v;
+        }
+    for (h = n - 1u; h >= 1u; h--) {
+        tn[3u * h] = tn[6u * h + 1u];
+        tn[3u * h + 1u] = tn[6u * h + 2u];
+        tn[3u * h + 2u] = tn[6u * h + 4u];
+    }
     if (up == 0u) /* the root's corners: the leaf's, if its diamond does not split */
         for (i = 0; i < 3u; i++) s48c_put(s, s48_vid(&x, tn[3u + i]), x.vp + 3u * tn[3u + i]);
     for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
@@ -661,7 +587,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
         const uint32_t l = j - u;
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(s->cpos[3u * s->csrc[3u * l + q / 3u] + q % 3u]);
         for (i = l; i < j; i++) {
-            subd_s48c_lin_child_(st, s->cch[i] - 1u, st + 9);
+            s48c_lin_child(st, s->cch[i] - 1u, st + 9);
             for (q = 0; q < 9u; q++) st[q] = st[9u + q];
         }
         if (s48c_sub(s, &x, 1u, n)) above |= 1u << u;
@@ -706,8 +632,6 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
         s->cfl[j] = s48c_counts(s, k, j, &w, cur);
         if (!s->cfl[j] && j - k <= S48C_M && (j - k == S48C_M || !s48c_may_at(s, &w, k, j, cur))) {
             /* not entered */
-        } else if (s48c_prune(s, k, j, &w, cur)) {
-            /* no test below can answer beyond (sr48_chord_bound.c): not entered */
         } else if (j == tl) { /* its subtree breadth first (j > k) */
             const int r = s48c_tile(s, k, j, cur, 0);
             if (r != 0) return r;
@@ -774,7 +698,7 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     s48_win w, x, a = s48c_mwin(s);
     const s48_win *p = &w;
     uint32_t step, lo = r, n = 1, q, h, i, bad;
-    int lv, proper = 0;
+    int lv;
     uint16_t *tn = s48c_tn(s);
     subd_sr48_lin *st = s48c_lin(s);
     uint64_t key;
@@ -782,23 +706,21 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     key = s48_key(&w, r);
     s48_x(s, &x);
     for (step = 0; step < m; step++) {
-        if (step == 0u) /* the root from any window: proper when its two rings are all exact */
-            proper = !subd_s48b_off_ && nw == 0u && subd_s48b_proper_(s, &w, r);
-        if (proper && s48c_cut(s, p, lo, n, j + step, j, 0u)) { /* every bit 0: exact */
-            if (!mk) mk = s48c_mk(s, key, j);
-            mk[0] = (uint32_t)key;
-            mk[1] = (uint32_t)(key >> 32) | j << 20;
-            mk[2] = 0;
-            mk[3] &= 0x80000000u;
-            return 1;
-        }
         lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, s->at, s->av);
         if (lv < 0) return -1;
         if (lv > 0) break;
     }
-    for (q = 0; q < 3u * n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
-        if (!(x.vf[x.tv[3u * lo + q]] & S48_EXACT)) return 0;
-    s48c_nodes(tn, &x, lo, n);
+    for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
+        for (i = 0; i < 3u; i++) {
+            const uint16_t v = x.tv[3u * (lo + q) + i];
+            if (!(x.vf[v] & S48_EXACT)) return 0;
+            tn[3u * (n + q) + i] = v;
+        }
+    for (h = n - 1u; h >= 1u; h--) {
+        tn[3u * h] = tn[6u * h + 1u];
+        tn[3u * h + 1u] = tn[6u * h + 2u];
+        tn[3u * h + 2u] = tn[6u * h + 4u];
+    }
     for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
         if (s48c_sub(s, &x, h, n)) bad |= 1u << h;

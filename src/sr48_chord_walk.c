@@ -28,7 +28,7 @@
  *    instead of being rebuilt from the node for every vertex;
  *  - the memo's tiles (s48c_fast, s48c_bits): a decision of level k >= tl = max_level -
  *    S48C_T reads E > eps of the nodes under each star triangle from the memo entry of its
- *    level-tl ancestor's tile (made from the level-tl window when missing, in two level
+ *    level-tl ancestor's tile (made from the level-tl window when missing, in three level
  *    windows kept for it after max_level - 1's), so a tile of the last S48C_T levels is
  *    refined about once for all the decisions of levels tl .. max_level - 1 that meet it;
  *    only a deviating node S48C_M or more levels below the decision (its star test needs
@@ -40,7 +40,7 @@
  *
  * The walk's per-level state, the star's keys, F(D)'s first levels and the memos are blocks
  * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
- * window A lives in two level windows below the tile's root, free during a decision).
+ * window A lives in three level windows below the tile's root, free during a decision).
  *
  * Length (about 680 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
  * its exact memos, whose parts (the tiles, the memo's tiles, the depth-first walk and the
@@ -50,8 +50,9 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_chord_internal.h"
 
-/* A tile's node masks are words: its internal nodes 1 .. 2^S48C_T - 1 (s48c_tile). */
-typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 5u ? 1 : -1];
+/* A tile's node masks are 64 bits (two words of a memo entry): its internal nodes
+ * 1 .. 2^S48C_T - 1 (s48c_tile). */
+typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 6u ? 1 : -1];
 
 /* The cache of finest positions (S48C_NC entries, direct mapped by id: the ids after cdesc,
  * the positions after cpos, sr48_stream_internal.h): a
@@ -63,7 +64,7 @@ void subd_s48_chord_begin_(s48_state *s)
 {
     uint32_t i;
     uint32_t *cid = s->cdesc + 3u * S48C_ND;
-    for (i = 0; i < 2u * (S48C_NC + S48C_ND2) + 4u * S48C_NB; i++) cid[i] = 0xffffffffu;
+    for (i = 0; i < 2u * (S48C_NC + S48C_ND2) + 5u * S48C_NB; i++) cid[i] = 0xffffffffu;
 }
 
 static uint32_t s48c_slot(uint64_t id)
@@ -222,7 +223,7 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
     return 0;
 }
 
-/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 4 words after
+/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 5 words after
  * the decided diamonds (s48c_tile has their words), in sets of two (2-way, by key and level):
  * the set's entry that holds the root, else the one used less recently, which is then
  * counted as used (bit 31 of the set's first entry's last word: its first entry was used
@@ -231,13 +232,13 @@ static uint32_t *s48c_mk(const s48_state *s, uint64_t key, uint32_t j)
 {
     const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
     uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
-                  8u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
+                  10u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
     uint32_t first;
     if (e[0] == (uint32_t)key && e[1] == tag) first = 1;
-    else if (e[4] == (uint32_t)key && e[5] == tag) first = 0;
+    else if (e[5] == (uint32_t)key && e[6] == tag) first = 0;
     else first = (e[3] >> 31) ^ 1u;
     e[3] = (e[3] & 0x7fffffffu) | first << 31;
-    return first ? e : e + 4;
+    return first ? e : e + 5;
 }
 
 /* One level of a tile (s48c_tile, s48c_bits: the same refinements and crops, so the same
@@ -283,33 +284,36 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     const uint32_t m = s->levels - j, up = j - k; /* up: the walk's nodes above r */
     s48_win w, x, a;
     const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
+    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, above, *mk, tag;
+    uint64_t bad;
     int lv;
     uint16_t *tn = s48c_tn(s);
     uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
     subd_sr48_lin *st = s48c_lin(s);
-    /* A: the level windows j + 1 (m = 2: two children, a level window's crop) or j + 1 and
-     * j + 2 (m >= 3: the tile window's layout, which fits two level windows: sr48_stream.c),
-     * free below the walk's node (levels < max_level, so they exist) */
+    /* A: the level window j + 1 (m = 2: two children, a level window's crop) or j + 1 ..
+     * j + 3 (m >= 3: the tile window's layout, which fits three level windows:
+     * sr48_stream.c), free below the walk's node (j + 3 <= max_level: for m = 3 the third
+     * is the first window of the memo's tiles, s48c_mwin, scratch between their calls) */
     const uint32_t ct = m >= 3u ? s->at : s->wt, cv = m >= 3u ? s->av : s->wv;
     uint64_t key;
     s48_lev(s, j, &w);
     key = s48_key(&w, r);
     tag = (uint32_t)(key >> 32) | j << 20;
-    /* r's deviations kept (S48C_NB entries of 4 words after the decided diamonds, direct
-     * mapped by key and level: key low word; key high word | level << 20; bit h set when
-     * the tile's node h deviates by more than eps, E(h) > eps; bit u set when the vertices
-     * r's subtree creates deviate from the interpolant of r's ancestor u levels up, for
-     * u <= the value in bits 24..28). All are functions of r, whatever the decision: a
-     * hit answers unless a deviating node's counting flag needs the star test (level
-     * k + S48C_M), which needs the tile's windows. */
+    /* r's deviations kept (S48C_NB entries of 5 words after the decided diamonds, 2-way by
+     * key and level, s48c_mk: key low word; key high word | level << 20; words 2 and 4 the
+     * low and high halves of a 64-bit mask, bit h set when the tile's node h deviates by
+     * more than eps, E(h) > eps; word 3 bit u set when the vertices r's subtree creates
+     * deviate from the interpolant of r's ancestor u levels up, for u <= the value in bits
+     * 24..28). All are functions of r, whatever the decision: a hit answers unless a
+     * deviating node's counting flag needs the star test (level k + S48C_M), which needs
+     * the tile's windows. */
     mk = s48c_mk(s, key, j);
     if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24 & 0x1fu) >= up) {
         for (u = 1; u <= up; u++)
             if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
         for (h = 1, dd = 0; h < (1u << m); h++) {
             if (h == 2u << dd) dd++; /* h's depth below r */
-            if (!((mk[2] >> h) & 1u)) continue;
+            if (!(((mk[2] | (uint64_t)mk[4] << 32) >> h) & 1u)) continue;
             if (up + dd < S48C_M) {
                 if (subd_s48_chord_has_(s, up + dd, (key << dd) | (h - (1u << dd)), 1u)) return 1;
             } else if (up > S48C_M) {
@@ -377,7 +381,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
         for (i = 0; i < 3u; i++) s48c_put(s, s48_vid(&x, tn[3u + i]), x.vp + 3u * tn[3u + i]);
     for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+        if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
     }
     for (u = 1, above = 0; u <= up; u++) { /* the walk's nodes above, their interpolant brought down to r */
         const uint32_t l = j - u;
@@ -390,7 +394,8 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     }
     mk[0] = (uint32_t)key;
     mk[1] = tag;
-    mk[2] = bad;
+    mk[2] = (uint32_t)bad;
+    mk[4] = (uint32_t)(bad >> 32);
     mk[3] = (mk[3] & 0x80000000u) | above | up << 24;
     for (u = 1; u <= up; u++)
         if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
@@ -473,8 +478,8 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
  * that meets them (before: one tile per star triangle per decision level, from its own
  * level). The root is taken from the level-tl window of whatever path the windows hold
  * (any window triangle: positions are exact where flagged, and every corner at max_level
- * is checked), refined in the tile window after level max_level - 1's (free: a decision
- * of level k <= max_level - 1 holds windows 0..k) and X. */
+ * is checked), refined in the tile window after level max_level - 1's (three level
+ * windows, free: a decision of level k <= max_level - 1 holds windows 0..k) and X. */
 static s48_win s48c_mwin(const s48_state *s)
 {
     s48_win a;
@@ -493,7 +498,8 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     const uint32_t m = s->levels - j;
     s48_win w, x, a = s48c_mwin(s);
     const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, bad;
+    uint32_t step, lo = r, n = 1, q, h, i;
+    uint64_t bad;
     int lv;
     uint16_t *tn = s48c_tn(s);
     subd_sr48_lin *st = s48c_lin(s);
@@ -519,7 +525,7 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     }
     for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+        if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
     }
     for (q = 0; q < 3u * n && nw > 0u; q++) { /* the leaves' corners asked for */
         const uint16_t v = tn[3u * n + q];
@@ -530,7 +536,8 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     if (!mk) mk = s48c_mk(s, key, j);
     mk[0] = (uint32_t)key;
     mk[1] = (uint32_t)(key >> 32) | j << 20;
-    mk[2] = bad;
+    mk[2] = (uint32_t)bad;
+    mk[4] = (uint32_t)(bad >> 32);
     mk[3] &= 0x80000000u;
     return 1;
 }
@@ -566,7 +573,7 @@ static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
     base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u)); /* i's node in the tile */
     for (e = 0; (base << e) < (1u << m); e++)
         for (q = 0; q < (1u << e); q++) {
-            if (!((mk[2] >> ((base << e) | q)) & 1u)) continue;
+            if (!(((mk[2] | (uint64_t)mk[4] << 32) >> ((base << e) | q)) & 1u)) continue;
             if (e >= S48C_M) deep = 1;
             else if (subd_s48_chord_has_(s, e, (ki << e) | q, 1u)) return 1;
         }

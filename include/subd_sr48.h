@@ -387,7 +387,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   their ancestors at that level (one tile per root for all the levels below it).
  *   O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron at 9
  *   steps, eps 0.01, about 0.51 M Cortex-M4F instructions per output face (M3 Q16.16: 0.59 M;
- *   make demo), and on the host 0.039x / 0.038x the output faces/s of subd_sr48_build +
+ *   make demo), and on the host 0.15x / 0.15x the output faces/s of subd_sr48_build +
  *   subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench -s sr48chord, a
  *   same-run ratio under load): every finest vertex is computed several times, and exactly
  *   (no a-priori bound), so the stream cannot be faster than the uniform stream of

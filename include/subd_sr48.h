@@ -389,8 +389,8 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   SUBD_SR48_STREAM_CHORD_TILE_ reads its star triangles' deviations from the tiles of
  *   their ancestors at that level (one tile per root for all the levels below it).
  *   O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron at 9
- *   steps, eps 0.01, about 1.0 M Cortex-M4F instructions per output face (M3 Q16.16: 1.14 M;
- *   make demo), and on the host 0.039x / 0.038x the output faces/s of subd_sr48_build +
+ *   steps, eps 0.01, about 0.51 M Cortex-M4F instructions per output face (M3 Q16.16: 0.59 M;
+ *   make demo), and on the host 0.15x / 0.15x the output faces/s of subd_sr48_build +
  *   subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench -s sr48chord, a
  *   same-run ratio under load): every finest vertex is computed several times, and exactly
  *   (no a-priori bound), so the stream cannot be faster than the uniform stream of
@@ -512,26 +512,28 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
     (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
-/* The plan of CHORD: the adaptive modes' level windows, two more for the tile window of the
+/* The plan of CHORD: the adaptive modes' level windows, three more for the tile window of the
  * memo's tiles (rooted max(L - SUBD_SR48_STREAM_CHORD_TILE_, 0) levels down, made while a
  * decision holds the windows of its path), and a refined window sized for the
  * tiles of SUBD_SR48_STREAM_CTM_(L) levels (twice SUBD_SR48_STREAM_TT_ triangles; the walk's
- * tile window lives in two level windows, free below the tile's root), plus the subtree
+ * tile window lives in three level windows, free below the tile's root), plus the subtree
  * walk's state (per level: the node, its child state, its corners' sources and whether it
  * counts, 6 words; the star's keys, 2 words per window triangle), the decided diamond's
  * descendant diamonds of its first SUBD_SR48_STREAM_CHORD_EXACT_ levels below (at most
  * 2 * 4^j triangles j levels down, 3 words each, and a count per level; src/sr48_chord.c),
  * a cache of finest positions (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3
  * subd_reals), the answers of SUBD_SR48_STREAM_CHORD_DECIDED_ diamonds (2 words each), the
- * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (4 words each, in sets of 2,
- * least recently used out; 256 / 1024 measured 1.25x / 0.89x the instructions of the default
- * 512 on the icosahedron at 9 steps, 4 096 bytes less / 8 192 more), the walk's
+ * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (5 words each, in sets of 2,
+ * least recently used out; with 6-level tiles 512 measured 0.81x the instructions of the
+ * default 256 on the icosahedron at 9 steps for 5 120 bytes more), the walk's
  * finest positions (3 subd_reals per level + 4) and the tile's nodes (3 corners, 6 bytes,
  * and a flag per node of a tile of m levels: 2^(m + 1) nodes), interpolants (9 per level,
- * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..5, default
- * 5: a tile's node masks are words): 4 measured 1.4x the instructions of 5 on the
- * icosahedron at 9 steps and saves 1 344 bytes at (8, 16); 6 would need a third level
- * window for the tile window and 64-bit masks. */
+ * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..6, default
+ * 6: a tile's node masks are 64 bits): on the icosahedron at 9 steps (M4F instructions per
+ * output face, plan at (9, 10)) 5 with 4-word masks and a 512-entry memo measured 1.96x the
+ * instructions of 6 (994 712 against 506 766) for 3 176 bytes less (54 576 against 57 752;
+ * 6 needs the third level window for its tile window); 4 measured 1.4x the instructions
+ * of 5. */
 #define SUBD_SR48_STREAM_CHORD_EXACT_ 3u
 #define SUBD_SR48_STREAM_CHORD_DESC_ (2u * ((1u << (2u * (SUBD_SR48_STREAM_CHORD_EXACT_ + 1u))) - 1u) / 3u)
 #ifndef SUBD_SR48_STREAM_CHORD_CACHE_
@@ -541,15 +543,15 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
 #define SUBD_SR48_STREAM_CHORD_DECIDED_ 64u
 #endif
 #ifndef SUBD_SR48_STREAM_CHORD_MASKS_
-#define SUBD_SR48_STREAM_CHORD_MASKS_ 512u
+#define SUBD_SR48_STREAM_CHORD_MASKS_ 256u
 #endif
 #ifndef SUBD_SR48_STREAM_CHORD_TILE_
-#define SUBD_SR48_STREAM_CHORD_TILE_ 5u
+#define SUBD_SR48_STREAM_CHORD_TILE_ 6u
 #endif
 #define SUBD_SR48_STREAM_CTM_(L) \
     ((uint32_t)(L) < SUBD_SR48_STREAM_CHORD_TILE_ ? SUBD_SR48_MAX_(L, 2u) : SUBD_SR48_STREAM_CHORD_TILE_)
 #define SUBD_SR48_STREAM_CHORD_BYTES(L, N) \
-    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u) + 2u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
+    (SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u) + 3u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                          SUBD_SR48_STREAM_TT_(N, SUBD_SR48_STREAM_CTM_(L)), \
                          SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L))) + \
      SUBD_SR48_SA_((12u << SUBD_SR48_STREAM_CTM_(L)) + (2u << SUBD_SR48_STREAM_CTM_(L)) + \
@@ -557,7 +559,7 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
                    SUBD_SR48_MAX_(SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_CTM_(L)), SUBD_SR48_STREAM_WV_(N))) + \
      SUBD_SR48_SA_(4u * (6u * ((uint32_t)(L) + 1u) + 2u * SUBD_SR48_STREAM_WT_(N) + SUBD_SR48_STREAM_CHORD_EXACT_ + \
                          1u + 3u * SUBD_SR48_STREAM_CHORD_DESC_ + 2u * SUBD_SR48_STREAM_CHORD_CACHE_ + \
-                         2u * SUBD_SR48_STREAM_CHORD_DECIDED_ + 4u * SUBD_SR48_STREAM_CHORD_MASKS_)) + \
+                         2u * SUBD_SR48_STREAM_CHORD_DECIDED_ + 5u * SUBD_SR48_STREAM_CHORD_MASKS_)) + \
      SUBD_SR48_SA_(12u * ((uint32_t)(L) + 4u + SUBD_SR48_STREAM_CHORD_CACHE_)))
 
 /* The 0.3 names (subd_adapt*, SUBD_ADAPT_*; header subd_semireg48.h), kept as aliases

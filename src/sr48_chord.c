@@ -54,9 +54,10 @@
  *
  * Where S(D) lies: F(D) is under star(D) (the lemma, by induction along the chain), so is
  * every star(G) of level k + M; the stream walks the subtrees of star(D)'s triangles that
- * may hold a member (sr48_chord_walk.c, s48c_may) with its windows, finds F(D)'s first M + 1
- * levels from the level-k window's adjacency by the refinement's local neighbour rule
- * (every triangle asked for is under star(D), so in the window), and does not enter a
+ * may hold a member (sr48_chord_walk.c with its windows; the test: sr48_chord_region.c,
+ * subd_s48_chord_may_), finds F(D)'s first M + 1 levels from the level-k window's adjacency
+ * by the refinement's local neighbour rule (sr48_chord_region.c; every triangle asked for
+ * is under star(D), so in the window), and does not enter a
  * level k + M triangle outside the stars of F(D)'s. How it is searched changes nothing of
  * the above: the last SUBD_SR48_STREAM_CHORD_TILE_ levels of a subtree are refined breadth
  * first (a tile), and the deviations E(d) > eps of a tile's triangles (and of the walk's

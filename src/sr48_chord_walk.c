@@ -2,18 +2,19 @@
 /* Streaming semi-regular 4-8 refinement: the CHORD criterion's walk (paper:
  * semi-regular-4-8-refinement-box-splines.txt, sections 4 and 6; the criterion, why it nests
  * and why it is conservative: sr48_chord.c, whose test this file calls; the windows it
- * walks: sr48_window.c; the private interface: sr48_stream_internal.h). Kept apart from
- * sr48_chord.c, which subd_sr48_extract shares: this file needs the stream's windows.
- *
+ * walks: sr48_window.c; the counting region F(D) it asks: sr48_chord_region.c; the private
+ * interfaces: sr48_stream_internal.h, sr48_chord_internal.h). Kept apart from sr48_chord.c,
+ * which subd_sr48_extract shares: this file needs the stream's windows.
  *
  * Chordal cuts (CHORD; the criterion, why it nests and why it is conservative: sr48_chord.c):
  * the current triangle's diamond D splits iff a triangle of S(D) (the diamonds whose split
  * forces D's, S48C_M levels down, then the stars of the deepest of them) has a chordal
  * deviation of subd_sr48_extract's kind above eps. F(D)'s first levels come from the
- * level-k window's adjacency (s48c_desc); S(D) lies under D's star (in the window), whose
- * triangles' subtrees are searched to max_level (a triangle whose subtree cannot hold a
- * member is skipped, s48c_may). The answer is exactly the one of walking every counting
- * node and testing every vertex below it (same cut, bits and order); what makes it cheaper:
+ * level-k window's adjacency (subd_s48_chord_desc_, sr48_chord_region.c); S(D) lies under
+ * D's star (in the window), whose triangles' subtrees are searched to max_level (a triangle
+ * whose subtree cannot hold a member is skipped, subd_s48_chord_may_). The answer is exactly
+ * the one of walking every counting node and testing every vertex below it (same cut, bits
+ * and order); what makes it cheaper:
  *  - tiles (s48c_tile): the last S48C_T levels of a subtree are refined breadth first, as
  *    the uniform stream's tile (sr48_tile.c), one refinement and crop per level instead of
  *    one per node, and every node's corners and new vertex are read at max_level from the
@@ -27,7 +28,7 @@
  *    instead of being rebuilt from the node for every vertex;
  *  - the memo's tiles (s48c_fast, s48c_bits): a decision of level k >= tl = max_level -
  *    S48C_T reads E > eps of the nodes under each star triangle from the memo entry of its
- *    level-tl ancestor's tile (made from the level-tl window when missing, in two level
+ *    level-tl ancestor's tile (made from the level-tl window when missing, in three level
  *    windows kept for it after max_level - 1's), so a tile of the last S48C_T levels is
  *    refined about once for all the decisions of levels tl .. max_level - 1 that meet it;
  *    only a deviating node S48C_M or more levels below the decision (its star test needs
@@ -39,18 +40,19 @@
  *
  * The walk's per-level state, the star's keys, F(D)'s first levels and the memos are blocks
  * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
- * window A lives in two level windows below the tile's root, free during a decision).
+ * window A lives in three level windows below the tile's root, free during a decision).
  *
- * Length (about 885 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
- * its exact memos, whose parts share the walk's state and the tiles' arrays; the counting
- * region F(D) (s48c_nbr .. s48c_may_at, about 200 lines) is the part that could move to a
- * file of its own with its functions exported (not done yet).
+ * Length (about 680 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
+ * its exact memos, whose parts (the tiles, the memo's tiles, the depth-first walk and the
+ * decision) share the walk's per-level state and the tiles' arrays through static helpers;
+ * the counting region F(D), which needs only the level-k window, is in sr48_chord_region.c.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
-#include "sr48_stream_internal.h"
+#include "sr48_chord_internal.h"
 
-/* A tile's node masks are words: its internal nodes 1 .. 2^S48C_T - 1 (s48c_tile). */
-typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 5u ? 1 : -1];
+/* A tile's node masks are 64 bits (two words of a memo entry): its internal nodes
+ * 1 .. 2^S48C_T - 1 (s48c_tile). */
+typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 6u ? 1 : -1];
 
 /* The cache of finest positions (S48C_NC entries, direct mapped by id: the ids after cdesc,
  * the positions after cpos, sr48_stream_internal.h): a
@@ -62,7 +64,7 @@ void subd_s48_chord_begin_(s48_state *s)
 {
     uint32_t i;
     uint32_t *cid = s->cdesc + 3u * S48C_ND;
-    for (i = 0; i < 2u * (S48C_NC + S48C_ND2) + 4u * S48C_NB; i++) cid[i] = 0xffffffffu;
+    for (i = 0; i < 2u * (S48C_NC + S48C_ND2) + 5u * S48C_NB; i++) cid[i] = 0xffffffffu;
 }
 
 static uint32_t s48c_slot(uint64_t id)
@@ -145,213 +147,9 @@ static void s48c_child(s48_state *s, uint32_t j, uint32_t bit)
     c[2] = bit ? p[0] : p[1];
 }
 
-/* CHORD's counting region (the criterion and its proof: sr48_chord.c). The level-(k + d)
- * triangle (i, p), d <= S48C_M, is window-k triangle i's descendant along the d child bits
- * of p (the first step the highest bit); its key is key(i) * 2^d + p. Packed: i << 8 | p. */
-
-/* Its neighbour across slot `slot` (0 base, 1 leg 0, 2 leg 1) by the local form of the
- * refinement's rule (subd_s48_refine_): child 0 has base child 1 of the parent's leg-0
- * neighbour, leg 0 its sibling, leg 1 child 1 of the parent's base neighbour; child 1 has
- * base child 0 of the parent's leg-1 neighbour, leg 0 child 0 of the parent's base
- * neighbour, leg 1 its sibling. 1 found (*oi, *op), 0 the mesh boundary, -1 outside
- * window k. */
-static int s48c_nbr(const s48_win *w, uint32_t i, uint32_t p, uint32_t d, uint32_t slot, uint32_t *oi,
-                    uint32_t *op)
-{
-    uint32_t push = 0, np = 0, q;
-    for (q = 0; q <= S48C_M; q++) { /* at most d + 1 <= S48C_M + 1 rounds */
-        uint32_t b = p & 1u;
-        if (d == 0u) {
-            uint16_t n = w->tn[3u * i + slot];
-            if (n == S48_BND) return 0;
-            if (n == S48_OUT) return -1;
-            i = n;
-            p = 0;
-            break;
-        }
-        if (b == 0u && slot == 1u) {
-            p |= 1u;
-            break;
-        }
-        if (b == 1u && slot == 2u) {
-            p &= ~1u;
-            break;
-        }
-        push |= (1u - b) << np; /* the answer is that child of the parent's neighbour */
-        np++;
-        slot = b == 0u ? (slot == 0u ? 1u : 0u) : (slot == 0u ? 2u : 0u);
-        p >>= 1;
-        d--;
-    }
-    while (np > 0u) { /* the last parent-level step is the first child bit */
-        np--;
-        p = (p << 1) | ((push >> np) & 1u);
-    }
-    *oi = i;
-    *op = p;
-    return 1;
-}
-
-/* The first entry of level d's descendants (3 words each; at most 2 * 4^d of them). */
-static uint32_t s48c_off(uint32_t d) { return 2u * ((1u << (2u * d)) - 1u) / 3u; }
-
-/* Is `v` (word `w` of the entries: 0 packed, 1 key) in level d's sorted descendants? */
-static int s48c_has(const s48_state *s, uint32_t d, uint64_t v, uint32_t wd)
-{
-    const uint32_t *e = s->cdesc + 3u * s48c_off(d);
-    uint32_t lo = 0, hi = s->cdn[d];
-    while (lo < hi) {
-        uint32_t mid = (lo + hi) / 2u;
-        uint64_t m = wd == 0u ? e[3u * mid] : (((uint64_t)e[3u * mid + 2u] << 32) | e[3u * mid + 1u]);
-        if (m == v) return 1;
-        if (m < v) lo = mid + 1u;
-        else hi = mid;
-    }
-    return 0;
-}
-
-/* The diamonds whose split forces the split of the current triangle t's diamond (t in the
- * level-k window), level by level down to k + min(S48C_M, levels - 1 - k): level k is t and
- * its base neighbour; level d + 1 is the children of level d and their base neighbours
- * (the other triangle of each child's diamond: a diamond of level d + 1 forces both
- * diamonds its triangles' parents belong to). Each level sorted (by packed form, which is
- * key order: the window is sorted by key). All of them lie in the subtrees of t's star,
- * so every neighbour asked for is in the window (sr48_chord.c); 0 if not. */
-static int s48c_desc(s48_state *s, uint32_t k, uint32_t t)
-{
-    s48_win w;
-    uint32_t m = s->levels - 1u - k, d, n, x, b, q;
-    uint16_t nb;
-    s48_lev(s, k, &w);
-    if (m > S48C_M) m = S48C_M;
-    nb = w.tn[3u * t];
-    if (nb == S48_OUT) return 0;
-    for (d = 0; d <= S48C_M; d++) s->cdn[d] = 0;
-    for (d = 0; d <= m; d++) {
-        uint32_t *e = s->cdesc + 3u * s48c_off(d);
-        n = 0;
-        if (d == 0u) {
-            e[0] = t << 8;
-            n = 1;
-            if (s48_local(nb)) e[3u * n++] = (uint32_t)nb << 8;
-        } else {
-            const uint32_t *pe = s->cdesc + 3u * s48c_off(d - 1u);
-            for (x = 0; x < s->cdn[d - 1u]; x++)
-                for (b = 0; b < 2u; b++) {
-                    uint32_t i = pe[3u * x] >> 8, p = ((pe[3u * x] & 0xffu) << 1) | b, oi, op;
-                    int r;
-                    e[3u * n++] = (i << 8) | p;
-                    r = s48c_nbr(&w, i, p, d, 0, &oi, &op);
-                    if (r < 0) return 0;
-                    /* a base neighbour whose parent is of level d - 1's set is a child above;
-                     * base neighbours are a bijection, so no other duplicate */
-                    if (r == 0 || s48c_has(s, d - 1u, (oi << 8) | (op >> 1), 0)) continue;
-                    e[3u * n++] = (oi << 8) | op;
-                }
-        }
-        for (x = 1; x < n; x++) { /* insertion sort by packed form */
-            uint32_t v = e[3u * x];
-            q = x;
-            while (q > 0u && e[3u * (q - 1u)] > v) {
-                e[3u * q] = e[3u * (q - 1u)];
-                q--;
-            }
-            e[3u * q] = v;
-        }
-        for (x = 0; x < n; x++) {
-            uint64_t key = (s48_key(&w, e[3u * x] >> 8) << d) | (e[3u * x] & 0xffu);
-            e[3u * x + 1u] = (uint32_t)key;
-            e[3u * x + 2u] = (uint32_t)(key >> 32);
-        }
-        s->cdn[d] = n;
-    }
-    return 1;
-}
-
-/* Does the walk's node cur (window w of level j >= k) count for the diamond decided at
- * level k: levels k .. k + S48C_M - 1 the descendant diamonds, level k + S48C_M the star
- * of the descendant diamonds of that level (a triangle sharing a vertex with one; its
- * star is in the window), deeper levels through their level k + S48C_M ancestor (the walk
- * does not enter a subtree that does not count there). */
-static uint32_t s48c_counts(const s48_state *s, uint32_t k, uint32_t j, const s48_win *w, uint32_t cur)
-{
-    uint32_t d = j - k, i, a, b;
-    if (d < S48C_M) return (uint32_t)s48c_has(s, d, s48_key(w, cur), 1u);
-    if (d > S48C_M) return 1u;
-    for (i = 0; i < w->hd[0]; i++) {
-        int touch = 0;
-        for (a = 0; a < 3u; a++)
-            for (b = 0; b < 3u; b++)
-                if (w->tv[3u * i + a] == w->tv[3u * cur + b]) touch = 1;
-        if (touch && s48c_has(s, d, s48_key(w, i), 1u)) return 1u;
-    }
-    return 0u;
-}
-
-/* May the subtree of triangle i of the level-k window (k < levels, after s48c_desc) hold a
- * counting node? Yes if i is an ancestor of a descendant of the deepest level kept (they
- * cover the shallower ones) or, when that level is k + S48C_M, shares a vertex with one (a
- * triangle sharing a vertex with a level k + S48C_M descendant has its level-k ancestor
- * equal to or sharing a vertex with the descendant's: a shared vertex inside a level-k
- * edge makes the two ancestors the triangles of that edge). */
-static int s48c_may(const s48_state *s, const s48_win *w, uint32_t k, uint32_t i)
-{
-    uint32_t m = s->levels - 1u - k, x, a, b, q, prev = 0xffffffffu;
-    const uint32_t *e;
-    if (m > S48C_M) m = S48C_M;
-    e = s->cdesc + 3u * s48c_off(m);
-    for (x = 0; x < s->cdn[m]; x++) {
-        q = e[3u * x] >> 8; /* sorted: equal ancestors are consecutive */
-        if (q == prev) continue;
-        prev = q;
-        if (q == i) return 1;
-        if (m < S48C_M) continue;
-        for (a = 0; a < 3u; a++)
-            for (b = 0; b < 3u; b++)
-                if (w->tv[3u * q + a] == w->tv[3u * i + b]) return 1;
-    }
-    return 0;
-}
-
-/* s48c_may one level deeper: may the subtree of the walk's node cur (window w of level j,
- * k <= j < k + S48C_M) hold a counting node? The same test on level j's ancestors of the
- * deepest descendants kept (key >> (k + m - j)): equal to cur, or (m = S48C_M) sharing a
- * vertex with it (the lemma of s48c_may holds at any level between: two triangles of one
- * level that meet share a vertex). An ancestor not in the window does not meet cur (the
- * window holds cur's rings). Only asked of a node that does not count: then none of its
- * ancestors counts either (the descendants of a counting node of level < k + S48C_M count,
- * s48c_desc), so no test of the walk involves its subtree when this says no. */
-static int s48c_may_at(const s48_state *s, const s48_win *w, uint32_t k, uint32_t j, uint32_t cur)
-{
-    uint32_t m = s->levels - 1u - k, x, a, b;
-    uint64_t kc = s48_key(w, cur), prev = ~(uint64_t)0;
-    const uint32_t *e;
-    if (m > S48C_M) m = S48C_M;
-    if (k + m < j) return 0;
-    e = s->cdesc + 3u * s48c_off(m);
-    for (x = 0; x < s->cdn[m]; x++) {
-        uint64_t an = ((((uint64_t)e[3u * x + 2u] << 32) | e[3u * x + 1u])) >> (k + m - j);
-        uint32_t lo = 0, hi = w->hd[0];
-        if (an == prev) continue; /* sorted by key: equal ancestors are consecutive */
-        prev = an;
-        if (an == kc) return 1;
-        if (m < S48C_M) continue;
-        while (lo < hi) { /* the ancestor in the window (sorted by key) */
-            uint32_t mid = (lo + hi) / 2u;
-            if (s48_key(w, mid) < an) lo = mid + 1u;
-            else hi = mid;
-        }
-        if (lo >= w->hd[0] || s48_key(w, lo) != an) continue;
-        for (a = 0; a < 3u; a++)
-            for (b = 0; b < 3u; b++)
-                if (w->tv[3u * lo + a] == w->tv[3u * cur + b]) return 1;
-    }
-    return 0;
-}
-
 /* The vertex created by the walk's node at level i (its finest position known) against
  * the interpolant of every node from the walked triangle (level k) down to it that counts
- * (s48c_counts). */
+ * (subd_s48_chord_counts_). */
 static int s48c_test(const s48_state *s, uint32_t k, uint32_t i)
 {
     const subd_real *p = s->cpos + 3u * (3u + i);
@@ -425,7 +223,7 @@ static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t 
     return 0;
 }
 
-/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 4 words after
+/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 5 words after
  * the decided diamonds (s48c_tile has their words), in sets of two (2-way, by key and level):
  * the set's entry that holds the root, else the one used less recently, which is then
  * counted as used (bit 31 of the set's first entry's last word: its first entry was used
@@ -434,13 +232,13 @@ static uint32_t *s48c_mk(const s48_state *s, uint64_t key, uint32_t j)
 {
     const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
     uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
-                  8u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
+                  10u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
     uint32_t first;
     if (e[0] == (uint32_t)key && e[1] == tag) first = 1;
-    else if (e[4] == (uint32_t)key && e[5] == tag) first = 0;
+    else if (e[5] == (uint32_t)key && e[6] == tag) first = 0;
     else first = (e[3] >> 31) ^ 1u;
     e[3] = (e[3] & 0x7fffffffu) | first << 31;
-    return first ? e : e + 4;
+    return first ? e : e + 5;
 }
 
 /* One level of a tile (s48c_tile, s48c_bits: the same refinements and crops, so the same
@@ -467,55 +265,57 @@ static int s48c_level(s48_state *s, const s48_win *w, uint32_t r, uint32_t level
     return 0;
 }
 
-/* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j
- * window, entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting
- * flags and their corners' finest positions) refined breadth first down to max_level as the
- * uniform stream's tile (sr48_tile.c: each level cropped to the rings of r's descendants,
- * a union of the windows the depth-first walk would crop, so every position is exact and
- * the stream's, checked), in the tile window A and X. Its nodes' counting flags are the
- * walk's (s48c_counts on the level's window, which holds each descendant's rings; below
- * level k + S48C_M a node counts iff its ancestor there does); the corners of every node
- * come bottom up from the level max_level triangles (child 0 = (m; c, a), child 1 =
- * (m; b, c) of (c; a, b)). Then every vertex the subtree creates is tested against every
- * counting node above it: the walk's counting ancestors (their interpolant brought down to
- * r) and the tile's counting nodes: the same pairs as the depth-first walk tests, so the
- * same answer. 1 beyond, 0 within, -1 failure; loose (r is not its window's current
- * triangle): -2 when the window misses part of a depth-S48C_M node's star or a corner is not
- * exact (the caller then rebuilds r's own windows). */
+/* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j window,
+ * entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting flags and
+ * their corners' finest positions) refined breadth first down to max_level as the uniform
+ * stream's tile (sr48_tile.c: each level cropped to the rings of r's descendants, a union of the
+ * windows the depth-first walk would crop, so every position is exact and the stream's, checked),
+ * in the tile window A and X. Its nodes' counting flags are the walk's (subd_s48_chord_counts_ on
+ * the level's window, which holds each descendant's rings; below level k + S48C_M a node counts
+ * iff its ancestor there does); the corners of every node come bottom up from the level max_level
+ * triangles (child 0 = (m; c, a), child 1 = (m; b, c) of (c; a, b)). Then every vertex the
+ * subtree creates is tested against every counting node above it: the walk's counting ancestors
+ * (their interpolant brought down to r) and the tile's counting nodes: the same pairs as the
+ * depth-first walk tests, so the same answer. 1 beyond, 0 within, -1 failure; loose (r is not its
+ * window's current triangle): -2 when the window misses part of a depth-S48C_M node's star or a
+ * corner is not exact (the caller then rebuilds r's own windows). */
 static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose)
 {
     const uint32_t m = s->levels - j, up = j - k; /* up: the walk's nodes above r */
     s48_win w, x, a;
     const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, bad, above, *mk, tag;
+    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, above, *mk, tag;
+    uint64_t bad;
     int lv;
     uint16_t *tn = s48c_tn(s);
     uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
     subd_sr48_lin *st = s48c_lin(s);
-    /* A: the level windows j + 1 (m = 2: two children, a level window's crop) or j + 1 and
-     * j + 2 (m >= 3: the tile window's layout, which fits two level windows: sr48_stream.c),
-     * free below the walk's node (levels < max_level, so they exist) */
+    /* A: the level window j + 1 (m = 2: two children, a level window's crop) or j + 1 ..
+     * j + 3 (m >= 3: the tile window's layout, which fits three level windows:
+     * sr48_stream.c), free below the walk's node (j + 3 <= max_level: for m = 3 the third
+     * is the first window of the memo's tiles, s48c_mwin, scratch between their calls) */
     const uint32_t ct = m >= 3u ? s->at : s->wt, cv = m >= 3u ? s->av : s->wv;
     uint64_t key;
     s48_lev(s, j, &w);
     key = s48_key(&w, r);
     tag = (uint32_t)(key >> 32) | j << 20;
-    /* r's deviations kept (S48C_NB entries of 4 words after the decided diamonds, direct
-     * mapped by key and level: key low word; key high word | level << 20; bit h set when
-     * the tile's node h deviates by more than eps, E(h) > eps; bit u set when the vertices
-     * r's subtree creates deviate from the interpolant of r's ancestor u levels up, for
-     * u <= the value in bits 24..28). All are functions of r, whatever the decision: a
-     * hit answers unless a deviating node's counting flag needs the star test (level
-     * k + S48C_M), which needs the tile's windows. */
+    /* r's deviations kept (S48C_NB entries of 5 words after the decided diamonds, 2-way by
+     * key and level, s48c_mk: key low word; key high word | level << 20; words 2 and 4 the
+     * low and high halves of a 64-bit mask, bit h set when the tile's node h deviates by
+     * more than eps, E(h) > eps; word 3 bit u set when the vertices r's subtree creates
+     * deviate from the interpolant of r's ancestor u levels up, for u <= the value in bits
+     * 24..28). All are functions of r, whatever the decision: a hit answers unless a
+     * deviating node's counting flag needs the star test (level k + S48C_M), which needs
+     * the tile's windows. */
     mk = s48c_mk(s, key, j);
     if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24 & 0x1fu) >= up) {
         for (u = 1; u <= up; u++)
             if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
         for (h = 1, dd = 0; h < (1u << m); h++) {
             if (h == 2u << dd) dd++; /* h's depth below r */
-            if (!((mk[2] >> h) & 1u)) continue;
+            if (!(((mk[2] | (uint64_t)mk[4] << 32) >> h) & 1u)) continue;
             if (up + dd < S48C_M) {
-                if (s48c_has(s, up + dd, (key << dd) | (h - (1u << dd)), 1u)) return 1;
+                if (subd_s48_chord_has_(s, up + dd, (key << dd) | (h - (1u << dd)), 1u)) return 1;
             } else if (up > S48C_M) {
                 return 1; /* below level k + S48C_M every node of an entered subtree counts */
             } else {
@@ -530,14 +330,14 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     for (step = 0; step < m; step++) {
         const uint32_t d = up + step;
         if (d == S48C_M) {
-            /* s48c_counts' star test for all of them at once: per vertex of p, 1 when it is
-             * a corner of one of F(D)'s triangles of this level, 2 when a triangle at it has
-             * an outside neighbour across an edge at it (its fan is not all in p: a loose
+            /* subd_s48_chord_counts_' star test for all of them at once: per vertex of p, 1 when
+             * it is a corner of one of F(D)'s triangles of this level, 2 when a triangle at it
+             * has an outside neighbour across an edge at it (its fan is not all in p: a loose
              * tile's window may miss part of a star) */
             for (i = 0; i < p->hd[1]; i++) vm[i] = 0;
             for (i = 0; i < p->hd[0]; i++) {
                 const uint16_t *tv = p->tv + 3u * i;
-                if (s48c_has(s, S48C_M, s48_key(p, i), 1u)) {
+                if (subd_s48_chord_has_(s, S48C_M, s48_key(p, i), 1u)) {
                     vm[tv[0]] |= 1u;
                     vm[tv[1]] |= 1u;
                     vm[tv[2]] |= 1u;
@@ -557,7 +357,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
                 if (loose && (mv & 2u)) return -2;
                 tf[h] = (uint8_t)(mv & 1u);
             } else if (d < S48C_M) {
-                tf[h] = (uint8_t)s48c_counts(s, k, j + step, p, lo + q);
+                tf[h] = (uint8_t)subd_s48_chord_counts_(s, k, j + step, p, lo + q);
             } else {
                 tf[h] = step == 0u ? 1u : tf[h >> 1];
             }
@@ -581,7 +381,7 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
         for (i = 0; i < 3u; i++) s48c_put(s, s48_vid(&x, tn[3u + i]), x.vp + 3u * tn[3u + i]);
     for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+        if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
     }
     for (u = 1, above = 0; u <= up; u++) { /* the walk's nodes above, their interpolant brought down to r */
         const uint32_t l = j - u;
@@ -594,7 +394,8 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     }
     mk[0] = (uint32_t)key;
     mk[1] = tag;
-    mk[2] = bad;
+    mk[2] = (uint32_t)bad;
+    mk[4] = (uint32_t)(bad >> 32);
     mk[3] = (mk[3] & 0x80000000u) | above | up << 24;
     for (u = 1; u <= up; u++)
         if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
@@ -629,8 +430,8 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
         uint32_t cur = s->ccur[j], v;
         subd_real *pm = s->cpos + 3u * (3u + j);
         s48_lev(s, j, &w);
-        s->cfl[j] = s48c_counts(s, k, j, &w, cur);
-        if (!s->cfl[j] && j - k <= S48C_M && (j - k == S48C_M || !s48c_may_at(s, &w, k, j, cur))) {
+        s->cfl[j] = subd_s48_chord_counts_(s, k, j, &w, cur);
+        if (!s->cfl[j] && j - k <= S48C_M && (j - k == S48C_M || !subd_s48_chord_may_at_(s, &w, k, j, cur))) {
             /* not entered */
         } else if (j == tl) { /* its subtree breadth first (j > k) */
             const int r = s48c_tile(s, k, j, cur, 0);
@@ -677,8 +478,8 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
  * that meets them (before: one tile per star triangle per decision level, from its own
  * level). The root is taken from the level-tl window of whatever path the windows hold
  * (any window triangle: positions are exact where flagged, and every corner at max_level
- * is checked), refined in the tile window after level max_level - 1's (free: a decision
- * of level k <= max_level - 1 holds windows 0..k) and X. */
+ * is checked), refined in the tile window after level max_level - 1's (three level
+ * windows, free: a decision of level k <= max_level - 1 holds windows 0..k) and X. */
 static s48_win s48c_mwin(const s48_state *s)
 {
     s48_win a;
@@ -697,7 +498,8 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     const uint32_t m = s->levels - j;
     s48_win w, x, a = s48c_mwin(s);
     const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, bad;
+    uint32_t step, lo = r, n = 1, q, h, i;
+    uint64_t bad;
     int lv;
     uint16_t *tn = s48c_tn(s);
     subd_sr48_lin *st = s48c_lin(s);
@@ -723,7 +525,7 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     }
     for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) bad |= 1u << h;
+        if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
     }
     for (q = 0; q < 3u * n && nw > 0u; q++) { /* the leaves' corners asked for */
         const uint16_t v = tn[3u * n + q];
@@ -734,19 +536,20 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     if (!mk) mk = s48c_mk(s, key, j);
     mk[0] = (uint32_t)key;
     mk[1] = (uint32_t)(key >> 32) | j << 20;
-    mk[2] = bad;
+    mk[2] = (uint32_t)bad;
+    mk[4] = (uint32_t)(bad >> 32);
     mk[3] &= 0x80000000u;
     return 1;
 }
 
-/* The decision's part under star triangle i (key ki, level k >= tl) from the memo's tile of
- * its level-tl ancestor (made when missing): every node under i that deviates (a bit of the
- * entry) and counts (s48c_counts: for a node d levels below k < S48C_M, a descendant diamond
+/* The decision's part under star triangle i (key ki, level k >= tl) from the memo's tile of its
+ * level-tl ancestor (made when missing): every node under i that deviates (a bit of the entry)
+ * and counts (subd_s48_chord_counts_: for a node d levels below k < S48C_M, a descendant diamond
  * of D) answers 1. A deviating node d >= S48C_M levels below counts when its level k + S48C_M
- * ancestor is in a star of F(D)'s, a test on that level's window: then 2 (the caller tiles i
- * as before), also when the ancestor is not in the window or its tile not exact. 0: no
- * counting node under i deviates. -1 failure. The same pairs (node, vertex) as s48c_tile's,
- * read from a function of the triangle: the same answer. */
+ * ancestor is in a star of F(D)'s, a test on that level's window: then 2 (the caller tiles i as
+ * before), also when the ancestor is not in the window or its tile not exact. 0: no counting node
+ * under i deviates. -1 failure. The same pairs (node, vertex) as s48c_tile's, read from a
+ * function of the triangle: the same answer. */
 static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
 {
     const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u, dl = k - tl, m = s->levels - tl;
@@ -770,9 +573,9 @@ static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
     base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u)); /* i's node in the tile */
     for (e = 0; (base << e) < (1u << m); e++)
         for (q = 0; q < (1u << e); q++) {
-            if (!((mk[2] >> ((base << e) | q)) & 1u)) continue;
+            if (!(((mk[2] | (uint64_t)mk[4] << 32) >> ((base << e) | q)) & 1u)) continue;
             if (e >= S48C_M) deep = 1;
-            else if (s48c_has(s, e, (ki << e) | q, 1u)) return 1;
+            else if (subd_s48_chord_has_(s, e, (ki << e) | q, 1u)) return 1;
         }
     return deep ? 2 : 0;
 }
@@ -799,11 +602,10 @@ static int s48c_corners(s48_state *s, uint32_t k, uint32_t t)
 }
 
 /* CHORD's decision for the current triangle t of the level-k window: is some counting node
- * (s48c_counts) beyond eps? The counting region lies in the subtrees of the star of t's
- * diamond (the window triangles that share a vertex with it; all of them are in the
- * window, see s48_wants), so those are walked: t in place, another one after rebuilding
- * the windows 0..k along its path, and the current path is rebuilt after. 1 split, 0
- * leaf, -1 failure. */
+ * (subd_s48_chord_counts_) beyond eps? The counting region lies in the subtrees of the star of
+ * t's diamond (the window triangles that share a vertex with it; all of them are in the window,
+ * see s48_wants), so those are walked: t in place, another one after rebuilding the windows 0..k
+ * along its path, and the current path is rebuilt after. 1 split, 0 leaf, -1 failure. */
 int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
 {
     const uint32_t tiled = k + S48C_T >= s->levels; /* every star triangle is one tile */
@@ -827,7 +629,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
         r = (int)(dc[1] >> 31);
         return tiled && r == 0 && s48c_corners(s, k, t) < 0 ? -1 : r;
     }
-    if (!s48c_desc(s, k, t)) return -1;
+    if (!subd_s48_chord_desc_(s, k, t)) return -1;
     have = cur;
     for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
@@ -843,7 +645,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
         for (j = 0; j < 3u; j++)
             for (q = 0; q < nv; q++)
                 if (w.tv[3u * i + j] == vs[q]) touch = 1;
-        if (!touch || !s48c_may(s, &w, k, i)) continue;
+        if (!touch || !subd_s48_chord_may_(s, &w, k, i)) continue;
         if (tiled) {
             /* from the memo's tile; else from t's window, as it is (s48c_tile checks that
              * it holds what the tile needs); else after rebuilding the windows along i's

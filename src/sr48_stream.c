@@ -59,12 +59,12 @@ typedef char s48_local_fits[SUBD_SR48_STREAM_WT_(SUBD_SR48_STREAM_MAX_VALENCE) <
                                     SUBD_SR48_MAX_STEPS <= 16u && 9u + SUBD_SR48_MAX_STEPS - 1u <= S48_IDS
                                 ? 1
                                 : -1];
-/* CHORD's tile window (sr48_chord_walk.c, s48c_tile) lives in two free level windows: its
+/* CHORD's tile window (sr48_chord_walk.c, s48c_tile) lives in three free level windows: its
  * capacities exceed a level window's by amounts that do not depend on the valence, so the
  * least valence counted (8) is the tightest case. */
 typedef char s48c_tile_fits[SUBD_SR48_WIN_(SUBD_SR48_STREAM_TT_(8u, SUBD_SR48_STREAM_CHORD_TILE_),
                                            SUBD_SR48_STREAM_TV_(8u, SUBD_SR48_STREAM_CHORD_TILE_)) <=
-                                    2u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u))
+                                    3u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u))
                                 ? 1
                                 : -1];
 
@@ -132,9 +132,9 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     /* the deepest level window: L - tw (uniform), L - 1 (otherwise) */
     const uint32_t dl = levels >= tw ? levels - tw : 0u, ckc =
         !nl && !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
-    /* CHORD: two more level windows after levels 0..L-1, the tile window of the memo's tiles
+    /* CHORD: three more level windows after levels 0..L-1, the tile window of the memo's tiles
      * (sr48_chord_walk.c, s48c_bits: taken while a decision holds levels up to max_level - 1) */
-    const uint32_t nlev = (ckc ? s48_slots(dl, ckc) : dl + 1u) + (chord ? 2u : 0u);
+    const uint32_t nlev = (ckc ? s48_slots(dl, ckc) : dl + 1u) + (chord ? 3u : 0u);
     uint32_t ct = s48_cap_t(valence), cv = s48_cap_v(valence), off[8];
     uint32_t at = m > 1u ? SUBD_SR48_STREAM_TT_(valence, m) : chord ? SUBD_SR48_STREAM_TT_(valence, mc) : ct;
     uint32_t av = m > 1u ? SUBD_SR48_STREAM_TV_(valence, m) : chord ? SUBD_SR48_STREAM_TV_(valence, mc) : cv;
@@ -184,7 +184,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         uint32_t *lgvt = nl ? subd_layout_take(&y, cv, 4u) : 0;
         uint32_t *ci =
             chord ? subd_layout_take(&y, 6u * (levels + 1u) + 2u * ct + S48C_M + 1u + 3u * S48C_ND + 2u * S48C_NC + 2u * S48C_ND2 +
-                                           4u * S48C_NB,
+                                           5u * S48C_NB,
                                        4u)
                   : 0;
         /* then CHORD's tile: its interpolant stack (9 subd_sr48_lin per level, 8 bytes each

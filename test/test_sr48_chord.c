@@ -337,9 +337,10 @@ static void sr48c_errors(void)
 /* ------------------------------------------------------------------------------------ */
 /* The nested criterion, exhaustively: src/sr48_chord.c's definition evaluated on the
  * materialised hierarchy (no windows, no tiles, no memos), and the streamed cut compared
- * with it triangle for triangle. At 6 and 7 binary steps the stream's memo tiles start one
- * and two levels below level 0 (SUBD_SR48_STREAM_CHORD_TILE_ = 5), so the coarse decisions'
- * depth-first walks, the memo's tiles of loose roots and the 2-way memo are all exercised.
+ * with it triangle for triangle. At 6 and 7 binary steps the stream's memo tiles start at
+ * level 0 and one level below it (SUBD_SR48_STREAM_CHORD_TILE_ = 6), so the coarse
+ * decisions' depth-first walks (at 7), the memo's tiles of loose roots and the 2-way memo
+ * are all exercised.
  * E(d) > eps per triangle d of level < L: every vertex a node of d's subtree creates (the
  * apex of its child 0) against d's corners' linear interpolant carried down the path by
  * midpoints, in the rounding documented in sr48_chord.c (float: (a + b) * 0.5f, the squared

@@ -9,8 +9,10 @@
  *   sr48_census.c      the base's census of its level-0 windows (stream_valence);
  *   sr48_tile.c        the breadth-first uniform tile of the last SUBD_SR48_STREAM_TILE_LEVELS
  *                      levels and the emission of a window triangle;
- *   sr48_chord_walk.c  CHORD's walk over the deeper windows and its forcing diamonds (the
+ *   sr48_chord_walk.c  CHORD's walk over the deeper windows, its tiles and memos (the
  *                      criterion and its proof: sr48_chord.c);
+ *   sr48_chord_region.c  CHORD's counting region F(D), the forcing diamonds (its calls:
+ *                      sr48_chord_internal.h);
  *   sr48_stream.c      the driver: capacities and layout, plan, begin, the depth-first step.
  * One window layout and one state block (s48_state) serve them all. The window's accessors
  * are static inline here: they are on the hot path of every refinement and walk. Names

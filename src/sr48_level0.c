@@ -159,6 +159,28 @@ static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *ke
     return h;
 }
 
+/* Adds base triangle tt to the level-0 window being gathered (ht[h]: its empty slot) with
+ * those of its corners not in it yet, at distance d. 0 when the vertex capacity is
+ * exceeded. */
+static int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *hv, uint32_t vm, uint32_t tt, uint32_t *nt,
+                      uint32_t *nv, uint32_t d)
+{
+    uint32_t j;
+    for (j = 0; j < 3u; j++) {
+        const uint32_t vx = s->base->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
+        if (hv[g] != 0u) continue;
+        if (*nv >= s->wv) return 0;
+        hv[g] = (uint16_t)(*nv + 1u);
+        s->gv[*nv] = vx;
+        s->gvt[*nv] = tt;
+        s->dist[*nv] = (uint8_t)d;
+        ++*nv;
+    }
+    ht[h] = (uint16_t)(*nt + 1u);
+    s->gt[(*nt)++] = tt;
+    return 1;
+}
+
 /* Level 0's window around base triangle t0: every base triangle within S48_RINGS vertex
  * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
  * by index; local vertices and neighbours. small: ring 1 (the fans of t0's corners) and the
@@ -198,17 +220,7 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
         for (f = 0; f < nf; f++) {
             const uint32_t tt = s->gt[s->wt - nf + f], h = s48_h0_find(ht, tm, s->gt, tt);
             if (ht[h] != 0u) continue;
-            for (j = 0; j < 3u; j++) {
-                const uint32_t vx = b->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
-                if (hv[g] != 0u) continue;
-                if (nv >= s->wv) return 0;
-                hv[g] = (uint16_t)(nv + 1u);
-                s->gv[nv] = vx;
-                s->gvt[nv] = tt;
-                s->dist[nv++] = (uint8_t)(s->dist[q] + 1u);
-            }
-            ht[h] = (uint16_t)(nt + 1u);
-            s->gt[nt++] = tt;
+            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, s->dist[q] + 1u)) return 0;
         }
     }
     if (small) { /* the base neighbours of ring 1 (dist: unused from here) */
@@ -220,17 +232,7 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             h = s48_h0_find(ht, tm, s->gt, tt);
             if (ht[h] != 0u) continue;
             if (nt >= s->wt) return 0;
-            for (j = 0; j < 3u; j++) {
-                const uint32_t vx = b->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
-                if (hv[g] != 0u) continue;
-                if (nv >= s->wv) return 0;
-                hv[g] = (uint16_t)(nv + 1u);
-                s->gv[nv] = vx;
-                s->gvt[nv] = tt;
-                s->dist[nv++] = 2u;
-            }
-            ht[h] = (uint16_t)(nt + 1u);
-            s->gt[nt++] = tt;
+            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, 2u)) return 0;
         }
     }
     /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct) */

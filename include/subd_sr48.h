@@ -353,9 +353,9 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
  *   Measured (uniform): on spot 0.4 / 1.0 / 1.7 M faces/s at 2 / 4 / 6 steps, 0.2-0.7x /
  *   0.5-1.2x / 1.8-2.4x the faces/s of subd_sr48_build + subd_sr48_extract in the same run
- *   (a loaded host; bench -s sr48stream); 1 314 instructions per triangle on the Cortex-M4F
+ *   (a loaded host; bench -s sr48stream); 1 315 instructions per triangle on the Cortex-M4F
  *   at 8 steps with the demo's checksum sink (about 310 of them: the sink), M3 Q16.16:
- *   1 434 (before the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868; make demo).
+ *   1 435 (before the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868; make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
@@ -389,7 +389,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   SUBD_SR48_STREAM_CHORD_TILE_ reads its star triangles' deviations from the tiles of
  *   their ancestors at that level (one tile per root for all the levels below it).
  *   O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron at 9
- *   steps, eps 0.01, about 0.51 M Cortex-M4F instructions per output face (M3 Q16.16: 0.59 M;
+ *   steps, eps 0.01, about 0.50 M Cortex-M4F instructions per output face (M3 Q16.16: 0.59 M;
  *   make demo), and on the host 0.15x / 0.15x the output faces/s of subd_sr48_build +
  *   subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench -s sr48chord, a
  *   same-run ratio under load): every finest vertex is computed several times, and exactly

@@ -190,6 +190,21 @@ typedef struct lt_frame {
     int skip;
 } lt_frame;
 
+/* The six neighbours of a grid vertex in a row of length `row`, as offsets in subd_reals
+ * (+1, +row, +row - 1, -1, -(row + 1), -row: lt_pass's index rules), twice over so that the
+ * six from any ring start are consecutive. */
+TOPO_INLINE void lt_ring_offsets(int32_t row, int32_t o3[12])
+{
+    int32_t i;
+    o3[0] = 3;
+    o3[1] = 3 * row;
+    o3[2] = 3 * (row - 1);
+    o3[3] = -3;
+    o3[4] = -3 * (row + 1);
+    o3[5] = -3 * row;
+    for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
+}
+
 /* One pass along natural row py: n points from px0 stepping by 2 (one kind: lt_classify's
  * by the parities), parent U index l0 (+1 per point), destination (x, y) stepping by
  * (dx, dy) in a grid of side S, ds subd_reals per vertex. Even points take the smooth vertex rule of valence 6 from
@@ -212,13 +227,7 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
     dd *= ds;
     if (kind == 3) { /* even: the vertex rule from the ring start */
         int32_t o3[12];
-        o3[0] = 3;
-        o3[1] = 3 * R;
-        o3[2] = 3 * (R - 1);
-        o3[3] = -3;
-        o3[4] = -3 * (R + 1);
-        o3[5] = -3 * R;
-        for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
+        lt_ring_offsets(R, o3);
         for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
             const subd_real *c = P + 3u * l0;
             const int32_t *o = o3 + g->dir[l0];
@@ -525,17 +534,10 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
     fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1; fr.ds = 3;
     lt_rows(g, s, &fr, tl->mpos, w);
     for (y = 0; y <= m; y++) {
-        /* the ring's offsets in subd_reals (lt_ring_offsets' six, twice over, so that the six
-         * from any start are consecutive) for row y + 1 of the margin grid */
-        int32_t row = (int32_t)(S - y), o3[12];
-        uint32_t l0 = lt_vi(S, 1u, y + 1u), j;
-        o3[0] = 3;
-        o3[1] = 3 * row;
-        o3[2] = 3 * (row - 1);
-        o3[3] = -3;
-        o3[4] = -3 * (row + 1);
-        o3[5] = -3 * row;
-        for (j = 0; j < 6u; j++) o3[j + 6u] = o3[j];
+        /* the ring's offsets for row y + 1 of the margin grid */
+        int32_t o3[12];
+        uint32_t l0 = lt_vi(S, 1u, y + 1u);
+        lt_ring_offsets((int32_t)(S - y), o3);
         for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
             int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
             uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c];

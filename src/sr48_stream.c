@@ -22,7 +22,7 @@
  * vertex also carries L, the level-0 mesh's piecewise-linear interpolant at the finest
  * positions of the level-0 vertices (a new vertex: subd_mid of L at its base ends, as
  * sr48_adapt.c computes it, so the bits agree). L of the level-0 window is found by one
- * descent per vertex (subd_s48_finest_, sr48_window.c: refine and crop towards the vertex down to max_level,
+ * descent per vertex (subd_s48_finest_, sr48_descent.c: refine and crop towards the vertex down to max_level,
  * where its position is exact by the ring rule). At its first visit the current triangle's
  * diamond is decided on L's box over the window triangles that touch it (the diamond lies
  * within one ring of the current triangle, its star within two: in the window); a diamond

@@ -5,7 +5,9 @@
  *   sr48_level0.c      the base mesh's adjacency and checks, the fan walk, level 0's window;
  *   sr48_window.c      the per-level window: the refinement of a window as a whole (with
  *                      smoothing), the crop to the rings of a set of triangles (also in one
- *                      pass with the refinement), the descent to the finest level;
+ *                      pass with the refinement);
+ *   sr48_descent.c     the descents to the finest level (a vertex's finest position, L of
+ *                      level 0, the adaptation box);
  *   sr48_census.c      the base's census of its level-0 windows (stream_valence);
  *   sr48_tile.c        the breadth-first uniform tile of the last SUBD_SR48_STREAM_TILE_LEVELS
  *                      levels and the emission of a window triangle;

@@ -265,6 +265,122 @@ static int s48c_level(s48_state *s, const s48_win *w, uint32_t r, uint32_t level
     return 0;
 }
 
+/* s48c_tile's counting flags of the tile's nodes at one level (the descendants lo .. lo + n - 1
+ * of window p, level j + step, `step` levels below the root, which is f->up levels below the
+ * decision's level f->k): tf[n + q]. They read the keys of the nodes and the fans of their
+ * corners only, which every crop of the tile holds (ring 1 of the descendants holds each
+ * corner's fan wherever two rings do), so they do not depend on the crop. 0, or -2 when a
+ * loose tile's window misses part of a star. */
+typedef struct s48c_fl {
+    uint32_t k, up, loose;
+} s48c_fl;
+static int s48c_flags(const s48_state *s, const s48c_fl *f, uint32_t j, uint32_t step, const s48_win *p, uint32_t lo,
+                      uint32_t n)
+{
+    const uint32_t d = f->up + step;
+    uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
+    uint32_t i, q, u, h;
+    if (d == S48C_M) {
+        /* subd_s48_chord_counts_' star test for all of them at once: per vertex of p, 1 when
+         * it is a corner of one of F(D)'s triangles of this level, 2 when a triangle at it
+         * has an outside neighbour across an edge at it (its fan is not all in p: a loose
+         * tile's window may miss part of a star) */
+        for (i = 0; i < p->hd[1]; i++) vm[i] = 0;
+        for (i = 0; i < p->hd[0]; i++) {
+            const uint16_t *tv = p->tv + 3u * i;
+            if (subd_s48_chord_has_(s, S48C_M, s48_key(p, i), 1u)) {
+                vm[tv[0]] |= 1u;
+                vm[tv[1]] |= 1u;
+                vm[tv[2]] |= 1u;
+            }
+            for (u = 0; u < 3u; u++) /* slot u's ends: (a, b), (c, a), (b, c) */
+                if (p->tn[3u * i + u] == S48_OUT) {
+                    vm[tv[u == 0u ? 1u : u == 1u ? 0u : 2u]] |= 2u;
+                    vm[tv[u == 0u ? 2u : u == 1u ? 1u : 0u]] |= 2u;
+                }
+        }
+    }
+    for (q = 0; q < n; q++) {
+        h = n + q;
+        if (d == S48C_M) {
+            const uint16_t *tv = p->tv + 3u * (lo + q);
+            const uint32_t mv = (uint32_t)vm[tv[0]] | vm[tv[1]] | vm[tv[2]];
+            if (f->loose && (mv & 2u)) return -2;
+            tf[h] = (uint8_t)(mv & 1u);
+        } else if (d < S48C_M) {
+            tf[h] = (uint8_t)subd_s48_chord_counts_(s, f->k, j + step, p, lo + q);
+        } else {
+            tf[h] = step == 0u ? 1u : tf[h >> 1];
+        }
+    }
+    return 0;
+}
+
+/* The level max_level triangles of the tile of triangle r of the level-j window w (m = max_level - j
+ * >= 2 levels) with the uniform tile's smaller crops (sr48_tile.c, s48_tile_build): m - 1
+ * refinements, each cropped in the same pass to ring 1 of r's descendants and the partners of
+ * their triangles (subd_s48_refine_crop_'s fin 1; the last as the uniform tile's last, fin 1
+ * or 2), alternately into the tile window A and x so that the last, level
+ * max_level - 1 (its descendants D), lands in x; then level max_level without its window, as
+ * subd_s48_tile_emit_ makes it: D's corners (smoothed by subd_s48_last_ when max_level is even
+ * and smoothed) and each D triangle's diamond's new vertex (the midpoint of the same two
+ * vertices, subd_mid; into x's vertex nv + q for D's triangle q, nv = x's vertex count, after
+ * the ones D's corners have). Every position is checked exact first (s48_tile_exact's
+ * tests): a kept vertex's position and flags do not depend on the crop, so the positions are
+ * those of the two rings' tile below. tn gets the corners of the 2 |D| triangles of level
+ * max_level (nodes 2 |D| .. 4 |D| - 1), *nl their count. 1 done, 0 not exact, a capacity or
+ * an overflow (the caller makes the tile with the two rings, which reports the overflow),
+ * -1 failure. fl (s48c_tile's tiles): each level's counting flags first (s48c_flags; -2 as
+ * there). A (*ap) holds capacities s->at, s->av. Measured: about half the refined triangles of
+ * the two rings' tile. */
+static int s48c_small(s48_state *s, const s48_win *w, uint32_t j, uint32_t r, uint32_t m, s48_win *ap, s48_win *x,
+                      uint32_t *nl, const s48c_fl *fl)
+{
+    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u;
+    const s48_win a = *ap;
+    const s48_win *p = w;
+    uint16_t *tn = s48c_tn(s);
+    uint32_t step, lo = r, n = 1, q, i, nv, ovf = 0;
+    for (step = 0; step + 1u < m; step++) {
+        const uint32_t last = step + 2u == m;
+        s48_win *o = ((m - 2u - step) & 1u) ? ap : x;
+        if (fl && s48c_flags(s, fl, j, step, p, lo, n) < 0) return -2;
+        if (!subd_s48_refine_crop_(s, p, j + step, lo, n, o, s->at, s->av, last ? (sm ? 1u : 2u) : 1u))
+            return s->err ? -1 : 0;
+        lo = o->hd[3];
+        n *= 2u;
+        p = o;
+    }
+    if (fl && s48c_flags(s, fl, j, m - 1u, x, lo, n) < 0) return -2;
+    if (sm && !subd_s48_last_(s, x, lo, n, ap)) return s->err ? -1 : 0;
+    nv = x->hd[1];
+    if (nv + n > s->xv) return 0;
+    for (q = 0; q < n; q++) {
+        const uint16_t *tv = x->tv + 3u * (lo + q);
+        uint32_t e0, e1, lt;
+        const uint16_t lnb = subd_s48_mid_ends_(s, x, lo + q, &lt, &e0, &e1);
+        if (lnb == S48_OUT || !(x->vf[e0] & x->vf[e1] & S48_EXACT)) return 0;
+        for (i = 0; i < 3u; i++)
+            if (!((sm ? a.vf[s->vmap[tv[i]]] : x->vf[tv[i]]) & S48_EXACT)) return 0;
+        for (i = 0; i < 3u; i++) x->vp[3u * (nv + q) + i] = subd_mid(x->vp[3u * e0 + i], x->vp[3u * e1 + i], &ovf);
+        /* child 0 = (m; c, a), child 1 = (m; b, c) of (c; a, b) */
+        tn[6u * (n + q)] = (uint16_t)(nv + q);
+        tn[6u * (n + q) + 1u] = tv[0];
+        tn[6u * (n + q) + 2u] = tv[1];
+        tn[6u * (n + q) + 3u] = (uint16_t)(nv + q);
+        tn[6u * (n + q) + 4u] = tv[2];
+        tn[6u * (n + q) + 5u] = tv[0];
+    }
+    if (ovf) return 0;
+    if (sm) /* D's corners at max_level, after every new vertex read them at max_level - 1 */
+        for (q = 0; q < 3u * n; q++) {
+            const uint16_t v = x->tv[3u * lo + q];
+            for (i = 0; i < 3u; i++) x->vp[3u * v + i] = a.vp[3u * s->vmap[v] + i];
+        }
+    *nl = 2u * n;
+    return 1;
+}
+
 /* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j window,
  * entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting flags and
  * their corners' finest positions) refined breadth first down to max_level as the uniform
@@ -288,8 +404,9 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     uint64_t bad;
     int lv;
     uint16_t *tn = s48c_tn(s);
-    uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
+    uint8_t *tf = s48c_tf(s);
     subd_sr48_lin *st = s48c_lin(s);
+    const s48c_fl fl = {k, up, loose};
     /* A: the level window j + 1 (m = 2: two children, a level window's crop) or j + 1 ..
      * j + 3 (m >= 3: the tile window's layout, which fits three level windows:
      * sr48_stream.c), free below the walk's node (j + 3 <= max_level: for m = 3 the third
@@ -327,51 +444,25 @@ static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t 
     s48_x(s, &x);
     if (m >= 3u) s48_win_at(s, s->lev + (j + 1u) * s->lev_size, s->aoff, &a);
     else if (m == 2u) s48_lev(s, j + 1u, &a);
-    for (step = 0; step < m; step++) {
-        const uint32_t d = up + step;
-        if (d == S48C_M) {
-            /* subd_s48_chord_counts_' star test for all of them at once: per vertex of p, 1 when
-             * it is a corner of one of F(D)'s triangles of this level, 2 when a triangle at it
-             * has an outside neighbour across an edge at it (its fan is not all in p: a loose
-             * tile's window may miss part of a star) */
-            for (i = 0; i < p->hd[1]; i++) vm[i] = 0;
-            for (i = 0; i < p->hd[0]; i++) {
-                const uint16_t *tv = p->tv + 3u * i;
-                if (subd_s48_chord_has_(s, S48C_M, s48_key(p, i), 1u)) {
-                    vm[tv[0]] |= 1u;
-                    vm[tv[1]] |= 1u;
-                    vm[tv[2]] |= 1u;
-                }
-                for (u = 0; u < 3u; u++) /* slot u's ends: (a, b), (c, a), (b, c) */
-                    if (p->tn[3u * i + u] == S48_OUT) {
-                        vm[tv[u == 0u ? 1u : u == 1u ? 0u : 2u]] |= 2u;
-                        vm[tv[u == 0u ? 2u : u == 1u ? 1u : 0u]] |= 2u;
-                    }
-            }
+    /* with the smaller crops where A has the tile window's capacities (m >= 3), else or when
+     * they miss a position, each level cropped to the two rings */
+    lv = m >= 3u && !s->two_rings ? s48c_small(s, &w, j, r, m, &a, &x, &n, &fl) : 0;
+    if (lv < 0) return lv;
+    if (lv == 0) {
+        n = 1;
+        for (step = 0; step < m; step++) {
+            if (s48c_flags(s, &fl, j, step, p, lo, n) < 0) return -2;
+            lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, ct, cv);
+            if (lv < 0) return -1;
+            if (lv > 0) break;
         }
-        for (q = 0; q < n; q++) {
-            h = n + q;
-            if (d == S48C_M) {
-                const uint16_t *tv = p->tv + 3u * (lo + q);
-                const uint32_t mv = (uint32_t)vm[tv[0]] | vm[tv[1]] | vm[tv[2]];
-                if (loose && (mv & 2u)) return -2;
-                tf[h] = (uint8_t)(mv & 1u);
-            } else if (d < S48C_M) {
-                tf[h] = (uint8_t)subd_s48_chord_counts_(s, k, j + step, p, lo + q);
-            } else {
-                tf[h] = step == 0u ? 1u : tf[h >> 1];
+        for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
+            for (i = 0; i < 3u; i++) {
+                const uint16_t v = x.tv[3u * (lo + q) + i];
+                if (!(x.vf[v] & S48_EXACT)) return loose ? -2 : -1;
+                tn[3u * (n + q) + i] = v;
             }
-        }
-        lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, ct, cv);
-        if (lv < 0) return -1;
-        if (lv > 0) break;
     }
-    for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
-        for (i = 0; i < 3u; i++) {
-            const uint16_t v = x.tv[3u * (lo + q) + i];
-            if (!(x.vf[v] & S48_EXACT)) return loose ? -2 : -1;
-            tn[3u * (n + q) + i] = v;
-        }
     for (h = n - 1u; h >= 1u; h--) {
         tn[3u * h] = tn[6u * h + 1u];
         tn[3u * h + 1u] = tn[6u * h + 2u];
@@ -489,10 +580,11 @@ static s48_win s48c_mwin(const s48_state *s)
 
 /* The memo's tile of triangle r of the level-j window (j the tiles' level): E > eps of each
  * of its nodes into r's memo entry (s48c_tile's words, no walk ancestors: up = 0), and the
- * finest positions of the vertices listed in want (nw ids) into the cache. The same
- * refinements and crops as s48c_tile's (so the same positions), the same bottom-up node
- * corners and tests (s48c_sub). 1 done, 0 a corner at max_level is not exact (the window
- * misses part of r's dependency cone), -1 failure. */
+ * finest positions of the vertices listed in want (nw ids) into the cache. The level
+ * max_level triangles come from s48c_small, else from s48c_tile's refinements and crops
+ * (so the same positions either way); then the same bottom-up node corners and tests
+ * (s48c_sub). 1 done, 0 a corner at max_level is not exact (the window misses part of r's
+ * dependency cone), -1 failure. */
 static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want, uint32_t nw, uint32_t *mk)
 {
     const uint32_t m = s->levels - j;
@@ -507,17 +599,22 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
     s48_lev(s, j, &w);
     key = s48_key(&w, r);
     s48_x(s, &x);
-    for (step = 0; step < m; step++) {
-        lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, s->at, s->av);
-        if (lv < 0) return -1;
-        if (lv > 0) break;
-    }
-    for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
-        for (i = 0; i < 3u; i++) {
-            const uint16_t v = x.tv[3u * (lo + q) + i];
-            if (!(x.vf[v] & S48_EXACT)) return 0;
-            tn[3u * (n + q) + i] = v;
+    lv = m >= 2u && !s->two_rings ? s48c_small(s, &w, j, r, m, &a, &x, &n, 0) : 0;
+    if (lv < 0) return -1;
+    if (lv == 0) {
+        n = 1;
+        for (step = 0; step < m; step++) {
+            lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, s->at, s->av);
+            if (lv < 0) return -1;
+            if (lv > 0) break;
         }
+        for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
+            for (i = 0; i < 3u; i++) {
+                const uint16_t v = x.tv[3u * (lo + q) + i];
+                if (!(x.vf[v] & S48_EXACT)) return 0;
+                tn[3u * (n + q) + i] = v;
+            }
+    }
     for (h = n - 1u; h >= 1u; h--) {
         tn[3u * h] = tn[6u * h + 1u];
         tn[3u * h + 1u] = tn[6u * h + 2u];
@@ -527,9 +624,11 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
         if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
     }
-    for (q = 0; q < 3u * n && nw > 0u; q++) { /* the leaves' corners asked for */
+    for (q = 0; q < 3u * n && nw > 0u; q++) { /* the leaves' corners asked for (x's vertices) */
         const uint16_t v = tn[3u * n + q];
-        const uint64_t id = s48_vid(&x, v);
+        uint64_t id;
+        if (v >= x.hd[1]) continue; /* s48c_small's new vertices of max_level: no leaf's corner */
+        id = s48_vid(&x, v);
         for (i = 0; i < nw; i++)
             if (want[i] == id) s48c_put(s, id, x.vp + 3u * v);
     }

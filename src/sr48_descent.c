@@ -12,38 +12,50 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 
+/* One descent of subd_s48_finest_, each level cropped by subd_s48_refine_crop_'s fin (0: two
+ * rings, 1: ring 1 of the children and the partners of its triangles). 1 done, 0 failure,
+ * 2 not found exact (fin 1: made again with two rings). */
+static int s48_descend(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out, uint32_t fin)
+{
+    s48_win w, x, c;
+    uint32_t j, cur = t, q, ch;
+    for (j = k;; j++) {
+        s48_lev(s, j, &w);
+        /* child 0 = (m; apex, b0) keeps apex and b0, child 1 = (m; b1, apex) keeps b1 */
+        ch = (s48_vid(&w, w.tv[3u * cur + 2u]) == id) ? 1u : 0u;
+        if (j + 1u == s->levels) break;
+        s48_lev(s, j + 1u, &c); /* refined and cropped to cur's children in one pass */
+        if (!subd_s48_refine_crop_(s, &w, j, cur, 1u, &c, s->wt, s->wv, fin)) return fin && !s->err ? 2 : 0;
+        cur = c.hd[3u + ch];
+        if (cur == S48_OUT) return fin ? 2 : 0;
+    }
+    s48_x(s, &x);
+    if (!subd_s48_refine_(s, &w, j, &x)) return 0;
+    for (q = 0; q < 3u; q++) {
+        const uint32_t v = x.tv[3u * (2u * cur + ch) + q];
+        if (s48_vid(&x, v) != id) continue;
+        if (!(x.vf[v] & S48_EXACT)) return fin ? 2 : 0;
+        for (j = 0; j < 3u; j++) out[j] = x.vp[3u * v + j];
+        return 1;
+    }
+    return 0;
+}
+
 /* The finest (max_level) position of the vertex with id `id`, a corner of triangle t of the
  * level-k window (k < levels): the windows k+1.. are refined and cropped along children
  * that keep the vertex as a corner (a corner of a triangle is a corner of one of its
  * children), and its position is read from the last refined window, where it is exact by
- * the ring rule (checked). Uses the blocks of levels > k and X only. 0 on failure. */
+ * the ring rule (checked). Uses the blocks of levels > k and X only. 0 on failure. Each
+ * level but the last is refined and cropped in one pass (subd_s48_refine_crop_); first to
+ * ring 1 of the children and the partners of its triangles, as the uniform tile's windows
+ * (sr48_tile.c; about half the triangles), and when the vertex is then not exact, again with
+ * the two rings of the exactness argument: a kept vertex's position and flags do not
+ * depend on the crop, so the bits are the same (s->two_rings, a test hook: the two rings
+ * alone). */
 int subd_s48_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
 {
-    s48_win w, x, c;
-    uint32_t j, cur = t, q;
-    for (j = k; j < s->levels; j++) {
-        uint32_t ch;
-        s48_lev(s, j, &w);
-        s48_x(s, &x);
-        /* child 0 = (m; apex, b0) keeps apex and b0, child 1 = (m; b1, apex) keeps b1 */
-        ch = (s48_vid(&w, w.tv[3u * cur + 2u]) == id) ? 1u : 0u;
-        if (!subd_s48_refine_(s, &w, j, &x)) return 0;
-        if (j + 1u == s->levels) {
-            for (q = 0; q < 3u; q++) {
-                uint32_t v = x.tv[3u * (2u * cur + ch) + q];
-                if (s48_vid(&x, v) != id) continue;
-                if (!(x.vf[v] & S48_EXACT)) return 0;
-                for (j = 0; j < 3u; j++) out[j] = x.vp[3u * v + j];
-                return 1;
-            }
-            return 0;
-        }
-        s48_lev(s, j + 1u, &c);
-        if (!subd_s48_crop_(s, &x, 2u * cur, &c)) return 0;
-        cur = c.hd[3u + ch];
-        if (cur == S48_OUT) return 0;
-    }
-    return 0;
+    const int r = s->two_rings ? 2 : s48_descend(s, k, t, id, out, 1u);
+    return r == 2 ? s48_descend(s, k, t, id, out, 0u) : r;
 }
 
 /* L of the level-0 window of t0 (s->l0): each vertex's finest position, by a descent from

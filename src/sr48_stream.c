@@ -552,6 +552,7 @@ int subd_sr48_stream_begin(subd_arena *a, const subd_sr48 *base, const subd_sr48
     s->tend = 0;
     s->built = 0;
     s->err = 0;
+    s->two_rings = 0;
     if (s->tm > 1u) { /* the tile counters (sr48_stream_internal.h) */
         s48_win x, ta;
         s48_x(s, &x);

@@ -94,7 +94,10 @@ typedef struct s48_state {
     uint32_t at, av;   /* the tile window's capacities (uniform)                           */
     uint32_t tm;       /* the tile's levels m (uniform; 1: no tile, s48_tile_levels)       */
     uint32_t tcur, tend; /* uniform: X's triangles still to emit (tcur < tend: a tile is out) */
-    uint32_t t0, k, built, err;
+    uint32_t t0, k, err;
+    uint16_t built;
+    uint16_t two_rings; /* tests (test_sr48_chord.c): CHORD's tiles and the descents take the
+                         * two rings alone, not the smaller crops first (0 after begin) */
     uint8_t *lev;      /* level windows 0..L-1 (uniform: 0..L-m), blocks of lev_size       */
     uint8_t *ablk, *xblk; /* the tile window A (uniform), the refined window X          */
     uint32_t lev_size;
@@ -187,6 +190,27 @@ static inline uint64_t s48_vid(const s48_win *w, uint32_t v)
 }
 /* Is window neighbour n a window triangle (not OUT, not BND)? */
 static inline int s48_local(uint16_t n) { return n < S48_BND; }
+/* The new vertex of window x's triangle i's diamond at the next level, as subd_s48_refine_
+ * makes it: the midpoint (subd_mid) of *e0 and *e1, read from the diamond's lower triangle
+ * *lt (the lower index of i and its base neighbour): its base ends, or with smoothing and
+ * the partner in the window the two apexes. Returns *lt's base neighbour (S48_OUT: an input
+ * is outside the window). One rule for the tiles that make the last level without its
+ * window (sr48_tile.c, sr48_chord_walk.c). */
+static inline uint16_t subd_s48_mid_ends_(const s48_state *s, const s48_win *x, uint32_t i, uint32_t *lt,
+                                          uint32_t *e0, uint32_t *e1)
+{
+    const uint16_t nb = x->tn[3u * i];
+    const uint32_t l = (s48_local(nb) && nb < i) ? nb : i;
+    const uint16_t *lv = x->tv + 3u * l, lnb = x->tn[3u * l];
+    *lt = l;
+    *e0 = lv[1];
+    *e1 = lv[2];
+    if (s48_local(lnb) && s->smooth) {
+        *e0 = lv[0];
+        *e1 = x->tv[3u * lnb];
+    }
+    return lnb;
+}
 
 #ifdef S48_DBG /* capacity statistics of a debug build (defined in sr48_level0.c) */
 extern uint32_t s48_dbg[40];

@@ -32,6 +32,7 @@
 #include "harness.h"
 #include "corpus.h"
 #include "fixtures.h"
+#include "../src/sr48_stream_internal.h" /* the two-ring test hook (s48_state) */
 #if H_HOST
 #include <stdio.h>
 #define T_NOTE(...) printf(__VA_ARGS__)
@@ -457,6 +458,30 @@ static int rf_tri(void *ctx, const subd_tri *t)
     return ch_tri(ctx, t);
 }
 
+/* The same stream with CHORD's tiles and the descents cropped to the two rings alone (the
+ * test hook s48_state.two_rings; by default they crop smaller first and fall back to the two
+ * rings only where a position would not be exact, which no test shape needs): the same
+ * triangles, corners and bits (n triangles, FNV-1a hash of the first run). */
+static void rf_two_rings(const subd_sr48 *base, const subd_sr48_stream_opts *so, uint32_t n, uint32_t hash)
+{
+    subd_arena sa;
+    subd_stream st;
+    subd_diag d;
+    subd_tri t;
+    int got;
+    subd_arena_init(&sa, g_chst, CH_ST_ARENA);
+    if (!CHECK_EQ(subd_sr48_stream_begin(&sa, base, so, &st, &d), SUBD_OK)) return;
+    ((s48_state *)st.state_)->two_rings = 1;
+    g_s.n = 0;
+    g_s.over = 0;
+    g_s.hash = 2166136261u;
+    while ((got = subd_stream_next_tris(&st, &t, 1u)) > 0) (void)rf_tri(&g_s, &t);
+    CHECK_EQ(got, 0);
+    CHECK_EQ(g_s.n, n);
+    CHECK_EQ(g_s.hash, hash);
+    subd_stream_end(&st);
+}
+
 static void rf_case(int shape, uint32_t L, uint32_t flags, double eps)
 {
     subd_arena a, sa;
@@ -530,6 +555,7 @@ static void rf_case(int shape, uint32_t L, uint32_t flags, double eps)
     if (CHECK_EQ(g_s.n, nl)) CHECK(memcmp(g_rq[0], g_rq[1], 2u * sizeof(uint64_t) * nl) == 0);
     T_NOTE("nested criterion, exhaustive: shape %d L %u flags %u eps %g: %u faces (%u splits), stream %u\n", shape, L,
            flags, eps, nl, nsplit, g_s.n);
+    rf_two_rings(&base, &so, g_s.n, g_s.hash);
 }
 
 static void sr48c_reference(void)

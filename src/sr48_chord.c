@@ -82,34 +82,8 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_internal.h"
 
-#if SUBD_FIXED /* the representation differs: Q16.16 keeps the interpolant in Q32.32 */
-subd_sr48_lin subd_sr48_lin_of_(subd_real x) { return (int64_t)x * 65536; }
-subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b) { return (a + b) >> 1; }
-#else
-subd_sr48_lin subd_sr48_lin_of_(subd_real x) { return x; }
-subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b) { return (a + b) * 0.5f; }
-#endif
-
-/* |P - L| > eps (subd_sr48_extract's CHORD and the stream's). */
-int subd_sr48_beyond_(const subd_real *p, const subd_sr48_lin *l, subd_real eps)
-{
-#if SUBD_FIXED /* the algorithm differs: Q32.32 differences, an early exit keeps the squares in 64 bits */
-    uint64_t sum = 0, e = (uint64_t)eps;
-    uint32_t i;
-    for (i = 0; i < 3u; i++) {
-        int64_t d = ((int64_t)p[i] * 65536 - l[i] + 32768) >> 16;
-        uint64_t ad = (uint64_t)(d < 0 ? -d : d);
-        if (ad > e) return 1;
-        sum += ad * ad;
-    }
-    return sum > e * e;
-#else
-    float d0 = p[0] - l[0], d1 = p[1] - l[1], d2 = p[2] - l[2];
-    float s0 = d0 * d0, s1 = d1 * d1, s2 = d2 * d2;
-    return s0 + s1 + s2 > eps * eps;
-#endif
-}
-
+/* subd_sr48_lin_of_, subd_sr48_lin_mid_, subd_sr48_beyond_: static inline in sr48_internal.h (the
+ * innermost loop of every chordal test). */
 int subd_sr48_chord_beyond_(const subd_real *c, uint32_t path, uint32_t n, const subd_real *p, subd_real eps)
 {
     subd_sr48_lin l[9], t[9], m[3];

@@ -84,7 +84,9 @@ static void s48c_put(s48_state *s, uint64_t id, const subd_real *p)
 
 /* subd_s48_finest_ through the cache (the same contract; blocks > k and X are clobbered on a
  * miss only, which the callers allow). Also the CHORD stream's leaves' corners (sr48_stream.c:
- * a leaf's triangle was a tile's root when its diamond was decided, which cached them). */
+ * the walk's and the tiles' roots' corners were cached when their diamonds were decided; the
+ * others, usually one or two of a leaf's three, by a descent each: measured cheaper than a
+ * tile of the leaf's level-tl ancestor, which 0.6.0 made for them at first). */
 int subd_s48_chord_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out)
 {
     uint32_t e = s48c_slot(id), q, *cid = s->cdesc + 3u * S48C_ND;
@@ -320,7 +322,8 @@ static int s48c_flags(const s48_state *s, const s48c_fl *f, uint32_t j, uint32_t
  * >= 2 levels) with the uniform tile's smaller crops (sr48_tile.c, s48_tile_build): m - 1
  * refinements, each cropped in the same pass to ring 1 of r's descendants and the partners of
  * their triangles (subd_s48_refine_crop_'s fin 1; the last as the uniform tile's last, fin 1
- * or 2), alternately into the tile window A and x so that the last, level
+ * or 2, except that a flagged tile keeps fin 1 there: its star test may fall on the last level
+ * and needs every triangle at the descendants' corners, which fin 2 drops), alternately into the tile window A and x so that the last, level
  * max_level - 1 (its descendants D), lands in x; then level max_level without its window, as
  * subd_s48_tile_emit_ makes it: D's corners (smoothed by subd_s48_last_ when max_level is even
  * and smoothed) and each D triangle's diamond's new vertex (the midpoint of the same two
@@ -345,7 +348,7 @@ static int s48c_small(s48_state *s, const s48_win *w, uint32_t j, uint32_t r, ui
         const uint32_t last = step + 2u == m;
         s48_win *o = ((m - 2u - step) & 1u) ? ap : x;
         if (fl && s48c_flags(s, fl, j, step, p, lo, n) < 0) return -2;
-        if (!subd_s48_refine_crop_(s, p, j + step, lo, n, o, s->at, s->av, last ? (sm ? 1u : 2u) : 1u))
+        if (!subd_s48_refine_crop_(s, p, j + step, lo, n, o, s->at, s->av, last && !sm && !fl ? 2u : 1u))
             return s->err ? -1 : 0;
         lo = o->hd[3];
         n *= 2u;
@@ -579,13 +582,12 @@ static s48_win s48c_mwin(const s48_state *s)
 }
 
 /* The memo's tile of triangle r of the level-j window (j the tiles' level): E > eps of each
- * of its nodes into r's memo entry (s48c_tile's words, no walk ancestors: up = 0), and the
- * finest positions of the vertices listed in want (nw ids) into the cache. The level
+ * of its nodes into r's memo entry mk (s48c_tile's words, no walk ancestors: up = 0). The level
  * max_level triangles come from s48c_small, else from s48c_tile's refinements and crops
  * (so the same positions either way); then the same bottom-up node corners and tests
  * (s48c_sub). 1 done, 0 a corner at max_level is not exact (the window misses part of r's
  * dependency cone), -1 failure. */
-static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want, uint32_t nw, uint32_t *mk)
+static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, uint32_t *mk)
 {
     const uint32_t m = s->levels - j;
     s48_win w, x, a = s48c_mwin(s);
@@ -624,15 +626,6 @@ static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, const uint64_t *want,
         for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
         if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
     }
-    for (q = 0; q < 3u * n && nw > 0u; q++) { /* the leaves' corners asked for (x's vertices) */
-        const uint16_t v = tn[3u * n + q];
-        uint64_t id;
-        if (v >= x.hd[1]) continue; /* s48c_small's new vertices of max_level: no leaf's corner */
-        id = s48_vid(&x, v);
-        for (i = 0; i < nw; i++)
-            if (want[i] == id) s48c_put(s, id, x.vp + 3u * v);
-    }
-    if (!mk) mk = s48c_mk(s, key, j);
     mk[0] = (uint32_t)key;
     mk[1] = (uint32_t)(key >> 32) | j << 20;
     mk[2] = (uint32_t)bad;
@@ -666,7 +659,7 @@ static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
             else hi = mid;
         }
         if (lo >= w.hd[0] || s48_key(&w, lo) != ak) return 2;
-        rb = s48c_bits(s, tl, lo, 0, 0, mk);
+        rb = s48c_bits(s, tl, lo, mk);
         if (rb <= 0) return rb < 0 ? -1 : 2;
     }
     base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u)); /* i's node in the tile */
@@ -677,27 +670,6 @@ static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
             else if (subd_s48_chord_has_(s, e, (ki << e) | q, 1u)) return 1;
         }
     return deep ? 2 : 0;
-}
-
-/* A leaf's corners (the current triangle t of the level-k window, k >= tl, its windows
- * 0..k on its path) into the cache when missing, from the memo's tile of its level-tl
- * ancestor (the current triangle of window tl), so that its emission finds them; when
- * that tile is not exact, the emission's descents find them. -1 failure. */
-static int s48c_corners(s48_state *s, uint32_t k, uint32_t t)
-{
-    const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u;
-    uint32_t i, nw = 0, *cid = s->cdesc + 3u * S48C_ND;
-    uint64_t want[3];
-    s48_win w;
-    s48_lev(s, k, &w);
-    for (i = 0; i < 3u; i++) {
-        const uint64_t id = s48_vid(&w, w.tv[3u * t + i]);
-        const uint32_t e = s48c_slot(id);
-        if (cid[2u * e] != (uint32_t)id || cid[2u * e + 1u] != (uint32_t)(id >> 32)) want[nw++] = id;
-    }
-    if (nw == 0u) return 0;
-    s48_lev(s, tl, &w);
-    return s48c_bits(s, tl, w.hd[2], want, nw, 0) < 0 ? -1 : 0;
 }
 
 /* CHORD's decision for the current triangle t of the level-k window: is some counting node
@@ -726,7 +698,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
          2u * ((((uint32_t)dk ^ tag) * 2654435761u) >> 16 & (S48C_ND2 - 1u));
     if (dc[0] == (uint32_t)dk && (dc[1] & 0x7fffffffu) == tag) {
         r = (int)(dc[1] >> 31);
-        return tiled && r == 0 && s48c_corners(s, k, t) < 0 ? -1 : r;
+        return r;
     }
     if (!subd_s48_chord_desc_(s, k, t)) return -1;
     have = cur;
@@ -780,6 +752,5 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
     if (moved && !s48c_path(s, cur, have, k)) return -1;
     dc[0] = (uint32_t)dk;
     dc[1] = tag | (uint32_t)r << 31;
-    if (tiled && r == 0 && s48c_corners(s, k, t) < 0) return -1;
     return r;
 }

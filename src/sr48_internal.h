@@ -101,9 +101,34 @@ typedef int64_t subd_sr48_lin;
 #else
 typedef float subd_sr48_lin;
 #endif
-subd_sr48_lin subd_sr48_lin_of_(subd_real x);
-subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b);
-int subd_sr48_beyond_(const subd_real *p, const subd_sr48_lin *l, subd_real eps);
+#if SUBD_FIXED
+static inline subd_sr48_lin subd_sr48_lin_of_(subd_real x) { return (int64_t)x * 65536; }
+static inline subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b) { return (a + b) >> 1; }
+#else
+static inline subd_sr48_lin subd_sr48_lin_of_(subd_real x) { return x; }
+static inline subd_sr48_lin subd_sr48_lin_mid_(subd_sr48_lin a, subd_sr48_lin b) { return (a + b) * 0.5f; }
+#endif
+
+/* |P - L| > eps (subd_sr48_extract's CHORD and the stream's). Inline: the innermost loop of
+ * every chordal test; a file that includes this header includes fp_contract.h first. */
+static inline int subd_sr48_beyond_(const subd_real *p, const subd_sr48_lin *l, subd_real eps)
+{
+#if SUBD_FIXED /* the algorithm differs: Q32.32 differences, an early exit keeps the squares in 64 bits */
+    uint64_t sum = 0, e = (uint64_t)eps;
+    uint32_t i;
+    for (i = 0; i < 3u; i++) {
+        int64_t d = ((int64_t)p[i] * 65536 - l[i] + 32768) >> 16;
+        uint64_t ad = (uint64_t)(d < 0 ? -d : d);
+        if (ad > e) return 1;
+        sum += ad * ad;
+    }
+    return sum > e * e;
+#else
+    float d0 = p[0] - l[0], d1 = p[1] - l[1], d2 = p[2] - l[2];
+    float s0 = d0 * d0, s1 = d1 * d1, s2 = d2 * d2;
+    return s0 + s1 + s2 > eps * eps;
+#endif
+}
 
 /* Chordal cuts of the stream (sr48_chord.c): is finest position p farther than eps from
  * L_d(v), the linear interpolant of ancestor triangle d (corners c: apex, b0, b1, 9 reals)

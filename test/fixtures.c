@@ -249,6 +249,7 @@ int fx_sr48_shape(int id, uint32_t bipyr_n, subd_arena *a, subd_mesh *m)
     case FX48_ICO: f = corpus_find("test/data/icosahedron.obj"); break;
     case FX48_HEXFAN: f = corpus_find("test/data/hexfan.obj"); break;
     case FX48_GRID: f = corpus_find("test/data/grid_tri_8x8.obj"); break;
+    case FX48_DENSE: f = corpus_find("test/data/dense_ico.obj"); break;
     case FX48_BIPYR: return fx_bipyramid(a, m, bipyr_n);
     case FX48_TORUS: {
         subd_face_list fl = h_torus(6, 4, tpos, tidx);

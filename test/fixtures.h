@@ -54,7 +54,8 @@ subd_real fx_real(double x);
  * bipyramid: bipyr_n (3..16) equator vertices on the unit circle (z alternating 0, 1/8),
  * apexes at z = +-1 of valence bipyr_n. Builds the mesh with adjacency in a; 1 on success
  * (a failed CHECK otherwise). */
-enum { FX48_TET, FX48_CUBE, FX48_ICO, FX48_HEXFAN, FX48_GRID, FX48_TWO, FX48_TORUS, FX48_BIPYR, FX48_COUNT };
+enum { FX48_TET, FX48_CUBE, FX48_ICO, FX48_HEXFAN, FX48_GRID, FX48_TWO, FX48_TORUS, FX48_BIPYR, FX48_COUNT,
+       FX48_DENSE = FX48_COUNT /* test/data/dense_ico.obj, after the count: in no shape loop */ };
 int fx_sr48_shape(int id, uint32_t bipyr_n, subd_arena *a, subd_mesh *m);
 
 /* The largest (and in *lowest, when not NULL, the smallest non-zero) vertex valence of a

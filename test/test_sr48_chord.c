@@ -40,8 +40,8 @@
 #define T_NOTE(...) ((void)0)
 #endif
 
-enum { C_ICO, C_TORUS, C_GRID, C_HEXFAN, C_COUNT }; /* index into ch_shapes */
-static const int ch_shapes[C_COUNT] = {FX48_ICO, FX48_TORUS, FX48_GRID, FX48_HEXFAN};
+enum { C_ICO, C_TORUS, C_GRID, C_HEXFAN, C_COUNT, C_DENSE = C_COUNT }; /* index into ch_shapes (C_DENSE: rf_case) */
+static const int ch_shapes[C_COUNT + 1] = {FX48_ICO, FX48_TORUS, FX48_GRID, FX48_HEXFAN, FX48_DENSE};
 
 #define CH_ST_ARENA (64u * 1024u) /* the stream's arena: g_chst */
 #define CH_MAT_ARENA (H_ARENA_BYTES - 40u * 1024u)
@@ -568,6 +568,11 @@ static void sr48c_reference(void)
     rf_case(C_TORUS, 6, 0, 0.005);
     rf_case(C_HEXFAN, 7, 0, 0.002);
     rf_case(C_HEXFAN, 6, SUBD_SR48_NO_SMOOTH, 0.002);
+    /* a walk tile whose star test falls on its last level at an odd max_level: the smaller
+     * crops keep ring 1 of the last level there (0.6.0's first cut of them kept only the
+     * descendants and their partners, missed F(D)'s triangles at their corners, and cut
+     * 1.5 % fewer faces of spot at 5 steps, eps 0.002) */
+    rf_case(C_DENSE, 5, 0, 0.05);
 }
 
 const test_case suite_sr48_chord[] = {

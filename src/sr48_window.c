@@ -359,6 +359,17 @@ static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t
     for (q = 0; q < 3u; q++) s48_sput(s, w, 3u * u + q, subd_sum_add(s48_sget(s, w, 3u * u + q), mp[q]));
     s->cnt[v] = (s->cnt[v] + 1u) | ((mf & S48_EXACT) ? 0u : S48_RC_INC);
 }
+/* Window vertex number of X's vertex v in the window being cropped, numbered as met. */
+static inline uint16_t s48_rc_num(uint16_t *vm, uint16_t v, uint32_t *kv)
+{
+    uint16_t u = vm[v];
+    if (u == S48_OUT) {
+        u = (uint16_t)*kv;
+        vm[v] = u;
+        *kv += 1u;
+    }
+    return u;
+}
 int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
                           uint32_t ct, uint32_t cv, uint32_t fin)
 {
@@ -431,61 +442,68 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
                 }
             }
     }
-    /* the kept children in X's order: vertices numbered as met, corners, keys, X's
-     * neighbour indices (renumbered once all are known) */
+    /* which children are kept, numbered in X's order (tm: X's index -> w's, or OUT);
+     * then their corners (vertices numbered as met), neighbours (X's, mapped by tm at
+     * once) and keys: two passes, so that no neighbour is renumbered afterwards */
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
-        const uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
-        const uint16_t m = mt[i];
-        uint32_t ch;
-        for (ch = 0; ch < 2u; ch++) {
-            const uint16_t c3[3] = {m, ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
-            uint16_t n3[3];
-            uint16_t *ov, *on;
-            const uint16_t ln = ch ? l1 : l0; /* the child's base neighbour: a child of ln */
-            uint32_t md = d[c3[0]];
-            if (d[c3[1]] < md) md = d[c3[1]];
-            if (d[c3[2]] < md) md = d[c3[2]];
+        const uint32_t dm = d[mt[i]], dc = d[tv[0]], da = d[tv[1]], db = d[tv[2]];
+        uint32_t k0, k1;
+        if (fin == 0u) { /* within S48_RINGS rings: a corner nearer than S48_RINGS */
+            const uint32_t mc = dm < dc ? dm : dc;
+            k0 = (da < mc ? da : mc) < S48_RINGS;
+            k1 = (db < mc ? db : mc) < S48_RINGS;
+        } else {
+            const uint16_t l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
             if (fin == 1u) {
-                /* ring 1 and the partners of its triangles: the partner shares the base
-                 * ends c3[1], c3[2], its apex is ln's new vertex */
-                md = md == 0u || (s48_local(ln) && d[mt[ln]] == 0u) ? 0u : S48_FAR;
-            } else if (fin == 2u) { /* the descendants and their partners */
-                md = (i >= c0 && i < c0 + n) || (s48_local(ln) && ln >= c0 && ln < c0 + n) ? 0u : S48_FAR;
-            }
-            if (md + 1u > S48_RINGS) {
-                tm[2u * i + ch] = S48_OUT;
-                continue;
-            }
-            if (kt >= ct) return 0;
-            if (ch == 0u) {
-                n3[0] = s48_local(l0) ? (uint16_t)(2u * l0 + 1u) : l0;
-                n3[1] = (uint16_t)(2u * i + 1u);
-                n3[2] = s48_local(nb) ? (uint16_t)(2u * nb + 1u) : nb;
-            } else {
-                n3[0] = s48_local(l1) ? (uint16_t)(2u * l1) : l1;
-                n3[1] = s48_local(nb) ? (uint16_t)(2u * nb) : nb;
-                n3[2] = (uint16_t)(2u * i);
-            }
-            ov = w->tv + 3u * kt;
-            on = w->tn + 3u * kt;
-            w->key[kt] = 2u * p->key[i] + ch;
-            tm[2u * i + ch] = (uint16_t)kt++;
-            for (j = 0; j < 3u; j++) {
-                const uint16_t v = c3[j];
-                if (vm[v] == S48_OUT) {
-                    if (kv >= cv) return 0;
-                    vm[v] = (uint16_t)kv++;
-                }
-                ov[j] = vm[v];
-                on[j] = n3[j];
+                /* ring 1 and the partners of its triangles: a corner at distance 0 (d is 0
+                 * or S48_FAR here), or the partner's (the child of the base neighbour ln
+                 * across the base ends; its apex is ln's new vertex) */
+                k0 = (dm & dc & da) == 0u || (s48_local(l0) && d[mt[l0]] == 0u);
+                k1 = (dm & dc & db) == 0u || (s48_local(l1) && d[mt[l1]] == 0u);
+            } else { /* the descendants and their partners */
+                const uint32_t in = i - c0 < n;
+                k0 = in || (s48_local(l0) && l0 - c0 < n);
+                k1 = in || (s48_local(l1) && l1 - c0 < n);
             }
         }
+        tm[2u * i] = k0 ? (uint16_t)kt++ : (uint16_t)S48_OUT;
+        tm[2u * i + 1u] = k1 ? (uint16_t)kt++ : (uint16_t)S48_OUT;
     }
-    for (i = 0; i < 3u * kt; i++) {
-        const uint16_t nb = w->tn[i];
-        if (s48_local(nb)) w->tn[i] = tm[nb];
+    if (kt > ct) return 0;
+    for (i = 0; i < nt; i++) {
+        const uint32_t t0 = tm[2u * i], t1 = tm[2u * i + 1u];
+        const uint16_t *tv = p->tv + 3u * i;
+        uint16_t nb, m, *ov, *on;
+        if (t0 == S48_OUT && t1 == S48_OUT) continue;
+        nb = p->tn[3u * i];
+        m = mt[i];
+        if (t0 != S48_OUT) { /* child 0: (m; c, a); base neighbour child 1 of L0 */
+            const uint16_t l0 = p->tn[3u * i + 1u];
+            ov = w->tv + 3u * t0;
+            on = w->tn + 3u * t0;
+            ov[0] = s48_rc_num(vm, m, &kv);
+            ov[1] = s48_rc_num(vm, tv[0], &kv);
+            ov[2] = s48_rc_num(vm, tv[1], &kv);
+            on[0] = s48_local(l0) ? tm[2u * l0 + 1u] : l0;
+            on[1] = (uint16_t)t1;
+            on[2] = s48_local(nb) ? tm[2u * nb + 1u] : nb;
+            w->key[t0] = 2u * p->key[i];
+        }
+        if (t1 != S48_OUT) { /* child 1: (m; b, c); base neighbour child 0 of L1 */
+            const uint16_t l1 = p->tn[3u * i + 2u];
+            ov = w->tv + 3u * t1;
+            on = w->tn + 3u * t1;
+            ov[0] = s48_rc_num(vm, m, &kv);
+            ov[1] = s48_rc_num(vm, tv[2], &kv);
+            ov[2] = s48_rc_num(vm, tv[0], &kv);
+            on[0] = s48_local(l1) ? tm[2u * l1] : l1;
+            on[1] = s48_local(nb) ? tm[2u * nb] : nb;
+            on[2] = (uint16_t)t0;
+            w->key[t1] = 2u * p->key[i] + 1u;
+        }
     }
+    if (kv > cv) return 0;
     /* the kept old vertices: ids, L; positions and flags, or (smoothed level) zero sums */
     for (i = 0; i < nvp; i++) {
         const uint32_t u = vm[i];
@@ -509,6 +527,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
         uint32_t e0 = tv[1], e1 = tv[2], mf, u0, u1, u2, u3 = S48_OUT, v3 = 0;
         subd_real mp[3];
         if (s48_local(nb) && nb < i) continue; /* made by the lower triangle */
+        if (um == S48_OUT && (!sm || nb == S48_OUT)) continue; /* neither kept nor summed */
         u0 = vm[tv[0]];
         u1 = vm[tv[1]];
         u2 = vm[tv[2]];
@@ -516,9 +535,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
             v3 = p->tv[3u * nb];
             u3 = vm[v3];
         }
-        if (um == S48_OUT &&
-            (!sm || nb == S48_OUT || (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT)))
-            continue;
+        if (um == S48_OUT && u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
         if (s48_local(nb) && s->smooth) {
             e0 = tv[0];
             e1 = v3;
@@ -593,37 +610,31 @@ int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s4
             if (d1 > r) d[tv[1]] = (uint8_t)r;
             if (d2 > r) d[tv[2]] = (uint8_t)r;
         }
-    /* the kept triangles in order: their vertices numbered as met, their corners and keys
-     * written at once, their neighbours (X's indices) renumbered once all are known */
+    /* the kept triangles numbered in order (tm: X's index -> w's, or OUT), then their
+     * corners (vertices numbered as met), neighbours (mapped by tm at once) and keys */
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t *tv = x->tv + 3u * i;
         const uint32_t d0 = d[tv[0]], d1 = d[tv[1]], d2 = d[tv[2]];
         uint32_t md = d0 < d1 ? d0 : d1;
-        uint16_t *ov, *on;
         if (d2 < md) md = d2;
-        if (md + 1u > S48_RINGS) {
-            tm[i] = S48_OUT;
-            continue;
-        }
-        if (kt >= ct) return 0;
-        ov = w->tv + 3u * kt;
-        on = w->tn + 3u * kt;
-        w->key[kt] = x->key[i];
-        tm[i] = (uint16_t)kt++;
+        tm[i] = md < S48_RINGS ? (uint16_t)kt++ : (uint16_t)S48_OUT;
+    }
+    if (kt > ct) return 0;
+    for (i = 0; i < nt; i++) {
+        const uint32_t t = tm[i];
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        uint16_t *ov, *on;
+        if (t == S48_OUT) continue;
+        ov = w->tv + 3u * t;
+        on = w->tn + 3u * t;
+        w->key[t] = x->key[i];
         for (j = 0; j < 3u; j++) {
-            const uint16_t v = tv[j];
-            if (vm[v] == S48_OUT) {
-                if (kv >= cv) return 0;
-                vm[v] = (uint16_t)kv++;
-            }
-            ov[j] = vm[v];
-            on[j] = tn[j];
+            const uint16_t nb = tn[j];
+            ov[j] = s48_rc_num(vm, tv[j], &kv);
+            on[j] = s48_local(nb) ? tm[nb] : nb;
         }
     }
-    for (i = 0; i < 3u * kt; i++) {
-        const uint16_t nb = w->tn[i];
-        if (s48_local(nb)) w->tn[i] = tm[nb];
-    }
+    if (kv > cv) return 0;
     for (i = 0; i < nv; i++) {
         uint16_t v = vm[i];
         if (v == S48_OUT) continue;

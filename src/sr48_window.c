@@ -42,74 +42,18 @@
  * by splitting the diamond whose lower-key triangle has key K at level k-1 gets
  * V0 + T0n (2^(k-1) - 1) + K (V0, T0n: the base's vertex and triangle counts).
  *
- * Descents (adaptive cuts, CHORD): sr48_descent.c.
+ * Descents (adaptive cuts, CHORD): sr48_descent.c. The last level of a uniform tile, smoothed
+ * without a window: sr48_tile.c. The in-place smoothing sums: sr48_stream_internal.h.
  *
- * Length (about 650 lines, over the ~600 of STYLE.md): one concept, a window refined and
- * cropped level by level; refine, the fused refine + crop of the uniform path and crop share
- * the in-place smoothing sums and the window layout.
+ * Cost (0.7.0): a crop numbers its kept triangles in a first pass and writes their corners
+ * and neighbours (mapped at once) in a second, so no neighbour is renumbered afterwards; the
+ * three coordinates are handled unrolled (s48_mid3 and the sums' helpers); the same bits.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h"
 #include "mesh_internal.h"
 #include "real_avg.h"
 #include "sr48_stream_internal.h"
-
-/* Smoothing sums in place: while X is smoothed, the running sum of an old vertex's new
- * neighbours lives in its own X position (its old position is not read again: the new
- * vertices come from the parent's positions, and an old vertex left unsmoothed gets the
- * parent's back). Element e = 3 v + axis. */
-#if SUBD_FIXED /* why: a Q16.16 subd_sum is 64 bits: the low part, signed in [-2^31, 2^31),
-                * in the X position, the high part in s->sumhi. A sum has at most as many
-                * terms as the parent has triangles (one per diamond at the vertex), fewer than
-                * 2^10 (SUBD_SR48_STREAM_TT_ at the largest valence), each below 2^31 in
-                * magnitude, so |high part| < 2^9: an int16 */
-#define S48_W32 ((subd_sum)4294967296)
-static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
-{
-    return (subd_sum)s->sumhi[e] * S48_W32 + (subd_sum)x->vp[e];
-}
-static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
-{
-    const subd_sum q = v + S48_W32 / 2, hi = q >= 0 ? q / S48_W32 : -((S48_W32 - 1 - q) / S48_W32);
-    s->sumhi[e] = (int16_t)hi;
-    x->vp[e] = (subd_real)(v - hi * S48_W32);
-}
-#else /* float: subd_sum is subd_real: the same additions in the same order, in place */
-static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
-{
-    (void)s;
-    return x->vp[e];
-}
-static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
-{
-    (void)s;
-    x->vp[e] = v;
-}
-#endif
-
-/* subd_avg(s, n): the same call, with the usual n = 4 (a regular vertex: four diamonds)
- * as a constant, so that Q16.16 divides by shifts instead of a 64-bit division (a library
- * call on the Cortex-M3); the same bits. */
-static inline subd_real s48_avg(subd_sum s, uint32_t n, uint32_t *ovf)
-{
-#if SUBD_FIXED
-    return n == 4u ? subd_avg(s, 4u, ovf) : subd_avg(s, n, ovf);
-#else /* float: one division either way */
-    return subd_avg(s, n, ovf);
-#endif
-}
-
-/* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
- * counts and flags in s->cnt, s->dist at v). */
-static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp,
-                               uint32_t mf, int boundary_ok)
-{
-    uint32_t q;
-    if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), mp[q]));
-    s->cnt[v]++;
-    if (!(mf & S48_EXACT)) s->dist[v] |= S48_INC;
-}
 
 /* Refines window p (level k) as a whole into X (level k+1), smoothing after an even level.
  * 0 on a capacity or range failure (s->err says which). */
@@ -118,7 +62,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
     const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
-    uint32_t i, j, nv = nvp, ovf = 0;
+    uint32_t i, nv = nvp, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
@@ -133,7 +77,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             s->cnt[i] = 0;
             s->dist[i] = 0;
-            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
+            s48_szero3(s, x, 3u * i);
         }
     } else {
         for (i = 0; i < 3u * nvp; i++) x->vp[i] = p->vp[i];
@@ -154,10 +98,10 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
                 e1 = p->tv[3u * nb];
             }
             exact = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT);
-            for (j = 0; j < 3u; j++) x->vp[3u * m + j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
+            s48_mid3(x->vp + 3u * m, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
             x->vf[m] = (uint8_t)(exact ? S48_EXACT : 0u);
             if (x->vl) /* L: the base midpoint, whatever the smoothing */
-                for (j = 0; j < 3u; j++) x->vl[3u * m + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
+                s48_mid3(x->vl + 3u * m, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
             x->vid[m] = idj | key;
         }
         s->mtab[i] = m;
@@ -216,111 +160,17 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             uint32_t n = s->cnt[i] & ~0x80000000u;
             if (n == 0u || (s->dist[i] & S48_INC)) {
-                for (j = 0; j < 3u; j++) x->vp[3u * i + j] = p->vp[3u * i + j]; /* not a sum */
+                s48_cp3(x->vp + 3u * i, p->vp + 3u * i); /* not a sum */
                 x->vf[i] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s48_sget(s, x, 3u * i + j), n, &ovf);
+            s48_avg3(s, x, 3u * i, n, &ovf);
             x->vf[i] = S48_EXACT;
         }
         if (ovf) {
             s->err = (uint32_t)(-SUBD_ERR_RANGE);
             return 0;
         }
-    }
-    return 1;
-}
-
-/* The last level of a uniform tile without its window: X (level L-1 = max_level - 1) is
- * not refined into level L; only the corners of level L's triangles that the tile emits
- * (the children of X's triangles c0 .. c0 + n - 1) are computed. Their new vertices are
- * single midpoints, made when emitted (sr48_tile.c); this computes the old ones, the
- * corners of c0 .. c0 + n - 1, when level L is smoothed (L even): the same sums as
- * subd_s48_refine_'s over the same diamonds in the same order (X's triangle order), but
- * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
- * once X is refined from it: a's vid keeps X's index, a's position and flag the result).
- * The exactness rules are refine's, restricted to the same vertices. 0 on failure. */
-int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
-{
-    const uint32_t nt = x->hd[0], nv = x->hd[1];
-    uint16_t *vm = s->vmap;
-    uint32_t i, j, nn = 0, ovf = 0;
-    for (i = 0; i < nv; i++) vm[i] = S48_OUT;
-    for (j = 0; j < 3u * n; j++) {
-        const uint16_t v = x->tv[3u * c0 + j];
-        if (vm[v] != S48_OUT) continue;
-        if (nn >= s->av) return 0;
-        vm[v] = (uint16_t)nn;
-        a->vid[nn] = v;
-        s->cnt[nn] = 0;
-        s->dist[nn] = 0;
-        for (i = 0; i < 3u; i++) s48_sput(s, a, 3u * nn + i, 0);
-        nn++;
-    }
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
-        const uint16_t u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
-        if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
-        if (tn[0] == S48_BND) {
-            if (u1 != S48_OUT) s->cnt[u1] = 0x80000000u;
-            if (u2 != S48_OUT) s->cnt[u2] = 0x80000000u;
-        }
-        /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
-        if (tn[0] == S48_OUT || tn[1] == S48_OUT) {
-            if (u1 != S48_OUT) s->dist[u1] |= S48_INC;
-        }
-        if (tn[0] == S48_OUT || tn[2] == S48_OUT) {
-            if (u2 != S48_OUT) s->dist[u2] |= S48_INC;
-        }
-        if (tn[1] == S48_OUT || tn[2] == S48_OUT) {
-            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
-        }
-    }
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i;
-        const uint16_t nb = x->tn[3u * i], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
-        uint16_t u3;
-        uint32_t e0, e1, mf;
-        subd_real mp[3];
-        if (nb == S48_OUT) {
-            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
-            continue;
-        }
-        if (nb == S48_BND) {
-            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
-            e0 = tv[1];
-            e1 = tv[2];
-            u3 = S48_OUT;
-        } else {
-            if (nb < i) continue; /* the diamond's lower triangle made it */
-            e0 = tv[0];
-            e1 = x->tv[3u * nb];
-            u3 = vm[e1];
-            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
-        }
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x->vp[3u * e0 + j], x->vp[3u * e1 + j], &ovf);
-        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
-        {
-            const int bnd = nb == S48_BND;
-            if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
-            if (u2 != S48_OUT) s48_scatter(s, a, u2, mp, mf, bnd);
-            if (u0 != S48_OUT) s48_scatter(s, a, u0, mp, mf, 0);
-            if (u3 != S48_OUT) s48_scatter(s, a, u3, mp, mf, 0);
-        }
-    }
-    for (i = 0; i < nn; i++) {
-        const uint32_t v = a->vid[i], k = s->cnt[i] & ~0x80000000u;
-        if (k == 0u || (s->dist[i] & S48_INC)) {
-            for (j = 0; j < 3u; j++) a->vp[3u * i + j] = x->vp[3u * v + j]; /* not a sum */
-            a->vf[i] = 0;
-            continue;
-        }
-        for (j = 0; j < 3u; j++) a->vp[3u * i + j] = s48_avg(s48_sget(s, a, 3u * i + j), k, &ovf);
-        a->vf[i] = S48_EXACT;
-    }
-    if (ovf) {
-        s->err = (uint32_t)(-SUBD_ERR_RANGE);
-        return 0;
     }
     return 1;
 }
@@ -354,9 +204,8 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
 static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
                                   const subd_real *mp, uint32_t mf, int boundary_ok)
 {
-    uint32_t q;
     if ((s->cnt[v] & S48_RC_BND) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s48_sput(s, w, 3u * u + q, subd_sum_add(s48_sget(s, w, 3u * u + q), mp[q]));
+    s48_sadd3(s, w, 3u * u, mp);
     s->cnt[v] = (s->cnt[v] + 1u) | ((mf & S48_EXACT) ? 0u : S48_RC_INC);
 }
 /* Window vertex number of X's vertex v in the window being cropped, numbered as met. */
@@ -379,7 +228,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
     uint16_t *mt = s->mtab, *vm = s->vmap, *tm = s->tmap;
     uint8_t *d = s->dist;
     uint32_t *cnt = s->cnt;
-    uint32_t i, j, nv = nvp, kt = 0, kv = 0, ovf = 0;
+    uint32_t i, nv = nvp, kt = 0, kv = 0, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
@@ -510,11 +359,11 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
         if (u == S48_OUT) continue;
         w->vid[u] = p->vid[i];
         if (w->vl)
-            for (j = 0; j < 3u; j++) w->vl[3u * u + j] = p->vl[3u * i + j];
+            s48_cp3(w->vl + 3u * u, p->vl + 3u * i);
         if (sm) {
-            for (j = 0; j < 3u; j++) s48_sput(s, w, 3u * u + j, 0);
+            s48_szero3(s, w, 3u * u);
         } else {
-            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = p->vp[3u * i + j];
+            s48_cp3(w->vp + 3u * u, p->vp + 3u * i);
             w->vf[u] = p->vf[i];
         }
     }
@@ -541,12 +390,12 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
             e1 = v3;
         }
         mf = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT) ? S48_EXACT : 0u;
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
+        s48_mid3(mp, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
         if (um != S48_OUT) {
-            for (j = 0; j < 3u; j++) w->vp[3u * um + j] = mp[j];
+            s48_cp3(w->vp + 3u * um, mp);
             w->vf[um] = (uint8_t)mf;
             if (w->vl) /* L: the base midpoint, whatever the smoothing */
-                for (j = 0; j < 3u; j++) w->vl[3u * um + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
+                s48_mid3(w->vl + 3u * um, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
             w->vid[um] = idj | p->key[i];
         }
         if (!sm || nb == S48_OUT) continue;
@@ -563,11 +412,11 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
             const uint32_t u = vm[i], c = cnt[i], q = c & S48_RC_N;
             if (u == S48_OUT) continue;
             if (q == 0u || (c & S48_RC_INC)) {
-                for (j = 0; j < 3u; j++) w->vp[3u * u + j] = p->vp[3u * i + j]; /* not a sum */
+                s48_cp3(w->vp + 3u * u, p->vp + 3u * i); /* not a sum */
                 w->vf[u] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = s48_avg(s48_sget(s, w, 3u * u + j), q, &ovf);
+            s48_avg3(s, w, 3u * u, q, &ovf);
             w->vf[u] = S48_EXACT;
         }
     if (ovf) {

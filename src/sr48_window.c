@@ -477,11 +477,12 @@ int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s4
         ov = w->tv + 3u * t;
         on = w->tn + 3u * t;
         w->key[t] = x->key[i];
-        for (j = 0; j < 3u; j++) {
-            const uint16_t nb = tn[j];
-            ov[j] = s48_rc_num(vm, tv[j], &kv);
-            on[j] = s48_local(nb) ? tm[nb] : nb;
-        }
+        ov[0] = s48_rc_num(vm, tv[0], &kv);
+        ov[1] = s48_rc_num(vm, tv[1], &kv);
+        ov[2] = s48_rc_num(vm, tv[2], &kv);
+        on[0] = s48_local(tn[0]) ? tm[tn[0]] : tn[0];
+        on[1] = s48_local(tn[1]) ? tm[tn[1]] : tn[1];
+        on[2] = s48_local(tn[2]) ? tm[tn[2]] : tn[2];
     }
     if (kv > cv) return 0;
     for (i = 0; i < nv; i++) {

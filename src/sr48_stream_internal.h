@@ -10,7 +10,8 @@
  *                      level 0, the adaptation box);
  *   sr48_census.c      the base's census of its level-0 windows (stream_valence);
  *   sr48_tile.c        the breadth-first uniform tile of the last SUBD_SR48_STREAM_TILE_LEVELS
- *                      levels and the emission of a window triangle;
+ *                      levels (its last level smoothed without a window) and the emission of
+ *                      a window triangle;
  *   sr48_chord_walk.c  CHORD's walk over the deeper windows, its tiles and memos (the
  *                      criterion and its proof: sr48_chord.c);
  *   sr48_chord_region.c  CHORD's counting region F(D), the forcing diamonds (its calls:
@@ -212,6 +213,97 @@ static inline uint16_t subd_s48_mid_ends_(const s48_state *s, const s48_win *x, 
     return lnb;
 }
 
+/* Smoothing sums in place (sr48_window.c's refinements, sr48_tile.c's last level; static
+ * inline here, like the window accessors: the innermost loops): while X is smoothed, the
+ * running sum of an old vertex's new neighbours lives in its own X position (its old
+ * position is not read again: the new vertices come from the parent's positions, and an
+ * old vertex left unsmoothed gets the parent's back). Element e = 3 v + axis. */
+#if SUBD_FIXED /* why: a Q16.16 subd_sum is 64 bits: the low part, signed in [-2^31, 2^31),
+                * in the X position, the high part in s->sumhi. A sum has at most as many
+                * terms as the parent has triangles (one per diamond at the vertex), fewer than
+                * 2^10 (SUBD_SR48_STREAM_TT_ at the largest valence), each below 2^31 in
+                * magnitude, so |high part| < 2^9: an int16 */
+#define S48_W32 ((subd_sum)4294967296)
+static inline subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    return (subd_sum)s->sumhi[e] * S48_W32 + (subd_sum)x->vp[e];
+}
+static inline void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
+{
+    const subd_sum q = v + S48_W32 / 2, hi = q >= 0 ? q / S48_W32 : -((S48_W32 - 1 - q) / S48_W32);
+    s->sumhi[e] = (int16_t)hi;
+    x->vp[e] = (subd_real)(v - hi * S48_W32);
+}
+#else /* float: subd_sum is subd_real: the same additions in the same order, in place */
+static inline subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    (void)s;
+    return x->vp[e];
+}
+static inline void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
+{
+    (void)s;
+    x->vp[e] = v;
+}
+#endif
+
+/* The three coordinates at once (unrolled: the hot paths of every window). */
+static inline void s48_mid3(subd_real *o, const subd_real *a, const subd_real *b, uint32_t *ovf)
+{
+    o[0] = subd_mid(a[0], b[0], ovf);
+    o[1] = subd_mid(a[1], b[1], ovf);
+    o[2] = subd_mid(a[2], b[2], ovf);
+}
+static inline void s48_cp3(subd_real *o, const subd_real *p)
+{
+    o[0] = p[0];
+    o[1] = p[1];
+    o[2] = p[2];
+}
+static inline void s48_szero3(const s48_state *s, const s48_win *x, uint32_t e)
+{
+    s48_sput(s, x, e, 0);
+    s48_sput(s, x, e + 1u, 0);
+    s48_sput(s, x, e + 2u, 0);
+}
+static inline void s48_sadd3(const s48_state *s, const s48_win *x, uint32_t e, const subd_real *mp)
+{
+    s48_sput(s, x, e, subd_sum_add(s48_sget(s, x, e), mp[0]));
+    s48_sput(s, x, e + 1u, subd_sum_add(s48_sget(s, x, e + 1u), mp[1]));
+    s48_sput(s, x, e + 2u, subd_sum_add(s48_sget(s, x, e + 2u), mp[2]));
+}
+
+/* subd_avg(s, n): the same call, with the usual n = 4 (a regular vertex: four diamonds)
+ * as a constant, so that Q16.16 divides by shifts instead of a 64-bit division (a library
+ * call on the Cortex-M3); the same bits. */
+static inline subd_real s48_avg(subd_sum s, uint32_t n, uint32_t *ovf)
+{
+#if SUBD_FIXED
+    return n == 4u ? subd_avg(s, 4u, ovf) : subd_avg(s, n, ovf);
+#else /* float: one division either way */
+    return subd_avg(s, n, ovf);
+#endif
+}
+
+/* A smoothed position: the three sums at e .. e + 2 (in x's positions) averaged in place. */
+static inline void s48_avg3(const s48_state *s, const s48_win *x, uint32_t e, uint32_t n, uint32_t *ovf)
+{
+    x->vp[e] = s48_avg(s48_sget(s, x, e), n, ovf);
+    x->vp[e + 1u] = s48_avg(s48_sget(s, x, e + 1u), n, ovf);
+    x->vp[e + 2u] = s48_avg(s48_sget(s, x, e + 2u), n, ovf);
+}
+
+/* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
+ * counts and flags in s->cnt, s->dist at v). */
+static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp,
+                               uint32_t mf, int boundary_ok)
+{
+    if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
+    s48_sadd3(s, x, 3u * v, mp);
+    s->cnt[v]++;
+    if (!(mf & S48_EXACT)) s->dist[v] |= S48_INC;
+}
+
 #ifdef S48_DBG /* capacity statistics of a debug build (defined in sr48_level0.c) */
 extern uint32_t s48_dbg[40];
 #endif
@@ -237,7 +329,7 @@ int subd_s48_crop_(s48_state *s, const s48_win *x, uint32_t c0, s48_win *w);
  * not p. fin 1, 2: the smaller crops of a tile's last window (sr48_window.c). 0 on failure. */
 int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
                           uint32_t ct, uint32_t cv, uint32_t fin);
-/* The last level of a uniform tile without its window (sr48_window.c): the smoothed
+/* The last level of a uniform tile without its window (sr48_tile.c): the smoothed
  * positions at max_level of the corners of x's triangles c0 .. c0 + n - 1 (x: level
  * max_level - 1), into a's vertices by s->vmap. 0 on failure (s->err). */
 int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a);

@@ -50,6 +50,20 @@
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 
+/* Three coordinates stored, or zeroed (unrolled: the emission's hot path). */
+static inline void s48_put3(subd_real *o, const subd_real *p)
+{
+    o[0] = p[0];
+    o[1] = p[1];
+    o[2] = p[2];
+}
+static inline void s48_zero3(subd_real *o)
+{
+    o[0] = 0;
+    o[1] = 0;
+    o[2] = 0;
+}
+
 /* Window w's triangle t as a stream triangle; 0 when a corner is not exact. *stop: the push
  * form's sink value (non-zero: stop the stream with it). */
 int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream_q *q, int *stop)
@@ -71,6 +85,98 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
     o->face = s->t0;
     o->level = s->levels;
     *stop = subd_stream_q_commit(q);
+    return 1;
+}
+
+/* The last level of a uniform tile without its window: X (level L-1 = max_level - 1) is
+ * not refined into level L; only the corners of level L's triangles that the tile emits
+ * (the children of X's triangles c0 .. c0 + n - 1) are computed. Their new vertices are
+ * single midpoints, made when emitted (sr48_tile.c); this computes the old ones, the
+ * corners of c0 .. c0 + n - 1, when level L is smoothed (L even): the same sums as
+ * subd_s48_refine_'s over the same diamonds in the same order (X's triangle order), but
+ * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
+ * once X is refined from it: a's vid keeps X's index, a's position and flag the result;
+ * a's hd[1] their count). The exactness rules are refine's, restricted to the same
+ * vertices. 0 on failure. */
+int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
+{
+    const uint32_t nt = x->hd[0], nv = x->hd[1];
+    uint16_t *vm = s->vmap;
+    uint32_t i, j, nn = 0, ovf = 0;
+    for (i = 0; i < nv; i++) vm[i] = S48_OUT;
+    for (j = 0; j < 3u * n; j++) {
+        const uint16_t v = x->tv[3u * c0 + j];
+        if (vm[v] != S48_OUT) continue;
+        if (nn >= s->av) return 0;
+        vm[v] = (uint16_t)nn;
+        a->vid[nn] = v;
+        s->cnt[nn] = 0;
+        s->dist[nn] = 0;
+        s48_szero3(s, a, 3u * nn);
+        nn++;
+    }
+    /* the boundary flags first (a boundary vertex sums its boundary diamonds only) */
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i;
+        uint16_t u;
+        if (x->tn[3u * i] != S48_BND) continue;
+        if ((u = vm[tv[1]]) != S48_OUT) s->cnt[u] = 0x80000000u;
+        if ((u = vm[tv[2]]) != S48_OUT) s->cnt[u] = 0x80000000u;
+    }
+    for (i = 0; i < nt; i++) {
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t nb = tn[0], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
+        const uint32_t o0 = nb == S48_OUT, o1 = tn[1] == S48_OUT, o2 = tn[2] == S48_OUT;
+        uint16_t u3;
+        uint32_t e0, e1, mf;
+        subd_real mp[3];
+        if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) {
+            if (nb == S48_BND || !s48_local(nb) || nb < i || vm[x->tv[3u * nb]] == S48_OUT) continue;
+        } else if (o0 | o1 | o2) {
+            /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
+            if ((o0 | o1) && u1 != S48_OUT) s->dist[u1] |= S48_INC;
+            if ((o0 | o2) && u2 != S48_OUT) s->dist[u2] |= S48_INC;
+            if ((o1 | o2) && u0 != S48_OUT) s->dist[u0] |= S48_INC;
+        }
+        if (o0) {
+            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+            continue;
+        }
+        if (nb == S48_BND) {
+            e0 = tv[1];
+            e1 = tv[2];
+            u3 = S48_OUT;
+        } else {
+            if (nb < i) continue; /* the diamond's lower triangle made it */
+            e0 = tv[0];
+            e1 = x->tv[3u * nb];
+            u3 = vm[e1];
+        }
+        s48_mid3(mp, x->vp + 3u * e0, x->vp + 3u * e1, &ovf);
+        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
+        {
+            const int bnd = nb == S48_BND;
+            if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
+            if (u2 != S48_OUT) s48_scatter(s, a, u2, mp, mf, bnd);
+            if (u0 != S48_OUT) s48_scatter(s, a, u0, mp, mf, 0);
+            if (u3 != S48_OUT) s48_scatter(s, a, u3, mp, mf, 0);
+        }
+    }
+    for (i = 0; i < nn; i++) {
+        const uint32_t v = a->vid[i], k = s->cnt[i] & ~0x80000000u;
+        if (k == 0u || (s->dist[i] & S48_INC)) {
+            s48_cp3(a->vp + 3u * i, x->vp + 3u * v); /* not a sum */
+            a->vf[i] = 0;
+            continue;
+        }
+        s48_avg3(s, a, 3u * i, k, &ovf);
+        a->vf[i] = S48_EXACT;
+    }
+    if (ovf) {
+        s->err = (uint32_t)(-SUBD_ERR_RANGE);
+        return 0;
+    }
+    a->hd[1] = nn; /* the corners (sr48_tile.c checks their flags) */
     return 1;
 }
 
@@ -135,9 +241,13 @@ static int s48_tile_exact(const s48_state *s)
             e1 = x.tv[3u * lnb];
         }
         if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
-        for (j = 0; j < 3u; j++)
-            if (!((sm ? a.vf[s->vmap[tv[j]]] : x.vf[tv[j]]) & S48_EXACT)) return 0;
+        if (!sm)
+            for (j = 0; j < 3u; j++)
+                if (!(x.vf[tv[j]] & S48_EXACT)) return 0;
     }
+    if (sm) /* A's vertices are those corners (subd_s48_last_) */
+        for (j = 0; j < a.hd[1]; j++)
+            if (!(a.vf[j] & S48_EXACT)) return 0;
     return 1;
 }
 
@@ -203,59 +313,73 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
 int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
 {
     s48_win x, a;
-    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels;
+    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels, tend = s->tend;
     const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
     const uint64_t *idv = s48_tile_idv(s);
+    /* why locals: the windows' arrays are not reloaded after every sink call */
+    const uint16_t *xtv, *xtn, *vm = s->vmap;
+    const uint32_t *xkey, *gt = s->gt;
+    const subd_real *xvp, *cvp;
+    const int smooth = s->smooth != 0u;
     uint32_t ovf = 0;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
-    while (s->tcur < s->tend && !subd_stream_q_full(q)) {
-        /* X's triangle i: its diamond's new vertex (from the lower triangle), its id and the
-         * level-0 ancestor once for both children */
+    xtv = x.tv;
+    xtn = x.tn;
+    xkey = x.key;
+    xvp = x.vp;
+    cvp = sm ? a.vp : x.vp; /* the corners: smoothed into A by subd_s48_last_ (by vmap), or X's */
+    while (s->tcur < tend && !subd_stream_q_full(q)) {
+        /* X's triangle i: its diamond's new vertex (from the lower triangle), its id, the
+         * level-0 ancestor and the corners once for both children */
         const uint32_t i = s->tcur >> 1;
-        const uint16_t *tv = x.tv + 3u * i, nb = x.tn[3u * i];
+        const uint16_t *tv = xtv + 3u * i, nb = xtn[3u * i];
         const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i; /* the diamond's lower triangle */
-        const uint16_t *lv = x.tv + 3u * lt, lnb = x.tn[3u * lt];
-        uint32_t e0 = lv[1], e1 = lv[2], j, k, face;
+        const uint16_t *lv = xtv + 3u * lt, lnb = xtn[3u * lt];
+        uint32_t e0 = lv[1], e1 = lv[2], j, face;
         uint64_t idm;
         subd_real mp[3];
-        if (s48_local(lnb) && s->smooth) {
+        const subd_real *cp[3]; /* c, a, b: child 0 = (m; c, a), child 1 = (m; b, c) */
+        if (s48_local(lnb) && smooth) {
             e0 = lv[0];
-            e1 = x.tv[3u * lnb];
+            e1 = xtv[3u * lnb];
         }
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x.vp[3u * e0 + j], x.vp[3u * e1 + j], &ovf);
-        idm = id0 + s48_gkey(s, x.key[lt], L - 1u);
-        face = s->gt[x.key[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
+        for (j = 0; j < 3u; j++) mp[j] = subd_mid(xvp[3u * e0 + j], xvp[3u * e1 + j], &ovf);
+        if (ovf) {
+            s->err = (uint32_t)(-SUBD_ERR_RANGE);
+            return 0;
+        }
+        idm = id0 + s48_gkey(s, xkey[lt], L - 1u);
+        face = gt[xkey[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
+        if (sm) { /* exact: s48_tile_exact */
+            cp[0] = cvp + 3u * vm[tv[0]];
+            cp[1] = cvp + 3u * vm[tv[1]];
+            cp[2] = cvp + 3u * vm[tv[2]];
+        } else {
+            cp[0] = cvp + 3u * tv[0];
+            cp[1] = cvp + 3u * tv[1];
+            cp[2] = cvp + 3u * tv[2];
+        }
         do { /* child s->tcur & 1 of i */
             const uint32_t ch = s->tcur & 1u;
-            const uint32_t cv[2] = {ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
-            const subd_real *cp[2];
-            subd_tri *o;
-            for (k = 0; k < 2u; k++) /* exact: s48_tile_exact */
-                cp[k] = sm ? a.vp + 3u * s->vmap[cv[k]] : x.vp + 3u * cv[k];
-            if (ovf) {
-                s->err = (uint32_t)(-SUBD_ERR_RANGE);
-                return 0;
-            }
-            o = (subd_tri *)subd_stream_q_put(q);
+            const subd_real *p1 = ch ? cp[2] : cp[0], *p2 = ch ? cp[0] : cp[1];
+            subd_tri *o = (subd_tri *)subd_stream_q_put(q);
             if (!o) return 0;
-            for (j = 0; j < 3u; j++) {
-                o->pos[0][j] = mp[j];
-                o->pos[1][j] = cp[0][j];
-                o->pos[2][j] = cp[1][j];
-                o->normal[0][j] = 0;
-                o->normal[1][j] = 0;
-                o->normal[2][j] = 0;
-            }
+            s48_put3(o->pos[0], mp);
+            s48_put3(o->pos[1], p1);
+            s48_put3(o->pos[2], p2);
+            s48_zero3(o->normal[0]);
+            s48_zero3(o->normal[1]);
+            s48_zero3(o->normal[2]);
             o->id[0] = idm;
-            o->id[1] = idv[cv[0]];
-            o->id[2] = idv[cv[1]];
+            o->id[1] = idv[ch ? tv[2] : tv[0]];
+            o->id[2] = idv[ch ? tv[0] : tv[1]];
             o->face = face;
             o->level = L;
             *stop = subd_stream_q_commit(q);
             s->tcur++;
             if (*stop) return 1;
-        } while ((s->tcur & 1u) && s->tcur < s->tend && !subd_stream_q_full(q));
+        } while ((s->tcur & 1u) && s->tcur < tend && !subd_stream_q_full(q));
     }
     return 1;
 }

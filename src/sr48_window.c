@@ -42,74 +42,18 @@
  * by splitting the diamond whose lower-key triangle has key K at level k-1 gets
  * V0 + T0n (2^(k-1) - 1) + K (V0, T0n: the base's vertex and triangle counts).
  *
- * Descents (adaptive cuts, CHORD): sr48_descent.c.
+ * Descents (adaptive cuts, CHORD): sr48_descent.c. The last level of a uniform tile, smoothed
+ * without a window: sr48_tile.c. The in-place smoothing sums: sr48_stream_internal.h.
  *
- * Length (about 650 lines, over the ~600 of STYLE.md): one concept, a window refined and
- * cropped level by level; refine, the fused refine + crop of the uniform path and crop share
- * the in-place smoothing sums and the window layout.
+ * Cost (0.7.0): a crop numbers its kept triangles in a first pass and writes their corners
+ * and neighbours (mapped at once) in a second, so no neighbour is renumbered afterwards; the
+ * three coordinates are handled unrolled (s48_mid3 and the sums' helpers); the same bits.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h"
 #include "mesh_internal.h"
 #include "real_avg.h"
 #include "sr48_stream_internal.h"
-
-/* Smoothing sums in place: while X is smoothed, the running sum of an old vertex's new
- * neighbours lives in its own X position (its old position is not read again: the new
- * vertices come from the parent's positions, and an old vertex left unsmoothed gets the
- * parent's back). Element e = 3 v + axis. */
-#if SUBD_FIXED /* why: a Q16.16 subd_sum is 64 bits: the low part, signed in [-2^31, 2^31),
-                * in the X position, the high part in s->sumhi. A sum has at most as many
-                * terms as the parent has triangles (one per diamond at the vertex), fewer than
-                * 2^10 (SUBD_SR48_STREAM_TT_ at the largest valence), each below 2^31 in
-                * magnitude, so |high part| < 2^9: an int16 */
-#define S48_W32 ((subd_sum)4294967296)
-static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
-{
-    return (subd_sum)s->sumhi[e] * S48_W32 + (subd_sum)x->vp[e];
-}
-static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
-{
-    const subd_sum q = v + S48_W32 / 2, hi = q >= 0 ? q / S48_W32 : -((S48_W32 - 1 - q) / S48_W32);
-    s->sumhi[e] = (int16_t)hi;
-    x->vp[e] = (subd_real)(v - hi * S48_W32);
-}
-#else /* float: subd_sum is subd_real: the same additions in the same order, in place */
-static subd_sum s48_sget(const s48_state *s, const s48_win *x, uint32_t e)
-{
-    (void)s;
-    return x->vp[e];
-}
-static void s48_sput(const s48_state *s, const s48_win *x, uint32_t e, subd_sum v)
-{
-    (void)s;
-    x->vp[e] = v;
-}
-#endif
-
-/* subd_avg(s, n): the same call, with the usual n = 4 (a regular vertex: four diamonds)
- * as a constant, so that Q16.16 divides by shifts instead of a 64-bit division (a library
- * call on the Cortex-M3); the same bits. */
-static inline subd_real s48_avg(subd_sum s, uint32_t n, uint32_t *ovf)
-{
-#if SUBD_FIXED
-    return n == 4u ? subd_avg(s, 4u, ovf) : subd_avg(s, n, ovf);
-#else /* float: one division either way */
-    return subd_avg(s, n, ovf);
-#endif
-}
-
-/* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
- * counts and flags in s->cnt, s->dist at v). */
-static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp,
-                               uint32_t mf, int boundary_ok)
-{
-    uint32_t q;
-    if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s48_sput(s, x, 3u * v + q, subd_sum_add(s48_sget(s, x, 3u * v + q), mp[q]));
-    s->cnt[v]++;
-    if (!(mf & S48_EXACT)) s->dist[v] |= S48_INC;
-}
 
 /* Refines window p (level k) as a whole into X (level k+1), smoothing after an even level.
  * 0 on a capacity or range failure (s->err says which). */
@@ -118,7 +62,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
     const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
-    uint32_t i, j, nv = nvp, ovf = 0;
+    uint32_t i, nv = nvp, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
@@ -133,7 +77,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             s->cnt[i] = 0;
             s->dist[i] = 0;
-            for (j = 0; j < 3u; j++) s48_sput(s, x, 3u * i + j, 0);
+            s48_szero3(s, x, 3u * i);
         }
     } else {
         for (i = 0; i < 3u * nvp; i++) x->vp[i] = p->vp[i];
@@ -154,10 +98,10 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
                 e1 = p->tv[3u * nb];
             }
             exact = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT);
-            for (j = 0; j < 3u; j++) x->vp[3u * m + j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
+            s48_mid3(x->vp + 3u * m, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
             x->vf[m] = (uint8_t)(exact ? S48_EXACT : 0u);
             if (x->vl) /* L: the base midpoint, whatever the smoothing */
-                for (j = 0; j < 3u; j++) x->vl[3u * m + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
+                s48_mid3(x->vl + 3u * m, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
             x->vid[m] = idj | key;
         }
         s->mtab[i] = m;
@@ -216,111 +160,17 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
         for (i = 0; i < nvp; i++) {
             uint32_t n = s->cnt[i] & ~0x80000000u;
             if (n == 0u || (s->dist[i] & S48_INC)) {
-                for (j = 0; j < 3u; j++) x->vp[3u * i + j] = p->vp[3u * i + j]; /* not a sum */
+                s48_cp3(x->vp + 3u * i, p->vp + 3u * i); /* not a sum */
                 x->vf[i] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) x->vp[3u * i + j] = subd_avg(s48_sget(s, x, 3u * i + j), n, &ovf);
+            s48_avg3(s, x, 3u * i, n, &ovf);
             x->vf[i] = S48_EXACT;
         }
         if (ovf) {
             s->err = (uint32_t)(-SUBD_ERR_RANGE);
             return 0;
         }
-    }
-    return 1;
-}
-
-/* The last level of a uniform tile without its window: X (level L-1 = max_level - 1) is
- * not refined into level L; only the corners of level L's triangles that the tile emits
- * (the children of X's triangles c0 .. c0 + n - 1) are computed. Their new vertices are
- * single midpoints, made when emitted (sr48_tile.c); this computes the old ones, the
- * corners of c0 .. c0 + n - 1, when level L is smoothed (L even): the same sums as
- * subd_s48_refine_'s over the same diamonds in the same order (X's triangle order), but
- * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
- * once X is refined from it: a's vid keeps X's index, a's position and flag the result).
- * The exactness rules are refine's, restricted to the same vertices. 0 on failure. */
-int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
-{
-    const uint32_t nt = x->hd[0], nv = x->hd[1];
-    uint16_t *vm = s->vmap;
-    uint32_t i, j, nn = 0, ovf = 0;
-    for (i = 0; i < nv; i++) vm[i] = S48_OUT;
-    for (j = 0; j < 3u * n; j++) {
-        const uint16_t v = x->tv[3u * c0 + j];
-        if (vm[v] != S48_OUT) continue;
-        if (nn >= s->av) return 0;
-        vm[v] = (uint16_t)nn;
-        a->vid[nn] = v;
-        s->cnt[nn] = 0;
-        s->dist[nn] = 0;
-        for (i = 0; i < 3u; i++) s48_sput(s, a, 3u * nn + i, 0);
-        nn++;
-    }
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
-        const uint16_t u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
-        if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
-        if (tn[0] == S48_BND) {
-            if (u1 != S48_OUT) s->cnt[u1] = 0x80000000u;
-            if (u2 != S48_OUT) s->cnt[u2] = 0x80000000u;
-        }
-        /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
-        if (tn[0] == S48_OUT || tn[1] == S48_OUT) {
-            if (u1 != S48_OUT) s->dist[u1] |= S48_INC;
-        }
-        if (tn[0] == S48_OUT || tn[2] == S48_OUT) {
-            if (u2 != S48_OUT) s->dist[u2] |= S48_INC;
-        }
-        if (tn[1] == S48_OUT || tn[2] == S48_OUT) {
-            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
-        }
-    }
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i;
-        const uint16_t nb = x->tn[3u * i], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
-        uint16_t u3;
-        uint32_t e0, e1, mf;
-        subd_real mp[3];
-        if (nb == S48_OUT) {
-            if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
-            continue;
-        }
-        if (nb == S48_BND) {
-            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) continue;
-            e0 = tv[1];
-            e1 = tv[2];
-            u3 = S48_OUT;
-        } else {
-            if (nb < i) continue; /* the diamond's lower triangle made it */
-            e0 = tv[0];
-            e1 = x->tv[3u * nb];
-            u3 = vm[e1];
-            if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
-        }
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(x->vp[3u * e0 + j], x->vp[3u * e1 + j], &ovf);
-        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
-        {
-            const int bnd = nb == S48_BND;
-            if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
-            if (u2 != S48_OUT) s48_scatter(s, a, u2, mp, mf, bnd);
-            if (u0 != S48_OUT) s48_scatter(s, a, u0, mp, mf, 0);
-            if (u3 != S48_OUT) s48_scatter(s, a, u3, mp, mf, 0);
-        }
-    }
-    for (i = 0; i < nn; i++) {
-        const uint32_t v = a->vid[i], k = s->cnt[i] & ~0x80000000u;
-        if (k == 0u || (s->dist[i] & S48_INC)) {
-            for (j = 0; j < 3u; j++) a->vp[3u * i + j] = x->vp[3u * v + j]; /* not a sum */
-            a->vf[i] = 0;
-            continue;
-        }
-        for (j = 0; j < 3u; j++) a->vp[3u * i + j] = s48_avg(s48_sget(s, a, 3u * i + j), k, &ovf);
-        a->vf[i] = S48_EXACT;
-    }
-    if (ovf) {
-        s->err = (uint32_t)(-SUBD_ERR_RANGE);
-        return 0;
     }
     return 1;
 }
@@ -354,10 +204,20 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
 static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
                                   const subd_real *mp, uint32_t mf, int boundary_ok)
 {
-    uint32_t q;
     if ((s->cnt[v] & S48_RC_BND) && !boundary_ok) return;
-    for (q = 0; q < 3u; q++) s48_sput(s, w, 3u * u + q, subd_sum_add(s48_sget(s, w, 3u * u + q), mp[q]));
+    s48_sadd3(s, w, 3u * u, mp);
     s->cnt[v] = (s->cnt[v] + 1u) | ((mf & S48_EXACT) ? 0u : S48_RC_INC);
+}
+/* Window vertex number of X's vertex v in the window being cropped, numbered as met. */
+static inline uint16_t s48_rc_num(uint16_t *vm, uint16_t v, uint32_t *kv)
+{
+    uint16_t u = vm[v];
+    if (u == S48_OUT) {
+        u = (uint16_t)*kv;
+        vm[v] = u;
+        *kv += 1u;
+    }
+    return u;
 }
 int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
                           uint32_t ct, uint32_t cv, uint32_t fin)
@@ -368,7 +228,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
     uint16_t *mt = s->mtab, *vm = s->vmap, *tm = s->tmap;
     uint8_t *d = s->dist;
     uint32_t *cnt = s->cnt;
-    uint32_t i, j, nv = nvp, kt = 0, kv = 0, ovf = 0;
+    uint32_t i, nv = nvp, kt = 0, kv = 0, ovf = 0;
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
@@ -431,72 +291,79 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
                 }
             }
     }
-    /* the kept children in X's order: vertices numbered as met, corners, keys, X's
-     * neighbour indices (renumbered once all are known) */
+    /* which children are kept, numbered in X's order (tm: X's index -> w's, or OUT);
+     * then their corners (vertices numbered as met), neighbours (X's, mapped by tm at
+     * once) and keys: two passes, so that no neighbour is renumbered afterwards */
     for (i = 0; i < nt; i++) {
         const uint16_t *tv = p->tv + 3u * i;
-        const uint16_t nb = p->tn[3u * i], l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
-        const uint16_t m = mt[i];
-        uint32_t ch;
-        for (ch = 0; ch < 2u; ch++) {
-            const uint16_t c3[3] = {m, ch ? tv[2] : tv[0], ch ? tv[0] : tv[1]};
-            uint16_t n3[3];
-            uint16_t *ov, *on;
-            const uint16_t ln = ch ? l1 : l0; /* the child's base neighbour: a child of ln */
-            uint32_t md = d[c3[0]];
-            if (d[c3[1]] < md) md = d[c3[1]];
-            if (d[c3[2]] < md) md = d[c3[2]];
+        const uint32_t dm = d[mt[i]], dc = d[tv[0]], da = d[tv[1]], db = d[tv[2]];
+        uint32_t k0, k1;
+        if (fin == 0u) { /* within S48_RINGS rings: a corner nearer than S48_RINGS */
+            const uint32_t mc = dm < dc ? dm : dc;
+            k0 = (da < mc ? da : mc) < S48_RINGS;
+            k1 = (db < mc ? db : mc) < S48_RINGS;
+        } else {
+            const uint16_t l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
             if (fin == 1u) {
-                /* ring 1 and the partners of its triangles: the partner shares the base
-                 * ends c3[1], c3[2], its apex is ln's new vertex */
-                md = md == 0u || (s48_local(ln) && d[mt[ln]] == 0u) ? 0u : S48_FAR;
-            } else if (fin == 2u) { /* the descendants and their partners */
-                md = (i >= c0 && i < c0 + n) || (s48_local(ln) && ln >= c0 && ln < c0 + n) ? 0u : S48_FAR;
-            }
-            if (md + 1u > S48_RINGS) {
-                tm[2u * i + ch] = S48_OUT;
-                continue;
-            }
-            if (kt >= ct) return 0;
-            if (ch == 0u) {
-                n3[0] = s48_local(l0) ? (uint16_t)(2u * l0 + 1u) : l0;
-                n3[1] = (uint16_t)(2u * i + 1u);
-                n3[2] = s48_local(nb) ? (uint16_t)(2u * nb + 1u) : nb;
-            } else {
-                n3[0] = s48_local(l1) ? (uint16_t)(2u * l1) : l1;
-                n3[1] = s48_local(nb) ? (uint16_t)(2u * nb) : nb;
-                n3[2] = (uint16_t)(2u * i);
-            }
-            ov = w->tv + 3u * kt;
-            on = w->tn + 3u * kt;
-            w->key[kt] = 2u * p->key[i] + ch;
-            tm[2u * i + ch] = (uint16_t)kt++;
-            for (j = 0; j < 3u; j++) {
-                const uint16_t v = c3[j];
-                if (vm[v] == S48_OUT) {
-                    if (kv >= cv) return 0;
-                    vm[v] = (uint16_t)kv++;
-                }
-                ov[j] = vm[v];
-                on[j] = n3[j];
+                /* ring 1 and the partners of its triangles: a corner at distance 0 (d is 0
+                 * or S48_FAR here), or the partner's (the child of the base neighbour ln
+                 * across the base ends; its apex is ln's new vertex) */
+                k0 = (dm & dc & da) == 0u || (s48_local(l0) && d[mt[l0]] == 0u);
+                k1 = (dm & dc & db) == 0u || (s48_local(l1) && d[mt[l1]] == 0u);
+            } else { /* the descendants and their partners */
+                const uint32_t in = i - c0 < n;
+                k0 = in || (s48_local(l0) && l0 - c0 < n);
+                k1 = in || (s48_local(l1) && l1 - c0 < n);
             }
         }
+        tm[2u * i] = k0 ? (uint16_t)kt++ : (uint16_t)S48_OUT;
+        tm[2u * i + 1u] = k1 ? (uint16_t)kt++ : (uint16_t)S48_OUT;
     }
-    for (i = 0; i < 3u * kt; i++) {
-        const uint16_t nb = w->tn[i];
-        if (s48_local(nb)) w->tn[i] = tm[nb];
+    if (kt > ct) return 0;
+    for (i = 0; i < nt; i++) {
+        const uint32_t t0 = tm[2u * i], t1 = tm[2u * i + 1u];
+        const uint16_t *tv = p->tv + 3u * i;
+        uint16_t nb, m, *ov, *on;
+        if (t0 == S48_OUT && t1 == S48_OUT) continue;
+        nb = p->tn[3u * i];
+        m = mt[i];
+        if (t0 != S48_OUT) { /* child 0: (m; c, a); base neighbour child 1 of L0 */
+            const uint16_t l0 = p->tn[3u * i + 1u];
+            ov = w->tv + 3u * t0;
+            on = w->tn + 3u * t0;
+            ov[0] = s48_rc_num(vm, m, &kv);
+            ov[1] = s48_rc_num(vm, tv[0], &kv);
+            ov[2] = s48_rc_num(vm, tv[1], &kv);
+            on[0] = s48_local(l0) ? tm[2u * l0 + 1u] : l0;
+            on[1] = (uint16_t)t1;
+            on[2] = s48_local(nb) ? tm[2u * nb + 1u] : nb;
+            w->key[t0] = 2u * p->key[i];
+        }
+        if (t1 != S48_OUT) { /* child 1: (m; b, c); base neighbour child 0 of L1 */
+            const uint16_t l1 = p->tn[3u * i + 2u];
+            ov = w->tv + 3u * t1;
+            on = w->tn + 3u * t1;
+            ov[0] = s48_rc_num(vm, m, &kv);
+            ov[1] = s48_rc_num(vm, tv[2], &kv);
+            ov[2] = s48_rc_num(vm, tv[0], &kv);
+            on[0] = s48_local(l1) ? tm[2u * l1] : l1;
+            on[1] = s48_local(nb) ? tm[2u * nb] : nb;
+            on[2] = (uint16_t)t0;
+            w->key[t1] = 2u * p->key[i] + 1u;
+        }
     }
+    if (kv > cv) return 0;
     /* the kept old vertices: ids, L; positions and flags, or (smoothed level) zero sums */
     for (i = 0; i < nvp; i++) {
         const uint32_t u = vm[i];
         if (u == S48_OUT) continue;
         w->vid[u] = p->vid[i];
         if (w->vl)
-            for (j = 0; j < 3u; j++) w->vl[3u * u + j] = p->vl[3u * i + j];
+            s48_cp3(w->vl + 3u * u, p->vl + 3u * i);
         if (sm) {
-            for (j = 0; j < 3u; j++) s48_sput(s, w, 3u * u + j, 0);
+            s48_szero3(s, w, 3u * u);
         } else {
-            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = p->vp[3u * i + j];
+            s48_cp3(w->vp + 3u * u, p->vp + 3u * i);
             w->vf[u] = p->vf[i];
         }
     }
@@ -509,6 +376,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
         uint32_t e0 = tv[1], e1 = tv[2], mf, u0, u1, u2, u3 = S48_OUT, v3 = 0;
         subd_real mp[3];
         if (s48_local(nb) && nb < i) continue; /* made by the lower triangle */
+        if (um == S48_OUT && (!sm || nb == S48_OUT)) continue; /* neither kept nor summed */
         u0 = vm[tv[0]];
         u1 = vm[tv[1]];
         u2 = vm[tv[2]];
@@ -516,20 +384,18 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
             v3 = p->tv[3u * nb];
             u3 = vm[v3];
         }
-        if (um == S48_OUT &&
-            (!sm || nb == S48_OUT || (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT)))
-            continue;
+        if (um == S48_OUT && u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
         if (s48_local(nb) && s->smooth) {
             e0 = tv[0];
             e1 = v3;
         }
         mf = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT) ? S48_EXACT : 0u;
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(p->vp[3u * e0 + j], p->vp[3u * e1 + j], &ovf);
+        s48_mid3(mp, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
         if (um != S48_OUT) {
-            for (j = 0; j < 3u; j++) w->vp[3u * um + j] = mp[j];
+            s48_cp3(w->vp + 3u * um, mp);
             w->vf[um] = (uint8_t)mf;
             if (w->vl) /* L: the base midpoint, whatever the smoothing */
-                for (j = 0; j < 3u; j++) w->vl[3u * um + j] = subd_mid(p->vl[3u * tv[1] + j], p->vl[3u * tv[2] + j], &ovf);
+                s48_mid3(w->vl + 3u * um, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
             w->vid[um] = idj | p->key[i];
         }
         if (!sm || nb == S48_OUT) continue;
@@ -546,11 +412,11 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
             const uint32_t u = vm[i], c = cnt[i], q = c & S48_RC_N;
             if (u == S48_OUT) continue;
             if (q == 0u || (c & S48_RC_INC)) {
-                for (j = 0; j < 3u; j++) w->vp[3u * u + j] = p->vp[3u * i + j]; /* not a sum */
+                s48_cp3(w->vp + 3u * u, p->vp + 3u * i); /* not a sum */
                 w->vf[u] = 0;
                 continue;
             }
-            for (j = 0; j < 3u; j++) w->vp[3u * u + j] = s48_avg(s48_sget(s, w, 3u * u + j), q, &ovf);
+            s48_avg3(s, w, 3u * u, q, &ovf);
             w->vf[u] = S48_EXACT;
         }
     if (ovf) {
@@ -593,37 +459,32 @@ int subd_s48_crop_n_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s4
             if (d1 > r) d[tv[1]] = (uint8_t)r;
             if (d2 > r) d[tv[2]] = (uint8_t)r;
         }
-    /* the kept triangles in order: their vertices numbered as met, their corners and keys
-     * written at once, their neighbours (X's indices) renumbered once all are known */
+    /* the kept triangles numbered in order (tm: X's index -> w's, or OUT), then their
+     * corners (vertices numbered as met), neighbours (mapped by tm at once) and keys */
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t *tv = x->tv + 3u * i;
         const uint32_t d0 = d[tv[0]], d1 = d[tv[1]], d2 = d[tv[2]];
         uint32_t md = d0 < d1 ? d0 : d1;
-        uint16_t *ov, *on;
         if (d2 < md) md = d2;
-        if (md + 1u > S48_RINGS) {
-            tm[i] = S48_OUT;
-            continue;
-        }
-        if (kt >= ct) return 0;
-        ov = w->tv + 3u * kt;
-        on = w->tn + 3u * kt;
-        w->key[kt] = x->key[i];
-        tm[i] = (uint16_t)kt++;
-        for (j = 0; j < 3u; j++) {
-            const uint16_t v = tv[j];
-            if (vm[v] == S48_OUT) {
-                if (kv >= cv) return 0;
-                vm[v] = (uint16_t)kv++;
-            }
-            ov[j] = vm[v];
-            on[j] = tn[j];
-        }
+        tm[i] = md < S48_RINGS ? (uint16_t)kt++ : (uint16_t)S48_OUT;
     }
-    for (i = 0; i < 3u * kt; i++) {
-        const uint16_t nb = w->tn[i];
-        if (s48_local(nb)) w->tn[i] = tm[nb];
+    if (kt > ct) return 0;
+    for (i = 0; i < nt; i++) {
+        const uint32_t t = tm[i];
+        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        uint16_t *ov, *on;
+        if (t == S48_OUT) continue;
+        ov = w->tv + 3u * t;
+        on = w->tn + 3u * t;
+        w->key[t] = x->key[i];
+        ov[0] = s48_rc_num(vm, tv[0], &kv);
+        ov[1] = s48_rc_num(vm, tv[1], &kv);
+        ov[2] = s48_rc_num(vm, tv[2], &kv);
+        on[0] = s48_local(tn[0]) ? tm[tn[0]] : tn[0];
+        on[1] = s48_local(tn[1]) ? tm[tn[1]] : tn[1];
+        on[2] = s48_local(tn[2]) ? tm[tn[2]] : tn[2];
     }
+    if (kv > cv) return 0;
     for (i = 0; i < nv; i++) {
         uint16_t v = vm[i];
         if (v == S48_OUT) continue;

@@ -22,7 +22,9 @@
  * three arrays (pos, tri_vert, tri_base_nb); both are checked against a real build at
  * DSR_CHECK_STEPS first, so the closed form cannot drift from the library's layout.
  * Instructions are counted as in demo.c (QEMU -icount: ticks x PORT_QEMU_INSNS_PER_TICK),
- * sink included (about 150 instructions per triangle). */
+ * sink included (about 150 instructions per triangle). The uniform stream at DSR_COUNT_STEPS
+ * runs twice, into the checksum sink and into a counting sink (the triangles counted, nothing
+ * read), so that the stream's own instructions per face stand next to the checksum figure. */
 #include <string.h>
 #include "subd.h"
 #include "print.h"
@@ -36,6 +38,7 @@
 #define DSR_STEPS 9u        /* binary steps of the chordal cut                           */
 #define DSR_VALENCE 10u     /* the base's largest valence the static buffer is sized for */
 #define DSR_UNIFORM_STEPS 6u /* the uniform stream's steps (instructions per face)       */
+#define DSR_COUNT_STEPS 8u  /* the uniform stream with the counting sink (its own cost)   */
 #define DSR_CHECK_STEPS 3u  /* the closed form checked against a real build              */
 #define DSR_RAM (4u * 1024u * 1024u) /* mps2-an386 / an385: 4 MiB of RAM (linker/mps2_*.ld)  */
 
@@ -136,6 +139,47 @@ static int dsr_stream(const subd_sr48 *base, const subd_sr48_adapt *ad, uint32_t
     return SUBD_OK;
 }
 
+/* The counting sink: the triangles only, so that the instructions are the stream's own. */
+static int dsr_count_tri(void *ctx, const subd_tri *t)
+{
+    (void)t;
+    ++*(uint32_t *)ctx;
+    return 0;
+}
+
+/* The uniform stream of DSR_COUNT_STEPS into the checksum sink (dsr_stream), then again into
+ * the counting sink: the stream's own instructions per face next to the checksum sink's
+ * (the same triangles: the counts must agree). */
+static int dsr_uniform_count(const subd_sr48 *base)
+{
+    subd_sr48_adapt ad;
+    subd_sr48_stream_opts so;
+    subd_arena sa;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t plan = 0, t0, t1, faces = 0, n = 0;
+    uint64_t insns;
+    int st;
+    memset(&ad, 0, sizeof ad);
+    ad.mode = SUBD_SR48_ADAPT_UNIFORM;
+    ad.max_level = DSR_COUNT_STEPS;
+    if ((st = dsr_stream(base, &ad, &faces)) != SUBD_OK) return st;
+    so.adapt = ad;
+    if ((st = subd_sr48_stream_plan(base, &so, &plan, &d)) != SUBD_OK) return demo_fail("subd_sr48_stream_plan", st, &d);
+    subd_arena_init(&sa, dsr_buf, plan);
+    sink.tri = dsr_count_tri;
+    sink.ctx = &n;
+    t0 = port_cycles();
+    st = subd_sr48_stream(&sa, base, &so, &sink, &d);
+    t1 = port_cycles();
+    if (st != SUBD_OK) return demo_fail("subd_sr48_stream", st, &d);
+    if (n != faces) return demo_fail("the counting sink's faces differ from the checksum sink's", SUBD_ERR_PARAM, 0);
+    insns = (uint64_t)(t1 - t0) * PORT_QEMU_INSNS_PER_TICK;
+    demo_kv64("instructions, stream + counting sink", insns);
+    demo_kv("instructions per output face, stream + counting sink", n ? (uint32_t)(insns / n) : 0u);
+    return SUBD_OK;
+}
+
 int demo_sr48_chord(subd_arena *arena)
 {
     const corpus_file *f = corpus_find(DSR_MESH);
@@ -195,6 +239,9 @@ int demo_sr48_chord(subd_arena *arena)
     ad.mode = SUBD_SR48_ADAPT_UNIFORM;
     ad.max_level = DSR_UNIFORM_STEPS;
     if ((st = dsr_stream(&base, &ad, &faces)) != SUBD_OK) return st;
+
+    print_str("uniform stream, 8 binary steps (same base), checksum sink then counting sink:\n");
+    if ((st = dsr_uniform_count(&base)) != SUBD_OK) return st;
     subd_arena_rewind(arena, mark);
     return SUBD_OK;
 }

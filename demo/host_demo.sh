@@ -68,7 +68,7 @@ run alpha_tags_fig4d_untagged alpha --order 3 --kernel cos -l 4 test/data/cube_q
 
 echo "-- semi-regular 4-8 streams: the firmware demo's checksums = the host tool's"
 # port/cortex-m/demo_sr48.c streams test/data/icosahedron.obj (chordal, eps 0.01, 9 binary
-# steps; uniform, 6 steps) under QEMU; `make demo` keeps each image's output in OUT_DIR/*.log.
+# steps; uniform, 6 and 8 steps) under QEMU; `make demo` keeps each image's output in OUT_DIR/*.log.
 # The tool's --stats checksum is the same FNV-1a over the same triangles' position bits.
 sr48_device_sum() { # LOG SECTION_START: the first checksum after the section's title line
     awk -v s="$2" 'index($0, s) == 1 { f = 1 } f && $1 == "checksum" { print $2; exit }' "$1" | sed 's/^0x//'
@@ -80,9 +80,11 @@ for v in "m4f-float subd" "m3-fixed subd-fixed"; do
     [ -f "$log" ] || { echo "no $log (run make demo): not compared"; continue; }
     hc=$(sr48_host_sum "$bin/$2" sr48 --stream --chord 0.01 -l 9 test/data/icosahedron.obj)
     hu=$(sr48_host_sum "$bin/$2" sr48 --stream -l 6 test/data/icosahedron.obj)
+    h8=$(sr48_host_sum "$bin/$2" sr48 --stream -l 8 test/data/icosahedron.obj)
     dc=$(sr48_device_sum "$log" "chordal stream, eps 0.01") du=$(sr48_device_sum "$log" "uniform stream, 6 binary")
-    echo "$1: chordal checksum device $dc, host $hc; uniform device $du, host $hu"
-    if [ -z "$hc" ] || [ "$hc" != "$dc" ] || [ -z "$hu" ] || [ "$hu" != "$du" ]; then
+    d8=$(sr48_device_sum "$log" "uniform stream, 8 binary")
+    echo "$1: chordal checksum device $dc, host $hc; uniform device $du, host $hu; 8 steps device $d8, host $h8"
+    if [ -z "$hc" ] || [ "$hc" != "$dc" ] || [ -z "$hu" ] || [ "$hu" != "$du" ] || [ -z "$h8" ] || [ "$h8" != "$d8" ]; then
         echo "FAILED: the device's 4-8 stream checksums differ from $2's" >&2
         exit 1
     fi

@@ -232,14 +232,9 @@ static int s48_tile_exact(const s48_state *s)
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
     for (i = s->tcur >> 1; i < s->tend >> 1; i++) {
-        const uint16_t *tv = x.tv + 3u * i, nb = x.tn[3u * i];
-        const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i;
-        const uint16_t *lv = x.tv + 3u * lt, lnb = x.tn[3u * lt];
-        uint32_t e0 = lv[1], e1 = lv[2];
-        if (s48_local(lnb) && s->smooth) {
-            e0 = lv[0];
-            e1 = x.tv[3u * lnb];
-        }
+        const uint16_t *tv = x.tv + 3u * i;
+        uint32_t lt, e0, e1;
+        const uint16_t lnb = subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
         if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
         if (!sm)
             for (j = 0; j < 3u; j++)
@@ -317,15 +312,13 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
     const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
     const uint64_t *idv = s48_tile_idv(s);
     /* why locals: the windows' arrays are not reloaded after every sink call */
-    const uint16_t *xtv, *xtn, *vm = s->vmap;
+    const uint16_t *xtv, *vm = s->vmap;
     const uint32_t *xkey, *gt = s->gt;
     const subd_real *xvp, *cvp;
-    const int smooth = s->smooth != 0u;
     uint32_t ovf = 0;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
     xtv = x.tv;
-    xtn = x.tn;
     xkey = x.key;
     xvp = x.vp;
     cvp = sm ? a.vp : x.vp; /* the corners: smoothed into A by subd_s48_last_ (by vmap), or X's */
@@ -333,17 +326,12 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
         /* X's triangle i: its diamond's new vertex (from the lower triangle), its id, the
          * level-0 ancestor and the corners once for both children */
         const uint32_t i = s->tcur >> 1;
-        const uint16_t *tv = xtv + 3u * i, nb = xtn[3u * i];
-        const uint32_t lt = (s48_local(nb) && nb < i) ? nb : i; /* the diamond's lower triangle */
-        const uint16_t *lv = xtv + 3u * lt, lnb = xtn[3u * lt];
-        uint32_t e0 = lv[1], e1 = lv[2], j, face;
+        const uint16_t *tv = xtv + 3u * i;
+        uint32_t lt, e0, e1, j, face; /* lt: the diamond's lower triangle */
         uint64_t idm;
         subd_real mp[3];
         const subd_real *cp[3]; /* c, a, b: child 0 = (m; c, a), child 1 = (m; b, c) */
-        if (s48_local(lnb) && smooth) {
-            e0 = lv[0];
-            e1 = xtv[3u * lnb];
-        }
+        (void)subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
         for (j = 0; j < 3u; j++) mp[j] = subd_mid(xvp[3u * e0 + j], xvp[3u * e1 + j], &ovf);
         if (ovf) {
             s->err = (uint32_t)(-SUBD_ERR_RANGE);

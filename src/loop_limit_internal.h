@@ -68,6 +68,7 @@ void subd_loop_limit_vertex_cached(const subd_mesh *m, subd_loop_boundary b, con
 typedef struct lim_reg6 {
     lim_w chi;
     subd_real c[6], s[6];
+    uint32_t fast; /* 1: c, s are (1, 1/2, -1/2, -1, -1/2, 1/2), (0, r, r, 0, -r, -r): loop_limit.c */
 } lim_reg6;
 void subd_loop_limit_reg6_init(lim_reg6 *k);
 void subd_loop_limit_reg6_trig(lim_reg6 *k); /* loop_limit_normal.c: c and s */

@@ -123,12 +123,23 @@ static inline uint64_t subd_w3_maxabs(const subd_wide *t)
     return big;
 }
 
+/* x / 2^s truncated toward zero (C's division) for s in 1..63, as a shift of the magnitude:
+ * a 64-bit division is a library call on Cortex-M (__aeabi_ldivmod, about a hundred
+ * instructions; the limit normals made nine per vertex). |x| >> s < 2^63, so the negation
+ * back is defined. */
+static inline int64_t subd_wide_shr_trunc(int64_t x, uint32_t s)
+{
+    uint64_t m = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
+    m >>= s;
+    return x < 0 ? -(int64_t)m : (int64_t)m;
+}
+
 /* o = t * 2^-s: truncating division for s > 0, exact product for s <= 0. */
 static inline void subd_w3_shift(const subd_wide *t, subd_wide *o, int32_t s)
 {
     uint32_t k;
     if (s > 0)
-        for (k = 0; k < 3u; k++) o[k] = t[k] / ((int64_t)1 << s);
+        for (k = 0; k < 3u; k++) o[k] = subd_wide_shr_trunc(t[k], (uint32_t)s);
     else
         for (k = 0; k < 3u; k++) o[k] = t[k] * ((int64_t)1 << -s);
 }

@@ -381,20 +381,23 @@ static inline void lim_reg6_axis(subd_real r, subd_real v, subd_real p0, subd_re
 #endif
 
 /* lim_position's smooth branch and lim_smooth_tangents (i0 = 0) for valence 6 with the ring
- * given: the same sums (lim_reg6_axis), each neighbour's coordinates read once. */
+ * given: the same sums (lim_reg6_axis), the three coordinates written out so that the sums
+ * stay in registers, then lim_finish's rounding and check and the unit normal. */
 static void lim_reg6_fast(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
                           uint32_t *ovf)
 {
     const subd_real *p0 = pv + ring[0], *p1 = pv + ring[1], *p2 = pv + ring[2];
     const subd_real *p3 = pv + ring[3], *p4 = pv + ring[4], *p5 = pv + ring[5];
-    subd_real r = k->s[1];
-    subd_wide s[3], t1[3], t2[3];
-    uint32_t c;
-    for (c = 0; c < 3u; c++) lim_reg6_axis(r, pv[c], p0[c], p1[c], p2[c], p3[c], p4[c], p5[c], &s[c], &t1[c], &t2[c]);
+    subd_real r = k->s[1], v0 = pv[0], v1 = pv[1], v2 = pv[2];
+    lim_w chi = k->chi;
+    subd_wide s0, s1, s2, t1[3], t2[3];
+    lim_reg6_axis(r, v0, p0[0], p1[0], p2[0], p3[0], p4[0], p5[0], &s0, &t1[0], &t2[0]);
+    lim_reg6_axis(r, v1, p0[1], p1[1], p2[1], p3[1], p4[1], p5[1], &s1, &t1[1], &t2[1]);
+    lim_reg6_axis(r, v2, p0[2], p1[2], p2[2], p3[2], p4[2], p5[2], &s2, &t1[2], &t2[2]);
     /* Q16.16: n chi <= 1, so w s < 2^61; float32: the product rounded once */
-    pos[0] = lim_finish(pv[0], k->chi * s[0], ovf);
-    pos[1] = lim_finish(pv[1], k->chi * s[1], ovf);
-    pos[2] = lim_finish(pv[2], k->chi * s[2], ovf);
+    pos[0] = lim_finish(v0, chi * s0, ovf);
+    pos[1] = lim_finish(v1, chi * s1, ovf);
+    pos[2] = lim_finish(v2, chi * s2, ovf);
     subd_loop_limit_unit_cross(t1, t2, nrm);
 }
 

@@ -9,7 +9,9 @@
  *    large values (float32: near 2^120; Q16.16: 33-bit differences);
  *  - subd_isqrt64 (src/sqrt.c: a Karatsuba step on a 32-bit Newton root) against the
  *    digit-by-digit square root it replaced, written out here: every x < 2^16, squares and
- *    their neighbours, powers of two and random values of every length.
+ *    their neighbours, powers of two and random values of every length;
+ *  - Q16.16 subd_w3_unit (src/vec3w.c: two 32-bit divisions) against the 64-bit division it
+ *    replaced, on random vectors of every length and sign, zeros included.
  * Host and QEMU (fewer random cases on QEMU). The stream itself equals subd_loop_limit on
  * the test shapes in test_loop_stream.c.
  */
@@ -148,7 +150,38 @@ static void isqrt_test(void)
     CHECK_EQ(bad, 0);
 }
 
+#if SUBD_FIXED
+/* subd_w3_unit (vec3w.c, Q16.16: the quotients by two 32-bit divisions) against the 64-bit
+ * division it replaced: q = n 2^16, (q +- len/2) / len truncated, n = c rescaled to 30 bits. */
+static void unit_test(void)
+{
+    uint32_t s = 99u, i, k, bad = 0;
+    for (i = 0; i < (H_HOST ? 300000u : 5000u); i++) {
+        subd_wide c[3], n[3];
+        subd_real got[3];
+        uint32_t len;
+        for (k = 0; k < 3u; k++) {
+            uint32_t u = h_rand(&s);
+            int64_t v = (int64_t)(((uint64_t)h_rand(&s) << 30 | h_rand(&s)) >> (u & 31u));
+            c[k] = (u & 32u) ? -v : (u & 448u) == 0u ? 0 : v;
+        }
+        subd_w3_unit(c, got);
+        subd_w3_normalize(c, n, 30u);
+        len = subd_isqrt64((uint64_t)subd_w3_dot(n, n));
+        for (k = 0; k < 3u; k++) {
+            int64_t q = n[k] * 65536, h = (int64_t)(len / 2u);
+            subd_real want = len == 0u ? 0 : (subd_real)(q < 0 ? (q - h) / (int64_t)len : (q + h) / (int64_t)len);
+            if (got[k] != want) bad++;
+        }
+    }
+    CHECK_EQ(bad, 0);
+}
+#endif
+
 const test_case suite_loop_limit6[] = {
+#if SUBD_FIXED
+    {"limit6_unit_division", unit_test},
+#endif
     {"limit6_reg6_equals_limit", reg6_test},
     {"limit6_isqrt64", isqrt_test},
     {0, 0}

@@ -75,14 +75,14 @@ void subd_loop_limit_reg6_trig(lim_reg6 *k); /* loop_limit_normal.c: c and s */
 void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
                           uint32_t *ovf);
 /* The unit vector along t1 x t2 (every limit normal but the corners' sums): both rescaled
- * first with subd_w3_normalize to 30 bits (float32: largest component 1), so the cross
+ * first with subd_w3_normalize(_shr) to 30 bits (float32: largest component 1), so the cross
  * product cannot overflow (Q16.16: below 2^61) or underflow; only the directions matter.
  * Inline so that the valence-6 path keeps its tangents in registers. */
 static inline void subd_loop_limit_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out)
 {
     subd_wide a[3], b[3], c[3];
-    subd_w3_normalize(t1, a, 30u);
-    subd_w3_normalize(t2, b, 30u);
+    subd_w3_normalize_shr(t1, a, 30u);
+    subd_w3_normalize_shr(t2, b, 30u);
     subd_w3_cross(a, b, c);
     subd_w3_unit(c, out);
 }

@@ -91,7 +91,7 @@ static subd_real vec3w_root(subd_dist_sq s, uint32_t *ovf)
 void subd_w3_unit(const subd_wide *c, subd_real *out)
 {
     subd_wide n[3];
-    subd_w3_normalize(c, n, 30u);
+    subd_w3_normalize_shr(c, n, 30u);
     vec3w_scale(n, out);
 }
 

@@ -302,15 +302,108 @@ void subd_loop_limit_cache_init(lim_cache *lc)
     lc->tab.filled = 0;
 }
 
+/* The valence-6 masks as subd_loop_limit's tables give them: cos 2 pi j/6 = 1, 1/2, -1/2, -1,
+ * -1/2, 1/2 and sin = 0, r, r, 0, -r, -r (r = sin 60 degrees rounded) in both arithmetics
+ * (trig.c's exact range reduction; float32 0.5 and 1 are exact, Q16.16 32768 and 65536).
+ * fast records that they are, which is what lim_reg6_fast assumes; the general loop below it
+ * stays for any other table (and the tests run both). */
 void subd_loop_limit_reg6_init(lim_reg6 *k)
 {
+    static const int8_t c2[6] = {2, 1, -1, -2, -1, 1}, sg[6] = {0, 1, 1, 0, -1, -1}; /* 2 cos, sign of sin */
+    subd_real one = SUBD_REAL_ONE, half = SUBD_REAL_FRAC(1, 2), r;
+    uint32_t j;
     k->chi = lim_chi(6u);
     subd_loop_limit_reg6_trig(k);
+    r = k->s[1];
+    k->fast = r > (subd_real)0;
+    for (j = 0; j < 6u; j++) {
+        subd_real c = c2[j] == 2 ? one : c2[j] == 1 ? half : c2[j] == -1 ? -half : -one;
+        subd_real sj = sg[j] > 0 ? r : sg[j] < 0 ? -r : (subd_real)0;
+        if (subd_real_bits(k->c[j]) != subd_real_bits(c) || subd_real_bits(k->s[j]) != subd_real_bits(sj)) k->fast = 0;
+    }
 }
 
+/* One coordinate of the three valence-6 sums of lim_reg6_fast: *s = sum d_j, *t1 = sum
+ * cos_j d_j, *t2 = sum sin_j d_j over the ring's differences d_j = p_j - v, j = 0..5 from the
+ * ring start, as lim_position's smooth branch and lim_smooth_tangents (i0 = 0) make them.
+ *
+ * Q16.16: those sums are exact int64 sums of exact products (no rounding, no overflow:
+ * |d_j| < 2^32, weights <= 2^16), so any grouping gives their bits: t1 = 2^15 (2 (d0 - d3) +
+ * (d1 - d2) - (d4 - d5)), t2 = r ((d1 + d2) - (d4 + d5)), one multiplication per sum.
+ *
+ * float32: the same roundings in the same order. The reference adds w_j * d_j to an
+ * accumulator that starts at +0, left to right. (1) w d for w = 1 is d, for w = -1 and
+ * -1/2 it is -(|w| d) (rounding is symmetric), and a + (-x) is a - x (IEEE 754 defines the
+ * subtraction so), so the products by 1 and -1 are dropped and the negative weights
+ * subtract. (2) A sum that starts at +0 is never -0 (round to nearest: x + y = -0 only when
+ * x = y = -0), so adding a zero product (sin 0 d0, sin 180 d3, both +-0 for finite d: a
+ * tile's points are finite) leaves it unchanged: those terms are dropped. (3) Starting
+ * instead from the first term and adding +0 at the end gives the same bits: if the
+ * shortened sum is never -0 the two run equal; once it is -0 (every term so far -0) the
+ * reference holds +0, and -0 + x = x = +0 + x for every x but x = -0, where the reference
+ * stays +0; the final + 0.0f maps that -0 to +0 and changes nothing else. (4) The position
+ * sum s skips that + 0.0f: it is -0 only when every d_j is -0, i.e. every p_j is -0 and v
+ * is +0 (p - v = -0 only so), and then v + chi s is +0 for either sign of s. */
+#if SUBD_FIXED
+static inline void lim_reg6_axis(subd_real r, subd_real v, subd_real p0, subd_real p1, subd_real p2, subd_real p3,
+                                 subd_real p4, subd_real p5, subd_wide *s, subd_wide *t1, subd_wide *t2)
+{
+    subd_wide d0 = subd_wide_diff(p0, v), d1 = subd_wide_diff(p1, v), d2 = subd_wide_diff(p2, v);
+    subd_wide d3 = subd_wide_diff(p3, v), d4 = subd_wide_diff(p4, v), d5 = subd_wide_diff(p5, v);
+    *s = d0 + d1 + d2 + d3 + d4 + d5;
+    *t1 = (2 * (d0 - d3) + (d1 - d2) - (d4 - d5)) * 32768;
+    *t2 = ((d1 + d2) - (d4 + d5)) * (subd_wide)r;
+}
+#else
+static inline void lim_reg6_axis(subd_real r, subd_real v, subd_real p0, subd_real p1, subd_real p2, subd_real p3,
+                                 subd_real p4, subd_real p5, subd_wide *s, subd_wide *t1, subd_wide *t2)
+{
+    subd_wide d0 = subd_wide_diff(p0, v), d1 = subd_wide_diff(p1, v), d2 = subd_wide_diff(p2, v);
+    subd_wide d3 = subd_wide_diff(p3, v), d4 = subd_wide_diff(p4, v), d5 = subd_wide_diff(p5, v);
+    subd_wide h1 = 0.5f * d1, h2 = 0.5f * d2, h4 = 0.5f * d4, h5 = 0.5f * d5;
+    subd_wide r1 = r * d1, r2 = r * d2, r4 = r * d4, r5 = r * d5, a, b, x;
+    x = d0 + d1;
+    x = x + d2;
+    x = x + d3;
+    x = x + d4;
+    *s = x + d5;
+    a = d0 + h1; /* 1 d0 + 1/2 d1 */
+    a = a - h2;  /* + (-1/2) d2 */
+    a = a - d3;  /* + (-1) d3 */
+    a = a - h4;  /* + (-1/2) d4 */
+    a = a + h5;  /* + 1/2 d5 */
+    *t1 = a + 0.0f;
+    b = r1 + r2; /* 0 d0 + r d1 + r d2 */
+    b = b - r4;  /* + 0 d3 + (-r) d4 */
+    b = b - r5;  /* + (-r) d5 */
+    *t2 = b + 0.0f;
+}
+#endif
+
 /* lim_position's smooth branch and lim_smooth_tangents (i0 = 0) for valence 6 with the ring
- * given: the same sums in the same order, in one pass over the ring (each difference
- * p - v computed once for the three sums it enters, the accumulators in registers). */
+ * given: the same sums (lim_reg6_axis), the three coordinates written out so that the sums
+ * stay in registers, then lim_finish's rounding and check and the unit normal. */
+static void lim_reg6_fast(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
+                          uint32_t *ovf)
+{
+    const subd_real *p0 = pv + ring[0], *p1 = pv + ring[1], *p2 = pv + ring[2];
+    const subd_real *p3 = pv + ring[3], *p4 = pv + ring[4], *p5 = pv + ring[5];
+    subd_real r = k->s[1], v0 = pv[0], v1 = pv[1], v2 = pv[2];
+    lim_w chi = k->chi;
+    subd_wide s0, s1, s2, t1[3], t2[3];
+    lim_reg6_axis(r, v0, p0[0], p1[0], p2[0], p3[0], p4[0], p5[0], &s0, &t1[0], &t2[0]);
+    lim_reg6_axis(r, v1, p0[1], p1[1], p2[1], p3[1], p4[1], p5[1], &s1, &t1[1], &t2[1]);
+    lim_reg6_axis(r, v2, p0[2], p1[2], p2[2], p3[2], p4[2], p5[2], &s2, &t1[2], &t2[2]);
+    /* Q16.16: n chi <= 1, so w s < 2^61; float32: the product rounded once */
+    pos[0] = lim_finish(v0, chi * s0, ovf);
+    pos[1] = lim_finish(v1, chi * s1, ovf);
+    pos[2] = lim_finish(v2, chi * s2, ovf);
+    subd_loop_limit_unit_cross(t1, t2, nrm);
+}
+
+/* The general form: lim_position's smooth branch and lim_smooth_tangents (i0 = 0) for
+ * valence 6 with the ring given, the same sums in the same order in one pass over the ring
+ * (each difference p - v computed once for the three sums it enters). */
 void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
                           uint32_t *ovf)
 {
@@ -318,6 +411,10 @@ void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const int32_t 
     subd_wide a0 = (subd_wide)0, a1 = (subd_wide)0, a2 = (subd_wide)0;
     subd_wide b0 = (subd_wide)0, b1 = (subd_wide)0, b2 = (subd_wide)0;
     uint32_t i;
+    if (k->fast) {
+        lim_reg6_fast(k, pv, ring, pos, nrm, ovf);
+        return;
+    }
     for (i = 0; i < 6u; i++) {
         const subd_real *p = pv + ring[i];
         subd_real wc = k->c[i], ws = k->s[i];

@@ -68,12 +68,24 @@ void subd_loop_limit_vertex_cached(const subd_mesh *m, subd_loop_boundary b, con
 typedef struct lim_reg6 {
     lim_w chi;
     subd_real c[6], s[6];
+    uint32_t fast; /* 1: c, s are (1, 1/2, -1/2, -1, -1/2, 1/2), (0, r, r, 0, -r, -r): loop_limit.c */
 } lim_reg6;
 void subd_loop_limit_reg6_init(lim_reg6 *k);
 void subd_loop_limit_reg6_trig(lim_reg6 *k); /* loop_limit_normal.c: c and s */
 void subd_loop_limit_reg6(const lim_reg6 *k, const subd_real *pv, const int32_t *ring, subd_real *pos, subd_real *nrm,
                           uint32_t *ovf);
-void subd_loop_limit_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out);
+/* The unit vector along t1 x t2 (every limit normal but the corners' sums): both rescaled
+ * first with subd_w3_normalize(_shr) to 30 bits (float32: largest component 1), so the cross
+ * product cannot overflow (Q16.16: below 2^61) or underflow; only the directions matter.
+ * Inline so that the valence-6 path keeps its tangents in registers. */
+static inline void subd_loop_limit_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out)
+{
+    subd_wide a[3], b[3], c[3];
+    subd_w3_normalize_shr(t1, a, 30u);
+    subd_w3_normalize_shr(t2, b, 30u);
+    subd_w3_cross(a, b, c);
+    subd_w3_unit(c, out);
+}
 
 /* The unit limit normal of vertex v of class c (control points ctrl, rule b) into out[3];
  * tab: the caller's trig table (filled = 0 before its first use in a call), or NULL.

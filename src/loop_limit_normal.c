@@ -17,17 +17,14 @@
 /* Limit normals                                                                          */
 
 /* Unit vectors by vec3w.h: subd_w3_unit(c) is c / |c|, or (0, 0, 0) for c = 0.
- * lim_unit_cross: the unit vector along t1 x t2; lim_dot_sign: the sign of a . b. Both
+ * lim_unit_cross: the unit vector along t1 x t2 (loop_limit_internal.h's
+ * subd_loop_limit_unit_cross, out of line here); lim_dot_sign: the sign of a . b. Both
  * first rescale their operands with subd_w3_normalize to 30 bits (float32: largest
  * component 1), so the cross and dot products cannot overflow (Q16.16: below 2^61 and
  * 3 * 2^60) or underflow; only the directions matter. */
 static void lim_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out)
 {
-    subd_wide a[3], b[3], c[3];
-    subd_w3_normalize(t1, a, 30u);
-    subd_w3_normalize(t2, b, 30u);
-    subd_w3_cross(a, b, c);
-    subd_w3_unit(c, out);
+    subd_loop_limit_unit_cross(t1, t2, out);
 }
 
 static subd_wide lim_dot_sign(const subd_wide *a, const subd_wide *b)
@@ -108,11 +105,6 @@ void subd_loop_limit_reg6_trig(lim_reg6 *k)
     uint32_t j;
     tab.filled = 0;
     for (j = 0; j < 6u; j++) lim_sincos(&tab, j, 6u, &k->c[j], &k->s[j]);
-}
-
-void subd_loop_limit_unit_cross(const subd_wide *t1, const subd_wide *t2, subd_real *out)
-{
-    lim_unit_cross(t1, t2, out);
 }
 
 /* The unit normal of one side of a boundary or crease vertex: ring positions s .. s+k-1

@@ -2,11 +2,12 @@
 /* Deterministic square roots in integer arithmetic (no libm: sqrtf would pull libm into the
  * device image, and the link proofs forbid it).
  *
- * subd_isqrt64: the integer square root of a uint64, digit by digit (two bits of the
- * argument per result bit, 32 steps of shift/compare/subtract), rounded to nearest. No
- * division, no multiplication wider than the operands, so it runs the same on every
- * target (the result saturates at 2^32 - 1 above (2^32 - 1/2)^2). Round to nearest: with r = floor(sqrt(x)) and rem = x - r^2, sqrt(x) >= r + 1/2
- * exactly when x >= r^2 + r + 1/4, i.e. (integers) rem > r; an exact half cannot occur.
+ * subd_isqrt64: the integer square root of a uint64 (isqrt_floor: one Karatsuba step on a
+ * 32-bit Newton root, integer operations only), rounded to nearest. Exact integer
+ * arithmetic, so it gives the same result on every target (the result saturates at 2^32 - 1
+ * above (2^32 - 1/2)^2). Round to nearest: with r = floor(sqrt(x)) and rem = x - r^2,
+ * sqrt(x) >= r + 1/2 exactly when x >= r^2 + r + 1/4, i.e. (integers) rem > r; an exact
+ * half cannot occur.
  *
  * subd_sqrt, float32: correctly rounded (round to nearest, ties to even; a tie cannot occur
  * for a square root of a float) and therefore bit-identical to IEEE sqrt for every
@@ -39,22 +40,66 @@
 #include "subd.h"
 #include "sqrt_internal.h"
 
-/* floor(sqrt(x)) and the remainder x - floor(sqrt(x))^2. */
+/* floor(sqrt(n)) for n < 2^32 by Newton's integer iteration x <- (x + n / x) / 2 from
+ * x0 = (n / 2^16 + 2^16) / 2 >= sqrt(n) (the mean of n / 2^16 and 2^16 is at least their
+ * geometric mean): from at or above floor(sqrt(n)) the iterates fall to it and the first
+ * that does not fall is it (Hacker's Delight 11-1). All 32-bit: x <= 2^16, n / x < 2^32. */
+static uint32_t isqrt32_floor(uint32_t n)
+{
+    uint32_t x = (n >> 17) + 32768u, y;
+    if (n == 0u) return 0u;
+    for (;;) {
+        y = (x + n / x) >> 1;
+        if (y >= x) return x;
+        x = y;
+    }
+}
+
+/* floor(sqrt(x)) and the remainder x - floor(sqrt(x))^2. x is scaled by 4^k into
+ * [2^62, 2^64) (so the root gains exactly k bits), then one step of Zimmermann's Karatsuba
+ * square root (1999) with base 2^16: s1 = floor(sqrt(top 32 bits)) and r1 = its remainder
+ * (< 2^17), q = floor((r1 2^16 + a1) / (2 s1)) = floor((r1 2^15 + a1 / 2) / s1) (32-bit),
+ * s = s1 2^16 + q, r = (remainder of q) 2^16 + a0 - q^2, which is the root and remainder
+ * after at most one correction (r < 0: s - 1); the loops below enforce 0 <= r <= 2 s, i.e.
+ * s^2 <= y < (s + 1)^2, whatever the estimate. Then floor(sqrt(x)) = floor(s / 2^k). Was a
+ * 32-step digit-by-digit loop of 64-bit operations: about 540 instructions on a Cortex-M3,
+ * now about 80 (32-bit divisions, which the M3 and M4 have). Same results: the floor root
+ * is unique. */
 static uint32_t isqrt_floor(uint64_t x, uint64_t *rem_out)
 {
-    uint64_t rem = x, res = 0, bit = (uint64_t)1 << 62;
-    while (bit > rem) bit >>= 2;
-    while (bit != 0u) {
-        if (rem >= res + bit) {
-            rem -= res + bit;
-            res = (res >> 1) + bit;
-        } else {
-            res >>= 1;
-        }
-        bit >>= 2;
+    uint64_t y = x, s;
+    int64_t r;
+    uint32_t k = 0, n, s1, r1, a1, a0, num, q, u, res;
+    if (x == 0u) {
+        *rem_out = 0;
+        return 0;
     }
-    *rem_out = rem;
-    return (uint32_t)res;
+    if (y < ((uint64_t)1 << 32)) { y <<= 32; k += 16u; }
+    if (y < ((uint64_t)1 << 48)) { y <<= 16; k += 8u; }
+    if (y < ((uint64_t)1 << 56)) { y <<= 8; k += 4u; }
+    if (y < ((uint64_t)1 << 60)) { y <<= 4; k += 2u; }
+    if (y < ((uint64_t)1 << 62)) { y <<= 2; k += 1u; }
+    n = (uint32_t)(y >> 32);            /* [2^30, 2^32) */
+    s1 = isqrt32_floor(n);              /* [2^15, 2^16) */
+    r1 = n - s1 * s1;                   /* <= 2 s1 < 2^17 */
+    a1 = (uint32_t)(y >> 16) & 0xffffu;
+    a0 = (uint32_t)y & 0xffffu;
+    num = (r1 << 15) + (a1 >> 1);       /* < 2^32 */
+    q = num / s1;                       /* <= 2^16 */
+    u = ((num - q * s1) << 1) | (a1 & 1u); /* (r1 2^16 + a1) - 2 q s1, < 2 s1 */
+    s = ((uint64_t)s1 << 16) + q;
+    r = (int64_t)(((uint64_t)u << 16) + a0) - (int64_t)((uint64_t)q * q);
+    while (r < 0) {
+        r += (int64_t)(2u * s - 1u);
+        s--;
+    }
+    while ((uint64_t)r > 2u * s) {
+        s++;
+        r -= (int64_t)(2u * s - 1u);
+    }
+    res = (uint32_t)(s >> k);
+    *rem_out = x - (uint64_t)res * res;
+    return res;
 }
 
 uint32_t subd_isqrt64(uint64_t x)

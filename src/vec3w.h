@@ -18,6 +18,7 @@
  *    direction matters. float32: o = t / max|t_k| (so max|o_k| = 1). Q16.16: o = t * 2^-s
  *    with s = bitlen(max|t_k|) - bits, so max|o_k| is in [2^(bits-1), 2^bits); shrinking
  *    truncates toward zero, growing is exact. t = 0 gives o = 0. bits in 1..62.
+ *    subd_w3_normalize_shr: the same values, Q16.16 by shifts instead of 64-bit divisions.
  *  - subd_w3_fit(t, o, bits): as subd_w3_normalize but Q16.16 only shrinks (s >= 0), so
  *    small vectors keep their size: max|o_k| < 2^bits. float32: the same as normalize.
  *  - subd_w3_unit(c, out) (vec3w.c): c / |c| as subd_reals, (0, 0, 0) for c = 0; c is first
@@ -123,6 +124,17 @@ static inline uint64_t subd_w3_maxabs(const subd_wide *t)
     return big;
 }
 
+/* x / 2^s truncated toward zero (C's division) for s in 1..63, as a shift of the magnitude:
+ * a 64-bit division is a library call on Cortex-M (__aeabi_ldivmod, about a hundred
+ * instructions; the limit normals made nine per vertex). |x| >> s < 2^63, so the negation
+ * back is defined. */
+static inline int64_t subd_wide_shr_trunc(int64_t x, uint32_t s)
+{
+    uint64_t m = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
+    m >>= s;
+    return x < 0 ? -(int64_t)m : (int64_t)m;
+}
+
 /* o = t * 2^-s: truncating division for s > 0, exact product for s <= 0. */
 static inline void subd_w3_shift(const subd_wide *t, subd_wide *o, int32_t s)
 {
@@ -136,6 +148,20 @@ static inline void subd_w3_shift(const subd_wide *t, subd_wide *o, int32_t s)
 static inline void subd_w3_normalize(const subd_wide *t, subd_wide *o, uint32_t bits)
 {
     subd_w3_shift(t, o, (int32_t)subd_bitlen64(subd_w3_maxabs(t)) - (int32_t)bits);
+}
+
+/* subd_w3_normalize's values, the division as subd_wide_shr_trunc: the limit normals
+ * (loop_limit_internal.h, subd_w3_unit) rescale three vectors per vertex (Cortex-M3 limit
+ * stream: about 100 instructions fewer per triangle); quasi48.c measured 1% slower with the
+ * shifts (its fan's code around them), so the other callers keep the division. */
+static inline void subd_w3_normalize_shr(const subd_wide *t, subd_wide *o, uint32_t bits)
+{
+    int32_t s = (int32_t)subd_bitlen64(subd_w3_maxabs(t)) - (int32_t)bits;
+    uint32_t k;
+    if (s > 0)
+        for (k = 0; k < 3u; k++) o[k] = subd_wide_shr_trunc(t[k], (uint32_t)s);
+    else
+        subd_w3_shift(t, o, s);
 }
 
 static inline void subd_w3_fit(const subd_wide *t, subd_wide *o, uint32_t bits)
@@ -174,6 +200,7 @@ static inline void subd_w3_normalize(const subd_wide *t, subd_wide *o, uint32_t 
 }
 
 static inline void subd_w3_fit(const subd_wide *t, subd_wide *o, uint32_t bits) { subd_w3_normalize(t, o, bits); }
+static inline void subd_w3_normalize_shr(const subd_wide *t, subd_wide *o, uint32_t bits) { subd_w3_normalize(t, o, bits); }
 #endif
 
 /* A common shift for a set of wide 3-vectors whose cross products are summed (a face's

@@ -193,8 +193,49 @@ uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he
     return n;
 }
 
-/* Vertex point of centre corner v (0..2): classify by the walk, then the class's rule; a
- * vertex known to be smooth of valence 6 takes the one walk of loop.c's smooth_fast.
+/* Neighbours a vertex point keeps from its one walk (LP_VP_KEEP: more than the valences a
+ * real mesh has, few enough for the stack; a larger ring is walked a second time). */
+#define LP_VP_KEEP 12u
+
+/* One neighbour of lp_ring_x: kept (the first LP_VP_KEEP) and, on a sharp half-edge,
+ * counted (the first two kept in snb). */
+TOPO_INLINE void lp_ring_put(uint32_t xi, int sharp, uint32_t n, uint32_t *x, uint32_t *ns, uint32_t *snb)
+{
+    if (sharp) {
+        if (*ns < 2u) snb[*ns] = xi;
+        (*ns)++;
+    }
+    if (n < LP_VP_KEEP) x[n] = xi;
+}
+
+/* sp_ring_step's walk from vert_out, inlined for the vertex points (its most frequent
+ * use): the value index of each neighbour (next = 0: its vertex; next = 1: the cached edge
+ * point of its half-edge, slot), the first LP_VP_KEEP into x, the sharp ones (sharp_bit)
+ * counted into *ns and the first two into snb. Returns the number of neighbours. The same
+ * half-edges as sp_ring_step in the same order, the same tail and the same guard. */
+TOPO_INLINE uint32_t lp_ring_x(const sp_level *p, uint32_t v, int next, uint8_t sharp_bit, uint32_t *x, uint32_t *ns,
+                               uint32_t *snb)
+{
+    const uint16_t *cv = p->cv, *tw = p->tw, *sl = p->slot;
+    const uint8_t *sh = p->sh;
+    uint32_t h0 = p->vout[v], h = h0, n = 0, bound = 3u * p->h->nf;
+    for (;;) {
+        uint32_t pr = tri_prev(h), t;
+        lp_ring_put(next ? sl[h] : cv[tri_next(h)], (sh[h] & sharp_bit) != 0u, n, x, ns, snb);
+        n++;
+        t = tw[pr];
+        if (t == LP_TW_NONE) { /* the tail: the origin of the incoming boundary half-edge */
+            lp_ring_put(next ? sl[pr] : cv[pr], (sh[pr] & sharp_bit) != 0u, n, x, ns, snb);
+            return n + 1u;
+        }
+        if (t == h0 || t == LP_TW_BORDER || n >= bound) return n;
+        h = t;
+    }
+}
+
+/* Vertex point of centre corner v (0..2): one walk (lp_ring_x) gives the class and the
+ * ring, then the class's rule; a vertex known to be smooth of valence 6 takes loop.c's
+ * smooth_fast weights without classifying.
  * next = 0: of the patch's level, from its positions; *child gets the flags of v's child
  * (the class is kept by refinement). next = 1: of the level below, from the cache (v's child
  * has v's ring shape: its neighbours are the edge points of v's edges, in the same order
@@ -202,41 +243,34 @@ uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he
 void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
                          uint8_t *child)
 {
-    uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, he = 0, cls = LOOP_SMOOTH;
-    const subd_real *pv = next ? p->cpos + 3u * v : p->pos + 3u * v;
+    uint32_t n, wn, ns = 0, snb[2] = {0, 0}, cls = LOOP_SMOOTH, x[LP_VP_KEEP], i;
+    const subd_real *base = next ? p->cpos : p->pos, *pv = base + 3u * v;
     uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)LP_SH_CHILD : (uint8_t)LP_SH_RULE;
-    sp_ring it;
-#define SP_NB() (next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb)
-    if (f & TOPO_PF_SMOOTH6) {
-        n = 6;
-    } else {
-        sp_ring_begin(p, v, &it);
-        while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) {
-            if (p->sh[he] & sharp_bit) {
-                if (ns < 2u) snb[ns] = next ? p->slot[he] : nb;
-                ns++;
-            }
-            n++;
-        }
-        cls = loop_class_of(ns, (f & TOPO_PF_CORNER) != 0u);
-    }
+    n = wn = lp_ring_x(p, v, next, sharp_bit, x, &ns, snb);
+    if (f & TOPO_PF_SMOOTH6) n = 6; /* its class is known: the ring walked is summed with n = 6 */
+    else cls = loop_class_of(ns, (f & TOPO_PF_CORNER) != 0u);
     if (cls == LOOP_CORNER) {
         out[0] = pv[0];
         out[1] = pv[1];
         out[2] = pv[2];
     } else if (cls == LOOP_CREASE) {
-        const subd_real *base = next ? p->cpos : p->pos;
         loop_rule_crease(out, pv, base + 3u * snb[0], base + 3u * snb[1], ovf);
     } else {
         loop_weights w = subd_loop_weights_of(wc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
-        sp_ring_begin(p, v, &it);
-        while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
+        if (wn <= LP_VP_KEEP) {
+            for (i = 0; i < wn; i++) loop_smooth_add(acc, w, base + 3u * x[i]);
+        } else { /* a ring longer than kept: the walk again */
+            uint32_t he = 0, nb;
+            sp_ring it;
+            sp_ring_begin(p, v, &it);
+            while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE)
+                loop_smooth_add(acc, w, next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb);
+        }
         loop_smooth_end(out, acc, ovf);
         if (n == 6u) f |= TOPO_PF_SMOOTH6;
     }
-#undef SP_NB
     if (child) *child = f;
 }
 

@@ -54,12 +54,23 @@ static void add_face(const sp_level *p, uint32_t *nf, uint32_t f)
     (*nf)++;
 }
 
-/* Local index of input vertex v (appended when new). */
-static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
+/* A control patch's look-up hints (on the stack while it is built): LP_HINT entries keyed
+ * by the low bits of an input index, each the local index + 1 of the last element seen
+ * there (0: none); a hint is checked against the patch's own arrays, so a collision only
+ * costs the search the hint would have saved. */
+#define LP_HINT 64u
+
+/* Local index of input vertex v (appended when new); hint: the vertices' hints. */
+static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v, uint16_t *hint)
 {
-    uint32_t i, nv = p->h->nv;
+    uint32_t i, nv = p->h->nv, k = hint[v % LP_HINT];
+    if (k != 0u && p->cvert[k - 1u] == v) return (uint16_t)(k - 1u);
     for (i = 0; i < nv; i++)
-        if (p->cvert[i] == v) return (uint16_t)i;
+        if (p->cvert[i] == v) {
+            hint[v % LP_HINT] = (uint16_t)(i + 1u);
+            return (uint16_t)i;
+        }
+    hint[v % LP_HINT] = (uint16_t)(nv + 1u);
     p->cvert[nv] = v;
     p->pos[3u * nv] = in->pos[3u * v];
     p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
@@ -82,10 +93,12 @@ static uint8_t input_sharp(const subd_mesh *in, uint32_t h)
 void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels)
 {
     uint32_t j, nf = 0, lf, n1 = (uint32_t)1 << levels;
+    uint16_t vh[LP_HINT], fh[LP_HINT]; /* hints: vertices, faces (LP_HINT) */
+    for (j = 0; j < LP_HINT; j++) vh[j] = fh[j] = 0;
     p->h->nv = 0;
     for (j = 0; j < 3u; j++) {
         uint32_t u = in->corner_vert[3u * f + j], h0 = in->vert_out[u], h = h0, steps = 0, t;
-        (void)local_vertex(in, p, u);
+        (void)local_vertex(in, p, u, vh);
         for (;;) { /* counter-clockwise: twin(prev(h)) */
             add_face(p, &nf, h / 3u);
             t = in->twin[tri_prev(h)];
@@ -98,15 +111,17 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
                 add_face(p, &nf, h / 3u);
             }
     }
+    for (lf = 0; lf < nf; lf++) fh[p->cface[lf] % LP_HINT] = (uint16_t)(lf + 1u);
     for (lf = 0; lf < nf; lf++)
         for (j = 0; j < 3u; j++) {
             uint32_t h = 3u * p->cface[lf] + j, t = in->twin[h], l = 3u * lf + j;
-            p->cv[l] = local_vertex(in, p, in->corner_vert[h]);
+            p->cv[l] = local_vertex(in, p, in->corner_vert[h], vh);
             p->sh[l] = input_sharp(in, h);
             if (t == SUBD_NONE) {
                 p->tw[l] = LP_TW_NONE;
             } else {
-                uint32_t tf = find_face(p, nf, t / 3u);
+                uint32_t tf = fh[(t / 3u) % LP_HINT];
+                tf = (tf != 0u && p->cface[tf - 1u] == t / 3u) ? tf - 1u : find_face(p, nf, t / 3u);
                 p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)LP_TW_BORDER;
             }
         }
@@ -220,8 +235,8 @@ TOPO_INLINE uint32_t lp_ring_x(const sp_level *p, uint32_t v, int next, uint8_t 
     const uint8_t *sh = p->sh;
     uint32_t h0 = p->vout[v], h = h0, n = 0, bound = 3u * p->h->nf;
     for (;;) {
-        uint32_t pr = tri_prev(h), t;
-        lp_ring_put(next ? sl[h] : cv[tri_next(h)], (sh[h] & sharp_bit) != 0u, n, x, ns, snb);
+        uint32_t r = h % 3u, pr = r == 0u ? h + 2u : h - 1u, t; /* tri_prev, tri_next: one modulo */
+        lp_ring_put(next ? sl[h] : cv[r == 2u ? h - 2u : h + 1u], (sh[h] & sharp_bit) != 0u, n, x, ns, snb);
         n++;
         t = tw[pr];
         if (t == LP_TW_NONE) { /* the tail: the origin of the incoming boundary half-edge */
@@ -310,15 +325,28 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
         p->h->nc = 6;
         return;
     }
-    for (h = 0; h < n3; h++) {
-        uint32_t hl;
-        if (p->slot[h] != LP_NO_SLOT || (p->cv[h] >= 3u && p->cv[tri_next(h)] >= 3u)) continue;
-        hl = lower_of(p, h);
-        p->slot[h] = (uint16_t)nc;
-        if (p->tw[h] < LP_TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
-        edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
-        p->cflag[nc] = (p->sh[hl] & LP_SH_CHILD) ? (uint8_t)TOPO_PF_REGULAR : (uint8_t)TOPO_PF_SMOOTH6;
-        nc++;
+    /* face by face (its corners read once, no modulo), each edge at a corner once: at its
+     * first half-edge, which is its lower one (a twin below it has the same ends and took
+     * the slot already) */
+    for (h = 0; h < n3; h += 3u) {
+        const uint16_t *fc = p->cv + h;
+        uint32_t j;
+        if (fc[0] >= 3u && fc[1] >= 3u && fc[2] >= 3u) continue; /* no edge at a corner */
+        for (j = 0; j < 3u; j++) {
+            uint32_t j1 = j == 2u ? 0u : j + 1u, hj = h + j, t, hl;
+            if (p->slot[hj] != LP_NO_SLOT || (fc[j] >= 3u && fc[j1] >= 3u)) continue;
+            t = p->tw[hj];
+            hl = lower_of(p, hj);
+            p->slot[hj] = (uint16_t)nc;
+            if (t < LP_TW_BORDER) p->slot[t] = (uint16_t)nc;
+            if (hl == hj && !(p->sh[hj] & LP_SH_RULE) && t < LP_TW_BORDER) /* edge_point's smooth rule */
+                loop_rule_edge(p->cpos + 3u * nc, p->pos + 3u * fc[j], p->pos + 3u * fc[j1],
+                               p->pos + 3u * fc[j1 == 2u ? 0u : j1 + 1u], p->pos + 3u * p->cv[tri_prev(t)], ovf);
+            else
+                edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
+            p->cflag[nc] = (p->sh[hl] & LP_SH_CHILD) ? (uint8_t)TOPO_PF_REGULAR : (uint8_t)TOPO_PF_SMOOTH6;
+            nc++;
+        }
     }
     p->h->nc = nc;
 }
@@ -399,12 +427,15 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
         cand[n++] = (uint16_t)cf;
         for (j = 0; j < 3u; j++)
             if (p->tw[3u * cf + j] < LP_TW_BORDER) cand[n++] = (uint16_t)(p->tw[3u * cf + j] / 3u);
-    } else {
-        uint32_t he = 0;
-        sp_ring it;
-        sp_ring_begin(p, c, &it);
-        while (sp_ring_step(p, &it, &he) != SUBD_NONE) /* the tail step repeats the last face */
-            if (n == 0u || cand[n - 1u] != he / 3u) cand[n++] = (uint16_t)(he / 3u);
+    } else { /* sp_ring_step's walk, inlined: the face of each outgoing half-edge (the tail's
+              * incoming half-edge lies in the last face already) */
+        uint32_t h0 = p->vout[c], h = h0, bound = 3u * p->h->nf;
+        for (;;) {
+            uint32_t t = p->tw[h % 3u == 0u ? h + 2u : h - 1u];
+            cand[n++] = (uint16_t)(h / 3u);
+            if (t == LP_TW_NONE || t == h0 || t == LP_TW_BORDER || n >= bound) break;
+            h = t;
+        }
     }
     for (i = 1; i < n; i++) { /* insertion sort: a few entries */
         uint16_t f = cand[i];
@@ -567,8 +598,7 @@ uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t
     else if (a == 0u) { h = 3u * f + 2u; t = (uint32_t)(n1 - b); }
     else {
         uint64_t am = a - 1u;
-        return (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-               (uint64_t)f * (nm1 * (nm1 - 1u) / 2u) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
+        return subd_lp_id_base(in, f, levels) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
     }
     u = in->corner_vert[h];
     w = in->corner_vert[tri_next(h)];

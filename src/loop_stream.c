@@ -384,7 +384,7 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
     uint32_t cf = ph->cf, i, j, sm[3];
     subd_real ve[3][3], vm[3][3], h1[3][3], h2[3][3], in[3][3];
     const subd_real *pt[15];
-    uint64_t id[15];
+    uint64_t id[15], ib;
     for (i = 0; i < 3u; i++) {
         subd_lp_vertex_point(p, i, 1, wc, ovf, ve[i], 0);
         sm[i] = p->slot[3u * cf + i];
@@ -441,6 +441,7 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
                        ovf);
     if (*ovf) return SUBD_ERR_RANGE;
     /* the 15 points and their ids, once: 0..2 corners, 3..5 m, 6..8 h1, 9..11 h2, 12..14 in */
+    ib = subd_lp_id_base(r->in, r->f, r->o->levels);
     for (i = 0; i < 3u; i++) {
         uint32_t i1 = (i + 1u) % 3u, ip = (i + 2u) % 3u, lv = r->o->levels;
         uint32_t mai = (ph->ca[i] + ph->ca[i1]) / 2u, mbi = (ph->cb[i] + ph->cb[i1]) / 2u;
@@ -450,14 +451,13 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
         pt[6u + i] = h1[i];
         pt[9u + i] = h2[i];
         pt[12u + i] = in[i];
-        id[i] = subd_lp_vertex_id(r->in, r->f, ph->ca[i], ph->cb[i], lv);
-        id[3u + i] = subd_lp_vertex_id(r->in, r->f, mai, mbi, lv);
-        id[6u + i] = subd_lp_vertex_id(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv);
-        id[9u + i] = subd_lp_vertex_id(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv);
-        id[12u + i] = subd_lp_vertex_id(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv);
+        id[i] = subd_lp_vertex_id_b(r->in, r->f, ph->ca[i], ph->cb[i], lv, ib);
+        id[3u + i] = subd_lp_vertex_id_b(r->in, r->f, mai, mbi, lv, ib);
+        id[6u + i] = subd_lp_vertex_id_b(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv, ib);
+        id[9u + i] = subd_lp_vertex_id_b(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv, ib);
+        id[12u + i] = subd_lp_vertex_id_b(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv, ib);
     }
-    /* child c of the centre as points: its corners and, on its edges j -> j+1, the new
-     * points; then its children in subd_loop's order (child_corner) */
+    /* the 16 grandchildren in subd_loop's order (gc_corner) */
     return emit_tris(r, pt, id, gc_corner, 16u);
 }
 

@@ -55,21 +55,22 @@ static void add_face(const sp_level *p, uint32_t *nf, uint32_t f)
 }
 
 /* A control patch's look-up hints (on the stack while it is built): LP_HINT entries keyed
- * by the low bits of an input index, each the local index + 1 of the last element seen
- * there (0: none); a hint is checked against the patch's own arrays, so a collision only
- * costs the search the hint would have saved. */
+ * by the low bits of an input index. Vertices: a chained hash, exact: the entry holds the
+ * last local vertex of its key + 1 (0: none) and vout, unused until the patch is done, links
+ * each local vertex to the one before it with the same key (+ 1), so a new vertex is known
+ * new without a search. Faces: the local face + 1 of the last face with the key, checked
+ * against cface (a collision costs the binary search the hint would have saved). */
 #define LP_HINT 64u
 
-/* Local index of input vertex v (appended when new); hint: the vertices' hints. */
+/* Local index of input vertex v (appended when new); hint: the vertices' chains. */
 static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v, uint16_t *hint)
 {
-    uint32_t i, nv = p->h->nv, k = hint[v % LP_HINT];
-    if (k != 0u && p->cvert[k - 1u] == v) return (uint16_t)(k - 1u);
-    for (i = 0; i < nv; i++)
-        if (p->cvert[i] == v) {
-            hint[v % LP_HINT] = (uint16_t)(i + 1u);
-            return (uint16_t)i;
-        }
+    uint32_t nv = p->h->nv, k = hint[v % LP_HINT];
+    while (k != 0u) {
+        if (p->cvert[k - 1u] == v) return (uint16_t)(k - 1u);
+        k = p->vout[k - 1u];
+    }
+    p->vout[nv] = hint[v % LP_HINT]; /* the chain (build_control resets vout) */
     hint[v % LP_HINT] = (uint16_t)(nv + 1u);
     p->cvert[nv] = v;
     p->pos[3u * nv] = in->pos[3u * v];
@@ -77,7 +78,6 @@ static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v,
     p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
     /* the regular bit is set by subd_lp_build_control where a sharp edge reads it */
     p->vflag[nv] = (uint8_t)((in->vert_tag[v] & SUBD_VTAG_CORNER) ? TOPO_PF_CORNER : 0u);
-    p->vout[nv] = LP_TW_NONE;
     p->h->nv = nv + 1u;
     return (uint16_t)nv;
 }
@@ -137,6 +137,7 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
                 subd_loop_classify(in, p->cvert[u], &c);
                 if (c.regular) p->vflag[u] = (uint8_t)(p->vflag[u] | TOPO_PF_REGULAR);
             }
+    for (lf = 3; lf < p->h->nv; lf++) p->vout[lf] = LP_TW_NONE; /* the chains' links, done */
     for (j = 0; j < 3u; j++) { /* the input's vert_out, as loop.c's first level walks it */
         uint32_t h = in->vert_out[in->corner_vert[3u * f + j]];
         p->vout[j] = (uint16_t)(3u * find_face(p, nf, h / 3u) + h % 3u);
@@ -261,7 +262,9 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
     uint32_t n, wn, ns = 0, snb[2] = {0, 0}, cls = LOOP_SMOOTH, x[LP_VP_KEEP], i;
     const subd_real *base = next ? p->cpos : p->pos, *pv = base + 3u * v;
     uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)LP_SH_CHILD : (uint8_t)LP_SH_RULE;
-    n = wn = lp_ring_x(p, v, next, sharp_bit, x, &ns, snb);
+    /* two copies of the walk, each of one kind */
+    if (next) n = wn = lp_ring_x(p, v, 1, sharp_bit, x, &ns, snb);
+    else n = wn = lp_ring_x(p, v, 0, sharp_bit, x, &ns, snb);
     if (f & TOPO_PF_SMOOTH6) n = 6; /* its class is known: the ring walked is summed with n = 6 */
     else cls = loop_class_of(ns, (f & TOPO_PF_CORNER) != 0u);
     if (cls == LOOP_CORNER) {

@@ -357,16 +357,17 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
 /* ------------------------------------------------------------------------------------ */
 /* A child's 1-ring                                                                       */
 
-/* Slot of each corner of child k of local face pf (LP_NO_SLOT: a vertex this level cannot
- * compute; such a child never touches the centre's children). */
-static void child_slots(const sp_level *p, uint32_t pf, uint32_t k, uint32_t x[3])
+/* The six points of local face pf as cached values (loop.c's points 0..5: corners 0..2,
+ * then the new vertices of edges 0..2): a corner that is not a centre corner has none
+ * (LP_NO_SLOT: a vertex this level cannot compute; no child that touches the centre's
+ * children uses it). Corner j of child k is point TOPO_LOOP_CHILD_POINTS[k][j]. */
+static void face_points(const sp_level *p, uint32_t pf, uint32_t pt[6])
 {
-    static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS; /* 0..2 corners, 3 + i: m_i */
     uint32_t h = 3u * pf, j;
     for (j = 0; j < 3u; j++) {
-        uint32_t q = pts[k][j];
-        if (q >= 3u) x[j] = p->slot[h + q - 3u];
-        else x[j] = p->cv[h + q] < 3u ? p->cv[h + q] : LP_NO_SLOT;
+        uint32_t u = p->cv[h + j];
+        pt[j] = u < 3u ? u : LP_NO_SLOT;
+        pt[3u + j] = p->slot[h + j];
     }
 }
 
@@ -448,6 +449,8 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
     return n;
 }
 
+static const uint8_t child_pts[4][3] = TOPO_LOOP_CHILD_POINTS; /* 0..2 corners, 3 + i: m_i */
+
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds LP_NO_SLOT on entry
  * and on return (only the entries set here are reset); q's slot array, which fill_cache
  * rewrites afterwards, holds the parent faces and the list of children taken meanwhile. */
@@ -482,18 +485,18 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
     ncand = parent_faces(p, c, cand);
     taken = cand + ncand;
     for (ci = 0; ci < ncand; ci++) {
-        uint32_t mask;
+        uint32_t mask, fp[6];
         pf = cand[ci];
         mask = child_mask(p, pf, c, s);
+        if (mask == 0u) continue;
+        face_points(p, pf, fp);
         for (k = 0; mask != 0u; k++, mask >>= 1) {
-            uint32_t x[3];
             if (!(mask & 1u)) continue;
-            child_slots(p, pf, k, x);
             fmap[4u * pf + k] = (uint16_t)nf;
             taken[nf] = (uint16_t)(4u * pf + k);
             for (j = 0; j < 3u; j++) {
-                uint32_t sl = x[j];
-                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see child_slots */
+                uint32_t sl = fp[child_pts[k][j]];
+                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see face_points */
                     smap[sl] = (uint16_t)nv;
                     q->pos[3u * nv] = p->cpos[3u * sl];
                     q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming Loop subdivision: subd_loop's level-L triangles handed to a sink one at a time,
  * in memory that depends on the level count and the largest valence only.
- * Length (~805 lines): one concept, the depth-first patch walk with its pull-form driver,
+ * Length (~850 lines): one concept, the depth-first patch walk with its pull-form driver,
  * limit mode and the tile hand-off (layout shared with the idle levels, tile_push to the
  * sink), which all read the one level layout; the tiles themselves are loop_tile.c, the patch
  * views loop_patch.c.
@@ -51,6 +51,8 @@
  *
  * Emission order: control face by control face; inside a face depth first with children
  * 0..3, so the j-th triangle of face f is subd_loop's face 4^L f + j, corners in its order.
+ * The push form hands a batch to the sink from the one item, without the queue between
+ * (emit_tris for the general path's grandchildren, tile_push for the tiles).
  *
  * The patches (the 1-ring of one face per level, its cache, its children's 1-rings) are
  * loop_patch.c's; this file lays the levels out, walks them and emits.

@@ -54,19 +54,30 @@ static void add_face(const sp_level *p, uint32_t *nf, uint32_t f)
     (*nf)++;
 }
 
-/* Local index of input vertex v (appended when new). */
-static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v)
+/* A control patch's look-up hints (on the stack while it is built): LP_HINT entries keyed
+ * by the low bits of an input index. Vertices: a chained hash, exact: the entry holds the
+ * last local vertex of its key + 1 (0: none) and vout, unused until the patch is done, links
+ * each local vertex to the one before it with the same key (+ 1), so a new vertex is known
+ * new without a search. Faces: the local face + 1 of the last face with the key, checked
+ * against cface (a collision costs the binary search the hint would have saved). */
+#define LP_HINT 64u
+
+/* Local index of input vertex v (appended when new); hint: the vertices' chains. */
+static uint16_t local_vertex(const subd_mesh *in, const sp_level *p, uint32_t v, uint16_t *hint)
 {
-    uint32_t i, nv = p->h->nv;
-    for (i = 0; i < nv; i++)
-        if (p->cvert[i] == v) return (uint16_t)i;
+    uint32_t nv = p->h->nv, k = hint[v % LP_HINT];
+    while (k != 0u) {
+        if (p->cvert[k - 1u] == v) return (uint16_t)(k - 1u);
+        k = p->vout[k - 1u];
+    }
+    p->vout[nv] = hint[v % LP_HINT]; /* the chain (build_control resets vout) */
+    hint[v % LP_HINT] = (uint16_t)(nv + 1u);
     p->cvert[nv] = v;
     p->pos[3u * nv] = in->pos[3u * v];
     p->pos[3u * nv + 1u] = in->pos[3u * v + 1u];
     p->pos[3u * nv + 2u] = in->pos[3u * v + 2u];
     /* the regular bit is set by subd_lp_build_control where a sharp edge reads it */
     p->vflag[nv] = (uint8_t)((in->vert_tag[v] & SUBD_VTAG_CORNER) ? TOPO_PF_CORNER : 0u);
-    p->vout[nv] = LP_TW_NONE;
     p->h->nv = nv + 1u;
     return (uint16_t)nv;
 }
@@ -82,10 +93,12 @@ static uint8_t input_sharp(const subd_mesh *in, uint32_t h)
 void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, uint32_t levels)
 {
     uint32_t j, nf = 0, lf, n1 = (uint32_t)1 << levels;
+    uint16_t vh[LP_HINT], fh[LP_HINT]; /* hints: vertices, faces (LP_HINT) */
+    for (j = 0; j < LP_HINT; j++) vh[j] = fh[j] = 0;
     p->h->nv = 0;
     for (j = 0; j < 3u; j++) {
         uint32_t u = in->corner_vert[3u * f + j], h0 = in->vert_out[u], h = h0, steps = 0, t;
-        (void)local_vertex(in, p, u);
+        (void)local_vertex(in, p, u, vh);
         for (;;) { /* counter-clockwise: twin(prev(h)) */
             add_face(p, &nf, h / 3u);
             t = in->twin[tri_prev(h)];
@@ -98,15 +111,17 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
                 add_face(p, &nf, h / 3u);
             }
     }
+    for (lf = 0; lf < nf; lf++) fh[p->cface[lf] % LP_HINT] = (uint16_t)(lf + 1u);
     for (lf = 0; lf < nf; lf++)
         for (j = 0; j < 3u; j++) {
             uint32_t h = 3u * p->cface[lf] + j, t = in->twin[h], l = 3u * lf + j;
-            p->cv[l] = local_vertex(in, p, in->corner_vert[h]);
+            p->cv[l] = local_vertex(in, p, in->corner_vert[h], vh);
             p->sh[l] = input_sharp(in, h);
             if (t == SUBD_NONE) {
                 p->tw[l] = LP_TW_NONE;
             } else {
-                uint32_t tf = find_face(p, nf, t / 3u);
+                uint32_t tf = fh[(t / 3u) % LP_HINT];
+                tf = (tf != 0u && p->cface[tf - 1u] == t / 3u) ? tf - 1u : find_face(p, nf, t / 3u);
                 p->tw[l] = tf < nf ? (uint16_t)(3u * tf + t % 3u) : (uint16_t)LP_TW_BORDER;
             }
         }
@@ -122,6 +137,7 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
                 subd_loop_classify(in, p->cvert[u], &c);
                 if (c.regular) p->vflag[u] = (uint8_t)(p->vflag[u] | TOPO_PF_REGULAR);
             }
+    for (lf = 3; lf < p->h->nv; lf++) p->vout[lf] = LP_TW_NONE; /* the chains' links, done */
     for (j = 0; j < 3u; j++) { /* the input's vert_out, as loop.c's first level walks it */
         uint32_t h = in->vert_out[in->corner_vert[3u * f + j]];
         p->vout[j] = (uint16_t)(3u * find_face(p, nf, h / 3u) + h % 3u);
@@ -193,8 +209,49 @@ uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he
     return n;
 }
 
-/* Vertex point of centre corner v (0..2): classify by the walk, then the class's rule; a
- * vertex known to be smooth of valence 6 takes the one walk of loop.c's smooth_fast.
+/* Neighbours a vertex point keeps from its one walk (LP_VP_KEEP: more than the valences a
+ * real mesh has, few enough for the stack; a larger ring is walked a second time). */
+#define LP_VP_KEEP 12u
+
+/* One neighbour of lp_ring_x: kept (the first LP_VP_KEEP) and, on a sharp half-edge,
+ * counted (the first two kept in snb). */
+TOPO_INLINE void lp_ring_put(uint32_t xi, int sharp, uint32_t n, uint32_t *x, uint32_t *ns, uint32_t *snb)
+{
+    if (sharp) {
+        if (*ns < 2u) snb[*ns] = xi;
+        (*ns)++;
+    }
+    if (n < LP_VP_KEEP) x[n] = xi;
+}
+
+/* sp_ring_step's walk from vert_out, inlined for the vertex points (its most frequent
+ * use): the value index of each neighbour (next = 0: its vertex; next = 1: the cached edge
+ * point of its half-edge, slot), the first LP_VP_KEEP into x, the sharp ones (sharp_bit)
+ * counted into *ns and the first two into snb. Returns the number of neighbours. The same
+ * half-edges as sp_ring_step in the same order, the same tail and the same guard. */
+TOPO_INLINE uint32_t lp_ring_x(const sp_level *p, uint32_t v, int next, uint8_t sharp_bit, uint32_t *x, uint32_t *ns,
+                               uint32_t *snb)
+{
+    const uint16_t *cv = p->cv, *tw = p->tw, *sl = p->slot;
+    const uint8_t *sh = p->sh;
+    uint32_t h0 = p->vout[v], h = h0, n = 0, bound = 3u * p->h->nf;
+    for (;;) {
+        uint32_t r = h % 3u, pr = r == 0u ? h + 2u : h - 1u, t; /* tri_prev, tri_next: one modulo */
+        lp_ring_put(next ? sl[h] : cv[r == 2u ? h - 2u : h + 1u], (sh[h] & sharp_bit) != 0u, n, x, ns, snb);
+        n++;
+        t = tw[pr];
+        if (t == LP_TW_NONE) { /* the tail: the origin of the incoming boundary half-edge */
+            lp_ring_put(next ? sl[pr] : cv[pr], (sh[pr] & sharp_bit) != 0u, n, x, ns, snb);
+            return n + 1u;
+        }
+        if (t == h0 || t == LP_TW_BORDER || n >= bound) return n;
+        h = t;
+    }
+}
+
+/* Vertex point of centre corner v (0..2): one walk (lp_ring_x) gives the class and the
+ * ring, then the class's rule; a vertex known to be smooth of valence 6 takes loop.c's
+ * smooth_fast weights without classifying.
  * next = 0: of the patch's level, from its positions; *child gets the flags of v's child
  * (the class is kept by refinement). next = 1: of the level below, from the cache (v's child
  * has v's ring shape: its neighbours are the edge points of v's edges, in the same order
@@ -202,41 +259,36 @@ uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he
 void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
                          uint8_t *child)
 {
-    uint32_t n = 0, ns = 0, snb[2] = {0, 0}, nb, he = 0, cls = LOOP_SMOOTH;
-    const subd_real *pv = next ? p->cpos + 3u * v : p->pos + 3u * v;
+    uint32_t n, wn, ns = 0, snb[2] = {0, 0}, cls = LOOP_SMOOTH, x[LP_VP_KEEP], i;
+    const subd_real *base = next ? p->cpos : p->pos, *pv = base + 3u * v;
     uint8_t f = next ? p->cflag[v] : p->vflag[v], sharp_bit = next ? (uint8_t)LP_SH_CHILD : (uint8_t)LP_SH_RULE;
-    sp_ring it;
-#define SP_NB() (next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb)
-    if (f & TOPO_PF_SMOOTH6) {
-        n = 6;
-    } else {
-        sp_ring_begin(p, v, &it);
-        while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) {
-            if (p->sh[he] & sharp_bit) {
-                if (ns < 2u) snb[ns] = next ? p->slot[he] : nb;
-                ns++;
-            }
-            n++;
-        }
-        cls = loop_class_of(ns, (f & TOPO_PF_CORNER) != 0u);
-    }
+    /* two copies of the walk, each of one kind */
+    if (next) n = wn = lp_ring_x(p, v, 1, sharp_bit, x, &ns, snb);
+    else n = wn = lp_ring_x(p, v, 0, sharp_bit, x, &ns, snb);
+    if (f & TOPO_PF_SMOOTH6) n = 6; /* its class is known: the ring walked is summed with n = 6 */
+    else cls = loop_class_of(ns, (f & TOPO_PF_CORNER) != 0u);
     if (cls == LOOP_CORNER) {
         out[0] = pv[0];
         out[1] = pv[1];
         out[2] = pv[2];
     } else if (cls == LOOP_CREASE) {
-        const subd_real *base = next ? p->cpos : p->pos;
         loop_rule_crease(out, pv, base + 3u * snb[0], base + 3u * snb[1], ovf);
     } else {
         loop_weights w = subd_loop_weights_of(wc, n, ovf);
         subd_acc acc[3];
         loop_smooth_begin(acc, w, pv);
-        sp_ring_begin(p, v, &it);
-        while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE) loop_smooth_add(acc, w, SP_NB());
+        if (wn <= LP_VP_KEEP) {
+            for (i = 0; i < wn; i++) loop_smooth_add(acc, w, base + 3u * x[i]);
+        } else { /* a ring longer than kept: the walk again */
+            uint32_t he = 0, nb;
+            sp_ring it;
+            sp_ring_begin(p, v, &it);
+            while ((nb = sp_ring_step(p, &it, &he)) != SUBD_NONE)
+                loop_smooth_add(acc, w, next ? p->cpos + 3u * p->slot[he] : p->pos + 3u * nb);
+        }
         loop_smooth_end(out, acc, ovf);
         if (n == 6u) f |= TOPO_PF_SMOOTH6;
     }
-#undef SP_NB
     if (child) *child = f;
 }
 
@@ -276,15 +328,28 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
         p->h->nc = 6;
         return;
     }
-    for (h = 0; h < n3; h++) {
-        uint32_t hl;
-        if (p->slot[h] != LP_NO_SLOT || (p->cv[h] >= 3u && p->cv[tri_next(h)] >= 3u)) continue;
-        hl = lower_of(p, h);
-        p->slot[h] = (uint16_t)nc;
-        if (p->tw[h] < LP_TW_BORDER) p->slot[p->tw[h]] = (uint16_t)nc;
-        edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
-        p->cflag[nc] = (p->sh[hl] & LP_SH_CHILD) ? (uint8_t)TOPO_PF_REGULAR : (uint8_t)TOPO_PF_SMOOTH6;
-        nc++;
+    /* face by face (its corners read once, no modulo), each edge at a corner once: at its
+     * first half-edge, which is its lower one (a twin below it has the same ends and took
+     * the slot already) */
+    for (h = 0; h < n3; h += 3u) {
+        const uint16_t *fc = p->cv + h;
+        uint32_t j;
+        if (fc[0] >= 3u && fc[1] >= 3u && fc[2] >= 3u) continue; /* no edge at a corner */
+        for (j = 0; j < 3u; j++) {
+            uint32_t j1 = j == 2u ? 0u : j + 1u, hj = h + j, t, hl;
+            if (p->slot[hj] != LP_NO_SLOT || (fc[j] >= 3u && fc[j1] >= 3u)) continue;
+            t = p->tw[hj];
+            hl = lower_of(p, hj);
+            p->slot[hj] = (uint16_t)nc;
+            if (t < LP_TW_BORDER) p->slot[t] = (uint16_t)nc;
+            if (hl == hj && !(p->sh[hj] & LP_SH_RULE) && t < LP_TW_BORDER) /* edge_point's smooth rule */
+                loop_rule_edge(p->cpos + 3u * nc, p->pos + 3u * fc[j], p->pos + 3u * fc[j1],
+                               p->pos + 3u * fc[j1 == 2u ? 0u : j1 + 1u], p->pos + 3u * p->cv[tri_prev(t)], ovf);
+            else
+                edge_point(p, hl, rule, ovf, p->cpos + 3u * nc);
+            p->cflag[nc] = (p->sh[hl] & LP_SH_CHILD) ? (uint8_t)TOPO_PF_REGULAR : (uint8_t)TOPO_PF_SMOOTH6;
+            nc++;
+        }
     }
     p->h->nc = nc;
 }
@@ -292,16 +357,17 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
 /* ------------------------------------------------------------------------------------ */
 /* A child's 1-ring                                                                       */
 
-/* Slot of each corner of child k of local face pf (LP_NO_SLOT: a vertex this level cannot
- * compute; such a child never touches the centre's children). */
-static void child_slots(const sp_level *p, uint32_t pf, uint32_t k, uint32_t x[3])
+/* The six points of local face pf as cached values (loop.c's points 0..5: corners 0..2,
+ * then the new vertices of edges 0..2): a corner that is not a centre corner has none
+ * (LP_NO_SLOT: a vertex this level cannot compute; no child that touches the centre's
+ * children uses it). Corner j of child k is point TOPO_LOOP_CHILD_POINTS[k][j]. */
+static void face_points(const sp_level *p, uint32_t pf, uint32_t pt[6])
 {
-    static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS; /* 0..2 corners, 3 + i: m_i */
     uint32_t h = 3u * pf, j;
     for (j = 0; j < 3u; j++) {
-        uint32_t q = pts[k][j];
-        if (q >= 3u) x[j] = p->slot[h + q - 3u];
-        else x[j] = p->cv[h + q] < 3u ? p->cv[h + q] : LP_NO_SLOT;
+        uint32_t u = p->cv[h + j];
+        pt[j] = u < 3u ? u : LP_NO_SLOT;
+        pt[3u + j] = p->slot[h + j];
     }
 }
 
@@ -365,12 +431,15 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
         cand[n++] = (uint16_t)cf;
         for (j = 0; j < 3u; j++)
             if (p->tw[3u * cf + j] < LP_TW_BORDER) cand[n++] = (uint16_t)(p->tw[3u * cf + j] / 3u);
-    } else {
-        uint32_t he = 0;
-        sp_ring it;
-        sp_ring_begin(p, c, &it);
-        while (sp_ring_step(p, &it, &he) != SUBD_NONE) /* the tail step repeats the last face */
-            if (n == 0u || cand[n - 1u] != he / 3u) cand[n++] = (uint16_t)(he / 3u);
+    } else { /* sp_ring_step's walk, inlined: the face of each outgoing half-edge (the tail's
+              * incoming half-edge lies in the last face already) */
+        uint32_t h0 = p->vout[c], h = h0, bound = 3u * p->h->nf;
+        for (;;) {
+            uint32_t t = p->tw[h % 3u == 0u ? h + 2u : h - 1u];
+            cand[n++] = (uint16_t)(h / 3u);
+            if (t == LP_TW_NONE || t == h0 || t == LP_TW_BORDER || n >= bound) break;
+            h = t;
+        }
     }
     for (i = 1; i < n; i++) { /* insertion sort: a few entries */
         uint16_t f = cand[i];
@@ -379,6 +448,8 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
     }
     return n;
 }
+
+static const uint8_t child_pts[4][3] = TOPO_LOOP_CHILD_POINTS; /* 0..2 corners, 3 + i: m_i */
 
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds LP_NO_SLOT on entry
  * and on return (only the entries set here are reset); q's slot array, which fill_cache
@@ -414,18 +485,18 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
     ncand = parent_faces(p, c, cand);
     taken = cand + ncand;
     for (ci = 0; ci < ncand; ci++) {
-        uint32_t mask;
+        uint32_t mask, fp[6];
         pf = cand[ci];
         mask = child_mask(p, pf, c, s);
+        if (mask == 0u) continue;
+        face_points(p, pf, fp);
         for (k = 0; mask != 0u; k++, mask >>= 1) {
-            uint32_t x[3];
             if (!(mask & 1u)) continue;
-            child_slots(p, pf, k, x);
             fmap[4u * pf + k] = (uint16_t)nf;
             taken[nf] = (uint16_t)(4u * pf + k);
             for (j = 0; j < 3u; j++) {
-                uint32_t sl = x[j];
-                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see child_slots */
+                uint32_t sl = fp[child_pts[k][j]];
+                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see face_points */
                     smap[sl] = (uint16_t)nv;
                     q->pos[3u * nv] = p->cpos[3u * sl];
                     q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
@@ -533,8 +604,7 @@ uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t
     else if (a == 0u) { h = 3u * f + 2u; t = (uint32_t)(n1 - b); }
     else {
         uint64_t am = a - 1u;
-        return (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-               (uint64_t)f * (nm1 * (nm1 - 1u) / 2u) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
+        return subd_lp_id_base(in, f, levels) + am * nm1 - am * (am + 1u) / 2u + (b - 1u);
     }
     u = in->corner_vert[h];
     w = in->corner_vert[tri_next(h)];

@@ -99,6 +99,24 @@ void subd_lp_view_fill(const sp_level *p, subd_mesh *m);
 /* Global id of lattice point (a, b) (units 1/2^levels) of input face f: subd_loop.h's formula
  * for the Loop streams. */
 uint64_t subd_lp_vertex_id(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels);
+/* The interior ids' constant part for face f (V + C (N - 1) + f (N - 1)(N - 2)/2). */
+static inline uint64_t subd_lp_id_base(const subd_mesh *in, uint32_t f, uint32_t levels)
+{
+    uint64_t nm1 = ((uint64_t)1 << levels) - 1u;
+    return (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 + (uint64_t)f * (nm1 * (nm1 - 1u) / 2u);
+}
+/* subd_lp_vertex_id with the face interior's closed form tried first (base:
+ * subd_lp_id_base), for the emitters, most of whose points lie inside the control face. */
+static inline uint64_t subd_lp_vertex_id_b(const subd_mesh *in, uint32_t f, uint32_t a, uint32_t b, uint32_t levels,
+                                           uint64_t base)
+{
+    uint32_t n1 = (uint32_t)1 << levels;
+    if (a - 1u < n1 - 1u && b - 1u < n1 - 1u && a + b < n1) {
+        uint64_t am = a - 1u;
+        return base + am * (n1 - 1u) - am * (am + 1u) / 2u + (b - 1u);
+    }
+    return subd_lp_vertex_id(in, f, a, b, levels);
+}
 /* Largest valence of the input (outgoing half-edges, plus one on a boundary). */
 uint32_t subd_lp_max_valence(const subd_mesh *in);
 /* Level k's arrays in a Loop stream's layout (loop_stream.c, loop_adapt.c): level 0's block

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Streaming Loop subdivision: subd_loop's level-L triangles handed to a sink one at a time,
  * in memory that depends on the level count and the largest valence only.
- * Length (~805 lines): one concept, the depth-first patch walk with its pull-form driver,
+ * Length (~850 lines): one concept, the depth-first patch walk with its pull-form driver,
  * limit mode and the tile hand-off (layout shared with the idle levels, tile_push to the
  * sink), which all read the one level layout; the tiles themselves are loop_tile.c, the patch
  * views loop_patch.c.
@@ -51,6 +51,8 @@
  *
  * Emission order: control face by control face; inside a face depth first with children
  * 0..3, so the j-th triangle of face f is subd_loop's face 4^L f + j, corners in its order.
+ * The push form hands a batch to the sink from the one item, without the queue between
+ * (emit_tris for the general path's grandchildren, tile_push for the tiles).
  *
  * The patches (the 1-ring of one face per level, its cache, its children's 1-rings) are
  * loop_patch.c's; this file lays the levels out, walks them and emits.
@@ -270,6 +272,49 @@ static int emit_tri(const sp_run *r, const subd_real *const x[3], const uint64_t
     return subd_stream_q_commit(r->q);
 }
 
+/* n triangles of points pt and ids id, corners ix (3 per triangle): the push form hands them
+ * to the sink straight from the one item (face, level and zero normals written once, as
+ * tile_emit does), the pull form puts each in the caller's buffer or the ring. Returns 0 or
+ * the sink's value (kept in q->stop, as subd_stream_q_commit leaves it). */
+static int emit_tris(const sp_run *r, const subd_real *const *pt, const uint64_t *id, const uint8_t *ix, uint32_t n)
+{
+    subd_stream_q *q = r->q;
+    subd_tri *t = (subd_tri *)(void *)q->one;
+    uint32_t i, j, k;
+    if (!t || !q->ts) {
+        for (i = 0; i < n; i++, ix += 3) {
+            const subd_real *x[3];
+            uint64_t xi[3];
+            int st;
+            for (j = 0; j < 3u; j++) {
+                x[j] = pt[ix[j]];
+                xi[j] = id[ix[j]];
+            }
+            if ((st = emit_tri(r, x, xi)) != 0) return st;
+        }
+        return 0;
+    }
+    t->face = r->f;
+    t->level = r->o->levels;
+    for (j = 0; j < 3u; j++)
+        for (k = 0; k < 3u; k++) t->normal[j][k] = 0;
+    for (i = 0; i < n; i++, ix += 3) {
+        int st;
+        for (j = 0; j < 3u; j++) {
+            const subd_real *x = pt[ix[j]];
+            t->pos[j][0] = x[0];
+            t->pos[j][1] = x[1];
+            t->pos[j][2] = x[2];
+            t->id[j] = id[ix[j]];
+        }
+        if ((st = q->ts->tri(q->ts->ctx, t)) != 0) {
+            q->stop = st;
+            return st;
+        }
+    }
+    return 0;
+}
+
 /* The corners of child k of a triangle whose corners are points 0..2 and whose edge j -> j+1
  * has point 3 + j: child k < 3 is (v_k, m_k, m_k-1), child 3 is (m0, m1, m2) (loop.c's order,
  * topo.h's table). */
@@ -304,6 +349,22 @@ SUBD_NOINLINE static int emit_children(const sp_run *r, const sp_level *p)
     return 0;
 }
 
+/* The 16 grandchildren's corners as emit_grandchildren's points (0..2 corners, 3..5 m,
+ * 6..8 h1, 9..11 h2, 12..14 in): child c < 3 of the centre has the six points (v_c, m_c,
+ * m_c-1, h1_c, in_c, h2_c-1), child 3 (m0, m1, m2, in_1, in_2, in_0) (its corners, then
+ * the new points on its edges j -> j+1: GC_SIX(c, q)), and its grandchild g has corner j at
+ * point GC_SIX(c, TOPO_LOOP_CP(g, j)): subd_loop's order, a constant table. */
+#define GC_SIX(c, q)                                                                                         \
+    ((c) < 3u ? ((q) == 0u ? (c) : (q) == 1u ? 3u + (c) : (q) == 2u ? 3u + ((c) + 2u) % 3u                   \
+                 : (q) == 3u ? 6u + (c) : (q) == 4u ? 12u + (c) : 9u + ((c) + 2u) % 3u)                      \
+              : ((q) < 3u ? 3u + (q) : (q) == 3u ? 13u : (q) == 4u ? 14u : 12u))
+#define GC_T(c, g) GC_SIX(c, TOPO_LOOP_CP(g, 0u)), GC_SIX(c, TOPO_LOOP_CP(g, 1u)), GC_SIX(c, TOPO_LOOP_CP(g, 2u))
+#define GC_C(c) GC_T(c, 0u), GC_T(c, 1u), GC_T(c, 2u), GC_T(c, 3u)
+static const uint8_t gc_corner[48] = {GC_C(0u), GC_C(1u), GC_C(2u), GC_C(3u)};
+#undef GC_C
+#undef GC_T
+#undef GC_SIX
+
 /* The last two levels at once: the 16 level-L triangles of the centre of level L-2 (p), from
  * its cache (the level L-1 values of its children's 1-rings) and its topology, without
  * building the four level L-1 patches. Level L-1 seen from here, centre edge j = a -> b
@@ -322,10 +383,10 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
     const sp_head *ph = p->h;
     const subd_real *cp = p->cpos;
     subd_loop_boundary rule = r->o->boundary;
-    uint32_t cf = ph->cf, i, j, c, sm[3];
+    uint32_t cf = ph->cf, i, j, sm[3];
     subd_real ve[3][3], vm[3][3], h1[3][3], h2[3][3], in[3][3];
     const subd_real *pt[15];
-    uint64_t id[15];
+    uint64_t id[15], ib;
     for (i = 0; i < 3u; i++) {
         subd_lp_vertex_point(p, i, 1, wc, ovf, ve[i], 0);
         sm[i] = p->slot[3u * cf + i];
@@ -382,6 +443,7 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
                        ovf);
     if (*ovf) return SUBD_ERR_RANGE;
     /* the 15 points and their ids, once: 0..2 corners, 3..5 m, 6..8 h1, 9..11 h2, 12..14 in */
+    ib = subd_lp_id_base(r->in, r->f, r->o->levels);
     for (i = 0; i < 3u; i++) {
         uint32_t i1 = (i + 1u) % 3u, ip = (i + 2u) % 3u, lv = r->o->levels;
         uint32_t mai = (ph->ca[i] + ph->ca[i1]) / 2u, mbi = (ph->cb[i] + ph->cb[i1]) / 2u;
@@ -391,35 +453,14 @@ SUBD_NOINLINE static int emit_grandchildren(const sp_run *r, const sp_level *p, 
         pt[6u + i] = h1[i];
         pt[9u + i] = h2[i];
         pt[12u + i] = in[i];
-        id[i] = subd_lp_vertex_id(r->in, r->f, ph->ca[i], ph->cb[i], lv);
-        id[3u + i] = subd_lp_vertex_id(r->in, r->f, mai, mbi, lv);
-        id[6u + i] = subd_lp_vertex_id(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv);
-        id[9u + i] = subd_lp_vertex_id(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv);
-        id[12u + i] = subd_lp_vertex_id(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv);
+        id[i] = subd_lp_vertex_id_b(r->in, r->f, ph->ca[i], ph->cb[i], lv, ib);
+        id[3u + i] = subd_lp_vertex_id_b(r->in, r->f, mai, mbi, lv, ib);
+        id[6u + i] = subd_lp_vertex_id_b(r->in, r->f, (ph->ca[i] + mai) / 2u, (ph->cb[i] + mbi) / 2u, lv, ib);
+        id[9u + i] = subd_lp_vertex_id_b(r->in, r->f, (mai + ph->ca[i1]) / 2u, (mbi + ph->cb[i1]) / 2u, lv, ib);
+        id[12u + i] = subd_lp_vertex_id_b(r->in, r->f, (mai + map) / 2u, (mbi + mbp) / 2u, lv, ib);
     }
-    /* child c of the centre as points: its corners and, on its edges j -> j+1, the new
-     * points; then its children in subd_loop's order (child_corner) */
-    for (c = 0; c < 4u; c++) {
-        uint32_t cpr = (c + 2u) % 3u, g, six[6];
-        if (c < 3u) {
-            six[0] = c; six[1] = 3u + c; six[2] = 3u + cpr;
-            six[3] = 6u + c; six[4] = 12u + c; six[5] = 9u + cpr;
-        } else {
-            six[0] = 3u; six[1] = 4u; six[2] = 5u;
-            six[3] = 13u; six[4] = 14u; six[5] = 12u;
-        }
-        for (g = 0; g < 4u; g++) {
-            const subd_real *y[3];
-            uint64_t yi[3];
-            int st;
-            for (j = 0; j < 3u; j++) {
-                y[j] = pt[six[child_corner[g][j]]];
-                yi[j] = id[six[child_corner[g][j]]];
-            }
-            if ((st = emit_tri(r, y, yi)) != 0) return st;
-        }
-    }
-    return 0;
+    /* the 16 grandchildren in subd_loop's order (gc_corner) */
+    return emit_tris(r, pt, id, gc_corner, 16u);
 }
 
 /* Limit mode: the centre of level L's patch, each corner moved to its limit position with its

@@ -875,6 +875,64 @@ static void stream_tiles_partial(void)
     (void)hash;
 }
 
+/* A disk cut from the nefertiti scan (test/data/nefertiti_patch.obj: 115 vertices, interior
+ * valences 4..10, a boundary of 38): almost every patch takes the general path (the ring
+ * walks of the vertex points, the control patch's look-up hints, whose 64 entries the
+ * vertex and face indices overflow, the grandchildren pushed to the sink), next to regular
+ * children tiled one level down. The stream equals subd_loop bit for bit, ids included
+ * (levels 1..4, levels 1..3 with the B-spline boundary rule; the device compares what its
+ * test arena holds), and a sink that stops inside the grandchildren gets exactly its
+ * triangles (level 3, the device level 2). */
+static void stream_irregular(void)
+{
+    uint32_t hash = 2166136261u, levels, k, g0 = g_streams;
+    subd_arena a;
+    subd_mesh in;
+    subd_diag d;
+    static const uint32_t stops[] = {1, 15, 16, 17, 250};
+    subd_diag_clear(&d);
+    subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+    if (!load_file(&a, "test/data/nefertiti_patch.obj", &in)) return;
+    CHECK_EQ(in.num_verts, 115u);
+    for (levels = 1; levels <= 4u; levels++) {
+        compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0u, &hash);
+        if (levels <= 3u) compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, 0u, &hash);
+    }
+    for (k = 0; k < sizeof stops / sizeof stops[0]; k++) {
+        subd_loop_opts o;
+        subd_loop_sink sink;
+        uint32_t n = 0, mark = subd_arena_mark(&a);
+        cmp_sink s;
+        subd_mesh ref;
+        uint64_t *v2id;
+        o.levels = H_HOST ? 3u : 2u; /* the device's test arena holds subd_loop's level 2 */
+        o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+        o.flags = 0;
+        if (!CHECK_OK(subd_loop(&a, &in, &o, &ref, &d), &d)) return;
+        v2id = (uint64_t *)subd_arena_alloc(&a, ref.num_verts * 8u);
+        if (!CHECK(v2id != 0)) return;
+        for (n = 0; n < ref.num_verts; n++) v2id[n] = UINT64_MAX;
+        s.ref = &ref;
+        s.lpos = s.lnrm = 0;
+        s.v2id = v2id;
+        s.j = s.bad_pos = s.bad_id = 0;
+        s.stop_after = stops[k];
+        s.hash = 0;
+        sink.tri = cmp_tri;
+        sink.ctx = &s;
+        CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), 7);
+        CHECK_EQ(d.face, (stops[k] - 1u) >> (2u * o.levels)); /* 4^L triangles per control face */
+        CHECK_EQ(s.j, stops[k]);
+        CHECK_EQ(s.bad_pos, 0);
+        CHECK_EQ(s.bad_id, 0);
+        subd_arena_rewind(&a, mark);
+    }
+    h_str("  irregular disk: streams compared ");
+    h_u32(g_streams - g0);
+    h_nl();
+    (void)hash;
+}
+
 const test_case suite_loop_stream[] = {
     {"stream_equals_loop", stream_equals_loop},
     {"stream_hashes", stream_hashes},
@@ -888,5 +946,6 @@ const test_case suite_loop_stream[] = {
     {"stream_tiles_huge", stream_tiles_huge},
     {"stream_level6", stream_level6},
     {"stream_tiles_partial", stream_tiles_partial},
+    {"stream_irregular", stream_irregular},
     {0, 0},
 };

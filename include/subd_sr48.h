@@ -353,9 +353,10 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
  *   Measured (uniform): on spot 0.4 / 1.0 / 1.7 M faces/s at 2 / 4 / 6 steps, 0.2-0.7x /
  *   0.5-1.2x / 1.8-2.4x the faces/s of subd_sr48_build + subd_sr48_extract in the same run
- *   (a loaded host; bench -s sr48stream); 1 315 instructions per triangle on the Cortex-M4F
- *   at 8 steps with the demo's checksum sink (about 310 of them: the sink), M3 Q16.16:
- *   1 435 (before the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868; make demo).
+ *   (a loaded host; bench -s sr48stream); 783 instructions per triangle on the Cortex-M4F
+ *   at 8 steps into a counting sink (1 095 with the demo's checksum sink), M3 Q16.16: 893
+ *   (1 208; before the window changes of 0.6.0 1 315 / 1 435 with the checksum sink, before
+ *   the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868; make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
  *   max_level) of the same hierarchy, as a set (depth first per level-0 triangle, not the
  *   extraction's order), positions bit for bit and the same ids rule. Each diamond is
@@ -388,13 +389,16 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   computed once for the decisions of its neighbours; a decision of level >= max_level -
  *   SUBD_SR48_STREAM_CHORD_TILE_ reads its star triangles' deviations from the tiles of
  *   their ancestors at that level (one tile per root for all the levels below it).
- *   O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron at 9
- *   steps, eps 0.01, about 0.50 M Cortex-M4F instructions per output face (M3 Q16.16: 0.59 M;
- *   make demo), and on the host 0.15x / 0.15x the output faces/s of subd_sr48_build +
- *   subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench -s sr48chord, a
- *   same-run ratio under load): every finest vertex is computed several times, and exactly
- *   (no a-priori bound), so the stream cannot be faster than the uniform stream of
- *   max_level (about 90 k M4F instructions per output face in this case).
+ *   The tiles and the descents crop each level to ring 1 of the descendants and the
+ *   partners of their triangles (as the uniform tile), checked exact, else again with two
+ *   rings. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron
+ *   at 9 steps, eps 0.01, about 0.21 M Cortex-M4F instructions per output face (M3 Q16.16:
+ *   0.28 M; make demo), and on the host 0.25x / 0.29x the output faces/s of
+ *   subd_sr48_build + subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench
+ *   -s sr48chord, a same-run ratio under load): every finest vertex is computed about twice
+ *   (a tile root's tile is remade when the memo of SUBD_SR48_STREAM_CHORD_MASKS_ roots lost
+ *   it), and exactly (no a-priori bound), so the stream cannot be faster than the uniform
+ *   stream of max_level (about 28 k M4F instructions per output face in this case).
  *   Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
  * leaf's level). Ids: a level-0
@@ -524,8 +528,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * a cache of finest positions (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3
  * subd_reals), the answers of SUBD_SR48_STREAM_CHORD_DECIDED_ diamonds (2 words each), the
  * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (5 words each, in sets of 2,
- * least recently used out; with 6-level tiles 512 measured 0.81x the instructions of the
- * default 256 on the icosahedron at 9 steps for 5 120 bytes more), the walk's
+ * least recently used out; with 6-level tiles 512 measured 0.83x the x86 instructions of
+ * the default 256 on the icosahedron at 9 steps, 226 M against 273 M, for 5 120 bytes
+ * more), the walk's
  * finest positions (3 subd_reals per level + 4) and the tile's nodes (3 corners, 6 bytes,
  * and a flag per node of a tile of m levels: 2^(m + 1) nodes), interpolants (9 per level,
  * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..6, default

@@ -542,26 +542,42 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
                              const int32_t f2[2], loop_weights w, uint32_t *lo)
 {
     static const uint8_t qrot[4] = {0u, 2u, 4u, 1u};
-    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, mp = 1u << (tl->depth - tl->split), x, y, k = 0;
-    uint32_t qc = c >> (2u * (tl->split - 1u)), ry = 0xffffffffu;
+    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, mp = 1u << (tl->depth - tl->split), x;
+    uint32_t qc = c >> (2u * (tl->split - 1u));
     const subd_real *M = tl->mpos;
-    int32_t o3[12];
+    int32_t o3[12], Y, ymin, ymax;
     if (tl->split == 1u || (c & 3u) == 0u) { /* the quarter's first piece */
         lt_frame fr;
         fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
         fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1; fr.ds = 3;
         lt_rows(g, s, &fr, tl->mpos, w);
     }
-    for (y = 0; y <= mp; y++) {
-        int32_t X = po[0] + (int32_t)y * f2[0], Y = po[1] + (int32_t)y * f2[1];
-        for (x = 0; x + y <= mp; x++, k++, X += f1[0], Y += f1[1]) { /* k = lt_vi(mp, x, y) */
+    /* by rows Y of the quarter (the ring's offsets are a row's, the margin index steps by
+     * one), X over the piece's part of the row: x = f2y dX - f2x dY >= 0,
+     * y = -f1y dX + f1x dY >= 0, x + y <= mp (dX = X - po[0], dY = Y - po[1]; the frame has
+     * determinant 1) */
+    ymin = ymax = po[1];
+    for (x = 1; x < 3u; x++) {
+        int32_t cy = po[1] + (int32_t)mp * (x == 1u ? f1[1] : f2[1]);
+        if (cy < ymin) ymin = cy;
+        if (cy > ymax) ymax = cy;
+    }
+    for (Y = ymin; Y <= ymax; Y++) {
+        int32_t dY = Y - po[1], a = -0x40000000, b = 0x40000000, X, lx, ly;
+        uint32_t l0;
+        lt_bound(f2[1], -f2[0] * dY, &a, &b);
+        lt_bound(-f1[1], f1[0] * dY, &a, &b);
+        lt_bound(f1[1] - f2[1], (int32_t)mp - (f1[0] - f2[0]) * dY, &a, &b);
+        if (a > b) continue;
+        lt_ring_offsets((int32_t)(S - (uint32_t)Y), o3); /* row Y + 1 of the margin grid */
+        lx = f2[1] * a - f2[0] * dY;
+        ly = -f1[1] * a + f1[0] * dY;
+        X = po[0] + a;
+        l0 = lt_vi(S, (uint32_t)X + 1u, (uint32_t)Y + 1u);
+        for (; X <= po[0] + b; X++, l0++, lx += f2[1], ly -= f1[1]) {
             int32_t px = ox + X * e1[0] + Y * e2[0], py = oy + X * e1[1] + Y * e2[1];
             uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[qc];
-            uint32_t l0 = lt_vi(S, (uint32_t)X + 1u, (uint32_t)Y + 1u);
-            if ((uint32_t)Y != ry) { /* the ring's offsets for row Y + 1 of the margin grid */
-                ry = (uint32_t)Y;
-                lt_ring_offsets((int32_t)(S - ry), o3);
-            }
+            uint32_t k = lt_vi(mp, (uint32_t)lx, (uint32_t)ly);
             if (d >= 6u) d -= 6u;
             subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->q[k].p, tl->qnrm + 3u * k, lo);
         }

@@ -46,10 +46,12 @@
 /* Levels the Loop stream refines breadth first in one regular tile (src/loop_tile.c): 2..5,
  * or 0 for none; SUBD_LOOP_TILE_LEVELS_LIMIT likewise for limit mode (whose tile also holds
  * limit positions and normals). More levels spread a patch's cost over more triangles
- * (4^levels per tile: Cortex-M4F, level 6, 387 instructions per triangle at 4, 310 at 5)
- * and take more arena (the tile's block, 2.3 KB at 4 and 6.6 KB at 5, shares memory with
- * the levels below the tile's: SUBD_LOOP_STREAM_BYTES). The defaults keep the plans within
- * 16 KiB at 8 levels and valence 16. */
+ * (4^levels per tile: Cortex-M4F, level 6, 387 instructions per triangle at 4, 310 at 5;
+ * limit mode 613 at 4, 509 at 5) and take more arena (the tile's block, 2.3 KB at 4 and
+ * 6.6 KB at 5; limit mode 3.6 KB at 4 and 7.3 KB at 5, whose last level is made by a
+ * quarter's children: loop_tile.h's lt_split), which shares memory with the levels below
+ * the tile's (SUBD_LOOP_STREAM_BYTES). The defaults keep the plans within 16 KiB at 8
+ * levels and valence 16. */
 #ifndef SUBD_LOOP_TILE_LEVELS
 #define SUBD_LOOP_TILE_LEVELS 5
 #endif
@@ -57,7 +59,7 @@
 #error "SUBD_LOOP_TILE_LEVELS must be 0 or in 2..5"
 #endif
 #ifndef SUBD_LOOP_TILE_LEVELS_LIMIT
-#define SUBD_LOOP_TILE_LEVELS_LIMIT 4
+#define SUBD_LOOP_TILE_LEVELS_LIMIT 5
 #endif
 #if SUBD_LOOP_TILE_LEVELS_LIMIT != 0 && (SUBD_LOOP_TILE_LEVELS_LIMIT < 2 || SUBD_LOOP_TILE_LEVELS_LIMIT > 5)
 #error "SUBD_LOOP_TILE_LEVELS_LIMIT must be 0 or in 2..5"

@@ -151,8 +151,8 @@ int subd_loop_stream_plan(const subd_mesh *in, const subd_loop_opts *o, uint32_t
  *   level: 4; limit mode: 1; 104 bytes each), one control face's 1-ring per level,
  *   refined depth first (an explicit stack, no recursion), and from 2 levels on one regular
  *   tile of min(L, SUBD_LOOP_TILE_LEVELS) levels (limit mode: SUBD_LOOP_TILE_LEVELS_LIMIT;
- *   6.3 KB at 5, 3.6 KB at 4 in limit mode, sharing memory with the levels below the tile's,
- *   idle while it runs; next to an irregular vertex smaller tiles one level down, in the same
+ *   6.3 KB at 5; limit mode 7.2 KB at 5, its last level made by sixteenths, 3.6 KB at 4),
+ *   sharing memory with the levels below the tile's, idle while it runs; next to an irregular vertex smaller tiles one level down, in the same
  *   memory), where regular patches are refined breadth first; nothing stays in it after the
  *   call. It is subd_loop_stream_begin + subd_stream_run_tris (subd.h "Streams"). Stack (Cortex-M, -fstack-usage,
  *   gcc -O2): about 1.3 KB on the deepest path (subd_loop_stream 504 bytes + the two-level
@@ -239,7 +239,7 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
      SUBD_LOOP_SA_(4u * 12u * ((L) + 1u)) + SUBD_LOOP_SLEV_(3u * SUBD_LOOP_SN_(N), 1u, 1u) + \
      SUBD_LOOP_STK_(L, lim) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
      (SUBD_LOOP_SDEEP_(L, N, lim) > SUBD_LOOP_TREG_(L, N, lim) ? SUBD_LOOP_SDEEP_(L, N, lim) : SUBD_LOOP_TREG_(L, N, lim)) + \
-     SUBD_LOOP_TTAB_(SUBD_LOOP_TD_(L, lim)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
+     SUBD_LOOP_TTAB_(SUBD_LOOP_TPD_(SUBD_LOOP_TD_(L, lim), lim)) + SUBD_LOOP_SSCR_(3u * SUBD_LOOP_SN_(N)) + ((lim) ? SUBD_LOOP_SMASK_ : 0u))
 /* levels with a cache (1..L-2, limit mode 1..L-1); of them, those above the tile's level
  * tk = L-t (1..tk-1); the region from level max(tk, 1) on, which the tile's block shares: the
  * other cached levels and limit mode's level L with its mesh view */
@@ -268,13 +268,19 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 #define SUBD_LOOP_TGB_(t) \
     (SUBD_LOOP_SA_(12u * SUBD_LOOP_TNB_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNB_(t)) + SUBD_LOOP_SA_(2u * SUBD_LOOP_TNB_(t)))
 #define SUBD_LOOP_TQU_(t, lim) ((lim) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) : SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(t)))
+/* the depth whose quarter is a piece of the last level (loop_tile.h's lt_table_depth): the
+ * tile's own, but limit mode's depth 5 makes its last level by the quarters' children */
+#define SUBD_LOOP_TPD_(t, lim) ((lim) && (t) >= 5u ? (t) - 1u : (t))
 #define SUBD_LOOP_TILE_BYTES_(t, lim) \
     ((t) ? SUBD_LOOP_SA_(12u * SUBD_LOOP_TNA_(t)) + 2u * SUBD_LOOP_SA_(SUBD_LOOP_TNA_(t)) + \
                SUBD_LOOP_SA_(2u * SUBD_LOOP_TNA_(t)) + \
                (SUBD_LOOP_TGB_(t) > SUBD_LOOP_TQU_(t, lim) ? SUBD_LOOP_TGB_(t) : SUBD_LOOP_TQU_(t, lim)) + \
-               ((lim) ? SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(t)) + SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(t)) : 0u) \
+               ((lim) ? SUBD_LOOP_SA_(20u * SUBD_LOOP_TQN_(SUBD_LOOP_TPD_(t, lim))) + \
+                            SUBD_LOOP_SA_(12u * SUBD_LOOP_TQN_(SUBD_LOOP_TPD_(t, lim))) \
+                      : 0u) \
          : 0u)
-/* the tiles' emission tables, depths 2..t (their own block, filled once per stream) */
+/* the tiles' emission tables, depths 2..t (their own block, filled once per stream; t:
+ * SUBD_LOOP_TPD_ of the largest tile) */
 #define SUBD_LOOP_TT1_(t, u) ((t) >= (u) ? SUBD_LOOP_SA_(3u << (2u * ((u) - 1u))) : 0u)
 #define SUBD_LOOP_TTAB_(t) (SUBD_LOOP_TT1_(t, 2u) + SUBD_LOOP_TT1_(t, 3u) + SUBD_LOOP_TT1_(t, 4u) + SUBD_LOOP_TT1_(t, 5u))
 /* The tiles' region: at level tk + j (tk = L - t, j = 0..t-2) a tile of depth t - j at

@@ -111,7 +111,7 @@ typedef struct sp_layout {
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
     uint8_t *tile;         /* the region of the regular tiles' blocks (loop_tile.h), when
                             * tdepth >= 2: it shares memory with the levels from tk on    */
-    uint8_t *tab;          /* the tiles' emission tables (depths 2..tdepth)                */
+    uint8_t *tab;          /* the tiles' emission tables (depths 2..lt_table_depth)        */
     sp_masks *mk;          /* limit mode: the limit masks' caches                          */
     uint32_t tdepth;       /* levels a tile at level tk refines (tile_depth); 0: none      */
     uint32_t tk;           /* the first level with tiles: L - tdepth                       */
@@ -198,7 +198,7 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
         }
     if (y.bytes != UINT32_MAX && tb > y.bytes - r0) (void)subd_layout_take(&y, tb - (y.bytes - r0), 1u);
     l->tile = l->tdepth ? region : 0;
-    l->tab = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_tab_bytes(l->tdepth)) : 0;
+    l->tab = l->tdepth ? subd_layout_take(&y, 1u, subd_lt_tab_bytes(lt_table_depth(l->tdepth, limit))) : 0;
     l->smap = subd_layout_take(&y, s0, 2u);
     l->fmap = subd_layout_take(&y, 4u * cap_f(s0), 2u);
     l->mk = limit ? (sp_masks *)(void *)subd_layout_take(&y, 1u, SUBD_LOOP_SMASK_) : 0;
@@ -506,8 +506,8 @@ typedef struct sp_state {
     loop_wcache wc;
     uint32_t k, depth, ovf, started, limit;
     /* the regular tile: at level k >= lay.tk, of depth tdep = L - k; ton while its triangles
-     * go out: quarter tq, its triangle tj, tready once the quarter's positions and ids are
-     * made */
+     * go out: piece tq (a quarter, or limit mode's depth 5 a quarter's child: lt_split), its
+     * triangle tj, tready once the piece's positions and ids are made */
     uint32_t tdep, ton, tq, tj, tready;
     uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
 } sp_state;
@@ -629,7 +629,8 @@ static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, co
     return tile_push_n(tl, j0, n, t, ts, at, 0);
 }
 
-/* The tile's triangles, quarter by quarter, each quarter's in subd_loop's order (its table);
+/* The tile's triangles, piece by piece (quarters, or their children: lt_split), each
+ * piece's in subd_loop's order (its table);
  * stops when the caller's buffer is full (ton stays set: the next step goes on here).
  * Push form: the sink gets the one item each time (const), so the fields that do not change
  * within the call (face, level, zero normals) are written once and each triangle writes its
@@ -644,7 +645,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
     subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, s->tdep, (int)s->limit);
     tl.lk = s->limit ? &s->lay.mk->lk : 0;
     nr = tl.qnrm;
-    n = 1u << (2u * (tl.depth - 1u));
+    n = 1u << (2u * (tl.depth - tl.split)); /* a piece's triangles (loop_tile.h's lt_split) */
     if (s->ovf) return SUBD_ERR_RANGE;
     if (one) {
         one->face = s->run.f;
@@ -652,7 +653,7 @@ SUBD_NOINLINE static int tile_emit(sp_state *s, subd_stream_q *q)
         for (j = 0; j < 3u; j++)
             for (k = 0; k < 3u; k++) one->normal[j][k] = 0;
     }
-    while (s->tq < 4u) {
+    while (s->tq < (1u << (2u * tl.split))) {
         if (!s->tready) {
             int32_t org[2], e1[2], e2[2];
             subd_lt_quarter(&tl, s->tq, &s->wc, &s->ovf, org, e1, e2);
@@ -812,8 +813,8 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->ton = 0;
     s->tdep = 0;
     for (f = 0; f < 4u; f++) s->ntile[f] = 0;
-    /* the tiles' emission tables (depths 2..tdepth: loop_tile.h), once */
-    for (f = 2; f <= lay.tdepth; f++) {
+    /* the tiles' emission tables (depths 2..lt_table_depth: loop_tile.h), once */
+    for (f = 2; lay.tdepth && f <= lt_table_depth(lay.tdepth, limit); f++) {
         lt_tile tl;
         subd_lt_carve(&tl, lay.tile, lay.tab, f, limit);
         subd_lt_table(&tl);

@@ -40,7 +40,12 @@
  *
  * The last level is made one quarter at a time (child c of the tile's face at the level
  * before), in the quarter's own frame, so that one table gives subd_loop's emission order
- * of every quarter and the grid for the last level is a quarter's size. */
+ * of every quarter and the grid for the last level is a quarter's size. Limit mode's depth 5
+ * goes one step further (lt_split): it makes a quarter's last level with margin once, and
+ * its limit points a sixteenth (a quarter's child) at a time, so that those records, their
+ * normals and the emission table are a depth-4 quarter's and the plan stays within 16 KiB at
+ * 8 levels and valence 16 (a vertex's limit point depends on its quarter coordinates alone:
+ * the sixteenths give the quarter's bits). */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h" /* subd_bytes_add, subd_bytes_max */
 #include "loop_tile.h"
@@ -71,11 +76,11 @@ static uint32_t lt_side(uint32_t t) { return (1u << t) + 3u; }
 
 uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
 {
-    uint32_t own[LT_N], b = 0, nA = lt_count(lt_side(t - 1u)), nB = lt_count(lt_side(t - 2u)), m = 1u << (t - 1u);
-    uint32_t qn = lt_count(m), rs = 3u * (uint32_t)sizeof(subd_real), g1 = 0, u = 0;
+    uint32_t own[LT_N], b = 0, nA = lt_count(lt_side(t - 1u)), nB = lt_count(lt_side(t - 2u));
+    uint32_t qn = lt_count(1u << (t - lt_split(t, limit))), rs = 3u * (uint32_t)sizeof(subd_real), g1 = 0, u = 0;
     /* the second grid's memory, dead once the last level is made, also holds the quarter's
-     * records (limit mode: its last-level positions with their margin, a grid of side
-     * m + 3 = the first grid's; the records follow) */
+     * records (limit mode: the quarter's last-level positions with their margin, a grid of
+     * side 2^(t-1) + 3 = the first grid's; a piece's records follow: lt_split) */
     if (!off) off = own;
     off[LT_APOS] = b; subd_size_add(&b, nA, rs);
     off[LT_ADIR] = b; subd_size_add(&b, nA, 1u);
@@ -108,8 +113,9 @@ uint32_t subd_lt_tab_bytes(uint32_t t)
 void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int limit)
 {
     uint32_t off[LT_N];
+    uint32_t td = lt_table_depth(t, limit);
     (void)subd_lt_layout(t, limit, off);
-    tl->tab = tab ? tab + subd_lt_tab_bytes(t - 1u) : 0; /* depth t's table follows 2..t-1's */
+    tl->tab = tab ? tab + subd_lt_tab_bytes(td - 1u) : 0; /* depth td's table follows 2..td-1's */
     tl->g[0].pos = (subd_real *)(void *)(block + off[LT_APOS]);
     tl->g[0].dir = block + off[LT_ADIR];
     tl->g[0].rot = block + off[LT_AROT];
@@ -123,12 +129,13 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
     tl->depth = t;
+    tl->split = lt_split(t, limit);
 }
 
 void subd_lt_table(const lt_tile *tl)
 {
     static const uint8_t pts[4][3] = TOPO_LOOP_CHILD_POINTS;
-    uint32_t q = tl->depth - 1u, m = 1u << q, n = m * m, j, l, k;
+    uint32_t q = tl->depth - tl->split, m = 1u << q, n = m * m, j, l, k;
     for (j = 0; j < n; j++) {
         uint32_t x[6], y[6];
         x[0] = 0; y[0] = 0; x[1] = m; y[1] = 0; x[2] = 0; y[2] = m;
@@ -517,59 +524,104 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
     return 1;
 }
 
-/* Limit mode's quarter c (frame ox, oy, e1, e2 as in subd_lt_quarter; g: level depth - 1,
- * side s): its last-level positions with a one-vertex margin into mpos (a grid of side
- * m + 3 less its corners: the quarter at (1, 1)), then each quarter vertex's limit position
- * and normal from its ring there, started at its vert_out (the level's ring start in the
- * tile's lattice, turned into the quarter's: the quarter's lattice directions are the tile's
- * turned by qrot[c] sixths, counter-clockwise, as e1 is direction qrot[c]). */
+/* A piece's frame in its quarter (or a quarter's in the tile's face): child c = (v_c, m_c,
+ * m_c-1), child 3 = (m0, m1, m2): corner 0 in units of the child's side, e1, e2. */
+static const int8_t lt_cfr[4][6] = {{0, 0, 1, 0, 0, 1}, {2, 0, -1, 1, -1, 0}, {0, 2, 0, -1, 1, -1}, {1, 0, 0, 1, -1, 1}};
+
+/* Limit mode's piece c (lt_split; quarter qc = c >> 2 (split - 1), frame ox, oy, e1, e2 as in
+ * subd_lt_quarter; g: level depth - 1, side s): at the quarter's first piece its last-level
+ * positions with a one-vertex margin into mpos (a grid of side m + 3 less its corners: the
+ * quarter at (1, 1)), then each piece vertex's limit position and normal from its ring
+ * there, started at its vert_out (the level's ring start in the tile's lattice, turned into
+ * the quarter's: the quarter's lattice directions are the tile's turned by qrot[qc] sixths,
+ * counter-clockwise, as e1 is direction qrot[qc]). A piece vertex (x, y) is the quarter's
+ * (X, Y) = o + x f1 + y f2 (the piece's frame in the quarter, lt_cfr; split 1: identity);
+ * each vertex's value depends on (X, Y) alone, so the pieces give the quarter's bits. */
 static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, uint32_t s, int32_t ox, int32_t oy,
-                             const int32_t e1[2], const int32_t e2[2], loop_weights w, uint32_t *lo)
+                             const int32_t e1[2], const int32_t e2[2], const int32_t po[2], const int32_t f1[2],
+                             const int32_t f2[2], loop_weights w, uint32_t *lo)
 {
     static const uint8_t qrot[4] = {0u, 2u, 4u, 1u};
-    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, x, y, k = 0;
+    uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, mp = 1u << (tl->depth - tl->split), x;
+    uint32_t qc = c >> (2u * (tl->split - 1u));
     const subd_real *M = tl->mpos;
-    lt_frame fr;
-    fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
-    fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1; fr.ds = 3;
-    lt_rows(g, s, &fr, tl->mpos, w);
-    for (y = 0; y <= m; y++) {
-        /* the ring's offsets for row y + 1 of the margin grid */
-        int32_t o3[12];
-        uint32_t l0 = lt_vi(S, 1u, y + 1u);
-        lt_ring_offsets((int32_t)(S - y), o3);
-        for (x = 0; x + y <= m; x++, k++, l0++) { /* k = lt_vi(m, x, y), l0 = lt_vi(S, x + 1, y + 1) */
-            int32_t px = ox + (int32_t)x * e1[0] + (int32_t)y * e2[0], py = oy + (int32_t)x * e1[1] + (int32_t)y * e2[1];
-            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[c];
+    int32_t o3[12], Y, ymin, ymax;
+    if (tl->split == 1u || (c & 3u) == 0u) { /* the quarter's first piece */
+        lt_frame fr;
+        fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
+        fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1; fr.ds = 3;
+        lt_rows(g, s, &fr, tl->mpos, w);
+    }
+    /* by rows Y of the quarter (the ring's offsets are a row's, the margin index steps by
+     * one), X over the piece's part of the row: x = f2y dX - f2x dY >= 0,
+     * y = -f1y dX + f1x dY >= 0, x + y <= mp (dX = X - po[0], dY = Y - po[1]; the frame has
+     * determinant 1) */
+    ymin = ymax = po[1];
+    for (x = 1; x < 3u; x++) {
+        int32_t cy = po[1] + (int32_t)mp * (x == 1u ? f1[1] : f2[1]);
+        if (cy < ymin) ymin = cy;
+        if (cy > ymax) ymax = cy;
+    }
+    for (Y = ymin; Y <= ymax; Y++) {
+        int32_t dY = Y - po[1], a = -0x40000000, b = 0x40000000, X, lx, ly;
+        uint32_t l0;
+        lt_bound(f2[1], -f2[0] * dY, &a, &b);
+        lt_bound(-f1[1], f1[0] * dY, &a, &b);
+        lt_bound(f1[1] - f2[1], (int32_t)mp - (f1[0] - f2[0]) * dY, &a, &b);
+        if (a > b) continue;
+        lt_ring_offsets((int32_t)(S - (uint32_t)Y), o3); /* row Y + 1 of the margin grid */
+        lx = f2[1] * a - f2[0] * dY;
+        ly = -f1[1] * a + f1[0] * dY;
+        X = po[0] + a;
+        l0 = lt_vi(S, (uint32_t)X + 1u, (uint32_t)Y + 1u);
+        for (; X <= po[0] + b; X++, l0++, lx += f2[1], ly -= f1[1]) {
+            int32_t px = ox + X * e1[0] + Y * e2[0], py = oy + X * e1[1] + Y * e2[1];
+            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[qc];
+            uint32_t k = lt_vi(mp, (uint32_t)lx, (uint32_t)ly);
             if (d >= 6u) d -= 6u;
             subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->q[k].p, tl->qnrm + 3u * k, lo);
         }
     }
-
 }
 
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
                      int32_t e2[2])
 {
     const lt_grid *g = &tl->g[0]; /* level depth - 1 */
-    uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), lo = 0;
+    uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), lo = 0, qc = c >> (2u * (tl->split - 1u));
     int32_t im = (int32_t)m, ox, oy;
     loop_weights w = subd_loop_weights_of(wc, 6u, ovf);
     /* the quarter's corner 0 and edge directions in the last level, relative to the tile
-     * face's corner 0: child c = (v_c, m_c, m_c-1), child 3 = (m0, m1, m2) */
-    static const int8_t fr[4][6] = {{0, 0, 1, 0, 0, 1}, {2, 0, -1, 1, -1, 0}, {0, 2, 0, -1, 1, -1}, {1, 0, 0, 1, -1, 1}};
-    org[0] = fr[c][0] * im;
-    org[1] = fr[c][1] * im;
-    e1[0] = fr[c][2];
-    e1[1] = fr[c][3];
-    e2[0] = fr[c][4];
-    e2[1] = fr[c][5];
+     * face's corner 0 */
+    const int8_t *fr = lt_cfr[qc];
+    org[0] = fr[0] * im;
+    org[1] = fr[1] * im;
+    e1[0] = fr[2];
+    e1[1] = fr[3];
+    e2[0] = fr[4];
+    e2[1] = fr[5];
     /* grid coordinates are the tile face's plus one, and lt_rows takes them plus one */
     ox = org[0] + 2;
     oy = org[1] + 2;
     if (tl->lk) {
-        lt_limit_quarter(tl, c, g, s, ox, oy, e1, e2, w, &lo);
+        /* the piece's frame in the quarter (split 2: child c % 4 of side m / 2), and in the
+         * tile's last level for the ids */
+        int32_t po[2] = {0, 0}, f1[2] = {1, 0}, f2[2] = {0, 1}, k;
+        if (tl->split == 2u) {
+            const int8_t *pf = lt_cfr[c & 3u];
+            po[0] = pf[0] * (im / 2);
+            po[1] = pf[1] * (im / 2);
+            f1[0] = pf[2]; f1[1] = pf[3]; f2[0] = pf[4]; f2[1] = pf[5];
+        }
+        lt_limit_quarter(tl, c, g, s, ox, oy, e1, e2, po, f1, f2, w, &lo);
         *ovf |= lo;
+        org[0] += po[0] * e1[0] + po[1] * e2[0];
+        org[1] += po[0] * e1[1] + po[1] * e2[1];
+        for (k = 0; k < 2; k++) {
+            int32_t a = e1[k], b = e2[k];
+            e1[k] = f1[0] * a + f1[1] * b;
+            e2[k] = f2[0] * a + f2[1] * b;
+        }
         return;
     }
     {
@@ -584,7 +636,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
-    uint32_t m = 1u << (tl->depth - 1u), x, y, k = 0, n1 = (uint32_t)1 << lv;
+    uint32_t m = 1u << (tl->depth - tl->split), x, y, k = 0, n1 = (uint32_t)1 << lv;
     int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
     uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
                                    (uint64_t)f * (nm1 * (nm1 - 1u) / 2u);

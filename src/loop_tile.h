@@ -21,7 +21,7 @@ typedef struct lt_grid {
     uint8_t *low;   /* per U: bit d set when U's half-edge d is its edge's lower half-edge   */
 } lt_grid;
 
-/* One vertex of the last level's quarter as the emission loop reads it: its position and
+/* One vertex of the last level's piece (a quarter: lt_split) as the emission loop reads it: its position and
  * its id (low word, high word) side by side, so that a triangle corner is one address. */
 typedef struct lt_rec {
     subd_real p[3];
@@ -30,24 +30,37 @@ typedef struct lt_rec {
 typedef char lt_rec_is_5_words[sizeof(lt_rec) == 5u * sizeof(subd_real) ? 1 : -1]; /* SUBD_LOOP_TILE_BYTES_ */
 
 /* A tile of depth t (2 <= t <= SUBD_LOOP_TILE_LEVELS): levels 0..t-1 in two grids used in
- * turn, then the last level one quarter (a child of the tile's face at level t - 1) at a time:
- * its vertices' positions and ids (q: plain mode in the second grid's memory, dead by then)
- * and the emission order of its triangles (tab: 3 quarter-vertex indices per triangle,
- * subd_loop's depth-first order; filled once per stream by subd_lt_table). */
+ * turn, then the last level one piece (a quarter, a child of the tile's face at level 1, or
+ * in limit mode's depth 5 a quarter's child: lt_split) at a time: its vertices' positions
+ * and ids (q: plain mode in the second grid's memory, dead by then) and the emission order
+ * of its triangles (tab: 3 piece-vertex indices per triangle, subd_loop's depth-first order;
+ * filled once per stream by subd_lt_table). */
 typedef struct lt_tile {
     lt_grid g[2];
     lt_rec *q;
     uint8_t *tab;
     uint32_t depth;
+    uint32_t split; /* lt_split: the last level is made by faces of level split (pieces)     */
     /* limit mode (lk set by the caller after subd_lt_carve): q's positions and qnrm are the
-     * quarter's limit positions and unit normals, from its last-level positions with a
-     * one-vertex margin (mpos: a grid of side 2^(t-1) + 3 in the quarter's frame, in the
-     * second grid's memory); else qnrm is NULL and q's positions the last level's. */
+     * piece's limit positions and unit normals, from its quarter's last-level positions
+     * with a one-vertex margin (mpos: a grid of side 2^(t-1) + 3 in the quarter's frame, in
+     * the second grid's memory); else qnrm is NULL and q's positions the last level's. */
     subd_real *qnrm, *mpos;
     const lim_reg6 *lk;
 } lt_tile;
 
 enum { LT_APOS, LT_ADIR, LT_AROT, LT_ALOW, LT_BPOS, LT_BDIR, LT_BROT, LT_BLOW, LT_QREC, LT_LNRM, LT_N };
+
+/* The last level of a tile of depth t is made (and emitted) one piece at a time, a piece a
+ * face of level lt_split (1: a quarter, 4 pieces; 2: a quarter's child, 16 pieces) of the
+ * tile's face, of side 2^(t - lt_split) at the last level. Limit mode's depth 5 takes 2: its
+ * pieces' limit records and normals and their emission table are then a depth-4 quarter's
+ * (the plan's 16 KiB at 8 levels and valence 16 holds a depth-5 tile only so); the
+ * quarter's last-level positions with margin (mpos) are still made once per quarter, for its
+ * four pieces. SUBD_LOOP_TPD_ in subd_loop.h is lt_table_depth. */
+static inline uint32_t lt_split(uint32_t t, int limit) { return limit && t >= 5u ? 2u : 1u; }
+/* Depth whose emission table a tile of depth t uses (its pieces are that depth's quarters). */
+static inline uint32_t lt_table_depth(uint32_t t, int limit) { return t + 1u - lt_split(t, limit); }
 
 /* Vertices of a triangular grid of side s. */
 static inline uint32_t lt_count(uint32_t s) { return (s + 1u) * (s + 2u) / 2u; }
@@ -66,19 +79,21 @@ uint32_t subd_lt_tab_bytes(uint32_t t);
 /* The arrays of a tile of depth t in its block (subd_lt_layout's offsets) and its table in
  * the tables' block tab (may be NULL: no table); lk = NULL. */
 void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int limit);
-/* Fills the emission table of a quarter (4^(t-1) triangles). */
+/* Fills the emission table of a piece (4^(t-split) triangles). */
 void subd_lt_table(const lt_tile *tl);
 /* Level 0 of a tile from patch p (its centre's 1-ring): 1 when p is regular (then levels
  * 1..t-1 are refined too), 0 when it is not (nothing useful is written). */
 int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf);
-/* The last level's positions of quarter c (0..3: child c of the tile's face at level t - 1,
- * subd_loop's child order) into q (limit mode: their limit positions, and normals into
- * qnrm), in the quarter's own frame (corner k of the child at
- * lattice corner k of the quarter grid); *org, *e1, *e2: its frame in the tile's last level
- * (grid coordinates relative to the tile face's corner 0), for the ids. */
+/* The last level's positions of piece c (0..4^split - 1, lt_split: with split 1 quarter c,
+ * child c of the tile's face at level 1, subd_loop's child order; with split 2 child c % 4
+ * of quarter c / 4; the pieces must be made in order, as a quarter's last-level positions
+ * with margin are made at its first piece) into q (limit mode: their limit positions, and
+ * normals into qnrm), in the piece's own frame (corner k of the child at lattice corner k
+ * of the piece grid); *org, *e1, *e2: its frame in the tile's last level (grid coordinates
+ * relative to the tile face's corner 0), for the ids. */
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
                      int32_t e2[2]);
-/* The ids of quarter c's vertices into q (frame org, e1, e2 from subd_lt_quarter) of the
+/* The ids of piece c's vertices into q (frame org, e1, e2 from subd_lt_quarter) of the
  * tile in control face f whose face has lattice corners (ca[k], cb[k]) at level lv (units
  * 1/2^lv, loop_patch.h's sp_head): a point inside the control face by subd_lp_vertex_id's
  * closed form, stepped along each row, the others by subd_lp_vertex_id. */

@@ -875,6 +875,81 @@ static void stream_tiles_partial(void)
     (void)hash;
 }
 
+/* Limit mode's depth-5 tiles (loop_tile.h's lt_split: a quarter's last level with margin
+ * made at its first sixteenth, kept for the other three): the pull form, stopped at every
+ * 7th triangle (inside a sixteenth's 64; 1024 triangles per tile) and at every 1000th,
+ * resumes with exactly the push form's triangles (positions, normals, ids, face, level), and
+ * depth-5 tiles are made: the flipped grid at level 5 (tiles at level 0, partial ones next
+ * to its valence-5 and valence-7 vertices), both rules. The push form equals
+ * subd_loop_limit's bits (stream_tiles_limit, stream_level6). */
+typedef struct pull_cmp5 {
+    subd_stream *s;
+    subd_tri buf[1000];
+    uint32_t batch, have, next, bad;
+} pull_cmp5;
+
+static int pull_tri5(void *ctx, const subd_tri *t)
+{
+    pull_cmp5 *c = (pull_cmp5 *)ctx;
+    const subd_tri *u;
+    uint32_t j, k;
+    if (c->next == c->have) {
+        int r = subd_stream_next_tris(c->s, c->buf, c->batch);
+        c->have = r > 0 ? (uint32_t)r : 0u;
+        c->next = 0;
+        if (!c->have) {
+            c->bad++;
+            return 0;
+        }
+    }
+    u = &c->buf[c->next++];
+    for (j = 0; j < 3u; j++) {
+        for (k = 0; k < 3u; k++)
+            if (!h_same(t->pos[j][k], u->pos[j][k]) || !h_same(t->normal[j][k], u->normal[j][k])) c->bad++;
+        if (t->id[j] != u->id[j]) c->bad++;
+    }
+    if (t->face != u->face || t->level != u->level) c->bad++;
+    return 0;
+}
+
+static void stream_tiles_limit5(void)
+{
+    static pull_cmp5 c; /* static: off the device's stack */
+    const uint32_t batches[2] = {7u, 1000u};
+    uint32_t b, rule;
+    for (rule = 0; rule < 2u; rule++)
+        for (b = 0; b < 2u; b++) {
+            subd_arena a;
+            subd_mesh in;
+            subd_loop_opts o;
+            subd_stream h;
+            subd_tri_sink sink;
+            subd_diag d;
+            uint32_t mark;
+            subd_diag_clear(&d);
+            subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+            if (!make_grid(&a, 6u, 1, 0, &in)) return;
+            o.levels = 5;
+            o.boundary = rule ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER;
+            o.flags = SUBD_LOOP_STREAM_LIMIT;
+            mark = subd_arena_mark(&a);
+            if (!CHECK_OK(subd_loop_stream_begin(&a, &in, &o, &h, &d), &d)) return;
+            c.s = &h;
+            c.batch = batches[b];
+            c.have = c.next = c.bad = 0;
+            sink.tri = pull_tri5;
+            sink.ctx = &c;
+            CHECK_OK(subd_loop_stream(&a, &in, &o, &sink, &d), &d); /* above the pull stream */
+            CHECK_EQ(c.bad, 0);
+            CHECK_EQ(c.next, c.have);
+#if SUBD_LOOP_TILE_LEVELS_LIMIT == 5
+            CHECK(subd_lt_stream_count(&h, 5u) > 0u); /* depth-5 tiles were made */
+#endif
+            CHECK_EQ(subd_stream_next_tris(&h, c.buf, c.batch), 0); /* the end */
+            CHECK_EQ(subd_arena_mark(&a), mark);
+        }
+}
+
 /* A disk cut from the nefertiti scan (test/data/nefertiti_patch.obj: 115 vertices, interior
  * valences 4..10, a boundary of 38): almost every patch takes the general path (the ring
  * walks of the vertex points, the control patch's look-up hints, whose 64 entries the
@@ -946,6 +1021,7 @@ const test_case suite_loop_stream[] = {
     {"stream_tiles_huge", stream_tiles_huge},
     {"stream_level6", stream_level6},
     {"stream_tiles_partial", stream_tiles_partial},
+    {"stream_tiles_limit5", stream_tiles_limit5},
     {"stream_irregular", stream_irregular},
     {0, 0},
 };

@@ -18,7 +18,7 @@ B := build
 SHARED ?= ../shared
 
 SRC      := $(sort $(wildcard src/*.c))
-TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c test/fixtures.c test/loop_limit_ref.c
+TEST_SRC := $(sort $(wildcard test/test_*.c)) test/harness.c test/fixtures.c test/loop_limit_ref.c test/loop_cmp.c
 GEN      := $(B)/gen/corpus.h $(B)/gen/readme_example.c $(B)/gen/suites.h
 
 WARN := -std=c99 -Wall -Wextra -Werror -pedantic -Wshadow -Wvla -Wdouble-promotion \

@@ -1,0 +1,498 @@
+/* SPDX-License-Identifier: MIT */
+/* Streaming Loop's regular tiles (src/loop_tile.c: the last levels of a regular patch
+ * refined breadth first on a lattice) against subd_loop / subd_loop_limit bit for bit (the
+ * comparison of loop_cmp.c): grids with a flipped quad (valence 5 and 7 next to regular
+ * regions), creases crossing regular regions, a boundary; tile counts against an
+ * independent brute-force regularity test; huge coordinates (the general path); level 6;
+ * partial tiles next to irregular vertices; limit mode's 5-level tiles made by sixteenths,
+ * pulled in batches against the push form. */
+#include "loop_cmp.h"
+#include "../src/loop_tile.h"
+
+/* An n x n grid of quads split along one diagonal (interior valence 6, a boundary), with
+ * heights that vary (exact in both arithmetics); `flip`: the middle quad split along the
+ * other diagonal (two valence-5 and two valence-7 vertices next to regular regions);
+ * `crease`: the horizontal edges of row n/2 tagged crease (a crease across a regular
+ * region, ending at the boundary). */
+static int make_grid(subd_arena *a, uint32_t n, int flip, int crease, subd_mesh *m)
+{
+    static uint32_t idx[6u * 8u * 8u];
+    static subd_real pos[3u * 9u * 9u];
+    subd_face_list fl = {0, 0, 0, 0, idx, 0, 0, 0};
+    uint32_t i, j, k = 0, h;
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++) {
+            uint32_t v = j * (n + 1u) + i;
+            pos[3u * v] = SUBD_REAL_FRAC((int32_t)i, 1);
+            pos[3u * v + 1u] = SUBD_REAL_FRAC((int32_t)j, 1);
+            pos[3u * v + 2u] = SUBD_REAL_FRAC((int32_t)((i * 7u + j * 3u) % 5u), 4);
+        }
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            uint32_t va = j * (n + 1u) + i, vb = va + 1u, vc = va + n + 2u, vd = va + n + 1u;
+            if (flip && i == n / 2u && j == n / 2u) {
+                idx[k++] = va; idx[k++] = vb; idx[k++] = vd;
+                idx[k++] = vb; idx[k++] = vc; idx[k++] = vd;
+            } else {
+                idx[k++] = va; idx[k++] = vb; idx[k++] = vc;
+                idx[k++] = va; idx[k++] = vc; idx[k++] = vd;
+            }
+        }
+    fl.num_verts = (n + 1u) * (n + 1u);
+    fl.pos = pos;
+    fl.num_faces = 2u * n * n;
+    if (!h_build(a, &fl, m)) return 0;
+    if (crease)
+        for (h = 0; h < m->num_corners; h++) {
+            uint32_t u = m->corner_vert[h], w = m->corner_vert[h % 3u == 2u ? h - 2u : h + 1u];
+            if (u / (n + 1u) == n / 2u && w / (n + 1u) == n / 2u) subd_edge_tag_set(m, h, SUBD_ETAG_CREASE);
+        }
+    return 1;
+}
+
+/* Brute force: control face f can start a tile (loop_tile.c's "regular"): each corner in
+ * exactly six faces, every half-edge from it with a twin and no crease on either half, no
+ * CORNER tag; and the faces that touch f are 13 with 12 vertices in all. */
+static int brute_regular(const subd_mesh *m, uint32_t f)
+{
+    uint32_t c, g, h, k, nf = 0, nv = 0, vs[64];
+    for (c = 0; c < 3u; c++) {
+        uint32_t v = m->corner_vert[3u * f + c], deg = 0;
+        if (m->vert_tag[v] & SUBD_VTAG_CORNER) return 0;
+        for (h = 0; h < m->num_corners; h++) {
+            if (m->corner_vert[h] != v) continue;
+            deg++;
+            if (m->twin[h] == SUBD_NONE || m->twin[h % 3u == 0u ? h + 2u : h - 1u] == SUBD_NONE) return 0;
+            if ((m->edge_tag[h] | m->edge_tag[m->twin[h]]) & SUBD_ETAG_CREASE) return 0;
+        }
+        if (deg != 6u) return 0;
+    }
+    for (g = 0; g < m->num_faces; g++) {
+        int touch = 0;
+        for (c = 0; c < 3u; c++)
+            for (k = 0; k < 3u; k++)
+                if (m->corner_vert[3u * g + c] == m->corner_vert[3u * f + k]) touch = 1;
+        if (!touch) continue;
+        nf++;
+        for (c = 0; c < 3u; c++) {
+            uint32_t v = m->corner_vert[3u * g + c], seen = 0;
+            for (k = 0; k < nv; k++)
+                if (vs[k] == v) seen = 1;
+            if (!seen && nv < 64u) vs[nv++] = v;
+        }
+    }
+    return nf == 13u && nv == 12u;
+}
+
+/* subd_lt_start on every control face's patch agrees with brute_regular; returns the number
+ * of regular faces. */
+static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
+{
+    uint32_t off[A_N], bytes = subd_lp_level_layout(3u * 16u, 0, 1, off), f, n = 0, mark = subd_arena_mark(a);
+    uint8_t *blk = (uint8_t *)subd_arena_alloc(a, bytes), *tb = (uint8_t *)subd_arena_alloc(a, subd_lt_layout(4u, 0, 0));
+    sp_head head;
+    sp_level p;
+    lt_tile tl;
+    loop_wcache wc;
+    uint32_t ovf = 0;
+    if (!CHECK(blk != 0 && tb != 0)) return 0;
+    wc.have = 0;
+    p.h = &head;
+    p.pos = (subd_real *)(void *)(blk + off[A_POS]);
+    p.vflag = blk + off[A_VFLAG];
+    p.vout = (uint16_t *)(void *)(blk + off[A_VOUT]);
+    p.cv = (uint16_t *)(void *)(blk + off[A_CV]);
+    p.tw = (uint16_t *)(void *)(blk + off[A_TW]);
+    p.slot = (uint16_t *)(void *)(blk + off[A_SLOT]);
+    p.sh = blk + off[A_SH];
+    p.cpos = 0;
+    p.cflag = 0;
+    p.cface = (uint32_t *)(void *)(blk + off[A_CFACE]);
+    p.cvert = (uint32_t *)(void *)(blk + off[A_CVERT]);
+    subd_lt_carve(&tl, tb, 0, 4u, 0); /* subd_lt_start needs no table */
+    for (f = 0; f < m->num_faces; f++) {
+        int r;
+        subd_lp_build_control(m, f, &p, 4u);
+        r = subd_lt_start(&tl, &p, &wc, &ovf);
+        CHECK_EQ(r, brute_regular(m, f));
+        n += (uint32_t)r;
+    }
+    CHECK_EQ(ovf, 0);
+    subd_arena_rewind(a, mark);
+    return n;
+}
+
+/* Tiles next to a valence-5 and a valence-7 vertex, across a crease, along a boundary, and
+ * (host) at level 6: the stream equals subd_loop bit for bit, both rules; the tile test
+ * agrees with the brute-force one and finds both kinds of patch. Levels 2-3 (tiles of 2 and
+ * 3 levels at level 0) also on the device, with a hash; 4-5 (tiles of 4 and 5 levels at
+ * level 0) and the icosahedron at level 6 (tiles at level 1, next to its valence-5
+ * vertices) on the host; the grids at level 6: stream_level6; the torus is regular
+ * everywhere (every control face starts a tile at level 0). */
+static void stream_tiles(void)
+{
+    uint32_t hash = 2166136261u, id, levels, nreg;
+    lc_streams = lc_skipped = 0;
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        nreg = count_tiles(&a, &in);
+        CHECK(nreg > 0u && nreg < in.num_faces);
+        for (levels = 2; levels <= 3u; levels++) {
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &hash);
+        }
+    }
+    h_hash("stream_tiles", hash);
+#if H_HOST
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        for (levels = 4; levels <= 5u; levels++) {
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, 0, &hash);
+        }
+    }
+    {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!lc_make_shape(S_ICO, &a, &in)) return;
+        lc_compare_one(&a, &in, 6, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!lc_make_shape(S_TORUS, &a, &in)) return;
+        CHECK_EQ(count_tiles(&a, &in), in.num_faces); /* valence 6 everywhere */
+        lc_compare_one(&a, &in, 4, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash);
+    }
+    CHECK_EQ(lc_skipped, 0);
+    CHECK_EQ(lc_streams, 8u + 2u * 4u + 2u); /* level 6 of the grids: stream_level6 */
+#else
+    CHECK_EQ(lc_streams + lc_skipped, 8u);
+#endif
+    h_str("  tile streams compared ");
+    h_u32(lc_streams);
+    h_str(", skipped ");
+    h_u32(lc_skipped);
+    h_nl();
+}
+
+/* Limit mode on regular tiles (loop_tile.c's lt_limit_quarter): limit positions and normals
+ * equal subd_loop_limit of subd_loop's output bit for bit where tiles meet a valence-5 and a
+ * valence-7 vertex, a crease across a regular region and a boundary, both rules: level 2
+ * (tiles of 2 levels at level 0) on the device too, with a hash; on the host levels 3-5
+ * (tiles of 3 and 4 levels at level 0, 4 at level 1), the icosahedron at level 6 (tiles at
+ * level 2, next to its valence-5 vertices), and the torus at level 4 (tiles everywhere); the
+ * grids at level 6: stream_level6. */
+static void stream_tiles_limit(void)
+{
+    uint32_t hash = 2166136261u, id;
+    lc_streams = lc_skipped = 0;
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        lc_compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
+        lc_compare_one(&a, &in, 2, SUBD_LOOP_BOUNDARY_BSPLINE, SUBD_LOOP_STREAM_LIMIT, &hash);
+    }
+    h_hash("stream_tiles_limit", hash);
+#if H_HOST
+    for (id = 0; id < 2u; id++) {
+        subd_arena a;
+        subd_mesh in;
+        uint32_t levels;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+        for (levels = 3; levels <= 5u; levels++) {
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, SUBD_LOOP_STREAM_LIMIT, &hash);
+        }
+    }
+    {
+        subd_arena a;
+        subd_mesh in;
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!lc_make_shape(S_ICO, &a, &in)) return;
+        lc_compare_one(&a, &in, 6, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash);
+        subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+        if (!lc_make_shape(S_TORUS, &a, &in)) return;
+        lc_compare_one(&a, &in, 4, SUBD_LOOP_BOUNDARY_BSPLINE, SUBD_LOOP_STREAM_LIMIT, &hash);
+    }
+    CHECK_EQ(lc_skipped, 0);
+    CHECK_EQ(lc_streams, 4u + 2u * 6u + 2u); /* level 6 of the grids: stream_level6 */
+#else
+    CHECK_EQ(lc_skipped, 0);
+    CHECK_EQ(lc_streams, 4u);
+#endif
+    h_str("  limit tile streams compared ");
+    h_u32(lc_streams);
+    h_str(", skipped ");
+    h_u32(lc_skipped);
+    h_nl();
+}
+
+/* The position hash of lc_cmp_tri (each corner's three coordinates in emission order) without
+ * a reference: the device's side of stream_level6. */
+/* Tiles near the top of the range (src/loop_tile.c, LT_HUGE): the tile's rules are not
+ * checked for overflow (convex combinations of the patch's level-0 points), so a patch with
+ * a coordinate beyond SUBD_REAL_MAX / 2 must take the checked general path. The flipped grid
+ * moved to coordinates 0.375..0.45 SUBD_REAL_MAX (every regular patch tiled, unchecked) and
+ * 0.925..1.0 SUBD_REAL_MAX (every patch refused, the general path): the stream's status is
+ * subd_loop's, and
+ * when both succeed the bits are (lc_compare_one), levels 2 and 3, plain and limit. Q16.16 has
+ * no such patches (LT_HUGE is 0 there): the same scaled grids check it too. */
+static void stream_tiles_huge(void)
+{
+    uint32_t s, v, k, hash = 2166136261u, levels, lim;
+    for (s = 0; s < 2u; s++)
+        for (lim = 0; lim < 2u; lim++)
+            for (levels = 2; levels <= 3u; levels++) {
+                subd_arena a;
+                subd_mesh in, ref;
+                subd_loop_opts o = {levels, SUBD_LOOP_BOUNDARY_PAPER, 0};
+                subd_loop_sink sink;
+                subd_diag d;
+                uint32_t count = 0, mark;
+                int want;
+                subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+                if (!make_grid(&a, 6u, 1, 0, &in)) return;
+                for (v = 0; v < in.num_verts; v++)
+                    for (k = 0; k < 3u; k++) /* grid coordinates 0..6 -> (0.45 or 1 - c / 80) x the range */
+                        in.pos[3u * v + k] = SUBD_FIXED ? in.pos[3u * v + k] * 4
+                                                        : ((s ? 1.0f : 0.45f) - in.pos[3u * v + k] * 0.0125f) * SUBD_REAL_MAX;
+                mark = subd_arena_mark(&a);
+                want = subd_loop(&a, &in, &o, &ref, &d);
+                subd_arena_rewind(&a, mark);
+                o.flags = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+                sink.tri = lc_count_tri;
+                sink.ctx = &count;
+                if (lim && want == SUBD_OK) { /* the limit reference may overflow where the levels do not */
+                    if (lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_STREAM_LIMIT, &hash)) continue;
+                    CHECK_EQ(subd_arena_mark(&a), mark);
+                    continue;
+                }
+                CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), want);
+                CHECK_EQ(subd_arena_mark(&a), mark);
+                if (want == SUBD_OK && !lim) CHECK(lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash));
+                if (!SUBD_FIXED && s == 0u) CHECK_EQ(want, SUBD_OK); /* 0.45: in range everywhere */
+            }
+}
+
+static int hash_tri(void *ctx, const subd_loop_tri *t)
+{
+    uint32_t *h = (uint32_t *)ctx, c, k;
+    for (c = 0; c < 3u; c++)
+        for (k = 0; k < 3u; k++) {
+            uint32_t b = subd_real_bits(t->pos[c][k]);
+            *h = h_fnv(*h, &b, 4);
+        }
+    return 0;
+}
+
+/* Level 6 on two shapes where tiles meet irregular patches (the 6 x 6 grid with a flipped
+ * quad: valence-5 and valence-7 vertices next to regular regions and a boundary; the grid
+ * with a crease across it), plain and limit mode, one rule each: the host compares the
+ * stream with subd_loop (limit mode: subd_loop_limit of it) bit for bit and prints the
+ * position hash; the device, where subd_loop's level 6 does not fit, streams the same into
+ * the same hash, so make test's host = QEMU hash comparison carries the check over to the
+ * device (plain mode: tiles of SUBD_LOOP_TILE_LEVELS levels at level 1, limit mode of
+ * SUBD_LOOP_TILE_LEVELS_LIMIT at level 2). */
+static void stream_level6(void)
+{
+    static const char *const names[4] = {"stream_l6_flip", "stream_l6_flip_limit", "stream_l6_crease",
+                                         "stream_l6_crease_limit"};
+    uint32_t id, lim;
+    lc_streams = lc_skipped = 0;
+    for (id = 0; id < 2u; id++)
+        for (lim = 0; lim < 2u; lim++) {
+            subd_arena a;
+            subd_mesh in;
+            uint32_t hash = 2166136261u, fl = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+            subd_loop_boundary b = id ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER;
+            subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+            if (!make_grid(&a, 6u, id == 0u, id == 1u, &in)) return;
+            {
+                subd_loop_opts o;
+                subd_loop_sink sink;
+                subd_diag d;
+                uint32_t own = 2166136261u;
+                o.levels = 6;
+                o.boundary = b;
+                o.flags = fl;
+                sink.tri = hash_tri;
+                sink.ctx = &own;
+                subd_diag_clear(&d);
+                CHECK_OK(subd_loop_stream(&a, &in, &o, &sink, &d), &d);
+#if H_HOST
+                CHECK(lc_compare_one(&a, &in, 6, b, fl, &hash));
+                CHECK_EQ(own, hash); /* the device's hash is the checked one */
+#endif
+                hash = own;
+            }
+            h_hash(names[2u * id + lim], hash);
+        }
+#if H_HOST
+    CHECK_EQ(lc_streams, 4u);
+    CHECK_EQ(lc_skipped, 0);
+#endif
+}
+
+/* Partial tiles (loop_stream.c's sp_enter): a patch refused at the tiles' level tk, next to an
+ * irregular vertex, has its regular children tiled one level down with a tile of one level
+ * fewer, down to tiles of three levels (limit mode: two). The icosahedron (every control vertex of
+ * valence 5) counts them exactly: a face with c irregular corners has c corner children with
+ * one irregular corner and 4 - c regular ones; a regular face at level tk is a tile, below it
+ * one at level k when L - k is at least that least depth. The pull form's tile counts (subd_lt_stream_count) must be these,
+ * plain and limit mode, levels 2..6; the host compares the streams with subd_loop (limit mode:
+ * subd_loop_limit of it) bit for bit at levels 3..5 (level 6: stream_tiles,
+ * stream_tiles_limit), both rules. */
+static void stream_tiles_partial(void)
+{
+    uint32_t hash = 2166136261u, lim, levels, t, k, fails = 0, made = 0;
+    subd_arena a;
+    subd_mesh in;
+    subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+    if (!lc_make_shape(S_ICO, &a, &in)) return;
+    for (lim = 0; lim < 2u; lim++)
+        for (levels = 2; levels <= 6u; levels++) {
+            uint32_t cfg = lim ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS;
+            uint32_t td = levels < cfg ? levels : cfg, tk, want[6], reg = 0, irr3 = in.num_faces, irr1 = 0, got;
+            uint32_t n = 0, mark = subd_arena_mark(&a);
+            subd_loop_opts o;
+            subd_stream h;
+            static subd_tri buf[40]; /* static: off the device's stack */
+            int r;
+            if (td < 2u) continue;
+            tk = levels - td;
+            for (t = 0; t < 6u; t++) want[t] = 0;
+            for (k = 0; k + 2u <= levels; k++) {
+                if (k == tk || (k > tk && levels - k >= (lim ? 2u : 3u))) {
+                    want[levels - k] += reg; /* a regular face at level tk, or below it with a
+                                              * tile of at least 3 levels (limit mode: 2) */
+                    reg = 0;
+                }
+                reg = 4u * reg + irr3 + 3u * irr1;
+                irr1 = 3u * irr3 + irr1;
+                irr3 = 0;
+            }
+            o.levels = levels;
+            o.boundary = SUBD_LOOP_BOUNDARY_PAPER;
+            o.flags = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+            if (!CHECK_OK(subd_loop_stream_begin(&a, &in, &o, &h, 0), 0)) return;
+            while ((r = subd_stream_next_tris(&h, buf, 40u)) > 0) {
+                n += (uint32_t)r;
+                if (n == in.num_faces << (2u * levels)) /* the last triangles: every tile made */
+                    for (t = 2; t <= 5u; t++) {
+                        got = subd_lt_stream_count(&h, t);
+                        if (got != want[t]) fails++;
+                        if (t < td) made += got;
+                    }
+            }
+            CHECK_EQ(r, 0);
+            CHECK_EQ(n, in.num_faces << (2u * levels));
+            subd_stream_end(&h);
+            CHECK_EQ(subd_arena_mark(&a), mark);
+            if (levels >= 4u) CHECK(want[lim ? 2u : 3u] > 0u); /* partial tiles down to their least depth */
+        }
+    CHECK_EQ(fails, 0);
+    CHECK(made > 0u);
+#if H_HOST
+    for (lim = 0; lim < 2u; lim++)
+        for (levels = 3; levels <= 5u; levels++) {
+            uint32_t fl = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, fl, &hash);
+            lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_BSPLINE, fl, &hash);
+        }
+    CHECK_EQ(lc_skipped, 0);
+#endif
+    (void)hash;
+}
+
+/* Limit mode's depth-5 tiles (loop_tile.h's lt_split: a quarter's last level with margin
+ * made at its first sixteenth, kept for the other three): the pull form, stopped at every
+ * 7th triangle (inside a sixteenth's 64; 1024 triangles per tile) and at every 1000th,
+ * resumes with exactly the push form's triangles (positions, normals, ids, face, level), and
+ * depth-5 tiles are made: the flipped grid at level 5 (tiles at level 0, partial ones next
+ * to its valence-5 and valence-7 vertices), both rules. The push form equals
+ * subd_loop_limit's bits (stream_tiles_limit, stream_level6). */
+typedef struct pull_cmp5 {
+    subd_stream *s;
+    subd_tri buf[1000];
+    uint32_t batch, have, next, bad;
+} pull_cmp5;
+
+static int pull_tri5(void *ctx, const subd_tri *t)
+{
+    pull_cmp5 *c = (pull_cmp5 *)ctx;
+    const subd_tri *u;
+    uint32_t j, k;
+    if (c->next == c->have) {
+        int r = subd_stream_next_tris(c->s, c->buf, c->batch);
+        c->have = r > 0 ? (uint32_t)r : 0u;
+        c->next = 0;
+        if (!c->have) {
+            c->bad++;
+            return 0;
+        }
+    }
+    u = &c->buf[c->next++];
+    for (j = 0; j < 3u; j++) {
+        for (k = 0; k < 3u; k++)
+            if (!h_same(t->pos[j][k], u->pos[j][k]) || !h_same(t->normal[j][k], u->normal[j][k])) c->bad++;
+        if (t->id[j] != u->id[j]) c->bad++;
+    }
+    if (t->face != u->face || t->level != u->level) c->bad++;
+    return 0;
+}
+
+static void stream_tiles_limit5(void)
+{
+    static pull_cmp5 c; /* static: off the device's stack */
+    const uint32_t batches[2] = {7u, 1000u};
+    uint32_t b, rule;
+    for (rule = 0; rule < 2u; rule++)
+        for (b = 0; b < 2u; b++) {
+            subd_arena a;
+            subd_mesh in;
+            subd_loop_opts o;
+            subd_stream h;
+            subd_tri_sink sink;
+            subd_diag d;
+            uint32_t mark;
+            subd_diag_clear(&d);
+            subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+            if (!make_grid(&a, 6u, 1, 0, &in)) return;
+            o.levels = 5;
+            o.boundary = rule ? SUBD_LOOP_BOUNDARY_BSPLINE : SUBD_LOOP_BOUNDARY_PAPER;
+            o.flags = SUBD_LOOP_STREAM_LIMIT;
+            mark = subd_arena_mark(&a);
+            if (!CHECK_OK(subd_loop_stream_begin(&a, &in, &o, &h, &d), &d)) return;
+            c.s = &h;
+            c.batch = batches[b];
+            c.have = c.next = c.bad = 0;
+            sink.tri = pull_tri5;
+            sink.ctx = &c;
+            CHECK_OK(subd_loop_stream(&a, &in, &o, &sink, &d), &d); /* above the pull stream */
+            CHECK_EQ(c.bad, 0);
+            CHECK_EQ(c.next, c.have);
+#if SUBD_LOOP_TILE_LEVELS_LIMIT == 5
+            CHECK(subd_lt_stream_count(&h, 5u) > 0u); /* depth-5 tiles were made */
+#endif
+            CHECK_EQ(subd_stream_next_tris(&h, c.buf, c.batch), 0); /* the end */
+            CHECK_EQ(subd_arena_mark(&a), mark);
+        }
+}
+
+const test_case suite_loop_tiles[] = {
+    {"stream_tiles", stream_tiles},
+    {"stream_tiles_limit", stream_tiles_limit},
+    {"stream_tiles_huge", stream_tiles_huge},
+    {"stream_level6", stream_level6},
+    {"stream_tiles_partial", stream_tiles_partial},
+    {"stream_tiles_limit5", stream_tiles_limit5},
+    {0, 0},
+};

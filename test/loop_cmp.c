@@ -110,6 +110,21 @@ uint32_t lc_streams, lc_skipped;
 uint8_t lc_big_arena[LC_BIG_ARENA_BYTES] __attribute__((aligned(8)));
 #endif
 
+void lc_sink_init(cmp_sink *s, subd_loop_sink *sink, const subd_mesh *ref, uint64_t *v2id, uint32_t stop_after,
+                  uint32_t hash)
+{
+    uint32_t v;
+    for (v = 0; v < ref->num_verts; v++) v2id[v] = UINT64_MAX;
+    s->ref = ref;
+    s->lpos = s->lnrm = 0;
+    s->v2id = v2id;
+    s->j = s->bad_pos = s->bad_id = 0;
+    s->stop_after = stop_after;
+    s->hash = hash;
+    sink->tri = lc_cmp_tri;
+    sink->ctx = s;
+}
+
 /* Streams `in` at `levels` with rule b and compares with subd_loop. Returns 0 when the
  * arena cannot hold subd_loop's output (the case is skipped and counted). */
 int lc_compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loop_boundary b, uint32_t flags,
@@ -122,6 +137,7 @@ int lc_compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loo
     cmp_sink s;
     subd_loop_sink sink;
     uint64_t *ids;
+    subd_real *lp = 0, *ln = 0; /* limit mode: subd_loop_limit of the reference */
     int st;
     subd_diag_clear(&d);
     o.levels = levels;
@@ -135,9 +151,7 @@ int lc_compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loo
         return 0;
     }
     if (!CHECK_OK(subd_loop(a, in, &o, &ref, &d), &d)) return 0;
-    s.lpos = s.lnrm = 0;
     if (flags & SUBD_LOOP_STREAM_LIMIT) {
-        subd_real *lp = 0, *ln = 0;
         uint32_t lplan;
         if (!CHECK_OK(subd_loop_limit_plan(&ref, &(subd_loop_limit_opts){b, SUBD_LOOP_LIMIT_NORMALS}, &lplan, 0), &d)) return 0;
         if ((uint64_t)lplan + ref.num_verts * 8u + splan + 64u > subd_arena_free_bytes(a)) {
@@ -146,8 +160,6 @@ int lc_compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loo
             return 0;
         }
         if (!CHECK_OK(subd_loop_limit(a, &ref, &(subd_loop_limit_opts){b, SUBD_LOOP_LIMIT_NORMALS}, &lp, &ln, &d), &d)) return 0;
-        s.lpos = lp;
-        s.lnrm = ln;
     }
     if ((uint64_t)ref.num_verts * 8u + splan + 64u > subd_arena_free_bytes(a)) {
         subd_arena_rewind(a, mark);
@@ -155,13 +167,9 @@ int lc_compare_one(subd_arena *a, const subd_mesh *in, uint32_t levels, subd_loo
         return 0;
     }
     ids = (uint64_t *)subd_arena_alloc(a, ref.num_verts * 8u);
-    for (v = 0; v < ref.num_verts; v++) ids[v] = UINT64_MAX;
-    s.ref = &ref;
-    s.v2id = ids;
-    s.j = s.bad_pos = s.bad_id = s.stop_after = 0;
-    s.hash = *hash;
-    sink.tri = lc_cmp_tri;
-    sink.ctx = &s;
+    lc_sink_init(&s, &sink, &ref, ids, 0, *hash);
+    s.lpos = lp;
+    s.lnrm = ln;
     used = subd_arena_mark(a);
     subd_arena_reset_peak(a);
     st = subd_loop_stream(a, in, &so, &sink, &d);

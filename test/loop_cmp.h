@@ -23,6 +23,10 @@ typedef struct cmp_sink {
     uint32_t hash;
 } cmp_sink;
 int lc_cmp_tri(void *ctx, const subd_loop_tri *t);
+/* s and sink set up to compare with ref from its first face (v2id: ref->num_verts entries,
+ * cleared here; stop_after: the sink's stop, 0 none; hash: the FNV-1a start). */
+void lc_sink_init(cmp_sink *s, subd_loop_sink *sink, const subd_mesh *ref, uint64_t *v2id, uint32_t stop_after,
+                  uint32_t hash);
 /* A sink that counts the triangles (ctx: a uint32_t). */
 int lc_count_tri(void *ctx, const subd_loop_tri *t);
 

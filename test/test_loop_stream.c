@@ -161,17 +161,9 @@ static void stream_sink_stop(void)
     (void)ids;
     for (k = 0; k < sizeof stops / sizeof stops[0]; k++) {
         uint64_t *v2id = (uint64_t *)subd_arena_alloc(&a, ref.num_verts * 8u);
-        uint32_t v, mark;
+        uint32_t mark;
         if (!CHECK(v2id != 0)) return;
-        for (v = 0; v < ref.num_verts; v++) v2id[v] = UINT64_MAX;
-        s.ref = &ref;
-        s.lpos = s.lnrm = 0;
-        s.v2id = v2id;
-        s.j = s.bad_pos = s.bad_id = 0;
-        s.stop_after = stops[k];
-        s.hash = 0;
-        sink.tri = lc_cmp_tri;
-        sink.ctx = &s;
+        lc_sink_init(&s, &sink, &ref, v2id, stops[k], 0);
         mark = subd_arena_mark(&a);
         CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), 7);
         CHECK_EQ(d.face, (stops[k] - 1u) / 16u); /* 16 triangles per control face */
@@ -294,7 +286,7 @@ static void stream_irregular(void)
     for (k = 0; k < sizeof stops / sizeof stops[0]; k++) {
         subd_loop_opts o;
         subd_loop_sink sink;
-        uint32_t n = 0, mark = subd_arena_mark(&a);
+        uint32_t mark = subd_arena_mark(&a);
         cmp_sink s;
         subd_mesh ref;
         uint64_t *v2id;
@@ -304,15 +296,7 @@ static void stream_irregular(void)
         if (!CHECK_OK(subd_loop(&a, &in, &o, &ref, &d), &d)) return;
         v2id = (uint64_t *)subd_arena_alloc(&a, ref.num_verts * 8u);
         if (!CHECK(v2id != 0)) return;
-        for (n = 0; n < ref.num_verts; n++) v2id[n] = UINT64_MAX;
-        s.ref = &ref;
-        s.lpos = s.lnrm = 0;
-        s.v2id = v2id;
-        s.j = s.bad_pos = s.bad_id = 0;
-        s.stop_after = stops[k];
-        s.hash = 0;
-        sink.tri = lc_cmp_tri;
-        sink.ctx = &s;
+        lc_sink_init(&s, &sink, &ref, v2id, stops[k], 0);
         CHECK_EQ(subd_loop_stream(&a, &in, &o, &sink, &d), 7);
         CHECK_EQ(d.face, (stops[k] - 1u) >> (2u * o.levels)); /* 4^L triangles per control face */
         CHECK_EQ(s.j, stops[k]);

@@ -17,7 +17,9 @@
  * and order); what makes it cheaper:
  *  - tiles (s48c_tile): the last S48C_T levels of a subtree are refined breadth first, as
  *    the uniform stream's tile (sr48_tile.c), one refinement and crop per level instead of
- *    one per node, and every node's corners and new vertex are read at max_level from the
+ *    one per node (first cropped to ring 1 of the descendants and their partners, the last
+ *    level made without its window, s48c_small; two rings where a position would not be
+ *    exact), and every node's corners and new vertex are read at max_level from the
  *    last refined window (no descents); a decision of level k >= max_level - S48C_T tiles
  *    each star triangle from the current window when it holds what the tile needs (every
  *    corner exact, the full star at the star test's level: checked), else after rebuilding
@@ -42,10 +44,13 @@
  * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
  * window A lives in three level windows below the tile's root, free during a decision).
  *
- * Length (about 680 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
- * its exact memos, whose parts (the tiles, the memo's tiles, the depth-first walk and the
- * decision) share the walk's per-level state and the tiles' arrays through static helpers;
- * the counting region F(D), which needs only the level-k window, is in sr48_chord_region.c.
+ * Length (about 760 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
+ * its exact memos, whose parts (the tiles with their smaller crops, the memo's tiles, the
+ * depth-first walk and the decision) share the walk's per-level state and the tiles' arrays
+ * through static helpers; the counting region F(D), which needs only the level-k window, is
+ * in sr48_chord_region.c. The next split: the tiles (s48c_level .. s48c_bits) in a file of
+ * their own, with the tile arrays' accessors (s48c_tn, s48c_tf, s48c_vm, s48c_lin) in
+ * sr48_chord_internal.h.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_chord_internal.h"

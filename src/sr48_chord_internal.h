@@ -20,4 +20,15 @@ int subd_s48_chord_may_(const s48_state *s, const s48_win *w, uint32_t k, uint32
 /* The same for the walk's node cur of window w of level j, k <= j < k + S48C_M. */
 int subd_s48_chord_may_at_(const s48_state *s, const s48_win *w, uint32_t k, uint32_t j, uint32_t cur);
 
+/* The tiles (sr48_chord_tile.c). The memo entry (5 words) of the tile root with key `key` at
+ * level j; the walk's tile of node r of the level-j window for the level-k decision (1
+ * beyond, 0 within, -1 failure, -2 a loose tile's window misses part of what it needs); the
+ * memo's tile of triangle r of the level-j window into entry mk (1 done, 0 not exact, -1
+ * failure). */
+uint32_t *subd_s48_chord_mk_(const s48_state *s, uint64_t key, uint32_t j);
+int subd_s48_chord_tile_(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose);
+int subd_s48_chord_bits_(s48_state *s, uint32_t j, uint32_t r, uint32_t *mk);
+/* Keeps the finest position p of vertex id in the cache (sr48_chord_walk.c). */
+void subd_s48_chord_put_(s48_state *s, uint64_t id, const subd_real *p);
+
 #endif

@@ -15,20 +15,20 @@
  * whose subtree cannot hold a member is skipped, subd_s48_chord_may_). The answer is exactly
  * the one of walking every counting node and testing every vertex below it (same cut, bits
  * and order); what makes it cheaper:
- *  - tiles (s48c_tile): the last S48C_T levels of a subtree are refined breadth first, as
+ *  - tiles (subd_s48_chord_tile_): the last S48C_T levels of a subtree are refined breadth first, as
  *    the uniform stream's tile (sr48_tile.c), one refinement and crop per level instead of
  *    one per node (first cropped to ring 1 of the descendants and their partners, the last
- *    level made without its window, s48c_small; two rings where a position would not be
+ *    level made without its window, sr48_chord_tile.c; two rings where a position would not be
  *    exact), and every node's corners and new vertex are read at max_level from the
  *    last refined window (no descents); a decision of level k >= max_level - S48C_T tiles
  *    each star triangle from the current window when it holds what the tile needs (every
  *    corner exact, the full star at the star test's level: checked), else after rebuilding
  *    the windows along that triangle's path (s48c_path); a coarser decision walks depth
  *    first (s48_chord_walk) down to level max_level - S48C_T and tiles there;
- *  - the interpolants (s48c_sub): each tested node's interpolant is carried down its subtree
+ *  - the interpolants (sr48_chord_tile.c's s48c_sub): each tested node's interpolant is carried down its subtree
  *    one midpoint step per level (the steps of subd_sr48_chord_beyond_, so the same bits)
  *    instead of being rebuilt from the node for every vertex;
- *  - the memo's tiles (s48c_fast, s48c_bits): a decision of level k >= tl = max_level -
+ *  - the memo's tiles (s48c_fast, subd_s48_chord_bits_): a decision of level k >= tl = max_level -
  *    S48C_T reads E > eps of the nodes under each star triangle from the memo entry of its
  *    level-tl ancestor's tile (made from the level-tl window when missing, in three level
  *    windows kept for it after max_level - 1's), so a tile of the last S48C_T levels is
@@ -44,20 +44,13 @@
  * of the stream's state (s48_state's c* members, sized by sr48_stream.c's layout; a tile's
  * window A lives in three level windows below the tile's root, free during a decision).
  *
- * Length (about 760 lines, over the ~600 of STYLE.md): one concept, the exhaustive walk and
- * its exact memos, whose parts (the tiles with their smaller crops, the memo's tiles, the
- * depth-first walk and the decision) share the walk's per-level state and the tiles' arrays
- * through static helpers; the counting region F(D), which needs only the level-k window, is
- * in sr48_chord_region.c. The next split: the tiles (s48c_level .. s48c_bits) in a file of
- * their own, with the tile arrays' accessors (s48c_tn, s48c_tf, s48c_vm, s48c_lin) in
- * sr48_chord_internal.h.
+ * The tiles, their smaller crops and the memo's tiles are sr48_chord_tile.c's (one file per
+ * concept: the walk and the decisions here, the breadth-first tiles there; their calls:
+ * sr48_chord_internal.h).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_chord_internal.h"
 
-/* A tile's node masks are 64 bits (two words of a memo entry): its internal nodes
- * 1 .. 2^S48C_T - 1 (s48c_tile). */
-typedef char s48c_masks_fit[S48C_T >= 1u && S48C_T <= 6u ? 1 : -1];
 
 /* The cache of finest positions (S48C_NC entries, direct mapped by id: the ids after cdesc,
  * the positions after cpos, sr48_stream_internal.h): a
@@ -78,7 +71,7 @@ static uint32_t s48c_slot(uint64_t id)
 }
 
 /* Keeps the finest position p of vertex id in the cache. */
-static void s48c_put(s48_state *s, uint64_t id, const subd_real *p)
+void subd_s48_chord_put_(s48_state *s, uint64_t id, const subd_real *p)
 {
     uint32_t e = s48c_slot(id), q, *cid = s->cdesc + 3u * S48C_ND;
     subd_real *cp = s->cpos + 3u * (s->levels + 4u);
@@ -101,7 +94,7 @@ int subd_s48_chord_finest_(s48_state *s, uint32_t k, uint32_t t, uint64_t id, su
         return 1;
     }
     if (!subd_s48_finest_(s, k, t, id, out)) return 0;
-    s48c_put(s, id, out);
+    subd_s48_chord_put_(s, id, out);
     return 1;
 }
 
@@ -172,337 +165,6 @@ static int s48c_test(const s48_state *s, uint32_t k, uint32_t i)
     return 0;
 }
 
-/* CHORD's tile arrays after the finest positions and their cache (sr48_stream.c's layout,
- * one block): the interpolant stack (9 subd_sr48_lin per level, 8 bytes each reserved),
- * then 3 corners per node of a tile of SUBD_SR48_STREAM_CTM_(levels) levels (heap order),
- * then a flag per node. */
-static subd_sr48_lin *s48c_lin(const s48_state *s)
-{
-    return (subd_sr48_lin *)(void *)((uint8_t *)s->cpos + SUBD_SR48_SA_(12u * (s->levels + 4u + S48C_NC)));
-}
-static uint16_t *s48c_tn(const s48_state *s)
-{
-    return (uint16_t *)(void *)((uint8_t *)s48c_lin(s) + 72u * (SUBD_SR48_STREAM_CTM_(s->levels) + 1u));
-}
-static uint8_t *s48c_tf(const s48_state *s) { return (uint8_t *)s48c_tn(s) + (12u << SUBD_SR48_STREAM_CTM_(s->levels)); }
-static uint8_t *s48c_vm(const s48_state *s) { return s48c_tf(s) + (2u << SUBD_SR48_STREAM_CTM_(s->levels)); }
-
-/* One step of subd_sr48_chord_beyond_'s interpolant: the triangle l (apex, b0, b1) to its
- * child `bit` (0: (m; apex, b0), 1: (m; b1, apex)), m the midpoint of its base: the same
- * operations in the same order, so the same bits. */
-static void s48c_lin_child(const subd_sr48_lin *l, uint32_t bit, subd_sr48_lin *c)
-{
-    uint32_t i;
-    for (i = 0; i < 3u; i++) {
-        c[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
-        c[3u + i] = bit ? l[6u + i] : l[i];
-        c[6u + i] = bit ? l[i] : l[3u + i];
-    }
-}
-
-/* The tile's subtree of node h0 (heap order in ctn, the internal nodes below n) against one
- * interpolant, given at h0 in clin[0..8]: the vertex each internal node creates (the apex
- * of its child 0), pre-order, the interpolant carried down one step per level in clin (as
- * subd_sr48_chord_beyond_ computes it along the path, so the same bits). 1 beyond, 0 within. */
-static int s48c_sub(const s48_state *s, const s48_win *x, uint32_t h0, uint32_t n)
-{
-    subd_sr48_lin *st = s48c_lin(s), mid[3];
-    const uint16_t *tn = s48c_tn(s);
-    uint32_t h = h0, d = 0, i, e;
-    for (e = 0; e < n; e++) { /* at most n - 1 nodes, each tested once */
-        const subd_sr48_lin *l = st + 9u * d;
-        for (i = 0; i < 3u; i++) mid[i] = subd_sr48_lin_mid_(l[3u + i], l[6u + i]);
-        if (subd_sr48_beyond_(x->vp + 3u * tn[6u * h], mid, s->ad.eps)) return 1;
-        if (2u * h < n) { /* an internal child 0 */
-            s48c_lin_child(l, 0u, st + 9u * (d + 1u));
-            h *= 2u;
-            d++;
-            continue;
-        }
-        while (d > 0u && (h & 1u)) { /* up past the children 1 */
-            h >>= 1;
-            d--;
-        }
-        if (d == 0u) return 0;
-        h++; /* child 0's sibling */
-        s48c_lin_child(st + 9u * (d - 1u), 1u, st + 9u * d);
-    }
-    return 0;
-}
-
-/* The memo entry of the tile root with key `key` at level j: S48C_NB entries of 5 words after
- * the decided diamonds (s48c_tile has their words), in sets of two (2-way, by key and level):
- * the set's entry that holds the root, else the one used less recently, which is then
- * counted as used (bit 31 of the set's first entry's last word: its first entry was used
- * last). Which entry holds a root changes nothing but the hits. */
-static uint32_t *s48c_mk(const s48_state *s, uint64_t key, uint32_t j)
-{
-    const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
-    uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
-                  10u * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / 2u - 1u));
-    uint32_t first;
-    if (e[0] == (uint32_t)key && e[1] == tag) first = 1;
-    else if (e[5] == (uint32_t)key && e[6] == tag) first = 0;
-    else first = (e[3] >> 31) ^ 1u;
-    e[3] = (e[3] & 0x7fffffffu) | first << 31;
-    return first ? e : e + 5;
-}
-
-/* One level of a tile (s48c_tile, s48c_bits: the same refinements and crops, so the same
- * positions): at the first level of a tile of 2 or more levels the root r's window w is
- * cropped to r and its two rings (the window's invariant); the window *p of level `level` is
- * refined into x; unless it was the tile's last level, x is cropped into a to the rings of
- * the descendants (*lo, *n: their first index and count, doubled by the refinement).
- * -1 failure, 1 the last level refined (in x), 0 go on. */
-static int s48c_level(s48_state *s, const s48_win *w, uint32_t r, uint32_t level, int first, int last,
-                      const s48_win **p, s48_win *a, s48_win *x, uint32_t *lo, uint32_t *n, uint32_t ct, uint32_t cv)
-{
-    if (first && !last) {
-        if (!subd_s48_crop_n_(s, w, r, 1u, a, ct, cv)) return -1;
-        *lo = a->hd[3];
-        *p = a;
-    }
-    if (!subd_s48_refine_(s, *p, level, x)) return -1;
-    *lo *= 2u;
-    *n *= 2u;
-    if (last) return 1;
-    if (!subd_s48_crop_n_(s, x, *lo, *n, a, ct, cv)) return -1;
-    *lo = a->hd[3];
-    *p = a;
-    return 0;
-}
-
-/* s48c_tile's counting flags of the tile's nodes at one level (the descendants lo .. lo + n - 1
- * of window p, level j + step, `step` levels below the root, which is f->up levels below the
- * decision's level f->k): tf[n + q]. They read the keys of the nodes and the fans of their
- * corners only, which every crop of the tile holds (ring 1 of the descendants holds each
- * corner's fan wherever two rings do), so they do not depend on the crop. 0, or -2 when a
- * loose tile's window misses part of a star. */
-typedef struct s48c_fl {
-    uint32_t k, up, loose;
-} s48c_fl;
-static int s48c_flags(const s48_state *s, const s48c_fl *f, uint32_t j, uint32_t step, const s48_win *p, uint32_t lo,
-                      uint32_t n)
-{
-    const uint32_t d = f->up + step;
-    uint8_t *tf = s48c_tf(s), *vm = s48c_vm(s);
-    uint32_t i, q, u, h;
-    if (d == S48C_M) {
-        /* subd_s48_chord_counts_' star test for all of them at once: per vertex of p, 1 when
-         * it is a corner of one of F(D)'s triangles of this level, 2 when a triangle at it
-         * has an outside neighbour across an edge at it (its fan is not all in p: a loose
-         * tile's window may miss part of a star) */
-        for (i = 0; i < p->hd[1]; i++) vm[i] = 0;
-        for (i = 0; i < p->hd[0]; i++) {
-            const uint16_t *tv = p->tv + 3u * i;
-            if (subd_s48_chord_has_(s, S48C_M, s48_key(p, i), 1u)) {
-                vm[tv[0]] |= 1u;
-                vm[tv[1]] |= 1u;
-                vm[tv[2]] |= 1u;
-            }
-            for (u = 0; u < 3u; u++) /* slot u's ends: (a, b), (c, a), (b, c) */
-                if (p->tn[3u * i + u] == S48_OUT) {
-                    vm[tv[u == 0u ? 1u : u == 1u ? 0u : 2u]] |= 2u;
-                    vm[tv[u == 0u ? 2u : u == 1u ? 1u : 0u]] |= 2u;
-                }
-        }
-    }
-    for (q = 0; q < n; q++) {
-        h = n + q;
-        if (d == S48C_M) {
-            const uint16_t *tv = p->tv + 3u * (lo + q);
-            const uint32_t mv = (uint32_t)vm[tv[0]] | vm[tv[1]] | vm[tv[2]];
-            if (f->loose && (mv & 2u)) return -2;
-            tf[h] = (uint8_t)(mv & 1u);
-        } else if (d < S48C_M) {
-            tf[h] = (uint8_t)subd_s48_chord_counts_(s, f->k, j + step, p, lo + q);
-        } else {
-            tf[h] = step == 0u ? 1u : tf[h >> 1];
-        }
-    }
-    return 0;
-}
-
-/* The level max_level triangles of the tile of triangle r of the level-j window w (m = max_level - j
- * >= 2 levels) with the uniform tile's smaller crops (sr48_tile.c, s48_tile_build): m - 1
- * refinements, each cropped in the same pass to ring 1 of r's descendants and the partners of
- * their triangles (subd_s48_refine_crop_'s fin 1; the last as the uniform tile's last, fin 1
- * or 2, except that a flagged tile keeps fin 1 there: its star test may fall on the last level
- * and needs every triangle at the descendants' corners, which fin 2 drops), alternately into the tile window A and x so that the last, level
- * max_level - 1 (its descendants D), lands in x; then level max_level without its window, as
- * subd_s48_tile_emit_ makes it: D's corners (smoothed by subd_s48_last_ when max_level is even
- * and smoothed) and each D triangle's diamond's new vertex (the midpoint of the same two
- * vertices, subd_mid; into x's vertex nv + q for D's triangle q, nv = x's vertex count, after
- * the ones D's corners have). Every position is checked exact first (s48_tile_exact's
- * tests): a kept vertex's position and flags do not depend on the crop, so the positions are
- * those of the two rings' tile below. tn gets the corners of the 2 |D| triangles of level
- * max_level (nodes 2 |D| .. 4 |D| - 1), *nl their count. 1 done, 0 not exact, a capacity or
- * an overflow (the caller makes the tile with the two rings, which reports the overflow),
- * -1 failure. fl (s48c_tile's tiles): each level's counting flags first (s48c_flags; -2 as
- * there). A (*ap) holds capacities s->at, s->av. Measured: about half the refined triangles of
- * the two rings' tile. */
-static int s48c_small(s48_state *s, const s48_win *w, uint32_t j, uint32_t r, uint32_t m, s48_win *ap, s48_win *x,
-                      uint32_t *nl, const s48c_fl *fl)
-{
-    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u;
-    const s48_win a = *ap;
-    const s48_win *p = w;
-    uint16_t *tn = s48c_tn(s);
-    uint32_t step, lo = r, n = 1, q, i, nv, ovf = 0;
-    for (step = 0; step + 1u < m; step++) {
-        const uint32_t last = step + 2u == m;
-        s48_win *o = ((m - 2u - step) & 1u) ? ap : x;
-        if (fl && s48c_flags(s, fl, j, step, p, lo, n) < 0) return -2;
-        if (!subd_s48_refine_crop_(s, p, j + step, lo, n, o, s->at, s->av, last && !sm && !fl ? 2u : 1u))
-            return s->err ? -1 : 0;
-        lo = o->hd[3];
-        n *= 2u;
-        p = o;
-    }
-    if (fl && s48c_flags(s, fl, j, m - 1u, x, lo, n) < 0) return -2;
-    if (sm && !subd_s48_last_(s, x, lo, n, ap)) return s->err ? -1 : 0;
-    nv = x->hd[1];
-    if (nv + n > s->xv) return 0;
-    for (q = 0; q < n; q++) {
-        const uint16_t *tv = x->tv + 3u * (lo + q);
-        uint32_t e0, e1, lt;
-        const uint16_t lnb = subd_s48_mid_ends_(s, x, lo + q, &lt, &e0, &e1);
-        if (lnb == S48_OUT || !(x->vf[e0] & x->vf[e1] & S48_EXACT)) return 0;
-        for (i = 0; i < 3u; i++)
-            if (!((sm ? a.vf[s->vmap[tv[i]]] : x->vf[tv[i]]) & S48_EXACT)) return 0;
-        for (i = 0; i < 3u; i++) x->vp[3u * (nv + q) + i] = subd_mid(x->vp[3u * e0 + i], x->vp[3u * e1 + i], &ovf);
-        /* child 0 = (m; c, a), child 1 = (m; b, c) of (c; a, b) */
-        tn[6u * (n + q)] = (uint16_t)(nv + q);
-        tn[6u * (n + q) + 1u] = tv[0];
-        tn[6u * (n + q) + 2u] = tv[1];
-        tn[6u * (n + q) + 3u] = (uint16_t)(nv + q);
-        tn[6u * (n + q) + 4u] = tv[2];
-        tn[6u * (n + q) + 5u] = tv[0];
-    }
-    if (ovf) return 0;
-    if (sm) /* D's corners at max_level, after every new vertex read them at max_level - 1 */
-        for (q = 0; q < 3u * n; q++) {
-            const uint16_t v = x->tv[3u * lo + q];
-            for (i = 0; i < 3u; i++) x->vp[3u * v + i] = a.vp[3u * s->vmap[v] + i];
-        }
-    *nl = 2u * n;
-    return 1;
-}
-
-/* CHORD's tile: the subtree of the walk's node r (level j >= k, current in the level-j window,
- * entered; its ancestors' nodes k .. j - 1 on the walk's path, with their counting flags and
- * their corners' finest positions) refined breadth first down to max_level as the uniform
- * stream's tile (sr48_tile.c: each level cropped to the rings of r's descendants, a union of the
- * windows the depth-first walk would crop, so every position is exact and the stream's, checked),
- * in the tile window A and X. Its nodes' counting flags are the walk's (subd_s48_chord_counts_ on
- * the level's window, which holds each descendant's rings; below level k + S48C_M a node counts
- * iff its ancestor there does); the corners of every node come bottom up from the level max_level
- * triangles (child 0 = (m; c, a), child 1 = (m; b, c) of (c; a, b)). Then every vertex the
- * subtree creates is tested against every counting node above it: the walk's counting ancestors
- * (their interpolant brought down to r) and the tile's counting nodes: the same pairs as the
- * depth-first walk tests, so the same answer. 1 beyond, 0 within, -1 failure; loose (r is not its
- * window's current triangle): -2 when the window misses part of a depth-S48C_M node's star or a
- * corner is not exact (the caller then rebuilds r's own windows). */
-static int s48c_tile(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose)
-{
-    const uint32_t m = s->levels - j, up = j - k; /* up: the walk's nodes above r */
-    s48_win w, x, a;
-    const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i, u, dd, deep = 0, above, *mk, tag;
-    uint64_t bad;
-    int lv;
-    uint16_t *tn = s48c_tn(s);
-    uint8_t *tf = s48c_tf(s);
-    subd_sr48_lin *st = s48c_lin(s);
-    const s48c_fl fl = {k, up, loose};
-    /* A: the level window j + 1 (m = 2: two children, a level window's crop) or j + 1 ..
-     * j + 3 (m >= 3: the tile window's layout, which fits three level windows:
-     * sr48_stream.c), free below the walk's node (j + 3 <= max_level: for m = 3 the third
-     * is the first window of the memo's tiles, s48c_mwin, scratch between their calls) */
-    const uint32_t ct = m >= 3u ? s->at : s->wt, cv = m >= 3u ? s->av : s->wv;
-    uint64_t key;
-    s48_lev(s, j, &w);
-    key = s48_key(&w, r);
-    tag = (uint32_t)(key >> 32) | j << 20;
-    /* r's deviations kept (S48C_NB entries of 5 words after the decided diamonds, 2-way by
-     * key and level, s48c_mk: key low word; key high word | level << 20; words 2 and 4 the
-     * low and high halves of a 64-bit mask, bit h set when the tile's node h deviates by
-     * more than eps, E(h) > eps; word 3 bit u set when the vertices r's subtree creates
-     * deviate from the interpolant of r's ancestor u levels up, for u <= the value in bits
-     * 24..28). All are functions of r, whatever the decision: a hit answers unless a
-     * deviating node's counting flag needs the star test (level k + S48C_M), which needs
-     * the tile's windows. */
-    mk = s48c_mk(s, key, j);
-    if (mk[0] == (uint32_t)key && mk[1] == tag && (mk[3] >> 24 & 0x1fu) >= up) {
-        for (u = 1; u <= up; u++)
-            if (((mk[3] >> u) & 1u) && s->cfl[j - u]) return 1;
-        for (h = 1, dd = 0; h < (1u << m); h++) {
-            if (h == 2u << dd) dd++; /* h's depth below r */
-            if (!(((mk[2] | (uint64_t)mk[4] << 32) >> h) & 1u)) continue;
-            if (up + dd < S48C_M) {
-                if (subd_s48_chord_has_(s, up + dd, (key << dd) | (h - (1u << dd)), 1u)) return 1;
-            } else if (up > S48C_M) {
-                return 1; /* below level k + S48C_M every node of an entered subtree counts */
-            } else {
-                deep = 1;
-            }
-        }
-        if (!deep) return 0;
-    }
-    s48_x(s, &x);
-    if (m >= 3u) s48_win_at(s, s->lev + (j + 1u) * s->lev_size, s->aoff, &a);
-    else if (m == 2u) s48_lev(s, j + 1u, &a);
-    /* with the smaller crops where A has the tile window's capacities (m >= 3), else or when
-     * they miss a position, each level cropped to the two rings */
-    lv = m >= 3u && !s->two_rings ? s48c_small(s, &w, j, r, m, &a, &x, &n, &fl) : 0;
-    if (lv < 0) return lv;
-    if (lv == 0) {
-        n = 1;
-        for (step = 0; step < m; step++) {
-            if (s48c_flags(s, &fl, j, step, p, lo, n) < 0) return -2;
-            lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, ct, cv);
-            if (lv < 0) return -1;
-            if (lv > 0) break;
-        }
-        for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
-            for (i = 0; i < 3u; i++) {
-                const uint16_t v = x.tv[3u * (lo + q) + i];
-                if (!(x.vf[v] & S48_EXACT)) return loose ? -2 : -1;
-                tn[3u * (n + q) + i] = v;
-            }
-    }
-    for (h = n - 1u; h >= 1u; h--) {
-        tn[3u * h] = tn[6u * h + 1u];
-        tn[3u * h + 1u] = tn[6u * h + 2u];
-        tn[3u * h + 2u] = tn[6u * h + 4u];
-    }
-    if (up == 0u) /* the root's corners: the leaf's, if its diamond does not split */
-        for (i = 0; i < 3u; i++) s48c_put(s, s48_vid(&x, tn[3u + i]), x.vp + 3u * tn[3u + i]);
-    for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
-        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
-    }
-    for (u = 1, above = 0; u <= up; u++) { /* the walk's nodes above, their interpolant brought down to r */
-        const uint32_t l = j - u;
-        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(s->cpos[3u * s->csrc[3u * l + q / 3u] + q % 3u]);
-        for (i = l; i < j; i++) {
-            s48c_lin_child(st, s->cch[i] - 1u, st + 9);
-            for (q = 0; q < 9u; q++) st[q] = st[9u + q];
-        }
-        if (s48c_sub(s, &x, 1u, n)) above |= 1u << u;
-    }
-    mk[0] = (uint32_t)key;
-    mk[1] = tag;
-    mk[2] = (uint32_t)bad;
-    mk[4] = (uint32_t)(bad >> 32);
-    mk[3] = (mk[3] & 0x80000000u) | above | up << 24;
-    for (u = 1; u <= up; u++)
-        if (((above >> u) & 1u) && s->cfl[j - u]) return 1;
-    for (h = 1; h < n; h++)
-        if (((bad >> h) & 1u) && tf[h]) return 1;
-    return 0;
-}
-
 /* Is some counting node of triangle ts's subtree (ts of the level-k window, k < levels)
  * beyond eps? Walks the subtree depth first (pre-order, child 0 first) with the windows of
  * levels k+1.. and X (free while level k decides): each node's window is refined, then
@@ -518,7 +180,7 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
     const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u; /* the tiles' level */
     s48_win w, x, c;
     uint32_t j = k, q;
-    if (k >= tl) return s48c_tile(s, k, k, ts, 0);
+    if (k >= tl) return subd_s48_chord_tile_(s, k, k, ts, 0);
     s48_lev(s, k, &w);
     for (q = 0; q < 3u; q++)
         if (!subd_s48_chord_finest_(s, k, ts, s48_vid(&w, w.tv[3u * ts + q]), s->cpos + 3u * q)) return -1;
@@ -533,7 +195,7 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
         if (!s->cfl[j] && j - k <= S48C_M && (j - k == S48C_M || !subd_s48_chord_may_at_(s, &w, k, j, cur))) {
             /* not entered */
         } else if (j == tl) { /* its subtree breadth first (j > k) */
-            const int r = s48c_tile(s, k, j, cur, 0);
+            const int r = subd_s48_chord_tile_(s, k, j, cur, 0);
             if (r != 0) return r;
         } else {
             uint64_t id;
@@ -570,88 +232,19 @@ static int s48_chord_walk(s48_state *s, uint32_t k, uint32_t ts)
     }
 }
 
-/* The memo's tiles (the decisions of levels k >= tl = max_level - S48C_T, or 0 when
- * max_level <= S48C_T): a star triangle i of level k is a node of the tile of its level-tl
- * ancestor, so E > eps of i's nodes are bits of that tile's memo entry, which one tile
- * computes for the 2^(k - tl) triangles of every level k below it and for every decision
- * that meets them (before: one tile per star triangle per decision level, from its own
- * level). The root is taken from the level-tl window of whatever path the windows hold
- * (any window triangle: positions are exact where flagged, and every corner at max_level
- * is checked), refined in the tile window after level max_level - 1's (three level
- * windows, free: a decision of level k <= max_level - 1 holds windows 0..k) and X. */
-static s48_win s48c_mwin(const s48_state *s)
-{
-    s48_win a;
-    s48_win_at(s, s->lev + (s->levels > 1u ? s->levels : 1u) * s->lev_size, s->aoff, &a);
-    return a;
-}
-
-/* The memo's tile of triangle r of the level-j window (j the tiles' level): E > eps of each
- * of its nodes into r's memo entry mk (s48c_tile's words, no walk ancestors: up = 0). The level
- * max_level triangles come from s48c_small, else from s48c_tile's refinements and crops
- * (so the same positions either way); then the same bottom-up node corners and tests
- * (s48c_sub). 1 done, 0 a corner at max_level is not exact (the window misses part of r's
- * dependency cone), -1 failure. */
-static int s48c_bits(s48_state *s, uint32_t j, uint32_t r, uint32_t *mk)
-{
-    const uint32_t m = s->levels - j;
-    s48_win w, x, a = s48c_mwin(s);
-    const s48_win *p = &w;
-    uint32_t step, lo = r, n = 1, q, h, i;
-    uint64_t bad;
-    int lv;
-    uint16_t *tn = s48c_tn(s);
-    subd_sr48_lin *st = s48c_lin(s);
-    uint64_t key;
-    s48_lev(s, j, &w);
-    key = s48_key(&w, r);
-    s48_x(s, &x);
-    lv = m >= 2u && !s->two_rings ? s48c_small(s, &w, j, r, m, &a, &x, &n, 0) : 0;
-    if (lv < 0) return -1;
-    if (lv == 0) {
-        n = 1;
-        for (step = 0; step < m; step++) {
-            lv = s48c_level(s, &w, r, j + step, step == 0u, step + 1u == m, &p, &a, &x, &lo, &n, s->at, s->av);
-            if (lv < 0) return -1;
-            if (lv > 0) break;
-        }
-        for (q = 0; q < n; q++) /* the level max_level descendants: nodes n .. 2n - 1 */
-            for (i = 0; i < 3u; i++) {
-                const uint16_t v = x.tv[3u * (lo + q) + i];
-                if (!(x.vf[v] & S48_EXACT)) return 0;
-                tn[3u * (n + q) + i] = v;
-            }
-    }
-    for (h = n - 1u; h >= 1u; h--) {
-        tn[3u * h] = tn[6u * h + 1u];
-        tn[3u * h + 1u] = tn[6u * h + 2u];
-        tn[3u * h + 2u] = tn[6u * h + 4u];
-    }
-    for (h = 1, bad = 0; h < n; h++) { /* every node's deviation */
-        for (q = 0; q < 9u; q++) st[q] = subd_sr48_lin_of_(x.vp[3u * tn[3u * h + q / 3u] + q % 3u]);
-        if (s48c_sub(s, &x, h, n)) bad |= (uint64_t)1 << h;
-    }
-    mk[0] = (uint32_t)key;
-    mk[1] = (uint32_t)(key >> 32) | j << 20;
-    mk[2] = (uint32_t)bad;
-    mk[4] = (uint32_t)(bad >> 32);
-    mk[3] &= 0x80000000u;
-    return 1;
-}
-
 /* The decision's part under star triangle i (key ki, level k >= tl) from the memo's tile of its
  * level-tl ancestor (made when missing): every node under i that deviates (a bit of the entry)
  * and counts (subd_s48_chord_counts_: for a node d levels below k < S48C_M, a descendant diamond
  * of D) answers 1. A deviating node d >= S48C_M levels below counts when its level k + S48C_M
  * ancestor is in a star of F(D)'s, a test on that level's window: then 2 (the caller tiles i as
  * before), also when the ancestor is not in the window or its tile not exact. 0: no counting node
- * under i deviates. -1 failure. The same pairs (node, vertex) as s48c_tile's, read from a
+ * under i deviates. -1 failure. The same pairs (node, vertex) as subd_s48_chord_tile_'s, read from a
  * function of the triangle: the same answer. */
 static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
 {
     const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u, dl = k - tl, m = s->levels - tl;
     const uint64_t ak = ki >> dl;
-    uint32_t *mk = s48c_mk(s, ak, tl), e, q, base, deep = 0;
+    uint32_t *mk = subd_s48_chord_mk_(s, ak, tl), e, q, base, deep = 0;
     if (mk[0] != (uint32_t)ak || mk[1] != ((uint32_t)(ak >> 32) | tl << 20)) {
         s48_win w;
         uint32_t lo = 0, hi;
@@ -664,7 +257,7 @@ static int s48c_fast(s48_state *s, uint32_t k, uint64_t ki)
             else hi = mid;
         }
         if (lo >= w.hd[0] || s48_key(&w, lo) != ak) return 2;
-        rb = s48c_bits(s, tl, lo, mk);
+        rb = subd_s48_chord_bits_(s, tl, lo, mk);
         if (rb <= 0) return rb < 0 ? -1 : 2;
     }
     base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u)); /* i's node in the tile */
@@ -713,7 +306,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
     s->ckey[1] = (uint32_t)(cur >> 32);
     if (tiled) { /* t in place: from the memo's tile, else its own */
         if ((r = s48c_fast(s, k, cur)) < 0) return -1;
-        if (r == 2 && (r = s48c_tile(s, k, k, t, 0)) < 0) return -1;
+        if (r == 2 && (r = subd_s48_chord_tile_(s, k, k, t, 0)) < 0) return -1;
     }
     for (i = 0; i < w.hd[0] && r == 0; i++) {
         int touch = 0;
@@ -723,11 +316,11 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
                 if (w.tv[3u * i + j] == vs[q]) touch = 1;
         if (!touch || !subd_s48_chord_may_(s, &w, k, i)) continue;
         if (tiled) {
-            /* from the memo's tile; else from t's window, as it is (s48c_tile checks that
+            /* from the memo's tile; else from t's window, as it is (subd_s48_chord_tile_ checks that
              * it holds what the tile needs); else after rebuilding the windows along i's
              * path, below */
             int ri = s48c_fast(s, k, s48_key(&w, i));
-            if (ri == 2) ri = s48c_tile(s, k, k, i, 1);
+            if (ri == 2) ri = subd_s48_chord_tile_(s, k, k, i, 1);
             if (ri == -1) return -1;
             if (ri >= 0) {
                 r = ri;

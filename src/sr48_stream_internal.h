@@ -12,8 +12,9 @@
  *   sr48_tile.c        the breadth-first uniform tile of the last SUBD_SR48_STREAM_TILE_LEVELS
  *                      levels (its last level smoothed without a window) and the emission of
  *                      a window triangle;
- *   sr48_chord_walk.c  CHORD's walk over the deeper windows, its tiles and memos (the
+ *   sr48_chord_walk.c  CHORD's walk over the deeper windows, its decisions and memos (the
  *                      criterion and its proof: sr48_chord.c);
+ *   sr48_chord_tile.c  CHORD's breadth-first tiles: the walk's and the memo's;
  *   sr48_chord_region.c  CHORD's counting region F(D), the forcing diamonds (its calls:
  *                      sr48_chord_internal.h);
  *   sr48_stream.c      the driver: capacities and layout, plan, begin, the depth-first step.

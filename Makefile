@@ -10,6 +10,7 @@
 #   make bench   performance report (never part of make test)
 #   make bench-peers  the same Loop / Doo-Sabin work by OpenSubdiv, CGAL and OpenMesh
 #   make tool    build/bin/subd (float32) and build/bin/subd-fixed (Q16.16)
+#   make compare-ref REF=<commit>  the tool's outputs byte for byte against those of <commit>
 #   make amalgamate  dist/tinysubd.c + dist/tinysubd.h: the library as one file (README)
 
 .SUFFIXES:
@@ -444,6 +445,13 @@ bench-run: $(B)/bench/bench $(B)/m4f-float/libsubd.a $(B)/m3-fixed/libsubd.a
 	@$(CM_SIZE) -t $(B)/m4f-float/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m4f-float libsubd.a/'
 	@$(CM_SIZE) -t $(B)/m3-fixed/libsubd.a | tail -n 1 | sed 's/(TOTALS)/m3-fixed libsubd.a/'
 
+# Same output as a reference commit (default HEAD: the uncommitted changes), byte for byte,
+# on streamed and materialised cuts of the project's and the bench meshes, both arithmetics:
+# make compare-ref REF=<commit>. Not part of make test (it builds the reference's tool).
+REF ?= HEAD
+compare-ref:
+	@tools/compare_ref.sh $(REF) $(SHARED)
+
 # Loop and Doo-Sabin next to OpenSubdiv, CGAL and OpenMesh (installs libosd-dev libcgal-dev
 # libopenmesh-dev when missing); see bench/peers/README.md.
 bench-peers:
@@ -465,6 +473,6 @@ clean:
 # Header dependencies written by -MMD (none before the first build).
 -include $(wildcard $(foreach v,$(VARIANTS) fuzz-float fuzz-fixed,$(B)/$(v)/*.d $(B)/$(v)/*/*.d $(B)/$(v)/*/*/*.d))
 
-.PHONY: dirs deps test test-host test-long test-build test-run demo demo-run bench bench-run bench-peers tool clean amalgamate \
+.PHONY: dirs deps test test-host test-long test-build test-run demo demo-run bench bench-run bench-peers compare-ref tool clean amalgamate \
         check-format-exhaustive \
         m4f-float-images m3-fixed-images

@@ -14,7 +14,7 @@
 /* The base mesh                                                                          */
 
 /* Neighbour of level-0 triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c). */
-static uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
+static inline uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
 {
     uint32_t g;
     if (slot == 0u) return b->tri_base_nb[t];
@@ -90,49 +90,69 @@ static uint32_t s48_slot_at(uint32_t p, uint32_t j)
 /* Walks the fan of vertex x of the base from triangle t (which holds x): every triangle
  * around x, each once, into out (when not NULL, at most cap); returns the count, or
  * UINT32_MAX beyond cap. Around an interior vertex it comes back to t; at a boundary vertex
- * it walks the other way from t too. */
-static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+ * it walks the other way from t too. lo: returns 0 as soon as a triangle below lo is met
+ * (subd_s48_valence_ walks each fan whole only from its lowest triangle; 0: never).
+ * One step: the edge entered by is (x, w), so the edge left by is the one at x opposite w
+ * (slot 0 opposite c, 2 opposite a, 1 opposite b) and its other end the third corner, the
+ * next w: one corner search per triangle (the walk is on the path of every level-0 window,
+ * of the census and of the valence). */
+static uint32_t s48_fan_lo(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap, uint32_t lo)
 {
+    static const uint8_t opp[3] = {0u, 2u, 1u};
+    const uint32_t *tv = b->tri_vert;
     uint32_t n = 0, dir, lim = b->level_tri[1] + 1u;
     if (out && cap) out[n] = t;
     n++;
     for (dir = 0; dir < 2u; dir++) {
-        uint32_t cur = t, v[3], p, q, slot, i;
-        s48_tri_verts(b, cur, v);
-        slot = s48_slot_at(s48_pos_of(v, x), dir);
-        for (i = 0; i < lim; i++) {
-            uint32_t nx = s48_base_nbr(b, cur, slot), w;
+        uint32_t cur = t, p, q, slot, i, w;
+        {
+            uint32_t v[3];
+            s48_tri_verts(b, cur, v);
+            slot = s48_slot_at(s48_pos_of(v, x), dir);
             s48_slot_ends(v, slot, &p, &q);
             w = p == x ? q : p; /* the edge's other end */
+        }
+        for (i = 0; i < lim; i++) {
+            const uint32_t nx = s48_base_nbr(b, cur, slot);
+            uint32_t u0, u1, u2;
             if (nx == SUBD_NONE) break;
             if (nx == t) return n; /* around: interior vertex */
+            if (nx < lo) return 0;
             if (n >= cap) return UINT32_MAX;
             if (out) out[n] = nx;
             n++;
             cur = nx;
-            s48_tri_verts(b, cur, v);
-            {
-                uint32_t px = s48_pos_of(v, x), s0 = s48_slot_at(px, 0), s1 = s48_slot_at(px, 1), e0, e1;
-                s48_slot_ends(v, s0, &e0, &e1);
-                slot = (e0 == w || e1 == w) ? s1 : s0; /* leave by the other edge at x */
-            }
+            u0 = tv[3u * cur];
+            u1 = tv[3u * cur + 1u];
+            u2 = tv[3u * cur + 2u];
+            slot = opp[u0 == w ? 0u : u1 == w ? 1u : 2u]; /* leave by the other edge at x */
+            w = u0 + u1 + u2 - x - w;                      /* its other end (wraps back exactly) */
         }
         if (i == lim) return UINT32_MAX;
     }
     return n;
 }
+static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+{
+    return s48_fan_lo(b, x, t, out, cap, 0u);
+}
 
-/* Largest number of triangles around a base vertex. */
-uint32_t subd_s48_valence_(const subd_sr48 *b)
+/* Largest number of triangles around a base vertex: every fan once, whole from its lowest
+ * triangle (a fan's count is the same from any of its triangles; the walks from the others
+ * stop at the first lower one). corners (not NULL): the triangles at each vertex; *two = 1
+ * when a whole fan has fewer (a vertex of two fans: sr48_census.c). */
+uint32_t subd_s48_valence_cnt_(const subd_sr48 *b, const uint32_t *corners, uint32_t *two)
 {
     uint32_t t, j, best = 0;
     for (t = 0; t < b->level_tri[1]; t++)
         for (j = 0; j < 3u; j++) {
-            uint32_t n = s48_fan(b, b->tri_vert[3u * t + j], t, 0, 0xffffu);
+            const uint32_t x = b->tri_vert[3u * t + j], n = s48_fan_lo(b, x, t, 0, 0xffffu, t);
             if (n > best) best = n;
+            if (corners && n != 0u && n != corners[x]) *two = 1;
         }
     return best;
 }
+uint32_t subd_s48_valence_(const subd_sr48 *b) { return subd_s48_valence_cnt_(b, 0, 0); }
 
 /* ------------------------------------------------------------------------------------ */
 /* Windows                                                                                */

@@ -9,7 +9,9 @@
  *    valence), the nefertiti patch, the 64-fan, the triangulated torus, and a base with a
  *    vertex of two fans (made by hand: two triangles apart, joined at a vertex), where
  *    nothing is skipped; over the shapes gatherings are skipped (the bounded path is
- *    reached). */
+ *    reached);
+ *  - the stream's plan on a base made by hand (stream_valence cleared, or too large) follows
+ *    the valence walk, or refuses the base with the same status. */
 #include <string.h>
 #include "harness.h"
 #include "corpus.h"
@@ -107,7 +109,51 @@ static void sr48l0_census(void)
     CHECK(skipped_all > 0u);
 }
 
+/* The stream's plan takes max(8, the valence walk, stream_valence): with stream_valence
+ * cleared (a base made by hand) the plan is the macro of the corner count's valence, with it
+ * above SUBD_SR48_STREAM_MAX_VALENCE the stream refuses the base (SUBD_ERR_TOO_BIG), on
+ * bipyramids of valence 3..16 and the 64-fan (the largest valence the stream takes). */
+static void sr48l0_valence(void)
+{
+    static const uint32_t bipyr[4] = {3u, 7u, 12u, 16u};
+    uint32_t i;
+    for (i = 0; i < 5u; i++) {
+        subd_arena a;
+        subd_mesh in;
+        subd_sr48 base, bad;
+        subd_sr48_stream_opts so;
+        subd_diag d;
+        uint32_t plan = 0, v, low, l;
+        int got;
+        subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
+        if (i < 4u) {
+            got = fx_sr48_shape(FX48_BIPYR, bipyr[i], &a, &in);
+        } else {
+            const corpus_file *f = corpus_find("test/data/fan64.obj");
+            got = CHECK(f != 0) && l0_obj(&a, f->data, f->len, &in);
+        }
+        if (!got || !CHECK_EQ(subd_sr48_base(&a, &in, 0u, &base, &d), SUBD_OK)) continue;
+        v = fx_sr48_valence(&base, &low);
+        if (v < 8u) v = 8u;
+        so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
+        for (l = 2u; l <= 8u; l += 6u) {
+            so.adapt.max_level = l;
+            bad = base;
+            bad.stream_valence = 0;
+            if (v > SUBD_SR48_STREAM_MAX_VALENCE) {
+                CHECK_FAIL(subd_sr48_stream_plan(&bad, &so, &plan, &d), &d, SUBD_ERR_TOO_BIG);
+                continue;
+            }
+            if (CHECK_EQ(subd_sr48_stream_plan(&bad, &so, &plan, &d), SUBD_OK))
+                CHECK_EQ(plan, SUBD_SR48_STREAM_BYTES(l, v));
+            bad.stream_valence = SUBD_SR48_STREAM_MAX_VALENCE + 1u;
+            CHECK_FAIL(subd_sr48_stream_plan(&bad, &so, &plan, &d), &d, SUBD_ERR_TOO_BIG);
+        }
+    }
+}
+
 const test_case suite_sr48_level0[] = {
     {"sr48l0_census", sr48l0_census},
+    {"sr48l0_valence", sr48l0_valence},
     {0, 0},
 };

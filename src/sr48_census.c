@@ -19,6 +19,12 @@
  * measured, as before (the stream still checks every capacity and every vertex's exactness,
  * and reports SUBD_ERR_TOO_BIG rather than emit a wrong position).
  *
+ * Cost (0.6.0): the pair's gathering is made for every pair, a triangle's own only where the
+ * pair's triangle count plus its largest fan exceeds the capacities of the N found so far
+ * (subd_s48_census_run_ says why that bounds it; a base with a vertex of two fans, which
+ * subd_sr48_base never makes, makes every one): on spot's base about one gathering per pair
+ * instead of three, the same N (the tests compare it with every gathering made).
+ *
  * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
  * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
  * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,

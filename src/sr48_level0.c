@@ -6,7 +6,12 @@
  * adaptation box) and the level-0 window: the base triangles within two vertex rings of the
  * current base triangle (or hybrid pair), gathered by fan walks. The method, the exactness
  * argument and the window layout are in sr48_window.c's header; the deeper levels' windows
- * (refine, crop, descents) are there too. */
+ * (refine, crop, descents) are there too.
+ * Cost (0.6.0; at 2 steps the level-0 window, the census and the valence were most of a
+ * uniform stream's instructions): a fan step searches one corner (s48_fan_lo); the valence
+ * walks every fan whole once, from its lowest triangle; the window records its triangles'
+ * corners while gathering and reads them back through the sort's permutation instead of a
+ * second lookup. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 

@@ -19,6 +19,12 @@
  * measured, as before (the stream still checks every capacity and every vertex's exactness,
  * and reports SUBD_ERR_TOO_BIG rather than emit a wrong position).
  *
+ * Cost (0.6.0): the pair's gathering is made for every pair, a triangle's own only where the
+ * pair's triangle count plus its largest fan exceeds the capacities of the N found so far
+ * (subd_s48_census_run_ says why that bounds it; a base with a vertex of two fans, which
+ * subd_sr48_base never makes, makes every one): on spot's base about one gathering per pair
+ * instead of three, the same N (the tests compare it with every gathering made).
+ *
  * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
  * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
  * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,
@@ -58,12 +64,14 @@ uint32_t subd_s48_census_bytes_(uint32_t nv0, uint32_t nt0)
 }
 
 /* One gathering as subd_s48_build0_ does it, from the triangles p0..p1 of the base: the
- * largest nt + fan size and the vertex count, into *need_t, *need_v (maxima). */
-static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t, uint32_t *need_v)
+ * largest nt + fan size and the vertex count, into *need_t, *need_v (maxima); its triangle
+ * count and largest fan into *nt_out, *nf_out (the bound of subd_s48_census_run_). */
+static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t, uint32_t *need_v, uint32_t *nt_out,
+                        uint32_t *nf_out)
 {
     const subd_sr48 *b = w->b;
     const uint32_t cap = b->level_tri[1] + 1u;
-    uint32_t nt = 0, nv = 0, p, j, q, f;
+    uint32_t nt = 0, nv = 0, p, j, q, f, mf = 0;
     const uint32_t tag = 4u * ++w->run; /* stamp = tag + distance (< 4) */
     for (p = p0; p <= p1; p++)
         for (j = 0; j < 3u; j++) {
@@ -80,6 +88,7 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
         nf = subd_s48_fan_(b, x, w->qt[q], w->fan, cap);
         if (nf == UINT32_MAX) nf = cap; /* a broken fan: the stream's check refuses the base */
         if (nt + nf > *need_t) *need_t = nt + nf;
+        if (nf > mf) mf = nf;
         for (f = 0; f < nf && f < cap; f++) {
             const uint32_t tt = w->fan[f];
             if (w->ts[tt] == tag) continue;
@@ -95,27 +104,60 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
         }
     }
     if (nv > *need_v) *need_v = nv;
+    *nt_out = nt;
+    *nf_out = mf;
+}
+
+/* The smallest N >= n whose capacities hold need_t triangles and need_v vertices. */
+static uint32_t s48n_fit(uint32_t n, uint32_t need_t, uint32_t need_v)
+{
+    while (6u * n + 16u < need_t || 4u * n + 16u < need_v) n++;
+    return n;
+}
+
+/* The census (subd_s48_census_), exact = 1: every gathering made; 0: a triangle's own
+ * gathering is skipped where its pair's bounds it below the capacities of the N found so
+ * far, *skipped counts them (the tests compare both). Why the bound holds: a triangle's
+ * seeds are among its pair's, so (breadth first, every fan whole: no vertex has two fans)
+ * every vertex it walks the pair walks, and its triangles T and vertices are the pair's or
+ * fewer; its nt + fan size at any vertex is at most |T| + that fan <= the pair's triangle
+ * count + the pair's largest fan, its vertex count at most the pair's. A skipped gathering
+ * then cannot raise N, as N only grows. A base with a vertex of two fans (corners counted
+ * against the whole walks, subd_s48_valence_cnt_) makes every gathering. */
+uint32_t subd_s48_census_run_(subd_arena *a, const subd_sr48 *b, uint32_t exact, uint32_t *skipped)
+{
+    const uint32_t nv0 = b->level_verts[0], nt0 = b->level_tri[1];
+    uint32_t need_t = 0, need_v = 0, t, n, v, bytes, two = 0, ntp, nfp, nt1, nf1;
+    s48n_work w;
+    if (s48n_layout(a, nv0, nt0, &w, &bytes) != SUBD_OK) return 0; /* the plan holds it */
+    w.b = b;
+    w.run = 0;
+    *skipped = 0;
+    /* the corners per vertex (in the queue, free until the first gathering) */
+    for (v = 0; v < nv0; v++) w.qv[v] = 0;
+    for (t = 0; t < 3u * nt0; t++) w.qv[b->tri_vert[t]]++;
+    v = subd_s48_valence_cnt_(b, w.qv, &two);
+    n = v < 8u ? 8u : v;
+    for (v = 0; v < nv0; v++) w.vs[v] = 0;
+    for (t = 0; t < nt0; t++) w.ts[t] = 0;
+    for (t = 0; t + 1u < nt0; t += 2u) {
+        s48n_gather(&w, t, t + 1u, &need_t, &need_v, &ntp, &nfp); /* uniform: the hybrid pair */
+        n = s48n_fit(n, need_t, need_v);
+        if (!exact && !two && ntp + nfp <= 6u * n + 16u) {
+            *skipped += 2u; /* adaptive: one triangle, bounded by the pair */
+            continue;
+        }
+        s48n_gather(&w, t, t, &need_t, &need_v, &nt1, &nf1); /* adaptive: one triangle   */
+        s48n_gather(&w, t + 1u, t + 1u, &need_t, &need_v, &nt1, &nf1);
+        n = s48n_fit(n, need_t, need_v);
+    }
+    return n;
 }
 
 /* The valence the stream sizes its windows with (above); 0 when the arena does not hold
  * the scratch (subd_sr48_base's plan does). */
 uint32_t subd_s48_census_(subd_arena *a, const subd_sr48 *b)
 {
-    const uint32_t nv0 = b->level_verts[0], nt0 = b->level_tri[1];
-    uint32_t need_t = 0, need_v = 0, t, n, v, bytes;
-    s48n_work w;
-    if (s48n_layout(a, nv0, nt0, &w, &bytes) != SUBD_OK) return 0; /* the plan holds it */
-    w.b = b;
-    w.run = 0;
-    for (v = 0; v < nv0; v++) w.vs[v] = 0;
-    for (t = 0; t < nt0; t++) w.ts[t] = 0;
-    for (t = 0; t + 1u < nt0; t += 2u) {
-        s48n_gather(&w, t, t + 1u, &need_t, &need_v); /* uniform: the hybrid pair */
-        s48n_gather(&w, t, t, &need_t, &need_v);      /* adaptive: one triangle   */
-        s48n_gather(&w, t + 1u, t + 1u, &need_t, &need_v);
-    }
-    v = subd_s48_valence_(b);
-    n = v < 8u ? 8u : v;
-    while (6u * n + 16u < need_t || 4u * n + 16u < need_v) n++;
-    return n;
+    uint32_t skipped;
+    return subd_s48_census_run_(a, b, 0u, &skipped);
 }

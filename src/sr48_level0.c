@@ -6,7 +6,12 @@
  * adaptation box) and the level-0 window: the base triangles within two vertex rings of the
  * current base triangle (or hybrid pair), gathered by fan walks. The method, the exactness
  * argument and the window layout are in sr48_window.c's header; the deeper levels' windows
- * (refine, crop, descents) are there too. */
+ * (refine, crop, descents) are there too.
+ * Cost (0.6.0; at 2 steps the level-0 window, the census and the valence were most of a
+ * uniform stream's instructions): a fan step searches one corner (s48_fan_lo); the valence
+ * walks every fan whole once, from its lowest triangle; the window records its triangles'
+ * corners while gathering and reads them back through the sort's permutation instead of a
+ * second lookup. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 
@@ -14,7 +19,7 @@
 /* The base mesh                                                                          */
 
 /* Neighbour of level-0 triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c). */
-static uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
+static inline uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
 {
     uint32_t g;
     if (slot == 0u) return b->tri_base_nb[t];
@@ -90,49 +95,75 @@ static uint32_t s48_slot_at(uint32_t p, uint32_t j)
 /* Walks the fan of vertex x of the base from triangle t (which holds x): every triangle
  * around x, each once, into out (when not NULL, at most cap); returns the count, or
  * UINT32_MAX beyond cap. Around an interior vertex it comes back to t; at a boundary vertex
- * it walks the other way from t too. */
-static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+ * it walks the other way from t too. lo: returns 0 as soon as a triangle below lo is met
+ * (subd_s48_valence_ walks each fan whole only from its lowest triangle; 0: never).
+ * One step: the edge entered by is (x, w), so the edge left by is the one at x opposite w
+ * (slot 0 opposite c, 2 opposite a, 1 opposite b) and its other end the third corner, the
+ * next w: one corner search per triangle (the walk is on the path of every level-0 window,
+ * of the census and of the valence). */
+static uint32_t s48_fan_lo(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap, uint32_t lo)
 {
+    static const uint8_t opp[3] = {0u, 2u, 1u};
+    const uint32_t *tv = b->tri_vert;
     uint32_t n = 0, dir, lim = b->level_tri[1] + 1u;
     if (out && cap) out[n] = t;
     n++;
     for (dir = 0; dir < 2u; dir++) {
-        uint32_t cur = t, v[3], p, q, slot, i;
-        s48_tri_verts(b, cur, v);
-        slot = s48_slot_at(s48_pos_of(v, x), dir);
-        for (i = 0; i < lim; i++) {
-            uint32_t nx = s48_base_nbr(b, cur, slot), w;
+        uint32_t cur = t, p, q, slot, i, w;
+        {
+            uint32_t v[3];
+            s48_tri_verts(b, cur, v);
+            slot = s48_slot_at(s48_pos_of(v, x), dir);
             s48_slot_ends(v, slot, &p, &q);
             w = p == x ? q : p; /* the edge's other end */
+        }
+        for (i = 0; i < lim; i++) {
+            const uint32_t nx = s48_base_nbr(b, cur, slot);
+            uint32_t u0, u1, u2;
             if (nx == SUBD_NONE) break;
             if (nx == t) return n; /* around: interior vertex */
+            if (nx < lo) return 0;
             if (n >= cap) return UINT32_MAX;
             if (out) out[n] = nx;
             n++;
             cur = nx;
-            s48_tri_verts(b, cur, v);
-            {
-                uint32_t px = s48_pos_of(v, x), s0 = s48_slot_at(px, 0), s1 = s48_slot_at(px, 1), e0, e1;
-                s48_slot_ends(v, s0, &e0, &e1);
-                slot = (e0 == w || e1 == w) ? s1 : s0; /* leave by the other edge at x */
-            }
+            u0 = tv[3u * cur];
+            u1 = tv[3u * cur + 1u];
+            u2 = tv[3u * cur + 2u];
+            slot = opp[u0 == w ? 0u : u1 == w ? 1u : 2u]; /* leave by the other edge at x */
+            w = u0 + u1 + u2 - x - w;                      /* its other end (wraps back exactly) */
         }
         if (i == lim) return UINT32_MAX;
     }
     return n;
 }
+static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap)
+{
+    return s48_fan_lo(b, x, t, out, cap, 0u);
+}
 
-/* Largest number of triangles around a base vertex. */
-uint32_t subd_s48_valence_(const subd_sr48 *b)
+/* Largest number of triangles around a base vertex: every fan once, whole from its lowest
+ * triangle (a fan's count is the same from any of its triangles; the walks from the others
+ * stop at the first lower one). corners (not NULL): the triangles at each vertex; *two = 1
+ * when a whole fan has fewer (a vertex of two fans: sr48_census.c). */
+uint32_t subd_s48_valence_cnt_(const subd_sr48 *b, const uint32_t *corners, uint32_t *two)
 {
     uint32_t t, j, best = 0;
     for (t = 0; t < b->level_tri[1]; t++)
         for (j = 0; j < 3u; j++) {
-            uint32_t n = s48_fan(b, b->tri_vert[3u * t + j], t, 0, 0xffffu);
+            /* t's neighbours across its two edges at corner j (s48_slot_at): one below t
+             * (SUBD_NONE is above every index), and the walk from t would stop there */
+            const uint32_t x = b->tri_vert[3u * t + j], n0 = s48_base_nbr(b, t, s48_slot_at(j, 0u)),
+                           n1 = s48_base_nbr(b, t, s48_slot_at(j, 1u));
+            uint32_t n;
+            if (n0 < t || n1 < t) continue;
+            n = s48_fan_lo(b, x, t, 0, 0xffffu, t);
             if (n > best) best = n;
+            if (corners && n != 0u && n != corners[x]) *two = 1;
         }
     return best;
 }
+uint32_t subd_s48_valence_(const subd_sr48 *b) { return subd_s48_valence_cnt_(b, 0, 0); }
 
 /* ------------------------------------------------------------------------------------ */
 /* Windows                                                                                */
@@ -160,21 +191,24 @@ static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *ke
 }
 
 /* Adds base triangle tt to the level-0 window being gathered (ht[h]: its empty slot) with
- * those of its corners not in it yet, at distance d. 0 when the vertex capacity is
+ * those of its corners not in it yet, at distance d; its corners' local indices into
+ * lv[3 nt ..] (read back once the triangles are sorted). 0 when the vertex capacity is
  * exceeded. */
 static int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *hv, uint32_t vm, uint32_t tt, uint32_t *nt,
-                      uint32_t *nv, uint32_t d)
+                      uint32_t *nv, uint32_t d, uint16_t *lv)
 {
     uint32_t j;
     for (j = 0; j < 3u; j++) {
         const uint32_t vx = s->base->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
-        if (hv[g] != 0u) continue;
-        if (*nv >= s->wv) return 0;
-        hv[g] = (uint16_t)(*nv + 1u);
-        s->gv[*nv] = vx;
-        s->gvt[*nv] = tt;
-        s->dist[*nv] = (uint8_t)d;
-        ++*nv;
+        if (hv[g] == 0u) {
+            if (*nv >= s->wv) return 0;
+            hv[g] = (uint16_t)(*nv + 1u);
+            s->gv[*nv] = vx;
+            s->gvt[*nv] = tt;
+            s->dist[*nv] = (uint8_t)d;
+            ++*nv;
+        }
+        lv[3u * *nt + j] = (uint16_t)(hv[g] - 1u);
     }
     ht[h] = (uint16_t)(*nt + 1u);
     s->gt[(*nt)++] = tt;
@@ -192,11 +226,13 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
     const uint32_t mt = s->at > s->wt ? s->at : s->wt;
     const uint32_t tm = s48_h0_size(2u * mt) - 1u, vm = s48_h0_size(s->xv) - 1u;
     uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 mt and xv entries: above wt and wv */
+    uint16_t *perm = s->mtab;                /* the sort's permutation: mt >= wt entries */
     uint32_t nt = 0, nv = 0, i, j, q, p;
     s48_win w;
     s48_lev(s, 0, &w);
-    for (i = 0; i <= tm; i++) ht[i] = 0;
-    for (i = 0; i <= vm; i++) hv[i] = 0;
+    /* (i < tm + 1: a bounded loop, which compilers clear in one go) */
+    for (i = 0; i < tm + 1u; i++) ht[i] = 0;
+    for (i = 0; i < vm + 1u; i++) hv[i] = 0;
     /* uniform: the rings of both children of t0's hybrid triangle (t0 even and odd), so
      * that one window serves both (s48_step) */
     for (p = s->adapt ? t0 : (t0 & ~1u); p <= (s->adapt ? t0 : (t0 | 1u)); p++)
@@ -220,7 +256,7 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
         for (f = 0; f < nf; f++) {
             const uint32_t tt = s->gt[s->wt - nf + f], h = s48_h0_find(ht, tm, s->gt, tt);
             if (ht[h] != 0u) continue;
-            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, s->dist[q] + 1u)) return 0;
+            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, s->dist[q] + 1u, w.tn)) return 0;
         }
     }
     if (small) { /* the base neighbours of ring 1 (dist: unused from here) */
@@ -232,32 +268,42 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             h = s48_h0_find(ht, tm, s->gt, tt);
             if (ht[h] != 0u) continue;
             if (nt >= s->wt) return 0;
-            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, 2u)) return 0;
+            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, 2u, w.tn)) return 0;
         }
     }
-    /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct) */
+    /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct),
+     * with their gathering order in perm */
+    for (i = 0; i < nt; i++) perm[i] = (uint16_t)i;
     for (p = 0; p < 5u; p++) {
         static const uint8_t gap[5] = {57u, 23u, 10u, 4u, 1u};
         const uint32_t g = gap[p];
         for (i = g; i < nt; i++) {
-            uint32_t x = s->gt[i];
+            const uint32_t x = s->gt[i];
+            const uint16_t o = perm[i];
             j = i;
             while (j >= g && s->gt[j - g] > x) {
                 s->gt[j] = s->gt[j - g];
+                perm[j] = perm[j - g];
                 j -= g;
             }
             s->gt[j] = x;
+            perm[j] = o;
         }
     }
+    /* the corners' local indices, recorded by s48_h0_add in tn's place in gathering order */
+    for (i = 0; i < nt; i++) {
+        const uint16_t *lv = w.tn + 3u * perm[i];
+        w.tv[3u * i] = lv[0];
+        w.tv[3u * i + 1u] = lv[1];
+        w.tv[3u * i + 2u] = lv[2];
+    }
     /* the triangle table again, on the sorted indices */
-    for (i = 0; i <= tm; i++) ht[i] = 0;
+    for (i = 0; i < tm + 1u; i++) ht[i] = 0;
     for (i = 0; i < nt; i++) ht[s48_h0_find(ht, tm, s->gt, s->gt[i])] = (uint16_t)(i + 1u);
     for (i = 0; i < nt; i++) {
         uint32_t tt = s->gt[i];
         for (j = 0; j < 3u; j++) {
-            uint32_t vx = b->tri_vert[3u * tt + j], nb;
-            w.tv[3u * i + j] = (uint16_t)(hv[s48_h0_find(hv, vm, s->gv, vx)] - 1u); /* present: added with tt */
-            nb = s48_base_nbr(b, tt, j);
+            uint32_t nb = s48_base_nbr(b, tt, j);
             if (nb == SUBD_NONE) {
                 w.tn[3u * i + j] = S48_BND;
                 continue;

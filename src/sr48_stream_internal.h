@@ -313,6 +313,11 @@ extern uint32_t s48_dbg[40];
  * number of triangles around a base vertex. */
 int subd_s48_base_check_(const subd_sr48 *b);
 uint32_t subd_s48_valence_(const subd_sr48 *b);
+/* The same, and with corners (the triangles at each vertex) *two = 1 when a vertex has two
+ * fans (sr48_level0.c); the census with every gathering made (exact) or the bounded ones
+ * skipped (counted in *skipped; sr48_census.c, compared by the tests). */
+uint32_t subd_s48_valence_cnt_(const subd_sr48 *b, const uint32_t *corners, uint32_t *two);
+uint32_t subd_s48_census_run_(subd_arena *a, const subd_sr48 *b, uint32_t exact, uint32_t *skipped);
 
 /* Windows (sr48_window.c): level 0's window around base triangle t0; window p of level k
  * refined into X; X cropped to the rings of its triangles c0 .. c0 + n - 1 into w (capacity

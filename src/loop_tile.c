@@ -636,39 +636,57 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
-    uint32_t m = 1u << (tl->depth - tl->split), x, y, k = 0, n1 = (uint32_t)1 << lv;
-    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
-    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-                                   (uint64_t)f * (nm1 * (nm1 - 1u) / 2u);
+    uint32_t m = 1u << (tl->depth - tl->split), n1 = (uint32_t)1 << lv, nm1 = n1 - 1u;
+    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb, da, db, dd, ra, rb, ia, ib, y, in1 = (int32_t)n1;
+    uint64_t base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                    (uint64_t)f * ((uint64_t)nm1 * (nm1 - 1u) / 2u);
+    lt_rec *q = tl->q;
     a0 = (int32_t)ca[0];
     b0 = (int32_t)cb[0];
     ea = ((int32_t)ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
     eb = ((int32_t)cb[1] - b0) / n;
     fa = ((int32_t)ca[2] - a0) / n;
     fb = ((int32_t)cb[2] - b0) / n;
-    /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
-     * id = r(a) + b - 1, r(a) = base + (a - 1) nm1 - (a - 1) a / 2, a polynomial in a, is
-     * followed along the row for every point (modulo 2^64): a step changes it by
-     * dl = r(a + da) - r(a) + db = da (nm1 - a) - (da < 0) + db, and dl itself by -da^2 per
-     * step; points off the interior take subd_lp_vertex_id */
-    for (y = 0; y <= m; y++) {
-        int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
-        int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
-        int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
-        int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
-        uint64_t cl = (uint64_t)(r + (int64_t)ib - 1);
-        int64_t dl = (int64_t)da * ((int64_t)nm1 - ia) - (da < 0 ? 1 : 0) + db;
-        for (x = 0; x + y <= m; x++, k++) {
-            uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
-            uint64_t id = cl;
-            if (a - 1u >= n1 - 1u || b - 1u >= n1 - 1u || a + b >= n1) /* off vertex_id's face interior */
-                id = subd_lp_vertex_id(in, f, a, b, lv);
-            tl->q[k].id[0] = (uint32_t)id;
-            tl->q[k].id[1] = (uint32_t)(id >> 32);
-            cl += (uint64_t)dl;
-            dl -= da * da;
-            ia += da;
-            ib += db;
+    da = e1[0] * ea + e1[1] * fa; /* a row's step in (a, b): each -1, 0 or 1 */
+    db = e1[0] * eb + e1[1] * fb;
+    dd = da * da;
+    ra = e2[0] * ea + e2[1] * fa; /* the next row's */
+    rb = e2[0] * eb + e2[1] * fb;
+    ia = a0 + org[0] * ea + org[1] * fa;
+    ib = b0 + org[0] * eb + org[1] * fb;
+    /* per row: (a, b) = (ia + x da, ib + x db) for x = 0..m - y. The control face's
+     * interior (subd_lp_vertex_id's closed form: a >= 1, b >= 1, a + b <= n1 - 1) is one
+     * range of x, found once per row (lt_bound); there the closed form
+     * id = base + r(a) + b - 1, r(a) = (a - 1) nm1 - (a - 1) a / 2 (below nm1^2 / 2 < 2^31),
+     * is stepped along the row: a step changes r(a) + b by dl = r(a + da) - r(a) + db =
+     * da (nm1 - a) - (da < 0) + db, and dl itself by -da^2 per step; the points before and
+     * after the range take subd_lp_vertex_id */
+    for (y = 0; y <= (int32_t)m; y++, ia += ra, ib += rb) {
+        int32_t xe = (int32_t)m - y, lo = 0, hi = xe, x;
+        lt_bound(da, ia - 1, &lo, &hi);
+        lt_bound(db, ib - 1, &lo, &hi);
+        lt_bound(-da - db, in1 - 1 - ia - ib, &lo, &hi);
+        if (lo > hi) lo = xe + 1; /* no interior point: every point by subd_lp_vertex_id */
+        for (x = 0; x <= xe; x++, q++) {
+            uint64_t id;
+            if (x == lo) { /* the interior run */
+                uint32_t am = (uint32_t)(ia + x * da - 1);
+                uint32_t t = am * nm1 - am * (am + 1u) / 2u + (uint32_t)(ib + x * db - 1);
+                uint32_t dl = (uint32_t)(da * (int32_t)(nm1 - 1u - am) - (da < 0 ? 1 : 0) + db);
+                lt_rec *qe = q + (hi - x) + 1;
+                for (; q != qe; q++) {
+                    id = base + t;
+                    q->id[0] = (uint32_t)id;
+                    q->id[1] = (uint32_t)(id >> 32);
+                    t += dl;
+                    dl -= (uint32_t)dd;
+                }
+                x = hi + 1;
+                if (x > xe) break;
+            }
+            id = subd_lp_vertex_id(in, f, (uint32_t)(ia + x * da), (uint32_t)(ib + x * db), lv);
+            q->id[0] = (uint32_t)id;
+            q->id[1] = (uint32_t)(id >> 32);
         }
     }
 }

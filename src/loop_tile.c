@@ -258,14 +258,15 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
         } else {
             oa = 3 * R; ob = 0; oc = 3; oe = 3 * (R - 1);
         }
+        /* when the other side is lower, the reference swaps a with b and c with e: only the
+         * second matters, since (0 + x) + y and (0 + y) + x are the same float for every x,
+         * y (addition commutes, and 0 + x differs from x only for x = -0, where both give
+         * +0 + y, or +0 when y = -0 too) and Q16.16 sums are exact */
         for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
             const subd_real *c = P + 3u * l0;
             subd_real *o = out + k;
-            const subd_real *a = c + oa, *b = c + ob, *v = c + oc, *e = c + oe, *t;
-            if (!(((uint32_t)g->low[l0] >> d) & 1u)) { /* the other side is lower */
-                t = a; a = b; b = t;
-                t = v; v = e; e = t;
-            }
+            int32_t lw = (int32_t)(((uint32_t)g->low[l0] >> d) & 1u);
+            const subd_real *a = c + oa, *b = c + ob, *v = c + (lw ? oc : oe), *e = c + (lw ? oe : oc);
             o[0] = loop_rule_edge1(a[0], b[0], v[0], e[0], ovf);
             o[1] = loop_rule_edge1(a[1], b[1], v[1], e[1], ovf);
             o[2] = loop_rule_edge1(a[2], b[2], v[2], e[2], ovf);
@@ -545,7 +546,11 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
     uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, mp = 1u << (tl->depth - tl->split), x;
     uint32_t qc = c >> (2u * (tl->split - 1u));
     const subd_real *M = tl->mpos;
-    int32_t o3[12], Y, ymin, ymax;
+    const lim_reg6 *lk = tl->lk;
+    lt_rec *q = tl->q;
+    subd_real *nrm = tl->qnrm;
+    int32_t o3[12], Y, ymin, ymax, dd = f1[1] * f1[1];
+    uint32_t qr = 6u - qrot[qc];
     if (tl->split == 1u || (c & 3u) == 0u) { /* the quarter's first piece */
         lt_frame fr;
         fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
@@ -563,7 +568,7 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         if (cy > ymax) ymax = cy;
     }
     for (Y = ymin; Y <= ymax; Y++) {
-        int32_t dY = Y - po[1], a = -0x40000000, b = 0x40000000, X, lx, ly;
+        int32_t dY = Y - po[1], a = -0x40000000, b = 0x40000000, X, lx, ly, px, py, k, sk, n;
         uint32_t l0;
         lt_bound(f2[1], -f2[0] * dY, &a, &b);
         lt_bound(-f1[1], f1[0] * dY, &a, &b);
@@ -574,12 +579,16 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         ly = -f1[1] * a + f1[0] * dY;
         X = po[0] + a;
         l0 = lt_vi(S, (uint32_t)X + 1u, (uint32_t)Y + 1u);
-        for (; X <= po[0] + b; X++, l0++, lx += f2[1], ly -= f1[1]) {
-            int32_t px = ox + X * e1[0] + Y * e2[0], py = oy + X * e1[1] + Y * e2[1];
-            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[qc];
-            uint32_t k = lt_vi(mp, (uint32_t)lx, (uint32_t)ly);
+        px = ox + X * e1[0] + Y * e2[0];
+        py = oy + X * e1[1] + Y * e2[1];
+        /* the record index k = lt_vi(mp, lx, ly) stepped as lt_pass steps its destination:
+         * (lx, ly) moves by (f2y, -f1y), k by sk, which falls by f1y^2 per step */
+        k = ly * (2 * (int32_t)mp + 3 - ly) / 2 + lx;
+        sk = f2[1] - f1[1] * (2 * (int32_t)mp + 3 + f1[1]) / 2 + ly * f1[1];
+        for (n = b - a + 1; n > 0; n--, l0++, px += e1[0], py += e1[1], k += sk, sk -= dd) {
+            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + qr;
             if (d >= 6u) d -= 6u;
-            subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->q[k].p, tl->qnrm + 3u * k, lo);
+            subd_loop_limit_reg6(lk, M + 3u * l0, o3 + d, q[k].p, nrm + 3 * k, lo);
         }
     }
 }

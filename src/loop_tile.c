@@ -363,45 +363,40 @@ static inline uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint
     return even ? g->dir[lt_vi(s, ui, uj)] : lt_new_dir(g, s, ui, uj, d);
 }
 
-/* Faces of level t + 1 (side s2) from those of level t (side s): rotations and lower sides. */
-static void lt_put_u(const lt_grid *h, uint32_t s2, uint32_t i, uint32_t j, uint32_t r, uint32_t low)
-{
-    if (i >= s2 || j >= s2 || i + j + 1u > s2) return; /* outside the next grid (-1 wraps) */
-    h->rot[2u * lt_vi(s2, i, j)] = (uint8_t)r;
-    h->low[lt_vi(s2, i, j)] = (uint8_t)low;
-}
-
-static void lt_put_d(const lt_grid *h, uint32_t s2, uint32_t i, uint32_t j, uint32_t r)
-{
-    if (i >= s2 || j >= s2 || i + j + 2u > s2) return;
-    h->rot[2u * lt_vi(s2, i, j) + 1u] = (uint8_t)r;
-}
-
-/* Every face of level t + 1's grid is a child of a face of level t's (the three corner up
- * triangles of a grid are not faces of its 1-ring and are skipped). */
+/* Faces of level t + 1 (h, side s2) from those of level t (g, side s): rotations and lower
+ * sides, by rows of h. Every face of h is a child of a face of g (the three corner up
+ * triangles of a grid are not faces of its 1-ring and have no children in h), and U(I, J)
+ * and D(I, J) of h are children of the face of g at index lt_vi(s, (I + 1) >> 1,
+ * (J + 1) >> 1) (I, J of h are 2i - 1 + the child's offset), which the parities say:
+ *   J odd,  I odd:  U corner child 0 of U (rotation 0), D the middle child of U (U's);
+ *   J odd,  I even: U corner child 1 of U (rotation 1), D corner child 0 of D (rotation 0);
+ *   J even, I odd:  U corner child 2 of U (rotation 2), D corner child 2 of D (rotation 2);
+ *   J even, I even: U the middle child of D (D's + 1), D corner child 1 of D (rotation 1).
+ * A corner child at lattice corner k has rotation k; the middle child of an up triangle
+ * keeps its rotation, of a down one adds one (the header). Lower sides: a corner child's
+ * edges along the parent's keep the parent's bits, its inner edge is lower on its side; the
+ * middle child holds no lower half-edge. */
 static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2)
 {
-    uint32_t i, j;
-    for (j = 0; j < s; j++)
-        for (i = 0; i + j + 1u <= s; i++) {
-            uint32_t v = lt_vi(s, i, j), r;
-            uint32_t I = 2u * i - 1u, J = 2u * j - 1u; /* may wrap: lt_put_* drop them */
-            if (!((i == 0u && j == 0u) || (i + 1u == s && j == 0u) || (i == 0u && j + 1u == s))) {
-                uint32_t b = g->low[v]; /* U(i, j): three corner children, the middle one */
-                r = g->rot[2u * v];
-                lt_put_u(h, s2, I, J, 0u, (b & 5u) | 2u);
-                lt_put_u(h, s2, I + 1u, J, 1u, (b & 3u) | 4u);
-                lt_put_u(h, s2, I, J + 1u, 2u, (b & 6u) | 1u);
-                lt_put_d(h, s2, I, J, r);
+    const uint8_t *gl = g->low, *gr = g->rot;
+    uint8_t *hl = h->low, *hr = h->rot;
+    uint32_t I, J;
+    for (J = 0; J < s2; J++) {
+        uint32_t v = lt_vi(s2, 0u, J), n = s2 - J, p0 = lt_vi(s, 0u, (J + 1u) >> 1);
+        for (I = 0; I < n; I++, v++) {
+            uint32_t p = p0 + ((I + 1u) >> 1), ru, rd, lw;
+            if (J & 1u) {
+                if (I & 1u) { ru = 0u; lw = (gl[p] & 5u) | 2u; rd = gr[2u * p]; }
+                else { ru = 1u; lw = (gl[p] & 3u) | 4u; rd = 0u; }
+            } else {
+                if (I & 1u) { ru = 2u; lw = (gl[p] & 6u) | 1u; rd = 2u; }
+                else { ru = (gr[2u * p + 1u] + 1u) % 3u; lw = 0u; rd = 1u; }
             }
-            if (i + j + 2u <= s) { /* D(i, j) */
-                r = g->rot[2u * v + 1u];
-                lt_put_d(h, s2, I + 1u, J, 0u);
-                lt_put_d(h, s2, I + 1u, J + 1u, 1u);
-                lt_put_d(h, s2, I, J + 1u, 2u);
-                lt_put_u(h, s2, I + 1u, J + 1u, (r + 1u) % 3u, 0u);
-            }
+            hr[2u * v] = (uint8_t)ru;
+            hl[v] = (uint8_t)lw;
+            if (I + 1u < n) hr[2u * v + 1u] = (uint8_t)rd; /* D(I, J) is in h */
         }
+    }
 }
 
 /* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: its ring starts, rotations
@@ -417,8 +412,26 @@ static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, 
     /* ring starts: the next level's old vertices are this level's face's, at I, J >= 1,
      * I + J <= s2 - 1 */
     for (J = 1; J + 2u <= s2; J++) {
-        uint32_t v = lt_vi(s2, 1u, J);
-        for (I = 1; I + J + 1u <= s2; I++, v++) h->dir[v] = (uint8_t)lt_dir_at(g, s, I + 1u, J + 1u);
+        /* lt_dir_at of (I + 1, J + 1), by rows: the point lies in U(u) of g, u = lt_vi(s,
+         * (I + 1) >> 1, (J + 1) >> 1) whatever its parities; lt_new_dir's D across (x) is
+         * D(u) for edge 1, D(u - 1) for edge 2, and for edge 0 the D below (one row of g back) */
+        uint32_t v = lt_vi(s2, 1u, J), uj = (J + 1u) >> 1, u0 = lt_vi(s, 0u, uj), back = s + 2u - uj;
+        for (I = 1; I + J + 1u <= s2; I++, v++) {
+            uint32_t u = u0 + ((I + 1u) >> 1), d, x;
+            if (J & 1u) { /* py even */
+                if (I & 1u) { /* px even: the old vertex keeps its ring start */
+                    h->dir[v] = g->dir[u];
+                    continue;
+                }
+                d = 0u;
+                x = u - back;
+            } else {
+                d = (I & 1u) ? 2u : 1u;
+                x = (I & 1u) ? u - 1u : u;
+            }
+            h->dir[v] = (((uint32_t)g->low[u] >> d) & 1u) ? lt_ndir_u[d][g->rot[2u * u]]
+                                                           : lt_ndir_d[d][g->rot[2u * x + 1u]];
+        }
     }
     lt_faces(g, s, h, s2);
 }

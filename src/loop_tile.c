@@ -655,6 +655,9 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
     *ovf |= lo;
 }
 
+/* (a, b) inside control face lattice of side n1 (subd_lp_vertex_id's closed form). */
+static int lt_inner(int32_t a, int32_t b, int32_t n1) { return a >= 1 && b >= 1 && a + b <= n1 - 1; }
+
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
@@ -676,6 +679,32 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
     rb = e2[0] * eb + e2[1] * fb;
     ia = a0 + org[0] * ea + org[1] * fa;
     ib = b0 + org[0] * eb + org[1] * fb;
+    if (lt_inner(ia, ib, in1) && lt_inner(ia + (int32_t)m * da, ib + (int32_t)m * db, in1) &&
+        lt_inner(ia + (int32_t)m * ra, ib + (int32_t)m * rb, in1)) {
+        /* the whole piece inside the control face's interior (its three corners are, and
+         * the interior is convex): every row is one run (below), its start stepped from the
+         * row before's as the run steps along a row: a row step moves a by ra, so the
+         * start's r(a) + b changes by tr = ra (nm1 - a) - (ra < 0) + rb, which falls by ra^2
+         * per row, and the run's first dl by da ra */
+        uint32_t am = (uint32_t)(ia - 1), t0 = am * nm1 - am * (am + 1u) / 2u + (uint32_t)(ib - 1);
+        uint32_t dl0 = (uint32_t)(da * (int32_t)(nm1 - 1u - am) - (da < 0 ? 1 : 0) + db);
+        uint32_t tr = (uint32_t)(ra * (int32_t)(nm1 - 1u - am) - (ra < 0 ? 1 : 0) + rb);
+        for (y = 0; y <= (int32_t)m; y++) {
+            uint32_t t = t0, dl = dl0;
+            lt_rec *qe = q + ((int32_t)m - y) + 1;
+            for (; q != qe; q++) {
+                uint64_t id = base + t;
+                q->id[0] = (uint32_t)id;
+                q->id[1] = (uint32_t)(id >> 32);
+                t += dl;
+                dl -= (uint32_t)dd;
+            }
+            t0 += tr;
+            tr -= (uint32_t)(ra * ra);
+            dl0 -= (uint32_t)(da * ra);
+        }
+        return;
+    }
     /* per row: (a, b) = (ia + x da, ib + x db) for x = 0..m - y. The control face's
      * interior (subd_lp_vertex_id's closed form: a >= 1, b >= 1, a + b <= n1 - 1) is one
      * range of x, found once per row (lt_bound); there the closed form

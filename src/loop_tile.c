@@ -330,7 +330,16 @@ static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real 
             y = -fr->q * dpx + fr->p * dpy - fr->lo;
             if (py & 1) kind = (px0 & 1) ? 1 : 2;
             else kind = (px0 & 1) ? 0 : 3;
-            lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, fr->ds, kind, out, w);
+            /* one call per kind, each with its kind constant (its own loop, its offsets
+             * folded) */
+#define LT_PASS(kd) lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, fr->ds, kd, out, w)
+            switch (kind) {
+            case 0: LT_PASS(0); break;
+            case 1: LT_PASS(1); break;
+            case 2: LT_PASS(2); break;
+            default: LT_PASS(3); break;
+            }
+#undef LT_PASS
         }
     }
 }

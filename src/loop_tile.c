@@ -258,14 +258,15 @@ TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0,
         } else {
             oa = 3 * R; ob = 0; oc = 3; oe = 3 * (R - 1);
         }
+        /* when the other side is lower, the reference swaps a with b and c with e: only the
+         * second matters, since (0 + x) + y and (0 + y) + x are the same float for every x,
+         * y (addition commutes, and 0 + x differs from x only for x = -0, where both give
+         * +0 + y, or +0 when y = -0 too) and Q16.16 sums are exact */
         for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
             const subd_real *c = P + 3u * l0;
             subd_real *o = out + k;
-            const subd_real *a = c + oa, *b = c + ob, *v = c + oc, *e = c + oe, *t;
-            if (!(((uint32_t)g->low[l0] >> d) & 1u)) { /* the other side is lower */
-                t = a; a = b; b = t;
-                t = v; v = e; e = t;
-            }
+            int32_t lw = (int32_t)(((uint32_t)g->low[l0] >> d) & 1u);
+            const subd_real *a = c + oa, *b = c + ob, *v = c + (lw ? oc : oe), *e = c + (lw ? oe : oc);
             o[0] = loop_rule_edge1(a[0], b[0], v[0], e[0], ovf);
             o[1] = loop_rule_edge1(a[1], b[1], v[1], e[1], ovf);
             o[2] = loop_rule_edge1(a[2], b[2], v[2], e[2], ovf);
@@ -329,7 +330,16 @@ static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real 
             y = -fr->q * dpx + fr->p * dpy - fr->lo;
             if (py & 1) kind = (px0 & 1) ? 1 : 2;
             else kind = (px0 & 1) ? 0 : 3;
-            lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, fr->ds, kind, out, w);
+            /* one call per kind, each with its kind constant (its own loop, its offsets
+             * folded) */
+#define LT_PASS(kd) lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, fr->ds, kd, out, w)
+            switch (kind) {
+            case 0: LT_PASS(0); break;
+            case 1: LT_PASS(1); break;
+            case 2: LT_PASS(2); break;
+            default: LT_PASS(3); break;
+            }
+#undef LT_PASS
         }
     }
 }
@@ -362,45 +372,40 @@ static inline uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint
     return even ? g->dir[lt_vi(s, ui, uj)] : lt_new_dir(g, s, ui, uj, d);
 }
 
-/* Faces of level t + 1 (side s2) from those of level t (side s): rotations and lower sides. */
-static void lt_put_u(const lt_grid *h, uint32_t s2, uint32_t i, uint32_t j, uint32_t r, uint32_t low)
-{
-    if (i >= s2 || j >= s2 || i + j + 1u > s2) return; /* outside the next grid (-1 wraps) */
-    h->rot[2u * lt_vi(s2, i, j)] = (uint8_t)r;
-    h->low[lt_vi(s2, i, j)] = (uint8_t)low;
-}
-
-static void lt_put_d(const lt_grid *h, uint32_t s2, uint32_t i, uint32_t j, uint32_t r)
-{
-    if (i >= s2 || j >= s2 || i + j + 2u > s2) return;
-    h->rot[2u * lt_vi(s2, i, j) + 1u] = (uint8_t)r;
-}
-
-/* Every face of level t + 1's grid is a child of a face of level t's (the three corner up
- * triangles of a grid are not faces of its 1-ring and are skipped). */
+/* Faces of level t + 1 (h, side s2) from those of level t (g, side s): rotations and lower
+ * sides, by rows of h. Every face of h is a child of a face of g (the three corner up
+ * triangles of a grid are not faces of its 1-ring and have no children in h), and U(I, J)
+ * and D(I, J) of h are children of the face of g at index lt_vi(s, (I + 1) >> 1,
+ * (J + 1) >> 1) (I, J of h are 2i - 1 + the child's offset), which the parities say:
+ *   J odd,  I odd:  U corner child 0 of U (rotation 0), D the middle child of U (U's);
+ *   J odd,  I even: U corner child 1 of U (rotation 1), D corner child 0 of D (rotation 0);
+ *   J even, I odd:  U corner child 2 of U (rotation 2), D corner child 2 of D (rotation 2);
+ *   J even, I even: U the middle child of D (D's + 1), D corner child 1 of D (rotation 1).
+ * A corner child at lattice corner k has rotation k; the middle child of an up triangle
+ * keeps its rotation, of a down one adds one (the header). Lower sides: a corner child's
+ * edges along the parent's keep the parent's bits, its inner edge is lower on its side; the
+ * middle child holds no lower half-edge. */
 static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2)
 {
-    uint32_t i, j;
-    for (j = 0; j < s; j++)
-        for (i = 0; i + j + 1u <= s; i++) {
-            uint32_t v = lt_vi(s, i, j), r;
-            uint32_t I = 2u * i - 1u, J = 2u * j - 1u; /* may wrap: lt_put_* drop them */
-            if (!((i == 0u && j == 0u) || (i + 1u == s && j == 0u) || (i == 0u && j + 1u == s))) {
-                uint32_t b = g->low[v]; /* U(i, j): three corner children, the middle one */
-                r = g->rot[2u * v];
-                lt_put_u(h, s2, I, J, 0u, (b & 5u) | 2u);
-                lt_put_u(h, s2, I + 1u, J, 1u, (b & 3u) | 4u);
-                lt_put_u(h, s2, I, J + 1u, 2u, (b & 6u) | 1u);
-                lt_put_d(h, s2, I, J, r);
+    const uint8_t *gl = g->low, *gr = g->rot;
+    uint8_t *hl = h->low, *hr = h->rot;
+    uint32_t I, J;
+    for (J = 0; J < s2; J++) {
+        uint32_t v = lt_vi(s2, 0u, J), n = s2 - J, p0 = lt_vi(s, 0u, (J + 1u) >> 1);
+        for (I = 0; I < n; I++, v++) {
+            uint32_t p = p0 + ((I + 1u) >> 1), ru, rd, lw;
+            if (J & 1u) {
+                if (I & 1u) { ru = 0u; lw = (gl[p] & 5u) | 2u; rd = gr[2u * p]; }
+                else { ru = 1u; lw = (gl[p] & 3u) | 4u; rd = 0u; }
+            } else {
+                if (I & 1u) { ru = 2u; lw = (gl[p] & 6u) | 1u; rd = 2u; }
+                else { ru = (gr[2u * p + 1u] + 1u) % 3u; lw = 0u; rd = 1u; }
             }
-            if (i + j + 2u <= s) { /* D(i, j) */
-                r = g->rot[2u * v + 1u];
-                lt_put_d(h, s2, I + 1u, J, 0u);
-                lt_put_d(h, s2, I + 1u, J + 1u, 1u);
-                lt_put_d(h, s2, I, J + 1u, 2u);
-                lt_put_u(h, s2, I + 1u, J + 1u, (r + 1u) % 3u, 0u);
-            }
+            hr[2u * v] = (uint8_t)ru;
+            hl[v] = (uint8_t)lw;
+            if (I + 1u < n) hr[2u * v + 1u] = (uint8_t)rd; /* D(I, J) is in h */
         }
+    }
 }
 
 /* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: its ring starts, rotations
@@ -416,8 +421,26 @@ static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, 
     /* ring starts: the next level's old vertices are this level's face's, at I, J >= 1,
      * I + J <= s2 - 1 */
     for (J = 1; J + 2u <= s2; J++) {
-        uint32_t v = lt_vi(s2, 1u, J);
-        for (I = 1; I + J + 1u <= s2; I++, v++) h->dir[v] = (uint8_t)lt_dir_at(g, s, I + 1u, J + 1u);
+        /* lt_dir_at of (I + 1, J + 1), by rows: the point lies in U(u) of g, u = lt_vi(s,
+         * (I + 1) >> 1, (J + 1) >> 1) whatever its parities; lt_new_dir's D across (x) is
+         * D(u) for edge 1, D(u - 1) for edge 2, and for edge 0 the D below (one row of g back) */
+        uint32_t v = lt_vi(s2, 1u, J), uj = (J + 1u) >> 1, u0 = lt_vi(s, 0u, uj), back = s + 2u - uj;
+        for (I = 1; I + J + 1u <= s2; I++, v++) {
+            uint32_t u = u0 + ((I + 1u) >> 1), d, x;
+            if (J & 1u) { /* py even */
+                if (I & 1u) { /* px even: the old vertex keeps its ring start */
+                    h->dir[v] = g->dir[u];
+                    continue;
+                }
+                d = 0u;
+                x = u - back;
+            } else {
+                d = (I & 1u) ? 2u : 1u;
+                x = (I & 1u) ? u - 1u : u;
+            }
+            h->dir[v] = (((uint32_t)g->low[u] >> d) & 1u) ? lt_ndir_u[d][g->rot[2u * u]]
+                                                           : lt_ndir_d[d][g->rot[2u * x + 1u]];
+        }
     }
     lt_faces(g, s, h, s2);
 }
@@ -545,7 +568,11 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
     uint32_t m = 1u << (tl->depth - 1u), S = m + 3u, mp = 1u << (tl->depth - tl->split), x;
     uint32_t qc = c >> (2u * (tl->split - 1u));
     const subd_real *M = tl->mpos;
-    int32_t o3[12], Y, ymin, ymax;
+    const lim_reg6 *lk = tl->lk;
+    lt_rec *q = tl->q;
+    subd_real *nrm = tl->qnrm;
+    int32_t o3[12], Y, ymin, ymax, dd = f1[1] * f1[1];
+    uint32_t qr = 6u - qrot[qc];
     if (tl->split == 1u || (c & 3u) == 0u) { /* the quarter's first piece */
         lt_frame fr;
         fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
@@ -563,7 +590,7 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         if (cy > ymax) ymax = cy;
     }
     for (Y = ymin; Y <= ymax; Y++) {
-        int32_t dY = Y - po[1], a = -0x40000000, b = 0x40000000, X, lx, ly;
+        int32_t dY = Y - po[1], a = -0x40000000, b = 0x40000000, X, lx, ly, px, py, k, sk, n;
         uint32_t l0;
         lt_bound(f2[1], -f2[0] * dY, &a, &b);
         lt_bound(-f1[1], f1[0] * dY, &a, &b);
@@ -574,12 +601,16 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         ly = -f1[1] * a + f1[0] * dY;
         X = po[0] + a;
         l0 = lt_vi(S, (uint32_t)X + 1u, (uint32_t)Y + 1u);
-        for (; X <= po[0] + b; X++, l0++, lx += f2[1], ly -= f1[1]) {
-            int32_t px = ox + X * e1[0] + Y * e2[0], py = oy + X * e1[1] + Y * e2[1];
-            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + 6u - qrot[qc];
-            uint32_t k = lt_vi(mp, (uint32_t)lx, (uint32_t)ly);
+        px = ox + X * e1[0] + Y * e2[0];
+        py = oy + X * e1[1] + Y * e2[1];
+        /* the record index k = lt_vi(mp, lx, ly) stepped as lt_pass steps its destination:
+         * (lx, ly) moves by (f2y, -f1y), k by sk, which falls by f1y^2 per step */
+        k = ly * (2 * (int32_t)mp + 3 - ly) / 2 + lx;
+        sk = f2[1] - f1[1] * (2 * (int32_t)mp + 3 + f1[1]) / 2 + ly * f1[1];
+        for (n = b - a + 1; n > 0; n--, l0++, px += e1[0], py += e1[1], k += sk, sk -= dd) {
+            uint32_t d = lt_dir_at(g, s, (uint32_t)px, (uint32_t)py) + qr;
             if (d >= 6u) d -= 6u;
-            subd_loop_limit_reg6(tl->lk, M + 3u * l0, o3 + d, tl->q[k].p, tl->qnrm + 3u * k, lo);
+            subd_loop_limit_reg6(lk, M + 3u * l0, o3 + d, q[k].p, nrm + 3 * k, lo);
         }
     }
 }
@@ -633,42 +664,89 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
     *ovf |= lo;
 }
 
+/* (a, b) inside control face lattice of side n1 (subd_lp_vertex_id's closed form). */
+static int lt_inner(int32_t a, int32_t b, int32_t n1) { return a >= 1 && b >= 1 && a + b <= n1 - 1; }
+
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2])
 {
-    uint32_t m = 1u << (tl->depth - tl->split), x, y, k = 0, n1 = (uint32_t)1 << lv;
-    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb;
-    uint64_t nm1 = n1 - 1u, base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
-                                   (uint64_t)f * (nm1 * (nm1 - 1u) / 2u);
+    uint32_t m = 1u << (tl->depth - tl->split), n1 = (uint32_t)1 << lv, nm1 = n1 - 1u;
+    int32_t n = (int32_t)1 << tl->depth, a0, b0, ea, eb, fa, fb, da, db, dd, ra, rb, ia, ib, y, in1 = (int32_t)n1;
+    uint64_t base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                    (uint64_t)f * ((uint64_t)nm1 * (nm1 - 1u) / 2u);
+    lt_rec *q = tl->q;
     a0 = (int32_t)ca[0];
     b0 = (int32_t)cb[0];
     ea = ((int32_t)ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
     eb = ((int32_t)cb[1] - b0) / n;
     fa = ((int32_t)ca[2] - a0) / n;
     fb = ((int32_t)cb[2] - b0) / n;
-    /* per row: (a, b) step by (da, db) (each -1, 0 or 1), and the interior closed form
-     * id = r(a) + b - 1, r(a) = base + (a - 1) nm1 - (a - 1) a / 2, a polynomial in a, is
-     * followed along the row for every point (modulo 2^64): a step changes it by
-     * dl = r(a + da) - r(a) + db = da (nm1 - a) - (da < 0) + db, and dl itself by -da^2 per
-     * step; points off the interior take subd_lp_vertex_id */
-    for (y = 0; y <= m; y++) {
-        int32_t gx = org[0] + (int32_t)y * e2[0], gy = org[1] + (int32_t)y * e2[1];
-        int32_t ia = a0 + gx * ea + gy * fa, ib = b0 + gx * eb + gy * fb;
-        int32_t da = e1[0] * ea + e1[1] * fa, db = e1[0] * eb + e1[1] * fb;
-        int64_t r = (int64_t)base + ((int64_t)ia - 1) * (int64_t)nm1 - ((int64_t)ia - 1) * (int64_t)ia / 2;
-        uint64_t cl = (uint64_t)(r + (int64_t)ib - 1);
-        int64_t dl = (int64_t)da * ((int64_t)nm1 - ia) - (da < 0 ? 1 : 0) + db;
-        for (x = 0; x + y <= m; x++, k++) {
-            uint32_t a = (uint32_t)ia, b = (uint32_t)ib;
-            uint64_t id = cl;
-            if (a - 1u >= n1 - 1u || b - 1u >= n1 - 1u || a + b >= n1) /* off vertex_id's face interior */
-                id = subd_lp_vertex_id(in, f, a, b, lv);
-            tl->q[k].id[0] = (uint32_t)id;
-            tl->q[k].id[1] = (uint32_t)(id >> 32);
-            cl += (uint64_t)dl;
-            dl -= da * da;
-            ia += da;
-            ib += db;
+    da = e1[0] * ea + e1[1] * fa; /* a row's step in (a, b): each -1, 0 or 1 */
+    db = e1[0] * eb + e1[1] * fb;
+    dd = da * da;
+    ra = e2[0] * ea + e2[1] * fa; /* the next row's */
+    rb = e2[0] * eb + e2[1] * fb;
+    ia = a0 + org[0] * ea + org[1] * fa;
+    ib = b0 + org[0] * eb + org[1] * fb;
+    if (lt_inner(ia, ib, in1) && lt_inner(ia + (int32_t)m * da, ib + (int32_t)m * db, in1) &&
+        lt_inner(ia + (int32_t)m * ra, ib + (int32_t)m * rb, in1)) {
+        /* the whole piece inside the control face's interior (its three corners are, and
+         * the interior is convex): every row is one run (below), its start stepped from the
+         * row before's as the run steps along a row: a row step moves a by ra, so the
+         * start's r(a) + b changes by tr = ra (nm1 - a) - (ra < 0) + rb, which falls by ra^2
+         * per row, and the run's first dl by da ra */
+        uint32_t am = (uint32_t)(ia - 1), t0 = am * nm1 - am * (am + 1u) / 2u + (uint32_t)(ib - 1);
+        uint32_t dl0 = (uint32_t)(da * (int32_t)(nm1 - 1u - am) - (da < 0 ? 1 : 0) + db);
+        uint32_t tr = (uint32_t)(ra * (int32_t)(nm1 - 1u - am) - (ra < 0 ? 1 : 0) + rb);
+        for (y = 0; y <= (int32_t)m; y++) {
+            uint32_t t = t0, dl = dl0;
+            lt_rec *qe = q + ((int32_t)m - y) + 1;
+            for (; q != qe; q++) {
+                uint64_t id = base + t;
+                q->id[0] = (uint32_t)id;
+                q->id[1] = (uint32_t)(id >> 32);
+                t += dl;
+                dl -= (uint32_t)dd;
+            }
+            t0 += tr;
+            tr -= (uint32_t)(ra * ra);
+            dl0 -= (uint32_t)(da * ra);
+        }
+        return;
+    }
+    /* per row: (a, b) = (ia + x da, ib + x db) for x = 0..m - y. The control face's
+     * interior (subd_lp_vertex_id's closed form: a >= 1, b >= 1, a + b <= n1 - 1) is one
+     * range of x, found once per row (lt_bound); there the closed form
+     * id = base + r(a) + b - 1, r(a) = (a - 1) nm1 - (a - 1) a / 2 (below nm1^2 / 2 < 2^31),
+     * is stepped along the row: a step changes r(a) + b by dl = r(a + da) - r(a) + db =
+     * da (nm1 - a) - (da < 0) + db, and dl itself by -da^2 per step; the points before and
+     * after the range take subd_lp_vertex_id */
+    for (y = 0; y <= (int32_t)m; y++, ia += ra, ib += rb) {
+        int32_t xe = (int32_t)m - y, lo = 0, hi = xe, x;
+        lt_bound(da, ia - 1, &lo, &hi);
+        lt_bound(db, ib - 1, &lo, &hi);
+        lt_bound(-da - db, in1 - 1 - ia - ib, &lo, &hi);
+        if (lo > hi) lo = xe + 1; /* no interior point: every point by subd_lp_vertex_id */
+        for (x = 0; x <= xe; x++, q++) {
+            uint64_t id;
+            if (x == lo) { /* the interior run */
+                uint32_t am = (uint32_t)(ia + x * da - 1);
+                uint32_t t = am * nm1 - am * (am + 1u) / 2u + (uint32_t)(ib + x * db - 1);
+                uint32_t dl = (uint32_t)(da * (int32_t)(nm1 - 1u - am) - (da < 0 ? 1 : 0) + db);
+                lt_rec *qe = q + (hi - x) + 1;
+                for (; q != qe; q++) {
+                    id = base + t;
+                    q->id[0] = (uint32_t)id;
+                    q->id[1] = (uint32_t)(id >> 32);
+                    t += dl;
+                    dl -= (uint32_t)dd;
+                }
+                x = hi + 1;
+                if (x > xe) break;
+            }
+            id = subd_lp_vertex_id(in, f, (uint32_t)(ia + x * da), (uint32_t)(ib + x * db), lv);
+            q->id[0] = (uint32_t)id;
+            q->id[1] = (uint32_t)(id >> 32);
         }
     }
 }

@@ -487,6 +487,88 @@ static void stream_tiles_limit5(void)
         }
 }
 
+/* The ids subd_lt_ids gives piece (org, e1, e2) of side m of the tile face with corners
+ * (ca, cb) (side h) in control face f at level lv, against subd_lp_vertex_id at each piece
+ * vertex's lattice point; *inner += 1 when every one lies inside the control face. Returns
+ * the number of wrong ids. */
+static uint32_t piece_ids_bad(lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
+                              const uint32_t cb[3], int32_t h, int32_t m, const int32_t org[2], const int32_t e1[2],
+                              const int32_t e2[2], uint32_t *inner)
+{
+    int32_t ea = ((int32_t)ca[1] - (int32_t)ca[0]) / h, eb = ((int32_t)cb[1] - (int32_t)cb[0]) / h;
+    int32_t fa = ((int32_t)ca[2] - (int32_t)ca[0]) / h, fb = ((int32_t)cb[2] - (int32_t)cb[0]) / h;
+    int32_t n1 = (int32_t)1 << lv, x, y;
+    uint32_t q = 0, bad = 0, all = 1;
+    subd_lt_ids(tl, in, f, lv, ca, cb, org, e1, e2);
+    for (y = 0; y <= m; y++)
+        for (x = 0; x + y <= m; x++, q++) {
+            int32_t gx = org[0] + x * e1[0] + y * e2[0], gy = org[1] + x * e1[1] + y * e2[1];
+            int32_t pa = (int32_t)ca[0] + gx * ea + gy * fa, pb = (int32_t)cb[0] + gx * eb + gy * fb;
+            uint64_t want = subd_lp_vertex_id(in, f, (uint32_t)pa, (uint32_t)pb, lv);
+            if (((uint64_t)tl->q[q].id[0] | ((uint64_t)tl->q[q].id[1] << 32)) != want) bad++;
+            if (pa < 1 || pb < 1 || pa + pb > n1 - 1) all = 0;
+        }
+    *inner += all;
+    return bad;
+}
+
+/* subd_lt_ids against subd_lp_vertex_id, the general id of a point of a control face
+ * (piece_ids_bad), for every piece frame a tile can take (each pair of consecutive lattice
+ * directions, origins on the piece's own lattice, the piece inside the tile's face), tile
+ * faces of both kinds and every corner order at the control face's corners, along its edges
+ * and inside, levels 3-7, depths 2-5, quarters and sixteenths: pieces inside the control
+ * face (subd_lt_ids' whole-piece run) and touching its boundary (runs found per row,
+ * subd_lp_vertex_id around them). */
+static void tile_ids_direct(void)
+{
+    static lt_rec rec[153]; /* a piece of side 16 at most */
+    static const int8_t dx[6] = {1, 0, -1, -1, 0, 1}, dy[6] = {0, 1, 1, 0, -1, -1};
+    subd_arena a;
+    subd_mesh in;
+    lt_tile tl;
+    uint32_t lv, t, split, f, bad = 0, pieces = 0, inner = 0, kind, rot, k, e;
+    subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+    if (!make_grid(&a, 2u, 0, 0, &in)) return;
+    tl.q = rec;
+    for (lv = 3; lv <= 7u; lv++)
+        for (t = 2; t <= 5u && t <= lv; t++)
+            for (split = 1; split <= 2u && split < t; split++)
+                for (f = 0; f < in.num_faces; f += 3u) {
+                    int32_t n1 = (int32_t)1 << lv, h = (int32_t)1 << t, m = h >> split, A, B;
+                    tl.depth = t;
+                    tl.split = split;
+                    for (B = 0; B + h <= n1; B += h)
+                        for (A = 0; A + B + h <= n1; A += h)
+                            for (kind = 0; kind < 2u; kind++) {
+                                /* up (A, B) (A + h, B) (A, B + h), down (A + h, B) (A + h, B + h)
+                                 * (A, B + h); at the control face's boundary and a few inside */
+                                int32_t pa[3] = {kind ? A + h : A, A + h, A}, pb[3] = {B, kind ? B + h : B, B + h};
+                                if ((kind && A + B + 2 * h > n1) || (A && B && A + B + 2 * h < n1 && A != h)) continue;
+                                for (rot = 0; rot < 3u; rot++)
+                                    for (e = 0; e < 6u; e++) {
+                                        uint32_t ca[3], cb[3];
+                                        int32_t e1[2] = {dx[e], dy[e]}, o[2];
+                                        int32_t e2[2] = {dx[(e + 1u) % 6u], dy[(e + 1u) % 6u]};
+                                        for (k = 0; k < 3u; k++) {
+                                            ca[k] = (uint32_t)pa[(k + rot) % 3u];
+                                            cb[k] = (uint32_t)pb[(k + rot) % 3u];
+                                        }
+                                        for (o[1] = 0; o[1] <= h; o[1] += m)
+                                            for (o[0] = 0; o[0] + o[1] <= h; o[0] += m) {
+                                                int32_t x1 = o[0] + m * e1[0], y1 = o[1] + m * e1[1];
+                                                int32_t x2 = o[0] + m * e2[0], y2 = o[1] + m * e2[1];
+                                                if (x1 < 0 || y1 < 0 || x1 + y1 > h || x2 < 0 || y2 < 0 || x2 + y2 > h)
+                                                    continue; /* the piece leaves the tile's face */
+                                                bad += piece_ids_bad(&tl, &in, f, lv, ca, cb, h, m, o, e1, e2, &inner);
+                                                pieces++;
+                                            }
+                                    }
+                            }
+                }
+    CHECK_EQ(bad, 0);
+    CHECK(inner > 0u && inner < pieces); /* both of subd_lt_ids' paths */
+}
+
 const test_case suite_loop_tiles[] = {
     {"stream_tiles", stream_tiles},
     {"stream_tiles_limit", stream_tiles_limit},
@@ -494,5 +576,6 @@ const test_case suite_loop_tiles[] = {
     {"stream_level6", stream_level6},
     {"stream_tiles_partial", stream_tiles_partial},
     {"stream_tiles_limit5", stream_tiles_limit5},
+    {"tile_ids_direct", tile_ids_direct},
     {0, 0},
 };

@@ -146,28 +146,32 @@ static const uint8_t gc_corner[48] = {GC_C(0u), GC_C(1u), GC_C(2u), GC_C(3u)};
  *   - the halves a -> m and m -> b keep the edge's lower side; the inner edge
  *     m_j -> m_j-1 is lower in child j (opposite corner v_j) than in child 3 (m_j+1).
  * Values: ve[i] corner i's child, vm[j] edge j's new vertex, h1[j] / h2[j] the points on the
- * halves a - m / m - b, in[j] the point on the inner edge m_j - m_j-1. */
+ * halves a - m / m - b, in[j] the point on the inner edge m_j - m_j-1.
+ * The centre's corners are p's local vertices vc (0..2; in a window, one of its four children:
+ * three of 0..5), whose level L-1 vertex points are at the same cache slots. */
 int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
 {
     const sp_head *ph = p->h;
     const subd_real *cp = p->cpos;
     subd_loop_boundary rule = r->o->boundary;
-    uint32_t cf = ph->cf, i, j, sm[3];
+    uint32_t cf = ph->cf, i, j, sm[3], vc[3];
     subd_real ve[3][3], vm[3][3], h1[3][3], h2[3][3], in[3][3];
     const subd_real *pt[15];
     uint64_t id[15], ib;
+    for (i = 0; i < 3u; i++) vc[i] = p->cv[3u * cf + i]; /* 0..2, in a window 0..5 */
     for (i = 0; i < 3u; i++) {
-        subd_lp_vertex_point(p, i, 1, wc, ovf, ve[i], 0);
+        subd_lp_vertex_point(p, vc[i], 1, wc, ovf, ve[i], 0);
         sm[i] = p->slot[3u * cf + i];
     }
     for (j = 0; j < 3u; j++) {
         uint32_t h = 3u * cf + j, t = p->tw[h], j1 = (j + 1u) % 3u;
         uint32_t ring[6], nr, start, k, lower_t = (t < LP_TW_BORDER && t < h);
-        const subd_real *xm = cp + 3u * sm[j], *xa = cp + 3u * j, *xb = cp + 3u * j1;
+        const subd_real *xm = cp + 3u * sm[j], *xa = cp + 3u * vc[j], *xb = cp + 3u * vc[j1];
         const subd_real *xca = cp + 3u * sm[(j + 2u) % 3u], *xbc = cp + 3u * sm[j1];
         int sharp = (p->sh[h] & LP_SH_CHILD) != 0u;
-        uint32_t rm = sharp ? TOPO_PF_REGULAR : 0u, ra = p->cflag[j] & TOPO_PF_REGULAR, rb = p->cflag[j1] & TOPO_PF_REGULAR;
-        ring[0] = j1; ring[1] = sm[j1]; ring[2] = sm[(j + 2u) % 3u]; ring[3] = j;
+        uint32_t rm = sharp ? TOPO_PF_REGULAR : 0u, ra = p->cflag[vc[j]] & TOPO_PF_REGULAR;
+        uint32_t rb = p->cflag[vc[j1]] & TOPO_PF_REGULAR;
+        ring[0] = vc[j1]; ring[1] = sm[j1]; ring[2] = sm[(j + 2u) % 3u]; ring[3] = vc[j];
         nr = 4;
         if (t < LP_TW_BORDER) {
             ring[4] = p->slot[tri_next(t)]; /* m(a, d) */
@@ -208,8 +212,8 @@ int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *
         }
     }
     for (j = 0; j < 3u; j++) /* inner edge m_j -> m_j-1 of child j, opposite v_j; child 3: m_j+1 */
-        loop_rule_edge(in[j], cp + 3u * sm[j], cp + 3u * sm[(j + 2u) % 3u], cp + 3u * j, cp + 3u * sm[(j + 1u) % 3u],
-                       ovf);
+        loop_rule_edge(in[j], cp + 3u * sm[j], cp + 3u * sm[(j + 2u) % 3u], cp + 3u * vc[j],
+                       cp + 3u * sm[(j + 1u) % 3u], ovf);
     if (*ovf) return SUBD_ERR_RANGE;
     /* the 15 points and their ids, once: 0..2 corners, 3..5 m, 6..8 h1, 9..11 h2, 12..14 in */
     ib = subd_lp_id_base(r->in, r->f, r->o->levels);

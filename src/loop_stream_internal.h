@@ -92,6 +92,7 @@ typedef struct sp_state {
      * triangle tj, tready once the piece's positions and ids are made */
     uint32_t tdep, ton, tq, tj, tready;
     uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
+    uint32_t nwin;     /* windows made so far (subd_ls_stream_windows)                 */
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 
@@ -108,4 +109,7 @@ int subd_ls_emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay,
 /* The regular tile at level s->k: its triangles piece by piece, from where the last call
  * stopped; s->ton stays set when the caller's buffer is full. */
 int subd_ls_tile_emit(sp_state *s, subd_stream_q *q);
+/* The windows (loop_patch.h) a Loop stream has made so far: for the tests, which check that
+ * the window path is taken. */
+uint32_t subd_ls_stream_windows(const subd_stream *h);
 #endif

@@ -92,12 +92,11 @@ static uint32_t tile_depth(uint32_t levels, int limit)
  * block, each vertex once, then each child's 16 grandchildren by the two-level emitter. */
 static int window_on(uint32_t levels, int limit) { return !limit && levels >= 3u; }
 
-/* The window's block (its offsets into off): for a patch of level L-3, whose corner valences
- * sum to at most 3N at level 0 and N + 12 below. Computed again at each use: the run state
- * has no room for the offsets. */
-static uint32_t window_layout(const sp_layout *l, uint32_t levels, uint32_t *off)
+/* The window's block (its offsets into l->m.offw): for a patch of level L-3, whose corner
+ * valences sum to at most 3N at level 0 and N + 12 below. */
+static uint32_t window_layout(sp_layout *l, uint32_t levels)
 {
-    return subd_lp_window_layout(levels == 3u ? 3u * l->n : l->n + 12u, off);
+    return subd_lp_window_layout(levels == 3u ? 3u * l->n : l->n + 12u, l->m.offw);
 }
 
 /* The limit mode's mesh view of a level with corner valence sum s: loop_patch.c's layout of
@@ -147,12 +146,12 @@ static int stream_layout(subd_arena *a, uint32_t levels, uint32_t valence, int l
     r0 = y.bytes;
     (void)subd_layout_take(&y, cached - above, l->size1);
     if (window_on(levels, limit)) { /* the window, at level L-2's block: larger than a level */
-        uint32_t offw[A_N], wb = window_layout(l, levels, offw);
+        uint32_t wb = window_layout(l, levels);
         if (wb > l->size1) (void)subd_layout_take(&y, 1u, wb - l->size1);
     }
     if (limit) {
         (void)subd_layout_take(&y, 1u, subd_lp_level_layout(s1, 0, 0, l->off1)); /* at lev1 + cached * size1 */
-        view_layout(&y, s1, &l->view);
+        view_layout(&y, s1, &l->m.view);
     }
     (void)subd_lp_level_layout(s1, 1, 0, l->off1); /* the cache arrays follow the patch: same offsets */
     /* the tiles: at level tk + j (j = 0..tdepth - 2) one of depth tdepth - j, at its level's
@@ -305,28 +304,34 @@ static int sp_step(void *state, subd_stream_q *q, subd_diag *d)
         level_at(&s->lay, s->k, &p);
         st = 0;
         if (s->k == s->depth && window_on(o->levels, (int)s->limit)) {
-            if (p.h->child < 4u) { /* child c of the centre: its 16 grandchildren from the window */
-                uint32_t c = p.h->child++, off[A_N];
-                (void)window_layout(&s->lay, o->levels, off);
+            if (p.h->child < 4u) { /* the centre's children from the window: the push form all
+                                    * four at once (sharing their points; from the first: a
+                                    * stream pulled before may be pushed on), else one per batch */
+                uint32_t c = p.h->child, push = q->one && q->ts && c == 0u, cend = push ? 4u : c + 1u;
+                sp_gcshare sh;
                 qv.h = s->lay.head + s->k + 1u;
-                subd_lp_level_bind(s->lay.lev1 + s->k * s->lay.size1, off, &qv);
+                subd_lp_level_bind(s->lay.lev1 + s->k * s->lay.size1, s->lay.m.offw, &qv);
                 if (c == 0u) {
                     subd_lp_extract_window(&p, &qv, s->lay.smap, s->lay.fmap);
                     subd_lp_fill_cache(&qv, o->boundary, 1, &s->wc, &s->ovf);
                     s->nwin++;
                 }
-                qv.h->cf = qv.h->child + c;
-                subd_lp_child_lattice(p.h, c, qv.h->ca, qv.h->cb);
-                if ((st = subd_ls_emit_grandchildren(&s->run, &qv, &s->wc, &s->ovf)) != 0) {
-                    d->face = s->run.f;
-                    return st;
+                sh.have = 0;
+                for (; c < cend; c++) {
+                    p.h->child = c + 1u;
+                    qv.h->cf = qv.h->child + c;
+                    subd_lp_child_lattice(p.h, c, qv.h->ca, qv.h->cb);
+                    if ((st = subd_ls_emit_grandchildren(&s->run, &qv, push ? &sh : 0, c, &s->wc, &s->ovf)) != 0) {
+                        d->face = s->run.f;
+                        return st;
+                    }
                 }
-                if (c == 3u) sp_up(s);
+                if (c == 4u) sp_up(s);
                 return SUBD_OK;
             }
         } else if (s->k == s->depth) {
             st = s->limit ? subd_ls_emit_limit(&s->run, &p, &s->lay, &s->lay.mk->lc, &s->ovf)
-                 : o->levels >= 2u ? subd_ls_emit_grandchildren(&s->run, &p, &s->wc, &s->ovf) : subd_ls_emit_children(&s->run, &p);
+                 : o->levels >= 2u ? subd_ls_emit_grandchildren(&s->run, &p, 0, 0, &s->wc, &s->ovf) : subd_ls_emit_children(&s->run, &p);
             if (st != 0) {
                 d->face = s->run.f;
                 return st;

@@ -16,6 +16,8 @@
 #include "loop_stream_internal.h"
 #include "mesh_internal.h"
 
+typedef struct tile_p3 { subd_real v[3]; } tile_p3; /* one point: copied as a whole (ldm/stm) */
+
 /* The next output slot: the caller's buffer, else the overflow ring, which holds a whole
  * batch (loop_stream.c's ring_cap), so it is never full here. */
 static subd_tri *out_tri(const sp_run *r)
@@ -50,6 +52,8 @@ static int emit_tris(const sp_run *r, const subd_real *const *pt, const uint64_t
     subd_stream_q *q = r->q;
     subd_tri *t = (subd_tri *)(void *)q->one;
     uint32_t i, j, k;
+    int (*fn)(void *, const subd_tri *);
+    void *ctx;
     if (!t || !q->ts) {
         for (i = 0; i < n; i++, ix += 3) {
             const subd_real *x[3];
@@ -63,20 +67,20 @@ static int emit_tris(const sp_run *r, const subd_real *const *pt, const uint64_t
         }
         return 0;
     }
+    fn = q->ts->tri;
+    ctx = q->ts->ctx;
     t->face = r->f;
     t->level = r->o->levels;
     for (j = 0; j < 3u; j++)
         for (k = 0; k < 3u; k++) t->normal[j][k] = 0;
     for (i = 0; i < n; i++, ix += 3) {
         int st;
+        /* each point copied as a whole (tile_push's tile_p3), the sink read once */
         for (j = 0; j < 3u; j++) {
-            const subd_real *x = pt[ix[j]];
-            t->pos[j][0] = x[0];
-            t->pos[j][1] = x[1];
-            t->pos[j][2] = x[2];
+            *(tile_p3 *)(void *)t->pos[j] = *(const tile_p3 *)(const void *)pt[ix[j]];
             t->id[j] = id[ix[j]];
         }
-        if ((st = q->ts->tri(q->ts->ctx, t)) != 0) {
+        if ((st = fn(ctx, t)) != 0) {
             q->stop = st;
             return st;
         }
@@ -149,28 +153,59 @@ static const uint8_t gc_corner[48] = {GC_C(0u), GC_C(1u), GC_C(2u), GC_C(3u)};
  * halves a - m / m - b, in[j] the point on the inner edge m_j - m_j-1.
  * The centre's corners are p's local vertices vc (0..2; in a window, one of its four children:
  * three of 0..5), whose level L-1 vertex points are at the same cache slots. */
-int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
+int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, sp_gcshare *sh, uint32_t c, loop_wcache *wc,
+                               uint32_t *ovf)
 {
     const sp_head *ph = p->h;
     const subd_real *cp = p->cpos;
     subd_loop_boundary rule = r->o->boundary;
     uint32_t cf = ph->cf, i, j, sm[3], vc[3];
     subd_real ve[3][3], vm[3][3], h1[3][3], h2[3][3], in[3][3];
+    subd_real *pv[3], *pm[3], *p1[3], *p2[3]; /* where each point is made: the locals or sh */
     const subd_real *pt[15];
     uint64_t id[15], ib;
-    for (i = 0; i < 3u; i++) vc[i] = p->cv[3u * cf + i]; /* 0..2, in a window 0..5 */
+    uint32_t known_v = 0, known_e = 0; /* points the window's earlier children made */
     for (i = 0; i < 3u; i++) {
-        subd_lp_vertex_point(p, vc[i], 1, wc, ovf, ve[i], 0);
+        vc[i] = p->cv[3u * cf + i]; /* 0..2, in a window 0..5 */
         sm[i] = p->slot[3u * cf + i];
+        pv[i] = ve[i];
+        pm[i] = vm[i];
+        p1[i] = h1[i];
+        p2[i] = h2[i];
     }
+    if (sh) { /* corner child c: (v_c, m_c, m_c-1); middle child: (m0, m1, m2) */
+        for (i = 0; i < 3u; i++) {
+            uint32_t mi = c == 3u ? i : i == 1u ? c : i == 2u ? (c + 2u) % 3u : 3u;
+            if (mi == 3u) continue;
+            pv[i] = sh->mve[mi];
+            if (sh->have & (1u << mi)) known_v |= 1u << i;
+            sh->have |= 1u << mi;
+        }
+        if (c == 3u) {
+            known_e = 7u;
+            for (j = 0; j < 3u; j++) {
+                pm[j] = sh->evm[j];
+                p1[j] = sh->eh1[j];
+                p2[j] = sh->eh2[j];
+            }
+        } else { /* its inner edge m_c -> m_c-1: the middle child's edge c - 1, reversed */
+            pm[1] = sh->evm[(c + 2u) % 3u];
+            p1[1] = sh->eh2[(c + 2u) % 3u];
+            p2[1] = sh->eh1[(c + 2u) % 3u];
+        }
+    }
+    for (i = 0; i < 3u; i++)
+        if (!(known_v & (1u << i))) subd_lp_vertex_point(p, vc[i], 1, wc, ovf, pv[i], 0);
     for (j = 0; j < 3u; j++) {
         uint32_t h = 3u * cf + j, t = p->tw[h], j1 = (j + 1u) % 3u;
         uint32_t ring[6], nr, start, k, lower_t = (t < LP_TW_BORDER && t < h);
         const subd_real *xm = cp + 3u * sm[j], *xa = cp + 3u * vc[j], *xb = cp + 3u * vc[j1];
         const subd_real *xca = cp + 3u * sm[(j + 2u) % 3u], *xbc = cp + 3u * sm[j1];
         int sharp = (p->sh[h] & LP_SH_CHILD) != 0u;
+        subd_real *om = pm[j], *o1 = p1[j], *o2 = p2[j];
         uint32_t rm = sharp ? TOPO_PF_REGULAR : 0u, ra = p->cflag[vc[j]] & TOPO_PF_REGULAR;
         uint32_t rb = p->cflag[vc[j1]] & TOPO_PF_REGULAR;
+        if (known_e & (1u << j)) continue;
         ring[0] = vc[j1]; ring[1] = sm[j1]; ring[2] = sm[(j + 2u) % 3u]; ring[3] = vc[j];
         nr = 4;
         if (t < LP_TW_BORDER) {
@@ -183,31 +218,31 @@ int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *
         else start = (t % 3u == 2u) ? 3u : 5u;
         if (sharp) { /* crease or boundary: its two sharp neighbours b and a, in ring order */
             int a_first = start == 2u || start == 3u;
-            loop_rule_crease(vm[j], xm, a_first ? xa : xb, a_first ? xb : xa, ovf);
+            loop_rule_crease(om, xm, a_first ? xa : xb, a_first ? xb : xa, ovf);
         } else {
             loop_weights w = subd_loop_weights_of(wc, 6u, ovf);
             subd_acc acc[3];
             loop_smooth_begin(acc, w, xm);
             for (k = 0; k < nr; k++) loop_smooth_add(acc, w, cp + 3u * ring[(start + k) % nr]);
-            loop_smooth_end(vm[j], acc, ovf);
+            loop_smooth_end(om, acc, ovf);
         }
         /* the halves a - m and m - b */
         if (sharp || t >= LP_TW_BORDER) {
             if (lower_t) {
-                loop_rule_sharp_edge(h1[j], xm, xa, rule, rm, ra, ovf);
-                loop_rule_sharp_edge(h2[j], xb, xm, rule, rb, rm, ovf);
+                loop_rule_sharp_edge(o1, xm, xa, rule, rm, ra, ovf);
+                loop_rule_sharp_edge(o2, xb, xm, rule, rb, rm, ovf);
             } else {
-                loop_rule_sharp_edge(h1[j], xa, xm, rule, ra, rm, ovf);
-                loop_rule_sharp_edge(h2[j], xm, xb, rule, rm, rb, ovf);
+                loop_rule_sharp_edge(o1, xa, xm, rule, ra, rm, ovf);
+                loop_rule_sharp_edge(o2, xm, xb, rule, rm, rb, ovf);
             }
         } else {
             const subd_real *xad = cp + 3u * ring[4], *xdb = cp + 3u * ring[5];
             if (lower_t) {
-                loop_rule_edge(h1[j], xm, xa, xad, xca, ovf);
-                loop_rule_edge(h2[j], xb, xm, xdb, xbc, ovf);
+                loop_rule_edge(o1, xm, xa, xad, xca, ovf);
+                loop_rule_edge(o2, xb, xm, xdb, xbc, ovf);
             } else {
-                loop_rule_edge(h1[j], xa, xm, xca, xad, ovf);
-                loop_rule_edge(h2[j], xm, xb, xbc, xdb, ovf);
+                loop_rule_edge(o1, xa, xm, xca, xad, ovf);
+                loop_rule_edge(o2, xm, xb, xbc, xdb, ovf);
             }
         }
     }
@@ -221,10 +256,10 @@ int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *
         uint32_t i1 = (i + 1u) % 3u, ip = (i + 2u) % 3u, lv = r->o->levels;
         uint32_t mai = (ph->ca[i] + ph->ca[i1]) / 2u, mbi = (ph->cb[i] + ph->cb[i1]) / 2u;
         uint32_t map = (ph->ca[ip] + ph->ca[i]) / 2u, mbp = (ph->cb[ip] + ph->cb[i]) / 2u;
-        pt[i] = ve[i];
-        pt[3u + i] = vm[i];
-        pt[6u + i] = h1[i];
-        pt[9u + i] = h2[i];
+        pt[i] = pv[i];
+        pt[3u + i] = pm[i];
+        pt[6u + i] = p1[i];
+        pt[9u + i] = p2[i];
         pt[12u + i] = in[i];
         id[i] = subd_lp_vertex_id_b(r->in, r->f, ph->ca[i], ph->cb[i], lv, ib);
         id[3u + i] = subd_lp_vertex_id_b(r->in, r->f, mai, mbi, lv, ib);
@@ -246,13 +281,13 @@ int subd_ls_emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay,
     uint32_t j;
     subd_mesh m;
     subd_tri t;
-    m.face_start = lay->view.face_start;
-    m.corner_vert = lay->view.corner_vert;
-    m.corner_face = lay->view.corner_face;
-    m.twin = lay->view.twin;
-    m.vert_out = lay->view.vert_out;
-    m.vert_tag = lay->view.vert_tag;
-    m.edge_tag = lay->view.edge_tag;
+    m.face_start = lay->m.view.face_start;
+    m.corner_vert = lay->m.view.corner_vert;
+    m.corner_face = lay->m.view.corner_face;
+    m.twin = lay->m.view.twin;
+    m.vert_out = lay->m.view.vert_out;
+    m.vert_tag = lay->m.view.vert_tag;
+    m.edge_tag = lay->m.view.edge_tag;
     subd_lp_view_fill(p, &m);
     for (j = 0; j < 3u; j++) {
         subd_loop_limit_vertex_cached(&m, r->o->boundary, p->pos, j, lc, t.pos[j], t.normal[j], ovf);
@@ -279,7 +314,6 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
  * quarter's normals tl->qnrm are copied); *at: the triangle the sink stopped at (its value
  * returned), else n. The hot loop of the stream: the fewest loads and stores per triangle,
  * the sink called without the queue between. */
-typedef struct tile_p3 { subd_real v[3]; } tile_p3; /* one point: copied as a whole (ldm/stm) */
 static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts,
                               uint32_t *at, const tile_p3 *N)
 {

@@ -41,8 +41,12 @@ typedef struct sp_layout {
     sp_head *head;      /* L + 1 level headers                                             */
     uint8_t *lev0;      /* level 0's block                                                 */
     uint8_t *lev1;      /* levels 1, 2, ...: blocks of size1 bytes, one after the other     */
-    sp_view view;       /* limit mode: level L's patch as a subd_mesh (arrays only) for
+    union {             /* one mode's or the other's (the run state has room for one)     */
+        sp_view view;   /* limit mode: level L's patch as a subd_mesh (arrays only) for
                          * loop_limit.c's masks                                             */
+        uint32_t offw[A_N]; /* plain mode from 3 levels: the window's arrays, inside level
+                             * L-2's block (loop_stream.c's window_layout)                 */
+    } m;
     uint16_t *smap, *fmap; /* one extraction's slot map and child-face map                */
     uint8_t *tile;         /* the region of the regular tiles' blocks (loop_tile.h), when
                             * tdepth >= 2: it shares memory with the levels from tk on    */
@@ -100,9 +104,21 @@ SUBD_STREAM_STATE_FITS(sp_state);
  * or the sink's value. The centre's four children at the last level (one level in all), from
  * p's cache. */
 int subd_ls_emit_children(const sp_run *r, const sp_level *p);
+/* What a window's four children share when they go out in one step (the push form): the
+ * level-L vertex points of the new vertices m0..m2 of the window's parent centre's edges
+ * (mve: each a corner of two corner children and of the middle child; have: bit i, mve[i]
+ * made) and the points on the middle child's edges (evm, eh1, eh2 as emit_grandchildren's
+ * vm, h1, h2; its edge j = m_j -> m_j+1 is corner child j + 1's inner edge, reversed). */
+typedef struct sp_gcshare {
+    subd_real mve[3][3], evm[3][3], eh1[3][3], eh2[3][3];
+    uint32_t have;
+} sp_gcshare;
+
 /* The last two levels at once: the 16 level-L triangles of level L-2's centre (p), from its
- * cache and its topology. */
-int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, loop_wcache *wc, uint32_t *ovf);
+ * cache and its topology. sh: NULL, or a window's share, p's centre being the window's child
+ * c, whose points the children before it made are taken from sh (and its own put there). */
+int subd_ls_emit_grandchildren(const sp_run *r, const sp_level *p, sp_gcshare *sh, uint32_t c, loop_wcache *wc,
+                               uint32_t *ovf);
 /* Limit mode: the centre of level L's patch, its corners moved to the limit with their unit
  * normals (loop_limit.c's masks on lay's mesh view). */
 int subd_ls_emit_limit(const sp_run *r, const sp_level *p, const sp_layout *lay, lim_cache *lc, uint32_t *ovf);

@@ -248,7 +248,18 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     (SUBD_LOOP_TD_(L, lim) ? ((L) > SUBD_LOOP_TD_(L, lim) ? (L) - SUBD_LOOP_TD_(L, lim) - 1u : 0u) : SUBD_LOOP_SCACHED_(L, lim))
 #define SUBD_LOOP_SDEEP_(L, N, lim) \
     ((SUBD_LOOP_SCACHED_(L, lim) - SUBD_LOOP_STK_(L, lim)) * SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) + \
-     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u))
+     ((lim) ? SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 0u, 0u) + SUBD_LOOP_SVIEW_(SUBD_LOOP_SN_(N) + 12u) : 0u) + \
+     SUBD_LOOP_SWX_(L, N, lim))
+/* plain mode from 3 levels on: the window of level L-3's patch (corner valences up to 3N at
+ * level 0, N + 12 below) at level L-2's block, by what it exceeds the block */
+#define SUBD_LOOP_SWIN_(S) \
+    (SUBD_LOOP_SA_(12u * (S)) + SUBD_LOOP_SA_(S) + SUBD_LOOP_SA_(2u * (S)) + 3u * SUBD_LOOP_SA_(6u * ((S) + 4u)) + \
+     SUBD_LOOP_SA_(3u * ((S) + 4u)) + SUBD_LOOP_SA_(12u * ((S) + 24u)) + SUBD_LOOP_SA_((S) + 24u))
+#define SUBD_LOOP_SWS_(L, N) ((uint32_t)(L) == 3u ? 3u * SUBD_LOOP_SN_(N) : SUBD_LOOP_SN_(N) + 12u)
+#define SUBD_LOOP_SWX_(L, N, lim) \
+    (!(lim) && (uint32_t)(L) >= 3u && SUBD_LOOP_SWIN_(SUBD_LOOP_SWS_(L, N)) > SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) \
+         ? SUBD_LOOP_SWIN_(SUBD_LOOP_SWS_(L, N)) - SUBD_LOOP_SLEV_(SUBD_LOOP_SN_(N) + 12u, 1u, 0u) \
+         : 0u)
 /* limit mode's masks: the limit masks' per-valence caches and the valence-6 masks */
 #define SUBD_LOOP_SMASK_ 352u
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of

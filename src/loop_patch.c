@@ -9,11 +9,12 @@
 #include "layout.h"
 #include "mesh_internal.h"
 
-/* A level's arrays for corner valence sum s; `cache`: with the refined values; `control`:
- * with the input face and vertex of each local element. SUBD_LOOP_SLEV_ is the same sum. */
-uint32_t subd_lp_level_layout(uint32_t s, int cache, int control, uint32_t off[A_N])
+/* A block of nv vertices, nf faces and nc cached values (offsets into it; returns its
+ * bytes); `cache`: with the refined values; `control`: with the input face and vertex of each
+ * local element. */
+static uint32_t block_layout(uint32_t nv, uint32_t nf, uint32_t nc, int cache, int control, uint32_t off[A_N])
 {
-    uint32_t t = 0, nv = cap_v(s), nf = cap_f(s);
+    uint32_t t = 0;
     off[A_POS] = t;   subd_size_add(&t, nv, 3u * (uint32_t)sizeof(subd_real));
     off[A_VFLAG] = t; subd_size_add(&t, nv, 1u);
     off[A_VOUT] = t;  subd_size_add(&t, nv, 2u);
@@ -21,11 +22,28 @@ uint32_t subd_lp_level_layout(uint32_t s, int cache, int control, uint32_t off[A
     off[A_TW] = t;    subd_size_add(&t, nf, 6u);
     off[A_SLOT] = t;  subd_size_add(&t, nf, 6u);
     off[A_SH] = t;    subd_size_add(&t, nf, 3u);
-    off[A_CPOS] = t;  if (cache) subd_size_add(&t, s, 3u * (uint32_t)sizeof(subd_real));
-    off[A_CFLAG] = t; if (cache) subd_size_add(&t, s, 1u);
+    off[A_CPOS] = t;  if (cache) subd_size_add(&t, nc, 3u * (uint32_t)sizeof(subd_real));
+    off[A_CFLAG] = t; if (cache) subd_size_add(&t, nc, 1u);
     off[A_CFACE] = t; if (control) subd_size_add(&t, nf, 4u);
     off[A_CVERT] = t; if (control) subd_size_add(&t, nv, 4u);
     return t;
+}
+
+/* A level's arrays for corner valence sum s. SUBD_LOOP_SLEV_ is the same sum. */
+uint32_t subd_lp_level_layout(uint32_t s, int cache, int control, uint32_t off[A_N])
+{
+    return block_layout(cap_v(s), cap_f(s), s, cache, control, off);
+}
+
+/* The window of a patch whose corner valences sum to s: its vertices are cached values of the
+ * patch (at most s); its faces the children at the patch's corners (one per face around a
+ * corner: at most s) and the middle children of the centre and its three edge neighbours; its
+ * cached values the six region vertices' points and the edges at them (the corners' children
+ * keep the corners' valences, the new vertices have valence 6 at most: s + 18). SUBD_LOOP_SWIN_
+ * is the same sum. */
+uint32_t subd_lp_window_layout(uint32_t s, uint32_t off[A_N])
+{
+    return block_layout(s, s + 4u, s + 24u, 1, 0, off);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -145,6 +163,7 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
     p->h->nf = nf;
     p->h->cf = find_face(p, nf, f);
     p->h->child = 0;
+    p->h->nr = 3;
     p->h->ca[0] = 0; p->h->cb[0] = 0;
     p->h->ca[1] = n1; p->h->cb[1] = 0;
     p->h->ca[2] = 0; p->h->cb[2] = n1;
@@ -311,14 +330,15 @@ static void edge_point(const sp_level *p, uint32_t hl, subd_loop_boundary rule, 
                              p->vflag[b] & TOPO_PF_REGULAR, ovf);
 }
 
-/* Fills the cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
- * (`all`), or only the centre's three edges (the last level, which emits the centre's
- * children and refines nothing further). */
+/* Fills the cache: slots 0..nr-1 the region vertices' vertex points (the centre's corners, or
+ * a window's six), then one slot per edge at a region vertex (`all`), or only the centre's
+ * three edges (the last level, which emits the centre's children and refines nothing
+ * further). */
 void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf)
 {
-    uint32_t h, v, nc = 3u, n3 = 3u * p->h->nf;
+    uint32_t h, v, nr = p->h->nr, nc = nr, n3 = 3u * p->h->nf;
     for (h = 0; h < n3; h++) p->slot[h] = LP_NO_SLOT;
-    for (v = 0; v < 3u; v++) subd_lp_vertex_point(p, v, 0, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
+    for (v = 0; v < nr; v++) subd_lp_vertex_point(p, v, 0, wc, ovf, p->cpos + 3u * v, &p->cflag[v]);
     if (!all) {
         for (v = 0; v < 3u; v++) {
             h = 3u * p->h->cf + v;
@@ -334,10 +354,10 @@ void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loo
     for (h = 0; h < n3; h += 3u) {
         const uint16_t *fc = p->cv + h;
         uint32_t j;
-        if (fc[0] >= 3u && fc[1] >= 3u && fc[2] >= 3u) continue; /* no edge at a corner */
+        if (fc[0] >= nr && fc[1] >= nr && fc[2] >= nr) continue; /* no edge at a region vertex */
         for (j = 0; j < 3u; j++) {
             uint32_t j1 = j == 2u ? 0u : j + 1u, hj = h + j, t, hl;
-            if (p->slot[hj] != LP_NO_SLOT || (fc[j] >= 3u && fc[j1] >= 3u)) continue;
+            if (p->slot[hj] != LP_NO_SLOT || (fc[j] >= nr && fc[j1] >= nr)) continue;
             t = p->tw[hj];
             hl = lower_of(p, hj);
             p->slot[hj] = (uint16_t)nc;
@@ -451,6 +471,49 @@ static uint32_t parent_faces(const sp_level *p, uint32_t c, uint16_t *cand)
 
 static const uint8_t child_pts[4][3] = TOPO_LOOP_CHILD_POINTS; /* 0..2 corners, 3 + i: m_i */
 
+/* Twins and sharp bits of the nf children taken (taken[i] = 4 * parent face + child, their
+ * local faces in fmap): loop.c's refine_level, mapped to the child level's faces. */
+static void child_twins(const sp_level *p, const sp_level *q, const uint16_t *fmap, const uint16_t *taken, uint32_t nf)
+{
+    uint32_t ci, pf, k, j;
+    for (ci = 0; ci < nf; ci++) {
+            uint32_t l = 3u * ci;
+            pf = taken[ci] / 4u;
+            k = taken[ci] % 4u;
+            if (k == 3u) {
+                for (j = 0; j < 3u; j++) {
+                    q->tw[l + j] = map_cc(fmap, pf, (j + 1u) % 3u, 1u);
+                    q->sh[l + j] = 0;
+                }
+            } else {
+                uint32_t h0 = 3u * pf + k, h2 = 3u * pf + (k + 2u) % 3u;
+                q->tw[l] = outer_twin(fmap, p->tw[h0], 1);
+                q->tw[l + 1u] = map_cc(fmap, pf, 3u, (k + 2u) % 3u);
+                q->tw[l + 2u] = outer_twin(fmap, p->tw[h2], 0);
+                q->sh[l] = (p->sh[h0] & LP_SH_CHILD) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
+                q->sh[l + 1u] = 0;
+                q->sh[l + 2u] = (p->sh[h2] & LP_SH_CHILD) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
+            }
+    }
+}
+
+/* Lattice coordinates of child c's corners: a corner stays, a new vertex is the midpoint of
+ * edge i. */
+void subd_lp_child_lattice(const sp_head *ph, uint32_t c, uint32_t ca[3], uint32_t cb[3])
+{
+    uint32_t j;
+    for (j = 0; j < 3u; j++) {
+        uint32_t i = (c == 3u) ? j : (j == 1u) ? c : (c + 2u) % 3u, i1 = (i + 1u) % 3u;
+        if (c < 3u && j == 0u) {
+            ca[0] = ph->ca[c];
+            cb[0] = ph->cb[c];
+        } else {
+            ca[j] = (ph->ca[i] + ph->ca[i1]) / 2u;
+            cb[j] = (ph->cb[i] + ph->cb[i1]) / 2u;
+        }
+    }
+}
+
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds LP_NO_SLOT on entry
  * and on return (only the entries set here are reset); q's slot array, which fill_cache
  * rewrites afterwards, holds the parent faces and the list of children taken meanwhile. */
@@ -509,43 +572,78 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
             nf++;
         }
     }
-    /* twins and sharp bits (loop.c's refine_level, mapped to the child's faces) */
-    for (ci = 0; ci < nf; ci++) {
-            uint32_t l = 3u * ci;
-            pf = taken[ci] / 4u;
-            k = taken[ci] % 4u;
-            if (k == 3u) {
-                for (j = 0; j < 3u; j++) {
-                    q->tw[l + j] = map_cc(fmap, pf, (j + 1u) % 3u, 1u);
-                    q->sh[l + j] = 0;
-                }
-            } else {
-                uint32_t h0 = 3u * pf + k, h2 = 3u * pf + (k + 2u) % 3u;
-                q->tw[l] = outer_twin(fmap, p->tw[h0], 1);
-                q->tw[l + 1u] = map_cc(fmap, pf, 3u, (k + 2u) % 3u);
-                q->tw[l + 2u] = outer_twin(fmap, p->tw[h2], 0);
-                q->sh[l] = (p->sh[h0] & LP_SH_CHILD) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
-                q->sh[l + 1u] = 0;
-                q->sh[l + 2u] = (p->sh[h2] & LP_SH_CHILD) ? (uint8_t)(LP_SH_RULE | LP_SH_CHILD) : (uint8_t)0u;
-            }
-    }
+    child_twins(p, q, fmap, taken, nf);
     for (j = 0; j < 3u; j++) q->vout[j] = child_vout(p, fmap, s[j], e[j]);
     q->h->nv = nv;
     q->h->nf = nf;
     q->h->cf = fmap[4u * cf + c];
     for (ci = 0; ci < nf; ci++) fmap[taken[ci]] = LP_NO_SLOT;
     q->h->child = 0;
-    /* lattice coordinates: a corner stays, a new vertex is the midpoint of edge i */
-    for (j = 0; j < 3u; j++) {
-        uint32_t i = (c == 3u) ? j : (j == 1u) ? c : (c + 2u) % 3u, i1 = (i + 1u) % 3u;
-        if (c < 3u && j == 0u) {
-            q->h->ca[0] = ph->ca[c];
-            q->h->cb[0] = ph->cb[c];
-        } else {
-            q->h->ca[j] = (ph->ca[i] + ph->ca[i1]) / 2u;
-            q->h->cb[j] = (ph->cb[i] + ph->cb[i1]) / 2u;
+    q->h->nr = 3;
+    subd_lp_child_lattice(ph, c, q->h->ca, q->h->cb);
+}
+
+/* The window (loop_patch.h): the children of p's faces that have a corner among the region
+ * vertices (the centre's corners' children and its edges' new vertices), in face order, so
+ * sorted as subd_loop's level is. A child k < 3 of a face holds the face's corner k and the
+ * new vertices of the two edges at it, so it is taken exactly when that corner is a centre
+ * corner (a centre edge's new vertex lies on an edge at a centre corner); the middle child
+ * when one of the face's edges is a centre edge. Every face around a region vertex is taken,
+ * so each region vertex's ring is whole; every vertex taken is a cached value of p. */
+void subd_lp_extract_window(const sp_level *p, const sp_level *q, uint16_t *smap, uint16_t *fmap)
+{
+    const sp_head *ph = p->h;
+    uint32_t cf = ph->cf, pf, k, j, nv, nf = 0, ci, nfp = ph->nf;
+    uint16_t *taken = q->slot; /* the children taken (fill_cache rewrites the slots) */
+    for (j = 0; j < ph->nc; j++) smap[j] = LP_NO_SLOT;
+    /* the region vertices 0..5: the corners' children, then the centre edges' new vertices */
+    for (j = 0; j < 6u; j++) {
+        uint32_t sl = j < 3u ? j : p->slot[3u * cf + j - 3u];
+        smap[sl] = (uint16_t)j;
+        q->pos[3u * j] = p->cpos[3u * sl];
+        q->pos[3u * j + 1u] = p->cpos[3u * sl + 1u];
+        q->pos[3u * j + 2u] = p->cpos[3u * sl + 2u];
+        q->vflag[j] = p->cflag[sl];
+    }
+    nv = 6;
+    for (pf = 0; pf < nfp; pf++) {
+        const uint16_t *fc = p->cv + 3u * pf;
+        uint32_t fp[6], mask = 0;
+        if (fc[0] >= 3u && fc[1] >= 3u && fc[2] >= 3u) continue; /* no corner of the centre */
+        face_points(p, pf, fp);
+        for (j = 0; j < 3u; j++) {
+            if (fc[j] < 3u) mask |= 1u << j;
+            if (fp[3u + j] != LP_NO_SLOT && smap[fp[3u + j]] < 6u) mask |= 8u; /* a centre edge */
+        }
+        for (k = 0; mask != 0u; k++, mask >>= 1) {
+            if (!(mask & 1u)) continue;
+            fmap[4u * pf + k] = (uint16_t)nf;
+            taken[nf] = (uint16_t)(4u * pf + k);
+            for (j = 0; j < 3u; j++) {
+                uint32_t sl = fp[child_pts[k][j]];
+                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see face_points */
+                    smap[sl] = (uint16_t)nv;
+                    q->pos[3u * nv] = p->cpos[3u * sl];
+                    q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
+                    q->pos[3u * nv + 2u] = p->cpos[3u * sl + 2u];
+                    q->vflag[nv] = p->cflag[sl];
+                    nv++;
+                }
+                q->cv[3u * nf + j] = smap[sl];
+            }
+            nf++;
         }
     }
+    child_twins(p, q, fmap, taken, nf);
+    for (j = 0; j < 3u; j++) {
+        q->vout[j] = child_vout(p, fmap, j, 0u);
+        q->vout[3u + j] = child_vout(p, fmap, p->slot[3u * cf + j], 3u * cf + j);
+    }
+    q->h->nv = nv;
+    q->h->nf = nf;
+    q->h->nr = 6;
+    q->h->child = q->h->cf = fmap[4u * cf]; /* the centre's four children follow it */
+    for (ci = 0; ci < nf; ci++) fmap[taken[ci]] = LP_NO_SLOT;
 }
 
 /* ------------------------------------------------------------------------------------ */

@@ -29,7 +29,8 @@ typedef struct sp_head {
     uint32_t cf;         /* the centre face (its corners are local vertices 0, 1, 2)     */
     uint32_t child;      /* next child of the centre to visit                            */
     uint32_t ca[3], cb[3]; /* lattice coordinates of the centre's corners (units 1/2^L)   */
-    uint32_t pad;
+    uint32_t nr;         /* region vertices: local 0..nr-1, whose vertex points the cache
+                          * holds at slots 0..nr-1 (3: the centre's corners; a window: 6)   */
 } sp_head;
 
 enum { A_POS, A_VFLAG, A_VOUT, A_CV, A_TW, A_SLOT, A_SH, A_CPOS, A_CFLAG, A_CFACE, A_CVERT, A_N };
@@ -77,13 +78,27 @@ void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *
  * topo_ring. */
 uint32_t subd_lp_ring(const sp_level *p, uint32_t v, uint32_t *nbr, uint32_t *he, uint32_t max);
 
-/* The cache: slots 0..2 the corners' vertex points, then one slot per edge at a corner
- * (`all`), or only the centre's three edges. */
+/* The cache: slots 0..nr-1 the region vertices' vertex points (nr = 3: the centre's
+ * corners), then one slot per edge at a region vertex (`all`), or only the centre's three
+ * edges. */
 void subd_lp_fill_cache(const sp_level *p, subd_loop_boundary rule, int all, loop_wcache *wc, uint32_t *ovf);
 
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre; smap (one entry per cached
  * value) is scratch, fmap (4 per parent face) holds LP_NO_SLOT on entry and on return. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap);
+/* Lattice coordinates of child c's corners (units 1/2^L) from its parent's header ph. */
+void subd_lp_child_lattice(const sp_head *ph, uint32_t c, uint32_t ca[3], uint32_t cb[3]);
+
+/* The window: level k+1 (q) = the union of the 1-rings of all four children of level k's (p)
+ * centre, each vertex once (the children's corners are its region vertices 0..5: the
+ * centre's corners' children 0..2, then the new vertices of the centre's edges 0..2), its
+ * faces sorted as a patch's, so the four children are consecutive faces from q->h->child
+ * on (a window's `child` field); after subd_lp_fill_cache(q, all) a two-level emitter runs on
+ * each child in turn (q->h->cf and ca, cb set to the child's), so the four share their
+ * values. Its block: subd_lp_window_layout, for p's corner valence sum s (faces, vertices
+ * and cached values); smap and fmap as subd_lp_extract_child's. */
+uint32_t subd_lp_window_layout(uint32_t s, uint32_t off[A_N]);
+void subd_lp_extract_window(const sp_level *p, const sp_level *q, uint16_t *smap, uint16_t *fmap);
 /* ------------------------------------------------------------------------------------ */
 /* The Loop streams' shared pieces (loop_stream.c, loop_adapt.c): limit mode's mesh view,   */
 /* the closed-form vertex ids, the input's largest valence.                                */

@@ -6,11 +6,14 @@
  * (checked both ways: one id per vertex, one vertex per id) and follow the documented closed
  * form for control vertices. Plus: the plan depends on levels and valence only and equals
  * SUBD_LOOP_STREAM_BYTES; every smaller arena fails with SUBD_ERR_NOMEM before anything is
- * emitted; a sink that stops after k triangles gets k and its status back. The regular tiles
+ * emitted; a sink that stops after k triangles gets k and its status back; the windows (the
+ * last three levels of the patches the tiles refuse) are made where the tile counts leave
+ * them, and their triangles pulled in odd batches equal subd_loop's. The regular tiles
  * (lattice refinement next to the general path) are test_loop_tiles.c's; the comparison both
  * use is loop_cmp.c's. */
 #include "harness.h"
 #include "loop_cmp.h"
+#include "../src/loop_stream_internal.h"
 
 static void stream_equals_loop(void)
 {
@@ -310,6 +313,90 @@ static void stream_irregular(void)
     (void)hash;
 }
 
+/* The windows (loop_stream.c: from 3 levels on, a patch of level L-3 the tiles refuse makes
+ * its last three levels from the union of its children's 1-rings): each control face is a
+ * tile of depth L or refined, each level-k patch below it (k <= L-3) a tile of depth L - k or
+ * refined, and each refined level L-3 patch one window, so the pull form's window count must
+ * be what the tile counts leave (and not zero: every shape here has irregular vertices). On
+ * the host the pulled triangles (batches of 7, so a batch ends inside a window's children)
+ * are compared with subd_loop's output, which the device's test arena cannot hold. Shapes:
+ * the irregular disk (boundary, valences 4-8), the creased cube (creases, corners), the
+ * creased grid (boundary with creases) and the valence-64 fan (a level-0 window with a large
+ * corner). */
+static void stream_windows(void)
+{
+    int sh;
+    uint32_t levels, made = 0, fails = 0;
+    static const int shapes[] = {-1, S_CUBE_CREASE, S_GRID_CREASE, S_FAN64};
+    for (sh = 0; sh < 4; sh++)
+        for (levels = 3; levels <= (H_HOST ? 5u : 3u); levels++) {
+            subd_arena a;
+            subd_mesh in;
+            subd_loop_opts o;
+            subd_stream h;
+            subd_diag d;
+            static subd_tri buf[7]; /* static: off the device's stack */
+            uint32_t n = 0, rem, k, w = 0, cmp = 0;
+            int r;
+#if H_HOST
+            subd_mesh ref;
+            subd_loop_sink sink;
+            cmp_sink cs;
+            uint64_t *v2id = 0;
+#endif
+            subd_diag_clear(&d);
+            subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+            if (shapes[sh] < 0 ? !lc_load_file(&a, "test/data/nefertiti_patch.obj", &in) : !lc_make_shape(shapes[sh], &a, &in))
+                return;
+            o.levels = levels;
+            o.boundary = (levels & 1u) ? SUBD_LOOP_BOUNDARY_PAPER : SUBD_LOOP_BOUNDARY_BSPLINE;
+            o.flags = 0;
+#if H_HOST
+            if (levels <= 4u) { /* subd_loop's level 5 of the fan is more than the comparison needs */
+                if (!CHECK_OK(subd_loop(&a, &in, &o, &ref, &d), &d)) return;
+                v2id = (uint64_t *)subd_arena_alloc(&a, ref.num_verts * 8u);
+                if (!CHECK(v2id != 0)) return;
+                lc_sink_init(&cs, &sink, &ref, v2id, 0, 0);
+                cmp = 1;
+            }
+#endif
+            if (!CHECK_OK(subd_loop_stream_begin(&a, &in, &o, &h, &d), &d)) return;
+            while ((r = subd_stream_next_tris(&h, buf, 7u)) > 0) {
+#if H_HOST
+                if (cmp)
+                    for (k = 0; k < (uint32_t)r; k++) (void)lc_cmp_tri(&cs, &buf[k]);
+#endif
+                n += (uint32_t)r;
+                if (n == in.num_faces << (2u * levels)) w = subd_ls_stream_windows(&h); /* before the end */
+            }
+            CHECK_EQ(r, 0);
+            CHECK_EQ(n, in.num_faces << (2u * levels));
+            /* the patches the tiles leave at level L-3 (tiles of depth L - k at level k) */
+            rem = in.num_faces;
+            for (k = 0; k + 3u <= levels; k++) {
+                rem -= subd_lt_stream_count(&h, levels - k);
+                if (k + 3u < levels) rem *= 4u;
+            }
+            subd_stream_end(&h);
+            if (w != rem) fails++;
+            if (w == 0u) fails++;
+            made += w;
+#if H_HOST
+            if (cmp) {
+                CHECK_EQ(cs.j, ref.num_faces);
+                CHECK_EQ(cs.bad_pos, 0);
+                CHECK_EQ(cs.bad_id, 0);
+            }
+#else
+            (void)cmp;
+#endif
+        }
+    CHECK_EQ(fails, 0);
+    h_str("  windows made ");
+    h_u32(made);
+    h_nl();
+}
+
 const test_case suite_loop_stream[] = {
     {"stream_equals_loop", stream_equals_loop},
     {"stream_hashes", stream_hashes},
@@ -319,5 +406,6 @@ const test_case suite_loop_stream[] = {
     {"stream_errors", stream_errors},
     {"stream_range", stream_range},
     {"stream_irregular", stream_irregular},
+    {"stream_windows", stream_windows},
     {0, 0},
 };

@@ -46,12 +46,12 @@
 /* Levels the Loop stream refines breadth first in one regular tile (src/loop_tile.c): 2..5,
  * or 0 for none; SUBD_LOOP_TILE_LEVELS_LIMIT likewise for limit mode (whose tile also holds
  * limit positions and normals). More levels spread a patch's cost over more triangles
- * (4^levels per tile: Cortex-M4F, level 6, 387 instructions per triangle at 4, 310 at 5;
- * limit mode 613 at 4, 509 at 5) and take more arena (the tile's block, 2.3 KB at 4 and
- * 6.6 KB at 5; limit mode 3.6 KB at 4 and 7.3 KB at 5, whose last level is made by a
- * quarter's children: loop_tile.h's lt_split), which shares memory with the levels below
- * the tile's (SUBD_LOOP_STREAM_BYTES). The defaults keep the plans within 16 KiB at 8
- * levels and valence 16. */
+ * (4^levels per tile: Cortex-M4F, level 6 of the demo's sphere, counting sink, 269
+ * instructions per triangle at 4, 171 at 5; limit mode 572 at 4, 460 at 5) and take more
+ * arena (the tile's block, 2.3 KB at 4 and 6.6 KB at 5; limit mode 3.6 KB at 4 and 7.3 KB
+ * at 5, whose last level is made by a quarter's children: loop_tile.h's lt_split), which
+ * shares memory with the levels below the tile's (SUBD_LOOP_STREAM_BYTES). The defaults
+ * keep the plans within 16 KiB at 8 levels and valence 16. */
 #ifndef SUBD_LOOP_TILE_LEVELS
 #define SUBD_LOOP_TILE_LEVELS 5
 #endif

@@ -45,7 +45,13 @@
  * its limit points a sixteenth (a quarter's child) at a time, so that those records, their
  * normals and the emission table are a depth-4 quarter's and the plan stays within 16 KiB at
  * 8 levels and valence 16 (a vertex's limit point depends on its quarter coordinates alone:
- * the sixteenths give the quarter's bits). */
+ * the sixteenths give the quarter's bits).
+ *
+ * Length: about 750 lines, over the usual 700: the grid's refinement, its per-level
+ * rotations, lower sides and ring starts, the limit pieces and the ids all walk the same
+ * lattice with the same static helpers (lt_vi, lt_bound, the frames); the ids
+ * (subd_lt_ids and its helpers, about 120 lines, needing only lt_bound) are the part to
+ * move to a file of their own when this one grows again. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h" /* subd_bytes_add, subd_bytes_max */
 #include "loop_tile.h"

@@ -93,10 +93,22 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
  * relative to the tile face's corner 0), for the ids. */
 void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
                      int32_t e2[2]);
+/* Bounds of x from c x + d >= 0 (c in -1, 0, 1) narrowing [*a, *b] (empty: *b < *a); the
+ * rows of a lattice region (loop_tile.c) and of a piece's ids (loop_tile_ids.c). */
+static inline void lt_bound(int32_t c, int32_t d, int32_t *a, int32_t *b)
+{
+    if (c > 0) {
+        if (-d > *a) *a = -d;
+    } else if (c < 0) {
+        if (d < *b) *b = d;
+    } else if (d < 0) {
+        *b = *a - 1;
+    }
+}
 /* The ids of piece c's vertices into q (frame org, e1, e2 from subd_lt_quarter) of the
  * tile in control face f whose face has lattice corners (ca[k], cb[k]) at level lv (units
  * 1/2^lv, loop_patch.h's sp_head): a point inside the control face by subd_lp_vertex_id's
- * closed form, stepped along each row, the others by subd_lp_vertex_id. */
+ * closed form, stepped along each row, the others by subd_lp_vertex_id (loop_tile_ids.c). */
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2]);
 /* Tiles of depth t (2..5) a running Loop stream h (subd_loop_stream_begin) has made so far:

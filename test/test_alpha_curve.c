@@ -830,7 +830,11 @@ static void alpha_curve_errors(void)
      * = -0.62 gives w = 1/(2 + 2 f_0) = 1.31 */
     opts(&o, 2, 3, SUBD_ALPHA_COS, 3, 5);
     o.stiffness = h_int(2);
-    g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
+#if SUBD_FIXED /* not a ternary: 3e38f has no Q16.16 value (clang -Wliteral-conversion) */
+    g_in[0] = h_int(30000);
+#else
+    g_in[0] = 3e38f;
+#endif
     CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_RANGE);
 #if !SUBD_FIXED
     {
@@ -986,7 +990,11 @@ static void alpha_divergent(void)
     rand_poly(5);
     opts(&o, 2, 1, SUBD_ALPHA_COS, 3, 5);
     o.stiffness = h_int(2);
-    g_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
+#if SUBD_FIXED /* not a ternary: 3e38f has no Q16.16 value (clang -Wliteral-conversion) */
+    g_in[0] = h_int(30000);
+#else
+    g_in[0] = 3e38f;
+#endif
     CHECK_FAIL(subd_alpha_curve(&a, g_in, 5, 1, &o, &out, &d), &d, SUBD_ERR_RANGE);
     CHECK_EQ(subd_arena_mark(&a), 0);
 }

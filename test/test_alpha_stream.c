@@ -591,7 +591,11 @@ static void astream_errors(void)
     as_same_error(5, 1, &o, SUBD_ERR_PARAM);
     as_opts(&o, 2, 3, SUBD_ALPHA_COS, 3, 5);
     o.stiffness = h_int(2);
-    s_in[0] = SUBD_FIXED ? h_int(30000) : 3e38f;
+#if SUBD_FIXED /* not a ternary: 3e38f has no Q16.16 value (clang -Wliteral-conversion) */
+    s_in[0] = h_int(30000);
+#else
+    s_in[0] = 3e38f;
+#endif
     as_same_error(5, 1, &o, SUBD_ERR_RANGE);
 #if SUBD_FIXED
     /* a wide input with f_n >= 0 that still fits: no failure, the dry run passes */

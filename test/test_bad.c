@@ -80,8 +80,9 @@ static void bad_corpus(void)
         h_guard_fill(h_arena_buf + H_ARENA_BYTES - 64u, 64);
         st = is_off ? subd_off_read(&a, f->data, f->len, &m, &d) : subd_obj_read(&a, f->data, f->len, &m, &d);
         for (j = 0; j < sizeof m; j++) same &= (pm[j] == 0x3c);
-        if (!CHECK_EQ(st, status) | !CHECK_EQ(d.line, line) | !CHECK_EQ(subd_arena_mark(&a), 24) | !CHECK(same) |
-            !CHECK(h_guard_ok(h_arena_buf + H_ARENA_BYTES - 64u, 64))) {
+        /* every check runs (a sum, not ||: each reports its own failure) */
+        if ((!CHECK_EQ(st, status)) + (!CHECK_EQ(d.line, line)) + (!CHECK_EQ(subd_arena_mark(&a), 24)) + (!CHECK(same)) +
+            (!CHECK(h_guard_ok(h_arena_buf + H_ARENA_BYTES - 64u, 64)))) {
             h_str("    in ");
             h_str(path);
             h_nl();

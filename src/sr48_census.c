@@ -28,7 +28,10 @@
  * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
  * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
  * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,
- * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). */
+ * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). The
+ * fan's words are no longer read (each fan is merged as it is walked, 0.6.0) but still taken,
+ * so that subd_sr48_base_plan stays as published; dropping them lowers that plan where the
+ * census is its peak. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 #include "layout.h"
@@ -38,7 +41,7 @@
 
 typedef struct s48n_work {
     const subd_sr48 *b;
-    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan */
+    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan (unread: see above) */
     uint32_t run;
 } s48n_work;
 

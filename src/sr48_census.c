@@ -28,7 +28,10 @@
  * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
  * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
  * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,
- * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). */
+ * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). The
+ * fan's words are no longer read (each fan is merged as it is walked, 0.6.0) but still taken,
+ * so that subd_sr48_base_plan stays as published; dropping them lowers that plan where the
+ * census is its peak. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 #include "layout.h"
@@ -38,7 +41,7 @@
 
 typedef struct s48n_work {
     const subd_sr48 *b;
-    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan */
+    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan (unread: see above) */
     uint32_t run;
 } s48n_work;
 
@@ -63,15 +66,36 @@ uint32_t subd_s48_census_bytes_(uint32_t nv0, uint32_t nt0)
     return bytes;
 }
 
+/* Triangle tt into the gathering tagged tag (once), its corners not reached yet into the
+ * queue at distance dist + 1, found in tt. */
+static inline void s48n_merge(s48n_work *w, uint32_t tt, uint32_t tag, uint32_t dist, uint32_t *nt, uint32_t *nv)
+{
+    const uint32_t *v = w->b->tri_vert + 3u * tt;
+    uint32_t j;
+    if (w->ts[tt] == tag) return;
+    w->ts[tt] = tag;
+    ++*nt;
+    for (j = 0; j < 3u; j++) {
+        const uint32_t vx = v[j];
+        if ((w->vs[vx] & ~3u) == tag) continue;
+        w->vs[vx] = tag + dist + 1u;
+        w->qv[*nv] = vx;
+        w->qt[(*nv)++] = tt;
+    }
+}
+
 /* One gathering as subd_s48_build0_ does it, from the triangles p0..p1 of the base: the
  * largest nt + fan size and the vertex count, into *need_t, *need_v (maxima); its triangle
- * count and largest fan into *nt_out, *nf_out (the bound of subd_s48_census_run_). */
+ * count and largest fan into *nt_out, *nf_out (the bound of subd_s48_census_run_). Each fan
+ * is walked as subd_s48_fan_ walks it (sr48_stream_internal.h's steps, the same triangles in
+ * the same order) and merged as it is walked: nt + fan size is taken with nt before the fan,
+ * as the window reads a whole fan before merging it. */
 static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t, uint32_t *need_v, uint32_t *nt_out,
                         uint32_t *nf_out)
 {
     const subd_sr48 *b = w->b;
     const uint32_t cap = b->level_tri[1] + 1u;
-    uint32_t nt = 0, nv = 0, p, j, q, f, mf = 0;
+    uint32_t nt = 0, nv = 0, p, j, q, mf = 0;
     const uint32_t tag = 4u * ++w->run; /* stamp = tag + distance (< 4) */
     for (p = p0; p <= p1; p++)
         for (j = 0; j < 3u; j++) {
@@ -82,26 +106,29 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
             w->qt[nv++] = p;
         }
     for (q = 0; q < nv; q++) {
-        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u;
-        uint32_t nf;
+        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u, t = w->qt[q], nt0 = nt;
+        uint32_t nf = 1, dir;
         if (dist >= S48N_RINGS) continue;
-        nf = subd_s48_fan_(b, x, w->qt[q], w->fan, cap);
-        if (nf == UINT32_MAX) nf = cap; /* a broken fan: the stream's check refuses the base */
-        if (nt + nf > *need_t) *need_t = nt + nf;
-        if (nf > mf) mf = nf;
-        for (f = 0; f < nf && f < cap; f++) {
-            const uint32_t tt = w->fan[f];
-            if (w->ts[tt] == tag) continue;
-            w->ts[tt] = tag;
-            nt++;
-            for (j = 0; j < 3u; j++) {
-                const uint32_t vx = b->tri_vert[3u * tt + j];
-                if ((w->vs[vx] & ~3u) == tag) continue;
-                w->vs[vx] = tag + dist + 1u;
-                w->qv[nv] = vx;
-                w->qt[nv++] = tt;
+        s48n_merge(w, t, tag, dist, &nt, &nv);
+        for (dir = 0; dir < 2u; dir++) {
+            uint32_t e, cur = t, i, around = 0, slot = subd_s48_fan_first_(b, x, t, dir, &e);
+            for (i = 0; i < cap; i++) {
+                const uint32_t nx = subd_s48_base_nbr_(b, cur, slot);
+                if (nx == SUBD_NONE) break;
+                if (nx == t) { /* around: interior vertex */
+                    around = 1;
+                    break;
+                }
+                s48n_merge(w, nx, tag, dist, &nt, &nv);
+                nf++;
+                cur = nx;
+                slot = subd_s48_fan_enter_(b, x, nx, &e);
             }
+            if (i == cap) nf = cap; /* a broken fan: the stream's check refuses the base */
+            if (around || i == cap) break;
         }
+        if (nt0 + nf > *need_t) *need_t = nt0 + nf;
+        if (nf > mf) mf = nf;
     }
     if (nv > *need_v) *need_v = nv;
     *nt_out = nt;

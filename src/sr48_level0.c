@@ -18,17 +18,9 @@
 /* ------------------------------------------------------------------------------------ */
 /* The base mesh                                                                          */
 
-/* Neighbour of level-0 triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c). */
-static inline uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot)
-{
-    uint32_t g;
-    if (slot == 0u) return b->tri_base_nb[t];
-    if ((t & 1u) == 0u && slot == 1u) return t + 1u;
-    if ((t & 1u) == 1u && slot == 2u) return t - 1u;
-    g = b->hyb_base_nb[t >> 1];
-    if (g == SUBD_NONE) return SUBD_NONE;
-    return (t & 1u) == 0u ? 2u * g + 1u : 2u * g;
-}
+/* Neighbour of level-0 triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c):
+ * the fan walk's (sr48_stream_internal.h). */
+static uint32_t s48_base_nbr(const subd_sr48 *b, uint32_t t, uint32_t slot) { return subd_s48_base_nbr_(b, t, slot); }
 
 /* The two ends of slot s of a triangle with vertices v = (c, a, b). */
 static void s48_slot_ends(const uint32_t *v, uint32_t s, uint32_t *p, uint32_t *q)
@@ -83,8 +75,6 @@ int subd_s48_base_check_(const subd_sr48 *b)
     return SUBD_OK;
 }
 
-static uint32_t s48_pos_of(const uint32_t *v, uint32_t x) { return v[0] == x ? 0u : v[1] == x ? 1u : 2u; }
-
 /* The two slots at corner position p: (c: 1, 2), (a: 1, 0), (b: 0, 2). */
 static uint32_t s48_slot_at(uint32_t p, uint32_t j)
 {
@@ -97,29 +87,18 @@ static uint32_t s48_slot_at(uint32_t p, uint32_t j)
  * UINT32_MAX beyond cap. Around an interior vertex it comes back to t; at a boundary vertex
  * it walks the other way from t too. lo: returns 0 as soon as a triangle below lo is met
  * (subd_s48_valence_ walks each fan whole only from its lowest triangle; 0: never).
- * One step: the edge entered by is (x, w), so the edge left by is the one at x opposite w
- * (slot 0 opposite c, 2 opposite a, 1 opposite b) and its other end the third corner, the
- * next w: one corner search per triangle (the walk is on the path of every level-0 window,
- * of the census and of the valence). */
+ * The steps (one corner search per triangle) are sr48_stream_internal.h's, shared with the
+ * census's walk (sr48_census.c), which visits the same triangles in the same order. */
 static uint32_t s48_fan_lo(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *out, uint32_t cap, uint32_t lo)
 {
-    static const uint8_t opp[3] = {0u, 2u, 1u};
-    const uint32_t *tv = b->tri_vert;
     uint32_t n = 0, dir, lim = b->level_tri[1] + 1u;
     if (out && cap) out[n] = t;
     n++;
     for (dir = 0; dir < 2u; dir++) {
-        uint32_t cur = t, p, q, slot, i, w;
-        {
-            uint32_t v[3];
-            s48_tri_verts(b, cur, v);
-            slot = s48_slot_at(s48_pos_of(v, x), dir);
-            s48_slot_ends(v, slot, &p, &q);
-            w = p == x ? q : p; /* the edge's other end */
-        }
+        uint32_t cur = t, slot, i, w;
+        slot = subd_s48_fan_first_(b, x, t, dir, &w);
         for (i = 0; i < lim; i++) {
-            const uint32_t nx = s48_base_nbr(b, cur, slot);
-            uint32_t u0, u1, u2;
+            const uint32_t nx = subd_s48_base_nbr_(b, cur, slot);
             if (nx == SUBD_NONE) break;
             if (nx == t) return n; /* around: interior vertex */
             if (nx < lo) return 0;
@@ -127,11 +106,7 @@ static uint32_t s48_fan_lo(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t 
             if (out) out[n] = nx;
             n++;
             cur = nx;
-            u0 = tv[3u * cur];
-            u1 = tv[3u * cur + 1u];
-            u2 = tv[3u * cur + 2u];
-            slot = opp[u0 == w ? 0u : u1 == w ? 1u : 2u]; /* leave by the other edge at x */
-            w = u0 + u1 + u2 - x - w;                      /* its other end (wraps back exactly) */
+            slot = subd_s48_fan_enter_(b, x, nx, &w); /* leave by the other edge at x */
         }
         if (i == lim) return UINT32_MAX;
     }
@@ -194,7 +169,7 @@ static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *ke
  * those of its corners not in it yet, at distance d; its corners' local indices into
  * lv[3 nt ..] (read back once the triangles are sorted). 0 when the vertex capacity is
  * exceeded. */
-static int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *hv, uint32_t vm, uint32_t tt, uint32_t *nt,
+static inline int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *hv, uint32_t vm, uint32_t tt, uint32_t *nt,
                       uint32_t *nv, uint32_t d, uint16_t *lv)
 {
     uint32_t j;

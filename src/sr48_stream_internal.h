@@ -309,6 +309,39 @@ static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v,
 extern uint32_t s48_dbg[40];
 #endif
 
+/* The base's fan walk (sr48_level0.c's walks and the census's, sr48_census.c; static inline:
+ * the innermost loop of every level-0 window and of the census): the neighbour of level-0
+ * triangle t across slot 0 (base), 1 (leg 0: c-a), 2 (leg 1: b-c); the first step from t
+ * (which holds x) around x in direction dir: the slot left by, *w the edge's other end (x's
+ * slots in walk order: c 1, 2; a 1, 0; b 0, 2); the step into triangle nx, entered by the
+ * edge (x, *w): nx is left by the edge at x opposite w (slot 0 opposite c, 2 opposite a, 1
+ * opposite b), its other end (the third corner) the next *w. */
+static inline uint32_t subd_s48_base_nbr_(const subd_sr48 *b, uint32_t t, uint32_t slot)
+{
+    uint32_t g;
+    if (slot == 0u) return b->tri_base_nb[t];
+    if ((t & 1u) == 0u && slot == 1u) return t + 1u;
+    if ((t & 1u) == 1u && slot == 2u) return t - 1u;
+    g = b->hyb_base_nb[t >> 1];
+    if (g == SUBD_NONE) return SUBD_NONE;
+    return (t & 1u) == 0u ? 2u * g + 1u : 2u * g;
+}
+static inline uint32_t subd_s48_fan_first_(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t dir, uint32_t *w)
+{
+    static const uint8_t sl[3][2] = {{1u, 2u}, {1u, 0u}, {0u, 2u}}, oe[3][2] = {{1u, 2u}, {0u, 2u}, {1u, 0u}};
+    const uint32_t *v = b->tri_vert + 3u * t, p = v[0] == x ? 0u : v[1] == x ? 1u : 2u;
+    *w = v[oe[p][dir]];
+    return sl[p][dir];
+}
+static inline uint32_t subd_s48_fan_enter_(const subd_sr48 *b, uint32_t x, uint32_t nx, uint32_t *w)
+{
+    static const uint8_t opp[3] = {0u, 2u, 1u};
+    const uint32_t *v = b->tri_vert + 3u * nx, u0 = v[0], u1 = v[1], u2 = v[2];
+    const uint32_t slot = opp[u0 == *w ? 0u : u1 == *w ? 1u : 2u];
+    *w = u0 + u1 + u2 - x - *w; /* unsigned: wraps back exactly */
+    return slot;
+}
+
 /* The base mesh (sr48_window.c): SUBD_OK when b is a usable subd_sr48_base, and the largest
  * number of triangles around a base vertex. */
 int subd_s48_base_check_(const subd_sr48 *b);

@@ -334,8 +334,8 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  * Memory: exactly subd_sr48_stream_plan's bytes, until the end (subd_stream_end). Stack
  *   (Cortex-M4F, gcc -O2 -fstack-usage): begin about 300 bytes; subd_stream_next_tris about
  *   640 (next 56 + step 248 + tile 40 + tile build 136 + refine and crop 160), uniform with
- *   checkpoints (max_level >= 11) about 670 (step + rebuild 136 + level 0's window 160 +
- *   fan walk 72), plus the caller's; the push form subd_sr48_stream about 820 (stream 120 +
+ *   checkpoints (max_level >= 11) about 680 (step + rebuild 136 + level 0's window 184 +
+ *   fan walk 56), plus the caller's; the push form subd_sr48_stream about 820 (stream 120 +
  *   run 120 + step + tile + tile build + refine and crop; with checkpoints about 860) plus
  *   the sink's.
  * Errors: those of subd_sr48_stream_plan, SUBD_ERR_NOMEM (bytes_needed = the plan; nothing

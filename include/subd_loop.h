@@ -209,8 +209,9 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
  * Per level k <= L-2 (limit mode: k <= L-1; k = 0: the control face's 1-ring, corners of
  * valence up to N; k >= 1: at most one corner above valence 6): positions, flags, ring
  * starts, corners, twins, sharp bits and the refined values of the level (the last two
- * levels are emitted from level L-2's); limit mode adds level L, a subd_mesh view of it and
- * the limit masks' caches;
+ * levels are emitted from level L-2's; plain mode from 3 levels: level L-2's block holds
+ * level L-3's window, the four children's 1-rings in one patch, SUBD_LOOP_SWX_ more); limit
+ * mode adds level L, a subd_mesh view of it and the limit masks' caches;
  * then the scratch of one extraction and (L >= 2) the regular tiles
  * (SUBD_LOOP_TILE_BYTES_, their tables SUBD_LOOP_TTAB_; SUBD_LOOP_TILE_LEVELS and _LIMIT in
  * subd_config.h): a tile of t levels at level L-t and, next to irregular vertices, smaller

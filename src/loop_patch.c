@@ -2,7 +2,11 @@
 /* The patches of streaming Loop (loop_patch.h): a control face's 1-ring, its refined values
  * and its children's 1-rings, bit-identical to subd_loop because every rule is loop_rules.h's
  * and every ring and stencil is summed in loop.c's order (see loop_stream.c's header for the
- * argument). Paper: loop-progressive-interpolation.txt, sections 1 and 4. */
+ * argument). Paper: loop-progressive-interpolation.txt, sections 1 and 4.
+ * Length (~750 lines): one concept, the patch's 16-bit view of subd_loop's level (the layout,
+ * the control patch, the cache, a child's 1-ring and the window of all four, limit mode's mesh
+ * view, the ids); the next split would put the child and window extraction (with their twin and
+ * ring-start mapping) in a file of their own. */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_internal.h"
 #include "loop_patch.h"

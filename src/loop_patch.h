@@ -10,6 +10,7 @@
 #ifndef SUBD_LOOP_PATCH_H
 #define SUBD_LOOP_PATCH_H
 #include "loop_rules.h"
+#include "mesh_internal.h" /* tri_next, tri_prev */
 
 #define LP_TW_NONE 0xffffu   /* no twin: a boundary edge                        */
 #define LP_TW_BORDER 0xfffeu /* the twin face is outside the patch              */
@@ -71,6 +72,51 @@ void subd_lp_build_control(const subd_mesh *in, uint32_t f, const sp_level *p, u
  * next = 1: of the level below, from the cache (v's child keeps v's ring shape). */
 void subd_lp_vertex_point(const sp_level *p, uint32_t v, int next, loop_wcache *wc, uint32_t *ovf, subd_real *out,
                           uint8_t *child);
+
+/* The patch's one-ring iterator (subd_lp_ring below describes the walk): one home for the
+ * patch (loop_patch.c) and its children's extraction (loop_patch_child.c). */
+typedef struct sp_ring {
+    uint32_t h0, h, steps, tail;
+} sp_ring;
+
+static inline void sp_ring_begin(const sp_level *p, uint32_t v, sp_ring *it)
+{
+    it->h0 = it->h = p->vout[v];
+    it->steps = 0;
+    it->tail = 0;
+}
+
+/* Next neighbour (SUBD_NONE at the end); *he: a half-edge of the edge to it. */
+static inline uint32_t sp_ring_step(const sp_level *p, sp_ring *it, uint32_t *he)
+{
+    uint32_t h = it->h, pr, t, nb;
+    if (h == SUBD_NONE) return SUBD_NONE;
+    *he = h;
+    if (it->tail) {
+        it->h = SUBD_NONE;
+        return p->cv[h];
+    }
+    nb = p->cv[tri_next(h)];
+    pr = tri_prev(h);
+    t = p->tw[pr];
+    if (t == LP_TW_NONE) {
+        it->h = pr;
+        it->tail = 1;
+    } else if (t == it->h0 || t == LP_TW_BORDER || ++it->steps >= 3u * p->h->nf) {
+        it->h = SUBD_NONE; /* a border cannot occur at a centre corner: the bound is a guard */
+    } else {
+        it->h = t;
+    }
+    return nb;
+}
+
+
+/* The lower half-edge of h's edge (the one loop.c makes the edge's new vertex at). */
+static inline uint32_t lower_of(const sp_level *p, uint32_t h)
+{
+    uint32_t t = p->tw[h];
+    return (t < LP_TW_BORDER && t < h) ? t : h;
+}
 
 /* The ring of patch vertex v (a centre corner) as the patch's walk sees it: neighbours into
  * nbr, the half-edge of each edge into he (for the tail the incoming boundary half-edge), at

@@ -152,13 +152,48 @@ void subd_lp_child_lattice(const sp_head *ph, uint32_t c, uint32_t ca[3], uint32
     }
 }
 
+/* Cached value sl of p as vertex v of q (position and flags). */
+static inline void take_vertex(const sp_level *p, const sp_level *q, uint32_t sl, uint32_t v)
+{
+    q->pos[3u * v] = p->cpos[3u * sl];
+    q->pos[3u * v + 1u] = p->cpos[3u * sl + 1u];
+    q->pos[3u * v + 2u] = p->cpos[3u * sl + 2u];
+    q->vflag[v] = p->cflag[sl];
+}
+
+/* The children k of p's face pf with bit k of mask into q as faces *nf, *nf + 1, ..; their
+ * corners (fp: face_points of pf) numbered as met (smap: p's cached value -> q's vertex,
+ * *nv the next), fmap and taken recording which child each face is. One home for a
+ * child's 1-ring and the window. */
+static inline void take_children(const sp_level *p, const sp_level *q, uint32_t pf, uint32_t mask,
+                                 const uint32_t fp[6], uint16_t *smap, uint16_t *fmap, uint16_t *taken,
+                                 uint32_t *nv, uint32_t *nf)
+{
+    uint32_t k, j;
+    for (k = 0; mask != 0u; k++, mask >>= 1) {
+        if (!(mask & 1u)) continue;
+        fmap[4u * pf + k] = (uint16_t)*nf;
+        taken[*nf] = (uint16_t)(4u * pf + k);
+        for (j = 0; j < 3u; j++) {
+            uint32_t sl = fp[child_pts[k][j]];
+            if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see face_points */
+                smap[sl] = (uint16_t)*nv;
+                take_vertex(p, q, sl, *nv);
+                (*nv)++;
+            }
+            q->cv[3u * *nf + j] = smap[sl];
+        }
+        (*nf)++;
+    }
+}
+
 /* Level k+1 (q) = the 1-ring of child c of level k's (p) centre. fmap holds LP_NO_SLOT on entry
  * and on return (only the entries set here are reset); q's slot array, which fill_cache
  * rewrites afterwards, holds the parent faces and the list of children taken meanwhile. */
 void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uint16_t *smap, uint16_t *fmap)
 {
     const sp_head *ph = p->h;
-    uint32_t cf = ph->cf, s[3], e[3], pf, k, j, nv = 0, nf = 0, ncand, ci;
+    uint32_t cf = ph->cf, s[3], e[3], pf, j, nv = 0, nf = 0, ncand, ci;
     uint16_t *cand = q->slot, *taken;
     for (j = 0; j < ph->nc; j++) smap[j] = LP_NO_SLOT;
     /* the child's corners, in its corner order: (v_c, m_c, m_c-1) or (m0, m1, m2) */
@@ -177,10 +212,7 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
     }
     for (j = 0; j < 3u; j++) {
         smap[s[j]] = (uint16_t)j;
-        q->pos[3u * j] = p->cpos[3u * s[j]];
-        q->pos[3u * j + 1u] = p->cpos[3u * s[j] + 1u];
-        q->pos[3u * j + 2u] = p->cpos[3u * s[j] + 2u];
-        q->vflag[j] = p->cflag[s[j]];
+        take_vertex(p, q, s[j], j);
     }
     nv = 3;
     ncand = parent_faces(p, c, cand);
@@ -191,24 +223,7 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
         mask = child_mask(p, pf, c, s);
         if (mask == 0u) continue;
         face_points(p, pf, fp);
-        for (k = 0; mask != 0u; k++, mask >>= 1) {
-            if (!(mask & 1u)) continue;
-            fmap[4u * pf + k] = (uint16_t)nf;
-            taken[nf] = (uint16_t)(4u * pf + k);
-            for (j = 0; j < 3u; j++) {
-                uint32_t sl = fp[child_pts[k][j]];
-                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see face_points */
-                    smap[sl] = (uint16_t)nv;
-                    q->pos[3u * nv] = p->cpos[3u * sl];
-                    q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
-                    q->pos[3u * nv + 2u] = p->cpos[3u * sl + 2u];
-                    q->vflag[nv] = p->cflag[sl];
-                    nv++;
-                }
-                q->cv[3u * nf + j] = smap[sl];
-            }
-            nf++;
-        }
+        take_children(p, q, pf, mask, fp, smap, fmap, taken, &nv, &nf);
     }
     child_twins(p, q, fmap, taken, nf);
     for (j = 0; j < 3u; j++) q->vout[j] = child_vout(p, fmap, s[j], e[j]);
@@ -231,17 +246,14 @@ void subd_lp_extract_child(const sp_level *p, const sp_level *q, uint32_t c, uin
 void subd_lp_extract_window(const sp_level *p, const sp_level *q, uint16_t *smap, uint16_t *fmap)
 {
     const sp_head *ph = p->h;
-    uint32_t cf = ph->cf, pf, k, j, nv, nf = 0, ci, nfp = ph->nf;
+    uint32_t cf = ph->cf, pf, j, nv, nf = 0, ci, nfp = ph->nf;
     uint16_t *taken = q->slot; /* the children taken (fill_cache rewrites the slots) */
     for (j = 0; j < ph->nc; j++) smap[j] = LP_NO_SLOT;
     /* the region vertices 0..5: the corners' children, then the centre edges' new vertices */
     for (j = 0; j < 6u; j++) {
         uint32_t sl = j < 3u ? j : p->slot[3u * cf + j - 3u];
         smap[sl] = (uint16_t)j;
-        q->pos[3u * j] = p->cpos[3u * sl];
-        q->pos[3u * j + 1u] = p->cpos[3u * sl + 1u];
-        q->pos[3u * j + 2u] = p->cpos[3u * sl + 2u];
-        q->vflag[j] = p->cflag[sl];
+        take_vertex(p, q, sl, j);
     }
     nv = 6;
     for (pf = 0; pf < nfp; pf++) {
@@ -253,24 +265,7 @@ void subd_lp_extract_window(const sp_level *p, const sp_level *q, uint16_t *smap
             if (fc[j] < 3u) mask |= 1u << j;
             if (fp[3u + j] != LP_NO_SLOT && smap[fp[3u + j]] < 6u) mask |= 8u; /* a centre edge */
         }
-        for (k = 0; mask != 0u; k++, mask >>= 1) {
-            if (!(mask & 1u)) continue;
-            fmap[4u * pf + k] = (uint16_t)nf;
-            taken[nf] = (uint16_t)(4u * pf + k);
-            for (j = 0; j < 3u; j++) {
-                uint32_t sl = fp[child_pts[k][j]];
-                if (smap[sl] == LP_NO_SLOT) { /* sl is a valid slot: see face_points */
-                    smap[sl] = (uint16_t)nv;
-                    q->pos[3u * nv] = p->cpos[3u * sl];
-                    q->pos[3u * nv + 1u] = p->cpos[3u * sl + 1u];
-                    q->pos[3u * nv + 2u] = p->cpos[3u * sl + 2u];
-                    q->vflag[nv] = p->cflag[sl];
-                    nv++;
-                }
-                q->cv[3u * nf + j] = smap[sl];
-            }
-            nf++;
-        }
+        take_children(p, q, pf, mask, fp, smap, fmap, taken, &nv, &nf);
     }
     child_twins(p, q, fmap, taken, nf);
     for (j = 0; j < 3u; j++) {

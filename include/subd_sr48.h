@@ -353,7 +353,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
  *   Measured (uniform, base + plan + stream): on spot 2.1-3.2 / 4.8-6.2 / 10-12.7 M faces/s
  *   at 2 / 4 / 6 steps, 1.0-1.3x / 2.7-2.9x / 5.5-7.8x the faces/s of a first
- *   subd_sr48_build + subd_sr48_extract in the same run, 0.26x / 0.7-0.8x / 1.9-2.0x of
+ *   subd_sr48_build + subd_sr48_extract in the same run, 0.26x / 0.65-0.8x / 1.7-2.0x of
  *   them run again in their touched arena (bench -s sr48stream); 778 instructions per
  *   triangle on the Cortex-M4F at 8 steps into a counting sink (1 090 with the demo's
  *   checksum sink), M3 Q16.16: 888 (1 203; before the window changes of 0.6.0 1 315 / 1 435

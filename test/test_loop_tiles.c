@@ -98,17 +98,9 @@ static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
     if (!CHECK(blk != 0 && tb != 0)) return 0;
     wc.have = 0;
     p.h = &head;
-    p.pos = (subd_real *)(void *)(blk + off[A_POS]);
-    p.vflag = blk + off[A_VFLAG];
-    p.vout = (uint16_t *)(void *)(blk + off[A_VOUT]);
-    p.cv = (uint16_t *)(void *)(blk + off[A_CV]);
-    p.tw = (uint16_t *)(void *)(blk + off[A_TW]);
-    p.slot = (uint16_t *)(void *)(blk + off[A_SLOT]);
-    p.sh = blk + off[A_SH];
-    p.cpos = 0;
+    subd_lp_level_bind(blk, off, &p); /* the library's carve (loop_patch.c) */
+    p.cpos = 0; /* a control patch without the cache */
     p.cflag = 0;
-    p.cface = (uint32_t *)(void *)(blk + off[A_CFACE]);
-    p.cvert = (uint32_t *)(void *)(blk + off[A_CVERT]);
     subd_lt_carve(&tl, tb, 0, 4u, 0); /* subd_lt_start needs no table */
     for (f = 0; f < m->num_faces; f++) {
         int r;

@@ -253,17 +253,9 @@ static void topo_patch_ring(void)
         blk = (uint8_t *)subd_arena_alloc(&a, bytes);
         if (!CHECK(blk != 0)) return;
         p.h = &head;
-        p.pos = (subd_real *)(void *)(blk + off[A_POS]);
-        p.vflag = blk + off[A_VFLAG];
-        p.vout = (uint16_t *)(void *)(blk + off[A_VOUT]);
-        p.cv = (uint16_t *)(void *)(blk + off[A_CV]);
-        p.tw = (uint16_t *)(void *)(blk + off[A_TW]);
-        p.slot = (uint16_t *)(void *)(blk + off[A_SLOT]);
-        p.sh = blk + off[A_SH];
-        p.cpos = 0;
+        subd_lp_level_bind(blk, off, &p); /* the library's carve (loop_patch.c) */
+        p.cpos = 0; /* a control patch without the cache */
         p.cflag = 0;
-        p.cface = (uint32_t *)(void *)(blk + off[A_CFACE]);
-        p.cvert = (uint32_t *)(void *)(blk + off[A_CVERT]);
         for (f = 0; f < m.num_faces; f++) {
             subd_lp_build_control(&m, f, &p, 2u);
             for (v = 0; v < 3u; v++) {

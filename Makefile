@@ -430,8 +430,8 @@ $(B)/bin/adapt_measure: test/tools/adapt_measure.c $(SRC) $(MK) | dirs
 	$(HOST_CC) -std=c99 -O2 $(INC) -DSUBD_FIXED=0 test/tools/adapt_measure.c $(SRC) -lm -o $@
 demo-run: $(B)/bin/adapt_measure
 # Measures what an a-priori second-difference bound could do for 4-8 chordal cuts (not in make test).
-$(B)/bin/sr48_bound: test/tools/sr48_bound.c $(SRC) $(MK) | dirs
-	$(HOST_CC) -std=c99 -O2 $(INC) -DSUBD_FIXED=0 test/tools/sr48_bound.c $(SRC) -lm -o $@
+$(B)/bin/sr48_bound: test/tools/sr48_bound.c $(SRC) port/host/fileio.c $(MK) | dirs
+	$(HOST_CC) -std=c99 -O2 $(INC) -Iport/host -DSUBD_FIXED=0 test/tools/sr48_bound.c port/host/fileio.c $(SRC) -lm -o $@
 demo-pipe-check:
 	@dev=$$(sed -n 's/^  pipeline checksum //p' $(B)/demo/m4f-float.log); \
 	host=$$(sed -n 's/.*"checksum":"\([0-9a-f]*\)".*/0x\1/p' $(B)/demo/pipe_stream_stats.json); \

@@ -352,7 +352,7 @@ int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t
     subd_arena a;
     subd_mesh m;
     subd_diag d;
-    uint32_t i, same = 1, bytes = 0;
+    uint32_t i, same = 1, bytes = 0, fails;
     int got, pst;
     uint8_t *pm = (uint8_t *)&m;
     for (i = 0; i < sizeof m; i++) pm[i] = 0x3c;
@@ -362,10 +362,13 @@ int h_reader_expect(h_reader read, h_reader_plan plan, const char *buf, uint32_t
     got = read(&a, buf, len, &m, &d);
     for (i = 0; i < sizeof m; i++) same &= pm[i] == 0x3c;
     pst = plan(buf, len, &bytes, 0);
-    if (!CHECK_EQ(got, st) | !CHECK_EQ(d.status, st) | !CHECK_EQ(d.line, line) | !CHECK_EQ(d.face, face) |
-        !CHECK(vert == H_ANY || d.vertex == vert) | !CHECK_EQ(subd_arena_mark(&a), 40) | !CHECK(same) |
-        !CHECK_EQ(h_fail_rule(got, &d, st), 0) |
-        !CHECK(pst == st || (pst == SUBD_OK && st <= SUBD_ERR_DEGENERATE))) {
+    /* every check runs (a sum, not ||), so a failing case reports all its differences */
+    fails = (uint32_t)!CHECK_EQ(got, st) + (uint32_t)!CHECK_EQ(d.status, st) + (uint32_t)!CHECK_EQ(d.line, line) +
+            (uint32_t)!CHECK_EQ(d.face, face) + (uint32_t)!CHECK(vert == H_ANY || d.vertex == vert) +
+            (uint32_t)!CHECK_EQ(subd_arena_mark(&a), 40) + (uint32_t)!CHECK(same) +
+            (uint32_t)!CHECK_EQ(h_fail_rule(got, &d, st), 0) +
+            (uint32_t)!CHECK(pst == st || (pst == SUBD_OK && st <= SUBD_ERR_DEGENERATE));
+    if (fails != 0u) {
         h_str("    case at test line ");
         h_u32((uint32_t)src_line);
         h_nl();

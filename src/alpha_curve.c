@@ -147,29 +147,35 @@ static void copy3(subd_real *out, const subd_real *a)
 
 static int32_t tag_mean(int32_t a, int32_t b) { return subd_alpha_tag_mean((int64_t)a + b, 2u); }
 
+/* S_2's two points on the edge (ia, ib), into points o and o + 1 (ia's side first) with the
+ * tags of ia and ib; both ends are read before anything is written, so o may be ia. */
+static int s2_edge(curve_ctx *c, subd_real *p, int32_t *t, uint32_t ia, uint32_t ib, uint32_t o)
+{
+    subd_real a[3], b[3];
+    int32_t ta = 0, tb = 0;
+    if (!edge_weight(c, t, ia, ib)) return 0;
+    copy3(a, p + 3u * ia);
+    copy3(b, p + 3u * ib);
+    if (t) {
+        ta = t[ia];
+        tb = t[ib];
+    }
+    subd_alpha_lerp3(p + 3u * o, a, b, c->w, &c->ovf);
+    subd_alpha_lerp3(p + 3u * (o + 1u), b, a, c->w, &c->ovf);
+    if (t) {
+        t[o] = ta;
+        t[o + 1u] = tb;
+    }
+    return 1;
+}
+
 /* S_2 on a closed polygon of n points, in place, backwards: edge i writes 2i and 2i+1 and
  * later edges read only i' <= i < 2i (i >= 1); the wrap edge (n-1, 0) is done first. */
 static int s2_closed(curve_ctx *c, subd_real *p, int32_t *t, uint32_t n)
 {
     uint32_t i = n - 1u, j;
-    subd_real a[3], b[3];
-    for (j = 0; j < n; j++, i = n - 1u - j) {
-        uint32_t ib = (i + 1u == n) ? 0u : i + 1u;
-        int32_t ta = 0, tb = 0;
-        if (!edge_weight(c, t, i, ib)) return 0;
-        copy3(a, p + 3u * i);
-        copy3(b, p + 3u * ib);
-        if (t) {
-            ta = t[i];
-            tb = t[ib];
-        }
-        subd_alpha_lerp3(p + 6u * i, a, b, c->w, &c->ovf);
-        subd_alpha_lerp3(p + 6u * i + 3u, b, a, c->w, &c->ovf);
-        if (t) {
-            t[2u * i] = ta;
-            t[2u * i + 1u] = tb;
-        }
-    }
+    for (j = 0; j < n; j++, i = n - 1u - j)
+        if (!s2_edge(c, p, t, i, (i + 1u == n) ? 0u : i + 1u, 2u * i)) return 0;
     return 1;
 }
 
@@ -188,22 +194,8 @@ static int s2_open_edge(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
     copy3(a, p + 3u * (L - 2u));
     subd_alpha_lerp3(p + 3u * (2u * L - 4u), a, d, c->w2, &c->ovf);
     if (t) t[2u * L - 4u] = t[L - 2u];
-    for (j = L - 3u; j >= 1u; j--) {
-        int32_t ta = 0, tb = 0;
-        if (!edge_weight(c, t, j, j + 1u)) return 0;
-        copy3(a, p + 3u * j);
-        copy3(b, p + 3u * (j + 1u));
-        if (t) {
-            ta = t[j];
-            tb = t[j + 1u];
-        }
-        subd_alpha_lerp3(p + 6u * j, a, b, c->w, &c->ovf);
-        subd_alpha_lerp3(p + 6u * j + 3u, b, a, c->w, &c->ovf);
-        if (t) {
-            t[2u * j] = ta;
-            t[2u * j + 1u] = tb;
-        }
-    }
+    for (j = L - 3u; j >= 1u; j--)
+        if (!s2_edge(c, p, t, j, j + 1u, 2u * j)) return 0;
     /* start edge (2c - x1, x1): its second point */
     if (!edge_weight(c, t, 1u, 1u)) return 0;
     copy3(a, p + 3u);
@@ -217,27 +209,13 @@ static int s2_open_edge(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
  * later edges read only j' + 1 <= j < 2j + 1. */
 static int s2_open_vertex(curve_ctx *c, subd_real *p, int32_t *t, uint32_t L)
 {
-    subd_real a[3], b[3];
+    subd_real a[3];
     uint32_t j;
     copy3(a, p + 3u * (L - 1u));
     copy3(p + 3u * (2u * L - 1u), a);
     if (t) t[2u * L - 1u] = t[L - 1u];
-    for (j = L - 1u; j-- > 0;) {
-        int32_t ta = 0, tb = 0;
-        if (!edge_weight(c, t, j, j + 1u)) return 0;
-        copy3(a, p + 3u * j);
-        copy3(b, p + 3u * (j + 1u));
-        if (t) {
-            ta = t[j];
-            tb = t[j + 1u];
-        }
-        subd_alpha_lerp3(p + 3u * (2u * j + 1u), a, b, c->w, &c->ovf);
-        subd_alpha_lerp3(p + 3u * (2u * j + 2u), b, a, c->w, &c->ovf);
-        if (t) {
-            t[2u * j + 1u] = ta;
-            t[2u * j + 2u] = tb;
-        }
-    }
+    for (j = L - 1u; j-- > 0;)
+        if (!s2_edge(c, p, t, j, j + 1u, 2u * j + 1u)) return 0;
     return 1;
 }
 

@@ -482,7 +482,10 @@ static void rf_two_rings(const subd_sr48 *base, const subd_sr48_stream_opts *so,
     subd_stream_end(&st);
 }
 
-static void rf_case(int shape, uint32_t L, uint32_t flags, double eps)
+/* off: added to every input coordinate (a mesh far from the origin: the tiles' cheap bound,
+ * sr48_chord_tile.c, is used while max |coordinate| <= 2^14 eps, where its rounding margins are
+ * smallest) */
+static void rf_case_at(int shape, uint32_t L, uint32_t flags, double eps, double off)
 {
     subd_arena a, sa;
     static subd_mesh in;
@@ -494,6 +497,7 @@ static void rf_case(int shape, uint32_t L, uint32_t flags, double eps)
     uint32_t nid, t, k, i, q, nl = 0, lost = 0, nsplit = 0;
     subd_arena_init(&a, g_rbuf, RF_BYTES);
     if (!fx_sr48_shape(ch_shapes[shape], 0, &a, &in)) return;
+    for (i = 0; i < 3u * in.num_verts; i++) in.pos[i] += fx_real(off);
     o.steps = L;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -553,10 +557,12 @@ static void rf_case(int shape, uint32_t L, uint32_t flags, double eps)
     qsort(g_rq[0], nl, 2u * sizeof(uint64_t), ch_ecmp);
     qsort(g_rq[1], g_s.n, 2u * sizeof(uint64_t), ch_ecmp);
     if (CHECK_EQ(g_s.n, nl)) CHECK(memcmp(g_rq[0], g_rq[1], 2u * sizeof(uint64_t) * nl) == 0);
-    T_NOTE("nested criterion, exhaustive: shape %d L %u flags %u eps %g: %u faces (%u splits), stream %u\n", shape, L,
-           flags, eps, nl, nsplit, g_s.n);
+    T_NOTE("nested criterion, exhaustive: shape %d L %u flags %u eps %g offset %g: %u faces (%u splits), stream %u\n",
+           shape, L, flags, eps, off, nl, nsplit, g_s.n);
     rf_two_rings(&base, &so, g_s.n, g_s.hash);
 }
+
+static void rf_case(int shape, uint32_t L, uint32_t flags, double eps) { rf_case_at(shape, L, flags, eps, 0.0); }
 
 static void sr48c_reference(void)
 {
@@ -573,6 +579,10 @@ static void sr48c_reference(void)
      * descendants and their partners, missed F(D)'s triangles at their corners, and cut
      * 1.5 % fewer faces of spot at 5 steps, eps 0.002) */
     rf_case(C_DENSE, 5, 0, 0.05);
+    /* far from the origin: max |coordinate| about 1.0e4 eps (the cheap bound's limit is
+     * 2^14 eps), and beyond it (no cheap bound: the exact test alone) */
+    rf_case_at(C_ICO, 6, 0, 0.01, 100.0);
+    rf_case_at(C_ICO, 6, 0, 0.01, 200.0);
 }
 
 const test_case suite_sr48_chord[] = {

@@ -267,11 +267,32 @@ static inline void s48_szero3(const s48_state *s, const s48_win *x, uint32_t e)
     s48_sput(s, x, e + 1u, 0);
     s48_sput(s, x, e + 2u, 0);
 }
+#if SUBD_FIXED /* why: one term added to the (high, low) pair directly, the low part kept in
+                * [-2^31, 2^31) (s48_sput's form) by a carry into the high part, without
+                * forming and splitting the 64-bit sum (the hot path of every smoothing) */
+static inline void s48_sadd1(const s48_state *s, const s48_win *x, uint32_t e, subd_real v)
+{
+    int64_t t = (int64_t)x->vp[e] + v;
+    if (t >= (int64_t)2147483647 + 1) {
+        t -= S48_W32;
+        s->sumhi[e] = (int16_t)(s->sumhi[e] + 1);
+    } else if (t < -(int64_t)2147483647 - 1) {
+        t += S48_W32;
+        s->sumhi[e] = (int16_t)(s->sumhi[e] - 1);
+    }
+    x->vp[e] = (subd_real)t;
+}
+#else
+static inline void s48_sadd1(const s48_state *s, const s48_win *x, uint32_t e, subd_real v)
+{
+    s48_sput(s, x, e, subd_sum_add(s48_sget(s, x, e), v));
+}
+#endif
 static inline void s48_sadd3(const s48_state *s, const s48_win *x, uint32_t e, const subd_real *mp)
 {
-    s48_sput(s, x, e, subd_sum_add(s48_sget(s, x, e), mp[0]));
-    s48_sput(s, x, e + 1u, subd_sum_add(s48_sget(s, x, e + 1u), mp[1]));
-    s48_sput(s, x, e + 2u, subd_sum_add(s48_sget(s, x, e + 2u), mp[2]));
+    s48_sadd1(s, x, e, mp[0]);
+    s48_sadd1(s, x, e + 1u, mp[1]);
+    s48_sadd1(s, x, e + 2u, mp[2]);
 }
 
 /* subd_avg(s, n): the same call, with the usual n = 4 (a regular vertex: four diamonds)

@@ -101,7 +101,11 @@ static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, i
     for (i = 0; i < out->num_verts; i++) CHECK(g_tl_have[i]);
 }
 
-static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
+/* big: the shape scaled so that its largest coordinate is near the Q16.16 limit (raw
+ * |x| >= 2^30; float: the same numbers), so that smoothing sums of four or more terms leave
+ * 32 bits and carry into their high parts (sr48_stream_internal.h's s48_sadd1), upwards
+ * and, where the shape has negative coordinates (the icosahedron, the bipyramid), downwards. */
+static void tl_case_s(int shape, uint32_t bn, uint32_t L, uint32_t flags, int big)
 {
     subd_arena a;
     subd_mesh in, out;
@@ -113,6 +117,22 @@ static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
     uint32_t tiles, twice, n0, want, m = SUBD_SR48_STREAM_TILE_LEVELS;
     subd_arena_init(&a, TL_MAT, TL_MAT_BYTES);
     if (!fx_sr48_shape(shape, bn, &a, &in)) return;
+    if (big) {
+        subd_real mx = 0;
+        uint32_t i;
+        for (i = 0; i < 3u * in.num_verts; i++) {
+            const subd_real v = in.pos[i] < 0 ? -in.pos[i] : in.pos[i];
+            if (v > mx) mx = v;
+        }
+        if (!CHECK(mx > 0)) return;
+        for (i = 0; i < 3u * in.num_verts; i++) {
+#if SUBD_FIXED /* raw * (2^31 - 2^16) / max: |raw| <= 2^31 - 2^16, the largest >= 2^30 */
+            in.pos[i] = (subd_real)(((int64_t)in.pos[i] * 2147418112) / mx);
+#else
+            in.pos[i] = in.pos[i] / mx * 32767.0f;
+#endif
+        }
+    }
     o.steps = L;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -131,6 +151,7 @@ static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
     CHECK_EQ(tiles, want);
     CHECK_EQ(twice, want);
 }
+static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags) { tl_case_s(shape, bn, L, flags, 0); }
 
 /* Tiles from level 0 over a hybrid pair (L <= m), from level 0 per base triangle (L = m + 1)
  * and below depth-first levels (L = m + 2), where the materialised hierarchy fits. */
@@ -156,7 +177,25 @@ static void sr48t_tiles(void)
     }
 }
 
+/* Coordinates near the Q16.16 limit: the smoothing sums carry into their high parts (every
+ * level, the tile's last one included), against the materialised hierarchy's 64-bit sums. */
+static void sr48t_big(void)
+{
+    uint32_t f;
+    for (f = 0; f < 2u; f++) {
+        const uint32_t fl = f ? SUBD_SR48_NO_SMOOTH : 0u;
+        tl_case_s(FX48_TWO, 5, 4, fl, 1);
+        tl_case_s(FX48_HEXFAN, 5, 6, fl, 1);
+#if H_HOST
+        tl_case_s(FX48_ICO, 5, 8, fl, 1);
+        tl_case_s(FX48_BIPYR, 7, 8, fl, 1);
+        tl_case_s(FX48_TORUS, 5, 7, fl, 1);
+#endif
+    }
+}
+
 const test_case suite_sr48_tiles[] = {
     {"sr48t_tiles", sr48t_tiles},
+    {"sr48t_big", sr48t_big},
     {0, 0},
 };

@@ -309,36 +309,48 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
 {
     s48_win x, a;
     const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels, tend = s->tend;
-    const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
+    const uint32_t k = L - 1u, low = (1u << k) - 1u; /* X's level; a local key's path bits */
+    const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << k) - 1u);
     const uint64_t *idv = s48_tile_idv(s);
-    /* why locals: the windows' arrays are not reloaded after every sink call */
+    /* why locals: the windows' arrays and the walk's position are not reloaded after every
+     * sink call (s->tcur is written back on every way out) */
     const uint16_t *xtv, *vm = s->vmap;
     const uint32_t *xkey, *gt = s->gt;
     const subd_real *xvp, *cvp;
-    uint32_t ovf = 0;
-    s48_x(s, &x);
+    uint32_t ovf = 0, tc = s->tcur, ci0 = 0xffffffffu;
+    uint64_t cid = 0; /* id0 + the global key's high part of level-0 window triangle ci0 */
+    s48_win_at(s, s->xblk, s->xoff, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
     xtv = x.tv;
     xkey = x.key;
     xvp = x.vp;
     cvp = sm ? a.vp : x.vp; /* the corners: smoothed into A by subd_s48_last_ (by vmap), or X's */
-    while (s->tcur < tend && !subd_stream_q_full(q)) {
+    while (tc < tend && !subd_stream_q_full(q)) {
         /* X's triangle i: its diamond's new vertex (from the lower triangle), its id, the
          * level-0 ancestor and the corners once for both children */
-        const uint32_t i = s->tcur >> 1;
+        const uint32_t i = tc >> 1;
         const uint16_t *tv = xtv + 3u * i;
-        uint32_t lt, e0, e1, j, face; /* lt: the diamond's lower triangle */
+        uint32_t lt, e0, e1, j, face, ql; /* lt: the diamond's lower triangle */
         uint64_t idm;
         subd_real mp[3];
         const subd_real *cp[3]; /* c, a, b: child 0 = (m; c, a), child 1 = (m; b, c) */
         (void)subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
         for (j = 0; j < 3u; j++) mp[j] = subd_mid(xvp[3u * e0 + j], xvp[3u * e1 + j], &ovf);
         if (ovf) {
+            s->tcur = tc;
             s->err = (uint32_t)(-SUBD_ERR_RANGE);
             return 0;
         }
-        idm = id0 + s48_gkey(s, xkey[lt], L - 1u);
-        face = gt[xkey[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
+        /* the new vertex's id: id0 + s48_gkey(lt's key) (sr48_window.c's closed form), the
+         * ancestor's part kept while the ancestor repeats (a tile's one or two, and the
+         * partners' across its border) */
+        ql = xkey[lt];
+        if ((ql >> k) != ci0) {
+            ci0 = ql >> k;
+            cid = id0 + ((uint64_t)gt[ci0] << k);
+        }
+        idm = cid + (ql & low);
+        face = gt[xkey[i] >> k]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
         if (sm) { /* exact: s48_tile_exact */
             cp[0] = cvp + 3u * vm[tv[0]];
             cp[1] = cvp + 3u * vm[tv[1]];
@@ -348,11 +360,14 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             cp[1] = cvp + 3u * tv[1];
             cp[2] = cvp + 3u * tv[2];
         }
-        do { /* child s->tcur & 1 of i */
-            const uint32_t ch = s->tcur & 1u;
+        do { /* child tc & 1 of i */
+            const uint32_t ch = tc & 1u;
             const subd_real *p1 = ch ? cp[2] : cp[0], *p2 = ch ? cp[0] : cp[1];
             subd_tri *o = (subd_tri *)subd_stream_q_put(q);
-            if (!o) return 0;
+            if (!o) {
+                s->tcur = tc;
+                return 0;
+            }
             s48_put3(o->pos[0], mp);
             s48_put3(o->pos[1], p1);
             s48_put3(o->pos[2], p2);
@@ -365,9 +380,13 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             o->face = face;
             o->level = L;
             *stop = subd_stream_q_commit(q);
-            s->tcur++;
-            if (*stop) return 1;
-        } while ((s->tcur & 1u) && s->tcur < tend && !subd_stream_q_full(q));
+            tc++;
+            if (*stop) {
+                s->tcur = tc;
+                return 1;
+            }
+        } while ((tc & 1u) && tc < tend && !subd_stream_q_full(q));
     }
+    s->tcur = tc;
     return 1;
 }

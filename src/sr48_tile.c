@@ -330,12 +330,12 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
          * level-0 ancestor and the corners once for both children */
         const uint32_t i = tc >> 1;
         const uint16_t *tv = xtv + 3u * i;
-        uint32_t lt, e0, e1, j, face, ql; /* lt: the diamond's lower triangle */
+        uint32_t lt, e0, e1, face, ql; /* lt: the diamond's lower triangle */
         uint64_t idm;
         subd_real mp[3];
         const subd_real *cp[3]; /* c, a, b: child 0 = (m; c, a), child 1 = (m; b, c) */
         (void)subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(xvp[3u * e0 + j], xvp[3u * e1 + j], &ovf);
+        s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
         if (ovf) {
             s->tcur = tc;
             s->err = (uint32_t)(-SUBD_ERR_RANGE);

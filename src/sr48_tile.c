@@ -101,11 +101,16 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
 int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
 {
     const uint32_t nt = x->hd[0], nv = x->hd[1];
+    /* the arrays in locals (why: a store to a byte array, a flag, may alias anything, and
+     * the windows' pointers would be read again after each) */
+    const uint16_t *xtv = x->tv, *xtn = x->tn;
+    const subd_real *xvp = x->vp;
+    const uint8_t *xvf = x->vf;
     uint16_t *vm = s->vmap;
     uint32_t i, j, nn = 0, ovf = 0;
     for (i = 0; i < nv; i++) vm[i] = S48_OUT;
     for (j = 0; j < 3u * n; j++) {
-        const uint16_t v = x->tv[3u * c0 + j];
+        const uint16_t v = xtv[3u * c0 + j];
         if (vm[v] != S48_OUT) continue;
         if (nn >= s->av) return 0;
         vm[v] = (uint16_t)nn;
@@ -117,21 +122,21 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
     }
     /* the boundary flags first (a boundary vertex sums its boundary diamonds only) */
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i;
+        const uint16_t *tv = xtv + 3u * i;
         uint16_t u;
-        if (x->tn[3u * i] != S48_BND) continue;
+        if (xtn[3u * i] != S48_BND) continue;
         if ((u = vm[tv[1]]) != S48_OUT) s->cnt[u] = 0x80000000u;
         if ((u = vm[tv[2]]) != S48_OUT) s->cnt[u] = 0x80000000u;
     }
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t *tv = xtv + 3u * i, *tn = xtn + 3u * i;
         const uint16_t nb = tn[0], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
         const uint32_t o0 = nb == S48_OUT, o1 = tn[1] == S48_OUT, o2 = tn[2] == S48_OUT;
         uint16_t u3;
         uint32_t e0, e1, mf;
         subd_real mp[3];
         if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) {
-            if (nb == S48_BND || !s48_local(nb) || nb < i || vm[x->tv[3u * nb]] == S48_OUT) continue;
+            if (nb == S48_BND || !s48_local(nb) || nb < i || vm[xtv[3u * nb]] == S48_OUT) continue;
         } else if (o0 | o1 | o2) {
             /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
             if ((o0 | o1) && u1 != S48_OUT) s->dist[u1] |= S48_INC;
@@ -149,11 +154,11 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         } else {
             if (nb < i) continue; /* the diamond's lower triangle made it */
             e0 = tv[0];
-            e1 = x->tv[3u * nb];
+            e1 = xtv[3u * nb];
             u3 = vm[e1];
         }
-        s48_mid3(mp, x->vp + 3u * e0, x->vp + 3u * e1, &ovf);
-        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
+        s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
+        mf = xvf[e0] & xvf[e1] & S48_EXACT;
         {
             const int bnd = nb == S48_BND;
             if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);

@@ -356,13 +356,22 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
             const uint16_t m = mt[i];
             uint16_t *ov;
             if ((t0 & t1) == S48_OUT) continue; /* neither kept */
-            if (t0 != S48_OUT) { /* child 0: (m; c, a) */
+            if (t0 != S48_OUT && t1 != S48_OUT) { /* both: m, c, a, then b (as met) */
+                const uint16_t um = s48_rc_num(vm, m, &kv), uc = s48_rc_num(vm, tv[0], &kv);
+                ov = wtv + 3u * t0; /* child 0: (m; c, a) */
+                ov[0] = um;
+                ov[1] = uc;
+                ov[2] = s48_rc_num(vm, tv[1], &kv);
+                ov = wtv + 3u * t1; /* child 1: (m; b, c) */
+                ov[0] = um;
+                ov[1] = s48_rc_num(vm, tv[2], &kv);
+                ov[2] = uc;
+            } else if (t0 != S48_OUT) {
                 ov = wtv + 3u * t0;
                 ov[0] = s48_rc_num(vm, m, &kv);
                 ov[1] = s48_rc_num(vm, tv[0], &kv);
                 ov[2] = s48_rc_num(vm, tv[1], &kv);
-            }
-            if (t1 != S48_OUT) { /* child 1: (m; b, c) */
+            } else {
                 ov = wtv + 3u * t1;
                 ov[0] = s48_rc_num(vm, m, &kv);
                 ov[1] = s48_rc_num(vm, tv[2], &kv);

@@ -97,17 +97,21 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
  * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
  * once X is refined from it: a's vid keeps X's index, a's position and flag the result;
  * a's hd[1] their count). The exactness rules are refine's, restricted to the same
- * vertices. 0 on failure. */
-int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
+ * vertices. 0 on failure; 1 when every position the tile hands out is exact (each corner,
+ * and the midpoint inputs of the diamond of each of c0 .. c0 + n - 1, whose base neighbour
+ * is inside: s48_tile_exact's tests, made here while summing), else 2. */
+int subd_s48_last_(s48_state *s, const s48_win *x0, uint32_t c0, uint32_t n, s48_win *a0)
 {
+    /* the windows' array pointers in locals (why: a store to a byte array, a flag, may alias
+     * anything, and the pointers would be read again after each) */
+    const s48_win xl = *x0, al = *a0;
+    const s48_win *x = &xl, *a = &al;
     const uint32_t nt = x->hd[0], nv = x->hd[1];
-    /* the arrays in locals (why: a store to a byte array, a flag, may alias anything, and
-     * the windows' pointers would be read again after each) */
     const uint16_t *xtv = x->tv, *xtn = x->tn;
     const subd_real *xvp = x->vp;
     const uint8_t *xvf = x->vf;
     uint16_t *vm = s->vmap;
-    uint32_t i, j, nn = 0, ovf = 0;
+    uint32_t i, j, nn = 0, ovf = 0, bad = 0;
     for (i = 0; i < nv; i++) vm[i] = S48_OUT;
     for (j = 0; j < 3u * n; j++) {
         const uint16_t v = xtv[3u * c0 + j];
@@ -145,6 +149,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         }
         if (o0) {
             if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+            bad |= i - c0 < n; /* a triangle of D without its diamond */
             continue;
         }
         if (nb == S48_BND) {
@@ -159,6 +164,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         }
         s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
         mf = xvf[e0] & xvf[e1] & S48_EXACT;
+        if (!mf && (i - c0 < n || (s48_local(nb) && nb - c0 < n))) bad = 1; /* a midpoint emitted */
         {
             const int bnd = nb == S48_BND;
             if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
@@ -172,6 +178,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         if (k == 0u || (s->dist[i] & S48_INC)) {
             s48_cp3(a->vp + 3u * i, x->vp + 3u * v); /* not a sum */
             a->vf[i] = 0;
+            bad = 1; /* a corner of D */
             continue;
         }
         s48_avg3(s, a, 3u * i, k, &ovf);
@@ -181,8 +188,8 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         s->err = (uint32_t)(-SUBD_ERR_RANGE);
         return 0;
     }
-    a->hd[1] = nn; /* the corners (sr48_tile.c checks their flags) */
-    return 1;
+    a->hd[1] = nn; /* the corners */
+    return bad ? 2 : 1;
 }
 
 /* Uniform tiles: the current triangle t of the level-k window w (k = L - tw, tw = s48_tile_walk)
@@ -194,22 +201,25 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
  * depth-first walk would crop for one descendant (a union of rings), so every emitted
  * corner is exact. small = 1: the windows before the last cropped smaller (fin 1 of
  * subd_s48_refine_crop_: ring 1 of the descendants and the partners of its triangles, see
- * subd_s48_tile_), 0: to their two rings. 0 on failure. */
+ * subd_s48_tile_), 0: to their two rings. 0 on failure; else 1, or (level L smoothed)
+ * subd_s48_last_'s 1 or 2 (a position handed out not exact). */
 static int s48_tile_build(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0, uint32_t small)
 {
     s48_win x, a;
     const s48_win *p = w;
     const uint32_t tw = s48_tile_walk(s);
-    uint32_t j, lo = t, n = n0;
+    uint32_t j, lo = t, n = n0, tiny;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
+    /* the smaller crops: 1, or the tests' too small 2 (S48_TILE_TINY) */
+    tiny = (a.hd[7] & S48_TILE_TINY) ? 2u : 1u;
     /* tw - 1 refinements, each cropped to the rings of t's descendants (subd_s48_refine_crop_),
      * alternately into A and X so that the last one (level L - 1, twice the descendants of
      * the one before: X's capacities) lands in X */
     for (j = 0; j + 1u < tw; j++) {
         const uint32_t last = j + 2u == tw;
         s48_win *o = ((tw - 2u - j) & 1u) ? &a : &x;
-        const uint32_t fin = last ? (s->smooth && (s->levels & 1u) == 0u ? 1u : 2u) : small;
+        const uint32_t fin = last ? (s->smooth && (s->levels & 1u) == 0u ? 1u : 2u) : small ? tiny : 0u;
         if (!subd_s48_refine_crop_(s, p, s->k + j, lo, n, o, s->at, s->av, fin)) return 0;
 #ifdef S48_DBG
         if (o->hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = o->hd[0];
@@ -219,35 +229,31 @@ static int s48_tile_build(s48_state *s, const s48_win *w, uint32_t t, uint32_t n
         n *= 2u;
         p = o;
     }
-    if (s->smooth && (s->levels & 1u) == 0u && !subd_s48_last_(s, &x, lo, n, &a)) return 0;
     s->tcur = 2u * lo;
     s->tend = 2u * (lo + n);
+    if (s->smooth && (s->levels & 1u) == 0u) return subd_s48_last_(s, &x, lo, n, &a);
     return 1;
 }
 
 /* Is every position the tile emits exact (the tests of subd_s48_tile_emit_, made before the
  * first triangle leaves)? X's triangles s->tcur / 2 .. s->tend / 2 - 1: their diamonds'
- * midpoint sources, and their corners (smoothed into A by subd_s48_last_ when level L is
- * even): the corners of both children. */
-static int s48_tile_exact(const s48_state *s)
+ * midpoint sources, and their corners: the corners of both children. When level L is
+ * smoothed, subd_s48_last_ made the same tests while it summed (r: its 1, all exact, or 2),
+ * and the corners are its smoothed ones in A; else r = 1 and X is read. */
+static int s48_tile_exact(const s48_state *s, int r)
 {
-    s48_win x, a;
-    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u;
+    s48_win x;
     uint32_t i, j;
+    if (s->smooth && (s->levels & 1u) == 0u) return r == 1;
     s48_x(s, &x);
-    s48_win_at(s, s->ablk, s->aoff, &a);
     for (i = s->tcur >> 1; i < s->tend >> 1; i++) {
         const uint16_t *tv = x.tv + 3u * i;
         uint32_t lt, e0, e1;
         const uint16_t lnb = subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
         if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
-        if (!sm)
-            for (j = 0; j < 3u; j++)
-                if (!(x.vf[tv[j]] & S48_EXACT)) return 0;
+        for (j = 0; j < 3u; j++)
+            if (!(x.vf[tv[j]] & S48_EXACT)) return 0;
     }
-    if (sm) /* A's vertices are those corners (subd_s48_last_) */
-        for (j = 0; j < a.hd[1]; j++)
-            if (!(a.vf[j] & S48_EXACT)) return 0;
     return 1;
 }
 
@@ -285,7 +291,9 @@ static int s48_tile_ids(const s48_state *s)
  * (valences 3..64, boundaries, isolated triangles; test_sr48_tiles counts them). The
  * counters: hd[7] of X (tiles) and of A (tiles made again; with S48_TILE_FULL set, which
  * the tests set after the begin call, every tile is made with the two rings alone, so that
- * they compare both crops). 0 on failure. */
+ * they compare both crops; with S48_TILE_TINY, the windows before the last are first cropped
+ * to the descendants and their partners (fin 2), too small for smoothing, so that the tests
+ * see the checks send tiles to the two rings). 0 on failure. */
 int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
 {
     s48_win x, a;
@@ -293,16 +301,20 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     s48_win_at(s, s->ablk, s->aoff, &a);
     x.hd[7]++;
     if (!(a.hd[7] & S48_TILE_FULL)) {
-        if (!s48_tile_build(s, w, t, n0, 1u)) return 0;
-        if (s48_tile_exact(s)) return s48_tile_ids(s);
+        const int r = s48_tile_build(s, w, t, n0, 1u);
+        if (!r) return 0;
+        if (s48_tile_exact(s, r)) return s48_tile_ids(s);
     }
-    a.hd[7]++; /* below S48_TILE_FULL: at most one per tile */
+    a.hd[7]++; /* below S48_TILE_TINY: at most one per tile */
     if (w->hd[6] == 0u && w->hd[7] == 1u) { /* level 0's smaller window: its two rings */
         if (!subd_s48_build0_(s, s->t0)) return 0;
         t = w->hd[2]; /* t0's index in it (the pair's: t0 even, t0 + 1 next) */
     }
-    if (!s48_tile_build(s, w, t, n0, 0u)) return 0;
-    return s48_tile_exact(s) && s48_tile_ids(s);
+    {
+        const int r = s48_tile_build(s, w, t, n0, 0u);
+        if (!r) return 0;
+        return s48_tile_exact(s, r) && s48_tile_ids(s);
+    }
 }
 
 /* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle

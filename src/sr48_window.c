@@ -219,9 +219,14 @@ static inline uint16_t s48_rc_num(uint16_t *vm, uint16_t v, uint32_t *kv)
     }
     return u;
 }
-int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
+int subd_s48_refine_crop_(s48_state *s, const s48_win *p0, uint32_t k, uint32_t c0, uint32_t n, s48_win *w0,
                           uint32_t ct, uint32_t cv, uint32_t fin)
 {
+    /* the two windows' array pointers in locals (why: a store to a byte array, a flag or a
+     * distance, may alias anything, and the pointers would be read again after each) */
+    const s48_win pl = *p0;
+    s48_win wl = *w0;
+    const s48_win *p = &pl, *w = &wl;
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
     const int sm = s->smooth && ((k + 1u) & 1u) == 0u;

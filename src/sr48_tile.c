@@ -261,19 +261,26 @@ static int s48_tile_exact(const s48_state *s, int r)
  * three triangles): 8 bytes per vertex over A's neighbours and keys, which the tile no
  * longer reads (A holds the smoothed corners only): 10 bytes per triangle of A's capacity,
  * more than 8 per vertex of X's (SUBD_SR48_STREAM_TT_, _TV_: 60 N + 320 + 15 2^m against
- * 32 N + 256 + 6 2^m). 0 if not (cannot happen). */
+ * 32 N + 256 + 6 2^m). Only the emitted corners' entries are made (X's vertices of D's
+ * triangles; when level L is smoothed, A's vertices are those, by X index in A's vid), the
+ * rest of X's (ring and partners) not being read. 0 if not (cannot happen). */
 static uint64_t *s48_tile_idv(const s48_state *s)
 {
     return (uint64_t *)(void *)(s->ablk + s->aoff[2]);
 }
 static int s48_tile_ids(const s48_state *s)
 {
-    s48_win x;
+    s48_win x, a;
     uint64_t *id = s48_tile_idv(s);
     uint32_t v;
     s48_x(s, &x);
     if (8u * x.hd[1] > s->aoff[4] - s->aoff[2]) return 0;
-    for (v = 0; v < x.hd[1]; v++) id[v] = s48_vid(&x, v);
+    if (s->smooth && (s->levels & 1u) == 0u) { /* A's vertices: D's corners (subd_s48_last_) */
+        s48_win_at(s, s->ablk, s->aoff, &a);
+        for (v = 0; v < a.hd[1]; v++) id[a.vid[v]] = s48_vid(&x, a.vid[v]);
+    } else {
+        for (v = 0; v < x.hd[1]; v++) id[v] = s48_vid(&x, v);
+    }
     return 1;
 }
 

@@ -41,6 +41,13 @@
  * (test_sr48_tiles counts it). Emission then reads no flag, and the corners' 64-bit ids are
  * computed once per tile vertex (s48_tile_ids) rather than once per corner.
  *
+ * Exactness checks while summing (Unreleased): when level L is smoothed, subd_s48_last_
+ * makes s48_tile_exact's tests itself (a corner's flag, each D diamond's midpoint inputs and
+ * inside base neighbour) and returns 2 when one fails, so the tile is not walked again to
+ * check; the ids are made for the emitted corners only (A's vertices). test_sr48_tiles
+ * forces too small first crops (S48_TILE_TINY) to see the checks send tiles to the two
+ * rings with the same bits.
+ *
  * A and X are blocks of the stream's state of the same capacities (SUBD_SR48_STREAM_TT_,
  * _TV_ of m: a tile of m + 1 levels keeps at most the descendants m levels below its root
  * in a window); the level windows below the tile's root are unused while a tile is handed

@@ -48,6 +48,12 @@
  * Cost (0.7.0): a crop numbers its kept triangles in a first pass and writes their corners
  * and neighbours (mapped at once) in a second, so no neighbour is renumbered afterwards; the
  * three coordinates are handled unrolled (s48_mid3 and the sums' helpers); the same bits.
+ * (Unreleased) refine_crop's passes are split where one loop held more live values than the
+ * Cortex-M's registers (the flags, the keep test per crop kind, the corners then the
+ * neighbours, the new vertices of an unsmoothed level), and it reads the windows' array
+ * pointers from local copies (a store to a byte array may alias anything): the same passes
+ * in the same order, the same bits; on the M4F the uniform 8-step stream's refine_crop went
+ * from about 413 to 310 instructions per output face.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h"

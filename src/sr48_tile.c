@@ -71,6 +71,23 @@ static inline void s48_zero3(subd_real *o)
     o[2] = 0;
 }
 
+/* A tile triangle (m; p1, p2) with its ids, level-0 ancestor and level (no normal). */
+static inline void s48_tile_tri(subd_tri *o, const subd_real *m, const subd_real *p1, const subd_real *p2,
+                                uint64_t i0, uint64_t i1, uint64_t i2, uint32_t face, uint32_t L)
+{
+    s48_put3(o->pos[0], m);
+    s48_put3(o->pos[1], p1);
+    s48_put3(o->pos[2], p2);
+    s48_zero3(o->normal[0]);
+    s48_zero3(o->normal[1]);
+    s48_zero3(o->normal[2]);
+    o->id[0] = i0;
+    o->id[1] = i1;
+    o->id[2] = i2;
+    o->face = face;
+    o->level = L;
+}
+
 /* Window w's triangle t as a stream triangle; 0 when a corner is not exact. *stop: the push
  * form's sink value (non-zero: stop the stream with it). */
 int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream_q *q, int *stop)
@@ -391,32 +408,35 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             cp[1] = cvp + 3u * tv[1];
             cp[2] = cvp + 3u * tv[2];
         }
-        do { /* child tc & 1 of i */
-            const uint32_t ch = tc & 1u;
-            const subd_real *p1 = ch ? cp[2] : cp[0], *p2 = ch ? cp[0] : cp[1];
+        if ((tc & 1u) == 0u) { /* child 0 = (m; c, a) */
             subd_tri *o = (subd_tri *)subd_stream_q_put(q);
             if (!o) {
                 s->tcur = tc;
                 return 0;
             }
-            s48_put3(o->pos[0], mp);
-            s48_put3(o->pos[1], p1);
-            s48_put3(o->pos[2], p2);
-            s48_zero3(o->normal[0]);
-            s48_zero3(o->normal[1]);
-            s48_zero3(o->normal[2]);
-            o->id[0] = idm;
-            o->id[1] = idv[ch ? tv[2] : tv[0]];
-            o->id[2] = idv[ch ? tv[0] : tv[1]];
-            o->face = face;
-            o->level = L;
+            s48_tile_tri(o, mp, cp[0], cp[1], idm, idv[tv[0]], idv[tv[1]], face, L);
             *stop = subd_stream_q_commit(q);
             tc++;
             if (*stop) {
                 s->tcur = tc;
                 return 1;
             }
-        } while ((tc & 1u) && tc < tend && !subd_stream_q_full(q));
+            if (tc >= tend || subd_stream_q_full(q)) break;
+        }
+        { /* child 1 = (m; b, c) */
+            subd_tri *o = (subd_tri *)subd_stream_q_put(q);
+            if (!o) {
+                s->tcur = tc;
+                return 0;
+            }
+            s48_tile_tri(o, mp, cp[2], cp[0], idm, idv[tv[2]], idv[tv[0]], face, L);
+            *stop = subd_stream_q_commit(q);
+            tc++;
+            if (*stop) {
+                s->tcur = tc;
+                return 1;
+            }
+        }
     }
     s->tcur = tc;
     return 1;

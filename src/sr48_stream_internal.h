@@ -60,8 +60,10 @@ struct s48_state;
  * (subd_s48_build0_small_), of the uniform tile's blocks X and A how many tiles were made,
  * and how many of them with the two rings of the exactness argument (sr48_tile.c: the
  * smaller crops first; counted for the tests, which force the two rings with
- * S48_TILE_FULL in A's). */
+ * S48_TILE_FULL in A's; S48_TILE_TINY: the tests' too small first crops, so that the
+ * exactness checks must send tiles to the two rings). */
 #define S48_TILE_FULL 0x80000000u
+#define S48_TILE_TINY 0x40000000u
 typedef struct s48_win {
     uint32_t *hd;
     uint16_t *tv, *tn;
@@ -267,11 +269,32 @@ static inline void s48_szero3(const s48_state *s, const s48_win *x, uint32_t e)
     s48_sput(s, x, e + 1u, 0);
     s48_sput(s, x, e + 2u, 0);
 }
+#if SUBD_FIXED /* why: one term added to the (high, low) pair directly, the low part kept in
+                * [-2^31, 2^31) (s48_sput's form) by a carry into the high part, without
+                * forming and splitting the 64-bit sum (the hot path of every smoothing) */
+static inline void s48_sadd1(const s48_state *s, const s48_win *x, uint32_t e, subd_real v)
+{
+    int64_t t = (int64_t)x->vp[e] + v;
+    if (t >= (int64_t)2147483647 + 1) {
+        t -= S48_W32;
+        s->sumhi[e] = (int16_t)(s->sumhi[e] + 1);
+    } else if (t < -(int64_t)2147483647 - 1) {
+        t += S48_W32;
+        s->sumhi[e] = (int16_t)(s->sumhi[e] - 1);
+    }
+    x->vp[e] = (subd_real)t;
+}
+#else
+static inline void s48_sadd1(const s48_state *s, const s48_win *x, uint32_t e, subd_real v)
+{
+    s48_sput(s, x, e, subd_sum_add(s48_sget(s, x, e), v));
+}
+#endif
 static inline void s48_sadd3(const s48_state *s, const s48_win *x, uint32_t e, const subd_real *mp)
 {
-    s48_sput(s, x, e, subd_sum_add(s48_sget(s, x, e), mp[0]));
-    s48_sput(s, x, e + 1u, subd_sum_add(s48_sget(s, x, e + 1u), mp[1]));
-    s48_sput(s, x, e + 2u, subd_sum_add(s48_sget(s, x, e + 2u), mp[2]));
+    s48_sadd1(s, x, e, mp[0]);
+    s48_sadd1(s, x, e + 1u, mp[1]);
+    s48_sadd1(s, x, e + 2u, mp[2]);
 }
 
 /* subd_avg(s, n): the same call, with the usual n = 4 (a regular vertex: four diamonds)
@@ -370,7 +393,8 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
                           uint32_t ct, uint32_t cv, uint32_t fin);
 /* The last level of a uniform tile without its window (sr48_tile.c): the smoothed
  * positions at max_level of the corners of x's triangles c0 .. c0 + n - 1 (x: level
- * max_level - 1), into a's vertices by s->vmap. 0 on failure (s->err). */
+ * max_level - 1), into a's vertices by s->vmap. 0 on failure (s->err); else 1, or 2 when
+ * a corner or a midpoint input of those triangles' diamonds is not exact. */
 int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a);
 
 /* Descents (sr48_window.c): the finest position of vertex `id`, a corner of triangle t of

@@ -41,6 +41,13 @@
  * (test_sr48_tiles counts it). Emission then reads no flag, and the corners' 64-bit ids are
  * computed once per tile vertex (s48_tile_ids) rather than once per corner.
  *
+ * Exactness checks while summing (Unreleased): when level L is smoothed, subd_s48_last_
+ * makes s48_tile_exact's tests itself (a corner's flag, each D diamond's midpoint inputs and
+ * inside base neighbour) and returns 2 when one fails, so the tile is not walked again to
+ * check; the ids are made for the emitted corners only (A's vertices). test_sr48_tiles
+ * forces too small first crops (S48_TILE_TINY) to see the checks send tiles to the two
+ * rings with the same bits.
+ *
  * A and X are blocks of the stream's state of the same capacities (SUBD_SR48_STREAM_TT_,
  * _TV_ of m: a tile of m + 1 levels keeps at most the descendants m levels below its root
  * in a window); the level windows below the tile's root are unused while a tile is handed
@@ -62,6 +69,23 @@ static inline void s48_zero3(subd_real *o)
     o[0] = 0;
     o[1] = 0;
     o[2] = 0;
+}
+
+/* A tile triangle (m; p1, p2) with its ids, level-0 ancestor and level (no normal). */
+static inline void s48_tile_tri(subd_tri *o, const subd_real *m, const subd_real *p1, const subd_real *p2,
+                                uint64_t i0, uint64_t i1, uint64_t i2, uint32_t face, uint32_t L)
+{
+    s48_put3(o->pos[0], m);
+    s48_put3(o->pos[1], p1);
+    s48_put3(o->pos[2], p2);
+    s48_zero3(o->normal[0]);
+    s48_zero3(o->normal[1]);
+    s48_zero3(o->normal[2]);
+    o->id[0] = i0;
+    o->id[1] = i1;
+    o->id[2] = i2;
+    o->face = face;
+    o->level = L;
 }
 
 /* Window w's triangle t as a stream triangle; 0 when a corner is not exact. *stop: the push
@@ -97,15 +121,24 @@ int subd_s48_emit_(const s48_state *s, const s48_win *w, uint32_t t, subd_stream
  * only into those corners, each mapped by s->vmap to a vertex of a (the tile window, free
  * once X is refined from it: a's vid keeps X's index, a's position and flag the result;
  * a's hd[1] their count). The exactness rules are refine's, restricted to the same
- * vertices. 0 on failure. */
-int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_win *a)
+ * vertices. 0 on failure; 1 when every position the tile hands out is exact (each corner,
+ * and the midpoint inputs of the diamond of each of c0 .. c0 + n - 1, whose base neighbour
+ * is inside: s48_tile_exact's tests, made here while summing), else 2. */
+int subd_s48_last_(s48_state *s, const s48_win *x0, uint32_t c0, uint32_t n, s48_win *a0)
 {
+    /* the windows' array pointers in locals (why: a store to a byte array, a flag, may alias
+     * anything, and the pointers would be read again after each) */
+    const s48_win xl = *x0, al = *a0;
+    const s48_win *x = &xl, *a = &al;
     const uint32_t nt = x->hd[0], nv = x->hd[1];
+    const uint16_t *xtv = x->tv, *xtn = x->tn;
+    const subd_real *xvp = x->vp;
+    const uint8_t *xvf = x->vf;
     uint16_t *vm = s->vmap;
-    uint32_t i, j, nn = 0, ovf = 0;
+    uint32_t i, j, nn = 0, ovf = 0, bad = 0;
     for (i = 0; i < nv; i++) vm[i] = S48_OUT;
     for (j = 0; j < 3u * n; j++) {
-        const uint16_t v = x->tv[3u * c0 + j];
+        const uint16_t v = xtv[3u * c0 + j];
         if (vm[v] != S48_OUT) continue;
         if (nn >= s->av) return 0;
         vm[v] = (uint16_t)nn;
@@ -117,21 +150,21 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
     }
     /* the boundary flags first (a boundary vertex sums its boundary diamonds only) */
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i;
+        const uint16_t *tv = xtv + 3u * i;
         uint16_t u;
-        if (x->tn[3u * i] != S48_BND) continue;
+        if (xtn[3u * i] != S48_BND) continue;
         if ((u = vm[tv[1]]) != S48_OUT) s->cnt[u] = 0x80000000u;
         if ((u = vm[tv[2]]) != S48_OUT) s->cnt[u] = 0x80000000u;
     }
     for (i = 0; i < nt; i++) {
-        const uint16_t *tv = x->tv + 3u * i, *tn = x->tn + 3u * i;
+        const uint16_t *tv = xtv + 3u * i, *tn = xtn + 3u * i;
         const uint16_t nb = tn[0], u0 = vm[tv[0]], u1 = vm[tv[1]], u2 = vm[tv[2]];
         const uint32_t o0 = nb == S48_OUT, o1 = tn[1] == S48_OUT, o2 = tn[2] == S48_OUT;
         uint16_t u3;
         uint32_t e0, e1, mf;
         subd_real mp[3];
         if (u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT) {
-            if (nb == S48_BND || !s48_local(nb) || nb < i || vm[x->tv[3u * nb]] == S48_OUT) continue;
+            if (nb == S48_BND || !s48_local(nb) || nb < i || vm[xtv[3u * nb]] == S48_OUT) continue;
         } else if (o0 | o1 | o2) {
             /* an edge to outside: its ends miss part of their fan (slots (b, a), (c, a), (b, c)) */
             if ((o0 | o1) && u1 != S48_OUT) s->dist[u1] |= S48_INC;
@@ -140,6 +173,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         }
         if (o0) {
             if (u0 != S48_OUT) s->dist[u0] |= S48_INC;
+            bad |= i - c0 < n; /* a triangle of D without its diamond */
             continue;
         }
         if (nb == S48_BND) {
@@ -149,11 +183,12 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         } else {
             if (nb < i) continue; /* the diamond's lower triangle made it */
             e0 = tv[0];
-            e1 = x->tv[3u * nb];
+            e1 = xtv[3u * nb];
             u3 = vm[e1];
         }
-        s48_mid3(mp, x->vp + 3u * e0, x->vp + 3u * e1, &ovf);
-        mf = x->vf[e0] & x->vf[e1] & S48_EXACT;
+        s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
+        mf = xvf[e0] & xvf[e1] & S48_EXACT;
+        if (!mf && (i - c0 < n || (s48_local(nb) && nb - c0 < n))) bad = 1; /* a midpoint emitted */
         {
             const int bnd = nb == S48_BND;
             if (u1 != S48_OUT) s48_scatter(s, a, u1, mp, mf, bnd);
@@ -167,6 +202,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         if (k == 0u || (s->dist[i] & S48_INC)) {
             s48_cp3(a->vp + 3u * i, x->vp + 3u * v); /* not a sum */
             a->vf[i] = 0;
+            bad = 1; /* a corner of D */
             continue;
         }
         s48_avg3(s, a, 3u * i, k, &ovf);
@@ -176,8 +212,8 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
         s->err = (uint32_t)(-SUBD_ERR_RANGE);
         return 0;
     }
-    a->hd[1] = nn; /* the corners (sr48_tile.c checks their flags) */
-    return 1;
+    a->hd[1] = nn; /* the corners */
+    return bad ? 2 : 1;
 }
 
 /* Uniform tiles: the current triangle t of the level-k window w (k = L - tw, tw = s48_tile_walk)
@@ -189,22 +225,25 @@ int subd_s48_last_(s48_state *s, const s48_win *x, uint32_t c0, uint32_t n, s48_
  * depth-first walk would crop for one descendant (a union of rings), so every emitted
  * corner is exact. small = 1: the windows before the last cropped smaller (fin 1 of
  * subd_s48_refine_crop_: ring 1 of the descendants and the partners of its triangles, see
- * subd_s48_tile_), 0: to their two rings. 0 on failure. */
+ * subd_s48_tile_), 0: to their two rings. 0 on failure; else 1, or (level L smoothed)
+ * subd_s48_last_'s 1 or 2 (a position handed out not exact). */
 static int s48_tile_build(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0, uint32_t small)
 {
     s48_win x, a;
     const s48_win *p = w;
     const uint32_t tw = s48_tile_walk(s);
-    uint32_t j, lo = t, n = n0;
+    uint32_t j, lo = t, n = n0, tiny;
     s48_x(s, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
+    /* the smaller crops: 1, or the tests' too small 2 (S48_TILE_TINY) */
+    tiny = (a.hd[7] & S48_TILE_TINY) ? 2u : 1u;
     /* tw - 1 refinements, each cropped to the rings of t's descendants (subd_s48_refine_crop_),
      * alternately into A and X so that the last one (level L - 1, twice the descendants of
      * the one before: X's capacities) lands in X */
     for (j = 0; j + 1u < tw; j++) {
         const uint32_t last = j + 2u == tw;
         s48_win *o = ((tw - 2u - j) & 1u) ? &a : &x;
-        const uint32_t fin = last ? (s->smooth && (s->levels & 1u) == 0u ? 1u : 2u) : small;
+        const uint32_t fin = last ? (s->smooth && (s->levels & 1u) == 0u ? 1u : 2u) : small ? tiny : 0u;
         if (!subd_s48_refine_crop_(s, p, s->k + j, lo, n, o, s->at, s->av, fin)) return 0;
 #ifdef S48_DBG
         if (o->hd[0] > s48_dbg[2u * j]) s48_dbg[2u * j] = o->hd[0];
@@ -214,35 +253,31 @@ static int s48_tile_build(s48_state *s, const s48_win *w, uint32_t t, uint32_t n
         n *= 2u;
         p = o;
     }
-    if (s->smooth && (s->levels & 1u) == 0u && !subd_s48_last_(s, &x, lo, n, &a)) return 0;
     s->tcur = 2u * lo;
     s->tend = 2u * (lo + n);
+    if (s->smooth && (s->levels & 1u) == 0u) return subd_s48_last_(s, &x, lo, n, &a);
     return 1;
 }
 
 /* Is every position the tile emits exact (the tests of subd_s48_tile_emit_, made before the
  * first triangle leaves)? X's triangles s->tcur / 2 .. s->tend / 2 - 1: their diamonds'
- * midpoint sources, and their corners (smoothed into A by subd_s48_last_ when level L is
- * even): the corners of both children. */
-static int s48_tile_exact(const s48_state *s)
+ * midpoint sources, and their corners: the corners of both children. When level L is
+ * smoothed, subd_s48_last_ made the same tests while it summed (r: its 1, all exact, or 2),
+ * and the corners are its smoothed ones in A; else r = 1 and X is read. */
+static int s48_tile_exact(const s48_state *s, int r)
 {
-    s48_win x, a;
-    const uint32_t sm = s->smooth && (s->levels & 1u) == 0u;
+    s48_win x;
     uint32_t i, j;
+    if (s->smooth && (s->levels & 1u) == 0u) return r == 1;
     s48_x(s, &x);
-    s48_win_at(s, s->ablk, s->aoff, &a);
     for (i = s->tcur >> 1; i < s->tend >> 1; i++) {
         const uint16_t *tv = x.tv + 3u * i;
         uint32_t lt, e0, e1;
         const uint16_t lnb = subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
         if (lnb == S48_OUT || !(x.vf[e0] & x.vf[e1] & S48_EXACT)) return 0;
-        if (!sm)
-            for (j = 0; j < 3u; j++)
-                if (!(x.vf[tv[j]] & S48_EXACT)) return 0;
+        for (j = 0; j < 3u; j++)
+            if (!(x.vf[tv[j]] & S48_EXACT)) return 0;
     }
-    if (sm) /* A's vertices are those corners (subd_s48_last_) */
-        for (j = 0; j < a.hd[1]; j++)
-            if (!(a.vf[j] & S48_EXACT)) return 0;
     return 1;
 }
 
@@ -250,19 +285,26 @@ static int s48_tile_exact(const s48_state *s)
  * three triangles): 8 bytes per vertex over A's neighbours and keys, which the tile no
  * longer reads (A holds the smoothed corners only): 10 bytes per triangle of A's capacity,
  * more than 8 per vertex of X's (SUBD_SR48_STREAM_TT_, _TV_: 60 N + 320 + 15 2^m against
- * 32 N + 256 + 6 2^m). 0 if not (cannot happen). */
+ * 32 N + 256 + 6 2^m). Only the emitted corners' entries are made (X's vertices of D's
+ * triangles; when level L is smoothed, A's vertices are those, by X index in A's vid), the
+ * rest of X's (ring and partners) not being read. 0 if not (cannot happen). */
 static uint64_t *s48_tile_idv(const s48_state *s)
 {
     return (uint64_t *)(void *)(s->ablk + s->aoff[2]);
 }
 static int s48_tile_ids(const s48_state *s)
 {
-    s48_win x;
+    s48_win x, a;
     uint64_t *id = s48_tile_idv(s);
     uint32_t v;
     s48_x(s, &x);
     if (8u * x.hd[1] > s->aoff[4] - s->aoff[2]) return 0;
-    for (v = 0; v < x.hd[1]; v++) id[v] = s48_vid(&x, v);
+    if (s->smooth && (s->levels & 1u) == 0u) { /* A's vertices: D's corners (subd_s48_last_) */
+        s48_win_at(s, s->ablk, s->aoff, &a);
+        for (v = 0; v < a.hd[1]; v++) id[a.vid[v]] = s48_vid(&x, a.vid[v]);
+    } else {
+        for (v = 0; v < x.hd[1]; v++) id[v] = s48_vid(&x, v);
+    }
     return 1;
 }
 
@@ -280,7 +322,9 @@ static int s48_tile_ids(const s48_state *s)
  * (valences 3..64, boundaries, isolated triangles; test_sr48_tiles counts them). The
  * counters: hd[7] of X (tiles) and of A (tiles made again; with S48_TILE_FULL set, which
  * the tests set after the begin call, every tile is made with the two rings alone, so that
- * they compare both crops). 0 on failure. */
+ * they compare both crops; with S48_TILE_TINY, the windows before the last are first cropped
+ * to the descendants and their partners (fin 2), too small for smoothing, so that the tests
+ * see the checks send tiles to the two rings). 0 on failure. */
 int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
 {
     s48_win x, a;
@@ -288,16 +332,20 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     s48_win_at(s, s->ablk, s->aoff, &a);
     x.hd[7]++;
     if (!(a.hd[7] & S48_TILE_FULL)) {
-        if (!s48_tile_build(s, w, t, n0, 1u)) return 0;
-        if (s48_tile_exact(s)) return s48_tile_ids(s);
+        const int r = s48_tile_build(s, w, t, n0, 1u);
+        if (!r) return 0;
+        if (s48_tile_exact(s, r)) return s48_tile_ids(s);
     }
-    a.hd[7]++; /* below S48_TILE_FULL: at most one per tile */
+    a.hd[7]++; /* below S48_TILE_TINY: at most one per tile */
     if (w->hd[6] == 0u && w->hd[7] == 1u) { /* level 0's smaller window: its two rings */
         if (!subd_s48_build0_(s, s->t0)) return 0;
         t = w->hd[2]; /* t0's index in it (the pair's: t0 even, t0 + 1 next) */
     }
-    if (!s48_tile_build(s, w, t, n0, 0u)) return 0;
-    return s48_tile_exact(s) && s48_tile_ids(s);
+    {
+        const int r = s48_tile_build(s, w, t, n0, 0u);
+        if (!r) return 0;
+        return s48_tile_exact(s, r) && s48_tile_ids(s);
+    }
 }
 
 /* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle
@@ -309,36 +357,48 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
 {
     s48_win x, a;
     const uint32_t sm = s->smooth && (s->levels & 1u) == 0u, L = s->levels, tend = s->tend;
-    const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << (L - 1u)) - 1u);
+    const uint32_t k = L - 1u, low = (1u << k) - 1u; /* X's level; a local key's path bits */
+    const uint64_t id0 = (uint64_t)s->nv0 + (uint64_t)s->n0 * (((uint64_t)1 << k) - 1u);
     const uint64_t *idv = s48_tile_idv(s);
-    /* why locals: the windows' arrays are not reloaded after every sink call */
+    /* why locals: the windows' arrays and the walk's position are not reloaded after every
+     * sink call (s->tcur is written back on every way out) */
     const uint16_t *xtv, *vm = s->vmap;
     const uint32_t *xkey, *gt = s->gt;
     const subd_real *xvp, *cvp;
-    uint32_t ovf = 0;
-    s48_x(s, &x);
+    uint32_t ovf = 0, tc = s->tcur, ci0 = 0xffffffffu;
+    uint64_t cid = 0; /* id0 + the global key's high part of level-0 window triangle ci0 */
+    s48_win_at(s, s->xblk, s->xoff, &x);
     s48_win_at(s, s->ablk, s->aoff, &a);
     xtv = x.tv;
     xkey = x.key;
     xvp = x.vp;
     cvp = sm ? a.vp : x.vp; /* the corners: smoothed into A by subd_s48_last_ (by vmap), or X's */
-    while (s->tcur < tend && !subd_stream_q_full(q)) {
+    while (tc < tend && !subd_stream_q_full(q)) {
         /* X's triangle i: its diamond's new vertex (from the lower triangle), its id, the
          * level-0 ancestor and the corners once for both children */
-        const uint32_t i = s->tcur >> 1;
+        const uint32_t i = tc >> 1;
         const uint16_t *tv = xtv + 3u * i;
-        uint32_t lt, e0, e1, j, face; /* lt: the diamond's lower triangle */
+        uint32_t lt, e0, e1, face, ql; /* lt: the diamond's lower triangle */
         uint64_t idm;
         subd_real mp[3];
         const subd_real *cp[3]; /* c, a, b: child 0 = (m; c, a), child 1 = (m; b, c) */
         (void)subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
-        for (j = 0; j < 3u; j++) mp[j] = subd_mid(xvp[3u * e0 + j], xvp[3u * e1 + j], &ovf);
+        s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
         if (ovf) {
+            s->tcur = tc;
             s->err = (uint32_t)(-SUBD_ERR_RANGE);
             return 0;
         }
-        idm = id0 + s48_gkey(s, xkey[lt], L - 1u);
-        face = gt[xkey[i] >> (L - 1u)]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
+        /* the new vertex's id: id0 + s48_gkey(lt's key) (sr48_window.c's closed form), the
+         * ancestor's part kept while the ancestor repeats (a tile's one or two, and the
+         * partners' across its border) */
+        ql = xkey[lt];
+        if ((ql >> k) != ci0) {
+            ci0 = ql >> k;
+            cid = id0 + ((uint64_t)gt[ci0] << k);
+        }
+        idm = cid + (ql & low);
+        face = gt[xkey[i] >> k]; /* the level-0 ancestor (local key: sr48_stream_internal.h) */
         if (sm) { /* exact: s48_tile_exact */
             cp[0] = cvp + 3u * vm[tv[0]];
             cp[1] = cvp + 3u * vm[tv[1]];
@@ -348,26 +408,36 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             cp[1] = cvp + 3u * tv[1];
             cp[2] = cvp + 3u * tv[2];
         }
-        do { /* child s->tcur & 1 of i */
-            const uint32_t ch = s->tcur & 1u;
-            const subd_real *p1 = ch ? cp[2] : cp[0], *p2 = ch ? cp[0] : cp[1];
+        if ((tc & 1u) == 0u) { /* child 0 = (m; c, a) */
             subd_tri *o = (subd_tri *)subd_stream_q_put(q);
-            if (!o) return 0;
-            s48_put3(o->pos[0], mp);
-            s48_put3(o->pos[1], p1);
-            s48_put3(o->pos[2], p2);
-            s48_zero3(o->normal[0]);
-            s48_zero3(o->normal[1]);
-            s48_zero3(o->normal[2]);
-            o->id[0] = idm;
-            o->id[1] = idv[ch ? tv[2] : tv[0]];
-            o->id[2] = idv[ch ? tv[0] : tv[1]];
-            o->face = face;
-            o->level = L;
+            if (!o) {
+                s->tcur = tc;
+                return 0;
+            }
+            s48_tile_tri(o, mp, cp[0], cp[1], idm, idv[tv[0]], idv[tv[1]], face, L);
             *stop = subd_stream_q_commit(q);
-            s->tcur++;
-            if (*stop) return 1;
-        } while ((s->tcur & 1u) && s->tcur < tend && !subd_stream_q_full(q));
+            tc++;
+            if (*stop) {
+                s->tcur = tc;
+                return 1;
+            }
+            if (tc >= tend || subd_stream_q_full(q)) break;
+        }
+        { /* child 1 = (m; b, c) */
+            subd_tri *o = (subd_tri *)subd_stream_q_put(q);
+            if (!o) {
+                s->tcur = tc;
+                return 0;
+            }
+            s48_tile_tri(o, mp, cp[2], cp[0], idm, idv[tv[2]], idv[tv[0]], face, L);
+            *stop = subd_stream_q_commit(q);
+            tc++;
+            if (*stop) {
+                s->tcur = tc;
+                return 1;
+            }
+        }
     }
+    s->tcur = tc;
     return 1;
 }

@@ -48,6 +48,12 @@
  * Cost (0.7.0): a crop numbers its kept triangles in a first pass and writes their corners
  * and neighbours (mapped at once) in a second, so no neighbour is renumbered afterwards; the
  * three coordinates are handled unrolled (s48_mid3 and the sums' helpers); the same bits.
+ * (Unreleased) refine_crop's passes are split where one loop held more live values than the
+ * Cortex-M's registers (the flags, the keep test per crop kind, the corners then the
+ * neighbours, the new vertices of an unsmoothed level), and it reads the windows' array
+ * pointers from local copies (a store to a byte array may alias anything): the same passes
+ * in the same order, the same bits; on the M4F the uniform 8-step stream's refine_crop went
+ * from about 413 to 310 instructions per output face.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h"
@@ -219,9 +225,14 @@ static inline uint16_t s48_rc_num(uint16_t *vm, uint16_t v, uint32_t *kv)
     }
     return u;
 }
-int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c0, uint32_t n, s48_win *w,
+int subd_s48_refine_crop_(s48_state *s, const s48_win *p0, uint32_t k, uint32_t c0, uint32_t n, s48_win *w0,
                           uint32_t ct, uint32_t cv, uint32_t fin)
 {
+    /* the two windows' array pointers in locals (why: a store to a byte array, a flag or a
+     * distance, may alias anything, and the pointers would be read again after each) */
+    const s48_win pl = *p0;
+    s48_win wl = *w0;
+    const s48_win *p = &pl, *w = &wl;
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
     const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
@@ -232,27 +243,33 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
 #ifdef S48_DBG
     s48_dbg[30] += nt; s48_dbg[31]++;
 #endif
-    /* X's new vertices as refine numbers them; the smoothing flags (refine's tests) */
-    if (sm)
-        for (i = 0; i < nvp; i++) cnt[i] = 0;
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = p->tv + 3u * i;
-        const uint16_t nb = p->tn[3u * i];
-        if (s48_local(nb) && nb < i) {
-            mt[i] = mt[nb];
-        } else {
-            if (nv >= s->xv) return 0;
-            mt[i] = (uint16_t)nv++;
+    /* X's new vertices as refine numbers them; the smoothing flags (refine's tests), in
+     * their own loop (why: fewer live values per loop) */
+    {
+        const uint16_t *ptv = p->tv, *ptn = p->tn;
+        const uint32_t xv = s->xv;
+        for (i = 0; i < nt; i++) {
+            const uint16_t nb = ptn[3u * i];
+            if (s48_local(nb) && nb < i) {
+                mt[i] = mt[nb];
+            } else {
+                if (nv >= xv) return 0;
+                mt[i] = (uint16_t)nv++;
+            }
         }
         if (sm) {
-            const uint16_t l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
-            if (nb == S48_BND) {
-                cnt[tv[1]] |= S48_RC_BND;
-                cnt[tv[2]] |= S48_RC_BND;
+            for (i = 0; i < nvp; i++) cnt[i] = 0;
+            for (i = 0; i < nt; i++) {
+                const uint16_t *tv = ptv + 3u * i;
+                const uint16_t nb = ptn[3u * i], l0 = ptn[3u * i + 1u], l1 = ptn[3u * i + 2u];
+                if (nb == S48_BND) {
+                    cnt[tv[1]] |= S48_RC_BND;
+                    cnt[tv[2]] |= S48_RC_BND;
+                }
+                if (nb == S48_OUT || l0 == S48_OUT) cnt[tv[1]] |= S48_RC_INC;
+                if (nb == S48_OUT || l1 == S48_OUT) cnt[tv[2]] |= S48_RC_INC;
+                if (nb == S48_OUT || l0 == S48_OUT || l1 == S48_OUT) cnt[tv[0]] |= S48_RC_INC;
             }
-            if (nb == S48_OUT || l0 == S48_OUT) cnt[tv[1]] |= S48_RC_INC;
-            if (nb == S48_OUT || l1 == S48_OUT) cnt[tv[2]] |= S48_RC_INC;
-            if (nb == S48_OUT || l0 == S48_OUT || l1 == S48_OUT) cnt[tv[0]] |= S48_RC_INC;
         }
     }
     /* ring distances on the children (m; c, a), (m; b, c) of every parent (c; a, b) */
@@ -294,117 +311,209 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p, uint32_t k, uint32_t c
     /* which children are kept, numbered in X's order (tm: X's index -> w's, or OUT);
      * then their corners (vertices numbered as met), neighbours (X's, mapped by tm at
      * once) and keys: two passes, so that no neighbour is renumbered afterwards */
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = p->tv + 3u * i;
-        const uint32_t dm = d[mt[i]], dc = d[tv[0]], da = d[tv[1]], db = d[tv[2]];
-        uint32_t k0, k1;
-        if (fin == 0u) { /* within S48_RINGS rings: a corner nearer than S48_RINGS */
-            const uint32_t mc = dm < dc ? dm : dc;
-            k0 = (da < mc ? da : mc) < S48_RINGS;
-            k1 = (db < mc ? db : mc) < S48_RINGS;
-        } else {
-            const uint16_t l0 = p->tn[3u * i + 1u], l1 = p->tn[3u * i + 2u];
-            if (fin == 1u) {
-                /* ring 1 and the partners of its triangles: a corner at distance 0 (d is 0
-                 * or S48_FAR here), or the partner's (the child of the base neighbour ln
-                 * across the base ends; its apex is ln's new vertex) */
-                k0 = (dm & dc & da) == 0u || (s48_local(l0) && d[mt[l0]] == 0u);
-                k1 = (dm & dc & db) == 0u || (s48_local(l1) && d[mt[l1]] == 0u);
-            } else { /* the descendants and their partners */
+    {
+        /* one loop per crop (why: fin tested once, and fewer live values per loop) */
+        const uint16_t *ptv = p->tv, *ptn = p->tn;
+        if (fin == 1u) {
+            /* ring 1 and the partners of its triangles: a corner at distance 0 (d is 0 or
+             * S48_FAR here), or the partner's (the child of the base neighbour ln across the
+             * base ends; its apex is ln's new vertex) */
+            for (i = 0; i < nt; i++) {
+                const uint16_t *tv = ptv + 3u * i, l0 = ptn[3u * i + 1u], l1 = ptn[3u * i + 2u];
+                const uint32_t dmc = (uint32_t)d[mt[i]] & d[tv[0]];
+                const uint32_t k0 = (dmc & d[tv[1]]) == 0u || (s48_local(l0) && d[mt[l0]] == 0u);
+                const uint32_t k1 = (dmc & d[tv[2]]) == 0u || (s48_local(l1) && d[mt[l1]] == 0u);
+                tm[2u * i] = k0 ? (uint16_t)kt : (uint16_t)S48_OUT;
+                kt += k0;
+                tm[2u * i + 1u] = k1 ? (uint16_t)kt : (uint16_t)S48_OUT;
+                kt += k1;
+            }
+        } else if (fin == 2u) { /* the descendants and their partners */
+            for (i = 0; i < nt; i++) {
+                const uint16_t l0 = ptn[3u * i + 1u], l1 = ptn[3u * i + 2u];
                 const uint32_t in = i - c0 < n;
-                k0 = in || (s48_local(l0) && l0 - c0 < n);
-                k1 = in || (s48_local(l1) && l1 - c0 < n);
+                const uint32_t k0 = in || (s48_local(l0) && l0 - c0 < n);
+                const uint32_t k1 = in || (s48_local(l1) && l1 - c0 < n);
+                tm[2u * i] = k0 ? (uint16_t)kt : (uint16_t)S48_OUT;
+                kt += k0;
+                tm[2u * i + 1u] = k1 ? (uint16_t)kt : (uint16_t)S48_OUT;
+                kt += k1;
+            }
+        } else { /* within S48_RINGS rings: a corner nearer than S48_RINGS */
+            for (i = 0; i < nt; i++) {
+                const uint16_t *tv = ptv + 3u * i;
+                const uint32_t dm = d[mt[i]], dc = d[tv[0]], da = d[tv[1]], db = d[tv[2]];
+                const uint32_t mc = dm < dc ? dm : dc;
+                const uint32_t k0 = (da < mc ? da : mc) < S48_RINGS;
+                const uint32_t k1 = (db < mc ? db : mc) < S48_RINGS;
+                tm[2u * i] = k0 ? (uint16_t)kt : (uint16_t)S48_OUT;
+                kt += k0;
+                tm[2u * i + 1u] = k1 ? (uint16_t)kt : (uint16_t)S48_OUT;
+                kt += k1;
             }
         }
-        tm[2u * i] = k0 ? (uint16_t)kt++ : (uint16_t)S48_OUT;
-        tm[2u * i + 1u] = k1 ? (uint16_t)kt++ : (uint16_t)S48_OUT;
     }
     if (kt > ct) return 0;
-    for (i = 0; i < nt; i++) {
-        const uint32_t t0 = tm[2u * i], t1 = tm[2u * i + 1u];
-        const uint16_t *tv = p->tv + 3u * i;
-        uint16_t nb, m, *ov, *on;
-        if (t0 == S48_OUT && t1 == S48_OUT) continue;
-        nb = p->tn[3u * i];
-        m = mt[i];
-        if (t0 != S48_OUT) { /* child 0: (m; c, a); base neighbour child 1 of L0 */
-            const uint16_t l0 = p->tn[3u * i + 1u];
-            ov = w->tv + 3u * t0;
-            on = w->tn + 3u * t0;
-            ov[0] = s48_rc_num(vm, m, &kv);
-            ov[1] = s48_rc_num(vm, tv[0], &kv);
-            ov[2] = s48_rc_num(vm, tv[1], &kv);
-            on[0] = s48_local(l0) ? tm[2u * l0 + 1u] : l0;
-            on[1] = (uint16_t)t1;
-            on[2] = s48_local(nb) ? tm[2u * nb + 1u] : nb;
-            w->key[t0] = 2u * p->key[i];
+    /* two passes over the kept children (why: one pass holds more live values than the
+     * Cortex-M's registers, and its spills cost more than the second loop): their corners,
+     * the vertices numbered as met (in the same order as one pass), then their neighbours
+     * and keys */
+    {
+        const uint16_t *ptv = p->tv;
+        uint16_t *wtv = w->tv;
+        for (i = 0; i < nt; i++) {
+            const uint32_t t0 = tm[2u * i], t1 = tm[2u * i + 1u];
+            const uint16_t *tv = ptv + 3u * i;
+            const uint16_t m = mt[i];
+            uint16_t *ov;
+            if ((t0 & t1) == S48_OUT) continue; /* neither kept */
+            if (t0 != S48_OUT && t1 != S48_OUT) { /* both: m, c, a, then b (as met) */
+                const uint16_t um = s48_rc_num(vm, m, &kv), uc = s48_rc_num(vm, tv[0], &kv);
+                ov = wtv + 3u * t0; /* child 0: (m; c, a) */
+                ov[0] = um;
+                ov[1] = uc;
+                ov[2] = s48_rc_num(vm, tv[1], &kv);
+                ov = wtv + 3u * t1; /* child 1: (m; b, c) */
+                ov[0] = um;
+                ov[1] = s48_rc_num(vm, tv[2], &kv);
+                ov[2] = uc;
+            } else if (t0 != S48_OUT) {
+                ov = wtv + 3u * t0;
+                ov[0] = s48_rc_num(vm, m, &kv);
+                ov[1] = s48_rc_num(vm, tv[0], &kv);
+                ov[2] = s48_rc_num(vm, tv[1], &kv);
+            } else {
+                ov = wtv + 3u * t1;
+                ov[0] = s48_rc_num(vm, m, &kv);
+                ov[1] = s48_rc_num(vm, tv[2], &kv);
+                ov[2] = s48_rc_num(vm, tv[0], &kv);
+            }
         }
-        if (t1 != S48_OUT) { /* child 1: (m; b, c); base neighbour child 0 of L1 */
-            const uint16_t l1 = p->tn[3u * i + 2u];
-            ov = w->tv + 3u * t1;
-            on = w->tn + 3u * t1;
-            ov[0] = s48_rc_num(vm, m, &kv);
-            ov[1] = s48_rc_num(vm, tv[2], &kv);
-            ov[2] = s48_rc_num(vm, tv[0], &kv);
-            on[0] = s48_local(l1) ? tm[2u * l1] : l1;
-            on[1] = s48_local(nb) ? tm[2u * nb] : nb;
-            on[2] = (uint16_t)t0;
-            w->key[t1] = 2u * p->key[i] + 1u;
+    }
+    {
+        const uint16_t *ptn = p->tn;
+        const uint32_t *pkey = p->key;
+        uint16_t *wtn = w->tn;
+        uint32_t *wkey = w->key;
+        for (i = 0; i < nt; i++) {
+            const uint32_t t0 = tm[2u * i], t1 = tm[2u * i + 1u];
+            const uint16_t *tn = ptn + 3u * i;
+            uint16_t nb;
+            uint16_t *on;
+            uint32_t key2;
+            if ((t0 & t1) == S48_OUT) continue;
+            nb = tn[0];
+            key2 = 2u * pkey[i];
+            if (t0 != S48_OUT) { /* child 0: base neighbour child 1 of L0 */
+                const uint16_t l0 = tn[1];
+                on = wtn + 3u * t0;
+                on[0] = s48_local(l0) ? tm[2u * l0 + 1u] : l0;
+                on[1] = (uint16_t)t1;
+                on[2] = s48_local(nb) ? tm[2u * nb + 1u] : nb;
+                wkey[t0] = key2;
+            }
+            if (t1 != S48_OUT) { /* child 1: base neighbour child 0 of L1 */
+                const uint16_t l1 = tn[2];
+                on = wtn + 3u * t1;
+                on[0] = s48_local(l1) ? tm[2u * l1] : l1;
+                on[1] = s48_local(nb) ? tm[2u * nb] : nb;
+                on[2] = (uint16_t)t0;
+                wkey[t1] = key2 + 1u;
+            }
         }
     }
     if (kv > cv) return 0;
-    /* the kept old vertices: ids, L; positions and flags, or (smoothed level) zero sums */
-    for (i = 0; i < nvp; i++) {
-        const uint32_t u = vm[i];
-        if (u == S48_OUT) continue;
-        w->vid[u] = p->vid[i];
-        if (w->vl)
-            s48_cp3(w->vl + 3u * u, p->vl + 3u * i);
+    /* the kept old vertices: ids, L; positions and flags, or (smoothed level) zero sums
+     * (one loop per case: why, the tests once) */
+    {
+        const uint32_t *pvid = p->vid;
+        uint32_t *wvid = w->vid;
         if (sm) {
-            s48_szero3(s, w, 3u * u);
+            for (i = 0; i < nvp; i++) {
+                const uint32_t u = vm[i];
+                if (u == S48_OUT) continue;
+                wvid[u] = pvid[i];
+                s48_szero3(s, w, 3u * u);
+            }
         } else {
-            s48_cp3(w->vp + 3u * u, p->vp + 3u * i);
-            w->vf[u] = p->vf[i];
+            subd_real *wvp = w->vp;
+            const subd_real *pvp = p->vp;
+            uint8_t *wvf = w->vf;
+            const uint8_t *pvf = p->vf;
+            for (i = 0; i < nvp; i++) {
+                const uint32_t u = vm[i];
+                if (u == S48_OUT) continue;
+                wvid[u] = pvid[i];
+                s48_cp3(wvp + 3u * u, pvp + 3u * i);
+                wvf[u] = pvf[i];
+            }
         }
+        if (w->vl)
+            for (i = 0; i < nvp; i++)
+                if (vm[i] != S48_OUT) s48_cp3(w->vl + 3u * vm[i], p->vl + 3u * i);
     }
     /* the new vertices, each from the diamond's lower triangle (refine's rule), when kept
-     * or summed; the sums in refine's order */
-    for (i = 0; i < nt; i++) {
-        const uint16_t *tv = p->tv + 3u * i;
-        const uint16_t nb = p->tn[3u * i], m = mt[i];
-        const uint32_t um = vm[m];
-        uint32_t e0 = tv[1], e1 = tv[2], mf, u0, u1, u2, u3 = S48_OUT, v3 = 0;
-        subd_real mp[3];
-        if (s48_local(nb) && nb < i) continue; /* made by the lower triangle */
-        if (um == S48_OUT && (!sm || nb == S48_OUT)) continue; /* neither kept nor summed */
-        u0 = vm[tv[0]];
-        u1 = vm[tv[1]];
-        u2 = vm[tv[2]];
-        if (s48_local(nb)) {
-            v3 = p->tv[3u * nb];
-            u3 = vm[v3];
-        }
-        if (um == S48_OUT && u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
-        if (s48_local(nb) && s->smooth) {
-            e0 = tv[0];
-            e1 = v3;
-        }
-        mf = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT) ? S48_EXACT : 0u;
-        s48_mid3(mp, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
-        if (um != S48_OUT) {
-            s48_cp3(w->vp + 3u * um, mp);
+     * or summed; the sums in refine's order. Not smoothed: the kept ones only, their own
+     * loop (why: no sums to test per triangle, fewer live values) */
+    if (!sm) {
+        const uint16_t *ptv = p->tv, *ptn = p->tn;
+        const uint32_t smooth = s->smooth;
+        for (i = 0; i < nt; i++) {
+            const uint16_t *tv = ptv + 3u * i;
+            const uint16_t nb = ptn[3u * i];
+            const uint32_t um = vm[mt[i]];
+            uint32_t e0 = tv[1], e1 = tv[2], mf;
+            if ((s48_local(nb) && nb < i) || um == S48_OUT) continue; /* the lower one's, or not kept */
+            if (s48_local(nb) && smooth) {
+                e0 = tv[0];
+                e1 = ptv[3u * nb];
+            }
+            mf = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT) ? S48_EXACT : 0u;
+            s48_mid3(w->vp + 3u * um, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
             w->vf[um] = (uint8_t)mf;
             if (w->vl) /* L: the base midpoint, whatever the smoothing */
                 s48_mid3(w->vl + 3u * um, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
             w->vid[um] = idj | p->key[i];
         }
-        if (!sm || nb == S48_OUT) continue;
-        {
-            const int bnd = nb == S48_BND;
-            if (u1 != S48_OUT) s48_rc_scatter(s, w, tv[1], u1, mp, mf, bnd);
-            if (u2 != S48_OUT) s48_rc_scatter(s, w, tv[2], u2, mp, mf, bnd);
-            if (u0 != S48_OUT) s48_rc_scatter(s, w, tv[0], u0, mp, mf, 0);
-            if (u3 != S48_OUT) s48_rc_scatter(s, w, v3, u3, mp, mf, 0);
+    } else {
+        const uint16_t *ptv = p->tv, *ptn = p->tn;
+        const uint8_t *pvf = p->vf;
+        const subd_real *pvp = p->vp;
+        for (i = 0; i < nt; i++) {
+            const uint16_t *tv = ptv + 3u * i;
+            const uint16_t nb = ptn[3u * i];
+            const uint32_t um = vm[mt[i]];
+            uint32_t e0 = tv[1], e1 = tv[2], mf, u0, u1, u2, u3 = S48_OUT, v3 = 0;
+            subd_real mp[3];
+            if (s48_local(nb) && nb < i) continue; /* made by the lower triangle */
+            if (um == S48_OUT && nb == S48_OUT) continue; /* neither kept nor summed */
+            u0 = vm[tv[0]];
+            u1 = vm[tv[1]];
+            u2 = vm[tv[2]];
+            if (s48_local(nb)) {
+                v3 = ptv[3u * nb];
+                u3 = vm[v3];
+                e0 = tv[0]; /* smoothed: the apexes */
+                e1 = v3;
+            }
+            if (um == S48_OUT && u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
+            mf = (nb != S48_OUT) && (pvf[e0] & pvf[e1] & S48_EXACT) ? S48_EXACT : 0u;
+            s48_mid3(mp, pvp + 3u * e0, pvp + 3u * e1, &ovf);
+            if (um != S48_OUT) {
+                s48_cp3(w->vp + 3u * um, mp);
+                w->vf[um] = (uint8_t)mf;
+                if (w->vl) /* L: the base midpoint, whatever the smoothing */
+                    s48_mid3(w->vl + 3u * um, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
+                w->vid[um] = idj | p->key[i];
+            }
+            if (nb == S48_OUT) continue;
+            {
+                const int bnd = nb == S48_BND;
+                if (u1 != S48_OUT) s48_rc_scatter(s, w, tv[1], u1, mp, mf, bnd);
+                if (u2 != S48_OUT) s48_rc_scatter(s, w, tv[2], u2, mp, mf, bnd);
+                if (u0 != S48_OUT) s48_rc_scatter(s, w, tv[0], u0, mp, mf, 0);
+                if (u3 != S48_OUT) s48_rc_scatter(s, w, v3, u3, mp, mf, 0);
+            }
         }
     }
     if (sm)

@@ -12,7 +12,12 @@
  *    n0 2^(L - m - 1) with n0 base triangles), and none made again with the two rings: the
  *    smaller crops were exact on every tile of these shapes - closed and open, extraordinary
  *    vertices of valence 3..16 after pre-processing (bipyramids), a mesh with isolated
- *    triangles, the icosahedron, the torus -, smoothed and not, both arithmetics. */
+ *    triangles, the icosahedron, the torus -, smoothed and not, both arithmetics;
+ *  - too small first crops (S48_TILE_TINY: the descendants and their partners) give the same
+ *    triangles and bits, and some smoothed tiles are made again: the exactness checks
+ *    (subd_s48_last_'s when max_level is even and smoothed, else s48_tile_exact's) fire
+ *    where a position would not be exact, rather than let it out;
+ *  - shapes scaled to the Q16.16 limit (sr48t_big): the smoothing sums carry. */
 #include "harness.h"
 #include "corpus.h"
 #include "fixtures.h"
@@ -40,11 +45,14 @@ static uint8_t g_tl_big[48u << 20] __attribute__((aligned(8))); /* hierarchies u
 #endif
 
 static uint64_t g_tl_id[TL_MAXV];
+static uint32_t g_tl_tiny; /* tiles made again after too small first crops (S48_TILE_TINY) */
 static uint8_t g_tl_have[TL_MAXV];
 static subd_tri g_tl_buf[64];
 
 /* The stream of base with max_level L against the extraction out, pulled in batches of 64;
- * full: the two rings alone. *tiles, *twice: the tile counters after the last triangle. */
+ * full: 1 the two rings alone, 2 too small first crops (S48_TILE_TINY: the exactness checks
+ * must send tiles to the two rings). *tiles, *twice: the tile counters after the last
+ * triangle. */
 static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, int full, uint32_t *tiles,
                       uint32_t *twice)
 {
@@ -65,7 +73,7 @@ static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, i
         s48_win a;
         if (s->tm > 1u && full) {
             s48_win_at(s, s->ablk, s->aoff, &a);
-            a.hd[7] |= S48_TILE_FULL;
+            a.hd[7] |= full == 1 ? S48_TILE_FULL : S48_TILE_TINY;
         }
     }
     for (i = 0; i < out->num_verts; i++) g_tl_have[i] = 0;
@@ -92,7 +100,7 @@ static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, i
             s48_x(s, &x);
             s48_win_at(s, s->ablk, s->aoff, &a);
             *tiles = x.hd[7];
-            *twice = a.hd[7] & ~S48_TILE_FULL;
+            *twice = a.hd[7] & ~(S48_TILE_FULL | S48_TILE_TINY);
         }
     }
     CHECK_EQ(got, 0);
@@ -101,7 +109,11 @@ static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, i
     for (i = 0; i < out->num_verts; i++) CHECK(g_tl_have[i]);
 }
 
-static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
+/* big: the shape scaled so that its largest coordinate is near the Q16.16 limit (raw
+ * |x| >= 2^30; float: the same numbers), so that smoothing sums of four or more terms leave
+ * 32 bits and carry into their high parts (sr48_stream_internal.h's s48_sadd1), upwards
+ * and, where the shape has negative coordinates (the icosahedron, the bipyramid), downwards. */
+static void tl_case_s(int shape, uint32_t bn, uint32_t L, uint32_t flags, int big)
 {
     subd_arena a;
     subd_mesh in, out;
@@ -113,6 +125,22 @@ static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
     uint32_t tiles, twice, n0, want, m = SUBD_SR48_STREAM_TILE_LEVELS;
     subd_arena_init(&a, TL_MAT, TL_MAT_BYTES);
     if (!fx_sr48_shape(shape, bn, &a, &in)) return;
+    if (big) {
+        subd_real mx = 0;
+        uint32_t i;
+        for (i = 0; i < 3u * in.num_verts; i++) {
+            const subd_real v = in.pos[i] < 0 ? -in.pos[i] : in.pos[i];
+            if (v > mx) mx = v;
+        }
+        if (!CHECK(mx > 0)) return;
+        for (i = 0; i < 3u * in.num_verts; i++) {
+#if SUBD_FIXED /* raw * (2^31 - 2^16) / max: |raw| <= 2^31 - 2^16, the largest >= 2^30 */
+            in.pos[i] = (subd_real)(((int64_t)in.pos[i] * 2147418112) / mx);
+#else
+            in.pos[i] = in.pos[i] / mx * 32767.0f;
+#endif
+        }
+    }
     o.steps = L;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -130,13 +158,19 @@ static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags)
     tl_stream(&base, &out, L, 1, &tiles, &twice);
     CHECK_EQ(tiles, want);
     CHECK_EQ(twice, want);
+    tl_stream(&base, &out, L, 2, &tiles, &twice);
+    CHECK_EQ(tiles, want);
+    CHECK(twice <= want);
+    g_tl_tiny += twice;
 }
+static void tl_case(int shape, uint32_t bn, uint32_t L, uint32_t flags) { tl_case_s(shape, bn, L, flags, 0); }
 
 /* Tiles from level 0 over a hybrid pair (L <= m), from level 0 per base triangle (L = m + 1)
  * and below depth-first levels (L = m + 2), where the materialised hierarchy fits. */
 static void sr48t_tiles(void)
 {
     uint32_t f;
+    g_tl_tiny = 0;
     for (f = 0; f < 2u; f++) {
         const uint32_t fl = f ? SUBD_SR48_NO_SMOOTH : 0u;
         uint32_t bn, L;
@@ -154,9 +188,30 @@ static void sr48t_tiles(void)
         (void)bn;
 #endif
     }
+    /* the checks fired: smoothed tiles from too small crops were made again (and gave the
+     * extraction's bits above) */
+    CHECK(g_tl_tiny > 0u);
+}
+
+/* Coordinates near the Q16.16 limit: the smoothing sums carry into their high parts (every
+ * level, the tile's last one included), against the materialised hierarchy's 64-bit sums. */
+static void sr48t_big(void)
+{
+    uint32_t f;
+    for (f = 0; f < 2u; f++) {
+        const uint32_t fl = f ? SUBD_SR48_NO_SMOOTH : 0u;
+        tl_case_s(FX48_TWO, 5, 4, fl, 1);
+        tl_case_s(FX48_HEXFAN, 5, 6, fl, 1);
+#if H_HOST
+        tl_case_s(FX48_ICO, 5, 8, fl, 1);
+        tl_case_s(FX48_BIPYR, 7, 8, fl, 1);
+        tl_case_s(FX48_TORUS, 5, 7, fl, 1);
+#endif
+    }
 }
 
 const test_case suite_sr48_tiles[] = {
     {"sr48t_tiles", sr48t_tiles},
+    {"sr48t_big", sr48t_big},
     {0, 0},
 };

@@ -25,13 +25,16 @@
  * subd_sr48_base never makes, makes every one): on spot's base about one gathering per pair
  * instead of three, the same N (the tests compare it with every gathering made).
  *
+ * Cost (0.6.0, later): a fan triangle after the first is entered by an edge of the one before,
+ * whose corners are stamped already: only its third corner is tested (the same queue).
+ *
  * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
- * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
- * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,
- * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). The
- * fan's words are no longer read (each fan is merged as it is walked, 0.6.0) but still taken,
- * so that subd_sr48_base_plan stays as published; dropping them lowers that plan where the
- * census is its peak. */
+ * ring distance), a stamp per base triangle and the gathering's queue (a vertex and the
+ * triangle it was found in): 12 bytes per base vertex and 4 per base triangle, taken by
+ * subd_sr48_base above its output and released. Cost: O(triangles * window). (It also took
+ * one fan, nt0 + 1 words no longer read once each fan was merged as it is walked; dropped
+ * before 0.6.0's release, which lowers subd_sr48_base_plan by 4 (nt0 + 1) bytes where the
+ * census is its peak.) */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 #include "layout.h"
@@ -41,7 +44,7 @@
 
 typedef struct s48n_work {
     const subd_sr48 *b;
-    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan (unread: see above) */
+    uint32_t *vs, *ts, *qv, *qt; /* stamps; queue */
     uint32_t run;
 } s48n_work;
 
@@ -54,7 +57,6 @@ static int s48n_layout(subd_arena *a, uint32_t nv0, uint32_t nt0, s48n_work *w, 
     w->ts = (uint32_t *)subd_layout_take(&l, nt0, 4u);
     w->qv = (uint32_t *)subd_layout_take(&l, nv0, 4u);
     w->qt = (uint32_t *)subd_layout_take(&l, nv0, 4u);
-    w->fan = (uint32_t *)subd_layout_take(&l, nt0 + 1u, 4u);
     return subd_layout_end(&l, bytes);
 }
 
@@ -106,7 +108,7 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
             w->qt[nv++] = p;
         }
     for (q = 0; q < nv; q++) {
-        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u, t = w->qt[q], nt0 = nt;
+        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u, t = w->qt[q], nt0 = nt, vtag = tag + dist + 1u;
         uint32_t nf = 1, dir;
         if (dist >= S48N_RINGS) continue;
         s48n_merge(w, t, tag, dist, &nt, &nv);
@@ -119,10 +121,20 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
                     around = 1;
                     break;
                 }
-                s48n_merge(w, nx, tag, dist, &nt, &nv);
+                /* nx entered by the edge (x, e) of cur, merged already: only its third
+                 * corner (the next e) can be new (s48n_merge's order: the same queue) */
+                slot = subd_s48_fan_enter_(b, x, nx, &e);
+                if (w->ts[nx] != tag) {
+                    w->ts[nx] = tag;
+                    nt++;
+                    if ((w->vs[e] & ~3u) != tag) {
+                        w->vs[e] = vtag;
+                        w->qv[nv] = e;
+                        w->qt[nv++] = nx;
+                    }
+                }
                 nf++;
                 cur = nx;
-                slot = subd_s48_fan_enter_(b, x, nx, &e);
             }
             if (i == cap) nf = cap; /* a broken fan: the stream's check refuses the base */
             if (around || i == cap) break;

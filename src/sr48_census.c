@@ -110,7 +110,7 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
     for (q = 0; q < nv; q++) {
         const uint32_t x = w->qv[q], dist = w->vs[x] & 3u, t = w->qt[q], nt0 = nt, vtag = tag + dist + 1u;
         uint32_t nf = 1, dir;
-        if (dist >= S48N_RINGS) continue;
+        if (dist >= S48N_RINGS) break; /* breadth first: the rest of the queue is as far */
         s48n_merge(w, t, tag, dist, &nt, &nv);
         for (dir = 0; dir < 2u; dir++) {
             uint32_t e, cur = t, i, around = 0, slot = subd_s48_fan_first_(b, x, t, dir, &e);

@@ -241,11 +241,13 @@ static int s48_h0_fan(s48_state *s, uint16_t *ht, uint32_t tm, uint16_t *hv, uin
  * by index; local vertices and neighbours. small: ring 1 (the fans of t0's corners) and the
  * base neighbours of its triangles only, the uniform tile's smaller crop at level 0
  * (sr48_tile.c; hd[7] = 1 says so). 0 when a capacity is exceeded.
- * Cost (0.6.0, later): each fan is merged as it is walked (s48_h0_fan); the sort works on a copy
- * of the triangles (w.key), so the triangle table keeps its gathering indices and the
- * neighbours are looked up in it through the inverse permutation (in vmap, the vertex
- * table, free once gathered) instead of a second table; a leg's neighbour inside the hybrid
- * pair (2H, 2H + 1) is the next or previous sorted triangle. */
+ * Cost (0.6.0, later): each fan is merged as it is walked (s48_h0_fan), its vertex x not
+ * looked up; the walk stops at the first vertex of the last ring (breadth first: the queue
+ * is sorted by distance); the sort moves gathering indices only (perm; the sorted triangles
+ * into w.key), so the triangle table keeps its gathering indices and the neighbours are
+ * looked up in it through the inverse permutation (in vmap, the vertex table, free once
+ * gathered) instead of a second table; a leg's neighbour inside the hybrid pair (2H, 2H + 1)
+ * is the next or previous sorted triangle. */
 static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
 {
     const subd_sr48 *b = s->base;
@@ -272,7 +274,7 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             s->dist[nv++] = 0;
         }
     for (q = 0; q < nv; q++) {
-        if (s->dist[q] >= (small ? 1u : S48_RINGS)) continue;
+        if (s->dist[q] >= (small ? 1u : S48_RINGS)) break; /* breadth first: the rest is as far */
         if (!s48_h0_fan(s, ht, tm, hv, vm, q, &nt, &nv, w.tn)) return 0;
     }
     if (small) { /* the base neighbours of ring 1 (dist: unused from here) */
@@ -287,29 +289,25 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, 2u, w.tn, SUBD_NONE, 0u)) return 0;
         }
     }
-    /* sort a copy of the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them,
-     * distinct) in w.key, with their gathering order in perm; gt keeps the gathering order
-     * (the table's keys) until the neighbours are found */
-    for (i = 0; i < nt; i++) {
-        w.key[i] = s->gt[i];
-        perm[i] = (uint16_t)i;
-    }
+    /* sort the triangles' gathering indices by triangle (perm; Shell sort, gaps 57 23 10 4
+     * 1: at most wt of them, distinct), the sorted triangles into w.key; gt keeps the
+     * gathering order (the table's keys) until the neighbours are found */
+    for (i = 0; i < nt; i++) perm[i] = (uint16_t)i;
     for (p = 0; p < 5u; p++) {
         static const uint8_t gap[5] = {57u, 23u, 10u, 4u, 1u};
         const uint32_t g = gap[p];
         for (i = g; i < nt; i++) {
-            const uint32_t x = w.key[i];
             const uint16_t o = perm[i];
+            const uint32_t x = s->gt[o];
             j = i;
-            while (j >= g && w.key[j - g] > x) {
-                w.key[j] = w.key[j - g];
+            while (j >= g && s->gt[perm[j - g]] > x) {
                 perm[j] = perm[j - g];
                 j -= g;
             }
-            w.key[j] = x;
             perm[j] = o;
         }
     }
+    for (i = 0; i < nt; i++) w.key[i] = s->gt[perm[i]];
     /* the corners' local indices, recorded by s48_h0_add in tn's place in gathering order;
      * the inverse permutation */
     for (i = 0; i < nt; i++) {

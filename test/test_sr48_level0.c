@@ -171,33 +171,18 @@ static void sr48l0_valence(void)
  *    largest) is refused by begin and by the push form with plan's status on it, the arena
  *    unchanged and no triangle emitted. */
 #define L0_ST_ARENA (64u * 1024u)
-#define L0_MAXT (H_HOST ? 8192u : 1024u)
-#define L0_MAXB 1024u
 
+/* The stream's triangles checked as they come: UNIFORM against face n of the extraction
+ * (same corner bits, each extraction vertex always with one id), POINT kept as sorted keys.
+ * Arrays from the materialised arena's free space (no static buffers: device RAM). */
 typedef struct l0_sink {
-    uint32_t n, over;
-    subd_real pos[9u * L0_MAXT];
-    uint64_t id[3u * L0_MAXT];
+    const subd_mesh *out;
+    uint64_t *idv; /* UNIFORM: the id of each extraction vertex (UINT64_MAX: not met yet) */
+    uint32_t *kb;  /* POINT: the triangles' keys */
+    uint32_t n, bad;
 } l0_sink;
-static l0_sink g_l0s;
-static int l0_tri(void *ctx, const subd_tri *t)
-{
-    l0_sink *s = (l0_sink *)ctx;
-    uint32_t i, j;
-    if (s->n >= L0_MAXT) {
-        s->over = 1;
-        return 0;
-    }
-    for (i = 0; i < 3u; i++) {
-        for (j = 0; j < 3u; j++) s->pos[9u * s->n + 3u * i + j] = t->pos[i][j];
-        s->id[3u * s->n + i] = t->id[i];
-    }
-    s->n++;
-    return 0;
-}
 
 /* A triangle's 9 position bits rotated to start at its smallest corner (sorted compare). */
-static uint32_t g_l0ka[9u * L0_MAXT], g_l0kb[9u * L0_MAXT];
 static void l0_key(uint32_t *row, const subd_real *p)
 {
     uint32_t c[9], i, r = 0, k;
@@ -207,39 +192,45 @@ static void l0_key(uint32_t *row, const subd_real *p)
     for (k = 0; k < 3u; k++) memcpy(&row[3u * k], &c[3u * ((r + k) % 3u)], 12);
 }
 static int l0_cmp(const void *a, const void *b) { return memcmp(a, b, 36); }
-
-/* UNIFORM: each extraction vertex has one stream id, and no two have the same one (the ids
- * a bijection onto the extraction's corners). */
-static uint64_t g_l0idv[L0_MAXT * 3u], g_l0ids[L0_MAXT * 3u];
 static int l0_cmp64(const void *a, const void *b)
 {
     const uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
     return x < y ? -1 : x > y;
 }
-static uint32_t l0_ids(const subd_mesh *out)
+
+static int l0_tri(void *ctx, const subd_tri *t)
 {
-    uint32_t i, n = 0, bad = 0;
-    if (out->num_verts > L0_MAXT * 3u) return 1;
-    for (i = 0; i < out->num_verts; i++) g_l0idv[i] = UINT64_MAX;
-    for (i = 0; i < 3u * g_l0s.n; i++) {
-        const uint32_t v = out->corner_vert[i];
-        if (g_l0idv[v] == UINT64_MAX) {
-            g_l0idv[v] = g_l0s.id[i];
-            g_l0ids[n++] = g_l0s.id[i];
-        } else if (g_l0idv[v] != g_l0s.id[i]) {
-            bad++;
+    l0_sink *s = (l0_sink *)ctx;
+    const subd_mesh *out = s->out;
+    uint32_t c, j;
+    if (s->n >= out->num_faces) { /* more triangles than the extraction */
+        s->bad++;
+        return 0;
+    }
+    if (s->kb) {
+        subd_real p[9];
+        for (c = 0; c < 3u; c++)
+            for (j = 0; j < 3u; j++) p[3u * c + j] = t->pos[c][j];
+        l0_key(s->kb + 9u * s->n, p);
+    } else {
+        for (c = 0; c < 3u; c++) {
+            const uint32_t v = out->corner_vert[3u * s->n + c];
+            for (j = 0; j < 3u; j++)
+                if (!h_same(out->pos[3u * v + j], t->pos[c][j])) s->bad++;
+            if (s->idv[v] == UINT64_MAX) s->idv[v] = t->id[c];
+            if (s->idv[v] != t->id[c]) s->bad++;
         }
     }
-    qsort(g_l0ids, n, sizeof g_l0ids[0], l0_cmp64);
-    for (i = 1; i < n; i++) bad += g_l0ids[i] == g_l0ids[i - 1u];
-    return bad;
+    s->n++;
+    return 0;
 }
 
 #if H_HOST
 static uint8_t g_l0mat[4u << 20] __attribute__((aligned(8))); /* the hierarchy at level 3 */
 #endif
 
-/* One shape at levels 1..3, UNIFORM and POINT, smoothing on and off. */
+/* One shape at one level, UNIFORM or POINT, smoothing on or off; at level 1 (the host's and
+ * the device's) the triangles' bits into *hv. */
 static void l0_stream_case(int shape, uint32_t levels, uint32_t flags, int point, uint32_t *hv)
 {
     subd_arena a, sa;
@@ -250,7 +241,9 @@ static void l0_stream_case(int shape, uint32_t levels, uint32_t flags, int point
     subd_sr48_adapt_report rep;
     subd_diag d;
     subd_tri_sink sink;
-    uint32_t plan = 0, i, j, bad = 0;
+    l0_sink k;
+    uint32_t plan = 0, i, c, n = 0, *ka = 0;
+    uint64_t *ids = 0;
 #if H_HOST
     subd_arena_init(&a, g_l0mat, (uint32_t)sizeof g_l0mat);
 #else
@@ -266,42 +259,46 @@ static void l0_stream_case(int shape, uint32_t levels, uint32_t flags, int point
     so.adapt.radius = fx_real(0.25);
     if (!CHECK_OK(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), &d)) return;
     if (!CHECK_OK(subd_sr48_base(&a, &in, flags, &base, &d), &d)) return;
-    if (!CHECK(out.num_faces <= L0_MAXT)) return;
+    memset(&k, 0, sizeof k);
+    k.out = &out;
+    if (point) {
+        ka = (uint32_t *)subd_arena_alloc(&a, 36u * out.num_faces);
+        k.kb = (uint32_t *)subd_arena_alloc(&a, 36u * out.num_faces);
+        if (!CHECK(ka != 0 && k.kb != 0)) return;
+    } else {
+        k.idv = (uint64_t *)subd_arena_alloc(&a, 8u * out.num_verts);
+        ids = (uint64_t *)subd_arena_alloc(&a, 8u * out.num_verts);
+        if (!CHECK(k.idv != 0 && ids != 0)) return;
+        for (i = 0; i < out.num_verts; i++) k.idv[i] = UINT64_MAX;
+    }
     if (!CHECK_OK(subd_sr48_stream_plan(&base, &so, &plan, &d), &d) || !CHECK(plan <= L0_ST_ARENA)) return;
     subd_arena_init(&sa, h_arena_buf + H_ARENA_BYTES - L0_ST_ARENA, L0_ST_ARENA);
-    g_l0s.n = 0;
-    g_l0s.over = 0;
     sink.tri = l0_tri;
-    sink.ctx = &g_l0s;
+    sink.ctx = &k;
     if (!CHECK_OK(subd_sr48_stream(&sa, &base, &so, &sink, &d), &d)) return;
     CHECK_EQ(sa.peak, plan);
-    CHECK_EQ(g_l0s.over, 0u);
-    if (!CHECK_EQ(g_l0s.n, out.num_faces)) return;
-    for (i = 0; i < out.num_faces; i++) {
-        subd_real q[9];
-        uint32_t c;
-        for (c = 0; c < 3u; c++)
-            for (j = 0; j < 3u; j++) q[3u * c + j] = out.pos[3u * out.corner_vert[3u * i + c] + j];
-        if (!point) {
-            for (j = 0; j < 9u; j++)
-                if (!h_same(q[j], g_l0s.pos[9u * i + j])) bad++;
-            continue;
-        }
-        l0_key(&g_l0ka[9u * i], q);
-        l0_key(&g_l0kb[9u * i], &g_l0s.pos[9u * i]);
-    }
+    if (!CHECK_EQ(k.n, out.num_faces)) return;
     if (point) {
-        qsort(g_l0ka, out.num_faces, 36, l0_cmp);
-        qsort(g_l0kb, out.num_faces, 36, l0_cmp);
-        bad += memcmp(g_l0ka, g_l0kb, 36u * out.num_faces) != 0;
-    } else {
-        bad += l0_ids(&out);
+        for (i = 0; i < out.num_faces; i++) {
+            subd_real q[9];
+            uint32_t j;
+            for (c = 0; c < 3u; c++)
+                for (j = 0; j < 3u; j++) q[3u * c + j] = out.pos[3u * out.corner_vert[3u * i + c] + j];
+            l0_key(ka + 9u * i, q);
+        }
+        qsort(ka, out.num_faces, 36, l0_cmp);
+        qsort(k.kb, out.num_faces, 36, l0_cmp);
+        k.bad += memcmp(ka, k.kb, 36u * out.num_faces) != 0;
+        if (levels == 1u) *hv = h_fnv(*hv, k.kb, 36u * out.num_faces);
+    } else { /* no two extraction vertices with one id: the ids a bijection onto them */
+        for (i = 0; i < out.num_verts; i++)
+            if (k.idv[i] != UINT64_MAX) ids[n++] = k.idv[i];
+        CHECK_EQ(n, out.num_verts);
+        qsort(ids, n, sizeof ids[0], l0_cmp64);
+        for (i = 1; i < n; i++) k.bad += ids[i] == ids[i - 1u];
+        if (levels == 1u) *hv = h_fnv(*hv, out.pos, (uint32_t)sizeof(subd_real) * 3u * out.num_verts);
     }
-    CHECK_EQ(bad, 0u);
-    for (i = 0; i < 9u * g_l0s.n; i++) {
-        const uint32_t bits = subd_real_bits(g_l0s.pos[i]);
-        *hv = h_fnv(*hv, &bits, 4);
-    }
+    CHECK_EQ(k.bad, 0u);
 }
 
 static void sr48l0_stream(void)
@@ -313,7 +310,7 @@ static void sr48l0_stream(void)
     for (s = 0; s < 5u; s++) {
         uint32_t hv = 2166136261u;
         for (f = 0; f < 2u; f++)
-            for (l = 1; l <= (H_HOST ? 3u : 2u); l++)
+            for (l = 1; l <= (H_HOST ? 3u : 1u); l++)
                 for (p = 0; p < 2u; p++) l0_stream_case(shapes[s], l, f ? SUBD_SR48_NO_SMOOTH : 0u, (int)p, &hv);
         h_hash(names[s], hv);
     }
@@ -329,34 +326,32 @@ static int l0_count(void *ctx, const subd_tri *t)
     return 0;
 }
 
-static uint32_t g_l0nb[L0_MAXB], g_l0tv[3u * L0_MAXB];
-
-/* Damage k (0..6) to a copy of base, or 0 when there is no such damage here. */
-static int l0_damage(const subd_sr48 *base, uint32_t k, subd_sr48 *bad, int *want)
+/* Damage k (0..6) to a copy of base (nb, tv: room for its tri_base_nb and tri_vert), or 0
+ * when there is no such damage here. */
+static int l0_damage(const subd_sr48 *base, uint32_t k, subd_sr48 *bad, uint32_t *nb, uint32_t *tv, int *want)
 {
     const uint32_t n0 = base->level_tri[1];
     uint32_t t;
     *bad = *base;
-    if (n0 > L0_MAXB) return 0;
-    for (t = 0; t < n0; t++) g_l0nb[t] = base->tri_base_nb[t];
-    for (t = 0; t < 3u * n0; t++) g_l0tv[t] = base->tri_vert[t];
+    for (t = 0; t < n0; t++) nb[t] = base->tri_base_nb[t];
+    for (t = 0; t < 3u * n0; t++) tv[t] = base->tri_vert[t];
     *want = SUBD_ERR_PARAM;
     switch (k) {
     case 0: /* a base neighbour that does not point back: itself */
-        g_l0nb[0] = 0;
-        bad->tri_base_nb = g_l0nb;
+        nb[0] = 0;
+        bad->tri_base_nb = nb;
         return 1;
     case 1: /* a base neighbour pointing back across another edge: t's pair partner's */
         for (t = 0; t < n0; t++)
-            if (g_l0nb[t] != SUBD_NONE && g_l0nb[t ^ 1u] != SUBD_NONE && g_l0nb[t ^ 1u] != g_l0nb[t]) {
-                g_l0nb[t] = g_l0nb[t ^ 1u];
-                bad->tri_base_nb = g_l0nb;
+            if (nb[t] != SUBD_NONE && nb[t ^ 1u] != SUBD_NONE && nb[t ^ 1u] != nb[t]) {
+                nb[t] = nb[t ^ 1u];
+                bad->tri_base_nb = nb;
                 return 1;
             }
         return 0;
     case 2: /* a vertex out of range */
-        g_l0tv[3u * (n0 - 1u) + 2u] = base->num_verts;
-        bad->tri_vert = g_l0tv;
+        tv[3u * (n0 - 1u) + 2u] = base->num_verts;
+        bad->tri_vert = tv;
         return 1;
     case 3: bad->hyb_base_nb = 0; return 1;
     case 4: bad->steps = 1; return 1;
@@ -385,10 +380,13 @@ static void sr48l0_between(void)
             subd_diag d;
             subd_tri_sink sink;
             subd_stream str;
-            uint32_t plan = 0, p2 = 0;
+            uint32_t plan = 0, p2 = 0, *nb, *tv;
             subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES - L0_ST_ARENA);
             if (!fx_sr48_shape(shapes[s], 12u, &a, &in) || !CHECK_OK(subd_sr48_base(&a, &in, 0u, &base, &d), &d))
                 continue;
+            nb = (uint32_t *)subd_arena_alloc(&a, 4u * base.level_tri[1]);
+            tv = (uint32_t *)subd_arena_alloc(&a, 12u * base.level_tri[1]);
+            if (!CHECK(nb != 0 && tv != 0)) continue;
             memset(&so, 0, sizeof so);
             so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
             so.adapt.max_level = l;
@@ -397,7 +395,7 @@ static void sr48l0_between(void)
             sink.ctx = 0;
             for (k = 0; k < 7u; k++) {
                 int want, st;
-                if (!l0_damage(&base, k, &bad, &want)) continue;
+                if (!l0_damage(&base, k, &bad, nb, tv, &want)) continue;
                 /* plan on the good base succeeded; the caller damages it, then begins */
                 CHECK_FAIL(subd_sr48_stream_plan(&bad, &so, &p2, &d), &d, want);
                 subd_arena_init(&sa, h_arena_buf + H_ARENA_BYTES - L0_ST_ARENA, L0_ST_ARENA);

@@ -124,20 +124,18 @@ static uint32_t s48_fan(const subd_sr48 *b, uint32_t x, uint32_t t, uint32_t *ou
 uint32_t subd_s48_valence_cnt_(const subd_sr48 *b, const uint32_t *corners, uint32_t *two)
 {
     uint32_t t, j, best = 0;
-    for (t = 0; t < b->level_tri[1]; t++) {
-        /* t's neighbours across its three slots, once for its three corners */
-        const uint32_t nb[3] = {s48_base_nbr(b, t, 0u), s48_base_nbr(b, t, 1u), s48_base_nbr(b, t, 2u)};
+    for (t = 0; t < b->level_tri[1]; t++)
         for (j = 0; j < 3u; j++) {
             /* t's neighbours across its two edges at corner j (s48_slot_at): one below t
              * (SUBD_NONE is above every index), and the walk from t would stop there */
-            const uint32_t x = b->tri_vert[3u * t + j];
+            const uint32_t x = b->tri_vert[3u * t + j], n0 = s48_base_nbr(b, t, s48_slot_at(j, 0u)),
+                           n1 = s48_base_nbr(b, t, s48_slot_at(j, 1u));
             uint32_t n;
-            if (nb[s48_slot_at(j, 0u)] < t || nb[s48_slot_at(j, 1u)] < t) continue;
+            if (n0 < t || n1 < t) continue;
             n = s48_fan_lo(b, x, t, 0, 0xffffu, t);
             if (n > best) best = n;
             if (corners && n != 0u && n != corners[x]) *two = 1;
         }
-    }
     return best;
 }
 uint32_t subd_s48_valence_(const subd_sr48 *b) { return subd_s48_valence_cnt_(b, 0, 0); }

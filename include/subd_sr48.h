@@ -163,7 +163,7 @@ int subd_sr48_build(subd_arena *a, const subd_mesh *in, const subd_sr48_opts *o,
 
 /* subd_sr48_base_plan: the arena bytes subd_sr48_base uses, in *bytes: subd_sr48_plan of
  * steps = 0 plus 4 bytes per hybrid triangle (level_tri[1] / 2) for hyb_base_nb, unless the
- * census of the level-0 windows (stream_valence: 12 bytes per base vertex and 8 per base
+ * census of the level-0 windows (stream_valence: 12 bytes per base vertex and 4 per base
  * triangle, above the output) needs more; exact with subd_sr48_count_clusters' count, a
  * bound with SUBD_SR48_CLUSTERS_UNKNOWN.
  * Memory: no arena use.

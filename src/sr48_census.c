@@ -25,13 +25,21 @@
  * subd_sr48_base never makes, makes every one): on spot's base about one gathering per pair
  * instead of three, the same N (the tests compare it with every gathering made).
  *
+ * Cost (0.6.0, later): a fan triangle after the first is entered by an edge of the one before,
+ * whose corners are stamped already: only its third corner is tested (the same queue); the
+ * gathering stops at the first vertex of the last ring (breadth first); and two consecutive
+ * pairs (2H .. 2H + 3, H even) are first bounded by one gathering from their four triangles
+ * (the same bound, subd_s48_census_run_), made alone only where it does not fit: on spot's
+ * base it fits for about three pairs in four: about 0.75 gatherings per pair, each a little
+ * larger.
+ *
  * Memory (subd_s48_census_bytes_): a stamp per base vertex (the run that reached it and its
- * ring distance), a stamp per base triangle, the gathering's queue (a vertex and the
- * triangle it was found in) and one fan: 12 bytes per base vertex and 8 per base triangle,
- * taken by subd_sr48_base above its output and released. Cost: O(triangles * window). The
- * fan's words are no longer read (each fan is merged as it is walked, 0.6.0) but still taken,
- * so that subd_sr48_base_plan stays as published; dropping them lowers that plan where the
- * census is its peak. */
+ * ring distance), a stamp per base triangle and the gathering's queue (a vertex and the
+ * triangle it was found in): 12 bytes per base vertex and 4 per base triangle, taken by
+ * subd_sr48_base above its output and released. Cost: O(triangles * window). (It also took
+ * one fan, nt0 + 1 words no longer read once each fan was merged as it is walked; dropped
+ * before 0.6.0's release, which lowers subd_sr48_base_plan by 4 (nt0 + 1) bytes where the
+ * census is its peak.) */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 #include "layout.h"
@@ -41,7 +49,7 @@
 
 typedef struct s48n_work {
     const subd_sr48 *b;
-    uint32_t *vs, *ts, *qv, *qt, *fan; /* stamps; queue; one fan (unread: see above) */
+    uint32_t *vs, *ts, *qv, *qt; /* stamps; queue */
     uint32_t run;
 } s48n_work;
 
@@ -54,7 +62,6 @@ static int s48n_layout(subd_arena *a, uint32_t nv0, uint32_t nt0, s48n_work *w, 
     w->ts = (uint32_t *)subd_layout_take(&l, nt0, 4u);
     w->qv = (uint32_t *)subd_layout_take(&l, nv0, 4u);
     w->qt = (uint32_t *)subd_layout_take(&l, nv0, 4u);
-    w->fan = (uint32_t *)subd_layout_take(&l, nt0 + 1u, 4u);
     return subd_layout_end(&l, bytes);
 }
 
@@ -106,9 +113,9 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
             w->qt[nv++] = p;
         }
     for (q = 0; q < nv; q++) {
-        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u, t = w->qt[q], nt0 = nt;
+        const uint32_t x = w->qv[q], dist = w->vs[x] & 3u, t = w->qt[q], nt0 = nt, vtag = tag + dist + 1u;
         uint32_t nf = 1, dir;
-        if (dist >= S48N_RINGS) continue;
+        if (dist >= S48N_RINGS) break; /* breadth first: the rest of the queue is as far */
         s48n_merge(w, t, tag, dist, &nt, &nv);
         for (dir = 0; dir < 2u; dir++) {
             uint32_t e, cur = t, i, around = 0, slot = subd_s48_fan_first_(b, x, t, dir, &e);
@@ -119,10 +126,20 @@ static void s48n_gather(s48n_work *w, uint32_t p0, uint32_t p1, uint32_t *need_t
                     around = 1;
                     break;
                 }
-                s48n_merge(w, nx, tag, dist, &nt, &nv);
+                /* nx entered by the edge (x, e) of cur, merged already: only its third
+                 * corner (the next e) can be new (s48n_merge's order: the same queue) */
+                slot = subd_s48_fan_enter_(b, x, nx, &e);
+                if (w->ts[nx] != tag) {
+                    w->ts[nx] = tag;
+                    nt++;
+                    if ((w->vs[e] & ~3u) != tag) {
+                        w->vs[e] = vtag;
+                        w->qv[nv] = e;
+                        w->qt[nv++] = nx;
+                    }
+                }
                 nf++;
                 cur = nx;
-                slot = subd_s48_fan_enter_(b, x, nx, &e);
             }
             if (i == cap) nf = cap; /* a broken fan: the stream's check refuses the base */
             if (around || i == cap) break;
@@ -150,7 +167,10 @@ static uint32_t s48n_fit(uint32_t n, uint32_t need_t, uint32_t need_v)
  * fewer; its nt + fan size at any vertex is at most |T| + that fan <= the pair's triangle
  * count + the pair's largest fan, its vertex count at most the pair's. A skipped gathering
  * then cannot raise N, as N only grows. A base with a vertex of two fans (corners counted
- * against the whole walks, subd_s48_valence_cnt_) makes every gathering. */
+ * against the whole walks, subd_s48_valence_cnt_) makes every gathering. Two consecutive pairs
+ * are bounded the same way by one gathering from their four triangles (seeds a superset of
+ * each pair's), tried first for H even; where it fits, both pairs and their triangles are
+ * skipped (6 in *skipped). */
 uint32_t subd_s48_census_run_(subd_arena *a, const subd_sr48 *b, uint32_t exact, uint32_t *skipped)
 {
     const uint32_t nv0 = b->level_verts[0], nt0 = b->level_tri[1];
@@ -168,6 +188,18 @@ uint32_t subd_s48_census_run_(subd_arena *a, const subd_sr48 *b, uint32_t exact,
     for (v = 0; v < nv0; v++) w.vs[v] = 0;
     for (t = 0; t < nt0; t++) w.ts[t] = 0;
     for (t = 0; t + 1u < nt0; t += 2u) {
+        if (!exact && !two && (t & 2u) == 0u && t + 3u < nt0) {
+            /* two pairs at once (2H, 2H + 1 and the next two: H even): their seeds are
+             * among the four triangles', so the same bound holds for both pairs and their
+             * triangles (below); made alone where it does not fit */
+            uint32_t gt = 0, gv = 0, ntg, nfg;
+            s48n_gather(&w, t, t + 3u, &gt, &gv, &ntg, &nfg);
+            if (ntg + nfg <= 6u * n + 16u && gv <= 4u * n + 16u) {
+                *skipped += 6u; /* two pairs and their four triangles */
+                t += 2u;
+                continue;
+            }
+        }
         s48n_gather(&w, t, t + 1u, &need_t, &need_v, &ntp, &nfp); /* uniform: the hybrid pair */
         n = s48n_fit(n, need_t, need_v);
         if (!exact && !two && ntp + nfp <= 6u * n + 16u) {

@@ -57,19 +57,19 @@ int subd_s48_base_check_(const subd_sr48 *b)
             return SUBD_ERR_PARAM;
         if (b->tri_base_nb[t] != SUBD_NONE && b->tri_base_nb[t] >= n0) return SUBD_ERR_PARAM;
     }
+    /* reciprocity: the slot of n with the ends (q, p) - the one starting at q's position i
+     * (slot 1 starts at corner 0, 0 at 1, 2 at 2; the corners are distinct, so it is the
+     * only candidate) - must point back to t */
     for (t = 0; t < n0; t++) {
+        static const uint8_t from[3] = {1u, 0u, 2u};
         s48_tri_verts(b, t, v);
         for (s = 0; s < 3u; s++) {
-            uint32_t n = s48_base_nbr(b, t, s), p, q, r, ok = 0;
+            uint32_t n = s48_base_nbr(b, t, s), p, q, i;
             if (n == SUBD_NONE) continue;
             s48_slot_ends(v, s, &p, &q);
             s48_tri_verts(b, n, u);
-            for (r = 0; r < 3u; r++) {
-                uint32_t p2, q2;
-                s48_slot_ends(u, r, &p2, &q2);
-                if (p2 == q && q2 == p && s48_base_nbr(b, n, r) == t) ok = 1;
-            }
-            if (!ok) return SUBD_ERR_PARAM;
+            i = u[0] == q ? 0u : u[1] == q ? 1u : u[2] == q ? 2u : 3u;
+            if (i == 3u || u[i == 2u ? 0u : i + 1u] != p || s48_base_nbr(b, n, from[i]) != t) return SUBD_ERR_PARAM;
         }
     }
     return SUBD_OK;
@@ -167,14 +167,23 @@ static uint32_t s48_h0_find(const uint16_t *tab, uint32_t hm, const uint32_t *ke
 
 /* Adds base triangle tt to the level-0 window being gathered (ht[h]: its empty slot) with
  * those of its corners not in it yet, at distance d; its corners' local indices into
- * lv[3 nt ..] (read back once the triangles are sorted). 0 when the vertex capacity is
- * exceeded. */
+ * lv[3 nt ..] (read back once the triangles are sorted). x, qx: a corner already in the
+ * window and its local index (a fan's vertex: no lookup; SUBD_NONE: none). 0 when the
+ * vertex capacity is exceeded. */
 static inline int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *hv, uint32_t vm, uint32_t tt, uint32_t *nt,
-                      uint32_t *nv, uint32_t d, uint16_t *lv)
+                             uint32_t *nv, uint32_t d, uint16_t *lv, uint32_t x, uint32_t qx)
 {
+    const uint32_t *tv = s->base->tri_vert + 3u * tt;
+    uint16_t *o = lv + 3u * *nt;
     uint32_t j;
     for (j = 0; j < 3u; j++) {
-        const uint32_t vx = s->base->tri_vert[3u * tt + j], g = s48_h0_find(hv, vm, s->gv, vx);
+        const uint32_t vx = tv[j];
+        uint32_t g;
+        if (vx == x) {
+            o[j] = (uint16_t)qx;
+            continue;
+        }
+        g = s48_h0_find(hv, vm, s->gv, vx);
         if (hv[g] == 0u) {
             if (*nv >= s->wv) return 0;
             hv[g] = (uint16_t)(*nv + 1u);
@@ -183,10 +192,45 @@ static inline int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *h
             s->dist[*nv] = (uint8_t)d;
             ++*nv;
         }
-        lv[3u * *nt + j] = (uint16_t)(hv[g] - 1u);
+        o[j] = (uint16_t)(hv[g] - 1u);
     }
     ht[h] = (uint16_t)(*nt + 1u);
     s->gt[(*nt)++] = tt;
+    return 1;
+}
+
+/* Merges the fan of window vertex q (base vertex x, found in triangle t) into the window
+ * being gathered, as s48_fan walks it (the same triangles in the same order): the fan's
+ * triangles not in the window yet, each with its corners. The capacities as when the whole
+ * fan was read into the free tail of gt before the merge: 0 when nt (before the fan) plus
+ * the fan's size exceeds wt, or a walk does not close (s48_fan's UINT32_MAX), or the vertex
+ * capacity is exceeded. */
+static int s48_h0_fan(s48_state *s, uint16_t *ht, uint32_t tm, uint16_t *hv, uint32_t vm, uint32_t q, uint32_t *nt,
+                      uint32_t *nv, uint16_t *lv)
+{
+    const subd_sr48 *b = s->base;
+    const uint32_t x = s->gv[q], t = s->gvt[q], d = s->dist[q] + 1u, lim = b->level_tri[1] + 1u;
+    const uint32_t cap = s->wt - *nt; /* the fan's room, as s48_fan's cap */
+    uint32_t n = 1, dir, h;
+    if (cap == 0u) return 0;
+    h = s48_h0_find(ht, tm, s->gt, t);
+    if (ht[h] == 0u && !s48_h0_add(s, ht, h, hv, vm, t, nt, nv, d, lv, x, q)) return 0;
+    for (dir = 0; dir < 2u; dir++) {
+        uint32_t cur = t, slot, i, w;
+        slot = subd_s48_fan_first_(b, x, t, dir, &w);
+        for (i = 0; i < lim; i++) {
+            const uint32_t nx = subd_s48_base_nbr_(b, cur, slot);
+            if (nx == SUBD_NONE) break;
+            if (nx == t) return 1; /* around: interior vertex */
+            if (n >= cap) return 0;
+            n++;
+            h = s48_h0_find(ht, tm, s->gt, nx);
+            if (ht[h] == 0u && !s48_h0_add(s, ht, h, hv, vm, nx, nt, nv, d, lv, x, q)) return 0;
+            cur = nx;
+            slot = subd_s48_fan_enter_(b, x, nx, &w); /* leave by the other edge at x */
+        }
+        if (i == lim) return 0;
+    }
     return 1;
 }
 
@@ -194,7 +238,14 @@ static inline int s48_h0_add(s48_state *s, uint16_t *ht, uint32_t h, uint16_t *h
  * rings, found by fan walks from the vertices at distance < S48_RINGS (BFS order), sorted
  * by index; local vertices and neighbours. small: ring 1 (the fans of t0's corners) and the
  * base neighbours of its triangles only, the uniform tile's smaller crop at level 0
- * (sr48_tile.c; hd[7] = 1 says so). 0 when a capacity is exceeded. */
+ * (sr48_tile.c; hd[7] = 1 says so). 0 when a capacity is exceeded.
+ * Cost (0.6.0, later): each fan is merged as it is walked (s48_h0_fan), its vertex x not
+ * looked up; the walk stops at the first vertex of the last ring (breadth first: the queue
+ * is sorted by distance); the sort moves gathering indices only (perm; the sorted triangles
+ * into w.key), so the triangle table keeps its gathering indices and the neighbours are
+ * looked up in it through the inverse permutation (in vmap, the vertex table, free once
+ * gathered) instead of a second table; a leg's neighbour inside the hybrid pair (2H, 2H + 1)
+ * is the next or previous sorted triangle. */
 static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
 {
     const subd_sr48 *b = s->base;
@@ -202,6 +253,7 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
     const uint32_t tm = s48_h0_size(2u * mt) - 1u, vm = s48_h0_size(s->xv) - 1u;
     uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 mt and xv entries: above wt and wv */
     uint16_t *perm = s->mtab;                /* the sort's permutation: mt >= wt entries */
+    uint16_t *rank = s->vmap;                /* its inverse: xv > wt entries, after gathering */
     uint32_t nt = 0, nv = 0, i, j, q, p;
     s48_win w;
     s48_lev(s, 0, &w);
@@ -220,19 +272,8 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             s->dist[nv++] = 0;
         }
     for (q = 0; q < nv; q++) {
-        uint32_t x = s->gv[q], nf, f;
-        if (s->dist[q] >= (small ? 1u : S48_RINGS)) continue;
-        /* the whole fan at the free tail of gt, then merged (deduplicated): a triangle
-         * appended at nt can only overwrite fan entries already read (nt grows by at most
-         * one per entry read, and nt + nf <= wt) */
-        nf = s48_fan(b, x, s->gvt[q], s->gt + nt, s->wt - nt);
-        if (nf == UINT32_MAX) return 0;
-        for (i = 0; i < nf; i++) s->gt[s->wt - 1u - i] = s->gt[nt + nf - 1u - i];
-        for (f = 0; f < nf; f++) {
-            const uint32_t tt = s->gt[s->wt - nf + f], h = s48_h0_find(ht, tm, s->gt, tt);
-            if (ht[h] != 0u) continue;
-            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, s->dist[q] + 1u, w.tn)) return 0;
-        }
+        if (s->dist[q] >= (small ? 1u : S48_RINGS)) break; /* breadth first: the rest is as far */
+        if (!s48_h0_fan(s, ht, tm, hv, vm, q, &nt, &nv, w.tn)) return 0;
     }
     if (small) { /* the base neighbours of ring 1 (dist: unused from here) */
         const uint32_t n1 = nt;
@@ -243,55 +284,66 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             h = s48_h0_find(ht, tm, s->gt, tt);
             if (ht[h] != 0u) continue;
             if (nt >= s->wt) return 0;
-            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, 2u, w.tn)) return 0;
+            if (!s48_h0_add(s, ht, h, hv, vm, tt, &nt, &nv, 2u, w.tn, SUBD_NONE, 0u)) return 0;
         }
     }
-    /* sort the triangles (Shell sort, gaps 57 23 10 4 1: at most wt of them, distinct),
-     * with their gathering order in perm */
+    /* sort the triangles' gathering indices by triangle (perm; Shell sort, gaps 57 23 10 4
+     * 1: at most wt of them, distinct), the sorted triangles into w.key; gt keeps the
+     * gathering order (the table's keys) until the neighbours are found */
     for (i = 0; i < nt; i++) perm[i] = (uint16_t)i;
     for (p = 0; p < 5u; p++) {
         static const uint8_t gap[5] = {57u, 23u, 10u, 4u, 1u};
         const uint32_t g = gap[p];
         for (i = g; i < nt; i++) {
-            const uint32_t x = s->gt[i];
             const uint16_t o = perm[i];
+            const uint32_t x = s->gt[o];
             j = i;
-            while (j >= g && s->gt[j - g] > x) {
-                s->gt[j] = s->gt[j - g];
+            while (j >= g && s->gt[perm[j - g]] > x) {
                 perm[j] = perm[j - g];
                 j -= g;
             }
-            s->gt[j] = x;
             perm[j] = o;
         }
     }
-    /* the corners' local indices, recorded by s48_h0_add in tn's place in gathering order */
+    for (i = 0; i < nt; i++) w.key[i] = s->gt[perm[i]];
+    /* the corners' local indices, recorded by s48_h0_add in tn's place in gathering order;
+     * the inverse permutation */
     for (i = 0; i < nt; i++) {
         const uint16_t *lv = w.tn + 3u * perm[i];
         w.tv[3u * i] = lv[0];
         w.tv[3u * i + 1u] = lv[1];
         w.tv[3u * i + 2u] = lv[2];
+        rank[perm[i]] = (uint16_t)i;
     }
-    /* the triangle table again, on the sorted indices */
-    for (i = 0; i < tm + 1u; i++) ht[i] = 0;
-    for (i = 0; i < nt; i++) ht[s48_h0_find(ht, tm, s->gt, s->gt[i])] = (uint16_t)(i + 1u);
     for (i = 0; i < nt; i++) {
-        uint32_t tt = s->gt[i];
+        const uint32_t tt = w.key[i];
         for (j = 0; j < 3u; j++) {
-            uint32_t nb = s48_base_nbr(b, tt, j);
+            uint32_t nb;
+            if (j == 1u + (tt & 1u)) { /* the leg inside the pair: tt ^ 1, adjacent when in */
+                const uint32_t k = (tt & 1u) ? i - 1u : i + 1u;
+                w.tn[3u * i + j] = (k < nt && w.key[k] == (tt ^ 1u)) ? (uint16_t)k : S48_OUT;
+                continue;
+            }
+            nb = s48_base_nbr(b, tt, j);
             if (nb == SUBD_NONE) {
                 w.tn[3u * i + j] = S48_BND;
                 continue;
             }
             nb = ht[s48_h0_find(ht, tm, s->gt, nb)];
-            w.tn[3u * i + j] = nb != 0u ? (uint16_t)(nb - 1u) : S48_OUT;
+            w.tn[3u * i + j] = nb != 0u ? rank[nb - 1u] : S48_OUT;
         }
-        w.key[i] = i; /* local: gt[i] = tt */
         if (tt == t0) w.hd[2] = i;
         if (tt == (t0 | 1u)) w.hd[4] = i;
     }
+    for (i = 0; i < nt; i++) {
+        s->gt[i] = w.key[i];
+        w.key[i] = i; /* local: gt[i] */
+    }
     for (i = 0; i < nv; i++) {
-        for (j = 0; j < 3u; j++) w.vp[3u * i + j] = b->pos[3u * s->gv[i] + j];
+        const subd_real *ps = b->pos + 3u * s->gv[i];
+        w.vp[3u * i] = ps[0];
+        w.vp[3u * i + 1u] = ps[1];
+        w.vp[3u * i + 2u] = ps[2];
         w.vid[i] = i; /* local: gv[i] */
         w.vf[i] = S48_EXACT;
         if (w.vl)

@@ -11,7 +11,11 @@
  *    nothing is skipped; over the shapes gatherings are skipped (the bounded path is
  *    reached);
  *  - the stream's plan on a base made by hand (stream_valence cleared, or too large) follows
- *    the valence walk, or refuses the base with the same status. */
+ *    the valence walk, or refuses the base with the same status;
+ *  - the stream against subd_sr48_build + subd_sr48_extract on five shapes through the
+ *    level-0 windows, and a base damaged between plan and begin (sr48l0_stream,
+ *    sr48l0_between, below). */
+#include <stdlib.h>
 #include <string.h>
 #include "harness.h"
 #include "corpus.h"
@@ -152,8 +156,271 @@ static void sr48l0_valence(void)
     }
 }
 
+/* ------------------------------------------------------------------------------------ */
+/* The level-0 windows against the materialised calls, and a base damaged between plan and
+ * begin (src/sr48_level0.c's window gathers each fan as it walks it and finds neighbours
+ * through one table; s48_check runs in plan and in begin, each on the base it is given).
+ *  - the stream equals subd_sr48_build + subd_sr48_extract on the torus, the open grid,
+ *    the two triangles and an isolated one, the hexagon fan and the valence-12 bipyramid,
+ *    levels 1..3 (the device 1..2), with and without smoothing: UNIFORM (a tile from level 0
+ *    over each hybrid pair's smaller window) triangle j is face j, same corner bits, and the
+ *    ids a bijection onto the extraction's corners; POINT (a window per triangle, its two
+ *    rings) the same triangles, sorted;
+ *  - a base damaged after a successful plan (a neighbour that does not point back, a vertex
+ *    out of range, no hyb_base_nb, steps != 0, no triangles, stream_valence above the
+ *    largest) is refused by begin and by the push form with plan's status on it, the arena
+ *    unchanged and no triangle emitted. */
+#define L0_ST_ARENA (64u * 1024u)
+
+/* The stream's triangles checked as they come: UNIFORM against face n of the extraction
+ * (same corner bits, each extraction vertex always with one id), POINT kept as sorted keys.
+ * Arrays from the materialised arena's free space (no static buffers: device RAM). */
+typedef struct l0_sink {
+    const subd_mesh *out;
+    uint64_t *idv; /* UNIFORM: the id of each extraction vertex (UINT64_MAX: not met yet) */
+    uint32_t *kb;  /* POINT: the triangles' keys */
+    uint32_t n, bad;
+} l0_sink;
+
+/* A triangle's 9 position bits rotated to start at its smallest corner (sorted compare). */
+static void l0_key(uint32_t *row, const subd_real *p)
+{
+    uint32_t c[9], i, r = 0, k;
+    for (i = 0; i < 9u; i++) c[i] = subd_real_bits(p[i]);
+    for (i = 1; i < 3u; i++)
+        if (memcmp(&c[3u * i], &c[3u * r], 12) < 0) r = i;
+    for (k = 0; k < 3u; k++) memcpy(&row[3u * k], &c[3u * ((r + k) % 3u)], 12);
+}
+static int l0_cmp(const void *a, const void *b) { return memcmp(a, b, 36); }
+static int l0_cmp64(const void *a, const void *b)
+{
+    const uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int l0_tri(void *ctx, const subd_tri *t)
+{
+    l0_sink *s = (l0_sink *)ctx;
+    const subd_mesh *out = s->out;
+    uint32_t c, j;
+    if (s->n >= out->num_faces) { /* more triangles than the extraction */
+        s->bad++;
+        return 0;
+    }
+    if (s->kb) {
+        subd_real p[9];
+        for (c = 0; c < 3u; c++)
+            for (j = 0; j < 3u; j++) p[3u * c + j] = t->pos[c][j];
+        l0_key(s->kb + 9u * s->n, p);
+    } else {
+        for (c = 0; c < 3u; c++) {
+            const uint32_t v = out->corner_vert[3u * s->n + c];
+            for (j = 0; j < 3u; j++)
+                if (!h_same(out->pos[3u * v + j], t->pos[c][j])) s->bad++;
+            if (s->idv[v] == UINT64_MAX) s->idv[v] = t->id[c];
+            if (s->idv[v] != t->id[c]) s->bad++;
+        }
+    }
+    s->n++;
+    return 0;
+}
+
+#if H_HOST
+static uint8_t g_l0mat[4u << 20] __attribute__((aligned(8))); /* the hierarchy at level 3 */
+#endif
+
+/* One shape at one level, UNIFORM or POINT, smoothing on or off; at level 1 (the host's and
+ * the device's) the triangles' bits into *hv. */
+static void l0_stream_case(int shape, uint32_t levels, uint32_t flags, int point, uint32_t *hv)
+{
+    subd_arena a, sa;
+    subd_mesh in, out;
+    subd_sr48 h, base;
+    subd_sr48_opts o;
+    subd_sr48_stream_opts so;
+    subd_sr48_adapt_report rep;
+    subd_diag d;
+    subd_tri_sink sink;
+    l0_sink k;
+    uint32_t plan = 0, i, c, n = 0, *ka = 0;
+    uint64_t *ids = 0;
+#if H_HOST
+    subd_arena_init(&a, g_l0mat, (uint32_t)sizeof g_l0mat);
+#else
+    subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES - L0_ST_ARENA);
+#endif
+    if (!fx_sr48_shape(shape, 12u, &a, &in)) return;
+    o.steps = levels;
+    o.flags = flags;
+    if (!CHECK_OK(subd_sr48_build(&a, &in, &o, &h, &d), &d)) return;
+    memset(&so, 0, sizeof so);
+    so.adapt.mode = point ? SUBD_SR48_ADAPT_POINT : SUBD_SR48_ADAPT_UNIFORM;
+    so.adapt.max_level = levels;
+    so.adapt.radius = fx_real(0.25);
+    if (!CHECK_OK(subd_sr48_extract(&a, &h, &so.adapt, &out, &rep, &d), &d)) return;
+    if (!CHECK_OK(subd_sr48_base(&a, &in, flags, &base, &d), &d)) return;
+    memset(&k, 0, sizeof k);
+    k.out = &out;
+    if (point) {
+        ka = (uint32_t *)subd_arena_alloc(&a, 36u * out.num_faces);
+        k.kb = (uint32_t *)subd_arena_alloc(&a, 36u * out.num_faces);
+        if (!CHECK(ka != 0 && k.kb != 0)) return;
+    } else {
+        k.idv = (uint64_t *)subd_arena_alloc(&a, 8u * out.num_verts);
+        ids = (uint64_t *)subd_arena_alloc(&a, 8u * out.num_verts);
+        if (!CHECK(k.idv != 0 && ids != 0)) return;
+        for (i = 0; i < out.num_verts; i++) k.idv[i] = UINT64_MAX;
+    }
+    if (!CHECK_OK(subd_sr48_stream_plan(&base, &so, &plan, &d), &d) || !CHECK(plan <= L0_ST_ARENA)) return;
+    subd_arena_init(&sa, h_arena_buf + H_ARENA_BYTES - L0_ST_ARENA, L0_ST_ARENA);
+    sink.tri = l0_tri;
+    sink.ctx = &k;
+    if (!CHECK_OK(subd_sr48_stream(&sa, &base, &so, &sink, &d), &d)) return;
+    CHECK_EQ(sa.peak, plan);
+    if (!CHECK_EQ(k.n, out.num_faces)) return;
+    if (point) {
+        for (i = 0; i < out.num_faces; i++) {
+            subd_real q[9];
+            uint32_t j;
+            for (c = 0; c < 3u; c++)
+                for (j = 0; j < 3u; j++) q[3u * c + j] = out.pos[3u * out.corner_vert[3u * i + c] + j];
+            l0_key(ka + 9u * i, q);
+        }
+        qsort(ka, out.num_faces, 36, l0_cmp);
+        qsort(k.kb, out.num_faces, 36, l0_cmp);
+        k.bad += memcmp(ka, k.kb, 36u * out.num_faces) != 0;
+        if (levels == 1u) *hv = h_fnv(*hv, k.kb, 36u * out.num_faces);
+    } else { /* no two extraction vertices with one id: the ids a bijection onto them */
+        for (i = 0; i < out.num_verts; i++)
+            if (k.idv[i] != UINT64_MAX) ids[n++] = k.idv[i];
+        CHECK_EQ(n, out.num_verts);
+        qsort(ids, n, sizeof ids[0], l0_cmp64);
+        for (i = 1; i < n; i++) k.bad += ids[i] == ids[i - 1u];
+        if (levels == 1u) *hv = h_fnv(*hv, out.pos, (uint32_t)sizeof(subd_real) * 3u * out.num_verts);
+    }
+    CHECK_EQ(k.bad, 0u);
+}
+
+static void sr48l0_stream(void)
+{
+    static const int shapes[5] = {FX48_TORUS, FX48_GRID, FX48_TWO, FX48_HEXFAN, FX48_BIPYR};
+    static const char *const names[5] = {"sr48l0_stream_torus", "sr48l0_stream_grid", "sr48l0_stream_two",
+                                         "sr48l0_stream_hexfan", "sr48l0_stream_bipyr12"};
+    uint32_t s, l, f, p;
+    for (s = 0; s < 5u; s++) {
+        uint32_t hv = 2166136261u;
+        for (f = 0; f < 2u; f++)
+            for (l = 1; l <= (H_HOST ? 3u : 1u); l++)
+                for (p = 0; p < 2u; p++) l0_stream_case(shapes[s], l, f ? SUBD_SR48_NO_SMOOTH : 0u, (int)p, &hv);
+        h_hash(names[s], hv);
+    }
+}
+
+/* Counts the triangles a refused stream would emit (none). */
+static uint32_t g_l0calls;
+static int l0_count(void *ctx, const subd_tri *t)
+{
+    (void)ctx;
+    (void)t;
+    g_l0calls++;
+    return 0;
+}
+
+/* Damage k (0..6) to a copy of base (nb, tv: room for its tri_base_nb and tri_vert), or 0
+ * when there is no such damage here. */
+static int l0_damage(const subd_sr48 *base, uint32_t k, subd_sr48 *bad, uint32_t *nb, uint32_t *tv, int *want)
+{
+    const uint32_t n0 = base->level_tri[1];
+    uint32_t t;
+    *bad = *base;
+    for (t = 0; t < n0; t++) nb[t] = base->tri_base_nb[t];
+    for (t = 0; t < 3u * n0; t++) tv[t] = base->tri_vert[t];
+    *want = SUBD_ERR_PARAM;
+    switch (k) {
+    case 0: /* a base neighbour that does not point back: itself */
+        nb[0] = 0;
+        bad->tri_base_nb = nb;
+        return 1;
+    case 1: /* a base neighbour pointing back across another edge: t's pair partner's */
+        for (t = 0; t < n0; t++)
+            if (nb[t] != SUBD_NONE && nb[t ^ 1u] != SUBD_NONE && nb[t ^ 1u] != nb[t]) {
+                nb[t] = nb[t ^ 1u];
+                bad->tri_base_nb = nb;
+                return 1;
+            }
+        return 0;
+    case 2: /* a vertex out of range */
+        tv[3u * (n0 - 1u) + 2u] = base->num_verts;
+        bad->tri_vert = tv;
+        return 1;
+    case 3: bad->hyb_base_nb = 0; return 1;
+    case 4: bad->steps = 1; return 1;
+    case 5: /* no triangles */
+        bad->num_tris = 0;
+        bad->level_tri[1] = 0;
+        *want = SUBD_ERR_EMPTY;
+        return 1;
+    default: /* a census above the largest valence the stream takes */
+        bad->stream_valence = SUBD_SR48_STREAM_MAX_VALENCE + 1u;
+        *want = SUBD_ERR_TOO_BIG;
+        return 1;
+    }
+}
+
+static void sr48l0_between(void)
+{
+    static const int shapes[3] = {FX48_TORUS, FX48_GRID, FX48_TWO};
+    uint32_t s, k, l;
+    for (s = 0; s < 3u; s++)
+        for (l = 1; l <= (H_HOST ? 9u : 1u); l += 8u) {
+            subd_arena a, sa;
+            subd_mesh in;
+            subd_sr48 base, bad;
+            subd_sr48_stream_opts so;
+            subd_diag d;
+            subd_tri_sink sink;
+            subd_stream str;
+            uint32_t plan = 0, p2 = 0, *nb, *tv;
+            subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES - L0_ST_ARENA);
+            if (!fx_sr48_shape(shapes[s], 12u, &a, &in) || !CHECK_OK(subd_sr48_base(&a, &in, 0u, &base, &d), &d))
+                continue;
+            nb = (uint32_t *)subd_arena_alloc(&a, 4u * base.level_tri[1]);
+            tv = (uint32_t *)subd_arena_alloc(&a, 12u * base.level_tri[1]);
+            if (!CHECK(nb != 0 && tv != 0)) continue;
+            memset(&so, 0, sizeof so);
+            so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
+            so.adapt.max_level = l;
+            if (!CHECK_OK(subd_sr48_stream_plan(&base, &so, &plan, &d), &d) || !CHECK(plan <= L0_ST_ARENA)) continue;
+            sink.tri = l0_count;
+            sink.ctx = 0;
+            for (k = 0; k < 7u; k++) {
+                int want, st;
+                if (!l0_damage(&base, k, &bad, nb, tv, &want)) continue;
+                /* plan on the good base succeeded; the caller damages it, then begins */
+                CHECK_FAIL(subd_sr48_stream_plan(&bad, &so, &p2, &d), &d, want);
+                subd_arena_init(&sa, h_arena_buf + H_ARENA_BYTES - L0_ST_ARENA, L0_ST_ARENA);
+                CHECK_FAIL(subd_sr48_stream_begin(&sa, &bad, &so, &str, &d), &d, want);
+                CHECK_EQ(sa.used, 0u);
+                g_l0calls = 0;
+                st = subd_sr48_stream(&sa, &bad, &so, &sink, &d);
+                CHECK_EQ(st, want);
+                CHECK_EQ(sa.used, 0u);
+                CHECK_EQ(g_l0calls, 0u);
+            }
+            /* and the good base streams after all that, in its plan */
+            subd_arena_init(&sa, h_arena_buf + H_ARENA_BYTES - L0_ST_ARENA, L0_ST_ARENA);
+            g_l0calls = 0;
+            if (CHECK_OK(subd_sr48_stream(&sa, &base, &so, &sink, &d), &d)) {
+                CHECK_EQ(sa.peak, plan);
+                CHECK_EQ(g_l0calls, (uint64_t)base.level_tri[1] << l);
+            }
+        }
+}
+
 const test_case suite_sr48_level0[] = {
     {"sr48l0_census", sr48l0_census},
     {"sr48l0_valence", sr48l0_valence},
+    {"sr48l0_stream", sr48l0_stream},
+    {"sr48l0_between", sr48l0_between},
     {0, 0},
 };

@@ -351,12 +351,12 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   internal batch of 2 triangles (one refinement of the level max_level-1 window, about
  *   60 triangles);
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
- *   Measured (uniform, base + plan + stream): on spot 2.1-3.2 / 4.8-6.2 / 10-12.7 M faces/s
- *   at 2 / 4 / 6 steps, 1.0-1.3x / 2.7-2.9x / 5.5-7.8x the faces/s of a first
- *   subd_sr48_build + subd_sr48_extract in the same run, 0.26x / 0.65-0.8x / 1.7-2.0x of
- *   them run again in their touched arena (bench -s sr48stream); 778 instructions per
- *   triangle on the Cortex-M4F at 8 steps into a counting sink (1 090 with the demo's
- *   checksum sink), M3 Q16.16: 888 (1 203; before the window changes of 0.6.0 1 315 / 1 435
+ *   Measured (uniform, base + plan + stream): on spot 1.5-3.9 / 3.4-7.5 / 8.7-14.7 M faces/s
+ *   at 2 / 4 / 6 steps, 1.2-1.5x / 1.9-3.1x / 6.0-7.1x the faces/s of a first
+ *   subd_sr48_build + subd_sr48_extract in the same run, 0.32-0.34x / 0.5-0.7x / 2.0x of
+ *   them run again in their touched arena (bench -s sr48stream); 622 instructions per
+ *   triangle on the Cortex-M4F at 8 steps into a counting sink (934 with the demo's
+ *   checksum sink), M3 Q16.16: 742 (1 057; before the window changes of 0.6.0 1 315 / 1 435
  *   with the checksum sink, before the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868;
  *   make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
@@ -394,8 +394,8 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   The tiles and the descents crop each level to ring 1 of the descendants and the
  *   partners of their triangles (as the uniform tile), checked exact, else again with two
  *   rings. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron
- *   at 9 steps, eps 0.01, about 0.21 M Cortex-M4F instructions per output face (M3 Q16.16:
- *   0.28 M; make demo), and on the host 0.42x / 0.29x the output faces/s of
+ *   at 9 steps, eps 0.01, about 0.18 M Cortex-M4F instructions per output face (M3 Q16.16:
+ *   0.21 M; make demo), and on the host 0.42-0.45x / 0.21-0.37x the output faces/s of
  *   subd_sr48_build + subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench
  *   -s sr48chord, a same-run ratio under load): every finest vertex is computed about twice
  *   (a tile root's tile is remade when the memo of SUBD_SR48_STREAM_CHORD_MASKS_ roots lost

@@ -274,3 +274,14 @@ uint32_t fx_sr48_valence(const subd_sr48 *b, uint32_t *lowest)
     if (lowest) *lowest = low;
     return best;
 }
+
+void fx_tri_key(uint32_t *row, const subd_real *p)
+{
+    uint32_t c[9], i, r = 0, k;
+    for (i = 0; i < 9u; i++) c[i] = subd_real_bits(p[i]);
+    for (i = 1; i < 3u; i++)
+        if (memcmp(&c[3u * i], &c[3u * r], 12) < 0) r = i;
+    for (k = 0; k < 3u; k++) memcpy(&row[3u * k], &c[3u * ((r + k) % 3u)], 12);
+}
+
+int fx_tri_key_cmp(const void *a, const void *b) { return memcmp(a, b, 36); }

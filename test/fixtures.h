@@ -64,4 +64,10 @@ int fx_sr48_shape(int id, uint32_t bipyr_n, subd_arena *a, subd_mesh *m);
 #define FX_SR48_MAXV (H_HOST ? 32768u : 2048u)
 uint32_t fx_sr48_valence(const subd_sr48 *base, uint32_t *lowest);
 
+/* Triangle keys for comparing two triangle sets in any order: the 9 position bits of the
+ * triangle p[0..8] rotated to start at its smallest corner, into row[0..8]; fx_tri_key_cmp
+ * orders such rows (qsort). */
+void fx_tri_key(uint32_t *row, const subd_real *p);
+int fx_tri_key_cmp(const void *a, const void *b);
+
 #endif

@@ -141,15 +141,6 @@ static int ce_tri(void *ctx, const subd_tri *t)
 /* Triangle keys for the sorted comparison: the 9 position bits of a triangle rotated to
  * start at its smallest corner, in a uint32_t[9] row. */
 static uint32_t g_ka[9u * CE_MAXT], g_kb[9u * CE_MAXT];
-static void ce_key(uint32_t *row, const subd_real *p)
-{
-    uint32_t c[9], i, r = 0, k;
-    for (i = 0; i < 9u; i++) c[i] = subd_real_bits(p[i]);
-    for (i = 1; i < 3u; i++)
-        if (memcmp(&c[3u * i], &c[3u * r], 12) < 0) r = i;
-    for (k = 0; k < 3u; k++) memcpy(&row[3u * k], &c[3u * ((r + k) % 3u)], 12);
-}
-static int ce_cmp(const void *a, const void *b) { return memcmp(a, b, 36); }
 
 #if H_HOST
 static uint8_t g_mat[4u << 20] __attribute__((aligned(8))); /* the hierarchy at level 3 */
@@ -215,12 +206,12 @@ static void ce_case(uint32_t levels, uint32_t flags, int point)
                 if (!h_same(q[j], g_ce.pos[9u * i + j])) bad++;
             continue;
         }
-        ce_key(&g_ka[9u * i], q);
-        ce_key(&g_kb[9u * i], &g_ce.pos[9u * i]);
+        fx_tri_key(&g_ka[9u * i], q);
+        fx_tri_key(&g_kb[9u * i], &g_ce.pos[9u * i]);
     }
     if (point) {
-        qsort(g_ka, out.num_faces, 36, ce_cmp);
-        qsort(g_kb, out.num_faces, 36, ce_cmp);
+        qsort(g_ka, out.num_faces, 36, fx_tri_key_cmp);
+        qsort(g_kb, out.num_faces, 36, fx_tri_key_cmp);
         bad += memcmp(g_ka, g_kb, 36u * out.num_faces) != 0;
         if (levels == 1u && !flags) CHECK(out.num_faces < 2u * base.level_tri[1]); /* a real cut */
     }

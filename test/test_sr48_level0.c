@@ -182,16 +182,6 @@ typedef struct l0_sink {
     uint32_t n, bad;
 } l0_sink;
 
-/* A triangle's 9 position bits rotated to start at its smallest corner (sorted compare). */
-static void l0_key(uint32_t *row, const subd_real *p)
-{
-    uint32_t c[9], i, r = 0, k;
-    for (i = 0; i < 9u; i++) c[i] = subd_real_bits(p[i]);
-    for (i = 1; i < 3u; i++)
-        if (memcmp(&c[3u * i], &c[3u * r], 12) < 0) r = i;
-    for (k = 0; k < 3u; k++) memcpy(&row[3u * k], &c[3u * ((r + k) % 3u)], 12);
-}
-static int l0_cmp(const void *a, const void *b) { return memcmp(a, b, 36); }
 static int l0_cmp64(const void *a, const void *b)
 {
     const uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
@@ -211,7 +201,7 @@ static int l0_tri(void *ctx, const subd_tri *t)
         subd_real p[9];
         for (c = 0; c < 3u; c++)
             for (j = 0; j < 3u; j++) p[3u * c + j] = t->pos[c][j];
-        l0_key(s->kb + 9u * s->n, p);
+        fx_tri_key(s->kb + 9u * s->n, p);
     } else {
         for (c = 0; c < 3u; c++) {
             const uint32_t v = out->corner_vert[3u * s->n + c];
@@ -284,10 +274,10 @@ static void l0_stream_case(int shape, uint32_t levels, uint32_t flags, int point
             uint32_t j;
             for (c = 0; c < 3u; c++)
                 for (j = 0; j < 3u; j++) q[3u * c + j] = out.pos[3u * out.corner_vert[3u * i + c] + j];
-            l0_key(ka + 9u * i, q);
+            fx_tri_key(ka + 9u * i, q);
         }
-        qsort(ka, out.num_faces, 36, l0_cmp);
-        qsort(k.kb, out.num_faces, 36, l0_cmp);
+        qsort(ka, out.num_faces, 36, fx_tri_key_cmp);
+        qsort(k.kb, out.num_faces, 36, fx_tri_key_cmp);
         k.bad += memcmp(ka, k.kb, 36u * out.num_faces) != 0;
         if (levels == 1u) *hv = h_fnv(*hv, k.kb, 36u * out.num_faces);
     } else { /* no two extraction vertices with one id: the ids a bijection onto them */

@@ -31,6 +31,9 @@
  *     rotation r has rotation r, of a down triangle r + 1.
  * Level 0 takes all three from the patch (its vert_out, its faces' corner order, its sorted
  * half-edge numbering, which compares as subd_loop's does: loop_stream.c's header).
+ * Q16.16 sums are exact (64-bit sums of products), so there any order gives subd_loop's bits:
+ * a Q16.16 tile ignores ring starts and lower sides (LT_ORDERED), and a plain one carries
+ * none (only limit mode's ring starts need them there).
  *
  * Regular: the patch has exactly 13 faces and 12 vertices, its three corners are interior,
  * of valence 6, untagged, with no sharp edge, and it embeds in the lattice consistently
@@ -548,6 +551,7 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
     uint8_t lx[12], ly[12], used[30], cdir[3], rot[30], low[15];
     subd_real pos[36];
     uint32_t c, k, f, v, t;
+    int meta;
     loop_weights w;
     if (p->h->nv != 12u || p->h->nf != 13u) return 0;
     for (v = 0; v < 12u; v++) lx[v] = ly[v] = 0xffu;
@@ -624,8 +628,12 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         if (used[k]) g->rot[k] = rot[k];
     for (k = 0; k < 15u; k++) g->low[k] = low[k];
     w = subd_loop_weights_of(wc, 6u, ovf);
+    /* the ring starts, rotations and lower sides of every level: for the order of float32
+     * sums (LT_ORDERED) and limit mode's ring starts (lt_dir_at); a plain Q16.16 tile needs
+     * none of them */
+    meta = LT_ORDERED || tl->qnrm;
     for (t = 0; t + 1u < tl->depth; t++)
-        lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], 1, w);
+        lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], meta, w);
     return 1;
 }
 

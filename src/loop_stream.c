@@ -251,7 +251,10 @@ static void sp_up(sp_state *s)
 static void sp_enter(sp_state *s, const sp_level *p)
 {
     const subd_loop_opts *o = &s->o;
-    if (s->lay.tdepth && s->k >= s->lay.tk && (s->k == s->lay.tk || s->k + LT_PARTIAL_MIN(s->limit) <= o->levels)) {
+    /* a regular patch has 12 vertices and 13 faces (subd_lt_start): the others are refused
+     * before the tile is carved */
+    if (s->lay.tdepth && s->k >= s->lay.tk && (s->k == s->lay.tk || s->k + LT_PARTIAL_MIN(s->limit) <= o->levels) &&
+        p->h->nv == 12u && p->h->nf == 13u) {
         lt_tile tl;
         subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {

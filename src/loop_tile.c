@@ -472,8 +472,10 @@ static inline uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint
  * A corner child at lattice corner k has rotation k; the middle child of an up triangle
  * keeps its rotation, of a down one adds one (the header). Lower sides: a corner child's
  * edges along the parent's keep the parent's bits, its inner edge is lower on its side; the
- * middle child holds no lower half-edge. */
-static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2)
+ * middle child holds no lower half-edge. `rot` (a constant: forced inline): the rotations
+ * too (plain mode's last grid needs only the lower sides: its rotations would serve the ring
+ * starts of a level it does not make). */
+TOPO_INLINE void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2, int rot)
 {
     const uint8_t *gl = g->low, *gr = g->rot;
     uint8_t *hl = h->low, *hr = h->rot;
@@ -489,15 +491,16 @@ static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2
                 if (I & 1u) { ru = 2u; lw = (gl[p] & 6u) | 1u; rd = 2u; }
                 else { ru = (gr[2u * p + 1u] + 1u) % 3u; lw = 0u; rd = 1u; }
             }
-            hr[2u * v] = (uint8_t)ru;
             hl[v] = (uint8_t)lw;
+            if (!rot) continue;
+            hr[2u * v] = (uint8_t)ru;
             if (I + 1u < n) hr[2u * v + 1u] = (uint8_t)rd; /* D(I, J) is in h */
         }
     }
 }
 
-/* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: its ring starts, rotations
- * and lower sides too (not for the level the tile ends at). */
+/* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: 0 its positions only, 1
+ * its ring starts and lower sides too, 2 its rotations too (subd_lt_start). */
 static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, loop_weights w)
 {
     uint32_t s2 = 2u * s - 3u, I, J;
@@ -527,7 +530,10 @@ static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, 
                                                            : lt_ndir_d[d][g->rot[2u * x + 1u]];
         }
     }
-    lt_faces(g, s, h, s2);
+    if (meta > 1)
+        lt_faces(g, s, h, s2, 1);
+    else
+        lt_faces(g, s, h, s2, 0);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -551,7 +557,6 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
     uint8_t lx[12], ly[12], used[30], cdir[3], rot[30], low[15];
     subd_real pos[36];
     uint32_t c, k, f, v, t;
-    int meta;
     loop_weights w;
     if (p->h->nv != 12u || p->h->nf != 13u) return 0;
     for (v = 0; v < 12u; v++) lx[v] = ly[v] = 0xffu;
@@ -631,9 +636,12 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
     /* the ring starts, rotations and lower sides of every level: for the order of float32
      * sums (LT_ORDERED) and limit mode's ring starts (lt_dir_at); a plain Q16.16 tile needs
      * none of them */
-    meta = LT_ORDERED || tl->qnrm;
-    for (t = 0; t + 1u < tl->depth; t++)
+    for (t = 0; t + 1u < tl->depth; t++) {
+        /* a level's rotations serve the ring starts of the next: plain mode's last grid
+         * needs none; limit mode reads them there (lt_dir_at) */
+        int meta = !(LT_ORDERED || tl->qnrm) ? 0 : t + 2u == tl->depth && !tl->qnrm ? 1 : 2;
         lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], meta, w);
+    }
     return 1;
 }
 

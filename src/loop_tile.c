@@ -61,11 +61,13 @@
  * exact 64-bit sum rounds into it, and in float32 a partial sum stays below
  * max |x| (1 + 2^-24)^k, which is finite when every level-0 coordinate is below
  * SUBD_REAL_MAX / 2. A patch with a larger (or a NaN) coordinate is refused (LT_HUGE) and
- * takes the general path, whose rules check. Why the #if: the float bound has no Q16.16
- * counterpart (every Q16.16 value is safe, and a comparison with its largest value would
- * be always false). */
+ * takes the general path, whose rules check. Q16.16 tiles sum in 32 bits (lt_vpt, lt_ept:
+ * at most 16 times a coordinate), which their level-0 coordinates below 2^27 (2048.0) in
+ * magnitude keep from overflowing; a patch with a larger one takes the general path (the
+ * same bits, in 64-bit sums). */
 #if SUBD_FIXED
-#define LT_HUGE(x) 0
+#define LT_FIX_MAX ((subd_real)134217727) /* 2^27 - 1 */
+#define LT_HUGE(x) ((x) > LT_FIX_MAX || (x) < -LT_FIX_MAX)
 #else
 #define LT_HUGE(x) (!((x) <= SUBD_REAL_MAX / 2.0f && (x) >= -(SUBD_REAL_MAX / 2.0f)))
 #endif
@@ -228,6 +230,19 @@ TOPO_INLINE void lt_ring_offsets(int32_t row, int32_t o3[12])
  * offsets in subd_reals, lt_ring_offsets), the products in subd_loop's order. */
 TOPO_INLINE void lt_vpt(const subd_real *c, const int32_t *o, subd_real *out, loop_weights w)
 {
+#if SUBD_FIXED
+    /* valence 6: b = 1/16 and 1 - 6b = 5/8 exactly (loop_rules.h), so the exact sum is
+     * 2^12 (10 v + p_0 + ... + p_5) and subd_acc_real's rounding, (sum + 2^15) >> 16, is
+     * (10 v + p_0 + ... + p_5 + 8) >> 4: the same bits in 32-bit sums (LT_HUGE bounds them
+     * by 2^31 - 16); the result lies between the least and the largest input */
+    uint32_t j;
+    (void)w;
+    for (j = 0; j < 3u; j++) {
+        int32_t y = 8 * c[j] + 2 * c[j] + c[o[0] + (int32_t)j] + c[o[1] + (int32_t)j] + c[o[2] + (int32_t)j] +
+                    c[o[3] + (int32_t)j] + c[o[4] + (int32_t)j] + c[o[5] + (int32_t)j];
+        out[j] = (y + 8) >> 4;
+    }
+#else
     subd_acc acc[3];
     uint32_t dead = 0; /* a tile's rules cannot overflow (LT_HUGE): unread */
     loop_smooth_begin(acc, w, c);
@@ -239,6 +254,7 @@ TOPO_INLINE void lt_vpt(const subd_real *c, const int32_t *o, subd_real *out, lo
     loop_smooth_add(acc, w, c + o[5]);
     loop_smooth_end(out, acc, &dead);
     (void)dead;
+#endif
 }
 
 /* One odd point: the interior edge rule on edge d of U (c: its corner (i, j)), d a constant
@@ -270,15 +286,22 @@ TOPO_INLINE void lt_ept(const subd_real *c, uint32_t low, uint32_t d, int32_t R,
         v = c + oe;
         e = c + oc;
     }
-#else
-    (void)low;
-    v = c + oc;
-    e = c + oe;
-#endif
     o[0] = loop_rule_edge1(a[0], b[0], v[0], e[0], &dead);
     o[1] = loop_rule_edge1(a[1], b[1], v[1], e[1], &dead);
     o[2] = loop_rule_edge1(a[2], b[2], v[2], e[2], &dead);
     (void)dead;
+#else
+    /* the exact sum 3/8 (a + b) + 1/8 (v + e) is 2^13 (3 (a + b) + v + e), rounded as
+     * subd_acc_real does, (sum + 2^15) >> 16 = (3 (a + b) + v + e + 4) >> 3: 32-bit sums
+     * (LT_HUGE), the same bits */
+    (void)low;
+    (void)dead;
+    v = c + oc;
+    e = c + oe;
+    o[0] = (3 * (a[0] + b[0]) + v[0] + e[0] + 4) >> 3;
+    o[1] = (3 * (a[1] + b[1]) + v[1] + e[1] + 4) >> 3;
+    o[2] = (3 * (a[2] + b[2]) + v[2] + e[2] + 4) >> 3;
+#endif
 }
 
 /* One row of level t + 1 points: (px, py) for px = pa..pb (pa <= pb) of natural row py

@@ -465,12 +465,17 @@ static void lt_rows_quarter(const lt_grid *g, uint32_t s, uint32_t c, int32_t ox
 static const uint8_t lt_ndir_u[3][3] = {{2u, 0u, 2u}, {4u, 4u, 2u}, {4u, 0u, 0u}};
 static const uint8_t lt_ndir_d[3][3] = {{5u, 5u, 3u}, {5u, 1u, 1u}, {3u, 1u, 3u}};
 
+/* The ring start of the new vertex on edge d of U(u) of g, x the down triangle across it. */
+TOPO_INLINE uint8_t lt_ndir(const lt_grid *g, uint32_t u, uint32_t x, uint32_t d)
+{
+    return (((uint32_t)g->low[u] >> d) & 1u) ? lt_ndir_u[d][g->rot[2u * u]] : lt_ndir_d[d][g->rot[2u * x + 1u]];
+}
+
 static uint8_t lt_new_dir(const lt_grid *g, uint32_t s, uint32_t ui, uint32_t uj, uint32_t d)
 {
-    uint32_t v = lt_vi(s, ui, uj), w;
-    if (((uint32_t)g->low[v] >> d) & 1u) return lt_ndir_u[d][g->rot[2u * v]];
-    w = d == 0u ? v - (s + 2u - uj) : d == 1u ? v : v - 1u; /* the D across: lt_vi's row step */
-    return lt_ndir_d[d][g->rot[2u * w + 1u]];
+    uint32_t v = lt_vi(s, ui, uj);
+    /* the D across: lt_vi's row step */
+    return lt_ndir(g, v, d == 0u ? v - (s + 2u - uj) : d == 1u ? v : v - 1u, d);
 }
 
 /* Ring start (lattice direction of vert_out) of the level t + 1 point (px, py) / 2 of grid g
@@ -500,25 +505,38 @@ static inline uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint
  * starts of a level it does not make). */
 TOPO_INLINE void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2, int rot)
 {
+    static const uint8_t next3[3] = {1u, 2u, 0u}; /* (r + 1) mod 3 */
     const uint8_t *gl = g->low, *gr = g->rot;
-    uint8_t *hl = h->low, *hr = h->rot;
     uint32_t I, J;
     for (J = 0; J < s2; J++) {
-        uint32_t v = lt_vi(s2, 0u, J), n = s2 - J, p0 = lt_vi(s, 0u, (J + 1u) >> 1);
-        for (I = 0; I < n; I++, v++) {
-            uint32_t p = p0 + ((I + 1u) >> 1), ru, rd, lw;
-            if (J & 1u) {
-                if (I & 1u) { ru = 0u; lw = (gl[p] & 5u) | 2u; rd = gr[2u * p]; }
-                else { ru = 1u; lw = (gl[p] & 3u) | 4u; rd = 0u; }
-            } else {
-                if (I & 1u) { ru = 2u; lw = (gl[p] & 6u) | 1u; rd = 2u; }
-                else { ru = (gr[2u * p + 1u] + 1u) % 3u; lw = 0u; rd = 1u; }
+        /* U(I, J) and D(I, J) of h from the face p = p0 + (I + 1) / 2 of g: I = 0 alone, then
+         * I odd and I + 1 (one p) in one turn */
+        uint32_t v = lt_vi(s2, 0u, J), n = s2 - J, p = lt_vi(s, 0u, (J + 1u) >> 1);
+        uint8_t *hl = h->low + v, *hr = h->rot + 2u * v;
+#define LT_FACE(i, lw, ru, rd)                                          \
+        do {                                                            \
+            hl[i] = (uint8_t)(lw);                                      \
+            if (rot) {                                                  \
+                hr[2u * (i)] = (uint8_t)(ru);                           \
+                if ((i) + 1u < n) hr[2u * (i) + 1u] = (uint8_t)(rd); /* D(I, J) is in h */ \
+            }                                                           \
+        } while (0)
+        if (J & 1u) { /* I even: corner children 1 of U, 0 of D; I odd: corner child 0 of U, U's middle child */
+            LT_FACE(0u, (gl[p] & 3u) | 4u, 1u, 0u);
+            for (I = 1u, p++; I + 1u < n; I += 2u, p++) {
+                LT_FACE(I, (gl[p] & 5u) | 2u, 0u, gr[2u * p]);
+                LT_FACE(I + 1u, (gl[p] & 3u) | 4u, 1u, 0u);
             }
-            hl[v] = (uint8_t)lw;
-            if (!rot) continue;
-            hr[2u * v] = (uint8_t)ru;
-            if (I + 1u < n) hr[2u * v + 1u] = (uint8_t)rd; /* D(I, J) is in h */
+            if (I < n) LT_FACE(I, (gl[p] & 5u) | 2u, 0u, gr[2u * p]);
+        } else { /* I even: D's middle child, corner child 1 of D; I odd: corner children 2 */
+            LT_FACE(0u, 0u, next3[gr[2u * p + 1u]], 1u);
+            for (I = 1u, p++; I + 1u < n; I += 2u, p++) {
+                LT_FACE(I, (gl[p] & 6u) | 1u, 2u, 2u);
+                LT_FACE(I + 1u, 0u, next3[gr[2u * p + 1u]], 1u);
+            }
+            if (I < n) LT_FACE(I, (gl[p] & 6u) | 1u, 2u, 2u);
         }
+#undef LT_FACE
     }
 }
 
@@ -526,31 +544,30 @@ TOPO_INLINE void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32
  * its ring starts and lower sides too, 2 its rotations too (subd_lt_start). */
 static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, loop_weights w)
 {
-    uint32_t s2 = 2u * s - 3u, I, J;
+    uint32_t s2 = 2u * s - 3u, i, J;
     lt_rows_refine(g, s, (int32_t)s2, h->pos, w);
     if (!meta) return;
     /* ring starts: the next level's old vertices are this level's face's, at I, J >= 1,
      * I + J <= s2 - 1 */
     for (J = 1; J + 2u <= s2; J++) {
         /* lt_dir_at of (I + 1, J + 1), by rows: the point lies in U(u) of g, u = lt_vi(s,
-         * (I + 1) >> 1, (J + 1) >> 1) whatever its parities; lt_new_dir's D across (x) is
-         * D(u) for edge 1, D(u - 1) for edge 2, and for edge 0 the D below (one row of g back) */
-        uint32_t v = lt_vi(s2, 1u, J), uj = (J + 1u) >> 1, u0 = lt_vi(s, 0u, uj), back = s + 2u - uj;
-        for (I = 1; I + J + 1u <= s2; I++, v++) {
-            uint32_t u = u0 + ((I + 1u) >> 1), d, x;
-            if (J & 1u) { /* py even */
-                if (I & 1u) { /* px even: the old vertex keeps its ring start */
-                    h->dir[v] = g->dir[u];
-                    continue;
-                }
-                d = 0u;
-                x = u - back;
-            } else {
-                d = (I & 1u) ? 2u : 1u;
-                x = (I & 1u) ? u - 1u : u;
+         * (I + 1) >> 1, (J + 1) >> 1) whatever its parities (I odd and I + 1: one u, in one
+         * turn); lt_new_dir's D across is D(u) for edge 1, D(u - 1) for edge 2, and for edge
+         * 0 the D below (one row of g back) */
+        uint32_t uj = (J + 1u) >> 1, u = lt_vi(s, 0u, uj) + 1u, back = s + 2u - uj, n = s2 - J - 1u;
+        uint8_t *hd = h->dir + lt_vi(s2, 1u, J);
+        if (J & 1u) { /* py even: px even (I odd) the old vertex keeps its ring start; I even edge 0 */
+            for (i = 0; i + 1u < n; i += 2u, u++) {
+                hd[i] = g->dir[u];
+                hd[i + 1u] = lt_ndir(g, u, u - back, 0u);
             }
-            h->dir[v] = (((uint32_t)g->low[u] >> d) & 1u) ? lt_ndir_u[d][g->rot[2u * u]]
-                                                           : lt_ndir_d[d][g->rot[2u * x + 1u]];
+            if (i < n) hd[i] = g->dir[u];
+        } else { /* I odd edge 2, I even edge 1 */
+            for (i = 0; i + 1u < n; i += 2u, u++) {
+                hd[i] = lt_ndir(g, u, u - 1u, 2u);
+                hd[i + 1u] = lt_ndir(g, u, u, 1u);
+            }
+            if (i < n) hd[i] = lt_ndir(g, u, u - 1u, 2u);
         }
     }
     if (meta > 1)

@@ -98,10 +98,10 @@ uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
     off[LT_BDIR] = b + g1; subd_size_add(&g1, nB, 1u);
     off[LT_BROT] = b + g1; subd_size_add(&g1, nB, 2u);
     off[LT_BLOW] = b + g1; subd_size_add(&g1, nB, 1u);
-    subd_size_add(&u, limit ? nA : qn, limit ? rs : (uint32_t)sizeof(lt_rec));
+    subd_size_add(&u, limit ? nA : qn, limit ? rs : LT_REC_BYTES);
     subd_bytes_add(&b, subd_bytes_max(g1, u));
     off[LT_QREC] = limit ? b : off[LT_BPOS];
-    if (limit) subd_size_add(&b, qn, (uint32_t)sizeof(lt_rec));
+    if (limit) subd_size_add(&b, qn, LT_REC_BYTES);
     off[LT_LNRM] = b;
     if (limit) subd_size_add(&b, qn, rs);
     return b;
@@ -133,6 +133,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
     tl->g[1].low = block + off[LT_BLOW];
     tl->mpos = tl->g[1].pos;
     tl->q = (lt_rec *)(void *)(block + off[LT_QREC]);
+    tl->qhi = (uint32_t *)(void *)(tl->q + lt_count(1u << (t - lt_split(t, limit)))); /* after a piece's records */
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
     tl->depth = t;
@@ -197,7 +198,7 @@ static inline void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui
 /* A region of level t + 1 points and where they go: the points (px, py) = O + x e1 + y e2
  * (level t + 1's coordinates plus one: the point halves (px, py) of level t's grid) with x, y >= lo, x + y <= hi (less the
  * region's three corners when `skip`), point (x, y) written to vertex (x - lo, y - lo) of a
- * grid of side hi - 2 lo, ds subd_reals per vertex (3: a grid's positions; 5: the quarter's
+ * grid of side hi - 2 lo, ds subd_reals per vertex (3: a grid's positions; 4: the quarter's
  * records, lt_rec). e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
 typedef struct lt_frame {
     int32_t ox, oy, p, q, r, u, lo, hi, ds;

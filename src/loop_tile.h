@@ -22,22 +22,28 @@ typedef struct lt_grid {
 } lt_grid;
 
 /* One vertex of the last level's piece (a quarter: lt_split) as the emission loop reads it: its position and
- * its id (low word, high word) side by side, so that a triangle corner is one address. */
+ * its id's low word side by side, four words, so that a triangle corner is one address
+ * (index times 16) and one load of four words. The high words are an array of their own
+ * (lt_tile's qhi), read only when a stream's ids reach 2^32 (loop_stream_emit.c). */
 typedef struct lt_rec {
     subd_real p[3];
-    uint32_t id[2];
+    uint32_t id;
 } lt_rec;
-typedef char lt_rec_is_5_words[sizeof(lt_rec) == 5u * sizeof(subd_real) ? 1 : -1]; /* SUBD_LOOP_TILE_BYTES_ */
+typedef char lt_rec_is_4_words[sizeof(lt_rec) == 4u * sizeof(subd_real) ? 1 : -1];
+/* Bytes of a piece vertex in a tile's block: its record and its id's high word (the 20 of
+ * SUBD_LOOP_TILE_BYTES_). */
+#define LT_REC_BYTES ((uint32_t)sizeof(lt_rec) + 4u)
 
 /* A tile of depth t (2 <= t <= SUBD_LOOP_TILE_LEVELS): levels 0..t-1 in two grids used in
  * turn, then the last level one piece (a quarter, a child of the tile's face at level 1, or
  * in limit mode's depth 5 a quarter's child: lt_split) at a time: its vertices' positions
- * and ids (q: plain mode in the second grid's memory, dead by then) and the emission order
+ * and ids (q, qhi: plain mode in the second grid's memory, dead by then) and the emission order
  * of its triangles (tab: 3 piece-vertex indices per triangle, subd_loop's depth-first order;
  * filled once per stream by subd_lt_table). */
 typedef struct lt_tile {
     lt_grid g[2];
     lt_rec *q;
+    uint32_t *qhi; /* the high words of q's ids, after q's records (LT_REC_BYTES)          */
     uint8_t *tab;
     uint32_t depth;
     uint32_t split; /* lt_split: the last level is made by faces of level split (pieces)     */

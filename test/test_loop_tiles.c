@@ -553,7 +553,7 @@ static uint32_t piece_ids_bad(lt_tile *tl, const subd_mesh *in, uint32_t f, uint
             int32_t gx = org[0] + x * e1[0] + y * e2[0], gy = org[1] + x * e1[1] + y * e2[1];
             int32_t pa = (int32_t)ca[0] + gx * ea + gy * fa, pb = (int32_t)cb[0] + gx * eb + gy * fb;
             uint64_t want = subd_lp_vertex_id(in, f, (uint32_t)pa, (uint32_t)pb, lv);
-            if (((uint64_t)tl->q[q].id[0] | ((uint64_t)tl->q[q].id[1] << 32)) != want) bad++;
+            if (((uint64_t)tl->q[q].id | ((uint64_t)tl->qhi[q] << 32)) != want) bad++;
             if (pa < 1 || pb < 1 || pa + pb > n1 - 1) all = 0;
         }
     *inner += all;
@@ -570,6 +570,7 @@ static uint32_t piece_ids_bad(lt_tile *tl, const subd_mesh *in, uint32_t f, uint
 static void tile_ids_direct(void)
 {
     static lt_rec rec[153]; /* a piece of side 16 at most */
+    static uint32_t rechi[153];
     static const int8_t dx[6] = {1, 0, -1, -1, 0, 1}, dy[6] = {0, 1, 1, 0, -1, -1};
     subd_arena a;
     subd_mesh in;
@@ -578,6 +579,7 @@ static void tile_ids_direct(void)
     subd_arena_init(&a, CMP_BUF, CMP_BYTES);
     if (!make_grid(&a, 2u, 0, 0, &in)) return;
     tl.q = rec;
+    tl.qhi = rechi;
     for (lv = 3; lv <= 7u; lv++)
         for (t = 2; t <= 5u && t <= lv; t++)
             for (split = 1; split <= 2u && split < t; split++)

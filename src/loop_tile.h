@@ -117,6 +117,48 @@ static inline void lt_bound(int32_t c, int32_t d, int32_t *a, int32_t *b)
  * closed form, stepped along each row, the others by subd_lp_vertex_id (loop_tile_ids.c). */
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2]);
+/* A region of level t + 1 points and where they go: the points (px, py) = O + x e1 + y e2
+ * (level t + 1's coordinates plus one: the point halves (px, py) of level t's grid) with x, y >= lo, x + y <= hi (less the
+ * region's three corners when `skip`), point (x, y) written to vertex (x - lo, y - lo) of a
+ * grid of side hi - 2 lo, ds subd_reals per vertex (3: a grid's positions; 4: the quarter's
+ * records, lt_rec). e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
+typedef struct lt_frame {
+    int32_t ox, oy, p, q, r, u, lo, hi, ds;
+    int skip;
+} lt_frame;
+
+/* The six neighbours of a grid vertex in a row of length `row`, as offsets in subd_reals
+ * (+1, +row, +row - 1, -1, -(row + 1), -row: lt_row's index rules), twice over so that the
+ * six from any ring start are consecutive. */
+TOPO_INLINE void lt_ring_offsets(int32_t row, int32_t o3[12])
+{
+    int32_t i;
+    o3[0] = 3;
+    o3[1] = 3 * row;
+    o3[2] = 3 * (row - 1);
+    o3[3] = -3;
+    o3[4] = -3 * (row + 1);
+    o3[5] = -3 * row;
+    for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
+}
+
+/* Whether a rule's products go in subd_loop's order: float32 sums round at each step, so the
+ * ring start of a vertex and the lower side of an edge matter; Q16.16 sums are exact (a
+ * 64-bit sum of products: subd_real.h), so any order gives the same bits, and a tile there
+ * starts every ring in direction 0, takes every edge from its up triangle's side and carries
+ * no ring starts, rotations or lower sides (subd_lt_start). */
+#define LT_ORDERED (!SUBD_FIXED)
+
+/* The points of a region (loop_tile_rows.c: by rows of g's lattice, each by the rule of
+ * its kind, subd_loop's bits) from grid g (side s) into out: any frame fr (limit mode's
+ * quarters with their margin); the next level's grid (side 2s - 3, less its three corners:
+ * lt_refine); plain mode's quarter c into the records (subd_lt_quarter's frame, its corner 0
+ * at (ox, oy) in g's coordinates plus one, side hi). The last two take their frames as
+ * constants. */
+void subd_lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real *out, loop_weights w);
+void subd_lt_rows_refine(const lt_grid *g, uint32_t s, int32_t hi, subd_real *out, loop_weights w);
+void subd_lt_rows_quarter(const lt_grid *g, uint32_t s, uint32_t c, int32_t ox, int32_t oy, int32_t hi, subd_real *out,
+                          loop_weights w);
 /* Tiles of depth t (2..5) a running Loop stream h (subd_loop_stream_begin) has made so far:
  * for the tests that count which path the stream took (loop_stream.c). */
 uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t);

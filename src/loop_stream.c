@@ -251,7 +251,10 @@ static void sp_up(sp_state *s)
 static void sp_enter(sp_state *s, const sp_level *p)
 {
     const subd_loop_opts *o = &s->o;
-    if (s->lay.tdepth && s->k >= s->lay.tk && (s->k == s->lay.tk || s->k + LT_PARTIAL_MIN(s->limit) <= o->levels)) {
+    /* a regular patch has 12 vertices and 13 faces (subd_lt_start): the others are refused
+     * before the tile is carved */
+    if (s->lay.tdepth && s->k >= s->lay.tk && (s->k == s->lay.tk || s->k + LT_PARTIAL_MIN(s->limit) <= o->levels) &&
+        p->h->nv == 12u && p->h->nf == 13u) {
         lt_tile tl;
         subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
         if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
@@ -393,6 +396,11 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
     s->tdep = 0;
     for (f = 0; f < 4u; f++) s->ntile[f] = 0;
     s->nwin = 0;
+    { /* every id is below V + C (N - 1) + F (N - 1)(N - 2) / 2, N = 2^L (subd_loop.h) */
+        uint64_t nm1 = ((uint64_t)1 << o->levels) - 1u;
+        s->idwide = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
+                    (uint64_t)in->num_faces * (nm1 * (nm1 - 1u) / 2u) > ((uint64_t)1 << 32) ? 1u : 0u;
+    }
     /* the tiles' emission tables (depths 2..lt_table_depth: loop_tile.h), once */
     for (f = 2; lay.tdepth && f <= lt_table_depth(lay.tdepth, limit); f++) {
         lt_tile tl;
@@ -417,6 +425,8 @@ uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t)
 }
 
 uint32_t subd_ls_stream_windows(const subd_stream *h) { return ((const sp_state *)h->state_)->nwin; }
+
+void subd_ls_stream_wide_ids(subd_stream *h) { ((sp_state *)h->state_)->idwide = 1; }
 
 int subd_loop_stream(subd_arena *a, const subd_mesh *in, const subd_loop_opts *o, const subd_tri_sink *sink,
                      subd_diag *diag)

@@ -314,8 +314,8 @@ static void tile_ids(sp_state *s, const lt_tile *tl, const int32_t org[2], const
  * quarter's normals tl->qnrm are copied); *at: the triangle the sink stopped at (its value
  * returned), else n. The hot loop of the stream: the fewest loads and stores per triangle,
  * the sink called without the queue between. */
-static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts,
-                              uint32_t *at, const tile_p3 *N)
+TOPO_INLINE int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts,
+                              uint32_t *at, const tile_p3 *N, const uint32_t *H)
 {
     int (*fn)(void *, const subd_tri *) = ts->tri;
     void *ctx = ts->ctx;
@@ -327,12 +327,13 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
         int st;
         uint32_t a;
         const lt_rec *r;
-        /* corner by corner (few live registers), unrolled; position and id from one record */
+        /* corner by corner (few live registers), unrolled; position and id's low word from
+         * one record, the high word from H (NULL: every id below 2^32) */
 #define TILE_PUSH_CORNER(k)                                                          \
         a = ix[k];                                                                   \
         r = Q + a;                                                                   \
         tp[k] = *(const tile_p3 *)(const void *)r->p;                                \
-        t->id[k] = (uint64_t)r->id[0] | ((uint64_t)r->id[1] << 32);                  \
+        t->id[k] = H ? (uint64_t)r->id | ((uint64_t)H[a] << 32) : (uint64_t)r->id;   \
         if (N) tn[k] = N[a];
         TILE_PUSH_CORNER(0)
         TILE_PUSH_CORNER(1)
@@ -347,11 +348,15 @@ static inline int tile_push_n(const lt_tile *tl, uint32_t j0, uint32_t n, subd_t
     return 0;
 }
 
-/* The plain and the limit loop apart (no normals to test for per triangle). */
-static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at)
+/* The plain and the limit loop apart (no normals to test for per triangle), and those of
+ * streams whose ids all lie below 2^32 (`wide` = 0: the high words are zero, unread) apart
+ * from the others'. */
+static int tile_push(const lt_tile *tl, uint32_t j0, uint32_t n, subd_tri *t, const subd_tri_sink *ts, uint32_t *at,
+                     uint32_t wide)
 {
-    if (tl->qnrm) return tile_push_n(tl, j0, n, t, ts, at, (const tile_p3 *)(const void *)tl->qnrm);
-    return tile_push_n(tl, j0, n, t, ts, at, 0);
+    const tile_p3 *N = (const tile_p3 *)(const void *)tl->qnrm;
+    if (wide) return N ? tile_push_n(tl, j0, n, t, ts, at, N, tl->qhi) : tile_push_n(tl, j0, n, t, ts, at, 0, tl->qhi);
+    return N ? tile_push_n(tl, j0, n, t, ts, at, N, 0) : tile_push_n(tl, j0, n, t, ts, at, 0, 0);
 }
 
 /* The tile's triangles, piece by piece (quarters, or their children: lt_split), each
@@ -389,7 +394,7 @@ int subd_ls_tile_emit(sp_state *s, subd_stream_q *q)
         }
         if (one && q->ts) { /* push: the hot loop */
             if (q->stop) return 0;
-            if ((st = tile_push(&tl, s->tj, n, one, q->ts, &tj)) != 0) {
+            if ((st = tile_push(&tl, s->tj, n, one, q->ts, &tj, s->idwide)) != 0) {
                 q->stop = st; /* as subd_stream_q_commit leaves it */
                 s->tj = tj + 1u;
                 return st;
@@ -401,9 +406,9 @@ int subd_ls_tile_emit(sp_state *s, subd_stream_q *q)
             const subd_real *x0 = r0->p, *x1 = r1->p, *x2 = r2->p;
             subd_real p00 = x0[0], p01 = x0[1], p02 = x0[2], p10 = x1[0], p11 = x1[1], p12 = x1[2];
             subd_real p20 = x2[0], p21 = x2[1], p22 = x2[2];
-            uint64_t d0 = (uint64_t)r0->id[0] | ((uint64_t)r0->id[1] << 32);
-            uint64_t d1 = (uint64_t)r1->id[0] | ((uint64_t)r1->id[1] << 32);
-            uint64_t d2 = (uint64_t)r2->id[0] | ((uint64_t)r2->id[1] << 32);
+            uint64_t d0 = (uint64_t)r0->id | ((uint64_t)tl.qhi[ix[0]] << 32);
+            uint64_t d1 = (uint64_t)r1->id | ((uint64_t)tl.qhi[ix[1]] << 32);
+            uint64_t d2 = (uint64_t)r2->id | ((uint64_t)tl.qhi[ix[2]] << 32);
             subd_tri *t;
             if (one) {
                 if (q->stop) break;

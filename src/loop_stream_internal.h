@@ -97,6 +97,8 @@ typedef struct sp_state {
     uint32_t tdep, ton, tq, tj, tready;
     uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
     uint32_t nwin;     /* windows made so far (subd_ls_stream_windows)                 */
+    uint32_t idwide;   /* some id of the stream may reach 2^32: the tiles' push loop reads
+                        * their high words (loop_stream_emit.c); else they are zero     */
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 
@@ -128,4 +130,7 @@ int subd_ls_tile_emit(sp_state *s, subd_stream_q *q);
 /* The windows (loop_patch.h) a Loop stream has made so far: for the tests, which check that
  * the window path is taken. */
 uint32_t subd_ls_stream_windows(const subd_stream *h);
+/* Makes a running Loop stream read its tile ids' high words as a stream whose ids reach 2^32
+ * does (a mesh that large does not fit a test): for the tests of that path. */
+void subd_ls_stream_wide_ids(subd_stream *h);
 #endif

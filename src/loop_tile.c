@@ -31,6 +31,9 @@
  *     rotation r has rotation r, of a down triangle r + 1.
  * Level 0 takes all three from the patch (its vert_out, its faces' corner order, its sorted
  * half-edge numbering, which compares as subd_loop's does: loop_stream.c's header).
+ * Q16.16 sums are exact (64-bit sums of products), so there any order gives subd_loop's bits:
+ * a Q16.16 tile ignores ring starts and lower sides (LT_ORDERED), and a plain one carries
+ * none (only limit mode's ring starts need them there).
  *
  * Regular: the patch has exactly 13 faces and 12 vertices, its three corners are interior,
  * of valence 6, untagged, with no sharp edge, and it embeds in the lattice consistently
@@ -52,17 +55,19 @@
 #include "layout.h" /* subd_bytes_add, subd_bytes_max */
 #include "loop_tile.h"
 
-/* No rule of a tile can overflow, so its rules skip the check (lt_pass): each is a convex
+/* No rule of a tile can overflow, so its rules skip the check (lt_vpt, lt_ept): each is a convex
  * combination (weights >= 0 summing to one, 3/8 3/8 1/8 1/8 and 5/8 1/16 x 6, exact in both
  * arithmetics), so no point of a tile leaves the range of its level-0 points: in Q16.16 the
  * exact 64-bit sum rounds into it, and in float32 a partial sum stays below
  * max |x| (1 + 2^-24)^k, which is finite when every level-0 coordinate is below
  * SUBD_REAL_MAX / 2. A patch with a larger (or a NaN) coordinate is refused (LT_HUGE) and
- * takes the general path, whose rules check. Why the #if: the float bound has no Q16.16
- * counterpart (every Q16.16 value is safe, and a comparison with its largest value would
- * be always false). */
+ * takes the general path, whose rules check. Q16.16 tiles sum in 32 bits (lt_vpt, lt_ept:
+ * at most 16 times a coordinate), which their level-0 coordinates below 2^27 (2048.0) in
+ * magnitude keep from overflowing; a patch with a larger one takes the general path (the
+ * same bits, in 64-bit sums). */
 #if SUBD_FIXED
-#define LT_HUGE(x) 0
+#define LT_FIX_MAX ((subd_real)134217727) /* 2^27 - 1 */
+#define LT_HUGE(x) ((x) > LT_FIX_MAX || (x) < -LT_FIX_MAX)
 #else
 #define LT_HUGE(x) (!((x) <= SUBD_REAL_MAX / 2.0f && (x) >= -(SUBD_REAL_MAX / 2.0f)))
 #endif
@@ -93,10 +98,10 @@ uint32_t subd_lt_layout(uint32_t t, int limit, uint32_t off[LT_N])
     off[LT_BDIR] = b + g1; subd_size_add(&g1, nB, 1u);
     off[LT_BROT] = b + g1; subd_size_add(&g1, nB, 2u);
     off[LT_BLOW] = b + g1; subd_size_add(&g1, nB, 1u);
-    subd_size_add(&u, limit ? nA : qn, limit ? rs : (uint32_t)sizeof(lt_rec));
+    subd_size_add(&u, limit ? nA : qn, limit ? rs : LT_REC_BYTES);
     subd_bytes_add(&b, subd_bytes_max(g1, u));
     off[LT_QREC] = limit ? b : off[LT_BPOS];
-    if (limit) subd_size_add(&b, qn, (uint32_t)sizeof(lt_rec));
+    if (limit) subd_size_add(&b, qn, LT_REC_BYTES);
     off[LT_LNRM] = b;
     if (limit) subd_size_add(&b, qn, rs);
     return b;
@@ -128,6 +133,7 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
     tl->g[1].low = block + off[LT_BLOW];
     tl->mpos = tl->g[1].pos;
     tl->q = (lt_rec *)(void *)(block + off[LT_QREC]);
+    tl->qhi = (uint32_t *)(void *)(tl->q + lt_count(1u << (t - lt_split(t, limit)))); /* after a piece's records */
     tl->qnrm = limit ? (subd_real *)(void *)(block + off[LT_LNRM]) : 0;
     tl->lk = 0;
     tl->depth = t;
@@ -189,151 +195,6 @@ static inline void lt_classify(uint32_t px, uint32_t py, int *even, uint32_t *ui
     }
 }
 
-/* A region of level t + 1 points and where they go: the points (px, py) = O + x e1 + y e2
- * (level t + 1's coordinates plus one: the point halves (px, py) of level t's grid) with x, y >= lo, x + y <= hi (less the
- * region's three corners when `skip`), point (x, y) written to vertex (x - lo, y - lo) of a
- * grid of side hi - 2 lo, ds subd_reals per vertex (3: a grid's positions; 5: the quarter's
- * records, lt_rec). e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
-typedef struct lt_frame {
-    int32_t ox, oy, p, q, r, u, lo, hi, ds;
-    int skip;
-} lt_frame;
-
-/* The six neighbours of a grid vertex in a row of length `row`, as offsets in subd_reals
- * (+1, +row, +row - 1, -1, -(row + 1), -row: lt_pass's index rules), twice over so that the
- * six from any ring start are consecutive. */
-TOPO_INLINE void lt_ring_offsets(int32_t row, int32_t o3[12])
-{
-    int32_t i;
-    o3[0] = 3;
-    o3[1] = 3 * row;
-    o3[2] = 3 * (row - 1);
-    o3[3] = -3;
-    o3[4] = -3 * (row + 1);
-    o3[5] = -3 * row;
-    for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
-}
-
-/* One pass along natural row py: n points from px0 stepping by 2 (one kind: lt_classify's
- * by the parities), parent U index l0 (+1 per point), destination (x, y) stepping by
- * (dx, dy) in a grid of side S, ds subd_reals per vertex. Even points take the smooth vertex rule of valence 6 from
- * the ring start, odd ones the interior edge rule from the lower side (the rules of
- * loop_rules.h, the products in subd_loop's order). Indices from U(ui, uj)'s l0: vertex
- * (i, j) + (1, 0) is +1, + (0, 1) is +row (row = s + 1 - j, the length of row j),
- * + (-1, 1) is +row - 1, + (0, -1) is -(row + 1), + (1, -1) is -row. Forced inline
- * (TOPO_INLINE) so each kind is its own loop. */
-TOPO_INLINE void lt_pass(const lt_grid *g, uint32_t row, int32_t n, uint32_t l0, int32_t x, int32_t y, int32_t dx,
-                         int32_t dy, int32_t S, int32_t ds, int kind, subd_real *out, loop_weights w)
-{
-    const subd_real *P = g->pos;
-    /* destination index k = lt_vi(S, x, y), stepped: k(x + dx, y + dy) - k(x, y) =
-     * dx + dy (2S + 3 - dy) / 2 - y dy, which falls by dy^2 per step */
-    int32_t i, R = (int32_t)row, k = y * (2 * S + 3 - y) / 2 + x, sk = dx + dy * (2 * S + 3 - dy) / 2 - y * dy;
-    int32_t dd = dy * dy;
-    uint32_t dead = 0, *ovf = &dead; /* a tile's rules cannot overflow (LT_HUGE): unread */
-    k *= ds; /* in subd_reals */
-    sk *= ds;
-    dd *= ds;
-    if (kind == 3) { /* even: the vertex rule from the ring start */
-        int32_t o3[12];
-        lt_ring_offsets(R, o3);
-        for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
-            const subd_real *c = P + 3u * l0;
-            const int32_t *o = o3 + g->dir[l0];
-            subd_acc acc[3];
-            loop_smooth_begin(acc, w, c);
-            loop_smooth_add(acc, w, c + o[0]);
-            loop_smooth_add(acc, w, c + o[1]);
-            loop_smooth_add(acc, w, c + o[2]);
-            loop_smooth_add(acc, w, c + o[3]);
-            loop_smooth_add(acc, w, c + o[4]);
-            loop_smooth_add(acc, w, c + o[5]);
-            loop_smooth_end(out + k, acc, ovf);
-        }
-    } else { /* the edge d = kind of U(l0): a -> b, opposite c, across e */
-        int32_t oa, ob, oc, oe;
-        uint32_t d = (uint32_t)kind;
-        if (kind == 0) {
-            oa = 0; ob = 3; oc = 3 * R; oe = -3 * R;
-        } else if (kind == 1) {
-            oa = 3; ob = 3 * R; oc = 0; oe = 3 * (R + 1);
-        } else {
-            oa = 3 * R; ob = 0; oc = 3; oe = 3 * (R - 1);
-        }
-        /* when the other side is lower, the reference swaps a with b and c with e: only the
-         * second matters, since (0 + x) + y and (0 + y) + x are the same float for every x,
-         * y (addition commutes, and 0 + x differs from x only for x = -0, where both give
-         * +0 + y, or +0 when y = -0 too) and Q16.16 sums are exact */
-        for (i = 0; i < n; i++, l0++, k += sk, sk -= dd) {
-            const subd_real *c = P + 3u * l0;
-            subd_real *o = out + k;
-            int32_t lw = (int32_t)(((uint32_t)g->low[l0] >> d) & 1u);
-            const subd_real *a = c + oa, *b = c + ob, *v = c + (lw ? oc : oe), *e = c + (lw ? oe : oc);
-            o[0] = loop_rule_edge1(a[0], b[0], v[0], e[0], ovf);
-            o[1] = loop_rule_edge1(a[1], b[1], v[1], e[1], ovf);
-            o[2] = loop_rule_edge1(a[2], b[2], v[2], e[2], ovf);
-        }
-    }
-    (void)dead;
-}
-
-/* The points of region fr from grid g (side s) by rows of g's lattice: in a row the kind of
- * point alternates (lt_classify), so each row is two passes of one kind, and the parent
- * row's offsets are the row's; the destination index follows the frame. Each point gets
- * subd_loop's value. */
-static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real *out, loop_weights w)
-{
-    int32_t S = fr->hi - 2 * fr->lo, cx[3], cy[3], ymin, ymax, py, k, e = fr->hi - fr->lo;
-    cx[0] = fr->ox + fr->lo * (fr->p + fr->r);
-    cy[0] = fr->oy + fr->lo * (fr->q + fr->u);
-    cx[1] = fr->ox + e * fr->p + fr->lo * fr->r;
-    cy[1] = fr->oy + e * fr->q + fr->lo * fr->u;
-    cx[2] = fr->ox + fr->lo * fr->p + e * fr->r;
-    cy[2] = fr->oy + fr->lo * fr->q + e * fr->u;
-    ymin = ymax = cy[0];
-    for (k = 1; k < 3; k++) {
-        if (cy[k] < ymin) ymin = cy[k];
-        if (cy[k] > ymax) ymax = cy[k];
-    }
-    for (py = ymin; py <= ymax; py++) {
-        /* x = u dpx - r dpy, y = -q dpx + p dpy (the inverse frame), dpx = px - ox */
-        int32_t dpy = py - fr->oy, a = -0x40000000, b = 0x40000000, pa, pb, par;
-        uint32_t uj = (uint32_t)py >> 1, row = s + 1u - uj, rb = lt_vi(s, 0u, uj);
-        lt_bound(fr->u, -fr->r * dpy - fr->lo, &a, &b);
-        lt_bound(-fr->q, fr->p * dpy - fr->lo, &a, &b);
-        lt_bound(fr->q - fr->u, fr->hi - (fr->p - fr->r) * dpy, &a, &b);
-        pa = a + fr->ox;
-        pb = b + fr->ox;
-        if (fr->skip)
-            for (k = 0; k < 3; k++)
-                if (cy[k] == py) {
-                    if (cx[k] == pa) pa++;
-                    else if (cx[k] == pb) pb--;
-                }
-        for (par = 0; par < 2; par++) {
-            int32_t px0 = pa + par, n, dpx, x, y;
-            int kind;
-            if (px0 > pb) break;
-            n = (pb - px0) / 2 + 1;
-            dpx = px0 - fr->ox;
-            x = fr->u * dpx - fr->r * dpy - fr->lo;
-            y = -fr->q * dpx + fr->p * dpy - fr->lo;
-            if (py & 1) kind = (px0 & 1) ? 1 : 2;
-            else kind = (px0 & 1) ? 0 : 3;
-            /* one call per kind, each with its kind constant (its own loop, its offsets
-             * folded) */
-#define LT_PASS(kd) lt_pass(g, row, n, rb + ((uint32_t)px0 >> 1), x, y, 2 * fr->u, -2 * fr->q, S, fr->ds, kd, out, w)
-            switch (kind) {
-            case 0: LT_PASS(0); break;
-            case 1: LT_PASS(1); break;
-            case 2: LT_PASS(2); break;
-            default: LT_PASS(3); break;
-            }
-#undef LT_PASS
-        }
-    }
-}
-
 /* Ring start of the new vertex on edge d of U(ui, uj) (see the header: by the lower
  * half-edge's corner index in its face), tabulated: when U holds the lower half-edge (lattice
  * edge d, direction 2d) and U has rotation r, its corner index is ci = (d - r) mod 3 and the
@@ -344,12 +205,17 @@ static void lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real 
 static const uint8_t lt_ndir_u[3][3] = {{2u, 0u, 2u}, {4u, 4u, 2u}, {4u, 0u, 0u}};
 static const uint8_t lt_ndir_d[3][3] = {{5u, 5u, 3u}, {5u, 1u, 1u}, {3u, 1u, 3u}};
 
+/* The ring start of the new vertex on edge d of U(u) of g, x the down triangle across it. */
+TOPO_INLINE uint8_t lt_ndir(const lt_grid *g, uint32_t u, uint32_t x, uint32_t d)
+{
+    return (((uint32_t)g->low[u] >> d) & 1u) ? lt_ndir_u[d][g->rot[2u * u]] : lt_ndir_d[d][g->rot[2u * x + 1u]];
+}
+
 static uint8_t lt_new_dir(const lt_grid *g, uint32_t s, uint32_t ui, uint32_t uj, uint32_t d)
 {
-    uint32_t v = lt_vi(s, ui, uj), w;
-    if (((uint32_t)g->low[v] >> d) & 1u) return lt_ndir_u[d][g->rot[2u * v]];
-    w = d == 0u ? v - (s + 2u - uj) : d == 1u ? v : v - 1u; /* the D across: lt_vi's row step */
-    return lt_ndir_d[d][g->rot[2u * w + 1u]];
+    uint32_t v = lt_vi(s, ui, uj);
+    /* the D across: lt_vi's row step */
+    return lt_ndir(g, v, d == 0u ? v - (s + 2u - uj) : d == 1u ? v : v - 1u, d);
 }
 
 /* Ring start (lattice direction of vert_out) of the level t + 1 point (px, py) / 2 of grid g
@@ -374,65 +240,80 @@ static inline uint32_t lt_dir_at(const lt_grid *g, uint32_t s, uint32_t px, uint
  * A corner child at lattice corner k has rotation k; the middle child of an up triangle
  * keeps its rotation, of a down one adds one (the header). Lower sides: a corner child's
  * edges along the parent's keep the parent's bits, its inner edge is lower on its side; the
- * middle child holds no lower half-edge. */
-static void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2)
+ * middle child holds no lower half-edge. `rot` (a constant: forced inline): the rotations
+ * too (plain mode's last grid needs only the lower sides: its rotations would serve the ring
+ * starts of a level it does not make). */
+TOPO_INLINE void lt_faces(const lt_grid *g, uint32_t s, const lt_grid *h, uint32_t s2, int rot)
 {
+    static const uint8_t next3[3] = {1u, 2u, 0u}; /* (r + 1) mod 3 */
     const uint8_t *gl = g->low, *gr = g->rot;
-    uint8_t *hl = h->low, *hr = h->rot;
     uint32_t I, J;
     for (J = 0; J < s2; J++) {
-        uint32_t v = lt_vi(s2, 0u, J), n = s2 - J, p0 = lt_vi(s, 0u, (J + 1u) >> 1);
-        for (I = 0; I < n; I++, v++) {
-            uint32_t p = p0 + ((I + 1u) >> 1), ru, rd, lw;
-            if (J & 1u) {
-                if (I & 1u) { ru = 0u; lw = (gl[p] & 5u) | 2u; rd = gr[2u * p]; }
-                else { ru = 1u; lw = (gl[p] & 3u) | 4u; rd = 0u; }
-            } else {
-                if (I & 1u) { ru = 2u; lw = (gl[p] & 6u) | 1u; rd = 2u; }
-                else { ru = (gr[2u * p + 1u] + 1u) % 3u; lw = 0u; rd = 1u; }
+        /* U(I, J) and D(I, J) of h from the face p = p0 + (I + 1) / 2 of g: I = 0 alone, then
+         * I odd and I + 1 (one p) in one turn */
+        uint32_t v = lt_vi(s2, 0u, J), n = s2 - J, p = lt_vi(s, 0u, (J + 1u) >> 1);
+        uint8_t *hl = h->low + v, *hr = h->rot + 2u * v;
+#define LT_FACE(i, lw, ru, rd)                                          \
+        do {                                                            \
+            hl[i] = (uint8_t)(lw);                                      \
+            if (rot) {                                                  \
+                hr[2u * (i)] = (uint8_t)(ru);                           \
+                if ((i) + 1u < n) hr[2u * (i) + 1u] = (uint8_t)(rd); /* D(I, J) is in h */ \
+            }                                                           \
+        } while (0)
+        if (J & 1u) { /* I even: corner children 1 of U, 0 of D; I odd: corner child 0 of U, U's middle child */
+            LT_FACE(0u, (gl[p] & 3u) | 4u, 1u, 0u);
+            for (I = 1u, p++; I + 1u < n; I += 2u, p++) {
+                LT_FACE(I, (gl[p] & 5u) | 2u, 0u, gr[2u * p]);
+                LT_FACE(I + 1u, (gl[p] & 3u) | 4u, 1u, 0u);
             }
-            hr[2u * v] = (uint8_t)ru;
-            hl[v] = (uint8_t)lw;
-            if (I + 1u < n) hr[2u * v + 1u] = (uint8_t)rd; /* D(I, J) is in h */
+            if (I < n) LT_FACE(I, (gl[p] & 5u) | 2u, 0u, gr[2u * p]);
+        } else { /* I even: D's middle child, corner child 1 of D; I odd: corner children 2 */
+            LT_FACE(0u, 0u, next3[gr[2u * p + 1u]], 1u);
+            for (I = 1u, p++; I + 1u < n; I += 2u, p++) {
+                LT_FACE(I, (gl[p] & 6u) | 1u, 2u, 2u);
+                LT_FACE(I + 1u, 0u, next3[gr[2u * p + 1u]], 1u);
+            }
+            if (I < n) LT_FACE(I, (gl[p] & 6u) | 1u, 2u, 2u);
         }
+#undef LT_FACE
     }
 }
 
-/* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: its ring starts, rotations
- * and lower sides too (not for the level the tile ends at). */
+/* Level t + 1 (h, side 2s - 3) from level t (g, side s); `meta`: 0 its positions only, 1
+ * its ring starts and lower sides too, 2 its rotations too (subd_lt_start). */
 static void lt_refine(const lt_grid *g, uint32_t s, const lt_grid *h, int meta, loop_weights w)
 {
-    uint32_t s2 = 2u * s - 3u, I, J;
-    lt_frame fr;
-    fr.ox = 1; fr.oy = 1; fr.p = 1; fr.q = 0; fr.r = 0; fr.u = 1;
-    fr.lo = 0; fr.hi = (int32_t)s2; fr.skip = 1; fr.ds = 3;
-    lt_rows(g, s, &fr, h->pos, w);
+    uint32_t s2 = 2u * s - 3u, i, J;
+    subd_lt_rows_refine(g, s, (int32_t)s2, h->pos, w);
     if (!meta) return;
     /* ring starts: the next level's old vertices are this level's face's, at I, J >= 1,
      * I + J <= s2 - 1 */
     for (J = 1; J + 2u <= s2; J++) {
         /* lt_dir_at of (I + 1, J + 1), by rows: the point lies in U(u) of g, u = lt_vi(s,
-         * (I + 1) >> 1, (J + 1) >> 1) whatever its parities; lt_new_dir's D across (x) is
-         * D(u) for edge 1, D(u - 1) for edge 2, and for edge 0 the D below (one row of g back) */
-        uint32_t v = lt_vi(s2, 1u, J), uj = (J + 1u) >> 1, u0 = lt_vi(s, 0u, uj), back = s + 2u - uj;
-        for (I = 1; I + J + 1u <= s2; I++, v++) {
-            uint32_t u = u0 + ((I + 1u) >> 1), d, x;
-            if (J & 1u) { /* py even */
-                if (I & 1u) { /* px even: the old vertex keeps its ring start */
-                    h->dir[v] = g->dir[u];
-                    continue;
-                }
-                d = 0u;
-                x = u - back;
-            } else {
-                d = (I & 1u) ? 2u : 1u;
-                x = (I & 1u) ? u - 1u : u;
+         * (I + 1) >> 1, (J + 1) >> 1) whatever its parities (I odd and I + 1: one u, in one
+         * turn); lt_new_dir's D across is D(u) for edge 1, D(u - 1) for edge 2, and for edge
+         * 0 the D below (one row of g back) */
+        uint32_t uj = (J + 1u) >> 1, u = lt_vi(s, 0u, uj) + 1u, back = s + 2u - uj, n = s2 - J - 1u;
+        uint8_t *hd = h->dir + lt_vi(s2, 1u, J);
+        if (J & 1u) { /* py even: px even (I odd) the old vertex keeps its ring start; I even edge 0 */
+            for (i = 0; i + 1u < n; i += 2u, u++) {
+                hd[i] = g->dir[u];
+                hd[i + 1u] = lt_ndir(g, u, u - back, 0u);
             }
-            h->dir[v] = (((uint32_t)g->low[u] >> d) & 1u) ? lt_ndir_u[d][g->rot[2u * u]]
-                                                           : lt_ndir_d[d][g->rot[2u * x + 1u]];
+            if (i < n) hd[i] = g->dir[u];
+        } else { /* I odd edge 2, I even edge 1 */
+            for (i = 0; i + 1u < n; i += 2u, u++) {
+                hd[i] = lt_ndir(g, u, u - 1u, 2u);
+                hd[i + 1u] = lt_ndir(g, u, u, 1u);
+            }
+            if (i < n) hd[i] = lt_ndir(g, u, u - 1u, 2u);
         }
     }
-    lt_faces(g, s, h, s2);
+    if (meta > 1)
+        lt_faces(g, s, h, s2, 1);
+    else
+        lt_faces(g, s, h, s2, 0);
 }
 
 /* ------------------------------------------------------------------------------------ */
@@ -532,8 +413,15 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         if (used[k]) g->rot[k] = rot[k];
     for (k = 0; k < 15u; k++) g->low[k] = low[k];
     w = subd_loop_weights_of(wc, 6u, ovf);
-    for (t = 0; t + 1u < tl->depth; t++)
-        lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], 1, w);
+    /* the ring starts, rotations and lower sides of every level: for the order of float32
+     * sums (LT_ORDERED) and limit mode's ring starts (lt_dir_at); a plain Q16.16 tile needs
+     * none of them */
+    for (t = 0; t + 1u < tl->depth; t++) {
+        /* a level's rotations serve the ring starts of the next: plain mode's last grid
+         * needs none; limit mode reads them there (lt_dir_at) */
+        int meta = !(LT_ORDERED || tl->qnrm) ? 0 : t + 2u == tl->depth && !tl->qnrm ? 1 : 2;
+        lt_refine(&tl->g[(tl->depth - 1u - t) & 1u], lt_side(t), &tl->g[(tl->depth - 2u - t) & 1u], meta, w);
+    }
     return 1;
 }
 
@@ -567,7 +455,7 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         lt_frame fr;
         fr.ox = ox; fr.oy = oy; fr.p = e1[0]; fr.q = e1[1]; fr.r = e2[0]; fr.u = e2[1];
         fr.lo = -1; fr.hi = (int32_t)m + 1; fr.skip = 1; fr.ds = 3;
-        lt_rows(g, s, &fr, tl->mpos, w);
+        subd_lt_rows(g, s, &fr, tl->mpos, w);
     }
     /* by rows Y of the quarter (the ring's offsets are a row's, the margin index steps by
      * one), X over the piece's part of the row: x = f2y dX - f2x dY >= 0,
@@ -593,7 +481,7 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
         l0 = lt_vi(S, (uint32_t)X + 1u, (uint32_t)Y + 1u);
         px = ox + X * e1[0] + Y * e2[0];
         py = oy + X * e1[1] + Y * e2[1];
-        /* the record index k = lt_vi(mp, lx, ly) stepped as lt_pass steps its destination:
+        /* the record index k = lt_vi(mp, lx, ly) stepped as lt_rows steps its destination:
          * (lx, ly) moves by (f2y, -f1y), k by sk, which falls by f1y^2 per step */
         k = ly * (2 * (int32_t)mp + 3 - ly) / 2 + lx;
         sk = f2[1] - f1[1] * (2 * (int32_t)mp + 3 + f1[1]) / 2 + ly * f1[1];
@@ -645,11 +533,6 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
         }
         return;
     }
-    {
-        lt_frame q;
-        q.ox = ox; q.oy = oy; q.p = e1[0]; q.q = e1[1]; q.r = e2[0]; q.u = e2[1];
-        q.lo = 0; q.hi = (int32_t)m; q.skip = 0; q.ds = (int32_t)(sizeof(lt_rec) / sizeof(subd_real));
-        lt_rows(g, s, &q, (subd_real *)(void *)tl->q, w); /* the records' positions */
-    }
+    subd_lt_rows_quarter(g, s, qc, ox, oy, (int32_t)m, (subd_real *)(void *)tl->q, w); /* the records' positions */
     *ovf |= lo;
 }

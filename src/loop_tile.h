@@ -22,22 +22,28 @@ typedef struct lt_grid {
 } lt_grid;
 
 /* One vertex of the last level's piece (a quarter: lt_split) as the emission loop reads it: its position and
- * its id (low word, high word) side by side, so that a triangle corner is one address. */
+ * its id's low word side by side, four words, so that a triangle corner is one address
+ * (index times 16) and one load of four words. The high words are an array of their own
+ * (lt_tile's qhi), read only when a stream's ids reach 2^32 (loop_stream_emit.c). */
 typedef struct lt_rec {
     subd_real p[3];
-    uint32_t id[2];
+    uint32_t id;
 } lt_rec;
-typedef char lt_rec_is_5_words[sizeof(lt_rec) == 5u * sizeof(subd_real) ? 1 : -1]; /* SUBD_LOOP_TILE_BYTES_ */
+typedef char lt_rec_is_4_words[sizeof(lt_rec) == 4u * sizeof(subd_real) ? 1 : -1];
+/* Bytes of a piece vertex in a tile's block: its record and its id's high word (the 20 of
+ * SUBD_LOOP_TILE_BYTES_). */
+#define LT_REC_BYTES ((uint32_t)sizeof(lt_rec) + 4u)
 
 /* A tile of depth t (2 <= t <= SUBD_LOOP_TILE_LEVELS): levels 0..t-1 in two grids used in
  * turn, then the last level one piece (a quarter, a child of the tile's face at level 1, or
  * in limit mode's depth 5 a quarter's child: lt_split) at a time: its vertices' positions
- * and ids (q: plain mode in the second grid's memory, dead by then) and the emission order
+ * and ids (q, qhi: plain mode in the second grid's memory, dead by then) and the emission order
  * of its triangles (tab: 3 piece-vertex indices per triangle, subd_loop's depth-first order;
  * filled once per stream by subd_lt_table). */
 typedef struct lt_tile {
     lt_grid g[2];
     lt_rec *q;
+    uint32_t *qhi; /* the high words of q's ids, after q's records (LT_REC_BYTES)          */
     uint8_t *tab;
     uint32_t depth;
     uint32_t split; /* lt_split: the last level is made by faces of level split (pieces)     */
@@ -111,6 +117,48 @@ static inline void lt_bound(int32_t c, int32_t d, int32_t *a, int32_t *b)
  * closed form, stepped along each row, the others by subd_lp_vertex_id (loop_tile_ids.c). */
 void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv, const uint32_t ca[3],
                  const uint32_t cb[3], const int32_t org[2], const int32_t e1[2], const int32_t e2[2]);
+/* A region of level t + 1 points and where they go: the points (px, py) = O + x e1 + y e2
+ * (level t + 1's coordinates plus one: the point halves (px, py) of level t's grid) with x, y >= lo, x + y <= hi (less the
+ * region's three corners when `skip`), point (x, y) written to vertex (x - lo, y - lo) of a
+ * grid of side hi - 2 lo, ds subd_reals per vertex (3: a grid's positions; 4: the quarter's
+ * records, lt_rec). e1 = (p, q), e2 = (r, u): lattice directions of determinant 1. */
+typedef struct lt_frame {
+    int32_t ox, oy, p, q, r, u, lo, hi, ds;
+    int skip;
+} lt_frame;
+
+/* The six neighbours of a grid vertex in a row of length `row`, as offsets in subd_reals
+ * (+1, +row, +row - 1, -1, -(row + 1), -row: lt_row's index rules), twice over so that the
+ * six from any ring start are consecutive. */
+TOPO_INLINE void lt_ring_offsets(int32_t row, int32_t o3[12])
+{
+    int32_t i;
+    o3[0] = 3;
+    o3[1] = 3 * row;
+    o3[2] = 3 * (row - 1);
+    o3[3] = -3;
+    o3[4] = -3 * (row + 1);
+    o3[5] = -3 * row;
+    for (i = 0; i < 6; i++) o3[i + 6] = o3[i];
+}
+
+/* Whether a rule's products go in subd_loop's order: float32 sums round at each step, so the
+ * ring start of a vertex and the lower side of an edge matter; Q16.16 sums are exact (a
+ * 64-bit sum of products: subd_real.h), so any order gives the same bits, and a tile there
+ * starts every ring in direction 0, takes every edge from its up triangle's side and carries
+ * no ring starts, rotations or lower sides (subd_lt_start). */
+#define LT_ORDERED (!SUBD_FIXED)
+
+/* The points of a region (loop_tile_rows.c: by rows of g's lattice, each by the rule of
+ * its kind, subd_loop's bits) from grid g (side s) into out: any frame fr (limit mode's
+ * quarters with their margin); the next level's grid (side 2s - 3, less its three corners:
+ * lt_refine); plain mode's quarter c into the records (subd_lt_quarter's frame, its corner 0
+ * at (ox, oy) in g's coordinates plus one, side hi). The last two take their frames as
+ * constants. */
+void subd_lt_rows(const lt_grid *g, uint32_t s, const lt_frame *fr, subd_real *out, loop_weights w);
+void subd_lt_rows_refine(const lt_grid *g, uint32_t s, int32_t hi, subd_real *out, loop_weights w);
+void subd_lt_rows_quarter(const lt_grid *g, uint32_t s, uint32_t c, int32_t ox, int32_t oy, int32_t hi, subd_real *out,
+                          loop_weights w);
 /* Tiles of depth t (2..5) a running Loop stream h (subd_loop_stream_begin) has made so far:
  * for the tests that count which path the stream took (loop_stream.c). */
 uint32_t subd_lt_stream_count(const subd_stream *h, uint32_t t);

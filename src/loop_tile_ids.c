@@ -23,6 +23,7 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
     uint64_t base = (uint64_t)in->num_verts + (uint64_t)in->num_corners * nm1 +
                     (uint64_t)f * ((uint64_t)nm1 * (nm1 - 1u) / 2u);
     lt_rec *q = tl->q;
+    uint32_t *qh = tl->qhi; /* the high words, index for index with q */
     a0 = (int32_t)ca[0];
     b0 = (int32_t)cb[0];
     ea = ((int32_t)ca[1] - a0) / n; /* the face's edges 0 -> 1 and 0 -> 2 per last-level step */
@@ -49,10 +50,10 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
         for (y = 0; y <= (int32_t)m; y++) {
             uint32_t t = t0, dl = dl0;
             lt_rec *qe = q + ((int32_t)m - y) + 1;
-            for (; q != qe; q++) {
+            for (; q != qe; q++, qh++) {
                 uint64_t id = base + t;
-                q->id[0] = (uint32_t)id;
-                q->id[1] = (uint32_t)(id >> 32);
+                q->id = (uint32_t)id;
+                *qh = (uint32_t)(id >> 32);
                 t += dl;
                 dl -= (uint32_t)dd;
             }
@@ -75,17 +76,17 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
         lt_bound(db, ib - 1, &lo, &hi);
         lt_bound(-da - db, in1 - 1 - ia - ib, &lo, &hi);
         if (lo > hi) lo = xe + 1; /* no interior point: every point by subd_lp_vertex_id */
-        for (x = 0; x <= xe; x++, q++) {
+        for (x = 0; x <= xe; x++, q++, qh++) {
             uint64_t id;
             if (x == lo) { /* the interior run */
                 uint32_t am = (uint32_t)(ia + x * da - 1);
                 uint32_t t = am * nm1 - am * (am + 1u) / 2u + (uint32_t)(ib + x * db - 1);
                 uint32_t dl = (uint32_t)(da * (int32_t)(nm1 - 1u - am) - (da < 0 ? 1 : 0) + db);
                 lt_rec *qe = q + (hi - x) + 1;
-                for (; q != qe; q++) {
+                for (; q != qe; q++, qh++) {
                     id = base + t;
-                    q->id[0] = (uint32_t)id;
-                    q->id[1] = (uint32_t)(id >> 32);
+                    q->id = (uint32_t)id;
+                    *qh = (uint32_t)(id >> 32);
                     t += dl;
                     dl -= (uint32_t)dd;
                 }
@@ -93,8 +94,8 @@ void subd_lt_ids(const lt_tile *tl, const subd_mesh *in, uint32_t f, uint32_t lv
                 if (x > xe) break;
             }
             id = subd_lp_vertex_id(in, f, (uint32_t)(ia + x * da), (uint32_t)(ib + x * db), lv);
-            q->id[0] = (uint32_t)id;
-            q->id[1] = (uint32_t)(id >> 32);
+            q->id = (uint32_t)id;
+            *qh = (uint32_t)(id >> 32);
         }
     }
 }

@@ -235,8 +235,8 @@ static void stream_tiles_limit(void)
  * moved to coordinates 0.375..0.45 SUBD_REAL_MAX (every regular patch tiled, unchecked) and
  * 0.925..1.0 SUBD_REAL_MAX (every patch refused, the general path): the stream's status is
  * subd_loop's, and
- * when both succeed the bits are (lc_compare_one), levels 2 and 3, plain and limit. Q16.16 has
- * no such patches (LT_HUGE is 0 there): the same scaled grids check it too. */
+ * when both succeed the bits are (lc_compare_one), levels 2 and 3, plain and limit. Q16.16's
+ * bound is its own (stream_tiles_fixed_range): the grids scaled by 4 check it too. */
 static void stream_tiles_huge(void)
 {
     uint32_t s, v, k, hash = 2166136261u, levels, lim;
@@ -272,6 +272,62 @@ static void stream_tiles_huge(void)
                 if (want == SUBD_OK && !lim) CHECK(lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, 0, &hash));
                 if (!SUBD_FIXED && s == 0u) CHECK_EQ(want, SUBD_OK); /* 0.45: in range everywhere */
             }
+}
+
+/* Q16.16 tiles sum in 32 bits (src/loop_tile.c's lt_vpt, lt_ept: (3 (a + b) + v + e + 4) >> 3
+ * and (10 v + p_0 + ... + p_5 + 8) >> 4 for subd_loop's exact 64-bit sums), which needs the
+ * valence-6 weights to be 1/16 and 5/8 exactly (checked here in both arithmetics) and the
+ * tile's coordinates below 2^27 in magnitude (LT_HUGE). The flipped grid moved to the edge of
+ * that range, x near +2^27 - 1 and y near -(2^27 - 1) (raw), where a sum is within 16 of
+ * overflowing 32 bits (every regular patch tiled), and just beyond it (every patch refused):
+ * the stream against subd_loop bit for bit, levels 2 and 3, plain and limit mode, and the
+ * tile counts of the pull form (some tiles, then none). */
+static void stream_tiles_fixed_range(void)
+{
+    loop_wcache wc;
+    uint32_t ovf = 0, s, v, k, lim, levels, hash = 2166136261u;
+    loop_weights w;
+    wc.have = 0;
+    w = subd_loop_weights_of(&wc, 6u, &ovf);
+    CHECK(w.b == SUBD_REAL_FRAC(1, 16));
+    CHECK(w.wc == SUBD_REAL_FRAC(5, 8));
+    CHECK_EQ(ovf, 0);
+#if SUBD_FIXED
+    for (s = 0; s < 2u; s++)
+        for (lim = 0; lim < 2u; lim++)
+            for (levels = 2; levels <= 3u; levels++) {
+                subd_arena a;
+                subd_mesh in;
+                subd_loop_opts o = {levels, SUBD_LOOP_BOUNDARY_PAPER, 0};
+                subd_stream h;
+                static subd_tri buf[16]; /* static: off the device's stack */
+                uint32_t mark, n = 0, tiles = 0;
+                int r;
+                subd_arena_init(&a, CMP_BUF, CMP_BYTES);
+                if (!make_grid(&a, 6u, 1, 0, &in)) return;
+                for (v = 0; v < in.num_verts; v++)
+                    for (k = 0; k < 3u; k++) { /* raw 0 .. 6 * 2^16 -> the range's edge, inward */
+                        int32_t edge = s ? (1 << 27) + (1 << 20) : (1 << 27) - 1, c = in.pos[3u * v + k] / 4;
+                        in.pos[3u * v + k] = k == 1u ? -(edge - c) : edge - c;
+                    }
+                (void)lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, lim ? SUBD_LOOP_STREAM_LIMIT : 0u, &hash);
+                o.flags = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
+                mark = subd_arena_mark(&a);
+                if (!CHECK_OK(subd_loop_stream_begin(&a, &in, &o, &h, 0), 0)) return;
+                while ((r = subd_stream_next_tris(&h, buf, 16u)) > 0) {
+                    n += (uint32_t)r;
+                    if (n == in.num_faces << (2u * levels)) tiles = subd_lt_stream_count(&h, levels);
+                }
+                CHECK_EQ(r, 0);
+                CHECK_EQ(n, in.num_faces << (2u * levels));
+                subd_stream_end(&h);
+                CHECK_EQ(subd_arena_mark(&a), mark);
+                if (s) CHECK_EQ(tiles, 0); /* beyond 2^27: the general path */
+                else CHECK(tiles > 0u);
+            }
+#else
+    (void)s; (void)v; (void)k; (void)lim; (void)levels; (void)hash;
+#endif
 }
 
 static int hash_tri(void *ctx, const subd_loop_tri *t)
@@ -497,7 +553,7 @@ static uint32_t piece_ids_bad(lt_tile *tl, const subd_mesh *in, uint32_t f, uint
             int32_t gx = org[0] + x * e1[0] + y * e2[0], gy = org[1] + x * e1[1] + y * e2[1];
             int32_t pa = (int32_t)ca[0] + gx * ea + gy * fa, pb = (int32_t)cb[0] + gx * eb + gy * fb;
             uint64_t want = subd_lp_vertex_id(in, f, (uint32_t)pa, (uint32_t)pb, lv);
-            if (((uint64_t)tl->q[q].id[0] | ((uint64_t)tl->q[q].id[1] << 32)) != want) bad++;
+            if (((uint64_t)tl->q[q].id | ((uint64_t)tl->qhi[q] << 32)) != want) bad++;
             if (pa < 1 || pb < 1 || pa + pb > n1 - 1) all = 0;
         }
     *inner += all;
@@ -514,6 +570,7 @@ static uint32_t piece_ids_bad(lt_tile *tl, const subd_mesh *in, uint32_t f, uint
 static void tile_ids_direct(void)
 {
     static lt_rec rec[153]; /* a piece of side 16 at most */
+    static uint32_t rechi[153];
     static const int8_t dx[6] = {1, 0, -1, -1, 0, 1}, dy[6] = {0, 1, 1, 0, -1, -1};
     subd_arena a;
     subd_mesh in;
@@ -522,6 +579,7 @@ static void tile_ids_direct(void)
     subd_arena_init(&a, CMP_BUF, CMP_BYTES);
     if (!make_grid(&a, 2u, 0, 0, &in)) return;
     tl.q = rec;
+    tl.qhi = rechi;
     for (lv = 3; lv <= 7u; lv++)
         for (t = 2; t <= 5u && t <= lv; t++)
             for (split = 1; split <= 2u && split < t; split++)
@@ -565,6 +623,7 @@ const test_case suite_loop_tiles[] = {
     {"stream_tiles", stream_tiles},
     {"stream_tiles_limit", stream_tiles_limit},
     {"stream_tiles_huge", stream_tiles_huge},
+    {"stream_tiles_fixed_range", stream_tiles_fixed_range},
     {"stream_level6", stream_level6},
     {"stream_tiles_partial", stream_tiles_partial},
     {"stream_tiles_limit5", stream_tiles_limit5},

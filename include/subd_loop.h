@@ -266,7 +266,8 @@ int subd_loop_stream_begin(subd_arena *a, const subd_mesh *in, const subd_loop_o
 /* The regular tile (src/loop_tile.h) of t = SUBD_LOOP_TD_ levels (0: none): two grids of
  * sides 2^(t-1) + 3 and 2^(t-2) + 3 (positions, ring starts, rotations, lower sides; the
  * second's memory also holds a quarter of the last level, side 2^(t-1), as records of
- * position and id, 20 bytes each; limit mode: its positions with a one-vertex margin, side
+ * position and id, 20 bytes each: a 16-byte record of the position and the id's low word,
+ * the high words in an array after the records (src/loop_tile.h); limit mode: its positions with a one-vertex margin, side
  * 2^(t-1) + 3, and the records and normals of its limit points after it) and its emission
  * table. */
 #define SUBD_LOOP_TCFG_(lim) ((lim) ? (uint32_t)SUBD_LOOP_TILE_LEVELS_LIMIT : (uint32_t)SUBD_LOOP_TILE_LEVELS)

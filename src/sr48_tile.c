@@ -348,6 +348,18 @@ int subd_s48_tile_(s48_state *s, const s48_win *w, uint32_t t, uint32_t n0)
     }
 }
 
+/* One child triangle into the queue (s48_tile_tri), *stop the sink's answer: 1, or 0 when
+ * the queue had no slot. Inline: the emission's two children stay straight-line code. */
+static inline int s48_tile_put(subd_stream_q *q, const subd_real *m, const subd_real *p1, const subd_real *p2,
+                               uint64_t idm, uint64_t i1, uint64_t i2, uint32_t face, uint32_t L, int *stop)
+{
+    subd_tri *o = (subd_tri *)subd_stream_q_put(q);
+    if (!o) return 0;
+    s48_tile_tri(o, m, p1, p2, idm, i1, i2, face, L);
+    *stop = subd_stream_q_commit(q);
+    return 1;
+}
+
 /* The tile's triangles not handed out yet (level L: child s->tcur & 1 of X's triangle
  * s->tcur / 2), until the caller's buffer is full or the sink stops. A child's new vertex
  * is the midpoint subd_s48_refine_ makes for the diamond (from its lower triangle, id by
@@ -409,34 +421,20 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
             cp[2] = cvp + 3u * tv[2];
         }
         if ((tc & 1u) == 0u) { /* child 0 = (m; c, a) */
-            subd_tri *o = (subd_tri *)subd_stream_q_put(q);
-            if (!o) {
+            if (!s48_tile_put(q, mp, cp[0], cp[1], idm, idv[tv[0]], idv[tv[1]], face, L, stop)) {
                 s->tcur = tc;
                 return 0;
             }
-            s48_tile_tri(o, mp, cp[0], cp[1], idm, idv[tv[0]], idv[tv[1]], face, L);
-            *stop = subd_stream_q_commit(q);
             tc++;
-            if (*stop) {
-                s->tcur = tc;
-                return 1;
-            }
-            if (tc >= tend || subd_stream_q_full(q)) break;
+            if (*stop || tc >= tend || subd_stream_q_full(q)) break;
         }
-        { /* child 1 = (m; b, c) */
-            subd_tri *o = (subd_tri *)subd_stream_q_put(q);
-            if (!o) {
-                s->tcur = tc;
-                return 0;
-            }
-            s48_tile_tri(o, mp, cp[2], cp[0], idm, idv[tv[2]], idv[tv[0]], face, L);
-            *stop = subd_stream_q_commit(q);
-            tc++;
-            if (*stop) {
-                s->tcur = tc;
-                return 1;
-            }
+        /* child 1 = (m; b, c) */
+        if (!s48_tile_put(q, mp, cp[2], cp[0], idm, idv[tv[2]], idv[tv[0]], face, L, stop)) {
+            s->tcur = tc;
+            return 0;
         }
+        tc++;
+        if (*stop) break;
     }
     s->tcur = tc;
     return 1;

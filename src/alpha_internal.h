@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Private interface of the alpha-subdivision files (alpha_kernel.c, alpha_curve.c,
- * alpha_surface.c, alpha_tags.c): exact integer helpers, the kernel in Q32.32, the weight
- * type and the parameter-tag rules.
+ * alpha_surface.c, alpha_tags.c, alpha_stream.c, alpha_chord.c): exact integer helpers, the
+ * kernel in Q32.32, the weight type, the parameter-tag rules and the curve stream's chord
+ * test.
  *
  * Weights are computed in Q32.32 integers (int64, value * 2^32) from the kernel value and
  * then kept as subd_alpha_wt: a float in the float build (rounded once, correctly), the
@@ -158,5 +159,10 @@ static inline void subd_alpha_edge_w(int64_t f, subd_alpha_wt *w, subd_alpha_wt 
     *w = subd_alpha_wt_from_q32(w1, ovf);
     *w2 = subd_alpha_wt_from_q32(2 * w1, ovf);
 }
+
+/* alpha_chord.c: 1 when every point pts[i], a < i < b, lies within eps of the segment
+ * pts[a] pts[b] (each distance bounded from above with a margin for rounding; 0 on inf or
+ * NaN), else 0. The streaming curve's adaptive mode (alpha_stream.c) splits the span then. */
+int subd_alpha_span_near(subd_real eps, const subd_real *pts, uint32_t a, uint32_t b);
 
 #endif

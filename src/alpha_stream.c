@@ -3,8 +3,8 @@
  * the point sink of the common stream interface (include/subd.h "Streams", src/stream.c),
  * bit-identical to subd_alpha_curve, in memory that depends on the level count and the
  * order only; and an adaptive mode that drops points where the curve is straight.
- * Length (~700 lines): one concept, the curve pipeline, its two modes (uniform, chord) and
- * its plan/begin/push entry points, which share the stage state; splitting would expose it.
+ * Its adaptive mode's chord test (is a span's every point within eps of its segment) is
+ * alpha_chord.c's.
  *
  * The refinement is local. One level is a chain of primitive steps: S_2 (an output pair per
  * input edge), k - 2 averages C (an output per input edge) and, on a closed polygon, the
@@ -38,8 +38,8 @@
  * ASTREAM_BLOCK segments (consecutive blocks share their end point); inside a block the
  * decision is top-down and nested: a span [a, b] of max-level indices is kept as one
  * segment when every max-level point strictly inside it lies within chord of the segment
- * from point a to point b (each distance bounded from above: a point Q of the segment is
- * computed and |P - Q| with a margin for the rounding of Q is compared), else it is split
+ * from point a to point b (subd_alpha_span_near, alpha_chord.c: each distance bounded from
+ * above), else it is split
  * at its middle index (explicit stack of spans). Every emitted point is a max-level point
  * with its uniform id and bits (on a C-curve circle they are on the circle) and every
  * max-level point is within chord of the emitted polyline. The cost is the uniform stream's
@@ -55,7 +55,6 @@
 #include "layout.h"
 #include "entry.h"
 #include "real_avg.h"
-#include "vec3w.h"
 
 /* per stage: meta words, point slots (3 subd_reals and an int32 tag each) */
 #define ASTREAM_META 8u
@@ -97,7 +96,7 @@ typedef struct astream_state {
     /* adaptive */
     uint32_t adaptive, blk_base, blk_cnt, sp, ended, wrapped, last_done;
     uint32_t stk[2u * 10u]; /* spans: 1 + log2(ASTREAM_BLOCK) = 9 at most */
-    subd_real eps; /* the chord tolerance as given (astream_near adds its own margin) */
+    subd_real eps; /* the chord tolerance as given (subd_alpha_span_near adds its own margin) */
 } astream_state;
 SUBD_STREAM_STATE_FITS(astream_state);
 
@@ -366,84 +365,6 @@ static int astream_pull(astream_state *st, subd_real *p)
 }
 
 /* ---------------------------------------------------------------------------------- */
-/* Adaptive: is every point of the block strictly between a and b within chord of the    */
-/* segment blk[a] blk[b]?                                                                  */
-
-#if SUBD_FIXED /* the distance bound differs: exact int64/128-bit arithmetic on Q16.16 units */
-static int astream_near(const astream_state *st, const subd_real *A, const subd_real *B, const subd_real *P)
-{
-    int64_t u[3], d[3], us[3], ds[3], num, den, t, e;
-    const int64_t eps_raw = (int64_t)st->eps - 1; /* one unit of margin for rounding Q, below */
-    uint64_t sum = 0, big = 0, lim;
-    uint32_t k, ovf = 0;
-    int32_t sh;
-    for (k = 0; k < 3u; k++) {
-        u[k] = (int64_t)B[k] - A[k];
-        d[k] = (int64_t)P[k] - A[k];
-        if ((uint64_t)(u[k] < 0 ? -u[k] : u[k]) > big) big = (uint64_t)(u[k] < 0 ? -u[k] : u[k]);
-        if ((uint64_t)(d[k] < 0 ? -d[k] : d[k]) > big) big = (uint64_t)(d[k] < 0 ? -d[k] : d[k]);
-    }
-    /* the projection parameter from vectors scaled below 2^30 (only where Q lies on the
-     * segment depends on it, not the bound's validity) */
-    sh = (int32_t)subd_bitlen64(big) - 30;
-    if (sh < 0) sh = 0;
-    for (k = 0; k < 3u; k++) {
-        us[k] = u[k] / ((int64_t)1 << sh);
-        ds[k] = d[k] / ((int64_t)1 << sh);
-    }
-    num = us[0] * ds[0] + us[1] * ds[1] + us[2] * ds[2];
-    den = us[0] * us[0] + us[1] * us[1] + us[2] * us[2];
-    if (den <= 0 || num <= 0) t = 0;
-    else if (num >= den) t = SUBD_Q32_ONE;
-    else t = subd_alpha_divq(num, den, 32, &ovf);
-    if (ovf || eps_raw <= 0) return 0;
-    /* Q = A + t u, rounded to units: within 0.87 units of the segment; eps_raw has that margin */
-    for (k = 0; k < 3u; k++) {
-        e = d[k] - subd_alpha_mulq(u[k], t, 32, &ovf);
-        if (e < 0) e = -e;
-        if (e > eps_raw) return 0;
-        sum += (uint64_t)e * (uint64_t)e;
-    }
-    lim = (uint64_t)eps_raw * (uint64_t)eps_raw;
-    return !ovf && sum <= lim;
-}
-#else
-static float astream_absf(float x) { return x < 0.0f ? -x : x; }
-static int astream_near(const astream_state *st, const subd_real *A, const subd_real *B, const subd_real *P)
-{
-    subd_wide u[3], d[3], e[3];
-    float num, den, t, big = 0.0f, tol, lim, ee;
-    uint32_t k;
-    subd_w3_diff(B, A, u);
-    subd_w3_diff(P, A, d);
-    num = subd_w3_dot(u, d);
-    den = subd_w3_dot(u, u);
-    if (!(den > 0.0f) || !(num > 0.0f)) t = 0.0f;
-    else if (num >= den) t = 1.0f;
-    else t = num / den;
-    for (k = 0; k < 3u; k++) {
-        float q = t * u[k];
-        e[k] = d[k] - q;
-        big = big + astream_absf(A[k]) + astream_absf(u[k]) + astream_absf(P[k]);
-    }
-    /* rounding of u, d, t u and the difference: a few ulps of the magnitudes involved */
-    tol = big * 0x1p-20f;
-    if (!(st->eps > tol)) return 0;
-    lim = (st->eps - tol) * (st->eps - tol) * 0.999f;
-    ee = subd_w3_dot(e, e);
-    return ee <= lim; /* false for inf / nan: split */
-}
-#endif
-
-static int astream_span_ok(const astream_state *st, uint32_t a, uint32_t b)
-{
-    uint32_t i;
-    for (i = a + 1u; i < b; i++)
-        if (!astream_near(st, st->blk + 3u * a, st->blk + 3u * b, st->blk + 3u * i)) return 0;
-    return 1;
-}
-
-/* ---------------------------------------------------------------------------------- */
 /* The step: one point per round into the queue                                           */
 
 static void astream_emit(astream_state *st, subd_stream_q *q, const subd_real *p, uint32_t id)
@@ -523,7 +444,7 @@ static int astream_step(void *state, subd_stream_q *q, subd_diag *d)
         if (st->sp > 0u) {
             uint32_t a = st->stk[2u * (st->sp - 1u)], b = st->stk[2u * (st->sp - 1u) + 1u];
             st->sp--;
-            if (b - a <= 1u || astream_span_ok(st, a, b)) {
+            if (b - a <= 1u || subd_alpha_span_near(st->eps, st->blk, a, b)) {
                 astream_emit(st, q, st->blk + 3u * a, st->blk_base + a);
             } else { /* the left half first: points in index order */
                 uint32_t mid = a + (b - a) / 2u;

@@ -257,7 +257,7 @@ static void sp_enter(sp_state *s, const sp_level *p)
         p->h->nv == 12u && p->h->nf == 13u) {
         lt_tile tl;
         subd_lt_carve(&tl, s->lay.tile + tile_off(&s->lay, s->k), s->lay.tab, o->levels - s->k, (int)s->limit);
-        if (subd_lt_start(&tl, p, &s->wc, &s->ovf)) {
+        if (subd_lt_start(&tl, p, &s->wc, &s->ovf, LS_TMOVE(s))) {
             s->tdep = o->levels - s->k;
             s->ntile[s->tdep - 2u]++;
             s->ton = 1;

@@ -386,7 +386,7 @@ int subd_ls_tile_emit(sp_state *s, subd_stream_q *q)
     while (s->tq < (1u << (2u * tl.split))) {
         if (!s->tready) {
             int32_t org[2], e1[2], e2[2];
-            subd_lt_quarter(&tl, s->tq, &s->wc, &s->ovf, org, e1, e2);
+            subd_lt_quarter(&tl, s->tq, &s->wc, &s->ovf, LS_TMOVE(s), org, e1, e2);
             if (s->ovf) return SUBD_ERR_RANGE;
             tile_ids(s, &tl, org, e1, e2);
             s->tready = 1;

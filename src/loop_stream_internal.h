@@ -90,15 +90,23 @@ typedef struct sp_state {
     sp_run run;
     subd_loop_opts o;
     loop_wcache wc;
-    uint32_t k, depth, ovf, started, limit;
+    uint32_t k, depth, ovf, limit;
     /* the regular tile: at level k >= lay.tk, of depth tdep = L - k; ton while its triangles
      * go out: piece tq (a quarter, or limit mode's depth 5 a quarter's child: lt_split), its
      * triangle tj, tready once the piece's positions and ids are made */
-    uint32_t tdep, ton, tq, tj, tready;
+    uint32_t tdep, tq, tj;
+#if SUBD_FIXED
+    subd_real tmove[3]; /* the tile's move (beyond 2 048.0: subd_lt_start's org)        */
+#define LS_TMOVE(s) ((s)->tmove)
+#else
+#define LS_TMOVE(s) ((subd_real *)0) /* float32 tiles are never moved */
+#endif
     uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
     uint32_t nwin;     /* windows made so far (subd_ls_stream_windows)                 */
-    uint32_t idwide;   /* some id of the stream may reach 2^32: the tiles' push loop reads
-                        * their high words (loop_stream_emit.c); else they are zero     */
+    /* flags, bytes: the state block is full (SUBD_STREAM_STATE_BYTES) */
+    uint8_t started, ton, tready;
+    uint8_t idwide; /* some id of the stream may reach 2^32: the tiles' push loop reads
+                     * their high words (loop_stream_emit.c); else they are zero     */
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
 

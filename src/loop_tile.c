@@ -63,11 +63,39 @@
  * SUBD_REAL_MAX / 2. A patch with a larger (or a NaN) coordinate is refused (LT_HUGE) and
  * takes the general path, whose rules check. Q16.16 tiles sum in 32 bits (lt_vpt, lt_ept:
  * at most 16 times a coordinate), which their level-0 coordinates below 2^27 (2048.0) in
- * magnitude keep from overflowing; a patch with a larger one takes the general path (the
+ * magnitude keep from overflowing. A patch with a larger one is moved first: on each axis
+ * where a coordinate is beyond 2^27 - 1 units, by T = the middle of the patch's extent
+ * (whole units), when that brings all of them within 2^27 - 1 (an extent up to about
+ * 4096.0); the tile is made from x - T and T is added back to the last level's records
+ * (subd_lt_quarter), which gives subd_loop's bits: every Q16.16 rule of a tile is
+ * equivariant under a whole-unit move, (S - D T + D/2) >> log2 D = ((S + D/2) >> log2 D) - T
+ * for the vertex (D = 16) and edge (D = 8) rules, whose weights sum to D exactly (an
+ * arithmetic shift is a floor), and limit mode's v + chi sum(p_j - v) and its tangents read
+ * differences (T cancels); the moved-back values are subd_loop's, within the patch's range,
+ * so the addition cannot overflow. A patch too wide for that takes the general path (the
  * same bits, in 64-bit sums). */
 #if SUBD_FIXED
 #define LT_FIX_MAX ((subd_real)134217727) /* 2^27 - 1 */
-#define LT_HUGE(x) ((x) > LT_FIX_MAX || (x) < -LT_FIX_MAX)
+/* The move of a patch (see above): T per axis into org, the positions moved; 0 when the patch
+ * is too wide for the 32-bit sums even after the move. */
+static int lt_move(subd_real *pos, uint32_t n, subd_real org[3])
+{
+    uint32_t v, k;
+    for (k = 0; k < 3u; k++) {
+        int64_t lo = pos[k], hi = pos[k], t;
+        for (v = 1; v < n; v++) {
+            if (pos[3u * v + k] < lo) lo = pos[3u * v + k];
+            if (pos[3u * v + k] > hi) hi = pos[3u * v + k];
+        }
+        org[k] = 0;
+        if (lo >= -(int64_t)LT_FIX_MAX && hi <= (int64_t)LT_FIX_MAX) continue;
+        t = lo + (hi - lo) / 2; /* within [lo, hi]: a subd_real */
+        if (hi - t > (int64_t)LT_FIX_MAX || t - lo > (int64_t)LT_FIX_MAX) return 0;
+        org[k] = (subd_real)t;
+        for (v = 0; v < n; v++) pos[3u * v + k] = (subd_real)(pos[3u * v + k] - t);
+    }
+    return 1;
+}
 #else
 #define LT_HUGE(x) (!((x) <= SUBD_REAL_MAX / 2.0f && (x) >= -(SUBD_REAL_MAX / 2.0f)))
 #endif
@@ -328,7 +356,7 @@ static uint32_t lt_dir_of(int32_t ddx, int32_t ddy)
     return 6u;
 }
 
-int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf)
+int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf, subd_real org[3])
 {
     const lt_grid *g = &tl->g[(tl->depth - 1u) & 1u];
     /* everything is read from the patch and checked first, then written: the stream lends
@@ -371,9 +399,16 @@ int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf
         used[q] = 1;
         for (k = 0; k < 3u; k++) {
             pos[3u * v + k] = p->pos[3u * v + k];
+#if !SUBD_FIXED
             if (LT_HUGE(pos[3u * v + k])) return 0; /* the general path checks every rule */
+#endif
         }
     }
+#if SUBD_FIXED
+    if (!lt_move(pos, 12u, org)) return 0;
+#else
+    (void)org; /* float32 tiles are never moved (NULL) */
+#endif
     for (k = 0; k < 15u; k++) {
         low[k] = 0;
         used[k] = 0;
@@ -493,8 +528,25 @@ static void lt_limit_quarter(const lt_tile *tl, uint32_t c, const lt_grid *g, ui
     }
 }
 
-void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
-                     int32_t e2[2])
+/* The move back of a moved Q16.16 tile (lt_move): T added to the piece's records. */
+static void lt_move_back(const lt_tile *tl, const subd_real *T)
+{
+#if SUBD_FIXED
+    uint32_t k, n = lt_count(1u << (tl->depth - tl->split));
+    if (!(T[0] | T[1] | T[2])) return;
+    for (k = 0; k < n; k++) {
+        tl->q[k].p[0] += T[0];
+        tl->q[k].p[1] += T[1];
+        tl->q[k].p[2] += T[2];
+    }
+#else
+    (void)tl;
+    (void)T;
+#endif
+}
+
+void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, const subd_real T[3], int32_t org[2],
+                     int32_t e1[2], int32_t e2[2])
 {
     const lt_grid *g = &tl->g[0]; /* level depth - 1 */
     uint32_t m = 1u << (tl->depth - 1u), s = lt_side(tl->depth - 1u), lo = 0, qc = c >> (2u * (tl->split - 1u));
@@ -523,6 +575,7 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
             f1[0] = pf[2]; f1[1] = pf[3]; f2[0] = pf[4]; f2[1] = pf[5];
         }
         lt_limit_quarter(tl, c, g, s, ox, oy, e1, e2, po, f1, f2, w, &lo);
+        lt_move_back(tl, T);
         *ovf |= lo;
         org[0] += po[0] * e1[0] + po[1] * e2[0];
         org[1] += po[0] * e1[1] + po[1] * e2[1];
@@ -534,5 +587,6 @@ void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *o
         return;
     }
     subd_lt_rows_quarter(g, s, qc, ox, oy, (int32_t)m, (subd_real *)(void *)tl->q, w); /* the records' positions */
+    lt_move_back(tl, T);
     *ovf |= lo;
 }

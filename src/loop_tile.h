@@ -88,17 +88,21 @@ void subd_lt_carve(lt_tile *tl, uint8_t *block, uint8_t *tab, uint32_t t, int li
 /* Fills the emission table of a piece (4^(t-split) triangles). */
 void subd_lt_table(const lt_tile *tl);
 /* Level 0 of a tile from patch p (its centre's 1-ring): 1 when p is regular (then levels
- * 1..t-1 are refined too), 0 when it is not (nothing useful is written). */
-int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf);
+ * 1..t-1 are refined too), 0 when it is not (nothing useful is written). org: Q16.16, the
+ * move of a patch beyond the 32-bit sums' range (loop_tile.c's lt_move; zeros otherwise), for
+ * subd_lt_quarter; float32: unused (may be NULL). */
+int subd_lt_start(lt_tile *tl, const sp_level *p, loop_wcache *wc, uint32_t *ovf, subd_real org[3]);
 /* The last level's positions of piece c (0..4^split - 1, lt_split: with split 1 quarter c,
  * child c of the tile's face at level 1, subd_loop's child order; with split 2 child c % 4
  * of quarter c / 4; the pieces must be made in order, as a quarter's last-level positions
  * with margin are made at its first piece) into q (limit mode: their limit positions, and
  * normals into qnrm), in the piece's own frame (corner k of the child at lattice corner k
- * of the piece grid); *org, *e1, *e2: its frame in the tile's last level (grid coordinates
- * relative to the tile face's corner 0), for the ids. */
-void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, int32_t org[2], int32_t e1[2],
-                     int32_t e2[2]);
+ * of the piece grid), moved back by T (subd_lt_start's org; float32: unused, may be NULL);
+ * *org, *e1, *e2: its frame in
+ * the tile's last level (grid coordinates relative to the tile face's corner 0), for the
+ * ids. */
+void subd_lt_quarter(const lt_tile *tl, uint32_t c, loop_wcache *wc, uint32_t *ovf, const subd_real T[3], int32_t org[2],
+                     int32_t e1[2], int32_t e2[2]);
 /* Bounds of x from c x + d >= 0 (c in -1, 0, 1) narrowing [*a, *b] (empty: *b < *a); the
  * rows of a lattice region (loop_tile.c) and of a piece's ids (loop_tile_ids.c). */
 static inline void lt_bound(int32_t c, int32_t d, int32_t *a, int32_t *b)

@@ -11,7 +11,7 @@
  * in their walkers (forced inline), their bounds and index steps folded: the rows of a tile
  * are most of its instructions (M4F profile of the level-6 demo sphere: 0.9 points per
  * triangle). In Q16.16 the sums are exact, so a rule takes no ring start or lower side and
- * sums in 32 bits (loop_tile.c's LT_HUGE bounds the coordinates). */
+ * sums in 32 bits (loop_tile.c's lt_move bounds the coordinates). */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "loop_tile.h"
 
@@ -22,7 +22,7 @@ TOPO_INLINE void lt_vpt(const subd_real *c, const int32_t *o, subd_real *out, lo
 #if SUBD_FIXED
     /* valence 6: b = 1/16 and 1 - 6b = 5/8 exactly (loop_rules.h), so the exact sum is
      * 2^12 (10 v + p_0 + ... + p_5) and subd_acc_real's rounding, (sum + 2^15) >> 16, is
-     * (10 v + p_0 + ... + p_5 + 8) >> 4: the same bits in 32-bit sums (loop_tile.c's LT_HUGE bounds them
+     * (10 v + p_0 + ... + p_5 + 8) >> 4: the same bits in 32-bit sums (loop_tile.c's lt_move bounds them
      * by 2^31 - 16); the result lies between the least and the largest input */
     uint32_t j;
     (void)w;
@@ -82,7 +82,7 @@ TOPO_INLINE void lt_ept(const subd_real *c, uint32_t low, uint32_t d, int32_t R,
 #else
     /* the exact sum 3/8 (a + b) + 1/8 (v + e) is 2^13 (3 (a + b) + v + e), rounded as
      * subd_acc_real does, (sum + 2^15) >> 16 = (3 (a + b) + v + e + 4) >> 3: 32-bit sums
-     * (loop_tile.c's LT_HUGE), the same bits */
+     * (loop_tile.c's lt_move), the same bits */
     (void)low;
     (void)dead;
     v = c + oc;

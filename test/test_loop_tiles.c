@@ -94,6 +94,7 @@ static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
     sp_level p;
     lt_tile tl;
     loop_wcache wc;
+    subd_real org[3];
     uint32_t ovf = 0;
     if (!CHECK(blk != 0 && tb != 0)) return 0;
     wc.have = 0;
@@ -105,7 +106,7 @@ static uint32_t count_tiles(subd_arena *a, const subd_mesh *m)
     for (f = 0; f < m->num_faces; f++) {
         int r;
         subd_lp_build_control(m, f, &p, 4u);
-        r = subd_lt_start(&tl, &p, &wc, &ovf);
+        r = subd_lt_start(&tl, &p, &wc, &ovf, org);
         CHECK_EQ(r, brute_regular(m, f));
         n += (uint32_t)r;
     }
@@ -277,11 +278,13 @@ static void stream_tiles_huge(void)
 /* Q16.16 tiles sum in 32 bits (src/loop_tile.c's lt_vpt, lt_ept: (3 (a + b) + v + e + 4) >> 3
  * and (10 v + p_0 + ... + p_5 + 8) >> 4 for subd_loop's exact 64-bit sums), which needs the
  * valence-6 weights to be 1/16 and 5/8 exactly (checked here in both arithmetics) and the
- * tile's coordinates below 2^27 in magnitude (LT_HUGE). The flipped grid moved to the edge of
- * that range, x near +2^27 - 1 and y near -(2^27 - 1) (raw), where a sum is within 16 of
- * overflowing 32 bits (every regular patch tiled), and just beyond it (every patch refused):
- * the stream against subd_loop bit for bit, levels 2 and 3, plain and limit mode, and the
- * tile counts of the pull form (some tiles, then none). */
+ * tile's coordinates below 2^27 in magnitude (a patch beyond is moved by whole units first:
+ * loop_tile.c's lt_move). The flipped grid moved to the edge of that range, x near +2^27 - 1
+ * and y near -(2^27 - 1) (raw), where a sum is within 16 of overflowing 32 bits (s = 0),
+ * just beyond it (s = 1: every regular patch moved), and spread over -3 2^28 .. 3 2^28 (s =
+ * 2: every patch wider than the move allows): the stream against subd_loop bit for bit,
+ * levels 2 and 3, plain and limit mode, and the tile counts of the pull form (tiles, tiles,
+ * then none). */
 static void stream_tiles_fixed_range(void)
 {
     loop_wcache wc;
@@ -293,7 +296,7 @@ static void stream_tiles_fixed_range(void)
     CHECK(w.wc == SUBD_REAL_FRAC(5, 8));
     CHECK_EQ(ovf, 0);
 #if SUBD_FIXED
-    for (s = 0; s < 2u; s++)
+    for (s = 0; s < 3u; s++)
         for (lim = 0; lim < 2u; lim++)
             for (levels = 2; levels <= 3u; levels++) {
                 subd_arena a;
@@ -309,6 +312,8 @@ static void stream_tiles_fixed_range(void)
                     for (k = 0; k < 3u; k++) { /* raw 0 .. 6 * 2^16 -> the range's edge, inward */
                         int32_t edge = s ? (1 << 27) + (1 << 20) : (1 << 27) - 1, c = in.pos[3u * v + k] / 4;
                         in.pos[3u * v + k] = k == 1u ? -(edge - c) : edge - c;
+                        if (s == 2u) /* raw 0 .. 6 * 2^16 -> -3 2^28 .. 3 2^28 */
+                            in.pos[3u * v + k] = (int32_t)((int64_t)c * 16384 - 3 * ((int64_t)1 << 28));
                     }
                 (void)lc_compare_one(&a, &in, levels, SUBD_LOOP_BOUNDARY_PAPER, lim ? SUBD_LOOP_STREAM_LIMIT : 0u, &hash);
                 o.flags = lim ? SUBD_LOOP_STREAM_LIMIT : 0u;
@@ -322,7 +327,7 @@ static void stream_tiles_fixed_range(void)
                 CHECK_EQ(n, in.num_faces << (2u * levels));
                 subd_stream_end(&h);
                 CHECK_EQ(subd_arena_mark(&a), mark);
-                if (s) CHECK_EQ(tiles, 0); /* beyond 2^27: the general path */
+                if (s == 2u) CHECK_EQ(tiles, 0); /* too wide: the general path */
                 else CHECK(tiles > 0u);
             }
 #else

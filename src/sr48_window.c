@@ -231,7 +231,7 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
 /* Adds a new vertex (position mp, flags mf) to parent vertex v's sum (in w's vertex u).
  * Nothing once v is incomplete (S48_RC_INC: its position will be the parent's, not the sum,
  * whatever else is added; the sum is not read). */
-static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
+S48_INLINE void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
                                   const subd_real *mp, uint32_t mf, int boundary_ok)
 {
     const uint32_t c = s->cnt[v];

@@ -245,16 +245,21 @@ static int s48_h0_fan(s48_state *s, uint16_t *ht, uint32_t tm, uint16_t *hv, uin
  * into w.key), so the triangle table keeps its gathering indices and the neighbours are
  * looked up in it through the inverse permutation (in vmap, the vertex table, free once
  * gathered) instead of a second table; a leg's neighbour inside the hybrid pair (2H, 2H + 1)
- * is the next or previous sorted triangle. */
+ * is the next or previous sorted triangle. (Unreleased) The two tables are sized above the
+ * level-0 window's capacities (wt, wv), not the tile windows' (4x fewer entries cleared per
+ * window; probing is not observable: the gathering order is the fans'); the window records
+ * s->l0ok (positions finite and below 2^64, no boundary: sr48_window.c's header). */
 static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
 {
     const subd_sr48 *b = s->base;
-    const uint32_t mt = s->at > s->wt ? s->at : s->wt;
-    const uint32_t tm = s48_h0_size(2u * mt) - 1u, vm = s48_h0_size(s->xv) - 1u;
-    uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 mt and xv entries: above wt and wv */
+    /* the tables above the level-0 window's capacities wt, wv (every gathering checks them),
+     * not the larger tile windows' (why: cleared per window, and a uniform tile's level-0
+     * window is small) */
+    const uint32_t tm = s48_h0_size(2u * s->wt) - 1u, vm = s48_h0_size(2u * s->wv) - 1u;
+    uint16_t *ht = s->tmap, *hv = s->vmap; /* 2 max(at, wt) and xv > wt + wv entries */
     uint16_t *perm = s->mtab;                /* the sort's permutation: mt >= wt entries */
     uint16_t *rank = s->vmap;                /* its inverse: xv > wt entries, after gathering */
-    uint32_t nt = 0, nv = 0, i, j, q, p;
+    uint32_t nt = 0, nv = 0, i, j, q, p, ok = S48_L0_RANGE | S48_L0_CLOSED;
     s48_win w;
     s48_lev(s, 0, &w);
     /* (i < tm + 1: a bounded loop, which compilers clear in one go) */
@@ -327,6 +332,7 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
             nb = s48_base_nbr(b, tt, j);
             if (nb == SUBD_NONE) {
                 w.tn[3u * i + j] = S48_BND;
+                ok &= ~S48_L0_CLOSED;
                 continue;
             }
             nb = ht[s48_h0_find(ht, tm, s->gt, nb)];
@@ -344,6 +350,10 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
         w.vp[3u * i] = ps[0];
         w.vp[3u * i + 1u] = ps[1];
         w.vp[3u * i + 2u] = ps[2];
+#if !SUBD_FIXED /* |x| < 2^64, finite: the magnitude bits below 2^64's */
+        for (j = 0; j < 3u; j++)
+            if ((subd_real_bits(ps[j]) & 0x7fffffffu) >= 0x5f800000u) ok &= ~S48_L0_RANGE;
+#endif
         w.vid[i] = i; /* local: gv[i] */
         w.vf[i] = S48_EXACT;
         if (w.vl)
@@ -353,6 +363,9 @@ static int s48_build0(s48_state *s, uint32_t t0, uint32_t small)
     w.hd[1] = nv;
     w.hd[6] = 0;
     w.hd[7] = small;
+    /* uniform only: the adaptive modes' descents and CHORD also refine windows of other
+     * level-0 windows than the last one built */
+    s->l0ok = (uint8_t)(s->adapt ? 0u : ok);
     return 1;
 }
 int subd_s48_build0_(s48_state *s, uint32_t t0) { return s48_build0(s, t0, 0u); }

@@ -34,6 +34,10 @@
 #define S48_EXACT 0x1u  /* vertex flag: position final and bit-exact                     */
 #define S48_INC 0x2u    /* smoothing scratch: some input missing                          */
 #define S48_FAR 0xffu   /* crop: vertex not reached                                       */
+/* s48_state's l0ok (sr48_level0.c sets it with every level-0 window of a uniform stream; the
+ * windows the walk and the tile derive from that window inherit it: sr48_window.c's header) */
+#define S48_L0_RANGE 0x1u  /* every position finite, |coordinate| < 2^64: no check can fire  */
+#define S48_L0_CLOSED 0x2u /* no mesh boundary (S48_BND) in the window                      */
 #define S48_RINGS SUBD_SR48_STREAM_RINGS_
 #define S48C_M SUBD_SR48_STREAM_CHORD_EXACT_ /* CHORD: levels of exact descendants (sr48_chord.c) */
 #define S48C_ND SUBD_SR48_STREAM_CHORD_DESC_  /* CHORD: their capacity, triangles              */
@@ -99,7 +103,8 @@ typedef struct s48_state {
     uint32_t tm;       /* the tile's levels m (uniform; 1: no tile, s48_tile_levels)       */
     uint32_t tcur, tend; /* uniform: X's triangles still to emit (tcur < tend: a tile is out) */
     uint32_t t0, k, err;
-    uint16_t built;
+    uint8_t built;
+    uint8_t l0ok;      /* the last level-0 window's S48_L0_RANGE, S48_L0_CLOSED (uniform; else 0) */
     uint16_t two_rings; /* tests (test_sr48_chord.c): CHORD's tiles and the descents take the
                          * two rings alone, not the smaller crops first (0 after begin) */
     uint8_t *lev;      /* level windows 0..L-1 (uniform: 0..L-m), blocks of lev_size       */
@@ -257,6 +262,26 @@ static inline void s48_mid3(subd_real *o, const subd_real *a, const subd_real *b
     o[1] = subd_mid(a[1], b[1], ovf);
     o[2] = subd_mid(a[2], b[2], ovf);
 }
+/* s48_mid3, without the finiteness checks when chk is 0 (the window's level-0 window was in
+ * S48_L0_RANGE: then no check could fire, sr48_window.c's header): the same bits. Q16.16
+ * has no checks to skip. */
+static inline void s48_mid3k(subd_real *o, const subd_real *a, const subd_real *b, uint32_t *ovf, uint32_t chk)
+{
+#if SUBD_FIXED
+    (void)chk;
+    s48_mid3(o, a, b, ovf);
+#else
+    if (chk) {
+        s48_mid3(o, a, b, ovf);
+    } else { /* subd_mid's operations */
+        const subd_real a0 = 0.5f * a[0], b0 = 0.5f * b[0], a1 = 0.5f * a[1], b1 = 0.5f * b[1];
+        const subd_real a2 = 0.5f * a[2], b2 = 0.5f * b[2];
+        o[0] = a0 + b0;
+        o[1] = a1 + b1;
+        o[2] = a2 + b2;
+    }
+#endif
+}
 static inline void s48_cp3(subd_real *o, const subd_real *p)
 {
     o[0] = p[0];
@@ -317,9 +342,36 @@ static inline void s48_avg3(const s48_state *s, const s48_win *x, uint32_t e, ui
     x->vp[e + 2u] = s48_avg(s48_sget(s, x, e + 2u), n, ovf);
 }
 
+/* s48_avg3, without the finiteness checks when chk is 0 (as s48_mid3k). */
+static inline void s48_avg3k(const s48_state *s, const s48_win *x, uint32_t e, uint32_t n, uint32_t *ovf, uint32_t chk)
+{
+#if SUBD_FIXED
+    (void)chk;
+    s48_avg3(s, x, e, n, ovf);
+#else
+    if (chk) {
+        s48_avg3(s, x, e, n, ovf);
+    } else { /* subd_avg's operations */
+        const float k = (float)n;
+        x->vp[e] = x->vp[e] / k;
+        x->vp[e + 1u] = x->vp[e + 1u] / k;
+        x->vp[e + 2u] = x->vp[e + 2u] / k;
+    }
+#endif
+}
+
+/* The smoothing's scatters are forced inline (GCC, clang): gcc -O2 for the Cortex-M3 keeps
+ * them out of line (the Q16.16 carries make them larger), a call per sum term, about 2% of
+ * the M3's uniform stream; the M4F's were inline already. */
+#if defined(__GNUC__)
+#define S48_INLINE static inline __attribute__((always_inline))
+#else
+#define S48_INLINE static inline
+#endif
+
 /* Adds a new vertex (position mp, flags mf) to the sum of vertex v (sums in x's positions,
  * counts and flags in s->cnt, s->dist at v). */
-static inline void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp,
+S48_INLINE void s48_scatter(const s48_state *s, const s48_win *x, uint32_t v, const subd_real *mp,
                                uint32_t mf, int boundary_ok)
 {
     if ((s->cnt[v] & 0x80000000u) && !boundary_ok) return;

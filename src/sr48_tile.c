@@ -48,6 +48,13 @@
  * forces too small first crops (S48_TILE_TINY) to see the checks send tiles to the two
  * rings with the same bits.
  *
+ * (Unreleased) The finiteness checks are skipped where the level-0 window is in range
+ * (sr48_window.c's header), and subd_s48_last_'s pass for the boundary flags where it has no
+ * boundary (s48_state's l0ok); the same bits. Tried and dropped: keeping the emitted
+ * diamonds' midpoints from subd_s48_last_ for the emission (in A's free triangle corners)
+ * saved about 8 instructions per face in the emission and cost more in subd_s48_last_
+ * (register pressure in its loop) on the M4F.
+ *
  * A and X are blocks of the stream's state of the same capacities (SUBD_SR48_STREAM_TT_,
  * _TV_ of m: a tile of m + 1 levels keeps at most the descendants m levels below its root
  * in a window); the level windows below the tile's root are unused while a tile is handed
@@ -135,6 +142,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x0, uint32_t c0, uint32_t n, s48
     const subd_real *xvp = x->vp;
     const uint8_t *xvf = x->vf;
     uint16_t *vm = s->vmap;
+    const uint32_t chk = !(s->l0ok & S48_L0_RANGE); /* the finiteness checks (sr48_window.c) */
     uint32_t i, j, nn = 0, ovf = 0, bad = 0;
     for (i = 0; i < nv; i++) vm[i] = S48_OUT;
     for (j = 0; j < 3u * n; j++) {
@@ -148,8 +156,9 @@ int subd_s48_last_(s48_state *s, const s48_win *x0, uint32_t c0, uint32_t n, s48
         s48_szero3(s, a, 3u * nn);
         nn++;
     }
-    /* the boundary flags first (a boundary vertex sums its boundary diamonds only) */
-    for (i = 0; i < nt; i++) {
+    /* the boundary flags first (a boundary vertex sums its boundary diamonds only; none
+     * when the level-0 window had no boundary) */
+    for (i = 0; i < nt && !(s->l0ok & S48_L0_CLOSED); i++) {
         const uint16_t *tv = xtv + 3u * i;
         uint16_t u;
         if (xtn[3u * i] != S48_BND) continue;
@@ -186,7 +195,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x0, uint32_t c0, uint32_t n, s48
             e1 = xtv[3u * nb];
             u3 = vm[e1];
         }
-        s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
+        s48_mid3k(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf, chk);
         mf = xvf[e0] & xvf[e1] & S48_EXACT;
         if (!mf && (i - c0 < n || (s48_local(nb) && nb - c0 < n))) bad = 1; /* a midpoint emitted */
         {
@@ -205,7 +214,7 @@ int subd_s48_last_(s48_state *s, const s48_win *x0, uint32_t c0, uint32_t n, s48
             bad = 1; /* a corner of D */
             continue;
         }
-        s48_avg3(s, a, 3u * i, k, &ovf);
+        s48_avg3k(s, a, 3u * i, k, &ovf, chk);
         a->vf[i] = S48_EXACT;
     }
     if (ovf) {
@@ -377,6 +386,7 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
     const uint16_t *xtv, *vm = s->vmap;
     const uint32_t *xkey, *gt = s->gt;
     const subd_real *xvp, *cvp;
+    const uint32_t chk = !(s->l0ok & S48_L0_RANGE); /* the finiteness checks (sr48_window.c) */
     uint32_t ovf = 0, tc = s->tcur, ci0 = 0xffffffffu;
     uint64_t cid = 0; /* id0 + the global key's high part of level-0 window triangle ci0 */
     s48_win_at(s, s->xblk, s->xoff, &x);
@@ -395,7 +405,7 @@ int subd_s48_tile_emit_(s48_state *s, subd_stream_q *q, int *stop)
         subd_real mp[3];
         const subd_real *cp[3]; /* c, a, b: child 0 = (m; c, a), child 1 = (m; b, c) */
         (void)subd_s48_mid_ends_(s, &x, i, &lt, &e0, &e1);
-        s48_mid3(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf);
+        s48_mid3k(mp, xvp + 3u * e0, xvp + 3u * e1, &ovf, chk);
         if (ovf) {
             s->tcur = tc;
             s->err = (uint32_t)(-SUBD_ERR_RANGE);

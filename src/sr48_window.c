@@ -54,6 +54,28 @@
  * pointers from local copies (a store to a byte array may alias anything): the same passes
  * in the same order, the same bits; on the M4F the uniform 8-step stream's refine_crop went
  * from about 413 to 310 instructions per output face.
+ *
+ * Finiteness checks (Unreleased). float32: every midpoint and smoothed average goes through
+ * subd_chk (SUBD_ERR_RANGE when not finite). A uniform stream's level-0 window records
+ * whether all its positions are finite with every coordinate below 2^64 in magnitude
+ * (s48_state's l0ok, S48_L0_RANGE: sr48_level0.c); the windows and the tile derived from it
+ * (the walk's levels, its checkpoints, the tile windows A and X) then skip the checks
+ * (s48_mid3k, s48_avg3k: the same operations, so the same bits), because none could fire:
+ * a midpoint 0.5 a + 0.5 b of finite a, b is at most max(|a|, |b|) in magnitude (halving is
+ * exact or shrinks, and rounding to nearest cannot pass a representable bound of the exact
+ * sum), so midpoints never grow; a smoothed vertex is s / k of a float sum of k < 2^16
+ * terms (one per diamond at the vertex, fewer than a window's triangles, which are indexed by
+ * 16 bits), each partial sum at most (1 + 2^-24) times the exact one in magnitude, so |s / k|
+ * <= M (1 + 2^-24)^(k + 1) for inputs of magnitude <= M. Over at most 16 levels the largest
+ * magnitude M grows by less than (1 + 2^-24)^(16 (2^16 + 1)) < 1.1, so every position stays
+ * below 1.1 2^64 and every partial sum below 2^16 1.2 2^64 < 2^81, far from FLT_MAX
+ * (about 2^128): no overflow, and no NaN (it needs a non-finite input or inf - inf). A
+ * window whose level-0 window fails the test (or an adaptive mode's: their descents and
+ * CHORD refine windows of other level-0 windows) keeps every check, so the error and the
+ * triangles emitted before it are unchanged. Q16.16 has no checks to skip (its midpoints
+ * and averages are exact convex combinations in 64 bits: sr48_stream_internal.h). Also (same
+ * bits): an old vertex's sum takes no more terms once it is known incomplete (its position
+ * will be the parent's, s48_rc_scatter).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "layout.h"
@@ -206,13 +228,16 @@ int subd_s48_refine_(s48_state *s, const s48_win *p, uint32_t k, s48_win *x)
 #define S48_RC_BND 0x80000000u
 #define S48_RC_INC 0x40000000u
 #define S48_RC_N 0x3fffffffu
-/* Adds a new vertex (position mp, flags mf) to parent vertex v's sum (in w's vertex u). */
-static inline void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
+/* Adds a new vertex (position mp, flags mf) to parent vertex v's sum (in w's vertex u).
+ * Nothing once v is incomplete (S48_RC_INC: its position will be the parent's, not the sum,
+ * whatever else is added; the sum is not read). */
+S48_INLINE void s48_rc_scatter(const s48_state *s, const s48_win *w, uint32_t v, uint32_t u,
                                   const subd_real *mp, uint32_t mf, int boundary_ok)
 {
-    if ((s->cnt[v] & S48_RC_BND) && !boundary_ok) return;
+    const uint32_t c = s->cnt[v];
+    if (c & (boundary_ok ? S48_RC_INC : S48_RC_INC | S48_RC_BND)) return;
     s48_sadd3(s, w, 3u * u, mp);
-    s->cnt[v] = (s->cnt[v] + 1u) | ((mf & S48_EXACT) ? 0u : S48_RC_INC);
+    s->cnt[v] = (c + 1u) | ((mf & S48_EXACT) ? 0u : S48_RC_INC);
 }
 /* Window vertex number of X's vertex v in the window being cropped, numbered as met. */
 static inline uint16_t s48_rc_num(uint16_t *vm, uint16_t v, uint32_t *kv)
@@ -236,6 +261,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p0, uint32_t k, uint32_t 
     const uint32_t nt = p->hd[0], nvp = p->hd[1];
     const uint32_t idj = (k + 1u) << S48_IDS; /* local ids of the vertices made here */
     const int sm = s->smooth && ((k + 1u) & 1u) == 0u;
+    const uint32_t chk = !(s->l0ok & S48_L0_RANGE); /* the finiteness checks (the header) */
     uint16_t *mt = s->mtab, *vm = s->vmap, *tm = s->tmap;
     uint8_t *d = s->dist;
     uint32_t *cnt = s->cnt;
@@ -469,7 +495,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p0, uint32_t k, uint32_t 
                 e1 = ptv[3u * nb];
             }
             mf = (nb != S48_OUT) && (p->vf[e0] & p->vf[e1] & S48_EXACT) ? S48_EXACT : 0u;
-            s48_mid3(w->vp + 3u * um, p->vp + 3u * e0, p->vp + 3u * e1, &ovf);
+            s48_mid3k(w->vp + 3u * um, p->vp + 3u * e0, p->vp + 3u * e1, &ovf, chk);
             w->vf[um] = (uint8_t)mf;
             if (w->vl) /* L: the base midpoint, whatever the smoothing */
                 s48_mid3(w->vl + 3u * um, p->vl + 3u * tv[1], p->vl + 3u * tv[2], &ovf);
@@ -498,7 +524,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p0, uint32_t k, uint32_t 
             }
             if (um == S48_OUT && u0 == S48_OUT && u1 == S48_OUT && u2 == S48_OUT && u3 == S48_OUT) continue;
             mf = (nb != S48_OUT) && (pvf[e0] & pvf[e1] & S48_EXACT) ? S48_EXACT : 0u;
-            s48_mid3(mp, pvp + 3u * e0, pvp + 3u * e1, &ovf);
+            s48_mid3k(mp, pvp + 3u * e0, pvp + 3u * e1, &ovf, chk);
             if (um != S48_OUT) {
                 s48_cp3(w->vp + 3u * um, mp);
                 w->vf[um] = (uint8_t)mf;
@@ -525,7 +551,7 @@ int subd_s48_refine_crop_(s48_state *s, const s48_win *p0, uint32_t k, uint32_t 
                 w->vf[u] = 0;
                 continue;
             }
-            s48_avg3(s, w, 3u * u, q, &ovf);
+            s48_avg3k(s, w, 3u * u, q, &ovf, chk);
             w->vf[u] = S48_EXACT;
         }
     if (ovf) {

@@ -17,7 +17,12 @@
  *    triangles and bits, and some smoothed tiles are made again: the exactness checks
  *    (subd_s48_last_'s when max_level is even and smoothed, else s48_tile_exact's) fire
  *    where a position would not be exact, rather than let it out;
- *  - shapes scaled to the Q16.16 limit (sr48t_big): the smoothing sums carry. */
+ *  - shapes scaled to the Q16.16 limit (sr48t_big): the smoothing sums carry;
+ *  - float32 shapes scaled to 2^62 and 2^80 (sr48t_range): the windows skip their
+ *    finiteness checks below 2^64 (s48_state's l0ok: S48_L0_RANGE, sr48_window.c's header)
+ *    and keep them above, the same bits either way; a base moved near 2^127 fails the
+ *    stream with SUBD_ERR_RANGE (its sums overflow). Q16.16: every
+ *    level-0 window is in range. */
 #include "harness.h"
 #include "corpus.h"
 #include "fixtures.h"
@@ -45,6 +50,7 @@ static uint8_t g_tl_big[48u << 20] __attribute__((aligned(8))); /* hierarchies u
 #endif
 
 static uint64_t g_tl_id[TL_MAXV];
+static uint32_t g_tl_l0ok; /* s48_state's l0ok, ANDed over the batches of the last stream */
 static uint32_t g_tl_tiny; /* tiles made again after too small first crops (S48_TILE_TINY) */
 static uint8_t g_tl_have[TL_MAXV];
 static subd_tri g_tl_buf[64];
@@ -77,9 +83,11 @@ static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, i
         }
     }
     for (i = 0; i < out->num_verts; i++) g_tl_have[i] = 0;
+    g_tl_l0ok = 0xffu;
     while ((got = subd_stream_next_tris(&st, g_tl_buf, 64u)) > 0) {
         int k;
         const s48_state *s = (const s48_state *)st.state_;
+        g_tl_l0ok &= s->l0ok;
         for (k = 0; k < got; k++, j++) {
             const subd_tri *t = &g_tl_buf[k];
             if (j >= out->num_faces) {
@@ -109,10 +117,37 @@ static void tl_stream(const subd_sr48 *base, const subd_mesh *out, uint32_t L, i
     for (i = 0; i < out->num_verts; i++) CHECK(g_tl_have[i]);
 }
 
-/* big: the shape scaled so that its largest coordinate is near the Q16.16 limit (raw
- * |x| >= 2^30; float: the same numbers), so that smoothing sums of four or more terms leave
- * 32 bits and carry into their high parts (sr48_stream_internal.h's s48_sadd1), upwards
- * and, where the shape has negative coordinates (the icosahedron, the bipyramid), downwards. */
+/* The shape's positions scaled so that the largest magnitude is 2^e (float32 only), or
+ * (e = 0) near the Q16.16 limit (raw |x| >= 2^30; float: the same numbers), so that
+ * smoothing sums of four or more terms leave 32 bits and carry into their high parts
+ * (sr48_stream_internal.h's s48_sadd1), upwards and, where the shape has negative
+ * coordinates (the icosahedron, the bipyramid), downwards. 0 when the shape has no extent. */
+static int tl_scale(subd_mesh *in, uint32_t e)
+{
+    subd_real mx = 0;
+    uint32_t i;
+    for (i = 0; i < 3u * in->num_verts; i++) {
+        const subd_real v = in->pos[i] < 0 ? -in->pos[i] : in->pos[i];
+        if (v > mx) mx = v;
+    }
+    if (!CHECK(mx > 0)) return 0;
+    for (i = 0; i < 3u * in->num_verts; i++) {
+#if SUBD_FIXED /* raw * (2^31 - 2^16) / max: |raw| <= 2^31 - 2^16, the largest >= 2^30 */
+        (void)e;
+        in->pos[i] = (subd_real)(((int64_t)in->pos[i] * 2147418112) / mx);
+#else
+        subd_real p = 32767.0f;
+        if (e) {
+            uint32_t j;
+            for (p = 1.0f, j = 0; j < e; j++) p *= 2.0f;
+        }
+        in->pos[i] = in->pos[i] / mx * p;
+#endif
+    }
+    return 1;
+}
+
+/* big: 1 the shape scaled to near the Q16.16 limit (tl_scale), 2 + e (float32) to 2^e. */
 static void tl_case_s(int shape, uint32_t bn, uint32_t L, uint32_t flags, int big)
 {
     subd_arena a;
@@ -125,22 +160,7 @@ static void tl_case_s(int shape, uint32_t bn, uint32_t L, uint32_t flags, int bi
     uint32_t tiles, twice, n0, want, m = SUBD_SR48_STREAM_TILE_LEVELS;
     subd_arena_init(&a, TL_MAT, TL_MAT_BYTES);
     if (!fx_sr48_shape(shape, bn, &a, &in)) return;
-    if (big) {
-        subd_real mx = 0;
-        uint32_t i;
-        for (i = 0; i < 3u * in.num_verts; i++) {
-            const subd_real v = in.pos[i] < 0 ? -in.pos[i] : in.pos[i];
-            if (v > mx) mx = v;
-        }
-        if (!CHECK(mx > 0)) return;
-        for (i = 0; i < 3u * in.num_verts; i++) {
-#if SUBD_FIXED /* raw * (2^31 - 2^16) / max: |raw| <= 2^31 - 2^16, the largest >= 2^30 */
-            in.pos[i] = (subd_real)(((int64_t)in.pos[i] * 2147418112) / mx);
-#else
-            in.pos[i] = in.pos[i] / mx * 32767.0f;
-#endif
-        }
-    }
+    if (big && !tl_scale(&in, big >= 2 ? (uint32_t)big - 2u : 0u)) return;
     o.steps = L;
     o.flags = flags;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
@@ -210,8 +230,61 @@ static void sr48t_big(void)
     }
 }
 
+/* The finiteness checks (sr48_window.c's header): skipped where the level-0 window is in
+ * range, the same bits as the materialised hierarchy's either way; and an overflow still
+ * fails the stream with SUBD_ERR_RANGE. */
+static void sr48t_range(void)
+{
+#if SUBD_FIXED /* no checks: every level-0 window in range */
+    tl_case_s(FX48_TWO, 5, 4, 0u, 1);
+    CHECK(g_tl_l0ok & S48_L0_RANGE);
+#else
+    uint32_t f;
+    for (f = 0; f < 2u; f++) {
+        const uint32_t fl = f ? SUBD_SR48_NO_SMOOTH : 0u;
+        tl_case_s(FX48_HEXFAN, 5, 6, fl, 2 + 62); /* below 2^64: no checks */
+        CHECK(g_tl_l0ok & S48_L0_RANGE);
+        tl_case_s(FX48_HEXFAN, 5, 6, fl, 2 + 80); /* above: checked, nothing fires */
+        CHECK(!(g_tl_l0ok & S48_L0_RANGE));
+#if H_HOST
+        tl_case_s(FX48_ICO, 5, 8, fl, 2 + 62);
+        CHECK_EQ(g_tl_l0ok, S48_L0_RANGE | S48_L0_CLOSED);
+        tl_case_s(FX48_ICO, 5, 8, fl, 2 + 80);
+        CHECK_EQ(g_tl_l0ok, S48_L0_CLOSED);
+#endif
+    }
+    { /* the base's positions moved to 1.5 2^126 (1 + x 2^-6), x the shape's in [-1, 1]
+       * (after subd_sr48_base, whose own pre-processing would overflow): every smoothing
+       * sum overflows, and the stream fails with SUBD_ERR_RANGE (the checks are kept) */
+        subd_arena a, sa;
+        subd_mesh in;
+        subd_sr48 base;
+        subd_sr48_stream_opts so;
+        subd_stream st;
+        subd_diag d;
+        subd_real p = 1.5f, *bp;
+        uint32_t i;
+        int got;
+        subd_arena_init(&a, TL_MAT, TL_MAT_BYTES);
+        if (!fx_sr48_shape(FX48_HEXFAN, 5, &a, &in) || !tl_scale(&in, 0u)) return;
+        if (!CHECK_EQ(subd_sr48_base(&a, &in, 0u, &base, &d), SUBD_OK)) return;
+        for (i = 0; i < 126u; i++) p *= 2.0f;
+        bp = base.pos;
+        for (i = 0; i < 3u * base.num_verts; i++) bp[i] = p + bp[i] / 32767.0f * (p / 64.0f);
+        subd_arena_init(&sa, TL_ST, TL_ST_BYTES);
+        so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
+        so.adapt.max_level = 4;
+        if (!CHECK_EQ(subd_sr48_stream_begin(&sa, &base, &so, &st, &d), SUBD_OK)) return;
+        while ((got = subd_stream_next_tris(&st, g_tl_buf, 64u)) > 0) continue;
+        subd_stream_end(&st);
+        CHECK_EQ(got, SUBD_ERR_RANGE);
+    }
+#endif
+}
+
 const test_case suite_sr48_tiles[] = {
     {"sr48t_tiles", sr48t_tiles},
     {"sr48t_big", sr48t_big},
+    {"sr48t_range", sr48t_range},
     {0, 0},
 };

@@ -270,20 +270,14 @@ static uint32_t s48c_row(const uint32_t *mk, uint32_t base, uint32_t e)
 }
 
 /* Does any node of star triangle ki's subtree (i itself included) deviate? From its memo entry
- * (s48c_entry): 1 yes, 0 no, 2 unknown (no entry), -1 failure. Needs no F(D): a decision whose
- * star subtrees do not deviate at all answers 0 before subd_s48_chord_desc_, one whose own
- * triangle t or its base neighbour deviates (D's triangles: level k of F(D), they count)
- * answers 1; *own = 1 when i itself deviates. The answer is the one of s48c_fast below (the
- * same bits of the same entry). */
-static int s48c_any(s48_state *s, uint32_t k, uint64_t ki, uint32_t *own)
+ * (s48c_entry): 1 yes, 0 no, 2 unknown (no entry), -1 failure. Needs no F(D) (s48c_pre). */
+static int s48c_any(s48_state *s, uint32_t k, uint64_t ki)
 {
     const uint32_t tl = s->levels > S48C_T ? s->levels - S48C_T : 0u, dl = k - tl, m = s->levels - tl;
     const uint32_t base = (1u << dl) | (uint32_t)(ki & ((1u << dl) - 1u));
     int rb;
     uint32_t e, *mk = s48c_entry(s, ki, k, &rb);
-    *own = 0;
     if (!mk) return rb < 0 ? -1 : 2;
-    *own = s48c_row(mk, base, 0) & 1u;
     for (e = 0; (base << e) < (1u << m); e++)
         if (s48c_row(mk, base, e)) return 1;
     return 0;
@@ -328,28 +322,32 @@ static int s48c_touch(const s48_win *w, uint32_t i, const uint32_t *vs, uint32_t
 }
 
 /* A decision of level k >= tl before F(D) (subd_s48_chord_desc_, about a tenth of the stream's
- * work when made for every decision): 1 when t or its base neighbour deviates (D's triangles,
- * level k of F(D), count: s48c_fast would answer 1 from the same bit), 0 when no node under any
- * star triangle deviates (s48c_fast would answer 0 for each, whatever F(D)), 2 otherwise (the
- * full decision), -1 failure. Only bits of memo entries, which are functions of the tile roots:
- * the answer is the full decision's. */
+ * work when made for every decision), from bits of memo entries only (functions of the tile
+ * roots, so the answer is the full decision's):
+ *  - 1 when a node of the subtree of t or of its base neighbour deviates: every such node is in
+ *    S(D) (sr48_chord.c: the children of D's triangles are triangles of F(D)'s diamonds one level
+ *    down, and so on down to level k + S48C_M, where each is in the star of its own diamond G,
+ *    so its subtree is in S(D) too), so the full decision would find it (s48c_fast: a node d < S48C_M
+ *    levels down is in F(D)'s level d; deeper ones count through the star test of their level
+ *    k + S48C_M ancestor, subd_s48_chord_tile_);
+ *  - 0 when no node under any star triangle deviates (s48c_fast would answer 0 for each,
+ *    whatever F(D));
+ *  - 2 otherwise (the full decision), -1 failure. */
 static int s48c_pre(s48_state *s, const s48_win *w, uint32_t k, uint32_t t, const uint32_t *vs, uint32_t nv)
 {
     const uint16_t nb = w->tn[3u * t];
-    uint32_t i, own, need = 0;
-    int a = s48c_any(s, k, s48_key(w, t), &own);
-    if (a < 0) return -1;
-    if (own) return 1;
+    uint32_t i, need;
+    int a = s48c_any(s, k, s48_key(w, t));
+    if (a == 1 || a < 0) return a;
     need = a != 0;
     if (s48_local(nb)) {
-        a = s48c_any(s, k, s48_key(w, nb), &own);
-        if (a < 0) return -1;
-        if (own) return 1;
+        a = s48c_any(s, k, s48_key(w, nb));
+        if (a == 1 || a < 0) return a;
         need |= a != 0;
     }
     for (i = 0; i < w->hd[0] && !need; i++) {
         if (i == t || i == nb || !s48c_touch(w, i, vs, nv)) continue;
-        if ((a = s48c_any(s, k, s48_key(w, i), &own)) < 0) return -1;
+        if ((a = s48c_any(s, k, s48_key(w, i))) < 0) return -1;
         need = a != 0;
     }
     return need ? 2 : 0;

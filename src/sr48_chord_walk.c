@@ -353,6 +353,26 @@ static int s48c_pre(s48_state *s, const s48_win *w, uint32_t k, uint32_t t, cons
     return need ? 2 : 0;
 }
 
+/* A decision of level k < tl before its walk: 1 when the memo already holds the tile of a
+ * level-tl descendant of t or of its base neighbour with a deviating node (every node under
+ * D's triangles is in S(D), s48c_pre), else 2 (the full decision). Kept tiles only: the
+ * level-tl window need not hold the path of t's descendants while level k decides, so none
+ * is made here. A tile node deviates or not whatever the decision: the answer is the walk's. */
+static int s48c_coarse(const s48_state *s, const s48_win *w, uint32_t k, uint32_t t)
+{
+    const uint32_t tl = s->levels - S48C_T, dl = tl - k; /* k < tl: levels > S48C_T */
+    const uint16_t nb = w->tn[3u * t];
+    uint32_t c, q;
+    for (c = 0; c < (s48_local(nb) ? 2u : 1u); c++) {
+        const uint64_t key = s48_key(w, c ? nb : t) << dl;
+        for (q = 0; q < (1u << dl); q++) {
+            const uint32_t *mk = subd_s48_chord_mk_find_(s, key | q, tl);
+            if (mk && (mk[2] | mk[4])) return 1;
+        }
+    }
+    return 2;
+}
+
 /* The full decision (subd_s48_chord_wants_): F(D), then every star triangle that may hold a
  * counting node. 1 split, 0 leaf, -1 failure. */
 static int s48c_full(s48_state *s, uint32_t k, uint32_t t, const uint32_t *vs, uint32_t nv)
@@ -441,7 +461,7 @@ int subd_s48_chord_wants_(s48_state *s, uint32_t k, uint32_t t)
     }
     for (j = 0; j < 3u; j++) vs[j] = w.tv[3u * t + j];
     if (s48_local(nb)) vs[nv++] = w.tv[3u * nb];
-    r = tiled ? s48c_pre(s, &w, k, t, vs, nv) : 2;
+    r = tiled ? s48c_pre(s, &w, k, t, vs, nv) : s48c_coarse(s, &w, k, t);
     if (r == 2) r = s48c_full(s, k, t, vs, nv);
     if (r < 0) return -1;
     dc[0] = (uint32_t)dk;

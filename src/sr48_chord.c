@@ -41,6 +41,13 @@
  * lies under star(P): in the second part of S(D). So S(D') is in S(D) and D splits: a
  * diamond that splits has parents that split, the cut is exactly the set of diamonds that
  * ask, decided top down with no lookahead and no forced split.
+ * D's subtrees: every triangle under D's two triangles (down to max_level - 1) is in S(D): the
+ * children of D's triangles are triangles of diamonds of F(D) one level down, their children of
+ * F(D)'s next level, and so on down to level k + M, where each such triangle d lies in its own
+ * diamond G, so in star(G), and the whole subtree of d is in the second part (when k + M >=
+ * max_level, F(D) holds them all). So one
+ * triangle under D with E > eps splits D, whatever the rest of S(D) (sr48_chord_walk.c answers
+ * such decisions from the tiles' deviation bits without finding F(D)).
  * Conservative: D is in S(D), so a leaf t of the cut (its diamond does not split) has
  * E(t) <= eps: every finest-level vertex created inside t lies within eps of the emitted
  * triangle (L_t(v) is a point of it), up to the rounding below; every finest vertex lies

@@ -26,6 +26,8 @@ int subd_s48_chord_may_at_(const s48_state *s, const s48_win *w, uint32_t k, uin
  * memo's tile of triangle r of the level-j window into entry mk (1 done, 0 not exact, -1
  * failure). */
 uint32_t *subd_s48_chord_mk_(const s48_state *s, uint64_t key, uint32_t j);
+/* The same entry if the memo holds it, else NULL, without counting it as used. */
+const uint32_t *subd_s48_chord_mk_find_(const s48_state *s, uint64_t key, uint32_t j);
 int subd_s48_chord_tile_(s48_state *s, uint32_t k, uint32_t j, uint32_t r, uint32_t loose);
 int subd_s48_chord_bits_(s48_state *s, uint32_t j, uint32_t r, uint32_t *mk);
 /* Keeps the finest position p of vertex id in the cache (sr48_chord_walk.c). */

@@ -570,6 +570,10 @@ static void sr48c_reference(void)
     rf_case(C_ICO, 6, 0, 0.01);
     rf_case(C_ICO, 6, 0, 0.004);
     rf_case(C_ICO, 7, 0, 0.01);
+    /* two coarse levels above the tiles' (max_level - SUBD_SR48_STREAM_CHORD_TILE_ = 2): the
+     * decisions of levels 0 and 1 answered from kept tiles of their level-2 descendants
+     * (sr48_chord_walk.c, s48c_coarse) or walked */
+    rf_case(C_ICO, 8, 0, 0.01);
     rf_case(C_TORUS, 6, 0, 0.01);
     rf_case(C_TORUS, 6, 0, 0.005);
     rf_case(C_HEXFAN, 7, 0, 0.002);

@@ -68,6 +68,17 @@ typedef char s48c_tile_fits[SUBD_SR48_WIN_(SUBD_SR48_STREAM_TT_(8u, SUBD_SR48_ST
                                 ? 1
                                 : -1];
 
+/* The adaptive walk's descents with checkpoints (sr48_descent.c, s48_dwin) keep two level
+ * windows, L included, in X's block: twice a level window fits the refined window (its
+ * margin grows with the valence, so the least valence counted is the tightest case). */
+typedef char s48_dwin_fits[2u * (SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u)) +
+                                 SUBD_SR48_SA_(12u * SUBD_SR48_STREAM_WV_(8u))) <=
+                                   SUBD_SR48_WIN_(2u * SUBD_SR48_STREAM_WT_(8u),
+                                                  SUBD_SR48_STREAM_WV_(8u) + SUBD_SR48_STREAM_WT_(8u)) +
+                                       SUBD_SR48_SA_(12u * (SUBD_SR48_STREAM_WV_(8u) + SUBD_SR48_STREAM_WT_(8u)))
+                               ? 1
+                               : -1];
+
 /* ------------------------------------------------------------------------------------ */
 /* Capacities and layout                                                                  */
 
@@ -131,7 +142,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     const uint32_t tile = m > 1u, tw = tile && levels > m ? m + 1u : m; /* s48_tile_walk */
     /* the deepest level window: L - tw (uniform), L - 1 (otherwise) */
     const uint32_t dl = levels >= tw ? levels - tw : 0u, ckc =
-        !nl && !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
+        !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
     /* CHORD: three more level windows after levels 0..L-1, the tile window of the memo's tiles
      * (sr48_chord_walk.c, s48c_bits: taken while a decision holds levels up to max_level - 1) */
     const uint32_t nlev = (ckc ? s48_slots(dl, ckc) : dl + 1u) + (chord ? 3u : 0u);

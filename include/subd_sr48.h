@@ -518,9 +518,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * checkpoints: SUBD_SR48_STREAM_SLOTS_(L - 1) windows and the walk state (2 words per level,
  * one per slot), the levels between rebuilt with their L and their decisions' state when the
  * walk returns (the descents to the finest level then keep their two windows in the refined
- * window's block); otherwise max(L, 1) windows. Plus L (3 subd_reals) per window vertex, per
- * level window and in the refined window, and the level-0 window's L, vertices, triangles
- * (the adaptation box lives in the run state). */
+ * window's block); otherwise max(L, 1) windows. Plus L (3 subd_reals) per level window
+ * vertex (not in the refined window: its triangles are emitted, positions only), and the
+ * level-0 window's L, vertices, triangles (the adaptation box lives in the run state). */
 #define SUBD_SR48_STREAM_ADAPT_NW_(L) \
     ((uint32_t)(L) > 0u ? SUBD_SR48_STREAM_SLOTS_((uint32_t)(L) - 1u) : 1u)
 #define SUBD_SR48_STREAM_ADAPT_CKW_(L) \
@@ -528,8 +528,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
          ? SUBD_SR48_SA_(4u * (2u * ((uint32_t)(L) + 1u) + SUBD_SR48_STREAM_ADAPT_NW_(L))) \
          : 0u)
 #define SUBD_SR48_STREAM_ADAPT_EXTRA_(L, t, v) \
-    (SUBD_SR48_STREAM_ADAPT_NW_(L) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
-     SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))
+    (SUBD_SR48_STREAM_ADAPT_NW_(L) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * (v)) + \
+     2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
     (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
      SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)) + \

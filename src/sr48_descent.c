@@ -14,15 +14,20 @@
 
 /* The window of level j of a descent from level k (j > k): with the checkpoints of the
  * adaptive walk (s->ckw) the level slots hold the walk's path and its checkpoints, so the
- * descent's windows alternate between two level-window blocks inside X's block (free during
- * a descent; it holds two: a compile-time check in sr48_stream.c); otherwise (CHORD, fewer
+ * descent's windows alternate between two level windows without L (a descent reads
+ * positions only; L is a level window's last array, at off[7]) inside X's block, free during
+ * a descent (it holds two: a compile-time check in sr48_stream.c); otherwise (CHORD, fewer
  * levels than a checkpoint's spacing) the blocks of the levels below k, free then. */
 static void s48_dwin(const s48_state *s, uint32_t k, uint32_t j, s48_win *w)
 {
-    if (j == k || !s->ckw)
+    uint32_t off[8], i;
+    if (j == k || !s->ckw) {
         s48_lev(s, j, w);
-    else
-        s48_win_at(s, s->xblk + ((j - k) & 1u) * s->lev_size, s->off, w);
+        return;
+    }
+    for (i = 0; i < 7u; i++) off[i] = s->off[i];
+    off[7] = 0;
+    s48_win_at(s, s->xblk + ((j - k) & 1u) * s->off[7], off, w);
 }
 
 /* One descent of subd_s48_finest_, each level cropped by subd_s48_refine_crop_'s fin (0: two

@@ -69,13 +69,12 @@ typedef char s48c_tile_fits[SUBD_SR48_WIN_(SUBD_SR48_STREAM_TT_(8u, SUBD_SR48_ST
                                 : -1];
 
 /* The adaptive walk's descents with checkpoints (sr48_descent.c, s48_dwin) keep two level
- * windows, L included, in X's block: twice a level window fits the refined window (its
- * margin grows with the valence, so the least valence counted is the tightest case). */
-typedef char s48_dwin_fits[2u * (SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u)) +
-                                 SUBD_SR48_SA_(12u * SUBD_SR48_STREAM_WV_(8u))) <=
+ * windows without L in X's block (which has no L either: the children emitted from it need
+ * positions only): twice a level window fits the refined window (its margin grows with the
+ * valence, so the least valence counted is the tightest case). */
+typedef char s48_dwin_fits[2u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u)) <=
                                    SUBD_SR48_WIN_(2u * SUBD_SR48_STREAM_WT_(8u),
-                                                  SUBD_SR48_STREAM_WV_(8u) + SUBD_SR48_STREAM_WT_(8u)) +
-                                       SUBD_SR48_SA_(12u * (SUBD_SR48_STREAM_WV_(8u) + SUBD_SR48_STREAM_WT_(8u)))
+                                                  SUBD_SR48_STREAM_WV_(8u) + SUBD_SR48_STREAM_WT_(8u))
                                ? 1
                                : -1];
 
@@ -155,7 +154,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     uint32_t lsz = s48_win_layout(ct, cv, nl, off), asz = tile ? s48_win_layout(at, av, nl, off) : 0u;
     /* X: a uniform tile's windows alternate between A and X, each refined and cropped in one
      * pass (subd_s48_refine_crop_), so X is A's size; otherwise a whole refined window */
-    uint32_t xsz = tile ? asz : s48_win_layout(2u * mt, xv, nl, off);
+    uint32_t xsz = tile ? asz : s48_win_layout(2u * mt, xv, 0u, off); /* no L: never read */
     s48_state *s;
     subd_layout_begin(&y, a);
     s = subd_layout_take(&y, 1u, SUBD_STREAM_STATE_BYTES);
@@ -173,7 +172,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         if (tile)
             (void)s48_win_layout(at, av, nl, s->xoff);
         else
-            (void)s48_win_layout(2u * mt, xv, nl, s->xoff);
+            (void)s48_win_layout(2u * mt, xv, 0u, s->xoff);
     }
     {
         uint8_t *lev = subd_layout_take(&y, nlev, lsz);

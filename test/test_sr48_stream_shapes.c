@@ -537,7 +537,7 @@ static void sr48sh_adapt_plan(void)
         if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
         CHECK_EQ(plan, SUBD_SR48_STREAM_ADAPT_BYTES(5, fx_sr48_valence(&base, &low)));
         full = 0;
-        for (size = 0; size <= plan; size += (size + 16u < plan) ? (H_HOST ? 13u : 509u) : 1u) {
+        for (size = 0; size <= plan; size += (size + 520u < plan) ? (H_HOST ? 13u : 509u) : 1u) {
             n = 0;
             subd_arena_init(&sa, h_arena_buf + SH_MAT_ARENA, size);
             st = subd_sr48_stream(&sa, &base, &so, &sink, &d);

@@ -7,7 +7,9 @@
  * (subd_s48_finest_); L of the level-0 window (subd_s48_level0_lin_, CHORD's and the
  * adaptive cuts' interpolants) and the adaptation box (subd_s48_adapt_box_: RAMP, POINT's
  * default radius) are descents of the level-0 vertices. Moved out of sr48_window.c (its
- * length); same code.
+ * length). Where a descent keeps its windows: the level blocks below its start (CHORD, few
+ * levels), or with the adaptive walk's checkpoints (whose slots hold the walk's path) two
+ * windows in the refined window's block, the last level also cropped (s48_dwin).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"

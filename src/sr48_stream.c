@@ -39,8 +39,12 @@
  * Memory: the fixed state block, the overflow ring (2 triangles), L window blocks (uniform:
  * the levels 0..L - tw above the tile, or the checkpoints' slots, then the two tile windows
  * A and X of the same size), the refined window X otherwise (twice the triangles of a level
- * window), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
- * star's keys, F(D)'s first levels); all sized by the window capacities of
+ * window, without L; POINT, RAMP, PLANE, CALLBACK with max_level > SUBD_SR48_STREAM_CKPT_: the
+ * levels 0..L - 1 in the checkpoints' slots as the uniform walk's, rebuilt by the same calls
+ * (s48_ensure: L of a rebuilt window is refine's midpoint rule again, the decisions' state is
+ * the walk state kept per level), their descents' two windows in X's block, sr48_descent.c),
+ * the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the star's keys,
+ * F(D)'s first levels); all sized by the window capacities of
  * SUBD_SR48_STREAM_BYTES, which depend on the largest valence (and the tile's m) only.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -120,7 +124,7 @@ static int s48_tile_pair(const s48_state *s)
     return s->tm > 1u && s->tm == s->levels;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d (d >= c), a window per c-th level
+/* Checkpoints (uniform and adaptive walks): the window slots of levels 0..d (d >= c), a window per c-th level
  * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
@@ -370,7 +374,7 @@ static void s48_up(s48_state *s)
     }
 }
 
-/* Uniform checkpoints: level k's window is about to be written into its slot: the walk
+/* Checkpoints: level k's window is about to be written into its slot: the walk
  * state (cur, nxt) of the level the slot holds is kept in ckw until that level is rebuilt. */
 static void s48_take_slot(s48_state *s, uint32_t k)
 {
@@ -385,7 +389,7 @@ static void s48_take_slot(s48_state *s, uint32_t k)
     *own = k + 1u;
 }
 
-/* Uniform checkpoints: makes level k's slot hold level k's window of the current path,
+/* Checkpoints: makes level k's slot hold level k's window of the current path,
  * rebuilding it (and the levels between) from the deepest level below it whose slot still
  * holds it (a checkpoint at the latest; level 0 from the base mesh): the calls of the first
  * descent (build level 0's window, refine the level below, crop to its current triangle's
@@ -397,7 +401,8 @@ static int s48_ensure(s48_state *s, uint32_t k)
     s48_win p, c;
     while (j > 0u && own[s48_slot(s, j)] != j + 1u) j--;
     if (j == 0u && own[s48_slot(s, 0)] != 1u) {
-        /* uniform: the window of t0's hybrid pair, whichever of the two t0 is */
+        /* uniform: the window of t0's hybrid pair, whichever of the two t0 is; adaptive: with L
+         * from s->l0, kept since t0's subd_s48_level0_lin_ */
         s48_take_slot(s, 0);
         if (!subd_s48_build0_(s, s->t0)) return 0;
         s48_lev(s, 0, &p);

@@ -367,7 +367,9 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   vertex (refining and cropping towards it down to max_level), and a leaf of level
  *   k < max_level gets its corners' max_level positions by three such descents, so a cut
  *   costs O(window * max_level) per leaf and per level-0 window vertex on top of the
- *   uniform work of its split triangles. RAMP and POINT's default radius first find the
+ *   uniform work of its split triangles. With max_level > SUBD_SR48_STREAM_CKPT_ the walk
+ *   keeps the uniform walk's checkpoints (SUBD_SR48_STREAM_SLOTS_(max_level - 1) level
+ *   windows) and rebuilds the levels between when it returns to them. RAMP and POINT's default radius first find the
  *   adaptation box A (subd_sr48_adapt_mode): the first subd_stream_next_tris call descends from
  *   one level-0 triangle at each base vertex (the lowest-index one of its fan), O(base
  *   vertices * window * max_level) once. CALLBACK: fn is called once per triangle of
@@ -433,7 +435,8 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * would overflow stops the stream with SUBD_ERR_TOO_BIG). Blocks: the run state, the
  * overflow ring (2 triangles), the level windows (16 bytes per triangle, 17 per vertex;
  * uniform: SUBD_SR48_STREAM_SLOTS_(D) of them - checkpoints, below - and two tile windows,
- * see SUBD_SR48_STREAM_TILE_LEVELS; otherwise max(L, 1) and the refined window: twice the
+ * see SUBD_SR48_STREAM_TILE_LEVELS; the adaptive modes: SUBD_SR48_STREAM_ADAPT_NW_(L), the
+ * same checkpoints; CHORD: max(L, 1) and three more) and the refined window: twice the
  * triangles, WT + WV vertices), the smoothing sums (6 bytes per vertex of the larger parent
  * window, level or tile, in both arithmetics), counts (4) and the crop's and level 0's maps. */
 #define SUBD_SR48_STREAM_RINGS_ 2u
@@ -479,9 +482,9 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
      (uint32_t)(nl) * SUBD_SR48_WIN_(t, v) + 2u * SUBD_SR48_WIN_(at, av) + \
      SUBD_SR48_STREAM_S_(t, v, SUBD_SR48_MAX_(at, t), SUBD_SR48_MAX_(av, v) + SUBD_SR48_MAX_(at, t), \
                          SUBD_SR48_MAX_(av, v)))
-/* Without tiles (the adaptive modes): max(L, 1) level windows. */
+/* Without tiles (the adaptive modes): SUBD_SR48_STREAM_ADAPT_NW_(L) level windows. */
 #define SUBD_SR48_STREAM_DFS_BYTES_(L, N) \
-    SUBD_SR48_STREAM_G_(SUBD_SR48_MAX_(L, 1u), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
+    SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_ADAPT_NW_(L), SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N), 0u, \
                         SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))
 /* The levels the uniform walk's tile covers: m + 1 when L > m > 1 (the last level has no
  * window, sr48_tile.c), else m; the walk's level windows are those of levels 0..D,
@@ -509,15 +512,28 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
                                  SUBD_SR48_STREAM_TV_(N, SUBD_SR48_STREAM_TM_(L))) \
           : SUBD_SR48_STREAM_G_(SUBD_SR48_STREAM_SLOTS_(SUBD_SR48_STREAM_D_(L)), SUBD_SR48_STREAM_WT_(N), \
                                 SUBD_SR48_STREAM_WV_(N), 0u, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N))))
-/* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): L (3 subd_reals) per window
- * vertex, per level window and in the refined window, and the level-0 window's L, vertices,
- * triangles (the adaptation box lives in the run state). */
+/* The plan of the adaptive modes (POINT, RAMP, PLANE, CALLBACK): the walk's level windows
+ * are those of levels 0..L - 1 (the children of a level L - 1 triangle come from the refined
+ * window); with SUBD_SR48_STREAM_CKPT_ or more below level 0 (L > CKPT_), the uniform
+ * checkpoints: SUBD_SR48_STREAM_SLOTS_(L - 1) windows and the walk state (2 words per level,
+ * one per slot), the levels between rebuilt with their L and their decisions' state when the
+ * walk returns (the descents to the finest level then keep their two windows in the refined
+ * window's block); otherwise max(L, 1) windows. Plus L (3 subd_reals) per level window
+ * vertex (not in the refined window: its triangles are emitted, positions only), and the
+ * level-0 window's L, vertices, triangles (the adaptation box lives in the run state). */
+#define SUBD_SR48_STREAM_ADAPT_NW_(L) \
+    ((uint32_t)(L) > 0u ? SUBD_SR48_STREAM_SLOTS_((uint32_t)(L) - 1u) : 1u)
+#define SUBD_SR48_STREAM_ADAPT_CKW_(L) \
+    ((uint32_t)(L) > SUBD_SR48_STREAM_CKPT_ \
+         ? SUBD_SR48_SA_(4u * (2u * ((uint32_t)(L) + 1u) + SUBD_SR48_STREAM_ADAPT_NW_(L))) \
+         : 0u)
 #define SUBD_SR48_STREAM_ADAPT_EXTRA_(L, t, v) \
-    (((uint32_t)(L) > 0u ? (uint32_t)(L) : 1u) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * ((v) + (t))) + \
-     SUBD_SR48_SA_(12u * (v)) + 2u * SUBD_SR48_SA_(4u * (v)))
+    (SUBD_SR48_STREAM_ADAPT_NW_(L) * SUBD_SR48_SA_(12u * (v)) + SUBD_SR48_SA_(12u * (v)) + \
+     2u * SUBD_SR48_SA_(4u * (v)))
 #define SUBD_SR48_STREAM_ADAPT_BYTES(L, N) \
     (SUBD_SR48_STREAM_DFS_BYTES_(L, N) + \
-     SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)))
+     SUBD_SR48_STREAM_ADAPT_EXTRA_(L, SUBD_SR48_STREAM_WT_(N), SUBD_SR48_STREAM_WV_(N)) + \
+     SUBD_SR48_STREAM_ADAPT_CKW_(L))
 /* The plan of CHORD: the adaptive modes' level windows, three more for the tile window of the
  * memo's tiles (rooted max(L - SUBD_SR48_STREAM_CHORD_TILE_, 0) levels down, made while a
  * decision holds the windows of its path), and a refined window sized for the

@@ -7,35 +7,62 @@
  * (subd_s48_finest_); L of the level-0 window (subd_s48_level0_lin_, CHORD's and the
  * adaptive cuts' interpolants) and the adaptation box (subd_s48_adapt_box_: RAMP, POINT's
  * default radius) are descents of the level-0 vertices. Moved out of sr48_window.c (its
- * length); same code.
+ * length). Where a descent keeps its windows: the level blocks below its start (CHORD, few
+ * levels), or with the adaptive walk's checkpoints (whose slots hold the walk's path) two
+ * windows in the refined window's block, the last level also cropped (s48_dwin).
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
 #include "sr48_stream_internal.h"
 
+/* The window of level j of a descent from level k (j > k): with the checkpoints of the
+ * adaptive walk (s->ckw) the level slots hold the walk's path and its checkpoints, so the
+ * descent's windows alternate between two level windows without L (a descent reads
+ * positions only; L is a level window's last array, at off[7]) inside X's block, free during
+ * a descent (it holds two: a compile-time check in sr48_stream.c); otherwise (CHORD, fewer
+ * levels than a checkpoint's spacing) the blocks of the levels below k, free then. */
+static void s48_dwin(const s48_state *s, uint32_t k, uint32_t j, s48_win *w)
+{
+    uint32_t off[8], i;
+    if (j == k || !s->ckw) {
+        s48_lev(s, j, w);
+        return;
+    }
+    for (i = 0; i < 7u; i++) off[i] = s->off[i];
+    off[7] = 0;
+    s48_win_at(s, s->xblk + ((j - k) & 1u) * s->off[7], off, w);
+}
+
 /* One descent of subd_s48_finest_, each level cropped by subd_s48_refine_crop_'s fin (0: two
  * rings, 1: ring 1 of the children and the partners of its triangles). 1 done, 0 failure,
- * 2 not found exact (fin 1: made again with two rings). */
+ * 2 not found exact (fin 1: made again with two rings). The last level: the refined window
+ * X (no checkpoints), or (checkpoints: X's block holds the descent's windows) one more
+ * refinement and crop: a kept vertex's position and flags are refine's, the same bits. */
 static int s48_descend(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_real *out, uint32_t fin)
 {
     s48_win w, x, c;
-    uint32_t j, cur = t, q, ch;
+    uint32_t j, cur = t, q, ch, v;
     for (j = k;; j++) {
-        s48_lev(s, j, &w);
+        s48_dwin(s, k, j, &w);
         /* child 0 = (m; apex, b0) keeps apex and b0, child 1 = (m; b1, apex) keeps b1 */
         ch = (s48_vid(&w, w.tv[3u * cur + 2u]) == id) ? 1u : 0u;
-        if (j + 1u == s->levels) break;
-        s48_lev(s, j + 1u, &c); /* refined and cropped to cur's children in one pass */
+        if (j + 1u == s->levels && !s->ckw) break;
+        s48_dwin(s, k, j + 1u, &c); /* refined and cropped to cur's children in one pass */
         if (!subd_s48_refine_crop_(s, &w, j, cur, 1u, &c, s->wt, s->wv, fin)) return fin && !s->err ? 2 : 0;
         cur = c.hd[3u + ch];
         if (cur == S48_OUT) return fin ? 2 : 0;
+        if (j + 1u == s->levels) break; /* checkpoints: c holds the vertex at max_level */
     }
-    s48_x(s, &x);
-    if (!subd_s48_refine_(s, &w, j, &x)) return 0;
+    if (!s->ckw) {
+        s48_x(s, &x);
+        if (!subd_s48_refine_(s, &w, j, &x)) return 0;
+        c = x;
+        cur = 2u * cur + ch;
+    }
     for (q = 0; q < 3u; q++) {
-        const uint32_t v = x.tv[3u * (2u * cur + ch) + q];
-        if (s48_vid(&x, v) != id) continue;
-        if (!(x.vf[v] & S48_EXACT)) return fin ? 2 : 0;
-        for (j = 0; j < 3u; j++) out[j] = x.vp[3u * v + j];
+        v = c.tv[3u * cur + q];
+        if (s48_vid(&c, v) != id) continue;
+        if (!(c.vf[v] & S48_EXACT)) return fin ? 2 : 0;
+        for (j = 0; j < 3u; j++) out[j] = c.vp[3u * v + j];
         return 1;
     }
     return 0;
@@ -45,7 +72,7 @@ static int s48_descend(s48_state *s, uint32_t k, uint32_t t, uint64_t id, subd_r
  * level-k window (k < levels): the windows k+1.. are refined and cropped along children
  * that keep the vertex as a corner (a corner of a triangle is a corner of one of its
  * children), and its position is read from the last refined window, where it is exact by
- * the ring rule (checked). Uses the blocks of levels > k and X only. 0 on failure. Each
+ * the ring rule (checked). Uses the blocks of levels > k (no checkpoints) and X only. 0 on failure. Each
  * level but the last is refined and cropped in one pass (subd_s48_refine_crop_); first to
  * ring 1 of the children and the partners of its triangles, as the uniform tile's windows
  * (sr48_tile.c; about half the triangles), and when the vertex is then not exact, again with

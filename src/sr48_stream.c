@@ -39,8 +39,12 @@
  * Memory: the fixed state block, the overflow ring (2 triangles), L window blocks (uniform:
  * the levels 0..L - tw above the tile, or the checkpoints' slots, then the two tile windows
  * A and X of the same size), the refined window X otherwise (twice the triangles of a level
- * window), the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the
- * star's keys, F(D)'s first levels); all sized by the window capacities of
+ * window, without L; POINT, RAMP, PLANE, CALLBACK with max_level > SUBD_SR48_STREAM_CKPT_: the
+ * levels 0..L - 1 in the checkpoints' slots as the uniform walk's, rebuilt by the same calls
+ * (s48_ensure: L of a rebuilt window is refine's midpoint rule again, the decisions' state is
+ * the walk state kept per level), their descents' two windows in X's block, sr48_descent.c),
+ * the smoothing sums and the crop's maps (CHORD: the walk's per-level state, the star's keys,
+ * F(D)'s first levels); all sized by the window capacities of
  * SUBD_SR48_STREAM_BYTES, which depend on the largest valence (and the tile's m) only.
  */
 #include "fp_contract.h" /* first: no float contraction whatever the flags */
@@ -67,6 +71,16 @@ typedef char s48c_tile_fits[SUBD_SR48_WIN_(SUBD_SR48_STREAM_TT_(8u, SUBD_SR48_ST
                                     3u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u))
                                 ? 1
                                 : -1];
+
+/* The adaptive walk's descents with checkpoints (sr48_descent.c, s48_dwin) keep two level
+ * windows without L in X's block (which has no L either: the children emitted from it need
+ * positions only): twice a level window fits the refined window (its margin grows with the
+ * valence, so the least valence counted is the tightest case). */
+typedef char s48_dwin_fits[2u * SUBD_SR48_WIN_(SUBD_SR48_STREAM_WT_(8u), SUBD_SR48_STREAM_WV_(8u)) <=
+                                   SUBD_SR48_WIN_(2u * SUBD_SR48_STREAM_WT_(8u),
+                                                  SUBD_SR48_STREAM_WV_(8u) + SUBD_SR48_STREAM_WT_(8u))
+                               ? 1
+                               : -1];
 
 /* ------------------------------------------------------------------------------------ */
 /* Capacities and layout                                                                  */
@@ -110,7 +124,7 @@ static int s48_tile_pair(const s48_state *s)
     return s->tm > 1u && s->tm == s->levels;
 }
 
-/* Uniform checkpoints: the window slots of levels 0..d (d >= c), a window per c-th level
+/* Checkpoints (uniform and adaptive walks): the window slots of levels 0..d (d >= c), a window per c-th level
  * above 0 and c - 1 shared by the levels between and level 0 (SUBD_SR48_STREAM_SLOTS_). */
 static uint32_t s48_slots(uint32_t d, uint32_t c)
 {
@@ -131,7 +145,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     const uint32_t tile = m > 1u, tw = tile && levels > m ? m + 1u : m; /* s48_tile_walk */
     /* the deepest level window: L - tw (uniform), L - 1 (otherwise) */
     const uint32_t dl = levels >= tw ? levels - tw : 0u, ckc =
-        !nl && !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
+        !chord && dl >= SUBD_SR48_STREAM_CKPT_ ? SUBD_SR48_STREAM_CKPT_ : 0u; /* fewer slots than levels */
     /* CHORD: three more level windows after levels 0..L-1, the tile window of the memo's tiles
      * (sr48_chord_walk.c, s48c_bits: taken while a decision holds levels up to max_level - 1) */
     const uint32_t nlev = (ckc ? s48_slots(dl, ckc) : dl + 1u) + (chord ? 3u : 0u);
@@ -144,7 +158,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
     uint32_t lsz = s48_win_layout(ct, cv, nl, off), asz = tile ? s48_win_layout(at, av, nl, off) : 0u;
     /* X: a uniform tile's windows alternate between A and X, each refined and cropped in one
      * pass (subd_s48_refine_crop_), so X is A's size; otherwise a whole refined window */
-    uint32_t xsz = tile ? asz : s48_win_layout(2u * mt, xv, nl, off);
+    uint32_t xsz = tile ? asz : s48_win_layout(2u * mt, xv, 0u, off); /* no L: never read */
     s48_state *s;
     subd_layout_begin(&y, a);
     s = subd_layout_take(&y, 1u, SUBD_STREAM_STATE_BYTES);
@@ -162,7 +176,7 @@ static int s48_layout(subd_arena *a, uint32_t levels, uint32_t valence, uint32_t
         if (tile)
             (void)s48_win_layout(at, av, nl, s->xoff);
         else
-            (void)s48_win_layout(2u * mt, xv, nl, s->xoff);
+            (void)s48_win_layout(2u * mt, xv, 0u, s->xoff);
     }
     {
         uint8_t *lev = subd_layout_take(&y, nlev, lsz);
@@ -360,7 +374,7 @@ static void s48_up(s48_state *s)
     }
 }
 
-/* Uniform checkpoints: level k's window is about to be written into its slot: the walk
+/* Checkpoints: level k's window is about to be written into its slot: the walk
  * state (cur, nxt) of the level the slot holds is kept in ckw until that level is rebuilt. */
 static void s48_take_slot(s48_state *s, uint32_t k)
 {
@@ -375,7 +389,7 @@ static void s48_take_slot(s48_state *s, uint32_t k)
     *own = k + 1u;
 }
 
-/* Uniform checkpoints: makes level k's slot hold level k's window of the current path,
+/* Checkpoints: makes level k's slot hold level k's window of the current path,
  * rebuilding it (and the levels between) from the deepest level below it whose slot still
  * holds it (a checkpoint at the latest; level 0 from the base mesh): the calls of the first
  * descent (build level 0's window, refine the level below, crop to its current triangle's
@@ -387,7 +401,8 @@ static int s48_ensure(s48_state *s, uint32_t k)
     s48_win p, c;
     while (j > 0u && own[s48_slot(s, j)] != j + 1u) j--;
     if (j == 0u && own[s48_slot(s, 0)] != 1u) {
-        /* uniform: the window of t0's hybrid pair, whichever of the two t0 is */
+        /* uniform: the window of t0's hybrid pair, whichever of the two t0 is; adaptive: with L
+         * from s->l0, kept since t0's subd_s48_level0_lin_ */
         s48_take_slot(s, 0);
         if (!subd_s48_build0_(s, s->t0)) return 0;
         s48_lev(s, 0, &p);

@@ -132,7 +132,8 @@ typedef struct s48_state {
     /* (the cache of finest positions, sr48_chord_walk.c: S48C_NC ids after cdesc's 3 S48C_ND
      * words, their positions after cpos's 3 (levels + 4) subd_reals; then the tile's
      * interpolant stack, node corners and flags, sr48_chord_walk.c's s48c_lin) */
-    /* Uniform checkpoints (sr48_stream.c, s48_ensure; NULL: one window per level): levels
+    /* Checkpoints of the uniform walk and (max_level > c) of POINT, RAMP, PLANE, CALLBACK's
+     * (sr48_stream.c, s48_ensure; NULL: one window per level, CHORD): levels
      * c, 2c, .. (c = SUBD_SR48_STREAM_CKPT_) above the tile keep a window each, the levels
      * between and level 0 share c - 1 slots (s48_slot) and are rebuilt from their checkpoint
      * (level 0: from the base mesh) when the walk returns. Per level its walk state (cur,

@@ -447,8 +447,119 @@ static void sr48sh_valences(void)
     SH_NOTE("bipyramids n = 3..12: base valences %u..%u\n", g_vmin, g_vmax);
 }
 
+/* The adaptive walk's checkpoints (sr48_stream.c, as the uniform walk's): with max_level >
+ * SUBD_SR48_STREAM_CKPT_ the level windows 1..max_level - 1 between checkpoints share slots and
+ * are rebuilt (with L and their decision state) when the walk returns, and the descents to
+ * the finest level keep their windows in the refined window's block. Every nested mode
+ * (PLANE, POINT, RAMP x, y, z, POINT's default radius, CALLBACK) at levels 4..6 on the
+ * tetrahedron, the two triangles, the cube and the hexagon fan, smoothing on and off, and bipyramids
+ * of apex valence 3..12 at level 4, through sh_case: the extraction's set, bits and ids,
+ * plan = the macro = the peak (the device: PLANE and POINT on the tetrahedron at level 4). */
+static void sr48sh_adapt_checkpoints(void)
+{
+    static const int shapes[4] = {FX48_TET, FX48_TWO, FX48_CUBE, FX48_HEXFAN};
+    static const uint32_t maxl[4] = {6u, 6u, 5u, 4u};
+    subd_sr48_adapt ad;
+    uint32_t m, s, l, f;
+    for (m = 1; m <= 8u; m++) {
+        if (!H_HOST && m != 1u && m != 2u) continue;
+        sh_setting(m, &ad);
+        for (s = 0; s < (H_HOST ? 4u : 1u); s++)
+            for (f = 0; f < (H_HOST ? 2u : 1u); f++)
+                for (l = 4; l <= (H_HOST ? maxl[s] : 4u); l++)
+                    sh_case(shapes[s], l, f ? SUBD_SR48_NO_SMOOTH : 0u, &ad, 0);
+        for (g_bn = 3; g_bn <= 12u && H_HOST; g_bn++) sh_case(FX48_BIPYR, 4, 0, &ad, 0);
+        g_bn = 5;
+    }
+}
+
+static int sh_count(void *ctx, const subd_tri *t)
+{
+    (void)t;
+    ++*(uint32_t *)ctx;
+    return 0;
+}
+
+/* The adaptive plan against a closed form from the plans without checkpoints (one level
+ * window per level below max_level: W = plan(3) - plan(2) a window with its L): SLOTS =
+ * (L - 1) / CKPT_ + CKPT_ - 1 windows for L - 1 >= CKPT_ and the walk state, 2 words per level
+ * 0..L and one per slot, so plan(L) = plan(2) + (SLOTS - 2) W + the state rounded to 8, smaller
+ * than plan(2) + (L - 2) W (one window per level); levels 4..16 on a base of valence 8 (the
+ * cube) and 12 (a bipyramid). Then every arena below the plan at 5 levels (POINT, RAMP: the
+ * adaptation box first) gives SUBD_ERR_NOMEM, bytes_needed = the plan, nothing emitted, the
+ * arena unchanged; the plan itself streams the cut with peak = plan. */
+static void sr48sh_adapt_plan(void)
+{
+    subd_arena a, sa;
+    subd_mesh in;
+    static subd_sr48 base;
+    subd_sr48_stream_opts so;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t p2, p3, w, l, plan, want, nw, size, n, full, b, m, low = 0;
+    int st;
+    for (b = 0; b < 2u; b++) {
+        g_bn = 12;
+        subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
+        if (!fx_sr48_shape(b ? FX48_BIPYR : FX48_CUBE, g_bn, &a, &in) ||
+            !CHECK_EQ(subd_sr48_base(&a, &in, 0, &base, &d), SUBD_OK))
+            break;
+        memset(&so, 0, sizeof so);
+        so.adapt.mode = SUBD_SR48_ADAPT_PLANE;
+        so.adapt.normal[0] = fx_real(1);
+        so.adapt.max_level = 2;
+        if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &p2, &d), SUBD_OK)) break;
+        so.adapt.max_level = 3;
+        if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &p3, &d), SUBD_OK)) break;
+        w = p3 - p2;
+        for (l = 4; l <= SUBD_SR48_MAX_STEPS; l++) {
+            so.adapt.max_level = l;
+            if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) break;
+            nw = l - 1u >= SUBD_SR48_STREAM_CKPT_ ? (l - 1u) / SUBD_SR48_STREAM_CKPT_ + SUBD_SR48_STREAM_CKPT_ - 1u : l;
+            want = p2 + (nw - 2u) * w +
+                   (l - 1u >= SUBD_SR48_STREAM_CKPT_ ? ((4u * (2u * (l + 1u) + nw)) + 7u) & ~7u : 0u);
+            if (!CHECK_EQ(plan, want)) SH_NOTE("adapt plan: base %u levels %u\n", b, l);
+            CHECK(plan < p2 + (l - 2u) * w);
+        }
+    }
+    g_bn = 5;
+    sink.tri = sh_count;
+    sink.ctx = &n;
+    subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
+    if (!fx_sr48_shape(FX48_CUBE, g_bn, &a, &in) || !CHECK_EQ(subd_sr48_base(&a, &in, 0, &base, &d), SUBD_OK)) return;
+    for (m = 0; m < 2u; m++) {
+        memset(&so, 0, sizeof so);
+        so.adapt.max_level = 5;
+        so.adapt.mode = m ? SUBD_SR48_ADAPT_RAMP : SUBD_SR48_ADAPT_POINT;
+        so.adapt.point[0] = fx_real(0.5);
+        so.adapt.radius = fx_real(0.2);
+        so.adapt.axis = 1;
+        if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
+        CHECK_EQ(plan, SUBD_SR48_STREAM_ADAPT_BYTES(5, fx_sr48_valence(&base, &low)));
+        full = 0;
+        for (size = 0; size <= plan; size += (size + 520u < plan) ? (H_HOST ? 13u : 509u) : 1u) {
+            n = 0;
+            subd_arena_init(&sa, h_arena_buf + SH_MAT_ARENA, size);
+            st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
+            if (size < plan) {
+                if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(n, 0u) ||
+                    !CHECK_EQ(subd_arena_mark(&sa), 0u) || !CHECK_EQ(sa.peak, 0u))
+                    return;
+            } else {
+                CHECK_EQ(st, SUBD_OK);
+                CHECK_EQ(sa.peak, plan);
+                CHECK_EQ(d.bytes_needed, 0u);
+                full = n;
+            }
+        }
+        CHECK(full > 0u);
+    }
+}
+
 const test_case suite_sr48_stream_shapes[] = {
     {"sr48sh_shapes", sr48sh_shapes},
     {"sr48sh_valences", sr48sh_valences},
+    {"sr48sh_adapt_checkpoints", sr48sh_adapt_checkpoints},
+    {"sr48sh_adapt_plan", sr48sh_adapt_plan},
     {0, 0},
 };

@@ -354,9 +354,9 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   Measured (uniform, base + plan + stream): on spot 1.5-3.9 / 3.4-7.5 / 8.7-14.7 M faces/s
  *   at 2 / 4 / 6 steps, 1.2-1.5x / 1.9-3.1x / 6.0-7.1x the faces/s of a first
  *   subd_sr48_build + subd_sr48_extract in the same run, 0.32-0.34x / 0.5-0.7x / 2.0x of
- *   them run again in their touched arena (bench -s sr48stream); 622 instructions per
- *   triangle on the Cortex-M4F at 8 steps into a counting sink (934 with the demo's
- *   checksum sink), M3 Q16.16: 742 (1 057; before the window changes of 0.6.0 1 315 / 1 435
+ *   them run again in their touched arena (bench -s sr48stream); 585 instructions per
+ *   triangle on the Cortex-M4F at 8 steps into a counting sink (897 with the demo's
+ *   checksum sink), M3 Q16.16: 706 (1 021; before the window changes of 0.6.0 1 315 / 1 435
  *   with the checksum sink, before the smaller crops 1 914 / 2 167; 0.5.0: 2 526 / 2 868;
  *   make demo).
  * Adaptive modes (POINT, RAMP, PLANE, CALLBACK): the triangles of subd_sr48_extract(mode,
@@ -396,12 +396,12 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   The tiles and the descents crop each level to ring 1 of the descendants and the
  *   partners of their triangles (as the uniform tile), checked exact, else again with two
  *   rings. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron
- *   at 9 steps, eps 0.01, about 0.18 M Cortex-M4F instructions per output face (M3 Q16.16:
- *   0.21 M; make demo), and on the host 0.42-0.45x / 0.21-0.37x the output faces/s of
+ *   at 9 steps, eps 0.01, about 0.12 M Cortex-M4F instructions per output face (M3 Q16.16:
+ *   0.144 M; make demo), and on the host 0.42-0.45x / 0.21-0.37x the output faces/s of
  *   subd_sr48_build + subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench
- *   -s sr48chord, a same-run ratio under load): every finest vertex is computed about twice
- *   (a tile root's tile is remade when the memo of SUBD_SR48_STREAM_CHORD_MASKS_ roots lost
- *   it), and exactly (no a-priori bound), so the stream cannot be faster than the uniform
+ *   -s sr48chord, a same-run ratio under load): every finest vertex is computed about 1.4
+ *   (icosahedron) to 2.3 (spot) times (a tile root's tile is remade when the memo of
+ *   SUBD_SR48_STREAM_CHORD_MASKS_ roots lost it), and exactly (no a-priori bound), so the stream cannot be faster than the uniform
  *   stream of max_level (about 28 k M4F instructions per output face in this case).
  *   Plan: SUBD_SR48_STREAM_CHORD_BYTES.
  * Notes: triangle face = the level-0 triangle it lies in, level = max_level (adaptive: the
@@ -545,10 +545,11 @@ int subd_sr48_stream(subd_arena *a, const subd_sr48 *base, const subd_sr48_strea
  * 2 * 4^j triangles j levels down, 3 words each, and a count per level; src/sr48_chord.c),
  * a cache of finest positions (SUBD_SR48_STREAM_CHORD_CACHE_ entries: an id, 2 words, and 3
  * subd_reals), the answers of SUBD_SR48_STREAM_CHORD_DECIDED_ diamonds (2 words each), the
- * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (5 words each, in sets of 2,
- * least recently used out; with 6-level tiles 512 measured 0.83x the x86 instructions of
- * the default 256 on the icosahedron at 9 steps, 226 M against 273 M, for 5 120 bytes
- * more), the walk's
+ * deviation masks of SUBD_SR48_STREAM_CHORD_MASKS_ tile roots (5 words each, in sets of 16
+ * kept in order of use, evicting roots of level-0 triangles already walked or far ahead
+ * first: src/sr48_chord_tile.c; with 6-level tiles and sets of 2, 512 measured 0.83x the x86
+ * instructions of the default 256 on the icosahedron at 9 steps, 226 M against 273 M, for
+ * 5 120 bytes more), the walk's
  * finest positions (3 subd_reals per level + 4) and the tile's nodes (3 corners, 6 bytes,
  * and a flag per node of a tile of m levels: 2^(m + 1) nodes), interpolants (9 per level,
  * 8 bytes each) and a byte per vertex of its window; src/sr48_chord_walk.c. SUBD_SR48_STREAM_CHORD_TILE_ (1..6, default

@@ -353,7 +353,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   O(window * valence) per level-0 triangle more (its window is gathered by fan walks).
  *   Measured (uniform, base + plan + stream): on spot 1.5-3.9 / 3.4-7.5 / 8.7-14.7 M faces/s
  *   at 2 / 4 / 6 steps, 1.2-1.5x / 1.9-3.1x / 6.0-7.1x the faces/s of a first
- *   subd_sr48_build + subd_sr48_extract in the same run, 0.32-0.34x / 0.5-0.7x / 2.0x of
+ *   subd_sr48_build + subd_sr48_extract in the same run, 0.29-0.34x / 0.5-0.7x / 1.8-2.0x of
  *   them run again in their touched arena (bench -s sr48stream); 585 instructions per
  *   triangle on the Cortex-M4F at 8 steps into a counting sink (897 with the demo's
  *   checksum sink), M3 Q16.16: 706 (1 021; before the window changes of 0.6.0 1 315 / 1 435
@@ -397,7 +397,7 @@ int subd_sr48_stream_plan(const subd_sr48 *base, const subd_sr48_stream_opts *o,
  *   partners of their triangles (as the uniform tile), checked exact, else again with two
  *   rings. O(window * 2^SUBD_SR48_STREAM_CHORD_TILE_) per tile; measured: the icosahedron
  *   at 9 steps, eps 0.01, about 0.12 M Cortex-M4F instructions per output face (M3 Q16.16:
- *   0.144 M; make demo), and on the host 0.42-0.45x / 0.21-0.37x the output faces/s of
+ *   0.144 M; make demo), and on the host 0.44-0.47x / 0.35-0.37x the output faces/s of
  *   subd_sr48_build + subd_sr48_extract(CHORD) on spot at 6 steps, eps 0.002 / 5e-4 (bench
  *   -s sr48chord, a same-run ratio under load): every finest vertex is computed about 1.4
  *   (icosahedron) to 2.3 (spot) times (a tile root's tile is remade when the memo of

@@ -285,3 +285,38 @@ void fx_tri_key(uint32_t *row, const subd_real *p)
 }
 
 int fx_tri_key_cmp(const void *a, const void *b) { return memcmp(a, b, 36); }
+
+int fx_count_tri(void *ctx, const subd_tri *t)
+{
+    (void)t;
+    ++*(uint32_t *)ctx;
+    return 0;
+}
+
+uint32_t fx_sr48_plan_sweep(const subd_sr48 *base, const subd_sr48_stream_opts *so, uint8_t *buf, uint32_t plan,
+                            uint32_t step, uint32_t near)
+{
+    subd_arena sa;
+    subd_diag d;
+    subd_tri_sink sink;
+    uint32_t size, n, full = 0;
+    int st;
+    sink.tri = fx_count_tri;
+    sink.ctx = &n;
+    for (size = 0; size <= plan; size += (size + near < plan) ? step : 1u) {
+        n = 0;
+        subd_arena_init(&sa, buf, size);
+        st = subd_sr48_stream(&sa, base, so, &sink, &d);
+        if (size < plan) {
+            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(n, 0u) ||
+                !CHECK_EQ(subd_arena_mark(&sa), 0u) || !CHECK_EQ(sa.peak, 0u))
+                return 0;
+        } else {
+            CHECK_EQ(st, SUBD_OK);
+            CHECK_EQ(sa.peak, plan);
+            CHECK_EQ(d.bytes_needed, 0u);
+            full = n;
+        }
+    }
+    return full;
+}

@@ -70,4 +70,15 @@ uint32_t fx_sr48_valence(const subd_sr48 *base, uint32_t *lowest);
 void fx_tri_key(uint32_t *row, const subd_real *p);
 int fx_tri_key_cmp(const void *a, const void *b);
 
+/* A triangle sink that counts: ++*(uint32_t *)ctx per triangle, nothing read, returns 0. */
+int fx_count_tri(void *ctx, const subd_tri *t);
+
+/* subd_sr48_stream(base, so) into fx_count_tri with every arena size from 0 to plan at buf
+ * (in steps of `step` until within `near` of the plan, then of 1): below the plan
+ * SUBD_ERR_NOMEM with bytes_needed = plan, nothing emitted, the arena untouched (mark and
+ * peak 0); at the plan SUBD_OK, peak = plan. Returns the triangles streamed at the plan (0
+ * after a failed check). */
+uint32_t fx_sr48_plan_sweep(const subd_sr48 *base, const subd_sr48_stream_opts *so, uint8_t *buf, uint32_t plan,
+                            uint32_t step, uint32_t near);
+
 #endif

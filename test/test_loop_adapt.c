@@ -14,6 +14,7 @@
  *    nothing emitted; pull in batches = push; a stopping sink. */
 #include "harness.h"
 #include "corpus.h"
+#include "fixtures.h" /* fx_count_tri */
 #include <stdlib.h>
 
 static const char tet_obj[] = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
@@ -688,13 +689,6 @@ static void loop_adapt_plan_16k(void)
     h_nl();
 }
 
-static int la_count(void *ctx, const subd_tri *t)
-{
-    (void)t;
-    ++*(uint32_t *)ctx;
-    return 0;
-}
-
 static void loop_adapt_errors(void)
 {
     subd_arena a;
@@ -708,7 +702,7 @@ static void loop_adapt_errors(void)
     subd_arena_init(&a, h_arena_buf, H_ARENA_BYTES);
     if (!la_shape(A_ICO, &a, &ico) || !CHECK(qf != 0)) return;
     if (!CHECK_EQ(subd_obj_read(&a, qf->data, qf->len, &quad, &d), SUBD_OK)) return;
-    s.tri = la_count;
+    s.tri = fx_count_tri;
     s.ctx = &n;
     la_opts(&o, 3, SUBD_LOOP_BOUNDARY_PAPER, SUBD_LOOP_ADAPT_CHORD, SUBD_REAL_FRAC(1, 100));
     CHECK_OK(subd_loop_adapt_stream_plan(&ico, &o, &plan, &d), &d);

@@ -296,46 +296,22 @@ static int make_base(int shape, subd_arena *a, uint32_t flags, subd_sr48 *base, 
     return CHECK_EQ(subd_sr48_base(a, in, flags, base, &d), SUBD_OK);
 }
 
-static int count_tri(void *ctx, const subd_tri *t)
-{
-    (void)t;
-    ++*(uint32_t *)ctx;
-    return 0;
-}
-
 /* Every arena below the plan: SUBD_ERR_NOMEM, bytes_needed = the plan, arena unchanged,
  * nothing emitted; the plan itself works and is the peak. */
 static void sr48s_plan_exhaustive(void)
 {
-    subd_arena a, sa;
+    subd_arena a;
     subd_mesh in;
     subd_sr48 base;
     subd_sr48_stream_opts so;
     subd_diag d;
-    subd_tri_sink sink;
-    uint32_t plan, size, n;
-    int st;
+    uint32_t plan;
     if (!make_base(FX48_TET, &a, 0, &base, &in)) return;
     so.adapt.mode = SUBD_SR48_ADAPT_UNIFORM;
     so.adapt.max_level = 3;
     if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
-    sink.tri = count_tri;
-    sink.ctx = &n;
-    for (size = 0; size <= plan; size += (size + 64u < plan) ? 7u : 1u) {
-        n = 0;
-        subd_arena_init(&sa, h_arena_buf + MAT_ARENA, size);
-        st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
-        if (size < plan) {
-            if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(n, 0u) ||
-                !CHECK_EQ(subd_arena_mark(&sa), 0u) || !CHECK_EQ(sa.peak, 0u))
-                return;
-        } else {
-            CHECK_EQ(st, SUBD_OK);
-            CHECK_EQ(n, 16u << 3); /* 16 level-0 triangles, 2^3 each */
-            CHECK_EQ(sa.peak, plan);
-            CHECK_EQ(d.bytes_needed, 0u);
-        }
-    }
+    /* 16 level-0 triangles, 2^3 each */
+    CHECK_EQ(fx_sr48_plan_sweep(&base, &so, h_arena_buf + MAT_ARENA, plan, 7u, 64u), 16u << 3);
 }
 
 static int stop_at(void *ctx, const subd_tri *t)
@@ -520,7 +496,7 @@ static void sr48s_adapt_errors(void)
     o.steps = 3;
     o.flags = 0;
     if (!CHECK_EQ(subd_sr48_build(&a, &in, &o, &h, &d), SUBD_OK)) return;
-    sink.tri = count_tri;
+    sink.tri = fx_count_tri;
     sink.ctx = &n;
     g_view[0] = 0.6; g_view[1] = 0.2; g_view[2] = 0.9;
     g_vr = 0.25;
@@ -557,7 +533,7 @@ static void sr48s_adapt_errors(void)
             CHECK_EQ(n, 5u);
         }
         CHECK_EQ(subd_arena_mark(&sa), 0u);
-        sink.tri = count_tri;
+        sink.tri = fx_count_tri;
         /* bad parameters of this mode: extract's status, nothing emitted */
         if (m == 0u) so.adapt.axis = 3;
         if (m == 1u) so.adapt.radius = fx_real(-1);

@@ -473,13 +473,6 @@ static void sr48sh_adapt_checkpoints(void)
     }
 }
 
-static int sh_count(void *ctx, const subd_tri *t)
-{
-    (void)t;
-    ++*(uint32_t *)ctx;
-    return 0;
-}
-
 /* The adaptive plan against a closed form from the plans without checkpoints (one level
  * window per level below max_level: W = plan(3) - plan(2) a window with its L): SLOTS =
  * (L - 1) / CKPT_ + CKPT_ - 1 windows for L - 1 >= CKPT_ and the walk state, 2 words per level
@@ -490,14 +483,12 @@ static int sh_count(void *ctx, const subd_tri *t)
  * arena unchanged; the plan itself streams the cut with peak = plan. */
 static void sr48sh_adapt_plan(void)
 {
-    subd_arena a, sa;
+    subd_arena a;
     subd_mesh in;
     static subd_sr48 base;
     subd_sr48_stream_opts so;
     subd_diag d;
-    subd_tri_sink sink;
-    uint32_t p2, p3, w, l, plan, want, nw, size, n, full, b, m, low = 0;
-    int st;
+    uint32_t p2, p3, w, l, plan, want, nw, b, m, low = 0;
     for (b = 0; b < 2u; b++) {
         g_bn = 12;
         subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
@@ -523,8 +514,6 @@ static void sr48sh_adapt_plan(void)
         }
     }
     g_bn = 5;
-    sink.tri = sh_count;
-    sink.ctx = &n;
     subd_arena_init(&a, h_arena_buf, SH_MAT_ARENA);
     if (!fx_sr48_shape(FX48_CUBE, g_bn, &a, &in) || !CHECK_EQ(subd_sr48_base(&a, &in, 0, &base, &d), SUBD_OK)) return;
     for (m = 0; m < 2u; m++) {
@@ -536,23 +525,7 @@ static void sr48sh_adapt_plan(void)
         so.adapt.axis = 1;
         if (!CHECK_EQ(subd_sr48_stream_plan(&base, &so, &plan, &d), SUBD_OK)) return;
         CHECK_EQ(plan, SUBD_SR48_STREAM_ADAPT_BYTES(5, fx_sr48_valence(&base, &low)));
-        full = 0;
-        for (size = 0; size <= plan; size += (size + 520u < plan) ? (H_HOST ? 13u : 509u) : 1u) {
-            n = 0;
-            subd_arena_init(&sa, h_arena_buf + SH_MAT_ARENA, size);
-            st = subd_sr48_stream(&sa, &base, &so, &sink, &d);
-            if (size < plan) {
-                if (!CHECK_EQ(st, SUBD_ERR_NOMEM) || !CHECK_EQ(d.bytes_needed, plan) || !CHECK_EQ(n, 0u) ||
-                    !CHECK_EQ(subd_arena_mark(&sa), 0u) || !CHECK_EQ(sa.peak, 0u))
-                    return;
-            } else {
-                CHECK_EQ(st, SUBD_OK);
-                CHECK_EQ(sa.peak, plan);
-                CHECK_EQ(d.bytes_needed, 0u);
-                full = n;
-            }
-        }
-        CHECK(full > 0u);
+        CHECK(fx_sr48_plan_sweep(&base, &so, h_arena_buf + SH_MAT_ARENA, plan, H_HOST ? 13u : 509u, 520u) > 0u);
     }
 }
 

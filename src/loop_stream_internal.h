@@ -97,9 +97,6 @@ typedef struct sp_state {
     uint32_t tdep, tq, tj;
 #if SUBD_FIXED
     subd_real tmove[3]; /* the tile's move (beyond 2 048.0: subd_lt_start's org)        */
-#define LS_TMOVE(s) ((s)->tmove)
-#else
-#define LS_TMOVE(s) ((subd_real *)0) /* float32 tiles are never moved */
 #endif
     uint32_t ntile[4]; /* tiles made so far, by depth 2..5 (subd_lt_stream_count) */
     uint32_t nwin;     /* windows made so far (subd_ls_stream_windows)                 */
@@ -109,6 +106,12 @@ typedef struct sp_state {
                      * their high words (loop_stream_emit.c); else they are zero     */
 } sp_state;
 SUBD_STREAM_STATE_FITS(sp_state);
+/* The tile's move for subd_lt_start / subd_lt_quarter (float32 tiles are never moved). */
+#if SUBD_FIXED
+#define LS_TMOVE(s) ((s)->tmove)
+#else
+#define LS_TMOVE(s) ((subd_real *)0)
+#endif
 
 /* The emitters (loop_stream_emit.c). Each returns 0, SUBD_ERR_RANGE (overflow, fixed point)
  * or the sink's value. The centre's four children at the last level (one level in all), from

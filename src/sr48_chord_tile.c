@@ -209,13 +209,23 @@ static uint64_t s48c_devs(const s48_state *s, const s48_win *x, uint32_t n)
 #define S48C_PD 2u /* subd_s48_chord_bits_: levels of a memo tile whose corners are cached */
 #endif
 typedef char s48c_ways_fit[S48C_NW >= 1u && S48C_NB % S48C_NW == 0u ? 1 : -1];
-uint32_t *subd_s48_chord_mk_(const s48_state *s, uint64_t key, uint32_t j)
+/* The memo's set for the tile root (key, level j) in *set, and the root's way in it
+ * (S48C_NW when the set does not hold it): the one lookup of subd_s48_chord_mk_ and
+ * subd_s48_chord_mk_find_. */
+static uint32_t s48c_mk_way(const s48_state *s, uint64_t key, uint32_t j, uint32_t **set)
 {
     const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
     uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
                   5u * S48C_NW * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / S48C_NW - 1u));
-    uint32_t f = 0, q, h[5];
+    uint32_t f = 0;
     while (f < S48C_NW && !(e[5u * f] == (uint32_t)key && e[5u * f + 1u] == tag)) f++;
+    *set = e;
+    return f;
+}
+
+uint32_t *subd_s48_chord_mk_(const s48_state *s, uint64_t key, uint32_t j)
+{
+    uint32_t *e, q, h[5], f = s48c_mk_way(s, key, j, &e);
     if (f == 0u) return e;
     if (f == S48C_NW) { /* a miss: the victim (above) */
         for (f = S48C_NW - 1u; f > 0u; f--) {
@@ -238,13 +248,8 @@ uint32_t *subd_s48_chord_mk_(const s48_state *s, uint64_t key, uint32_t j)
  * change of the order of use (a look that may well miss: s48c_coarse). */
 const uint32_t *subd_s48_chord_mk_find_(const s48_state *s, uint64_t key, uint32_t j)
 {
-    const uint32_t tag = (uint32_t)(key >> 32) | j << 20;
-    const uint32_t *e = s->cdesc + 3u * S48C_ND + 2u * (S48C_NC + S48C_ND2) +
-                        5u * S48C_NW * ((((uint32_t)key ^ tag) * 2654435761u) >> 16 & (S48C_NB / S48C_NW - 1u));
-    uint32_t f;
-    for (f = 0; f < S48C_NW; f++)
-        if (e[5u * f] == (uint32_t)key && e[5u * f + 1u] == tag) return e + 5u * f;
-    return 0;
+    uint32_t *e, f = s48c_mk_way(s, key, j, &e);
+    return f < S48C_NW ? e + 5u * f : 0;
 }
 
 /* One level of a tile (subd_s48_chord_tile_, subd_s48_chord_bits_: the same refinements and crops, so the same
